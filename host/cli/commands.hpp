@@ -1,0 +1,15 @@
+// The command table of `driftlab`: one entry per subcommand, each implemented in its own cmd_*.cpp.
+// Help is generated from this table by CLI11, so listed and existing commands cannot disagree.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace driftlab::host::cli {
+
+/// Registers one subcommand (its options struct, flags and callback) on the top-level app.
+using RegisterFn = void (*)(CLI::App& app);
+
+// One declaration per cmd_*.cpp; keep in the order `driftlab --help` lists them.
+void register_selftest(CLI::App& app);
+
+}  // namespace driftlab::host::cli

@@ -1,0 +1,33 @@
+// driftlab: the host command. Sets up the command table and maps errors to exit codes; nothing else.
+#include <cstdio>
+#include <exception>
+
+#include "host/cli/commands.hpp"
+#include "host/util/error.hpp"
+
+namespace {
+
+constexpr driftlab::host::cli::RegisterFn kCommands[] = {
+    driftlab::host::cli::register_selftest,
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"driftlab: firmware, simulator and analysis tools for a low-cost IMU"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "driftlab 0.1.0");
+    for (auto reg : kCommands) reg(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const driftlab::host::Error& e) {
+        std::fprintf(stderr, "driftlab: error: %s\n", e.what());
+        return e.exit_code();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "driftlab: internal error: %s\n", e.what());
+        return 70;
+    }
+    return 0;
+}

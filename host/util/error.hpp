@@ -1,0 +1,49 @@
+// Errors that end a host command (docs/style: exceptions for failures, values for results).
+// Each names the input location so the user can find it: "log.csv:1274: expected 6 columns, got 5".
+// Only host/cli/main.cpp catches these and maps them to exit codes.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace driftlab::host {
+
+/// Base of every command-ending failure. `exit_code()` is what `driftlab` returns for it.
+class Error : public std::runtime_error {
+public:
+    explicit Error(const std::string& what) : std::runtime_error(what) {}
+    virtual int exit_code() const { return 1; }
+};
+
+/// Wrong flags or arguments on the command line.
+class UsageError : public Error {
+public:
+    using Error::Error;
+    int exit_code() const override { return 2; }
+};
+
+/// Malformed or unusable input data. Carries file and line (1-based; 0 when not line-oriented).
+class DataError : public Error {
+public:
+    DataError(const std::string& file, std::uint64_t line, const std::string& what)
+        : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": " + what) {}
+    int exit_code() const override { return 3; }
+};
+
+/// A device (serial port, USB, programmer) that is missing, refuses or misbehaves.
+class DeviceError : public Error {
+public:
+    DeviceError(const std::string& port, const std::string& what) : Error(port + ": " + what) {}
+    int exit_code() const override { return 4; }
+};
+
+/// A configuration file with a missing, unknown or out-of-range key.
+class ConfigError : public Error {
+public:
+    ConfigError(const std::string& file, const std::string& key, const std::string& what)
+        : Error(file + ": " + key + ": " + what) {}
+    int exit_code() const override { return 5; }
+};
+
+}  // namespace driftlab::host

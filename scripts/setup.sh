@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every Debian package driftlab needs. Idempotent: packages already present are left alone.
+# Works as root or through sudo. Usage: scripts/setup.sh
+set -euo pipefail
+
+packages=(
+  # native build and tests
+  build-essential cmake ninja-build pkg-config
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # host libraries
+  libeigen3-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libserial-dev libusb-1.0-0-dev
+  # plots
+  gnuplot-nox
+  # AVR cross build, flashing and emulation
+  gcc-avr binutils-avr avr-libc avrdude gdb-avr simavr libsimavr-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
+echo "setup: installing ${missing[*]}"
+"${sudo[@]}" apt-get update -q
+DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
