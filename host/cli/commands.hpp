@@ -10,6 +10,5 @@ namespace driftlab::host::cli {
 using RegisterFn = void (*)(CLI::App& app);
 
 // One declaration per cmd_*.cpp; keep in the order `driftlab --help` lists them.
-void register_selftest(CLI::App& app);
 
 }  // namespace driftlab::host::cli

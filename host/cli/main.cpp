@@ -7,8 +7,8 @@
 
 namespace {
 
+// One line per subcommand; see commands.hpp.
 constexpr driftlab::host::cli::RegisterFn kCommands[] = {
-    driftlab::host::cli::register_selftest,
 };
 
 }  // namespace
