@@ -1,0 +1,36 @@
+// Encoder: writes one protocol v1 frame into a caller's buffer (no state, no heap). Spec: docs/protocol.md §1-§2.
+//
+// Every function returns the frame size written [bytes], or 0 when the frame does not fit in `out_size` (nothing
+// useful is written then). `seq` is the sender's frame counter; the caller increments it per frame sent.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "driftlab/proto/messages.hpp"
+#include "driftlab/proto/msg_table.hpp"
+#include "driftlab/proto/nodiscard.hpp"
+
+namespace driftlab {
+namespace proto {
+
+/// Frames an already serialized payload. Also returns 0 when `type` is unknown or `payload_len` is not the
+/// type's fixed length, so a malformed frame can never be produced.
+DRIFTLAB_NODISCARD size_t encode_frame(uint8_t type, uint16_t seq, const uint8_t* payload, size_t payload_len,
+                                       uint8_t* out, size_t out_size);
+
+DRIFTLAB_NODISCARD size_t encode_hello(uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_version(const VersionPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_config_get(uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_config_set(const ConfigPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_config(const ConfigPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_poll(uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_sample(const SamplePayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_raw(const RawPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_ack(const AckPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_nak(const NakPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_status_get(uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_status(const StatusPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+
+}  // namespace proto
+}  // namespace driftlab

@@ -1,0 +1,144 @@
+// Payloads of protocol v1 (HELLO..STATUS) as plain structs, with serialize/parse to and from the wire's
+// little-endian byte layout. Spec: docs/protocol.md §3. HELLO, CONFIG_GET, POLL and STATUS_GET carry no payload.
+//
+// serialize() writes exactly the type's fixed length and returns it, or 0 when `out_size` is smaller.
+// parse() accepts exactly the fixed length; it checks layout only, ranges are the receiver's business
+// (the firmware's config validation, for instance, answers NAK out_of_range with the field index below).
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "driftlab/channels.hpp"
+#include "driftlab/proto/msg_table.hpp"
+#include "driftlab/proto/nodiscard.hpp"
+
+namespace driftlab {
+namespace proto {
+
+/// VERSION (0x02, fw->host): what the firmware is and how it samples. Sent in answer to HELLO.
+struct VersionPayload {
+  uint8_t proto_version;                ///< kProtocolVersion of the firmware
+  uint8_t fw_major;                     ///< firmware version, semantic
+  uint8_t fw_minor;
+  uint8_t fw_patch;
+  uint8_t board_id;                     ///< board variant (docs/hardware.md)
+  uint8_t adc_bits;                     ///< converter resolution [bits]
+  uint16_t vref_mv;                     ///< converter reference [mV]
+  uint32_t tick_hz;                     ///< firmware tick rate [Hz]; 250000 on the ATmega328P
+  uint8_t channel_count;                ///< channels sampled (kChannelCount)
+  uint8_t adc_pin[kChannelCount];       ///< ADC multiplexer input of gyro, accel_x, accel_y, accel_z
+  uint8_t reset_cause;                  ///< MCUSR bits of the last reset
+  uint16_t assert_line;                 ///< source line of the assertion that caused the last reset, 0 = none
+};
+
+/// CONFIG_SET (0x04, host->fw) and CONFIG (0x05, fw->host): sampling and output configuration.
+struct ConfigPayload {
+  uint16_t output_period_ms;      ///< time between outputs [ms], kOutputPeriodMinMs..kOutputPeriodMaxMs
+  uint8_t conversions_per_output; ///< ADC conversions per channel per output, 1..64
+  uint8_t window;                 ///< N of the sliding least-squares fit [conversions], 1..64
+  uint8_t fit_order;              ///< 0 = mean, 1 = line (estimate at the newest conversion)
+  uint8_t mode;                   ///< OutputMode
+  uint8_t raw;                    ///< 1 = also send RAW after each SAMPLE
+};
+
+/// SAMPLE (0x07, fw->host): the smoothed value of every channel.
+struct SamplePayload {
+  uint32_t tick;                   ///< time of the newest conversion [ticks]
+  int32_t value_q8[kChannelCount]; ///< least-squares estimate at `tick` [counts, Q8 = 1/256 count], Channel order
+  uint8_t sat_flags;               ///< bit c: channel c saw code 0 or 1023 inside its window
+  uint8_t n_window;                ///< conversions in the window now [conversions]; < window at start
+  uint16_t dropped;                ///< conversions lost since boot, saturating [conversions]
+};
+
+/// RAW (0x08, fw->host): the newest raw code of every channel.
+struct RawPayload {
+  uint32_t tick;                ///< time of the newest conversion [ticks]
+  uint16_t code[kChannelCount]; ///< ADC code [counts], Channel order
+};
+
+/// ACK (0x09, fw->host): a request was accepted (and applied).
+struct AckPayload {
+  uint8_t acked_type; ///< MsgType id of the request
+  uint16_t acked_seq; ///< seq of the request frame
+};
+
+/// NAK (0x0A, fw->host): a request was refused and nothing changed.
+struct NakPayload {
+  uint8_t nacked_type; ///< MsgType id of the request (as received, may be unknown)
+  uint16_t nacked_seq; ///< seq of the request frame
+  uint8_t status;      ///< Status number (status.hpp)
+  uint8_t field;       ///< index of the offending field in the payload's field list, kNakFieldNone = n/a
+};
+
+/// STATUS (0x0C, fw->host): firmware health counters, all saturating.
+struct StatusPayload {
+  uint32_t uptime_ticks;     ///< ticks since reset [ticks], wraps
+  uint16_t rx_frames;        ///< valid frames received [frames]
+  uint16_t rx_bad_crc;       ///< decoder rejects by CRC [frames]
+  uint16_t rx_bad_length;    ///< decoder rejects by length [frames]
+  uint16_t rx_unknown_type;  ///< decoder rejects by type [frames]
+  uint16_t rx_resync_bytes;  ///< bytes the decoder skipped [bytes]
+  uint16_t rx_overflow;      ///< bytes lost because the RX ring was full [bytes]
+  uint16_t tx_overflow;      ///< bytes lost because the TX ring was full [bytes]
+  uint16_t dropped;          ///< conversions lost [conversions]
+};
+
+/// ConfigPayload.mode values.
+enum class OutputMode : uint8_t { poll = 0, stream = 1 };
+
+/// Field indices of ConfigPayload, as NAK.field reports them.
+enum class ConfigField : uint8_t {
+  output_period_ms = 0,
+  conversions_per_output = 1,
+  window = 2,
+  fit_order = 3,
+  mode = 4,
+  raw = 5,
+};
+
+constexpr uint8_t kNakFieldNone = 0xFF;
+
+/// Ranges of ConfigPayload (docs/protocol.md §3.4).
+constexpr uint16_t kOutputPeriodMinMs = 10;
+constexpr uint16_t kOutputPeriodMaxMs = 60000;
+constexpr uint8_t kConversionsPerOutputMax = 64;
+constexpr uint8_t kWindowMax = 64;
+constexpr uint8_t kFitOrderMax = 1;
+
+/// Wire sizes [bytes]; each equals its table row, checked below.
+constexpr uint8_t kVersionPayloadSize = 20;
+constexpr uint8_t kConfigPayloadSize = 7;
+constexpr uint8_t kSamplePayloadSize = 24;
+constexpr uint8_t kRawPayloadSize = 12;
+constexpr uint8_t kAckPayloadSize = 3;
+constexpr uint8_t kNakPayloadSize = 5;
+constexpr uint8_t kStatusPayloadSize = 20;
+
+static_assert(payload_len_of(MsgType::version) == kVersionPayloadSize, "VERSION size differs from the table");
+static_assert(payload_len_of(MsgType::config_set) == kConfigPayloadSize, "CONFIG_SET size differs from the table");
+static_assert(payload_len_of(MsgType::config) == kConfigPayloadSize, "CONFIG size differs from the table");
+static_assert(payload_len_of(MsgType::sample) == kSamplePayloadSize, "SAMPLE size differs from the table");
+static_assert(payload_len_of(MsgType::raw) == kRawPayloadSize, "RAW size differs from the table");
+static_assert(payload_len_of(MsgType::ack) == kAckPayloadSize, "ACK size differs from the table");
+static_assert(payload_len_of(MsgType::nak) == kNakPayloadSize, "NAK size differs from the table");
+static_assert(payload_len_of(MsgType::status) == kStatusPayloadSize, "STATUS size differs from the table");
+
+DRIFTLAB_NODISCARD size_t serialize(const VersionPayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const ConfigPayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const SamplePayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const RawPayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const AckPayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const NakPayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const StatusPayload& p, uint8_t* out, size_t out_size);
+
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, VersionPayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, ConfigPayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, SamplePayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, RawPayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, AckPayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, NakPayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, StatusPayload* out);
+
+}  // namespace proto
+}  // namespace driftlab

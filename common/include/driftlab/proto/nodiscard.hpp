@@ -1,0 +1,8 @@
+// DRIFTLAB_NODISCARD: C++14 has no [[nodiscard]], so fallible functions use GCC's attribute (docs/protocol.md §6).
+#pragma once
+
+#if defined(__GNUC__)
+#define DRIFTLAB_NODISCARD __attribute__((warn_unused_result))
+#else
+#define DRIFTLAB_NODISCARD
+#endif

@@ -1,0 +1,27 @@
+// Status: the NAK reasons of protocol v1, one enum with stable numbers (docs/protocol.md §4). Firmware functions
+// that can fail return it; the numbers travel in NAK frames, so never renumber, only append.
+#pragma once
+
+#include <stdint.h>
+
+namespace driftlab {
+namespace proto {
+
+enum class Status : uint8_t {
+  ok = 0,            ///< accepted
+  bad_length = 1,    ///< payload length differs from the type's fixed length
+  unknown_type = 2,  ///< type not in the message table
+  out_of_range = 3,  ///< a field outside its documented range (NAK.field names it)
+  bad_version = 4,   ///< frame version byte is not kProtocolVersion
+  not_allowed = 5,   ///< a firmware-to-host type was sent to the firmware
+  busy = 6,          ///< valid request the firmware cannot serve now
+};
+
+constexpr uint8_t kStatusCount = 7;
+
+/// Lower-case name of a status ("out_of_range"), or nullptr for a number this version does not know. For host
+/// text; the firmware never needs it, so the strings stay out of its image.
+const char* status_name(Status status);
+
+}  // namespace proto
+}  // namespace driftlab

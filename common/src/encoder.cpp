@@ -1,0 +1,116 @@
+// Frame encoder (encoder.hpp; docs/protocol.md §1-§2). Typed encoders serialize straight into the caller's buffer
+// behind the header, so no second payload copy is made.
+#include "driftlab/proto/encoder.hpp"
+
+#include "driftlab/proto/byte_order.hpp"
+#include "driftlab/proto/crc16.hpp"
+#include "driftlab/proto/wire.hpp"
+
+namespace driftlab {
+namespace proto {
+namespace {
+
+// Writes header and CRC around a payload already at out + kOffsetPayload; the caller checked type and sizes.
+size_t finish_frame(uint8_t type, uint8_t crc_seed, uint16_t seq, uint8_t payload_len, uint8_t* out) {
+  out[kOffsetSync0] = kSync0;
+  out[kOffsetSync1] = kSync1;
+  out[kOffsetVersion] = kProtocolVersion;
+  out[kOffsetType] = type;
+  put_u16_le(out + kOffsetSeq, seq);
+  out[kOffsetLen] = payload_len;
+  const size_t crc_offset = kOffsetPayload + payload_len;
+  uint16_t crc = crc16_ibm3740(out + kCrcStart, crc_offset - kCrcStart);
+  crc = crc16_ibm3740_update(crc, crc_seed);
+  put_u16_le(out + crc_offset, crc);
+  return frame_size(payload_len);
+}
+
+// Common checks of the typed encoders: known type, and room for the whole frame.
+bool room_for(MsgType type, size_t out_size, MsgSpec* spec) {
+  return find_spec(type_id(type), spec) && out_size >= frame_size(spec->payload_len);
+}
+
+template <typename Payload>
+size_t encode_typed(MsgType type, const Payload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  MsgSpec spec{};
+  if (!room_for(type, out_size, &spec)) {
+    return 0;
+  }
+  if (serialize(p, out + kOffsetPayload, out_size - kOffsetPayload) != spec.payload_len) {
+    return 0;
+  }
+  return finish_frame(type_id(type), spec.crc_seed, seq, spec.payload_len, out);
+}
+
+size_t encode_empty(MsgType type, uint16_t seq, uint8_t* out, size_t out_size) {
+  MsgSpec spec{};
+  if (!room_for(type, out_size, &spec) || spec.payload_len != 0) {
+    return 0;
+  }
+  return finish_frame(type_id(type), spec.crc_seed, seq, 0, out);
+}
+
+}  // namespace
+
+size_t encode_frame(uint8_t type, uint16_t seq, const uint8_t* payload, size_t payload_len, uint8_t* out,
+                    size_t out_size) {
+  MsgSpec spec{};
+  if (!find_spec(type, &spec) || payload_len != spec.payload_len || out_size < frame_size(payload_len)) {
+    return 0;
+  }
+  for (size_t i = 0; i < payload_len; ++i) {
+    out[kOffsetPayload + i] = payload[i];
+  }
+  return finish_frame(type, spec.crc_seed, seq, spec.payload_len, out);
+}
+
+size_t encode_hello(uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_empty(MsgType::hello, seq, out, out_size);
+}
+
+size_t encode_version(const VersionPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::version, p, seq, out, out_size);
+}
+
+size_t encode_config_get(uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_empty(MsgType::config_get, seq, out, out_size);
+}
+
+size_t encode_config_set(const ConfigPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::config_set, p, seq, out, out_size);
+}
+
+size_t encode_config(const ConfigPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::config, p, seq, out, out_size);
+}
+
+size_t encode_poll(uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_empty(MsgType::poll, seq, out, out_size);
+}
+
+size_t encode_sample(const SamplePayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::sample, p, seq, out, out_size);
+}
+
+size_t encode_raw(const RawPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::raw, p, seq, out, out_size);
+}
+
+size_t encode_ack(const AckPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::ack, p, seq, out, out_size);
+}
+
+size_t encode_nak(const NakPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::nak, p, seq, out, out_size);
+}
+
+size_t encode_status_get(uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_empty(MsgType::status_get, seq, out, out_size);
+}
+
+size_t encode_status(const StatusPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::status, p, seq, out, out_size);
+}
+
+}  // namespace proto
+}  // namespace driftlab
