@@ -1,0 +1,51 @@
+// A canonical log in memory: metadata, per-channel columns in A/D counts, optional columns, gap events.
+// Spec: docs/log-format.md. Filled by read_log() (log_reader.hpp); written row by row by LogWriter.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "driftlab/channels.hpp"
+#include "host/log/log_metadata.hpp"
+
+namespace driftlab::host {
+
+/// The format version this code reads and writes (`# driftlab-log: 1`).
+inline constexpr int kLogFormatVersion = 1;
+
+/// Required columns, in the order the writer puts them: t_s, seq, then the channels in Channel order.
+inline constexpr std::array<const char*, 2 + kChannelCount> kRequiredLogColumns = {
+    "t_s", "seq", "gyro", "accel_x", "accel_y", "accel_z"};
+
+/// Optional columns a reader keeps (by name) when present; any other column is ignored.
+inline constexpr std::array<const char*, 9> kOptionalLogColumns = {
+    "raw_gyro", "raw_accel_x", "raw_accel_y", "raw_accel_z", "tick", "flags", "sat_flags", "n_window", "dropped"};
+
+/// A `# gap: text` line: the recorder lost the link; `before_row` is the index of the first row after it.
+struct LogGap {
+    std::size_t before_row = 0;
+    std::uint64_t line = 0;  ///< line number in the file (1-based)
+    std::string text;
+};
+
+/// The whole log, column-major so the analysis can take a channel as one vector.
+struct LogData {
+    std::string source_name;  ///< file name, for messages
+    LogMetadata metadata;
+    std::vector<double> t_s;                                 ///< [s] since power-on, strictly increasing
+    std::vector<std::uint64_t> seq;                          ///< unwrapped frame sequence number
+    std::array<std::vector<double>, kChannelCount> counts;   ///< [counts] per Channel
+    std::map<std::string, std::vector<double>> optional_columns;  ///< e.g. "raw_gyro" -> [counts]
+    std::vector<LogGap> gaps;
+    bool truncated_tail_dropped = false;  ///< the unterminated last line was dropped (ReadOptions)
+
+    std::size_t size() const { return t_s.size(); }
+    const std::vector<double>& channel(Channel c) const { return counts[channel_index(c)]; }
+    bool has_column(const std::string& name) const { return optional_columns.count(name) != 0; }
+};
+
+}  // namespace driftlab::host

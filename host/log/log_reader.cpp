@@ -1,0 +1,230 @@
+// Canonical log reader; see log_reader.hpp and docs/log-format.md.
+#include "host/log/log_reader.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <string_view>
+
+#include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
+#include "host/util/parse_number.hpp"
+#include "host/util/split_fields.hpp"
+
+namespace driftlab::host {
+namespace {
+
+constexpr std::string_view kMagicKey = "driftlab-log";
+
+/// Where each column of the file goes.
+struct ColumnPlan {
+    std::size_t field_count = 0;
+    std::array<std::size_t, kRequiredLogColumns.size()> required_field{};  // field index of t_s, seq, channels
+    std::vector<std::pair<std::size_t, std::vector<double>*>> optional_fields;
+};
+
+std::optional<std::pair<std::string, std::string>> split_comment_key_value(std::string_view body) {
+    const auto colon = body.find(':');
+    if (colon == std::string_view::npos) return std::nullopt;
+    const std::string key(trim_blanks(body.substr(0, colon)));
+    if (key.empty() || key.find(' ') != std::string::npos) return std::nullopt;
+    return std::make_pair(key, std::string(trim_blanks(body.substr(colon + 1))));
+}
+
+ColumnPlan plan_columns(const std::vector<std::string_view>& names, LogData& log, std::uint64_t line) {
+    ColumnPlan plan;
+    plan.field_count = names.size();
+    std::vector<std::string> seen;
+    for (const auto& raw : names) {
+        const std::string name(trim_blanks(raw));
+        if (name.empty()) throw DataError(log.source_name, line, "header has an empty column name");
+        if (std::find(seen.begin(), seen.end(), name) != seen.end())
+            throw DataError(log.source_name, line, "header names column '" + name + "' twice");
+        seen.push_back(name);
+    }
+    for (std::size_t r = 0; r < kRequiredLogColumns.size(); ++r) {
+        const auto it = std::find(seen.begin(), seen.end(), kRequiredLogColumns[r]);
+        if (it == seen.end())
+            throw DataError(log.source_name, line,
+                            std::string("header lacks the required column '") + kRequiredLogColumns[r] +
+                                "' (required: t_s,seq,gyro,accel_x,accel_y,accel_z)");
+        plan.required_field[r] = static_cast<std::size_t>(it - seen.begin());
+    }
+    for (const char* name : kOptionalLogColumns) {
+        const auto it = std::find(seen.begin(), seen.end(), name);
+        if (it != seen.end())
+            plan.optional_fields.emplace_back(static_cast<std::size_t>(it - seen.begin()), &log.optional_columns[name]);
+    }
+    return plan;
+}
+
+/// A header names columns; rows start with a number. A line with a field "t_s" is a header wherever it is.
+bool looks_like_header(std::string_view line, std::vector<std::string_view>& scratch) {
+    split_fields(line, ',', scratch);
+    for (const auto f : scratch)
+        if (trim_blanks(f) == "t_s") return true;
+    return parse_finite_double(scratch.front()).error == NumberError::not_a_number;
+}
+
+double parse_field(const LogData& log, std::uint64_t line, std::string_view field, std::size_t index,
+                   std::string_view column) {
+    const ParsedNumber p = parse_finite_double(field);
+    if (p.error != NumberError::ok)
+        throw DataError(log.source_name, line,
+                        "field " + std::to_string(index + 1) + " (" + std::string(column) + ") '" +
+                            std::string(trim_blanks(field)) + "': " + number_error_text(p.error));
+    return p.value;
+}
+
+class Parser {
+public:
+    Parser(const std::string& name, const ReadOptions& options) : options_(options) { log_.source_name = name; }
+
+    void line(std::string_view text, std::uint64_t number, bool terminated) {
+        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+        if (trim_blanks(text).empty()) return;
+        if (!seen_magic_) return magic(text, number);
+        if (text.front() == '#') return comment(text.substr(1), number);
+        if (!plan_) return header(text, number);
+        try {
+            row(text, number);
+        } catch (const DataError& e) {
+            if (terminated) throw;
+            if (options_.drop_truncated_tail) {
+                log_.truncated_tail_dropped = true;
+                return;
+            }
+            throw DataError(log_.source_name, number,
+                            "truncated last line (no newline at the end of the file; the writer was probably "
+                            "interrupted): " + std::string(e.what()) + "; delete that line to use the rest");
+        }
+        if (!terminated) {
+            if (options_.drop_truncated_tail) {
+                pop_last_row();
+                log_.truncated_tail_dropped = true;
+                return;
+            }
+            throw DataError(log_.source_name, number,
+                            "truncated last line (no newline at the end of the file; the writer was probably "
+                            "interrupted, so its last value may be cut); delete that line to use the rest");
+        }
+    }
+
+    LogData finish(std::uint64_t lines) {
+        if (lines == 0) throw DataError(log_.source_name, 0, "empty file (expected '# driftlab-log: 1')");
+        if (!plan_)
+            throw DataError(log_.source_name, lines,
+                            "missing header: no 't_s,seq,gyro,accel_x,accel_y,accel_z' line before the end of file");
+        if (log_.t_s.empty()) throw DataError(log_.source_name, lines, "log has a header but no data rows");
+        return std::move(log_);
+    }
+
+private:
+    void magic(std::string_view text, std::uint64_t number) {
+        seen_magic_ = true;
+        const auto kv = text.front() == '#' ? split_comment_key_value(text.substr(1)) : std::nullopt;
+        if (!kv || kv->first != kMagicKey)
+            throw DataError(log_.source_name, number,
+                            "not a driftlab log: the first line must be '# driftlab-log: 1', got '" +
+                                std::string(text.substr(0, 60)) + "'");
+        if (kv->second != std::to_string(kLogFormatVersion))
+            throw DataError(log_.source_name, number,
+                            "log format version '" + kv->second + "' is not supported (this reader knows 1)");
+    }
+
+    void comment(std::string_view body, std::uint64_t number) {
+        const auto kv = split_comment_key_value(body);
+        if (kv && kv->first == "gap") {
+            log_.gaps.push_back({log_.t_s.size(), number, kv->second});
+            return;
+        }
+        if (plan_ || !kv) return;  // free comments, and key: value text among the rows, are notes only
+        if (!LogMetadata::is_valid_key(kv->first))
+            throw DataError(log_.source_name, number, "metadata key '" + kv->first + "' is not lower_snake_case");
+        if (log_.metadata.has(kv->first))
+            throw DataError(log_.source_name, number, "metadata key '" + kv->first + "' appears twice");
+        log_.metadata.set(kv->first, kv->second);
+    }
+
+    void header(std::string_view text, std::uint64_t number) {
+        if (!looks_like_header(text, fields_))
+            throw DataError(log_.source_name, number,
+                            "missing header: expected column names such as 't_s,seq,gyro,accel_x,accel_y,accel_z', got '" +
+                                std::string(text.substr(0, 60)) + "'");
+        split_fields(text, ',', fields_);
+        plan_ = plan_columns(fields_, log_, number);
+        header_line_ = number;
+    }
+
+    void row(std::string_view text, std::uint64_t number) {
+        if (text.find("t_s") != std::string_view::npos && looks_like_header(text, fields_))
+            throw DataError(log_.source_name, number,
+                            "duplicate header (the first is on line " + std::to_string(header_line_) +
+                                "); two logs concatenated?");
+        split_fields(text, ',', fields_);
+        if (fields_.size() != plan_->field_count)
+            throw DataError(log_.source_name, number,
+                            "expected " + std::to_string(plan_->field_count) + " fields (as the header), got " +
+                                std::to_string(fields_.size()));
+        const auto& req = plan_->required_field;
+        const double t_s = parse_field(log_, number, fields_[req[0]], req[0], "t_s");
+        const auto seq = parse_unsigned(fields_[req[1]]);
+        if (!seq)
+            throw DataError(log_.source_name, number,
+                            "field " + std::to_string(req[1] + 1) + " (seq) '" +
+                                std::string(trim_blanks(fields_[req[1]])) + "': not a non-negative integer");
+        std::array<double, kChannelCount> values{};
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            values[c] = parse_field(log_, number, fields_[req[2 + c]], req[2 + c], kRequiredLogColumns[2 + c]);
+        optional_scratch_.clear();
+        for (const auto& [field, column] : plan_->optional_fields)
+            optional_scratch_.push_back(parse_field(log_, number, fields_[field], field, "optional column"));
+        if (!log_.t_s.empty() && !(t_s > log_.t_s.back()))
+            throw DataError(log_.source_name, number,
+                            "t_s " + format_double(t_s) + " is not after the previous row's " +
+                                format_double(log_.t_s.back()) + " (t_s must increase strictly)");
+        log_.t_s.push_back(t_s);
+        log_.seq.push_back(*seq);
+        for (std::size_t c = 0; c < kChannelCount; ++c) log_.counts[c].push_back(values[c]);
+        for (std::size_t i = 0; i < optional_scratch_.size(); ++i)
+            plan_->optional_fields[i].second->push_back(optional_scratch_[i]);
+    }
+
+    void pop_last_row() {
+        log_.t_s.pop_back();
+        log_.seq.pop_back();
+        for (auto& c : log_.counts) c.pop_back();
+        for (auto& [field, column] : plan_->optional_fields) column->pop_back();
+    }
+
+    ReadOptions options_;
+    LogData log_;
+    bool seen_magic_ = false;
+    std::optional<ColumnPlan> plan_;
+    std::uint64_t header_line_ = 0;
+    std::vector<std::string_view> fields_;
+    std::vector<double> optional_scratch_;
+};
+
+}  // namespace
+
+LogData parse_log(std::istream& in, const std::string& source_name, const ReadOptions& options) {
+    Parser parser(source_name, options);
+    std::string text;
+    std::uint64_t number = 0;
+    while (std::getline(in, text)) {
+        ++number;
+        parser.line(text, number, !in.eof());
+    }
+    if (in.bad()) throw DataError(source_name, number, "read error");
+    return parser.finish(number);
+}
+
+LogData read_log(const std::string& path, const ReadOptions& options) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    return parse_log(in, path, options);
+}
+
+}  // namespace driftlab::host

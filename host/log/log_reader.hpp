@@ -1,0 +1,29 @@
+// Reads a canonical log (docs/log-format.md) into LogData, or throws DataError(file, line, what).
+//
+// Accepted: `# driftlab-log: 1`, `# key: value` metadata, a header holding at least
+// t_s,seq,gyro,accel_x,accel_y,accel_z (any order; optional columns kept, unknown ones ignored), rows with
+// exactly the header's field count, `# gap: text` events and other `#` comments between rows, blank lines.
+// Rejected, with the line number: a missing or repeated header, a wrong field count, a value that is not
+// a finite number, a t_s not strictly after the previous row's, a non-integer seq, an empty file, a log
+// without rows, and an unterminated last line (unless ReadOptions::drop_truncated_tail).
+#pragma once
+
+#include <istream>
+#include <string>
+
+#include "host/log/log_data.hpp"
+
+namespace driftlab::host {
+
+struct ReadOptions {
+    /// Drop a last line without '\n' (a recorder killed mid-write) instead of rejecting the file.
+    bool drop_truncated_tail = false;
+};
+
+/// Reads the log at `path`. Throws DataError for malformed content, DataError(path, 0, ...) when unreadable.
+LogData read_log(const std::string& path, const ReadOptions& options = {});
+
+/// Parses a log from `in`; `source_name` is used in messages.
+LogData parse_log(std::istream& in, const std::string& source_name, const ReadOptions& options = {});
+
+}  // namespace driftlab::host

@@ -1,0 +1,105 @@
+// Plain numeric table reader; see numeric_table.hpp.
+#include "host/log/numeric_table.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <string_view>
+
+#include "host/util/error.hpp"
+#include "host/util/parse_number.hpp"
+#include "host/util/split_fields.hpp"
+
+namespace driftlab::host {
+
+std::size_t NumericTable::column_index(const std::string& name) const {
+    std::string known;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (names[i] == name) return i;
+        known += (i ? ", " : "") + names[i];
+    }
+    throw UsageError(source_name + ": no column '" + name + "' (columns: " + known + ")");
+}
+
+namespace {
+
+bool is_name_line(const std::vector<std::string_view>& fields) {
+    for (const auto f : fields) {
+        const NumberError e = parse_finite_double(f).error;
+        if (e == NumberError::not_a_number) {
+            const std::string_view t = trim_blanks(f);
+            // "nan"/"inf" spelled out are bad values, not names.
+            if (t != "nan" && t != "NaN" && t != "inf" && t != "-inf") return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+NumericTable read_numeric_table(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    NumericTable table;
+    table.source_name = path;
+    std::string text;
+    std::vector<std::string_view> fields;
+    std::vector<std::vector<double>> rows_by_line;
+    std::vector<std::uint64_t> line_numbers;
+    std::uint64_t number = 0;
+    bool any_line = false;
+    while (std::getline(in, text)) {
+        ++number;
+        any_line = true;
+        std::string_view line = trim_blanks(text);
+        if (line.empty()) continue;
+        if (line.front() == '#') {
+            table.comments.emplace_back(trim_blanks(line.substr(1)));
+            continue;
+        }
+        split_numeric_fields(line, fields);
+        if (rows_by_line.empty() && table.names.empty() && is_name_line(fields)) {
+            for (const auto f : fields) table.names.emplace_back(trim_blanks(f));
+            continue;
+        }
+        std::vector<double> values;
+        values.reserve(fields.size());
+        for (std::size_t i = 0; i < fields.size(); ++i) {
+            const ParsedNumber p = parse_finite_double(fields[i]);
+            if (p.error != NumberError::ok)
+                throw DataError(path, number,
+                                "field " + std::to_string(i + 1) + " '" + std::string(trim_blanks(fields[i])) +
+                                    "': " + number_error_text(p.error));
+            values.push_back(p.value);
+        }
+        if (!rows_by_line.empty() && values.size() != rows_by_line.front().size())
+            throw DataError(path, number,
+                            "expected " + std::to_string(rows_by_line.front().size()) + " fields (as line " +
+                                std::to_string(line_numbers.front()) + "), got " + std::to_string(values.size()));
+        if (!table.names.empty() && values.size() != table.names.size())
+            throw DataError(path, number,
+                            "expected " + std::to_string(table.names.size()) + " fields (as the name line), got " +
+                                std::to_string(values.size()));
+        rows_by_line.push_back(std::move(values));
+        line_numbers.push_back(number);
+    }
+    if (!any_line) throw DataError(path, 0, "empty file");
+    if (rows_by_line.empty()) throw DataError(path, number, "no numeric data lines");
+
+    if (rows_by_line.size() == 1 && table.names.size() <= 1) {
+        table.columns.push_back(std::move(rows_by_line.front()));
+    } else {
+        const std::size_t width = rows_by_line.front().size();
+        table.columns.assign(width, {});
+        for (auto& col : table.columns) col.reserve(rows_by_line.size());
+        for (const auto& row : rows_by_line)
+            for (std::size_t c = 0; c < width; ++c) table.columns[c].push_back(row[c]);
+    }
+    if (table.names.size() != table.columns.size()) {
+        table.names.clear();
+        for (std::size_t c = 0; c < table.columns.size(); ++c) table.names.push_back("col" + std::to_string(c + 1));
+    }
+    return table;
+}
+
+}  // namespace driftlab::host

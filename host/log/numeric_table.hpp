@@ -1,0 +1,29 @@
+// Plain numeric files: one or more columns separated by blanks or commas, `#` comment lines, an optional
+// first line of column names. Used by `allan --kind` and for recordings that are not canonical logs.
+// Spec: docs/log-format.md §6.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace driftlab::host {
+
+/// Columns of numbers with their names ("col1", "col2"... when the file has no name line).
+struct NumericTable {
+    std::string source_name;
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> columns;
+    std::vector<std::string> comments;  ///< text of the `#` lines, without the '#'
+
+    std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+    /// Index of the column called `name`; throws UsageError listing the names when there is none.
+    std::size_t column_index(const std::string& name) const;
+};
+
+/// Reads `path`. A file with exactly one data line is read as ONE column (a series written on one line,
+/// like gyro2_x.txt); otherwise every data line must have the same number of fields. Throws DataError
+/// (file, line) on a non-numeric, NaN or infinite value, a ragged row, an empty file.
+NumericTable read_numeric_table(const std::string& path);
+
+}  // namespace driftlab::host

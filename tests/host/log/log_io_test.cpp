@@ -1,0 +1,208 @@
+// Canonical log writer and reader: round trip, every rejection with its line number (docs/log-format.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "host/log/log_reader.hpp"
+#include "host/log/log_writer.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host {
+namespace {
+
+std::string temp_path(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("driftlab_log_test_" + name)).string();
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+LogData parse(const std::string& text, const ReadOptions& options = {}) {
+    std::istringstream in(text);
+    return parse_log(in, "mem.csv", options);
+}
+
+/// Parses `text` and returns the DataError message; fails the test when nothing is thrown.
+std::string rejection(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const DataError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "accepted:\n" << text;
+    return {};
+}
+
+const std::string kHead = "# driftlab-log: 1\n# source: test\nt_s,seq,gyro,accel_x,accel_y,accel_z\n";
+
+TEST(LogIo, WriterOutputReadsBackExactlyWithMetadataGapsAndOptionalColumns) {
+    const std::string path = temp_path("roundtrip.csv");
+    LogMetadata meta;
+    meta.set("source", std::string("sim"));
+    meta.set("sample_period_s", 0.1);
+    meta.set("window", std::int64_t{16});
+    std::vector<LogRow> rows;
+    for (int k = 0; k < 50; ++k) {
+        LogRow r;
+        r.t_s = 0.1 * k + 1.0 / 3.0;
+        r.seq = static_cast<std::uint64_t>(k + (k >= 20 ? 3 : 0));
+        r.counts = {505.0 + k / 7.0, 470.125, 474.0 - k * 1e-3, 622.0 + std::sqrt(2.0)};
+        r.optional_values = {505.0, static_cast<double>(k % 2)};
+        rows.push_back(r);
+    }
+    {
+        LogWriter w(path, meta, {"raw_gyro", "flags"});
+        for (int k = 0; k < 50; ++k) {
+            if (k == 20) w.write_gap("link lost 0.3 s");
+            w.write_row(rows[static_cast<std::size_t>(k)]);
+        }
+        w.close();
+    }
+    const LogData log = read_log(path);
+    ASSERT_EQ(log.size(), 50u);
+    EXPECT_EQ(log.metadata.get("source"), "sim");
+    EXPECT_DOUBLE_EQ(*log.metadata.get_double("sample_period_s"), 0.1);
+    EXPECT_EQ(*log.metadata.get_int("window"), 16);
+    EXPECT_EQ(log.metadata.entries().size(), 3u);
+    for (std::size_t k = 0; k < 50; ++k) {
+        EXPECT_EQ(log.t_s[k], rows[k].t_s);  // exact: shortest round-trip text
+        EXPECT_EQ(log.seq[k], rows[k].seq);
+        for (std::size_t c = 0; c < kChannelCount; ++c) EXPECT_EQ(log.counts[c][k], rows[k].counts[c]);
+        EXPECT_EQ(log.optional_columns.at("raw_gyro")[k], 505.0);
+        EXPECT_EQ(log.optional_columns.at("flags")[k], static_cast<double>(k % 2));
+    }
+    ASSERT_EQ(log.gaps.size(), 1u);
+    EXPECT_EQ(log.gaps[0].before_row, 20u);
+    EXPECT_EQ(log.gaps[0].text, "link lost 0.3 s");
+    EXPECT_EQ(log.gaps[0].line, 3u + 1u + 1u + 20u + 1u);  // magic, 3 metadata, header, 20 rows, then the gap
+    std::filesystem::remove(path);
+}
+
+TEST(LogIo, WriterFlushesOnlyWholeLines) {
+    const std::string path = temp_path("whole_lines.csv");
+    LogMetadata meta;
+    LogWriter w(path, meta);
+    w.set_flush_interval(std::chrono::milliseconds(0));
+    LogRow r;
+    for (int k = 0; k < 5; ++k) {
+        r.t_s = k;
+        w.write_row(r);
+        const std::string text = read_file(path);  // what a concurrent reader sees now
+        ASSERT_FALSE(text.empty());
+        EXPECT_EQ(text.back(), '\n');
+        EXPECT_EQ(parse(text).size(), static_cast<std::size_t>(k + 1));
+    }
+    w.close();
+    std::filesystem::remove(path);
+}
+
+TEST(LogIo, WriterRefusesRowsItsReaderWouldReject) {
+    const std::string path = temp_path("refuse.csv");
+    LogWriter w(path, LogMetadata{});
+    LogRow r;
+    r.t_s = 1.0;
+    w.write_row(r);
+    EXPECT_THROW(w.write_row(r), UsageError);  // same t_s
+    r.t_s = 2.0;
+    r.counts[1] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(w.write_row(r), UsageError);
+    r.counts[1] = 0.0;
+    r.optional_values = {1.0};
+    EXPECT_THROW(w.write_row(r), UsageError);  // no optional columns declared
+    EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"colour"}), UsageError);
+    w.close();
+    std::filesystem::remove(path);
+    std::filesystem::remove(temp_path("x.csv"));
+}
+
+TEST(LogIo, UnknownColumnsAreIgnoredAndColumnOrderIsFree) {
+    const LogData log = parse(
+        "# driftlab-log: 1\n"
+        "accel_z,note,seq,t_s,gyro,accel_x,accel_y,raw_gyro\n"
+        "622,hello,0,0.5,505,470,474,506\n"
+        "623,world,1,1.5,506,471,475,507\n");
+    ASSERT_EQ(log.size(), 2u);
+    EXPECT_EQ(log.t_s[1], 1.5);
+    EXPECT_EQ(log.channel(Channel::gyro)[1], 506.0);
+    EXPECT_EQ(log.channel(Channel::accel_z)[0], 622.0);
+    EXPECT_EQ(log.optional_columns.at("raw_gyro")[1], 507.0);
+    EXPECT_FALSE(log.has_column("note"));
+}
+
+TEST(LogIo, EachRejectionNamesTheLine) {
+    EXPECT_NE(rejection("").find("empty file"), std::string::npos);
+    EXPECT_NE(rejection("t_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n").find("mem.csv:1: not a driftlab log"),
+              std::string::npos);
+    EXPECT_NE(rejection("# driftlab-log: 2\n").find("mem.csv:1: log format version '2'"), std::string::npos);
+    EXPECT_NE(rejection("# driftlab-log: 1\n0,0,1,2,3,4\n").find("mem.csv:2: missing header"), std::string::npos);
+    EXPECT_NE(rejection("# driftlab-log: 1\n# source: x\n").find("mem.csv:2: missing header"), std::string::npos);
+    EXPECT_NE(rejection("# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y\n").find("mem.csv:2: header lacks the "
+                                                                                "required column 'accel_z'"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead).find("mem.csv:3: log has a header but no data rows"), std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n" + "t_s,seq,gyro,accel_x,accel_y,accel_z\n")
+                  .find("mem.csv:5: duplicate header (the first is on line 3)"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,3\n").find("mem.csv:4: expected 6 fields"), std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n1,1,nan,2,3,4\n").find("mem.csv:5: field 3 (gyro) 'nan': not finite"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,inf,3,4\n").find("mem.csv:4: field 4 (accel_x) 'inf': not finite"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,3,abc\n").find("mem.csv:4: field 6 (accel_z) 'abc': not a number"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,,4\n").find("mem.csv:4: field 5 (accel_y) '': empty field"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n2,1,1,2,3,4\n1.5,2,1,2,3,4\n")
+                  .find("mem.csv:6: t_s 1.5 is not after the previous row's 2"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n0,1,1,2,3,4\n").find("mem.csv:5: t_s 0 is not after"),
+              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,-1,1,2,3,4\n").find("mem.csv:4: field 2 (seq) '-1': not a non-negative integer"),
+              std::string::npos);
+    EXPECT_NE(rejection("# driftlab-log: 1\n# a: 1\n# a: 2\n").find("mem.csv:3: metadata key 'a' appears twice"),
+              std::string::npos);
+}
+
+TEST(LogIo, TruncatedLastLineIsReportedOrDroppedOnRequest) {
+    const std::string cut = kHead + "0,0,1,2,3,4\n1,1,1,2,3,4\n2,2,1,2,3";  // recorder killed mid-line
+    const std::string message = rejection(cut);
+    EXPECT_NE(message.find("mem.csv:6: truncated last line (no newline"), std::string::npos) << message;
+    const std::string complete_fields = kHead + "0,0,1,2,3,4\n1,1,1,2,3,4.5";  // fields complete but maybe cut
+    EXPECT_NE(rejection(complete_fields).find("mem.csv:5: truncated last line"), std::string::npos);
+
+    ReadOptions drop;
+    drop.drop_truncated_tail = true;
+    const LogData a = parse(cut, drop);
+    EXPECT_EQ(a.size(), 2u);
+    EXPECT_TRUE(a.truncated_tail_dropped);
+    const LogData b = parse(complete_fields, drop);
+    EXPECT_EQ(b.size(), 1u);
+    EXPECT_TRUE(b.truncated_tail_dropped);
+}
+
+TEST(LogIo, CommentsBlankLinesAndCrLfAreAccepted) {
+    const LogData log = parse("# driftlab-log: 1\r\n# model: paper_default\r\n\r\n# a free comment\r\n"
+                              "t_s,seq,gyro,accel_x,accel_y,accel_z\r\n0,0,1,2,3,4\r\n# note: operator\r\n"
+                              "# gap: reconnect after 2 s\r\n3,9,1,2,3,4\r\n");
+    EXPECT_EQ(log.size(), 2u);
+    EXPECT_EQ(log.metadata.get("model"), "paper_default");
+    ASSERT_EQ(log.gaps.size(), 1u);
+    EXPECT_EQ(log.gaps[0].before_row, 1u);
+    EXPECT_EQ(log.gaps[0].line, 8u);
+    EXPECT_EQ(log.seq[1], 9u);
+}
+
+TEST(LogIo, MissingFileIsADataError) {
+    EXPECT_THROW(read_log(temp_path("does_not_exist.csv")), DataError);
+}
+
+}  // namespace
+}  // namespace driftlab::host

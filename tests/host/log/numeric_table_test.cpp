@@ -1,0 +1,73 @@
+// Plain numeric tables and the real recordings in the shared folder (docs/log-format.md §6).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "host/log/numeric_table.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host {
+namespace {
+
+std::string write_temp(const std::string& name, const std::string& text) {
+    const auto path = (std::filesystem::temp_directory_path() / ("driftlab_table_test_" + name)).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+std::string rejection(const std::string& name, const std::string& text) {
+    const std::string path = write_temp(name, text);
+    try {
+        read_numeric_table(path);
+    } catch (const DataError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "accepted: " << text;
+    return {};
+}
+
+TEST(NumericTable, ColumnsSplitByBlanksOrCommasWithNamesAndComments) {
+    const auto t = read_numeric_table(write_temp("a.txt", "# comment\nt, x  y\n0, 1 2\n1,3,4\n\n2\t5 6\n"));
+    ASSERT_EQ(t.columns.size(), 3u);
+    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "x", "y"}));
+    EXPECT_EQ(t.columns[2], (std::vector<double>{2, 4, 6}));
+    EXPECT_EQ(t.column_index("x"), 1u);
+    EXPECT_THROW(t.column_index("z"), UsageError);
+    ASSERT_EQ(t.comments.size(), 1u);
+}
+
+TEST(NumericTable, OneLineFileIsOneSeries) {
+    const auto t = read_numeric_table(write_temp("b.txt", "1.5 2.5 3.5 4.5"));
+    ASSERT_EQ(t.columns.size(), 1u);
+    EXPECT_EQ(t.columns[0], (std::vector<double>{1.5, 2.5, 3.5, 4.5}));
+    EXPECT_EQ(t.names[0], "col1");
+}
+
+TEST(NumericTable, RejectionsNameTheLine) {
+    EXPECT_NE(rejection("e.txt", "").find("empty file"), std::string::npos);
+    EXPECT_NE(rejection("c.txt", "# only\n").find("no numeric data lines"), std::string::npos);
+    EXPECT_NE(rejection("r.txt", "1 2\n3 4\n5\n").find(":3: expected 2 fields (as line 1), got 1"), std::string::npos);
+    EXPECT_NE(rejection("n.txt", "1 2\n3 nan\n").find(":2: field 2 'nan': not finite"), std::string::npos);
+    EXPECT_NE(rejection("m.txt", "1,2\n3,,4\n").find(":2: field 2 '': empty field"), std::string::npos);
+}
+
+TEST(NumericTable, ReadsTheRealRecordings) {
+    const std::filesystem::path dir = std::filesystem::path(DRIFTLAB_SHARED_DIR) / "data" / "real";
+    const auto gyro = dir / "gyro2_x.txt";
+    const auto mpu = dir / "mpu6050_unmoved-with-x-pointing-forward-10min.csv";
+    if (!std::filesystem::exists(gyro) || !std::filesystem::exists(mpu))
+        GTEST_SKIP() << "real recordings not found in " << dir << " (shared data folder absent)";
+    const auto g = read_numeric_table(gyro.string());
+    ASSERT_EQ(g.columns.size(), 1u);
+    EXPECT_EQ(g.rows(), 238256u);  // PROVENANCE.md
+    EXPECT_DOUBLE_EQ(g.columns[0][0], 1.2425);
+    const auto m = read_numeric_table(mpu.string());
+    EXPECT_EQ(m.names.size(), 8u);
+    EXPECT_EQ(m.names[0], "t_s");
+    EXPECT_EQ(m.rows(), 65067u);
+    EXPECT_DOUBLE_EQ(m.columns[m.column_index("temp_C")][0], 25.51824);
+}
+
+}  // namespace
+}  // namespace driftlab::host
