@@ -1,0 +1,70 @@
+// Commands: validation order and replies as documented in commands.hpp (docs/protocol.md §3-§4).
+#include "firmware/core/commands.hpp"
+
+#include "driftlab/proto/msg_table.hpp"
+
+namespace driftlab {
+namespace fw {
+namespace {
+
+CommandOutcome nak(uint8_t type_id, uint16_t seq, proto::Status status, uint8_t field) {
+  CommandOutcome out = {};
+  out.reply = Reply::nak;
+  out.nak = proto::NakPayload{type_id, seq, static_cast<uint8_t>(status), field};
+  return out;
+}
+
+CommandOutcome reply(Reply r) {
+  CommandOutcome out = {};
+  out.reply = r;
+  return out;
+}
+
+CommandOutcome decide_config_set(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len) {
+  proto::ConfigPayload wire = {};
+  if (!proto::parse(payload, payload_len, &wire)) {
+    return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
+  }
+  const ConfigCheck check = validate(wire);
+  if (check.status != proto::Status::ok) {
+    return nak(type_id, seq, check.status, check.field);
+  }
+  CommandOutcome out = {};
+  out.reply = Reply::ack;
+  out.config = config_from_payload(wire);
+  out.ack = proto::AckPayload{type_id, seq};
+  return out;
+}
+
+}  // namespace
+
+CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len) {
+  proto::MsgSpec spec = {};
+  if (!proto::find_spec(type_id, &spec)) {
+    return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);
+  }
+  if (spec.direction != proto::Direction::host_to_fw) {
+    return nak(type_id, seq, proto::Status::not_allowed, proto::kNakFieldNone);
+  }
+  if (payload_len != spec.payload_len) {
+    return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
+  }
+  switch (static_cast<proto::MsgType>(type_id)) {
+    case proto::MsgType::hello:
+      return reply(Reply::version);
+    case proto::MsgType::config_get:
+      return reply(Reply::config);
+    case proto::MsgType::config_set:
+      return decide_config_set(type_id, seq, payload, payload_len);
+    case proto::MsgType::poll:
+      return reply(Reply::sample);
+    case proto::MsgType::status_get:
+      return reply(Reply::status);
+    default:
+      // Every host-to-firmware type is listed above; a new one in the table must be added here.
+      return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);
+  }
+}
+
+}  // namespace fw
+}  // namespace driftlab

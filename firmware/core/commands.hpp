@@ -1,0 +1,38 @@
+// Commands: one decoded host frame -> the reply it deserves, and for CONFIG_SET the validated new Config.
+// Pure decision, no side effects: the Firmware applies a change only on Reply::ack, so a NAK changes nothing.
+// Spec: docs/protocol.md §3 (types, directions) and §4 (Status); docs/firmware.md "Commands".
+#pragma once
+
+#include <stdint.h>
+
+#include "driftlab/proto/messages.hpp"
+#include "driftlab/proto/nodiscard.hpp"
+#include "firmware/core/config.hpp"
+
+namespace driftlab {
+namespace fw {
+
+/// What the firmware sends back.
+enum class Reply : uint8_t {
+  version,  ///< HELLO -> VERSION
+  config,   ///< CONFIG_GET -> CONFIG
+  sample,   ///< POLL -> SAMPLE (+ RAW in raw mode)
+  status,   ///< STATUS_GET -> STATUS
+  ack,      ///< CONFIG_SET accepted: apply `config`, then ACK
+  nak,      ///< refused: send `nak`, change nothing
+};
+
+struct CommandOutcome {
+  Reply reply;
+  Config config;            ///< the validated new configuration, meaningful for Reply::ack
+  proto::AckPayload ack;    ///< meaningful for Reply::ack
+  proto::NakPayload nak;    ///< meaningful for Reply::nak
+};
+
+/// Decides the answer to a frame of type `type_id` and sequence `seq` carrying `payload_len` bytes. Checks, in
+/// order: the type is known (else NAK unknown_type), host-to-firmware (else not_allowed), the length is the
+/// type's fixed length (else bad_length), then CONFIG_SET's fields (out_of_range with the field index).
+DRIFTLAB_NODISCARD CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len);
+
+}  // namespace fw
+}  // namespace driftlab

@@ -1,0 +1,230 @@
+// Firmware: event handling, output cadence and replies (firmware.hpp; docs/firmware.md, docs/protocol.md §3).
+#include "firmware/core/firmware.hpp"
+
+#include "driftlab/proto/encoder.hpp"
+#include "driftlab/proto/messages.hpp"
+#include "driftlab/proto/wire.hpp"
+#include "firmware/core/commands.hpp"
+#include "firmware/core/hal.hpp"
+#include "firmware/core/version.hpp"
+
+namespace driftlab {
+namespace fw {
+namespace {
+
+uint16_t saturate_u16(uint32_t value) { return value > 0xFFFFU ? static_cast<uint16_t>(0xFFFFU) : static_cast<uint16_t>(value); }
+
+uint16_t add_saturating(uint16_t a, uint32_t b) { return saturate_u16(static_cast<uint32_t>(a) + b); }
+
+bool timing_differs(const Config& a, const Config& b) {
+  return a.output_period_ms != b.output_period_ms || a.conversions_per_output != b.conversions_per_output;
+}
+
+}  // namespace
+
+Firmware::Firmware()
+    : config_(kDefaultConfig),
+      windows_(),
+      newest_code_counts_(),
+      newest_tick_(0),
+      conversion_period_ticks_(0),
+      have_conversion_(false),
+      conversions_since_output_(0),
+      dropped_(0),
+      tx_overflow_bytes_(0),
+      tx_seq_(0),
+      decoder_() {
+  reset_windows();
+}
+
+void Firmware::start() { arm(); }
+
+void Firmware::arm() {
+  const AdcSchedule schedule = adc_schedule(config_);
+  conversion_period_ticks_ = schedule.conversion_period_ticks;
+  have_conversion_ = false;
+  conversions_since_output_ = 0;
+  hal_init(schedule);
+}
+
+void Firmware::reset_windows() {
+  for (uint8_t c = 0; c < kChannelCount; ++c) {
+    windows_[c].reset(config_.window);
+  }
+}
+
+void Firmware::apply(const Config& next) {
+  const bool retime = timing_differs(config_, next);
+  const bool rewindow = retime || config_.window != next.window;
+  config_ = next;
+  if (rewindow) {
+    reset_windows();
+  }
+  if (retime) {
+    arm();
+  }
+}
+
+void Firmware::on_conversion(Channel channel, uint16_t code_counts, uint32_t tick) {
+  DRIFTLAB_ASSERT(code_counts <= LsWindow::kMaxCode && channel_index(channel) < kChannelCount);
+  uint32_t elapsed_conversions = 1;
+  if (have_conversion_) {
+    // Trigger ticks sit on the period grid, so the gap in whole periods (rounded, tolerant of a port that stamps
+    // a little late) counts the conversions lost in between.
+    const uint32_t gap_ticks = tick - newest_tick_;
+    const uint32_t gap_periods = (gap_ticks + conversion_period_ticks_ / 2U) / conversion_period_ticks_;
+    if (gap_periods > 1U) {
+      elapsed_conversions = gap_periods;
+      dropped_ = add_saturating(dropped_, gap_periods - 1U);
+    }
+  }
+  have_conversion_ = true;
+  newest_tick_ = tick;
+
+  const uint8_t c = channel_index(channel);
+  newest_code_counts_[c] = code_counts;
+  windows_[c].push(code_counts);
+
+  const uint32_t per_output = static_cast<uint32_t>(kChannelCount) * config_.conversions_per_output;
+  const uint32_t since = conversions_since_output_ + elapsed_conversions;
+  if (since >= per_output) {
+    conversions_since_output_ = static_cast<uint16_t>(since % per_output);
+    if (config_.mode == proto::OutputMode::stream) {
+      send_sample();
+    }
+  } else {
+    conversions_since_output_ = static_cast<uint16_t>(since);
+  }
+}
+
+void Firmware::on_rx_byte(uint8_t byte) {
+  if (!decoder_.feed(byte)) {
+    return;
+  }
+  do {
+    handle_frame();
+  } while (decoder_.next());
+}
+
+void Firmware::handle_frame() {
+  const CommandOutcome outcome = decide(decoder_.type_id(), decoder_.seq(), decoder_.payload(), decoder_.payload_len());
+  switch (outcome.reply) {
+    case Reply::version:
+      send_version();
+      break;
+    case Reply::config:
+      send_config();
+      break;
+    case Reply::sample:
+      send_sample();
+      break;
+    case Reply::status:
+      send_status();
+      break;
+    case Reply::ack:
+      apply(outcome.config);
+      send_ack(outcome.ack);
+      break;
+    case Reply::nak:
+      send_nak(outcome.nak);
+      break;
+  }
+}
+
+void Firmware::send_frame(const uint8_t* frame, uint8_t size) {
+  // Every frame takes a sequence number, sent or not, so the host sees a lost frame as a jump.
+  ++tx_seq_;
+  if (size == 0) {
+    return;
+  }
+  if (hal_uart_write(frame, size) != size) {
+    tx_overflow_bytes_ = add_saturating(tx_overflow_bytes_, size);
+  }
+}
+
+void Firmware::send_sample() {
+  proto::SamplePayload p = {};
+  p.tick = newest_tick_;
+  uint8_t n_window = LsWindow::kMaxWindow;
+  for (uint8_t c = 0; c < kChannelCount; ++c) {
+    p.value_q8[c] = windows_[c].estimate_q8(config_.fit_order);
+    if (windows_[c].saturated()) {
+      p.sat_flags = static_cast<uint8_t>(p.sat_flags | (1U << c));
+    }
+    // Between outputs the channels' fill levels differ by one during warm-up; report the least filled.
+    n_window = windows_[c].n() < n_window ? windows_[c].n() : n_window;
+  }
+  p.n_window = n_window;
+  p.dropped = dropped_;
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame, static_cast<uint8_t>(proto::encode_sample(p, tx_seq_, frame, sizeof frame)));
+  if (config_.raw) {
+    send_raw();
+  }
+}
+
+void Firmware::send_raw() {
+  proto::RawPayload p = {};
+  p.tick = newest_tick_;
+  for (uint8_t c = 0; c < kChannelCount; ++c) {
+    p.code[c] = newest_code_counts_[c];
+  }
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame, static_cast<uint8_t>(proto::encode_raw(p, tx_seq_, frame, sizeof frame)));
+}
+
+void Firmware::send_version() {
+  const ResetInfo reset = hal_reset_info();
+  proto::VersionPayload p = {};
+  p.proto_version = proto::kProtocolVersion;
+  p.fw_major = kFwMajor;
+  p.fw_minor = kFwMinor;
+  p.fw_patch = kFwPatch;
+  p.board_id = kBoardId;
+  p.adc_bits = kAdcBits;
+  p.vref_mv = kVrefMv;
+  p.tick_hz = kTickHz;
+  p.channel_count = kChannelCount;
+  for (uint8_t c = 0; c < kChannelCount; ++c) {
+    p.adc_pin[c] = kAdcPin[c];
+  }
+  p.reset_cause = reset.cause;
+  p.assert_line = reset.assert_line;
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame, static_cast<uint8_t>(proto::encode_version(p, tx_seq_, frame, sizeof frame)));
+}
+
+void Firmware::send_config() {
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame,
+             static_cast<uint8_t>(proto::encode_config(config_to_payload(config_), tx_seq_, frame, sizeof frame)));
+}
+
+void Firmware::send_status() {
+  const proto::DecoderCounters& rx = decoder_.counters();
+  proto::StatusPayload p = {};
+  p.uptime_ticks = hal_ticks();
+  p.rx_frames = saturate_u16(rx.frames_ok);
+  p.rx_bad_crc = saturate_u16(rx.bad_crc);
+  p.rx_bad_length = saturate_u16(rx.bad_length);
+  p.rx_unknown_type = saturate_u16(rx.unknown_type);
+  p.rx_resync_bytes = saturate_u16(rx.resync_bytes);
+  p.rx_overflow = hal_rx_overflow_count();
+  p.tx_overflow = tx_overflow_bytes_;
+  p.dropped = dropped_;
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame, static_cast<uint8_t>(proto::encode_status(p, tx_seq_, frame, sizeof frame)));
+}
+
+void Firmware::send_ack(const proto::AckPayload& ack) {
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame, static_cast<uint8_t>(proto::encode_ack(ack, tx_seq_, frame, sizeof frame)));
+}
+
+void Firmware::send_nak(const proto::NakPayload& nak) {
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame, static_cast<uint8_t>(proto::encode_nak(nak, tx_seq_, frame, sizeof frame)));
+}
+
+}  // namespace fw
+}  // namespace driftlab

@@ -1,0 +1,70 @@
+// Firmware: the core's one stateful object. It owns the configuration, one LsWindow per channel, the saturation
+// and loss bookkeeping, the frame decoder and the transmit sequence number, and reacts to exactly two events
+// that the port's main loop delivers (hal.hpp). Architecture and timing: docs/firmware.md.
+//
+// Output cadence is counted in conversions, never read from a clock: in stream mode a SAMPLE (+ RAW in raw
+// mode) follows every 4 x conversions_per_output-th conversion after arming (lost ones included), i.e. after
+// the accel_z conversion that completes a round, stamped with that conversion's tick. So the same conversions
+// give the same frames on every port and in every simulator.
+#pragma once
+
+#include <stdint.h>
+
+#include "driftlab/channels.hpp"
+#include "driftlab/proto/decoder.hpp"
+#include "firmware/core/config.hpp"
+#include "firmware/core/ls_window.hpp"
+
+namespace driftlab {
+namespace fw {
+
+class Firmware {
+ public:
+  Firmware();
+
+  /// Main loop, once after the board's own set-up: arms the default schedule (kDefaultConfig) via hal_init().
+  void start();
+
+  /// Main loop: one finished conversion, in the order the ADC produced them. `code_counts` is 0..1023 and
+  /// `tick` the trigger time [ticks] (hal.hpp Conversion); a tick gap of k periods means k - 1 lost conversions.
+  void on_conversion(Channel channel, uint16_t code_counts, uint32_t tick);
+
+  /// Main loop: one received UART byte. Complete valid frames are answered at once through hal_uart_write().
+  void on_rx_byte(uint8_t byte);
+
+  const Config& config() const { return config_; }
+  /// Conversions lost since boot, saturating [conversions].
+  uint16_t dropped() const { return dropped_; }
+  /// Bytes of frames that did not fit the transmit ring, saturating [bytes].
+  uint16_t tx_overflow() const { return tx_overflow_bytes_; }
+  const LsWindow& window(Channel channel) const { return windows_[channel_index(channel)]; }
+
+ private:
+  void apply(const Config& next);
+  void arm();
+  void reset_windows();
+  void handle_frame();
+  void send_frame(const uint8_t* frame, uint8_t size);
+  void send_sample();
+  void send_raw();
+  void send_version();
+  void send_config();
+  void send_status();
+  void send_ack(const proto::AckPayload& ack);
+  void send_nak(const proto::NakPayload& nak);
+
+  Config config_;
+  LsWindow windows_[kChannelCount];
+  uint16_t newest_code_counts_[kChannelCount];
+  uint32_t newest_tick_;              // trigger tick of the newest conversion [ticks]
+  uint32_t conversion_period_ticks_;  // of the armed schedule [ticks]
+  bool have_conversion_;              // a conversion arrived since arming, so newest_tick_ anchors the gap check
+  uint16_t conversions_since_output_;
+  uint16_t dropped_;
+  uint16_t tx_overflow_bytes_;
+  uint16_t tx_seq_;
+  proto::Decoder decoder_;
+};
+
+}  // namespace fw
+}  // namespace driftlab

@@ -1,0 +1,95 @@
+// The firmware HAL: what the pure-logic core asks of a board, and the two events a board feeds into the core.
+// Ports: firmware/port/avr (ATmega328P registers) and firmware/port/native (NativeBoard, virtual time).
+// Contract and port notes: docs/hal.md.
+//
+// How it fits together (who calls what, in which context and unit):
+//  - At start and after an accepted CONFIG_SET the core calls hal_init() from the main loop with an AdcSchedule:
+//    a conversion period [ticks] and the round-robin channel order. The port arms a timer that triggers one ADC
+//    conversion per period; its ADC interrupt reads the 10-bit code [counts], selects the next channel of the
+//    order for the following conversion, and pushes a Conversion {channel, code, tick of the trigger} into a ring
+//    of kAdcRingCapacity. A full ring loses the conversion; the core sees the gap in the ticks and counts it.
+//  - The UART receive interrupt pushes bytes into a ring of kRxRingCapacity (counting bytes lost to a full ring,
+//    see hal_rx_overflow_count()); the transmit interrupt drains the ring filled by hal_uart_write().
+//  - The port's main loop drains the conversion ring into Firmware::on_conversion() and the receive ring into
+//    Firmware::on_rx_byte(), then calls hal_idle(). Events never enter the core from an interrupt.
+//  - Time is ticks of kTickHz on both ports, so native and AVR frames are byte-identical.
+#pragma once
+
+#include <stdint.h>
+
+#include "driftlab/channels.hpp"
+#include "driftlab/proto/nodiscard.hpp"
+
+namespace driftlab {
+namespace fw {
+
+/// Rate of hal_ticks() and of every tick in frames [Hz]: Timer1 at 16 MHz / 64 on the ATmega328P.
+constexpr uint32_t kTickHz = 250000;
+constexpr uint32_t kTicksPerMs = kTickHz / 1000;
+static_assert(kTickHz % 1000 == 0, "ms to ticks conversions assume a whole number of ticks per ms");
+
+/// Ring sizes shared by both ports so that overflow behaviour is the same natively and on the chip.
+/// Conversions: 16 x 7 bytes absorb one output's burst of work (divisions, framing) at the fastest schedule.
+constexpr uint8_t kAdcRingCapacity = 16;
+/// Received bytes: two of the longest host frames (CONFIG_SET, 16 bytes).
+constexpr uint8_t kRxRingCapacity = 32;
+/// Bytes to send: SAMPLE + RAW (54 bytes) plus two replies, with room to spare.
+constexpr uint8_t kTxRingCapacity = 128;
+
+/// What hal_init() arms: one conversion every `conversion_period_ticks`, channels in `order`, repeating.
+struct AdcSchedule {
+  uint16_t conversion_period_ticks;  ///< time between two conversion triggers [ticks], >= 1
+  Channel order[kChannelCount];      ///< channel of conversion 0, 1, 2, 3 after arming, then again from 0
+};
+
+/// One finished conversion as the ADC interrupt records it.
+struct Conversion {
+  Channel channel;       ///< channel the multiplexer selected for this conversion
+  uint16_t code_counts;  ///< 10-bit result [counts], 0..1023
+  uint32_t tick;         ///< time of the trigger that started it [ticks]; consecutive conversions differ by
+                         ///< exactly conversion_period_ticks unless some were lost
+};
+
+/// Why the chip last reset, as VERSION reports it: the ATmega328P MCUSR bits.
+constexpr uint8_t kResetPowerOn = 0x01;
+constexpr uint8_t kResetExternal = 0x02;
+constexpr uint8_t kResetBrownOut = 0x04;
+constexpr uint8_t kResetWatchdog = 0x08;
+
+struct ResetInfo {
+  uint8_t cause;         ///< kReset* bits
+  uint16_t assert_line;  ///< line of the DRIFTLAB_ASSERT that forced the reset, 0 = none
+};
+
+/// Main loop, at start and on schedule changes. Stops any running schedule, drops conversions still queued from
+/// it, and arms `schedule`: the first trigger comes one period after the call, conversion 0 samples order[0].
+/// hal_ticks() keeps counting across calls.
+void hal_init(const AdcSchedule& schedule);
+
+/// Main loop. Queues `count` bytes for transmission if all of them fit, else none: the core never sends half a
+/// frame. Never blocks. Returns the bytes accepted, `count` or 0.
+DRIFTLAB_NODISCARD uint8_t hal_uart_write(const uint8_t* bytes, uint8_t count);
+
+/// Any context. Free-running time [ticks of kTickHz], wraps every 2^32 ticks (4.77 h).
+uint32_t hal_ticks();
+
+/// Main loop, when both rings are empty: sleeps until the next interrupt on the chip, returns at once natively.
+void hal_idle();
+
+/// Main loop. Bytes lost because the receive ring was full, since reset, saturating at 0xFFFF [bytes].
+uint16_t hal_rx_overflow_count();
+
+/// Main loop. Cause of the last reset and the assertion line behind it.
+ResetInfo hal_reset_info();
+
+/// Any context, never returns. Called by DRIFTLAB_ASSERT with the failing line: natively prints and aborts; on
+/// the chip stores the line for the next VERSION and resets through the watchdog.
+[[noreturn]] void hal_assert_failed(uint16_t line);
+
+}  // namespace fw
+}  // namespace driftlab
+
+/// Programmer errors only (a port breaking the contract); bad input is a Status or a counter, never an assert.
+/// Only the line travels: the chip has no room for file names (docs/firmware.md "Errors").
+#define DRIFTLAB_ASSERT(cond) \
+  ((cond) ? static_cast<void>(0) : ::driftlab::fw::hal_assert_failed(static_cast<uint16_t>(__LINE__)))

@@ -1,0 +1,49 @@
+// Interrupt vectors of the ATmega328P port: move data between the peripherals and the rings, count what is
+// lost, nothing else (docs/hal.md "AVR port"). All processing happens in the main loop.
+#include <avr/interrupt.h>
+#include <avr/io.h>
+
+#include "firmware/port/avr/isr_shared_avr.hpp"
+
+namespace driftlab {
+namespace fw {
+
+IsrShared g_isr;
+
+}  // namespace fw
+}  // namespace driftlab
+
+using driftlab::fw::g_isr;
+
+// Timer1 compare match B: the ADC has just been triggered. Running this vector clears OCF1B, which the ADC's
+// auto-trigger needs as a fresh rising edge for the next period, and advances the trigger time.
+ISR(TIMER1_COMPB_vect) { g_isr.trigger_tick = g_isr.trigger_tick + g_isr.period_ticks; }
+
+// A conversion finished. The multiplexer change takes effect for the next trigger, which is at least
+// kMinConversionPeriodTicks away, so the round-robin stays in step with the slots.
+ISR(ADC_vect) {
+  const uint16_t code_counts = ADC;
+  const uint8_t slot = g_isr.slot;
+  const uint8_t next = static_cast<uint8_t>(slot + 1U == driftlab::kChannelCount ? 0U : slot + 1U);
+  ADMUX = g_isr.admux[next];
+  g_isr.slot = next;
+  const driftlab::fw::Conversion conversion = {g_isr.order[slot], code_counts, g_isr.trigger_tick};
+  // A full ring loses this conversion; the core sees the tick gap and counts it.
+  static_cast<void>(g_isr.adc_ring.push(conversion));
+}
+
+ISR(USART_RX_vect) {
+  const uint8_t byte = UDR0;
+  if (!g_isr.rx_ring.push(byte) && g_isr.rx_overflow_bytes != 0xFFFFU) {
+    g_isr.rx_overflow_bytes = static_cast<uint16_t>(g_isr.rx_overflow_bytes + 1U);
+  }
+}
+
+ISR(USART_UDRE_vect) {
+  uint8_t byte = 0;
+  if (g_isr.tx_ring.pop(&byte)) {
+    UDR0 = byte;
+  } else {
+    UCSR0B = static_cast<uint8_t>(UCSR0B & ~_BV(UDRIE0));
+  }
+}

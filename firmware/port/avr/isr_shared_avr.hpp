@@ -1,0 +1,29 @@
+// State the ATmega328P's interrupt handlers share with the main loop. Only rings (spsc_ring.hpp) and single
+// bytes cross without a lock; multi-byte values are read under InterruptLock (docs/hal.md "AVR port").
+#pragma once
+
+#include <stdint.h>
+
+#include "driftlab/channels.hpp"
+#include "firmware/core/hal.hpp"
+#include "firmware/core/spsc_ring.hpp"
+
+namespace driftlab {
+namespace fw {
+
+struct IsrShared {
+  SpscRing<Conversion, kAdcRingCapacity> adc_ring;  ///< ADC vector -> main loop
+  SpscRing<uint8_t, kRxRingCapacity> rx_ring;        ///< USART RX vector -> main loop
+  SpscRing<uint8_t, kTxRingCapacity> tx_ring;        ///< main loop -> USART UDRE vector
+  volatile uint16_t rx_overflow_bytes;               ///< RX vector only; saturating [bytes]
+  volatile uint32_t trigger_tick;   ///< tick of the latest Timer1 compare match B = ADC trigger [ticks]
+  uint16_t period_ticks;            ///< armed conversion period [ticks]; written with interrupts off
+  Channel order[kChannelCount];     ///< channel of each conversion slot; written with interrupts off
+  uint8_t admux[kChannelCount];     ///< ADMUX value of each conversion slot (reference + mux input)
+  volatile uint8_t slot;            ///< ADC vector only: slot of the conversion in progress
+};
+
+extern IsrShared g_isr;
+
+}  // namespace fw
+}  // namespace driftlab
