@@ -10,5 +10,7 @@ namespace driftlab::host::cli {
 using RegisterFn = void (*)(CLI::App& app);
 
 // One declaration per cmd_*.cpp; keep in the order `driftlab --help` lists them.
+void register_ports(CLI::App& app);
+void register_flash(CLI::App& app);
 
 }  // namespace driftlab::host::cli

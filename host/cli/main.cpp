@@ -9,6 +9,8 @@ namespace {
 
 // One line per subcommand; see commands.hpp.
 constexpr driftlab::host::cli::RegisterFn kCommands[] = {
+    driftlab::host::cli::register_ports,
+    driftlab::host::cli::register_flash,
 };
 
 }  // namespace

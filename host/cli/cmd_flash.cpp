@@ -1,0 +1,60 @@
+// `driftlab flash`: writes the AVR firmware image to a board through avrdude (host/io/avrdude).
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "host/cli/commands.hpp"
+#include "host/io/avrdude.hpp"
+#include "host/io/usb_ports.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct FlashOptions {
+    io::FlashRequest request;
+    bool dry_run = false;
+};
+
+// With no --port, the only USB serial adapter present is the board; more than one needs a choice.
+std::string pick_port() {
+    const io::UsbPortScan scan = io::list_usb_serial_ports();
+    std::vector<std::string> nodes;
+    for (const io::UsbSerialPort& p : scan.ports) nodes.insert(nodes.end(), p.device_nodes.begin(), p.device_nodes.end());
+    if (nodes.size() == 1) return nodes.front();
+    if (nodes.empty()) throw UsageError("no --port given and no USB serial adapter found (see `driftlab ports`)");
+    std::string list;
+    for (const std::string& n : nodes) list += " " + n;
+    throw UsageError("no --port given and several adapters present:" + list);
+}
+
+void run_flash(FlashOptions& opts) {
+    if (opts.request.hex_file.empty()) opts.request.hex_file = io::default_hex_file("/proc/self/exe");
+    if (opts.request.port.empty()) opts.request.port = pick_port();
+    if (opts.dry_run) {
+        for (const std::string& a : io::avrdude_arguments(opts.request)) std::cout << a << " ";
+        std::cout << "\n";
+        return;
+    }
+    const char* path = std::getenv("PATH");
+    io::run_avrdude(opts.request, path != nullptr ? path : "/usr/bin:/bin");
+    std::cout << "flashed " << opts.request.hex_file << " to " << opts.request.port << "\n";
+}
+
+}  // namespace
+
+void register_flash(CLI::App& app) {
+    auto opts = std::make_shared<FlashOptions>();
+    CLI::App* cmd = app.add_subcommand("flash", "Write the firmware to an Arduino Uno/Nano-class board with avrdude");
+    cmd->add_option("--port", opts->request.port, "Serial device of the board (default: the only USB adapter)");
+    cmd->add_option("--programmer", opts->request.programmer, "avrdude programmer id")->capture_default_str();
+    cmd->add_option("--baud", opts->request.baud, "Bootloader baud rate [bit/s]")->capture_default_str();
+    cmd->add_option("--part", opts->request.part, "avrdude part id")->capture_default_str();
+    cmd->add_option("--hex", opts->request.hex_file, "Intel HEX image (default: the AVR build's driftlab_fw.hex)");
+    cmd->add_option("--avrdude", opts->request.avrdude, "avrdude program")->capture_default_str();
+    cmd->add_flag("--dry-run", opts->dry_run, "Print the avrdude command instead of running it");
+    cmd->callback([opts] { run_flash(*opts); });
+}
+
+}  // namespace driftlab::host::cli

@@ -1,0 +1,106 @@
+// avrdude invocation for `driftlab flash`.
+#include "host/io/avrdude.hpp"
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "host/util/error.hpp"
+
+namespace driftlab::host::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool is_executable_file(const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(path.c_str(), X_OK) == 0;
+}
+
+}  // namespace
+
+std::vector<std::string> avrdude_arguments(const FlashRequest& request) {
+    return {request.avrdude,
+            "-p", request.part,
+            "-c", request.programmer,
+            "-P", request.port,
+            "-b", std::to_string(request.baud),
+            "-D",
+            "-U", "flash:w:" + request.hex_file + ":i"};
+}
+
+std::string find_in_path(const std::string& program, const std::string& path_env) {
+    if (program.find('/') != std::string::npos) return is_executable_file(program) ? program : std::string();
+    std::size_t start = 0;
+    while (start <= path_env.size()) {
+        std::size_t end = path_env.find(':', start);
+        if (end == std::string::npos) end = path_env.size();
+        const std::string dir = end > start ? path_env.substr(start, end - start) : std::string(".");
+        const std::string candidate = dir + "/" + program;
+        if (is_executable_file(candidate)) return candidate;
+        start = end + 1;
+    }
+    return {};
+}
+
+std::string default_hex_file(const std::string& exe_path) {
+    std::error_code ec;
+    const fs::path exe = fs::weakly_canonical(exe_path, ec);
+    if (ec) return {};
+    // exe = <build>/<preset>/bin/driftlab; the AVR preset builds into <build>/avr.
+    const fs::path avr_dir = exe.parent_path().parent_path().parent_path() / "avr";
+    if (!fs::is_directory(avr_dir, ec)) return {};
+    for (fs::recursive_directory_iterator it(avr_dir, ec), end; !ec && it != end; it.increment(ec)) {
+        if (it->path().filename() == "driftlab_fw.hex") return it->path().string();
+    }
+    return {};
+}
+
+void run_avrdude(const FlashRequest& request, const std::string& path_env) {
+    if (request.hex_file.empty()) {
+        throw UsageError("no firmware image: build it with `cmake --preset avr && cmake --build --preset avr` "
+                         "or pass --hex FILE");
+    }
+    if (!fs::is_regular_file(request.hex_file)) {
+        throw DataError(request.hex_file, 0, "firmware image not found (build the avr preset or pass --hex)");
+    }
+    const std::string avrdude = find_in_path(request.avrdude, path_env);
+    if (avrdude.empty()) {
+        throw DeviceError(request.avrdude, "avrdude not found in PATH; install it (Debian package avrdude, "
+                                           "scripts/setup.sh installs it)");
+    }
+    if (request.port.empty()) throw UsageError("no port given: pass --port DEV (see `driftlab ports`)");
+    if (::access(request.port.c_str(), F_OK) != 0) {
+        throw DeviceError(request.port, "no such port (is the board plugged in? `driftlab ports` lists adapters)");
+    }
+
+    FlashRequest resolved = request;
+    resolved.avrdude = avrdude;
+    const std::vector<std::string> args = avrdude_arguments(resolved);
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+
+    const pid_t pid = ::fork();
+    if (pid < 0) throw DeviceError(avrdude, std::string("cannot start: ") + std::strerror(errno));
+    if (pid == 0) {
+        ::execv(avrdude.c_str(), argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) throw DeviceError(avrdude, std::string("lost the child: ") + std::strerror(errno));
+    }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+    const std::string how = WIFEXITED(status) ? "exited with status " + std::to_string(WEXITSTATUS(status))
+                                              : "was killed by signal " + std::to_string(WTERMSIG(status));
+    throw DeviceError(request.port, "avrdude " + how +
+                                        " (wrong --programmer/--baud for this bootloader, or the board did not "
+                                        "reset into it; see its output above)");
+}
+
+}  // namespace driftlab::host::io

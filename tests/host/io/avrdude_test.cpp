@@ -1,0 +1,110 @@
+// avrdude wrapper: argument vector, PATH search, and the errors a user meets, with a fake avrdude program.
+#include "host/io/avrdude.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "host/util/error.hpp"
+
+namespace fs = std::filesystem;
+using namespace driftlab::host;
+using namespace driftlab::host::io;
+
+namespace {
+
+class FakeAvrdude : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("driftlab_avrdude_" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_ / "bin");
+        hex_ = (dir_ / "fw.hex").string();
+        std::ofstream(hex_) << ":00000001FF\n";
+        port_ = (dir_ / "ttyFAKE").string();
+        std::ofstream(port_) << "";
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // A stand-in that records its arguments and exits with `status`.
+    void install(int status) {
+        const fs::path prog = dir_ / "bin" / "avrdude";
+        std::ofstream(prog) << "#!/bin/sh\necho \"$@\" > " << (dir_ / "args").string() << "\nexit " << status << "\n";
+        fs::permissions(prog, fs::perms::owner_all);
+    }
+    std::string recorded_args() const {
+        std::ifstream in(dir_ / "args");
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+    FlashRequest request() const {
+        FlashRequest r;
+        r.port = port_;
+        r.hex_file = hex_;
+        return r;
+    }
+
+    fs::path dir_;
+    std::string hex_, port_;
+};
+
+}  // namespace
+
+TEST(Avrdude, ArgumentsNameArduinoBootloaderDefaultsAndTheImage) {
+    FlashRequest r;
+    r.port = "/dev/ttyACM0";
+    r.hex_file = "fw.hex";
+    const std::vector<std::string> expected = {"avrdude", "-p", "atmega328p", "-c", "arduino", "-P", "/dev/ttyACM0",
+                                               "-b", "115200", "-D", "-U", "flash:w:fw.hex:i"};
+    EXPECT_EQ(avrdude_arguments(r), expected);
+}
+
+TEST_F(FakeAvrdude, FindInPathSkipsDirectoriesWithoutTheProgram) {
+    install(0);
+    const std::string path = (dir_ / "empty").string() + ":" + (dir_ / "bin").string();
+    EXPECT_EQ(find_in_path("avrdude", path), (dir_ / "bin" / "avrdude").string());
+    EXPECT_EQ(find_in_path("avrdude", (dir_ / "empty").string()), "");
+}
+
+TEST_F(FakeAvrdude, SuccessfulRunPassesTheArgumentsThrough) {
+    install(0);
+    run_avrdude(request(), (dir_ / "bin").string());
+    EXPECT_EQ(recorded_args(), "-p atmega328p -c arduino -P " + port_ + " -b 115200 -D -U flash:w:" + hex_ + ":i\n");
+}
+
+TEST_F(FakeAvrdude, FailingAvrdudeIsADeviceErrorNamingThePortAndStatus) {
+    install(1);
+    try {
+        run_avrdude(request(), (dir_ / "bin").string());
+        FAIL() << "expected DeviceError";
+    } catch (const DeviceError& e) {
+        EXPECT_NE(std::string(e.what()).find(port_), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("status 1"), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(FakeAvrdude, MissingAvrdudeMissingPortAndMissingImageAreClearErrors) {
+    EXPECT_THROW(run_avrdude(request(), (dir_ / "bin").string()), DeviceError);  // not installed
+    install(0);
+    FlashRequest no_port = request();
+    no_port.port = (dir_ / "ttyNONE").string();
+    EXPECT_THROW(run_avrdude(no_port, (dir_ / "bin").string()), DeviceError);
+    FlashRequest no_hex = request();
+    no_hex.hex_file = (dir_ / "none.hex").string();
+    EXPECT_THROW(run_avrdude(no_hex, (dir_ / "bin").string()), DataError);
+}
+
+TEST_F(FakeAvrdude, DefaultImageIsFoundInTheSiblingAvrBuild) {
+    fs::create_directories(dir_ / "build/native/bin");
+    fs::create_directories(dir_ / "build/avr/firmware/port/avr");
+    std::ofstream(dir_ / "build/native/bin/driftlab") << "";
+    std::ofstream(dir_ / "build/avr/firmware/port/avr/driftlab_fw.hex") << ":00000001FF\n";
+    EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()),
+              (dir_ / "build/avr/firmware/port/avr/driftlab_fw.hex").string());
+    fs::remove_all(dir_ / "build/avr");
+    EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()), "");
+}
