@@ -61,8 +61,9 @@ uint32_t conversion_period_ticks(uint16_t output_period_ms, uint8_t conversions_
   return conversions == 0 ? 0 : (output_ticks + conversions / 2U) / conversions;
 }
 
-AdcSchedule adc_schedule(const Config& config) {
+AdcSchedule adc_schedule(const Config& config, uint32_t first_trigger_tick) {
   AdcSchedule schedule = {};
+  schedule.first_trigger_tick = first_trigger_tick;
   schedule.conversion_period_ticks =
       static_cast<uint16_t>(conversion_period_ticks(config.output_period_ms, config.conversions_per_output));
   for (uint8_t c = 0; c < kChannelCount; ++c) {

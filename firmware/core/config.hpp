@@ -58,8 +58,9 @@ proto::ConfigPayload config_to_payload(const Config& config);
 /// nearest tick; the effective output period is 4 x conversions_per_output x this.
 uint32_t conversion_period_ticks(uint16_t output_period_ms, uint8_t conversions_per_output);
 
-/// The ADC schedule hal_init() receives for `config`: its period and channels in Channel order.
-AdcSchedule adc_schedule(const Config& config);
+/// The ADC schedule hal_init() receives for `config`: first trigger at `first_trigger_tick` [ticks], the
+/// config's period, channels in Channel order.
+AdcSchedule adc_schedule(const Config& config, uint32_t first_trigger_tick);
 
 }  // namespace fw
 }  // namespace driftlab

@@ -29,6 +29,7 @@ Firmware::Firmware()
       newest_tick_(0),
       conversion_period_ticks_(0),
       have_conversion_(false),
+      rearm_pending_(false),
       conversions_since_output_(0),
       dropped_(0),
       tx_overflow_bytes_(0),
@@ -37,11 +38,14 @@ Firmware::Firmware()
   reset_windows();
 }
 
-void Firmware::start() { arm(); }
+void Firmware::start() {
+  arm(hal_ticks() + conversion_period_ticks(config_.output_period_ms, config_.conversions_per_output));
+}
 
-void Firmware::arm() {
-  const AdcSchedule schedule = adc_schedule(config_);
+void Firmware::arm(uint32_t first_trigger_tick) {
+  const AdcSchedule schedule = adc_schedule(config_, first_trigger_tick);
   conversion_period_ticks_ = schedule.conversion_period_ticks;
+  rearm_pending_ = false;
   have_conversion_ = false;
   conversions_since_output_ = 0;
   hal_init(schedule);
@@ -61,12 +65,17 @@ void Firmware::apply(const Config& next) {
     reset_windows();
   }
   if (retime) {
-    arm();
+    rearm_pending_ = true;
   }
 }
 
 void Firmware::on_conversion(Channel channel, uint16_t code_counts, uint32_t tick) {
   DRIFTLAB_ASSERT(code_counts <= LsWindow::kMaxCode && channel_index(channel) < kChannelCount);
+  if (rearm_pending_) {
+    // The last conversion of the old schedule anchors the new one (firmware.hpp); its code is not used.
+    arm(tick + conversion_period_ticks_);
+    return;
+  }
   uint32_t elapsed_conversions = 1;
   if (have_conversion_) {
     // Trigger ticks sit on the period grid, so the gap in whole periods (rounded, tolerant of a port that stamps

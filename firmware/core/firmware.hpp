@@ -6,6 +6,10 @@
 // mode) follows every 4 x conversions_per_output-th conversion after arming (lost ones included), i.e. after
 // the accel_z conversion that completes a round, stamped with that conversion's tick. So the same conversions
 // give the same frames on every port and in every simulator.
+//
+// A CONFIG_SET that changes the timing is applied at once (ACK, windows emptied) but re-arms the ADC at the
+// next conversion of the old schedule, which it discards: the new grid starts one old period after that
+// conversion's tick, a point both ports compute alike however late their main loop ran.
 #pragma once
 
 #include <stdint.h>
@@ -22,7 +26,8 @@ class Firmware {
  public:
   Firmware();
 
-  /// Main loop, once after the board's own set-up: arms the default schedule (kDefaultConfig) via hal_init().
+  /// Main loop, once after the board's own set-up: arms the default schedule (kDefaultConfig) via hal_init(),
+  /// first trigger one period after hal_ticks().
   void start();
 
   /// Main loop: one finished conversion, in the order the ADC produced them. `code_counts` is 0..1023 and
@@ -41,7 +46,7 @@ class Firmware {
 
  private:
   void apply(const Config& next);
-  void arm();
+  void arm(uint32_t first_trigger_tick);
   void reset_windows();
   void handle_frame();
   void send_frame(const uint8_t* frame, uint8_t size);
@@ -59,6 +64,7 @@ class Firmware {
   uint32_t newest_tick_;              // trigger tick of the newest conversion [ticks]
   uint32_t conversion_period_ticks_;  // of the armed schedule [ticks]
   bool have_conversion_;              // a conversion arrived since arming, so newest_tick_ anchors the gap check
+  bool rearm_pending_;                // accepted new timing waits for the next conversion to anchor its grid
   uint16_t conversions_since_output_;
   uint16_t dropped_;
   uint16_t tx_overflow_bytes_;

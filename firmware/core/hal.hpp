@@ -3,8 +3,8 @@
 // Contract and port notes: docs/hal.md.
 //
 // How it fits together (who calls what, in which context and unit):
-//  - At start and after an accepted CONFIG_SET the core calls hal_init() from the main loop with an AdcSchedule:
-//    a conversion period [ticks] and the round-robin channel order. The port arms a timer that triggers one ADC
+//  - At start, and after an accepted CONFIG_SET changed the timing, the core calls hal_init() from the main loop
+//    with an AdcSchedule: the tick of the first trigger, a conversion period [ticks] and the round-robin order. The port arms a timer that triggers one ADC
 //    conversion per period; its ADC interrupt reads the 10-bit code [counts], selects the next channel of the
 //    order for the following conversion, and pushes a Conversion {channel, code, tick of the trigger} into a ring
 //    of kAdcRingCapacity. A full ring loses the conversion; the core sees the gap in the ticks and counts it.
@@ -36,11 +36,28 @@ constexpr uint8_t kRxRingCapacity = 32;
 /// Bytes to send: SAMPLE + RAW (54 bytes) plus two replies, with room to spare.
 constexpr uint8_t kTxRingCapacity = 128;
 
-/// What hal_init() arms: one conversion every `conversion_period_ticks`, channels in `order`, repeating.
+/// What hal_init() arms: a first conversion at `first_trigger_tick`, then one every `conversion_period_ticks`,
+/// channels in `order`, repeating.
 struct AdcSchedule {
+  /// Trigger time of conversion 0 [ticks]. The core puts it on its own tick grid (one old period after the
+  /// conversion that ended the old schedule, or one period after start), so that the new grid does not depend on
+  /// how long the main loop took to get there and every port arms the same grid.
+  uint32_t first_trigger_tick;
   uint16_t conversion_period_ticks;  ///< time between two conversion triggers [ticks], >= 1
   Channel order[kChannelCount];      ///< channel of conversion 0, 1, 2, 3 after arming, then again from 0
 };
+
+/// A first trigger closer than this to the arming instant, already past, or further than 65536 ticks (one Timer1
+/// cycle) cannot be armed as asked: ports then trigger first one period after the call instead.
+constexpr uint32_t kMinArmWaitTicks = 2;
+constexpr uint32_t kMaxArmWaitTicks = 65536;
+
+/// Ticks from hal_init() at `now_tick` to the first trigger: as asked when armable, else one period (above).
+/// Shared by both ports so they choose alike.
+inline uint32_t arm_wait_ticks(const AdcSchedule& schedule, uint32_t now_tick) {
+  const uint32_t wait = schedule.first_trigger_tick - now_tick;  // wraps to a huge value when already past
+  return wait >= kMinArmWaitTicks && wait <= kMaxArmWaitTicks ? wait : schedule.conversion_period_ticks;
+}
 
 /// One finished conversion as the ADC interrupt records it.
 struct Conversion {
@@ -61,9 +78,9 @@ struct ResetInfo {
   uint16_t assert_line;  ///< line of the DRIFTLAB_ASSERT that forced the reset, 0 = none
 };
 
-/// Main loop, at start and on schedule changes. Stops any running schedule, drops conversions still queued from
-/// it, and arms `schedule`: the first trigger comes one period after the call, conversion 0 samples order[0].
-/// hal_ticks() keeps counting across calls.
+/// Main loop, at start and on schedule changes. Stops any running schedule, waits for a conversion in progress,
+/// drops conversions still queued from it, and arms `schedule`: conversion 0 samples order[0] at
+/// schedule.first_trigger_tick (see arm_wait_ticks()). hal_ticks() keeps counting across calls.
 void hal_init(const AdcSchedule& schedule);
 
 /// Main loop. Queues `count` bytes for transmission if all of them fit, else none: the core never sends half a

@@ -177,7 +177,7 @@ TEST(Commands, QueriesGetTheirReplies) {
 TEST(Config, DefaultsAreValidAndGiveAnExactHundredMillisecondOutput) {
   const ConfigCheck check = validate(config_to_payload(kDefaultConfig));
   EXPECT_EQ(check.status, Status::ok);
-  const AdcSchedule schedule = adc_schedule(kDefaultConfig);
+  const AdcSchedule schedule = adc_schedule(kDefaultConfig, 0);
   EXPECT_EQ(schedule.conversion_period_ticks * 4U * kDefaultConfig.conversions_per_output, 25000U);
   for (uint8_t c = 0; c < kChannelCount; ++c) {
     EXPECT_EQ(channel_index(schedule.order[c]), c);

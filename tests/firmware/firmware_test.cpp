@@ -239,15 +239,17 @@ TEST(Firmware, NakLeavesConfigurationAndScheduleUnchanged) {
   EXPECT_EQ(rig.board.conversion_period_ticks(), kPeriodTicks);
 }
 
-TEST(Firmware, AcceptedTimingChangeIsAckedAndRearmsTheSchedule) {
+TEST(Firmware, AcceptedTimingChangeIsAckedAndRearmsOnTheOldGrid) {
   NativeRig rig;
+  rig.run_until(10 * kPeriodTicks + 77, [](Channel, uint64_t) -> uint16_t { return 512; });
   proto::ConfigPayload config = default_payload();
   config.output_period_ms = 10;
   config.conversions_per_output = 1;
   config.window = 1;
+  config.mode = 1;
   rig.send_config(config);
   rig.send_empty(MsgType::config_get);
-  const std::vector<Frame> frames = rig.receive();
+  std::vector<Frame> frames = rig.receive();
   ASSERT_EQ(frames.size(), 2U);
   ASSERT_TRUE(is(frames[0], MsgType::ack));
   const auto ack = parse_as<proto::AckPayload>(frames[0]);
@@ -256,8 +258,21 @@ TEST(Firmware, AcceptedTimingChangeIsAckedAndRearmsTheSchedule) {
   const auto current = parse_as<proto::ConfigPayload>(frames[1]);
   EXPECT_EQ(current.output_period_ms, 10);
   EXPECT_EQ(current.conversions_per_output, 1);
+  // The next conversion of the old grid (tick 2750) is the anchor: the new grid starts one old period later,
+  // whatever time the request arrived, then runs at 10 ms / 4 = 625 ticks.
+  EXPECT_EQ(rig.board.arm_count(), 1U);
+  rig.run_until(11 * kPeriodTicks, [](Channel, uint64_t) -> uint16_t { return 512; });
   EXPECT_EQ(rig.board.arm_count(), 2U);
-  EXPECT_EQ(rig.board.conversion_period_ticks(), 625);  // 10 ms = 2500 ticks over 4 conversions
+  EXPECT_EQ(rig.board.conversion_period_ticks(), 625);
+  EXPECT_EQ(rig.board.next_conversion_time_ticks(), 12 * kPeriodTicks);
+  EXPECT_EQ(channel_index(rig.board.next_channel()), 0);
+  // Stream mode: one SAMPLE per 4 conversions of the new grid, the first stamped on its 4th trigger.
+  rig.run_until(12 * kPeriodTicks + 7 * 625, [](Channel, uint64_t) -> uint16_t { return 512; });
+  frames = rig.receive();
+  ASSERT_EQ(frames.size(), 2U);
+  EXPECT_EQ(parse_as<proto::SamplePayload>(frames[0]).tick, 12 * kPeriodTicks + 3 * 625);
+  EXPECT_EQ(parse_as<proto::SamplePayload>(frames[1]).tick, 12 * kPeriodTicks + 7 * 625);
+  EXPECT_EQ(rig.firmware.dropped(), 0);
 }
 
 TEST(Firmware, FirmwareToHostTypeIsNakedNotAllowed) {

@@ -51,7 +51,7 @@ uint32_t ticks_locked() {
   uint16_t count = TCNT1;
   if (TIFR1 & _BV(OCF1B)) {
     count = TCNT1;
-    tick += g_isr.period_ticks;
+    tick += g_isr.step_ticks;
   }
   return tick + count;
 }
@@ -95,10 +95,13 @@ void avr_watchdog_kick() { wdt_reset(); }
 
 void hal_init(const AdcSchedule& schedule) {
   InterruptLock lock;
-  const uint32_t now = ticks_locked();
-  // Stop the timer and the ADC's triggering, forget conversions of the old schedule.
+  // Stop the tick first so that `now` is exact while the new cycle is set up.
   TCCR1B = 0;
+  const uint32_t now = ticks_locked();
+  // Stop triggering; let a conversion in progress finish so its result cannot land in the new schedule.
   ADCSRA = _BV(ADEN) | _BV(ADPS2) | _BV(ADPS1) | _BV(ADPS0);
+  while (ADCSRA & _BV(ADSC)) {
+  }
   ADCSRA = static_cast<uint8_t>(ADCSRA | _BV(ADIF));
   g_isr.adc_ring.clear();
   for (uint8_t c = 0; c < kChannelCount; ++c) {
@@ -107,14 +110,17 @@ void hal_init(const AdcSchedule& schedule) {
   }
   g_isr.slot = 0;
   ADMUX = g_isr.admux[0];
+
+  // The first cycle lasts until schedule.first_trigger_tick; the compare-B vector then sets the steady period.
+  const uint32_t wait = arm_wait_ticks(schedule, now);
   g_isr.period_ticks = schedule.conversion_period_ticks;
   g_isr.trigger_tick = now;
-
-  const uint16_t top = static_cast<uint16_t>(schedule.conversion_period_ticks - 1U);
+  g_isr.step_ticks = wait;
+  const uint16_t first_top = static_cast<uint16_t>(wait - 1U);
   TCCR1A = 0;
   TCNT1 = 0;
-  OCR1A = top;
-  OCR1B = top;
+  OCR1A = first_top;
+  OCR1B = first_top;
   TIFR1 = _BV(OCF1A) | _BV(OCF1B) | _BV(TOV1);
   TIMSK1 = _BV(OCIE1B);
   ADCSRB = kAdcsrbTimer1CompareB;

@@ -17,6 +17,8 @@ struct IsrShared {
   SpscRing<uint8_t, kTxRingCapacity> tx_ring;        ///< main loop -> USART UDRE vector
   volatile uint16_t rx_overflow_bytes;               ///< RX vector only; saturating [bytes]
   volatile uint32_t trigger_tick;   ///< tick of the latest Timer1 compare match B = ADC trigger [ticks]
+  volatile uint32_t step_ticks;     ///< ticks from the latest trigger to the next: the first wait after
+                                    ///< arming, then period_ticks [ticks]
   uint16_t period_ticks;            ///< armed conversion period [ticks]; written with interrupts off
   Channel order[kChannelCount];     ///< channel of each conversion slot; written with interrupts off
   uint8_t admux[kChannelCount];     ///< ADMUX value of each conversion slot (reference + mux input)

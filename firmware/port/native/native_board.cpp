@@ -78,7 +78,7 @@ void NativeBoard::on_hal_init(const AdcSchedule& schedule) {
   armed_ = true;
   ++arm_count_;
   next_index_ = 0;
-  next_trigger_ticks_ = time_ticks_ + schedule.conversion_period_ticks;
+  next_trigger_ticks_ = time_ticks_ + arm_wait_ticks(schedule, static_cast<uint32_t>(time_ticks_));
   adc_ring_.clear();
 }
 
