@@ -1,5 +1,5 @@
 // Q8 fixed point: values in ADC counts with 8 fractional bits (1/256 count), as SAMPLE.value_q8 carries them.
-// Spec: docs/protocol.md §3.7. Integer only: the firmware has no float, and a 10-bit code times 256 times a
+// Spec: docs/protocol.md §3.6. Integer only: the firmware has no float, and a 10-bit code times 256 times a
 // window of 64 still fits in int32_t (1023 * 256 * 64 < 2^24).
 #pragma once
 

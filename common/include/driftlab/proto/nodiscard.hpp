@@ -1,4 +1,4 @@
-// DRIFTLAB_NODISCARD: C++14 has no [[nodiscard]], so fallible functions use GCC's attribute (docs/protocol.md §6).
+// DRIFTLAB_NODISCARD: C++14 has no [[nodiscard]], so fallible functions carry GCC's warn_unused_result instead.
 #pragma once
 
 #if defined(__GNUC__)
