@@ -43,7 +43,7 @@ find_program(AVRDUDE avrdude)
 add_custom_target(flash
   COMMAND ${AVRDUDE} -c ${DRIFTLAB_AVRDUDE_PROGRAMMER} -p ${DRIFTLAB_AVRDUDE_PART} -P ${DRIFTLAB_AVRDUDE_PORT}
           -b ${DRIFTLAB_AVRDUDE_BAUD} -D -U flash:w:driftlab_fw.hex:i
-  DEPENDS driftlab_fw
   WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}"
   COMMENT "Flashing driftlab_fw.hex to ${DRIFTLAB_AVRDUDE_PART} on ${DRIFTLAB_AVRDUDE_PORT}"
   VERBATIM USES_TERMINAL)
+add_dependencies(flash driftlab_fw)
