@@ -4,7 +4,7 @@
 // acts at one stage of the sensor chain:
 //   true input [deg/s, g] -> physical effects -> transducer -> analog effects [V] -> ADC input in counts
 //   -> converter effects [counts] -> round + clip 0..1023 -> code;   timing effects move the conversion instants.
-// Build effects with `make_effect(name, toml_table, key_path)` (or `EffectChain`, effect_chain.hpp), call
+// Build effects with `make_effect(name, toml_table, key_path)`, call
 // `reset(seed)` once per run, then for every instant call `apply(values, ctx)` with all four channels in the
 // stage's unit. Converter effects receive the CONTINUOUS ADC input v/LSB (not yet rounded); a converter effect that
 // quantises (adc_dnl) returns integral codes, which the chain's final round-and-clip leaves unchanged.
@@ -14,6 +14,12 @@
 // and written, the other entries are left untouched). Stateful effects keep one state and one RNG substream per
 // channel, so a channel sees the same random sequence in both modes given the same instants; ctx.dt_s is the time
 // since the previous instant of THAT channel (0 at the first instant after reset).
+//
+// Order: within a stage apply effects in list_effects() order (e.g. adc_inl shifts transitions before adc_dnl
+// quantises; saturation clips after the biases). Input effects (is_input(): vibration) are real motion and pure
+// functions of t: evaluate them with ctx.channel empty on a copy of the true input to get all four channels'
+// motion, and pass that as ctx.true_physical so cross-couplings (g_sensitivity reads the accel axes while the gyro
+// is converted) see it.
 //
 // Timing effects (stage timing) do nothing in apply(); the chain asks `actual_instant_s(nominal_s, ctx)` for each
 // conversion (ctx.channel set) or sample, then evaluates the other effects at the returned instant.
@@ -101,7 +107,7 @@ public:
     /// Timing effects: map a nominal conversion/sample instant to the actual one [s]. Others: identity.
     virtual double actual_instant_s(double nominal_s, const EffectContext& ctx);
     /// True for effects that are a real input (vibration): the chain adds them to ctx.true_physical as well, so
-    /// cross-couplings (cross_axis, g_sensitivity, temp_scale_factor) see them. EffectChain does this.
+    /// cross-couplings (cross_axis, g_sensitivity, temp_scale_factor) see them (file comment, "Order").
     virtual bool is_input() const { return false; }
     /// Current parameters under their TOML keys (round trip and JSON output).
     virtual toml::table parameters() const = 0;
@@ -124,7 +130,7 @@ struct EffectInfo {
     std::vector<ParamInfo> params;
 };
 
-/// Every effect the registry knows, in E1..E16 order.
+/// Every effect the registry knows, in the recommended application order.
 const std::vector<EffectInfo>& list_effects();
 
 /// True when `name` is an effect name.

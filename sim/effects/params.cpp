@@ -12,17 +12,21 @@ std::string check_text(Check check) {
         case Check::nonneg: return " >= 0";
         case Check::positive: return " > 0";
         case Check::unit_interval: return " in [0, 1]";
+        case Check::limit: return " (inf allowed)";
         case Check::any: break;
     }
     return "";
 }
 
 bool passes(double v, Check check) {
+    if (std::isnan(v)) return false;
+    if (check == Check::limit) return true;
     if (!std::isfinite(v)) return false;
     switch (check) {
         case Check::nonneg: return v >= 0.0;
         case Check::positive: return v > 0.0;
         case Check::unit_interval: return v >= 0.0 && v <= 1.0;
+        case Check::limit:
         case Check::any: break;
     }
     return true;

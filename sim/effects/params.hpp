@@ -15,8 +15,8 @@
 
 namespace driftlab::sim {
 
-/// Range a number must lie in.
-enum class Check : std::uint8_t { any, nonneg, positive, unit_interval };
+/// Range a number must lie in. All but `limit` (a clipping rail, +-inf = none) require a finite value.
+enum class Check : std::uint8_t { any, nonneg, positive, unit_interval, limit };
 
 /// Reads a parameter struct from a TOML table; unknown keys and bad values throw ConfigError naming the key.
 class TomlReader {
@@ -27,7 +27,7 @@ public:
                Check check = Check::any);
     /// A scalar broadcasts to every element; an array must have exactly N elements.
     template <std::size_t N>
-    void field(std::string_view key, std::array<double, N>& value, std::string_view unit, std::string_view doc,
+    void field(std::string_view key, std::array<double, N>& value, std::string_view unit, std::string_view,
                Check check = Check::any) {
         read_fixed(key, value.data(), N, unit, check);
     }
