@@ -1,7 +1,6 @@
-// InterruptLock: the ATmega328P's critical section as an inline scope guard: saves SREG, disables interrupts,
-// restores SREG (and so the previous I flag) on exit, with compiler barriers so no access leaks out of the
-// section. CriticalSection (firmware/core/critical.hpp) is defined with it in hal_avr.cpp; port code that runs
-// often uses it directly to save the call.
+// The ATmega328P's critical section, behind CriticalSection (firmware/core/critical.hpp, defined in hal_avr.cpp):
+// save SREG and disable interrupts; later restore SREG, and with it the previous I flag. The memory clobbers are
+// compiler barriers, so no access to shared data moves out of the section.
 #pragma once
 
 #include <avr/io.h>
@@ -10,21 +9,16 @@
 namespace driftlab {
 namespace fw {
 
-class InterruptLock {
- public:
-  InterruptLock() : saved_sreg_(SREG) {
-    __asm__ __volatile__("cli" ::: "memory");
-  }
-  ~InterruptLock() {
-    __asm__ __volatile__("" ::: "memory");
-    SREG = saved_sreg_;
-  }
-  InterruptLock(const InterruptLock&) = delete;
-  InterruptLock& operator=(const InterruptLock&) = delete;
+inline uint8_t interrupts_save_and_disable() {
+  const uint8_t sreg = SREG;
+  __asm__ __volatile__("cli" ::: "memory");
+  return sreg;
+}
 
- private:
-  uint8_t saved_sreg_;
-};
+inline void interrupts_restore(uint8_t sreg) {
+  __asm__ __volatile__("" ::: "memory");
+  SREG = sreg;
+}
 
 }  // namespace fw
 }  // namespace driftlab

@@ -45,7 +45,7 @@ uint16_t g_assert_magic_noinit __attribute__((section(".noinit")));
 ResetInfo g_reset_info;
 
 // Time now [ticks]: the latest trigger tick plus TCNT1, corrected when the compare already happened but its
-// vector has not run yet (interrupts off). Caller holds InterruptLock.
+// vector has not run yet (interrupts off). Caller holds a CriticalSection.
 uint32_t ticks_locked() {
   uint32_t tick = g_isr.trigger_tick;
   uint16_t count = TCNT1;
@@ -94,7 +94,7 @@ void avr_board_init() {
 void avr_watchdog_kick() { wdt_reset(); }
 
 void hal_init(const AdcSchedule& schedule) {
-  InterruptLock lock;
+  CriticalSection lock;
   // Stop the tick first so that `now` is exact while the new cycle is set up.
   TCCR1B = 0;
   const uint32_t now = ticks_locked();
@@ -136,13 +136,13 @@ uint8_t hal_uart_write(const uint8_t* bytes, uint8_t count) {
   for (uint8_t i = 0; i < count; ++i) {
     static_cast<void>(g_isr.tx_ring.push(bytes[i]));
   }
-  InterruptLock lock;  // the UDRE vector clears UDRIE0 in the same register
+  CriticalSection lock;  // the UDRE vector clears UDRIE0 in the same register
   UCSR0B = static_cast<uint8_t>(UCSR0B | _BV(UDRIE0));
   return count;
 }
 
 uint32_t hal_ticks() {
-  InterruptLock lock;
+  CriticalSection lock;
   return ticks_locked();
 }
 
@@ -160,7 +160,7 @@ void hal_idle() {
 }
 
 uint16_t hal_rx_overflow_count() {
-  InterruptLock lock;
+  CriticalSection lock;
   return g_isr.rx_overflow_bytes;
 }
 
@@ -175,12 +175,9 @@ void hal_assert_failed(uint16_t line) {
   }
 }
 
-CriticalSection::CriticalSection() : saved_state_(SREG) { __asm__ __volatile__("cli" ::: "memory"); }
+CriticalSection::CriticalSection() : saved_state_(interrupts_save_and_disable()) {}
 
-CriticalSection::~CriticalSection() {
-  __asm__ __volatile__("" ::: "memory");
-  SREG = saved_state_;
-}
+CriticalSection::~CriticalSection() { interrupts_restore(saved_state_); }
 
 }  // namespace fw
 }  // namespace driftlab

@@ -1,5 +1,5 @@
 // State the ATmega328P's interrupt handlers share with the main loop. Only rings (spsc_ring.hpp) and single
-// bytes cross without a lock; multi-byte values are read under InterruptLock (docs/hal.md "AVR port").
+// bytes cross without a lock; multi-byte values are read inside a CriticalSection (docs/hal.md "AVR port").
 #pragma once
 
 #include <stdint.h>
