@@ -46,6 +46,7 @@ class SpscRing {
     if (head_ == tail) {
       return false;
     }
+    detail::compiler_barrier();  // read the slot only after seeing the index that published it
     *out = slots_[tail & kMask];
     detail::compiler_barrier();
     tail_ = static_cast<uint8_t>(tail + 1U);

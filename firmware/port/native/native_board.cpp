@@ -34,7 +34,7 @@ void NativeBoard::set_time_ticks(uint64_t time_ticks) {
 }
 
 bool NativeBoard::convert(uint16_t code_counts) {
-  DRIFTLAB_ASSERT(armed_);
+  DRIFTLAB_ASSERT(armed_ && code_counts <= LsWindow::kMaxCode);
   const Conversion conversion = {next_channel(), code_counts, static_cast<uint32_t>(next_trigger_ticks_)};
   next_index_ = static_cast<uint8_t>((next_index_ + 1U) % kChannelCount);
   next_trigger_ticks_ += schedule_.conversion_period_ticks;
