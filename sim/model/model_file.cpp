@@ -1,0 +1,293 @@
+// Model-file reader; see model_file.hpp and docs/sim.md §Model file.
+#include "sim/model/model_file.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "host/util/error.hpp"
+#include "sim/effects/effect.hpp"
+#include "sim/model/paper_model_text.hpp"
+#include "sim/model/white_noise.hpp"
+
+namespace driftlab::sim {
+
+namespace {
+
+enum class Range { any, nonneg, positive, unit_interval };
+
+std::uint32_t line_of(const toml::node& n) { return static_cast<std::uint32_t>(n.source().begin.line); }
+
+// Reads the keys of one table, remembering which were asked for so finish() can reject the rest.
+class TableReader {
+public:
+    TableReader(const toml::table& table, std::string path) : table_(table), path_(std::move(path)) {}
+
+    void number(std::string_view key, double& value, Range range) {
+        const toml::node* n = find(key);
+        if (n == nullptr) return;
+        const auto v = n->value<double>();  // toml++ converts integers too
+        if (!v || !n->is_number()) fail(key, *n, "expected a number");
+        if (!std::isfinite(*v)) fail(key, *n, "expected a finite number");
+        switch (range) {
+        case Range::any: break;
+        case Range::nonneg:
+            if (*v < 0.0) fail(key, *n, "must be >= 0, got " + std::to_string(*v));
+            break;
+        case Range::positive:
+            if (!(*v > 0.0)) fail(key, *n, "must be > 0, got " + std::to_string(*v));
+            break;
+        case Range::unit_interval:
+            if (*v < 0.0 || *v > 1.0) fail(key, *n, "must be a probability in [0, 1], got " + std::to_string(*v));
+            break;
+        }
+        value = *v;
+    }
+
+    template <class Int>
+    void integer(std::string_view key, Int& value, std::int64_t lo, std::int64_t hi) {
+        const toml::node* n = find(key);
+        if (n == nullptr) return;
+        const auto v = n->value_exact<std::int64_t>();
+        if (!v) fail(key, *n, "expected an integer");
+        if (*v < lo || *v > hi)
+            fail(key, *n, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                              std::to_string(*v));
+        value = static_cast<Int>(*v);
+    }
+
+    void boolean(std::string_view key, bool& value) {
+        const toml::node* n = find(key);
+        if (n == nullptr) return;
+        const auto v = n->value_exact<bool>();
+        if (!v) fail(key, *n, "expected true or false");
+        value = *v;
+    }
+
+    /// A string that must be one of `choices`; returns its index, or -1 when the key is absent.
+    int choice(std::string_view key, std::initializer_list<std::string_view> choices) {
+        const toml::node* n = find(key);
+        if (n == nullptr) return -1;
+        const auto v = n->value_exact<std::string>();
+        std::string list;
+        int index = 0;
+        for (auto c : choices) {
+            if (v && *v == c) return index;
+            list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+            ++index;
+        }
+        fail(key, *n, "expected one of " + list);
+    }
+
+    void string(std::string_view key, std::string& value) {
+        const toml::node* n = find(key);
+        if (n == nullptr) return;
+        const auto v = n->value_exact<std::string>();
+        if (!v) fail(key, *n, "expected a string");
+        value = *v;
+    }
+
+    /// A sub-table, or nullptr when absent.
+    const toml::table* table(std::string_view key) {
+        const toml::node* n = find(key);
+        if (n == nullptr) return nullptr;
+        if (!n->is_table()) fail(key, *n, "expected a table");
+        return n->as_table();
+    }
+
+    /// Rejects every key nobody asked for.
+    void finish() const {
+        for (const auto& [k, n] : table_)
+            if (!seen_.contains(std::string(k.str())))
+                throw ConfigError(full(k.str()), line_of(n), "unknown key" + hint());
+    }
+
+    [[noreturn]] void fail(std::string_view key, const toml::node& n, const std::string& what) const {
+        throw ConfigError(full(key), line_of(n), what);
+    }
+
+    std::string full(std::string_view key) const {
+        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+    }
+
+private:
+    const toml::node* find(std::string_view key) {
+        seen_.insert(std::string(key));
+        return table_.get(key);
+    }
+    std::string hint() const {
+        std::string known;
+        for (const auto& k : seen_) known += (known.empty() ? "" : ", ") + k;
+        return known.empty() ? std::string(" (this table takes no keys)") : " (expected one of: " + known + ")";
+    }
+
+    const toml::table& table_;
+    std::string path_;
+    std::set<std::string, std::less<>> seen_;
+};
+
+void read_adc(TableReader& r, AdcParams& adc) {
+    r.integer("bits", adc.bits, 1, 16);
+    r.number("vref_v", adc.vref_v, Range::positive);
+    r.finish();
+}
+
+void read_channel(TableReader& r, Channel c, const AdcParams& adc, ChannelModel& ch) {
+    const std::string u = channel_unit(c);
+    FrontEndParams& fe = ch.front_end;
+    r.number("sensitivity_v_per_" + u, fe.sensitivity_v_per_unit, Range::positive);
+    r.number("null_v", fe.null_v, Range::any);
+    r.number("span_" + u, fe.span_unit, Range::positive);
+    r.number("center_" + u, fe.center_unit, Range::any);
+    r.number("input_" + u, ch.input_unit, Range::any);
+    r.number("raw_noise_std_" + u, ch.raw_noise_std_unit, Range::nonneg);
+    r.number("drift_c1_counts", ch.drift.c1_counts, Range::any);
+    r.number("drift_c2_counts", ch.drift.c2_counts, Range::any);
+    r.number("drift_tau_s", ch.drift.tau_s, Range::positive);
+    r.finish();
+    const double raw_counts = ch.raw_noise_std_unit * FrontEnd(fe, adc.vref_v).counts_per_unit(std::ldexp(1.0, adc.bits));
+    if (raw_counts > 0.0 && raw_counts < kMinCalibratedRawStdCounts)
+        throw ConfigError(r.full("raw_noise_std_" + u), 0,
+                          "is " + std::to_string(raw_counts) + " counts; the calibration through the quantiser needs 0 or >= " +
+                              std::to_string(kMinCalibratedRawStdCounts) + " counts");
+}
+
+void read_firmware(TableReader& r, proto::ConfigPayload& fw) {
+    r.integer("output_period_ms", fw.output_period_ms, proto::kOutputPeriodMinMs, proto::kOutputPeriodMaxMs);
+    r.integer("conversions_per_output", fw.conversions_per_output, 1, proto::kConversionsPerOutputMax);
+    r.integer("window", fw.window, 1, proto::kWindowMax);
+    r.integer("fit_order", fw.fit_order, 0, proto::kFitOrderMax);
+    const int mode = r.choice("mode", {"poll", "stream"});
+    if (mode >= 0) fw.mode = static_cast<std::uint8_t>(mode);
+    bool raw = fw.raw != 0;
+    r.boolean("raw", raw);
+    fw.raw = raw ? 1 : 0;
+    r.finish();
+}
+
+void read_packet_loss(TableReader& r, PacketLossParams& pl) {
+    const int unit = r.choice("unit", {"frame", "byte"});
+    if (unit >= 0) pl.unit = unit == 0 ? LossUnit::frame : LossUnit::byte;
+    r.number("p_good_to_bad", pl.p_good_to_bad, Range::unit_interval);
+    r.number("p_bad_to_good", pl.p_bad_to_good, Range::unit_interval);
+    r.number("loss_in_good", pl.loss_in_good, Range::unit_interval);
+    r.number("loss_in_bad", pl.loss_in_bad, Range::unit_interval);
+    r.finish();
+    if (pl.p_good_to_bad > 0.0 && pl.p_bad_to_good == 0.0)
+        throw ConfigError(r.full("p_bad_to_good"), 0, "must be > 0 when p_good_to_bad > 0 (the link would never recover)");
+}
+
+void read_direction(TableReader& r, DirectionParams& d) {
+    r.number("latency_s", d.latency_s, Range::nonneg);
+    r.number("byte_error_rate", d.byte_error_rate, Range::unit_interval);
+    r.number("byte_drop_rate", d.byte_drop_rate, Range::unit_interval);
+    if (const toml::table* t = r.table("packet_loss")) {
+        TableReader sub(*t, r.full("packet_loss"));
+        read_packet_loss(sub, d.packet_loss);
+    }
+    r.finish();
+}
+
+void read_link(TableReader& r, LinkParams& link) {
+    r.number("baud", link.baud, Range::positive);
+    if (const toml::table* t = r.table("to_host")) {
+        TableReader sub(*t, r.full("to_host"));
+        read_direction(sub, link.to_host);
+    }
+    if (const toml::table* t = r.table("to_firmware")) {
+        TableReader sub(*t, r.full("to_firmware"));
+        read_direction(sub, link.to_firmware);
+    }
+    r.finish();
+}
+
+void read_effects(const toml::table& effects, std::vector<EffectSpec>& out) {
+    for (const auto& [k, n] : effects) {
+        const std::string name(k.str());
+        const std::string path = "effects." + name;
+        if (!n.is_table()) throw ConfigError(path, line_of(n), "expected a table of the effect's parameters");
+        make_effect(name, *n.as_table(), path);  // validates now, so a bad effect fails at load time
+        out.push_back({name, *n.as_table()});
+    }
+}
+
+SimModel read_model(const toml::table& root, SimModel m) {
+    TableReader r(root, "");
+    r.string("name", m.name);
+    if (const toml::table* t = r.table("adc")) {
+        TableReader sub(*t, "adc");
+        read_adc(sub, m.adc);
+    }
+    if (const toml::table* t = r.table("channels")) {
+        TableReader chans(*t, "channels");
+        for (std::size_t i = 0; i < kChannelCount; ++i) {
+            if (const toml::table* ct = chans.table(kChannelNames[i])) {
+                TableReader sub(*ct, chans.full(kChannelNames[i]));
+                read_channel(sub, static_cast<Channel>(i), m.adc, m.channels[i]);
+            }
+        }
+        chans.finish();
+    }
+    if (const toml::table* t = r.table("effects")) read_effects(*t, m.effects);
+    if (const toml::table* t = r.table("firmware")) {
+        TableReader sub(*t, "firmware");
+        read_firmware(sub, m.firmware);
+    }
+    if (const toml::table* t = r.table("link")) {
+        TableReader sub(*t, "link");
+        read_link(sub, m.link);
+    }
+    r.finish();
+    return m;
+}
+
+// Every field gets a value here; the built-in paper.toml then sets the paper's unit over it.
+SimModel empty_model() {
+    SimModel m;
+    m.firmware = {1000, 1, 1, 0, 0, 0};
+    return m;
+}
+
+SimModel parse_over(std::string_view text, const std::string& source_name, const SimModel& base) {
+    toml::table root;
+    try {
+        root = toml::parse(text, source_name);
+    } catch (const toml::parse_error& e) {
+        throw host::ConfigError(source_name + ":" + std::to_string(e.source().begin.line), "syntax",
+                                std::string(e.description()));
+    }
+    try {
+        return read_model(root, base);
+    } catch (const ConfigError& e) {
+        // e.what() is "line N: key: reason"; the host error puts file:line and key in front itself.
+        const std::string where = e.line() > 0 ? source_name + ":" + std::to_string(e.line()) : source_name;
+        const std::string prefix = (e.line() > 0 ? "line " + std::to_string(e.line()) + ": " : std::string()) +
+                                   e.key() + ": ";
+        std::string reason = e.what();
+        if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
+        throw host::ConfigError(where, e.key(), reason);
+    }
+}
+
+}  // namespace
+
+std::string_view paper_model_text() { return kPaperModelToml; }
+
+SimModel paper_model() {
+    static const SimModel m = parse_over(kPaperModelToml, "paper.toml (built in)", empty_model());
+    return m;
+}
+
+SimModel parse_model(std::string_view toml_text, const std::string& source_name) {
+    return parse_over(toml_text, source_name, paper_model());
+}
+
+SimModel load_model_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw host::ConfigError(path, "file", "cannot open the model file (does it exist and is it readable?)");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_model(text.str(), path);
+}
+
+}  // namespace driftlab::sim

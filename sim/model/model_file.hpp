@@ -1,0 +1,24 @@
+// Model files: TOML -> SimModel. A file overlays the paper's unit (paper_model()), so it names only what
+// differs; every key carries its unit in its name (_v, _s, _dps, _g, _counts, _ms) or is documented in
+// docs/sim.md §Model file. Unknown keys, wrong types and out-of-range values are errors naming file, line and
+// key. Effects are parsed by the effect registry (sim/effects/effect.hpp).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "sim/model/sim_model.hpp"
+
+namespace driftlab::sim {
+
+/// Reads `path`. Throws host::ConfigError ("file:line: key: what") on any bad content, and when the file cannot
+/// be read.
+SimModel load_model_file(const std::string& path);
+
+/// Parses model-file text; `source_name` names it in errors.
+SimModel parse_model(std::string_view toml_text, const std::string& source_name);
+
+/// The model file text compiled into the program (sim/models/paper.toml).
+std::string_view paper_model_text();
+
+}  // namespace driftlab::sim

@@ -1,0 +1,70 @@
+// The synthetic sensor chain; see sensor_model.hpp.
+#include "sim/model/sensor_model.hpp"
+
+#include <cmath>
+
+#include "sim/model/streams.hpp"
+
+namespace driftlab::sim {
+
+namespace {
+
+std::size_t stage_index(Stage s) { return static_cast<std::size_t>(s); }
+
+}  // namespace
+
+SensorModel::SensorModel(const SimModel& model, std::uint64_t seed)
+    : adc_(model.adc), mid_counts_(std::ldexp(1.0, model.adc.bits - 1)) {
+    const double levels = std::ldexp(1.0, model.adc.bits);
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        const ChannelModel& ch = model.channels[i];
+        front_ends_.emplace_back(ch.front_end, model.adc.vref_v);
+        drifts_.emplace_back(ch.drift);
+        const double raw_std_counts = ch.raw_noise_std_unit * front_ends_.back().counts_per_unit(levels);
+        noise_.emplace_back(analog_sigma_for_raw_std_counts(raw_std_counts), Rng(seed, kNoiseStreamBase + i));
+        inputs_unit_[i] = ch.input_unit;
+    }
+    for (const EffectSpec& spec : model.effects) {
+        auto effect = make_effect(spec.name, spec.table, "effects." + spec.name);
+        effect->reset(seed);
+        by_stage_[stage_index(effect->stage())].push_back(std::move(effect));
+    }
+}
+
+double SensorModel::counts_per_unit(Channel c) const {
+    return front_ends_[channel_index(c)].counts_per_unit(std::ldexp(1.0, adc_.params().bits));
+}
+
+Conversion SensorModel::convert(Channel c, double t_s) {
+    const std::size_t i = channel_index(c);
+    EffectContext ctx;
+    ctx.channel = c;
+    ctx.t_s = t_s;
+    ctx.dt_s = started_[i] ? t_s - last_t_s_[i] : 0.0;
+    for (auto& e : by_stage_[stage_index(Stage::timing)]) ctx.t_s = e->actual_instant_s(ctx.t_s, ctx);
+    if (started_[i]) ctx.dt_s = ctx.t_s - last_t_s_[i];
+    started_[i] = true;
+    last_t_s_[i] = ctx.t_s;
+    ctx.true_physical = inputs_unit_;
+
+    ChannelValues values = inputs_unit_;
+    for (auto& e : by_stage_[stage_index(Stage::physical)]) {
+        const double before = values[i];
+        e->apply(values, ctx);
+        // Input-like effects (vibration) are real motion: cross-couplings later in the list must see them.
+        if (e->is_input()) ctx.true_physical[i] += values[i] - before;
+    }
+
+    const FrontEnd& fe = front_ends_[i];
+    values[i] = fe.amplifier_v(fe.sensor_v(values[i]));
+    for (auto& e : by_stage_[stage_index(Stage::analog)]) e->apply(values, ctx);
+
+    // Eq. 1 is the at-rest reading, so the chain adds its distance from mid-scale at the converter input.
+    values[i] = adc_.counts_from_volts(values[i]) + (drifts_[i].at_counts(ctx.t_s) - mid_counts_) +
+                noise_[i].sample_counts();
+    for (auto& e : by_stage_[stage_index(Stage::converter)]) e->apply(values, ctx);
+
+    return {adc_.convert_counts(values[i]), ctx.t_s};
+}
+
+}  // namespace driftlab::sim

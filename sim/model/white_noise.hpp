@@ -1,0 +1,34 @@
+// White measurement noise at the converter input, calibrated so that the RAW codes (after quantisation) have
+// the standard deviation the paper measured. Quantising adds variance lsb²/12 (Sheppard's correction, exact to
+// within exp(-2π²σ²) for a Gaussian of σ ≥ 0.5 LSB), so the analog sigma is sqrt(raw² - 1/12) counts.
+// docs/sim.md §Noise calibration.
+#pragma once
+
+#include "sim/model/rng.hpp"
+
+namespace driftlab::sim {
+
+/// Smallest raw standard deviation [counts] the calibration accepts: below it the quantised spread depends on
+/// where the mean falls between two codes, so no analog sigma reproduces it reliably.
+inline constexpr double kMinCalibratedRawStdCounts = 0.5;
+
+/// Analog noise sigma [counts] whose quantised codes have standard deviation `raw_std_counts` [counts].
+/// 0 gives 0; values in (0, kMinCalibratedRawStdCounts) are a caller error (the model file rejects them).
+double analog_sigma_for_raw_std_counts(double raw_std_counts);
+
+/// Independent Gaussian samples of a fixed sigma from the channel's own substream.
+class WhiteNoise {
+public:
+    WhiteNoise(double sigma_counts, Rng rng) : sigma_counts_(sigma_counts), rng_(rng) {}
+
+    /// One sample [counts].
+    double sample_counts() { return sigma_counts_ == 0.0 ? 0.0 : sigma_counts_ * rng_.normal(); }
+
+    double sigma_counts() const { return sigma_counts_; }
+
+private:
+    double sigma_counts_;
+    Rng rng_;
+};
+
+}  // namespace driftlab::sim
