@@ -1,0 +1,96 @@
+// Per-channel drift analysis; see drift_analysis.hpp.
+#include "host/fit/drift_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
+
+namespace driftlab::host::fit {
+namespace {
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+Series restrict_range(const Series& s, double t_min_s, double t_max_s) {
+    Series out = s;
+    out.t_s.clear();
+    out.values.clear();
+    out.raw_values.clear();
+    for (std::size_t k = 0; k < s.t_s.size(); ++k) {
+        if (s.t_s[k] < t_min_s || s.t_s[k] > t_max_s) continue;
+        out.t_s.push_back(s.t_s[k]);
+        out.values.push_back(s.values[k]);
+        if (!s.raw_values.empty()) out.raw_values.push_back(s.raw_values[k]);
+    }
+    return out;
+}
+
+double median_spacing(const std::vector<double>& t_s) {
+    std::vector<double> dt(t_s.size() - 1);
+    for (std::size_t k = 1; k < t_s.size(); ++k) dt[k - 1] = t_s[k] - t_s[k - 1];
+    std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
+    return dt[dt.size() / 2];
+}
+
+}  // namespace
+
+DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options) {
+    DriftAnalysis out;
+    out.data = restrict_range(series, options.t_min_s, options.t_max_s);
+    const std::string where = "series '" + series.name + "'";
+    const std::size_t n = out.data.t_s.size();
+    if (n < kMinAnalysisSamples)
+        throw DataError(series.source, 0,
+                        where + ": " + std::to_string(n) + " samples in the selected time range; the fit needs at least " +
+                            std::to_string(kMinAnalysisSamples));
+    const auto [lo, hi] = std::minmax_element(out.data.values.begin(), out.data.values.end());
+    if (*lo == *hi)
+        throw DataError(series.source, 0, where + " is constant (" + format_double(*lo) + "): nothing to fit");
+
+    out.sample_period_s = median_spacing(out.data.t_s);
+    for (std::size_t k = 1; k < n; ++k)
+        out.time_gaps += out.data.t_s[k] - out.data.t_s[k - 1] > 1.5 * out.sample_period_s;
+
+    out.fit = fit_drift(out.data.t_s, out.data.values, options.fit);
+    out.whiteness = stats::test_whiteness(out.fit.residual, out.sample_period_s, options.whiteness);
+    out.plain = parameter_intervals(out.fit, 1.0);
+    out.widened = out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
+
+    if (out.fit.status == FitStatus::singular)
+        out.warnings.push_back("fit is singular (condition number " + fixed(out.fit.condition_number, 0) +
+                               "): C1, C2 and T are not separately determined by these data; no intervals");
+    if (out.fit.status == FitStatus::iteration_limit)
+        out.warnings.push_back("fit stopped at the evaluation limit (" + std::to_string(out.fit.function_evaluations) +
+                               "); parameters are the last iterate");
+    if (out.fit.start.t_at_upper_end || out.fit.parameters.t_s > 3.0 * out.data.t_s.back())
+        out.warnings.push_back("T (" + fixed(out.fit.parameters.t_s, 1) + " s) is beyond the record (ends at t = " +
+                               fixed(out.data.t_s.back(), 1) +
+                               " s): the data show no settling, so only the initial slope C1/T is well determined");
+    if (out.fit.start.t_at_lower_end || out.fit.parameters.t_s < out.sample_period_s)
+        out.warnings.push_back("T (" + format_double(out.fit.parameters.t_s) +
+                               " s) is shorter than the sampling interval: the transient is not resolved");
+    if (!out.whiteness.white) {
+        const auto& w = out.whiteness;
+        out.warnings.push_back(
+            "residual is not white (Ljung-Box p = " + format_double(w.ljung_box.p_value) + ", " +
+            fixed(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma): the plain intervals are too "
+            "narrow by about x" + fixed(out.widened.inflation, 2) + " (autocorrelation time " +
+            fixed(w.autocorrelation_time.tau, 2) + " samples, effective n " +
+            fixed(static_cast<double>(n) / w.autocorrelation_time.tau, 0) + "); use the widened intervals" +
+            (w.autocorrelation_time.window_found ? "" : " (a lower bound: the correlation outlasts the lags examined)"));
+    }
+    if (out.time_gaps > 0)
+        out.warnings.push_back(std::to_string(out.time_gaps) + " gaps in time (spacing > 1.5x the median " +
+                               format_double(out.sample_period_s) +
+                               " s): the fit uses the true times, the autocorrelation counts lags in samples");
+    if (!out.whiteness.adaptation.empty()) out.warnings.push_back("whiteness: " + out.whiteness.adaptation);
+    return out;
+}
+
+}  // namespace driftlab::host::fit

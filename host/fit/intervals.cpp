@@ -1,0 +1,49 @@
+// Parameter intervals; see intervals.hpp.
+#include "host/fit/intervals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/LU>
+
+#include "host/util/special_functions.hpp"
+
+namespace driftlab::host::fit {
+namespace {
+
+Estimate estimate(double value, double variance, double inflation, double q) {
+    Estimate e;
+    e.value = value;
+    e.stderr_ = std::sqrt(std::max(0.0, variance)) * inflation;
+    e.ci95 = {value - q * e.stderr_, value + q * e.stderr_};
+    return e;
+}
+
+}  // namespace
+
+ParameterIntervals parameter_intervals(const FitResult& fit, double tau) {
+    ParameterIntervals out;
+    tau = std::max(1.0, tau);
+    out.inflation = std::sqrt(tau);
+    const double n = static_cast<double>(fit.n);
+    out.dof = n / tau - 3.0;
+    const double inf = std::numeric_limits<double>::infinity();
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Constant(inf);
+    if (fit.n > 3 && fit.status != FitStatus::singular) {
+        const double s2 = fit.rss / (n - 3.0);
+        cov = s2 * fit.jtj.inverse();
+    }
+    out.t_quantile = out.dof > 0.0 ? student_t_quantile(0.975, out.dof) : inf;
+    const DriftParameters& p = fit.parameters;
+    out.c1 = estimate(p.c1, cov(0, 0), out.inflation, out.t_quantile);
+    out.c2 = estimate(p.c2, cov(1, 1), out.inflation, out.t_quantile);
+    out.t_s = estimate(p.t_s, cov(2, 2), out.inflation, out.t_quantile);
+    // T > 0 and its estimate is right-skewed: the interval is symmetric in log T (delta method,
+    // se(log T) = se(T) / T), which keeps the nominal coverage when T is loosely determined.
+    const double half_width_log = out.t_quantile * out.t_s.stderr_ / p.t_s;
+    out.t_s.ci95 = {p.t_s * std::exp(-half_width_log), p.t_s * std::exp(half_width_log)};
+    return out;
+}
+
+}  // namespace driftlab::host::fit

@@ -1,0 +1,96 @@
+// Levenberg–Marquardt driver; see lm_fit.hpp.
+#include "host/fit/lm_fit.hpp"
+
+#include <cmath>
+
+#include <Eigen/SVD>
+
+#include "host/util/error.hpp"
+
+namespace driftlab::host::fit {
+namespace {
+
+/// Above this condition number of the column-scaled Jacobian the parameters are not separately determined
+/// (e.g. T far beyond the record, where only the slope C1/T is seen).
+constexpr double kSingularCondition = 1e9;
+
+const char* stop_reason(Eigen::LevenbergMarquardtSpace::Status s) {
+    using namespace Eigen::LevenbergMarquardtSpace;
+    switch (s) {
+        case NotStarted: return "not started";
+        case Running: return "running";
+        case ImproperInputParameters: return "improper input parameters";
+        case RelativeReductionTooSmall: return "relative reduction of the sum of squares below ftol";
+        case RelativeErrorTooSmall: return "relative change of the parameters below xtol";
+        case RelativeErrorAndReductionTooSmall: return "both ftol and xtol met";
+        case CosinusTooSmall: return "residual orthogonal to the Jacobian (gtol)";
+        case TooManyFunctionEvaluation: return "too many function evaluations";
+        case FtolTooSmall: return "ftol too small, no further reduction possible";
+        case XtolTooSmall: return "xtol too small, no further improvement possible";
+        case GtolTooSmall: return "gtol too small, residual already orthogonal";
+        case UserAsked: return "stopped by the model";
+    }
+    return "unknown";
+}
+
+}  // namespace
+
+const char* fit_status_name(FitStatus s) {
+    switch (s) {
+        case FitStatus::converged: return "converged";
+        case FitStatus::iteration_limit: return "iteration_limit";
+        case FitStatus::singular: return "singular";
+    }
+    return "unknown";
+}
+
+FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y, const FitOptions& options) {
+    const std::size_t n = t_s.size();
+    if (n < 4 || y.size() != n) throw UsageError("fit_drift: need at least 4 samples with one time each");
+    FitResult out;
+    out.n = n;
+    out.start = automatic_start(t_s, y);
+
+    DriftFunctor functor(t_s, y);
+    Eigen::LevenbergMarquardt<DriftFunctor> lm(functor);
+    lm.setMaxfev(options.max_function_evaluations);
+    lm.setFtol(options.tolerance);
+    lm.setXtol(options.tolerance);
+    Eigen::VectorXd x(3);
+    x << out.start.parameters.c1, out.start.parameters.c2, std::log(out.start.parameters.t_s);
+    const auto stop = lm.minimize(x);
+    out.solver_stop = stop_reason(stop);
+    out.iterations = static_cast<int>(lm.iterations());
+    out.function_evaluations = static_cast<int>(lm.nfev());
+    out.parameters = {x[0], x[1], std::exp(x[2])};
+
+    // Residual, and the Jacobian over (C1, C2, T) for the covariance and the rank check.
+    out.residual.resize(n);
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    const DriftParameters& p = out.parameters;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double u = t_s[k] / p.t_s;
+        const double e = std::exp(-u);
+        out.residual[k] = y[k] - drift_model(p, t_s[k]);
+        out.rss += out.residual[k] * out.residual[k];
+        const Eigen::Vector3d j(1.0 - e, 1.0, -p.c1 * e * u / p.t_s);
+        jtj.noalias() += j * j.transpose();
+    }
+    out.rms = std::sqrt(out.rss / static_cast<double>(n));
+    out.jtj = jtj;
+    const Eigen::Vector3d scale = jtj.diagonal().cwiseSqrt().cwiseMax(1e-300).cwiseInverse();
+    const Eigen::Matrix3d scaled = scale.asDiagonal() * jtj * scale.asDiagonal();
+    const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(scaled).singularValues();
+    out.condition_number = sv[2] > 0.0 ? std::sqrt(sv[0] / sv[2]) : INFINITY;
+
+    using namespace Eigen::LevenbergMarquardtSpace;
+    if (!std::isfinite(out.rss) || !(out.condition_number < kSingularCondition))
+        out.status = FitStatus::singular;
+    else if (stop == TooManyFunctionEvaluation)
+        out.status = FitStatus::iteration_limit;
+    else
+        out.status = FitStatus::converged;
+    return out;
+}
+
+}  // namespace driftlab::host::fit

@@ -1,0 +1,85 @@
+// Series from logs and tables; see series.hpp.
+#include "host/fit/series.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
+
+namespace driftlab::host::fit {
+
+std::vector<Series> series_from_log(const LogData& log, const std::vector<std::string>& names) {
+    for (const auto& name : names) {
+        const bool known = std::any_of(std::begin(kChannelNames), std::end(kChannelNames),
+                                       [&](const char* c) { return name == c; });
+        if (!known) throw UsageError("unknown channel '" + name + "' (channels: gyro, accel_x, accel_y, accel_z)");
+    }
+    std::vector<Series> out;
+    for (std::uint8_t c = 0; c < kChannelCount; ++c) {
+        const std::string name = kChannelNames[c];
+        if (!names.empty() && std::find(names.begin(), names.end(), name) == names.end()) continue;
+        Series s;
+        s.name = name;
+        s.source = log.source_name;
+        s.unit = "counts";
+        s.channel = static_cast<Channel>(c);
+        s.t_s = log.t_s;
+        s.values = log.counts[c];
+        const auto raw = log.optional_columns.find("raw_" + name);
+        if (raw != log.optional_columns.end()) s.raw_values = raw->second;
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+std::vector<Series> series_from_table(const NumericTable& table, const std::vector<std::string>& names,
+                                      const std::string& time_column, double sample_period_s) {
+    if (!(sample_period_s > 0.0)) throw UsageError("sample period must be > 0");
+    std::optional<std::size_t> time_index;
+    if (!time_column.empty()) {
+        time_index = table.column_index(time_column);
+    } else {
+        for (const char* candidate : {"t_s", "t", "time"}) {
+            const auto it = std::find(table.names.begin(), table.names.end(), candidate);
+            if (it != table.names.end()) {
+                time_index = static_cast<std::size_t>(it - table.names.begin());
+                break;
+            }
+        }
+    }
+    std::vector<double> t_s(table.rows());
+    if (time_index) {
+        t_s = table.columns[*time_index];
+        for (std::size_t k = 1; k < t_s.size(); ++k)
+            if (!(t_s[k] > t_s[k - 1]))
+                throw DataError(table.source_name, 0,
+                                "time column '" + table.names[*time_index] + "' does not increase at row " +
+                                    std::to_string(k + 1) + " (" + format_double(t_s[k - 1]) + " then " +
+                                    format_double(t_s[k]) + ")");
+    } else {
+        for (std::size_t k = 0; k < t_s.size(); ++k) t_s[k] = static_cast<double>(k) * sample_period_s;
+    }
+    for (const auto& name : names) table.column_index(name);  // throws with the list of columns
+    std::vector<Series> out;
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+        if (time_index && c == *time_index) continue;
+        if (!names.empty() && std::find(names.begin(), names.end(), table.names[c]) == names.end()) continue;
+        Series s;
+        s.name = table.names[c];
+        s.source = table.source_name;
+        s.t_s = t_s;
+        s.values = table.columns[c];
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+bool is_canonical_log(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string first;
+    std::getline(in, first);
+    return first.rfind("# driftlab-log:", 0) == 0;
+}
+
+}  // namespace driftlab::host::fit

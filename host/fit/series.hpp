@@ -1,0 +1,38 @@
+// One time series to analyse (a log channel or a column of a plain table), with where it came from.
+// docs/analysis.md §1.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "driftlab/channels.hpp"
+#include "host/log/log_data.hpp"
+#include "host/log/numeric_table.hpp"
+
+namespace driftlab::host::fit {
+
+struct Series {
+    std::string name;                ///< channel or column name
+    std::string source;              ///< file, for messages
+    std::string unit;                ///< "counts" for log channels, else "" (the table's own unit)
+    std::optional<Channel> channel;  ///< set for log channels: enables physical units
+    std::vector<double> t_s;         ///< [s] strictly increasing (for tables without time: sample index x period)
+    std::vector<double> values;
+    std::vector<double> raw_values;  ///< raw codes beside a smoothed channel (log column raw_<name>), or empty
+};
+
+/// The four channels of a canonical log, in Channel order (only `names` when not empty; unknown names
+/// are a UsageError listing the channels).
+std::vector<Series> series_from_log(const LogData& log, const std::vector<std::string>& names = {});
+
+/// Columns of a plain table. Time: the column `time_column` if given, else a column named t_s, t or time
+/// if present, else sample index x `sample_period_s`. Every other column is a series unless `names`
+/// selects some. Time must increase strictly (DataError otherwise).
+std::vector<Series> series_from_table(const NumericTable& table, const std::vector<std::string>& names = {},
+                                      const std::string& time_column = "", double sample_period_s = 1.0);
+
+/// True when the file starts with `# driftlab-log:` (a canonical log rather than a plain table).
+bool is_canonical_log(const std::string& path);
+
+}  // namespace driftlab::host::fit

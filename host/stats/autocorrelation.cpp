@@ -1,0 +1,48 @@
+// Autocovariance and autocorrelation time; see autocorrelation.hpp.
+#include "host/stats/autocorrelation.hpp"
+
+#include <algorithm>
+#include <complex>
+
+#include <unsupported/Eigen/FFT>
+
+namespace driftlab::host::stats {
+
+std::vector<double> biased_autocovariance(const std::vector<double>& w, std::size_t max_lag) {
+    const std::size_t n = w.size();
+    if (n == 0) return {};
+    max_lag = std::min(max_lag, n - 1);
+    // Zero-pad to at least 2N so the circular correlation equals the linear one.
+    std::size_t size = 1;
+    while (size < 2 * n) size <<= 1;
+    std::vector<double> padded(size, 0.0);
+    std::copy(w.begin(), w.end(), padded.begin());
+    Eigen::FFT<double> fft;
+    std::vector<std::complex<double>> spectrum;
+    fft.fwd(spectrum, padded);
+    for (auto& x : spectrum) x = std::norm(x);
+    std::vector<double> circular;
+    fft.inv(circular, spectrum);
+    std::vector<double> r(max_lag + 1);
+    for (std::size_t d = 0; d <= max_lag; ++d) r[d] = circular[d] / static_cast<double>(n);
+    return r;
+}
+
+AutocorrelationTime integrated_autocorrelation_time(const std::vector<double>& rho, double c) {
+    AutocorrelationTime out;
+    double tau = 1.0;
+    for (std::size_t d = 1; d < rho.size(); ++d) {
+        tau += 2.0 * rho[d];
+        if (static_cast<double>(d) >= c * tau) {
+            out.tau = std::max(1.0, tau);
+            out.window = d;
+            return out;
+        }
+    }
+    out.tau = std::max(1.0, tau);
+    out.window = rho.empty() ? 0 : rho.size() - 1;
+    out.window_found = false;
+    return out;
+}
+
+}  // namespace driftlab::host::stats
