@@ -216,27 +216,53 @@ TEST(Firmware, WarmUpReportsTheLeastFilledWindow) {
   EXPECT_EQ(rig.firmware.window(Channel::gyro).n(), 2);
 }
 
-TEST(Firmware, NakLeavesConfigurationAndScheduleUnchanged) {
-  NativeRig rig;
-  proto::ConfigPayload bad = default_payload();
-  bad.output_period_ms = 10;  // would re-arm...
-  bad.window = 65;            // ...but this field is out of range
-  rig.send_config(bad);
-  rig.send_empty(MsgType::config_get);
-  const std::vector<Frame> frames = rig.receive();
-  ASSERT_EQ(frames.size(), 2U);
-  ASSERT_TRUE(is(frames[0], MsgType::nak));
-  const auto nak = parse_as<proto::NakPayload>(frames[0]);
-  EXPECT_EQ(nak.nacked_type, proto::type_id(MsgType::config_set));
-  EXPECT_EQ(nak.nacked_seq, 100);
-  EXPECT_EQ(nak.status, static_cast<uint8_t>(proto::Status::out_of_range));
-  EXPECT_EQ(nak.field, static_cast<uint8_t>(proto::ConfigField::window));
-  ASSERT_TRUE(is(frames[1], MsgType::config));
-  const auto current = parse_as<proto::ConfigPayload>(frames[1]);
-  EXPECT_EQ(current.output_period_ms, kDefaultConfig.output_period_ms);
-  EXPECT_EQ(current.window, kDefaultConfig.window);
-  EXPECT_EQ(rig.board.arm_count(), 1U);
-  EXPECT_EQ(rig.board.conversion_period_ticks(), kPeriodTicks);
+TEST(Firmware, NakForAnyFieldLeavesConfigurationWindowsAndScheduleUnchanged) {
+  struct Bad {
+    proto::ConfigField field;
+    proto::ConfigPayload payload;
+  };
+  // Each request would also change other fields (10 ms timing, window 3, line, stream, raw): none may apply.
+  const proto::ConfigPayload base = {10, 1, 3, 1, 1, 1};
+  std::vector<Bad> bad;
+  bad.push_back({proto::ConfigField::output_period_ms, base});
+  bad.back().payload.output_period_ms = 9;
+  bad.push_back({proto::ConfigField::conversions_per_output, base});
+  bad.back().payload.conversions_per_output = 13;  // 10 ms / 52 conversions = 48 ticks, below 50
+  bad.push_back({proto::ConfigField::window, base});
+  bad.back().payload.window = 65;
+  bad.push_back({proto::ConfigField::fit_order, base});
+  bad.back().payload.fit_order = 2;
+  bad.push_back({proto::ConfigField::mode, base});
+  bad.back().payload.mode = 2;
+  bad.push_back({proto::ConfigField::raw, base});
+  bad.back().payload.raw = 2;
+  for (const Bad& b : bad) {
+    NativeRig rig;
+    rig.run_until(10 * kPeriodTicks, [](Channel, uint64_t) -> uint16_t { return 600; });
+    rig.send_config(b.payload);
+    rig.send_empty(MsgType::config_get);
+    rig.run_until(20 * kPeriodTicks, [](Channel, uint64_t) -> uint16_t { return 600; });
+    const std::vector<Frame> frames = rig.receive();
+    ASSERT_EQ(frames.size(), 2U) << "field " << int(b.field) << ": a NAK and a CONFIG, no stream output";
+    ASSERT_TRUE(is(frames[0], MsgType::nak));
+    const auto nak = parse_as<proto::NakPayload>(frames[0]);
+    EXPECT_EQ(nak.nacked_type, proto::type_id(MsgType::config_set));
+    EXPECT_EQ(nak.nacked_seq, 100);
+    EXPECT_EQ(nak.status, static_cast<uint8_t>(proto::Status::out_of_range));
+    EXPECT_EQ(nak.field, static_cast<uint8_t>(b.field));
+    ASSERT_TRUE(is(frames[1], MsgType::config));
+    const auto current = parse_as<proto::ConfigPayload>(frames[1]);
+    const proto::ConfigPayload defaults = default_payload();
+    EXPECT_EQ(current.output_period_ms, defaults.output_period_ms);
+    EXPECT_EQ(current.conversions_per_output, defaults.conversions_per_output);
+    EXPECT_EQ(current.window, defaults.window);
+    EXPECT_EQ(current.fit_order, defaults.fit_order);
+    EXPECT_EQ(current.mode, defaults.mode);
+    EXPECT_EQ(current.raw, defaults.raw);
+    EXPECT_EQ(rig.board.arm_count(), 1U);
+    EXPECT_EQ(rig.board.conversion_period_ticks(), kPeriodTicks);
+    EXPECT_EQ(rig.firmware.window(Channel::gyro).n(), 5) << "20 conversions so far, windows kept";
+  }
 }
 
 TEST(Firmware, AcceptedTimingChangeIsAckedAndRearmsOnTheOldGrid) {
