@@ -40,8 +40,6 @@ class Firmware {
   const Config& config() const { return config_; }
   /// Conversions lost since boot, saturating [conversions].
   uint16_t dropped() const { return dropped_; }
-  /// Bytes of frames that did not fit the transmit ring, saturating [bytes].
-  uint16_t tx_overflow() const { return tx_overflow_bytes_; }
   const LsWindow& window(Channel channel) const { return windows_[channel_index(channel)]; }
 
  private:

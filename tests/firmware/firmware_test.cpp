@@ -284,6 +284,7 @@ TEST(Firmware, AcceptedTimingChangeIsAckedAndRearmsOnTheOldGrid) {
   const auto current = parse_as<proto::ConfigPayload>(frames[1]);
   EXPECT_EQ(current.output_period_ms, 10);
   EXPECT_EQ(current.conversions_per_output, 1);
+  EXPECT_EQ(rig.firmware.config().mode, proto::OutputMode::stream);
   // The next conversion of the old grid (tick 2750) is the anchor: the new grid starts one old period later,
   // whatever time the request arrived, then runs at 10 ms / 4 = 625 ticks.
   EXPECT_EQ(rig.board.arm_count(), 1U);
