@@ -16,15 +16,19 @@ IsrShared g_isr;
 using driftlab::fw::g_isr;
 
 // Timer1 compare match B: the ADC has just been triggered. Running this vector clears OCF1B, which the ADC's
-// auto-trigger needs as a fresh rising edge for the next period, and advances the trigger time. After the
-// first, possibly shorter or longer, cycle from arming it sets the steady period; the counter has just been
-// cleared, so the new TOP lies ahead of it.
+// auto-trigger needs as a fresh rising edge for the next period, and advances the trigger time. When the first
+// cycle after arming had another length than the period, it sets the steady TOP; the counter has just been
+// cleared, so the new TOP lies ahead of it. (Writing only on a change also spares emulators that restart the
+// timer's phase on every OCR write.)
 ISR(TIMER1_COMPB_vect) {
-  g_isr.trigger_tick = g_isr.trigger_tick + g_isr.step_ticks;
-  g_isr.step_ticks = g_isr.period_ticks;
-  const uint16_t top = static_cast<uint16_t>(g_isr.period_ticks - 1U);
-  OCR1A = top;
-  OCR1B = top;
+  const uint32_t step = g_isr.step_ticks;
+  g_isr.trigger_tick = g_isr.trigger_tick + step;
+  if (step != g_isr.period_ticks) {
+    g_isr.step_ticks = g_isr.period_ticks;
+    const uint16_t top = static_cast<uint16_t>(g_isr.period_ticks - 1U);
+    OCR1A = top;
+    OCR1B = top;
+  }
 }
 
 // A conversion finished. The multiplexer change takes effect for the next trigger, which is at least
