@@ -4,10 +4,11 @@
 //
 // How it fits together (who calls what, in which context and unit):
 //  - At start, and after an accepted CONFIG_SET changed the timing, the core calls hal_init() from the main loop
-//    with an AdcSchedule: the tick of the first trigger, a conversion period [ticks] and the round-robin order. The port arms a timer that triggers one ADC
-//    conversion per period; its ADC interrupt reads the 10-bit code [counts], selects the next channel of the
-//    order for the following conversion, and pushes a Conversion {channel, code, tick of the trigger} into a ring
-//    of kAdcRingCapacity. A full ring loses the conversion; the core sees the gap in the ticks and counts it.
+//    with an AdcSchedule: the tick of the first trigger, a conversion period [ticks] and the round-robin order.
+//    The port arms a timer that triggers one ADC conversion per period; its ADC interrupt reads the 10-bit code
+//    [counts], selects the next channel of the order for the following conversion, and pushes a Conversion
+//    {channel, code, tick of the trigger} into a ring of kAdcRingCapacity. A full ring loses the conversion; the
+//    core sees the gap in the ticks and counts it.
 //  - The UART receive interrupt pushes bytes into a ring of kRxRingCapacity (counting bytes lost to a full ring,
 //    see hal_rx_overflow_count()); the transmit interrupt drains the ring filled by hal_uart_write().
 //  - The port's main loop drains the conversion ring into Firmware::on_conversion() and the receive ring into
