@@ -12,7 +12,9 @@ namespace driftlab {
 namespace fw {
 namespace {
 
-uint16_t saturate_u16(uint32_t value) { return value > 0xFFFFU ? static_cast<uint16_t>(0xFFFFU) : static_cast<uint16_t>(value); }
+uint16_t saturate_u16(uint32_t value) {
+  return value > 0xFFFFU ? static_cast<uint16_t>(0xFFFFU) : static_cast<uint16_t>(value);
+}
 
 uint16_t add_saturating(uint16_t a, uint32_t b) { return saturate_u16(static_cast<uint32_t>(a) + b); }
 
