@@ -13,7 +13,7 @@
 //
 // A candidate frame starts at sync0; its bytes are kept until it is delivered or rejected. On a reject the
 // first byte is dropped and the rest is re-examined from the next sync0 inside it, so a real frame hidden
-// behind a false start or a damaged frame is still found (MAVLink's parser resumes at the current byte instead).
+// behind a false start or a damaged frame is still found (MAVLink's parser never looks at consumed bytes again).
 // Every byte fed ends up in exactly one of: a delivered frame, counters().resync_bytes, or bytes_held().
 #pragma once
 
