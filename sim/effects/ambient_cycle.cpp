@@ -13,7 +13,7 @@ double AmbientCycle::lagged_temperature_k(double t_s) const {
         return half_a / std::sqrt(1.0 + wt * wt) * std::sin(w * t_s + p_.phase_rad - std::atan(wt));
     }
     // Square wave: +A/2 for the first half of each cycle (phase measured like the sine's).
-    const double cycles = (w * t_s + p_.phase_rad) / (2.0 * std::numbers::pi);
+    const double cycles = t_s / p_.period_s + p_.phase_rad / (2.0 * std::numbers::pi);
     const double frac = cycles - std::floor(cycles);
     const bool high = frac < 0.5;
     const double s = (high ? frac : frac - 0.5) * p_.period_s;  // time into the current half [s]

@@ -9,6 +9,8 @@
 // spacing ln r gives s^2 / (f ln r) ~ one-sided B^2 / (pi f), hence that variance. The closed-form ADEV of the sum
 // stays within 5 % of 0.664 B for tau in [2.5 / (2 pi f_high), 1 / (2 pi f_low)] (checked in the test).
 // Each component uses the exact GM discretisation and starts stationary. Cost: n + 3 GM updates per channel.
+// Point samples alias the components above Nyquist: keep f_high <= f_s / 10 for the plateau to reach down to
+// 2.5 / (2 pi f_high) (above that the short-tau ADEV is lifted, as for any unfiltered sampled noise).
 // Cannot represent: 1/f noise outside [f_low, f_high] (below f_low the PSD flattens, above f_high it falls as
 // 1/f^2), non-Gaussian flicker; the ADEV ripple from the half-decade spacing is < 1 %.
 #pragma once

@@ -7,7 +7,7 @@
 // multisine: Gaussian by the central limit theorem, flat expected PSD in the band, rms exactly r_c).
 // A continuous function of t, so it is evaluated at the actual (jittered, per-conversion) instants and aliases
 // exactly as sampled motion does: f_a = abs(f - f_s round(f / f_s)) (gap-method.md E11; gnss-ins-sim env,
-// ArduPilot SIM_VIB_FREQ). It is an input: EffectChain adds it to ctx.true_physical too, so g_sensitivity and
+// ArduPilot SIM_VIB_FREQ). It is an input: the chain adds it to ctx.true_physical too (effect.hpp, "Order"), so g_sensitivity and
 // cross_axis see it. Cost: (tones + K) sines per channel per instant.
 // Cannot represent: geometric coherence between axes of the random part (each channel has its own lines),
 // bursts (door slams), the sensor's own bandwidth (no low-pass before sampling).

@@ -1,0 +1,120 @@
+// Shared helpers of the effect tests: drive an effect over a uniform time grid, and independent estimators
+// (overlapping Allan variance, least-squares tone fit, moments) written from their textbook definitions.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "sim/effects/effect.hpp"
+
+namespace driftlab::sim::test {
+
+/// Per-channel series of what an effect adds to a zero input over n instants dt_s apart (all four channels per
+/// instant, first instant at t = 0 with dt = 0).
+inline std::vector<std::vector<double>> run_added(Effect& effect, std::size_t n, double dt_s,
+                                                  const ChannelValues& input = {},
+                                                  const ChannelValues& true_physical = {}) {
+    std::vector<std::vector<double>> out(kChannelCount, std::vector<double>(n));
+    EffectContext ctx;
+    ctx.true_physical = true_physical;
+    for (std::size_t k = 0; k < n; ++k) {
+        ctx.t_s = static_cast<double>(k) * dt_s;
+        ctx.dt_s = k == 0 ? 0.0 : dt_s;
+        ChannelValues v = input;
+        effect.apply(v, ctx);
+        for (std::size_t c = 0; c < kChannelCount; ++c) out[c][k] = v[c] - input[c];
+    }
+    return out;
+}
+
+/// Effect built from TOML text (the body of its table).
+inline std::unique_ptr<Effect> effect_from(std::string_view name, std::string_view toml_text) {
+    const toml::table t = toml::parse(toml_text);
+    return make_effect(name, t, std::string("effects.") + std::string(name));
+}
+
+inline double mean(const std::vector<double>& y) {
+    return std::accumulate(y.begin(), y.end(), 0.0) / static_cast<double>(y.size());
+}
+
+inline double variance(const std::vector<double>& y) {
+    const double m = mean(y);
+    double s = 0.0;
+    for (double v : y) s += (v - m) * (v - m);
+    return s / static_cast<double>(y.size() - 1);
+}
+
+/// Biased sample autocorrelation r(lag) = R(lag) / R(0) (paper eq. 3).
+inline double autocorrelation(const std::vector<double>& y, std::size_t lag) {
+    const double m = mean(y);
+    double r0 = 0.0, rl = 0.0;
+    for (std::size_t k = 0; k < y.size(); ++k) {
+        r0 += (y[k] - m) * (y[k] - m);
+        if (k + lag < y.size()) rl += (y[k] - m) * (y[k + lag] - m);
+    }
+    return rl / r0;
+}
+
+/// Overlapping Allan variance of rate samples y at averaging factor m (NIST SP 1065 eq. 11, via phase x).
+inline double oavar(const std::vector<double>& y, double tau0_s, std::size_t m) {
+    std::vector<double> x(y.size() + 1, 0.0);
+    for (std::size_t k = 0; k < y.size(); ++k) x[k + 1] = x[k] + y[k] * tau0_s;
+    const std::size_t n = x.size();
+    double s = 0.0;
+    for (std::size_t k = 0; k + 2 * m < n; ++k) {
+        const double d = x[k + 2 * m] - 2.0 * x[k + m] + x[k];
+        s += d * d;
+    }
+    const double tau = static_cast<double>(m) * tau0_s;
+    return s / (2.0 * tau * tau * static_cast<double>(n - 2 * m));
+}
+
+/// Amplitude and phase of y_k ~ a sin(2 pi f t_k + phase) + c by linear least squares (sin, cos, 1).
+struct Tone {
+    double amplitude;
+    double phase_rad;
+};
+inline Tone fit_tone(const std::vector<double>& y, const std::vector<double>& t_s, double f_hz) {
+    double ss = 0, sc = 0, cc = 0, s1 = 0, c1 = 0, n = 0, ys = 0, yc = 0, y1 = 0;
+    for (std::size_t k = 0; k < y.size(); ++k) {
+        const double s = std::sin(2.0 * std::numbers::pi * f_hz * t_s[k]);
+        const double c = std::cos(2.0 * std::numbers::pi * f_hz * t_s[k]);
+        ss += s * s; sc += s * c; cc += c * c; s1 += s; c1 += c; n += 1.0;
+        ys += y[k] * s; yc += y[k] * c; y1 += y[k];
+    }
+    // Solve the 3x3 normal equations by Cramer's rule.
+    const double a[3][3] = {{ss, sc, s1}, {sc, cc, c1}, {s1, c1, n}};
+    const double b[3] = {ys, yc, y1};
+    auto det = [](const double m[3][3]) {
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    };
+    const double d = det(a);
+    double sol[2];
+    for (int col = 0; col < 2; ++col) {
+        double m[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) m[i][j] = j == col ? b[i] : a[i][j];
+        sol[col] = det(m) / d;
+    }
+    // a_s sin + a_c cos = A sin(wt + phase), A = hypot, phase = atan2(a_c, a_s).
+    return {std::hypot(sol[0], sol[1]), std::atan2(sol[1], sol[0])};
+}
+
+/// Uniform time grid t_k = k dt.
+inline std::vector<double> time_grid(std::size_t n, double dt_s) {
+    std::vector<double> t(n);
+    for (std::size_t k = 0; k < n; ++k) t[k] = static_cast<double>(k) * dt_s;
+    return t;
+}
+
+/// Difference of two angles wrapped to (-pi, pi].
+inline double angle_diff(double a, double b) { return std::remainder(a - b, 2.0 * std::numbers::pi); }
+
+}  // namespace driftlab::sim::test
