@@ -1,0 +1,181 @@
+// IEEE 952 term fit by non-negative weighted least squares on AVAR (docs/allan.md §6).
+#include "host/stats/noise_terms.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace driftlab::host::stats {
+namespace {
+
+// AVAR = sum_j c_j * tau^(j-2): c = (3 Q^2, N^2, (2 ln2/pi) B^2, K^2/3, R^2/2).
+constexpr std::array<double, kNoiseTermCount> kCoefficientScale = {
+    3.0, 1.0, kBiasInstabilityFactor * kBiasInstabilityFactor, 1.0 / 3.0, 0.5};
+
+double basis(std::size_t j, double tau_s) { return std::pow(tau_s, static_cast<double>(j) - 2.0); }
+
+struct SubsetSolution {
+    Eigen::VectorXd c;        // AVAR coefficients over all terms (zeros outside the subset)
+    Eigen::MatrixXd cov;      // covariance of the subset's coefficients
+    double cost = std::numeric_limits<double>::infinity();
+};
+
+// Non-negative WLS with five unknowns: solve every subset of terms unconstrained and keep the cheapest one
+// whose coefficients are all >= 0. This is the exact NNLS optimum (the optimum is an unconstrained optimum on
+// its own support) and never stalls the way active-set iterations can on badly scaled columns.
+SubsetSolution solve_nnls(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, unsigned enabled_mask) {
+    SubsetSolution best;
+    const Eigen::Index k = a.cols();
+    for (unsigned subset = 1; subset < (1u << k); ++subset) {
+        if ((subset & ~enabled_mask) != 0) continue;
+        std::vector<Eigen::Index> cols;
+        for (Eigen::Index j = 0; j < k; ++j) {
+            if (subset & (1u << j)) cols.push_back(j);
+        }
+        if (static_cast<Eigen::Index>(cols.size()) > a.rows()) continue;
+        Eigen::MatrixXd as(a.rows(), static_cast<Eigen::Index>(cols.size()));
+        Eigen::VectorXd norms(as.cols());
+        for (Eigen::Index c = 0; c < as.cols(); ++c) {
+            as.col(c) = a.col(cols[static_cast<std::size_t>(c)]);
+            norms(c) = as.col(c).norm();
+            if (norms(c) > 0.0) as.col(c) /= norms(c);  // equilibrate: tau^-2 .. tau^2 span many decades
+        }
+        const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(as);
+        if (qr.rank() < as.cols()) continue;
+        const Eigen::VectorXd xs = qr.solve(b);
+        if ((xs.array() < 0.0).any()) continue;
+        const double cost = (as * xs - b).squaredNorm();
+        if (cost < best.cost) {
+            best.cost = cost;
+            best.c = Eigen::VectorXd::Zero(k);
+            const Eigen::MatrixXd inv_normal = (as.transpose() * as).inverse();
+            best.cov = Eigen::MatrixXd::Zero(k, k);
+            for (Eigen::Index r = 0; r < as.cols(); ++r) {
+                best.c(cols[static_cast<std::size_t>(r)]) = xs(r) / norms(r);
+                for (Eigen::Index s = 0; s < as.cols(); ++s) {
+                    best.cov(cols[static_cast<std::size_t>(r)], cols[static_cast<std::size_t>(s)]) =
+                        inv_normal(r, s) / (norms(r) * norms(s));
+                }
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+double noise_term_avar(const std::array<double, kNoiseTermCount>& value, double tau_s) {
+    double avar = 0.0;
+    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
+        avar += kCoefficientScale[j] * value[j] * value[j] * basis(j, tau_s);
+    }
+    return avar;
+}
+
+NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const double> adev,
+                             std::span<const double> edf, const NoiseTermOptions& options) {
+    if (tau_s.size() != adev.size() || tau_s.size() != edf.size()) {
+        throw std::invalid_argument("noise term fit: tau, adev and edf differ in length");
+    }
+    NoiseTermFit fit;
+    std::vector<std::size_t> use;
+    for (std::size_t i = 0; i < tau_s.size(); ++i) {
+        if (std::isfinite(adev[i]) && adev[i] > 0.0 && tau_s[i] > 0.0 && std::isfinite(edf[i]) && edf[i] > 0.0) {
+            use.push_back(i);
+        }
+    }
+    fit.points = static_cast<int>(use.size());
+    fit.model_adev.assign(tau_s.size(), std::nan(""));
+    if (use.empty()) return fit;
+
+    unsigned mask = 0;
+    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
+        if (options.enabled[j]) mask |= 1u << j;
+    }
+    const auto rows = static_cast<Eigen::Index>(use.size());
+    Eigen::VectorXd model(rows);
+    for (Eigen::Index r = 0; r < rows; ++r) model(r) = adev[use[static_cast<std::size_t>(r)]] * adev[use[static_cast<std::size_t>(r)]];
+
+    SubsetSolution sol;
+    for (int it = 0; it <= options.reweight_iterations; ++it) {
+        // Row r scaled by sqrt(w) = sqrt(edf / 2) / AVAR_model: a relative (log-like) fit where EDF is high.
+        Eigen::MatrixXd a(rows, static_cast<Eigen::Index>(kNoiseTermCount));
+        Eigen::VectorXd b(rows);
+        for (Eigen::Index r = 0; r < rows; ++r) {
+            const std::size_t i = use[static_cast<std::size_t>(r)];
+            const double sw = std::sqrt(edf[i] / 2.0) / model(r);
+            for (std::size_t j = 0; j < kNoiseTermCount; ++j) a(r, static_cast<Eigen::Index>(j)) = sw * basis(j, tau_s[i]);
+            b(r) = sw * adev[i] * adev[i];
+        }
+        SubsetSolution next = solve_nnls(a, b, mask);
+        if (!std::isfinite(next.cost)) break;
+        sol = next;
+        for (Eigen::Index r = 0; r < rows; ++r) {
+            double v = 0.0;
+            for (std::size_t j = 0; j < kNoiseTermCount; ++j) v += sol.c(static_cast<Eigen::Index>(j)) * basis(j, tau_s[use[static_cast<std::size_t>(r)]]);
+            // Keep the weights finite where the model vanishes (a term fitted to zero at the curve's end).
+            model(r) = std::max(v, 1e-6 * adev[use[static_cast<std::size_t>(r)]] * adev[use[static_cast<std::size_t>(r)]]);
+        }
+        fit.chi_square = sol.cost;
+    }
+    if (!std::isfinite(sol.cost)) return fit;
+
+    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        const double c = sol.c(jj);
+        fit.value[j] = std::sqrt(c / kCoefficientScale[j]);
+        // d value / d c = 1 / (2 sqrt(c * scale)).
+        fit.std_error[j] = c > 0.0 ? std::sqrt(std::max(sol.cov(jj, jj), 0.0)) / (2.0 * std::sqrt(c * kCoefficientScale[j])) : 0.0;
+    }
+    for (std::size_t i = 0; i < tau_s.size(); ++i) {
+        if (tau_s[i] > 0.0) fit.model_adev[i] = std::sqrt(noise_term_avar(fit.value, tau_s[i]));
+    }
+    fit.ok = true;
+    return fit;
+}
+
+std::vector<NamedValue> physical_terms(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit) {
+    std::vector<NamedValue> out;
+    if (!fit.ok || quantity == RateQuantity::unknown) return out;
+    const double q = fit.value[0] * si_per_unit;
+    const double n = fit.value[1] * si_per_unit;
+    const double b = fit.value[2] * si_per_unit;
+    const double k = fit.value[3] * si_per_unit;
+    const double r = fit.value[4] * si_per_unit;
+    constexpr double kSqrtHourS = 60.0;     // sqrt(3600 s)
+    constexpr double kHourS = 3600.0;
+    if (quantity == RateQuantity::angular_rate) {
+        constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+        out = {{"Q_deg", q * kDegPerRad},
+               {"N_deg_per_s_per_sqrt_hz", n * kDegPerRad},
+               {"N_deg_per_sqrt_h", n * kDegPerRad * kSqrtHourS},
+               {"B_deg_per_s", b * kDegPerRad},
+               {"B_deg_per_h", b * kDegPerRad * kHourS},
+               {"K_deg_per_s_per_sqrt_s", k * kDegPerRad},
+               {"K_deg_per_h_per_sqrt_h", k * kDegPerRad * kHourS * kSqrtHourS},
+               {"R_deg_per_s2", r * kDegPerRad},
+               {"R_deg_per_h2", r * kDegPerRad * kHourS * kHourS}};
+    } else {
+        constexpr double kStandardGravity = 9.80665;
+        out = {{"Q_m_per_s", q},
+               {"N_m_per_s2_per_sqrt_hz", n},
+               {"N_m_per_s_per_sqrt_h", n * kSqrtHourS},
+               {"B_m_per_s2", b},
+               {"B_mg", b / kStandardGravity * 1000.0},
+               {"K_m_per_s2_per_sqrt_s", k},
+               {"R_m_per_s3", r}};
+    }
+    return out;
+}
+
+std::vector<NamedValue> kalibr_densities(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit) {
+    if (!fit.ok || quantity == RateQuantity::unknown) return {};
+    const std::string prefix = quantity == RateQuantity::angular_rate ? "gyroscope" : "accelerometer";
+    return {{prefix + "_noise_density", fit.value[1] * si_per_unit},
+            {prefix + "_random_walk", fit.value[3] * si_per_unit}};
+}
+
+}  // namespace driftlab::host::stats
