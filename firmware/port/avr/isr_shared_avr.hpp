@@ -1,5 +1,7 @@
 // State the ATmega328P's interrupt handlers share with the main loop. Only rings (spsc_ring.hpp) and single
 // bytes cross without a lock; multi-byte values are read inside a CriticalSection (docs/hal.md "AVR port").
+// The simavr harness reads g_isr's trigger fields by offset (sim/avr/isr_shared_layout.hpp, checked against the
+// ELF's symbol size): change the member order or types only together with that file.
 #pragma once
 
 #include <stdint.h>
