@@ -1,0 +1,187 @@
+// The registry: the sixteen names and stages, identity by default, TOML round trip, and errors that name the key
+// and the expected unit.
+#include <map>
+#include <sstream>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "effect_test_support.hpp"
+#include "sim/effects/gauss_markov.hpp"
+#include "sim/effects/vibration.hpp"
+#include "sim/model/rng.hpp"
+
+namespace driftlab::sim {
+namespace {
+
+// The effect list of the simulator's specification, with the stage each belongs to.
+const std::map<std::string, Stage> kExpected = {
+    {"thermal_second_tc", Stage::physical}, {"ambient_cycle", Stage::physical},
+    {"temp_scale_factor", Stage::physical}, {"flicker", Stage::physical},
+    {"rate_random_walk", Stage::physical},  {"gauss_markov", Stage::physical},
+    {"adc_dnl", Stage::converter},          {"adc_inl", Stage::converter},
+    {"supply_coupling", Stage::analog},     {"cross_axis", Stage::physical},
+    {"g_sensitivity", Stage::physical},     {"vibration", Stage::physical},
+    {"mains_alias", Stage::analog},         {"clock_jitter", Stage::timing},
+    {"saturation", Stage::physical},        {"spikes", Stage::converter},
+};
+
+// One non-default configuration per effect (also the examples of docs/effects.md).
+const std::map<std::string, std::string> kExamples = {
+    {"thermal_second_tc", "c3_dps = 0.2\nc3_g = [0.004, -0.003, 0.01]\nt2_s = 2400.0"},
+    {"ambient_cycle", "waveform = \"square\"\namplitude_k_pp = 1.5\nperiod_s = 1800.0\nlag_s = 400.0\n"
+                      "coupling_dps_per_k = 0.03\ncoupling_g_per_k = [0.001, 0.001, 0.002]"},
+    {"temp_scale_factor", "scale_pct_per_k = [0.03, 0.01, 0.01, 0.02]\nreference_degc = 25.0"},
+    {"flicker", "b_dps = 0.03\nb_g = 0.0005\nf_low_hz = 0.0005\nf_high_hz = 1.0"},
+    {"rate_random_walk", "k_dps_per_sqrt_s = 0.001\nk_g_per_sqrt_s = [2e-5, 2e-5, 3e-5]"},
+    {"gauss_markov", "sigma_dps = 0.05\nsigma_g = 0.001\ntau_s = [300.0, 100.0, 100.0, 150.0]"},
+    {"adc_dnl", "dnl_rms_lsb = 0.15\nmissing_codes = [511]\ncarry_bits = 8\ncarry_dnl_lsb = 0.4\npattern_seed = 7"},
+    {"adc_inl", "a2_lsb = 0.8\na3_lsb = -0.3\na4_lsb = 0.1"},
+    {"supply_coupling", "sensor_ratiometric = [0.0, 1.0, 1.0, 1.0]\nripple_v = 0.01\nripple_hz = 100.0\n"
+                        "drift_v = -0.02\ndrift_tau_s = 900.0"},
+    {"cross_axis", "matrix_pct = [[0.0, 1.2, -0.5], [0.8, 0.0, 2.0], [-1.0, 0.3, 0.0]]"},
+    {"g_sensitivity", "g_dps_per_g = [0.05, 0.05, 0.1]\ng2_dps_per_g2 = [0.0, 0.0, 0.02]"},
+    {"vibration", "tone_hz = [29.0]\ntone_g_z = [0.01]\nrandom_rms_g = [0.002, 0.002, 0.004]\n"
+                  "band_low_hz = 10.0\nband_high_hz = 80.0"},
+    {"mains_alias", "amplitude_v = 0.002\nfrequency_hz = 50.0\nharmonic_ratio = [0.3, 0.1]\n"
+                    "mux_skew_s = [0.0, 0.0001, 0.0002, 0.0003]"},
+    {"clock_jitter", "drift_ppm = 30.0\njitter_s = 2e-6"},
+    {"saturation", "min_dps = -90.0\nmax_dps = 90.0\nmin_g = [-1.0, -1.0, 0.0]\nmax_g = [1.0, 1.0, 2.0]"},
+    {"spikes", "rate_hz = 0.001\ndistribution = \"student_t\"\nscale_counts = 3.0\nstudent_dof = 3"},
+};
+
+std::string text_of(const toml::node& node) {
+    std::ostringstream os;
+    node.visit([&](const auto& n) { os << n; });
+    return os.str();
+}
+
+std::string error_of(std::string_view name, std::string_view text) {
+    try {
+        test::effect_from(name, text);
+    } catch (const ConfigError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(EffectRegistry, ListsExactlyTheSixteenEffectsWithTheirStages) {
+    const auto& list = list_effects();
+    ASSERT_EQ(list.size(), kExpected.size());
+    std::set<std::string> seen;
+    for (const EffectInfo& info : list) {
+        ASSERT_TRUE(kExpected.count(info.name)) << info.name;
+        EXPECT_TRUE(seen.insert(info.name).second) << "duplicate " << info.name;
+        EXPECT_EQ(info.stage, kExpected.at(info.name)) << info.name;
+        EXPECT_TRUE(is_effect_name(info.name));
+        const auto e = make_effect(info.name);
+        EXPECT_EQ(e->name(), info.name);
+        EXPECT_EQ(e->stage(), info.stage);
+        EXPECT_FALSE(info.equation.empty());
+        for (const ParamInfo& p : info.params) EXPECT_FALSE(p.doc.empty()) << info.name << "." << p.key;
+    }
+    EXPECT_FALSE(is_effect_name("turn_on_bias"));
+}
+
+TEST(EffectRegistry, EveryEffectIsIdentityByDefault) {
+    Rng rng(17, 0);
+    for (const EffectInfo& info : list_effects()) {
+        const auto e = make_effect(info.name);
+        e->reset(3);
+        for (int k = 0; k < 200; ++k) {
+            EffectContext ctx;
+            ctx.t_s = 0.37 * k;
+            ctx.dt_s = k == 0 ? 0.0 : 0.37;
+            ctx.temperature_degc = 20.0 + 10.0 * rng.uniform();
+            ctx.supply_v = 4.9 + 0.2 * rng.uniform();
+            ctx.true_physical = {rng.normal(), rng.normal(), rng.normal(), 1.0 + rng.normal()};
+            if (k % 2 == 1) ctx.channel = static_cast<Channel>(k % 4);
+            const ChannelValues in = {100 * rng.normal(), 512 + 50 * rng.normal(), 2.5 + rng.normal(), rng.uniform()};
+            ChannelValues v = in;
+            e->apply(v, ctx);
+            EXPECT_EQ(v, in) << info.name;
+            EXPECT_EQ(e->actual_instant_s(ctx.t_s, ctx), ctx.t_s) << info.name;
+        }
+    }
+}
+
+TEST(EffectRegistry, TomlRoundTripKeepsEveryParameter) {
+    ASSERT_EQ(kExamples.size(), kExpected.size());
+    for (const auto& [name, text] : kExamples) {
+        const auto first = test::effect_from(name, text);
+        const toml::table written = first->parameters();
+        const auto second = make_effect(name, written, name);
+        EXPECT_EQ(second->parameters(), written) << name;
+        // Every key given in the example comes back with the same value.
+        const toml::table given = toml::parse(text);
+        for (const auto& [key, node] : given) {
+            ASSERT_TRUE(written.contains(key.str())) << name << "." << key.str();
+            if (node.is_array() || node.is_string() || node.is_boolean()) {
+                EXPECT_EQ(text_of(*written.get(key.str())), text_of(node)) << name << "." << key.str();
+            } else if (const toml::array* a = written.get(key.str())->as_array()) {
+                for (const toml::node& e : *a) EXPECT_EQ(e.value<double>(), node.value<double>()) << name;  // broadcast
+            } else {
+                EXPECT_EQ(written.get(key.str())->value<double>(), node.value<double>()) << name << "." << key.str();
+            }
+        }
+        // The documented keys are exactly the written keys, so docs and config cannot disagree.
+        std::set<std::string> documented, keys;
+        for (const auto& info : list_effects())
+            if (info.name == name)
+                for (const auto& p : info.params) documented.insert(p.key);
+        for (const auto& [key, node] : written) keys.insert(std::string(key.str()));
+        EXPECT_EQ(documented, keys) << name;
+    }
+}
+
+TEST(EffectRegistry, ParsedValuesReachTheParameterStruct) {
+    const auto e = test::effect_from("gauss_markov", "sigma_dps = 0.05\nsigma_g = 0.002\ntau_s = [1, 2, 3, 4.5]");
+    const auto& p = dynamic_cast<const GaussMarkov&>(*e).params();
+    EXPECT_EQ(p.sigma_dps, 0.05);
+    EXPECT_EQ(p.sigma_g, (std::array<double, 3>{0.002, 0.002, 0.002}));  // a scalar broadcasts
+    EXPECT_EQ(p.tau_s, (ChannelValues{1.0, 2.0, 3.0, 4.5}));              // integers are accepted as numbers
+    const auto v = test::effect_from("vibration", "tone_hz = [10.0, 20.0]\ntone_g_x = [0.1, 0.2]");
+    EXPECT_EQ(dynamic_cast<const Vibration&>(*v).params().tone_g_x, (std::vector<double>{0.1, 0.2}));
+}
+
+TEST(EffectRegistry, UnknownKeyNamesTheKeyAndSuggestsTheUnit) {
+    const std::string wrong_unit = error_of("gauss_markov", "sigma_dps = 0.1\ntau_ms = 100.0");
+    EXPECT_NE(wrong_unit.find("line 2: effects.gauss_markov.tau_ms"), std::string::npos) << wrong_unit;
+    EXPECT_NE(wrong_unit.find("tau_s [s]"), std::string::npos) << wrong_unit;
+    const std::string mg = error_of("flicker", "b_mg = 0.1");
+    EXPECT_NE(mg.find("b_dps [deg/s]"), std::string::npos) << mg;
+    EXPECT_NE(mg.find("b_g [g]"), std::string::npos) << mg;
+    const std::string unknown = error_of("adc_inl", "bow = 1.0");
+    EXPECT_NE(unknown.find("effects.adc_inl.bow: unknown key"), std::string::npos) << unknown;
+}
+
+TEST(EffectRegistry, BadValuesNameTheKeyAndTheExpectedUnit) {
+    const std::string type = error_of("gauss_markov", "sigma_dps = \"fast\"");
+    EXPECT_NE(type.find("effects.gauss_markov.sigma_dps: expected a number [deg/s]"), std::string::npos) << type;
+    const std::string range = error_of("gauss_markov", "tau_s = -1.0");
+    EXPECT_NE(range.find("tau_s: expected a number [s] > 0, got -1"), std::string::npos) << range;
+    const std::string length = error_of("mains_alias", "amplitude_v = [0.1, 0.2]");
+    EXPECT_NE(length.find("array of 4 numbers [V]"), std::string::npos) << length;
+    const std::string choice = error_of("ambient_cycle", "waveform = \"triangle\"");
+    EXPECT_NE(choice.find("expected one of \"sine\", \"square\""), std::string::npos) << choice;
+    const std::string codes = error_of("adc_dnl", "missing_codes = [0]");
+    EXPECT_NE(codes.find("missing_codes: expected an array of integers [counts] in [1, 1022]"), std::string::npos)
+        << codes;
+    const std::string band = error_of("flicker", "f_low_hz = 1.0\nf_high_hz = 0.1");
+    EXPECT_NE(band.find("f_high_hz: expected f_high_hz > f_low_hz"), std::string::npos) << band;
+    const std::string tones = error_of("vibration", "tone_hz = [1.0, 2.0]\ntone_dps = [0.1]");
+    EXPECT_NE(tones.find("tone_dps: expected 2 values"), std::string::npos) << tones;
+}
+
+TEST(EffectRegistry, UnknownEffectNameIsAConfigErrorListingTheKnownOnes) {
+    try {
+        make_effect("turn_on_bias", toml::table{}, "effects.turn_on_bias");
+        FAIL() << "no error";
+    } catch (const ConfigError& e) {
+        EXPECT_EQ(e.key(), "effects.turn_on_bias");
+        EXPECT_NE(std::string(e.what()).find("gauss_markov"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace driftlab::sim
