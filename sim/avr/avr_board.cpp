@@ -28,9 +28,29 @@ constexpr std::uint16_t kMcusrAddress = 0x54;    // MCUSR in data space
 constexpr std::uint8_t kMcusrPorf = 0x01;
 constexpr std::uint16_t kAdcsraAddress = 0x7A;  // ADCSRA in data space
 constexpr std::uint8_t kAdcsraAdate = 0x20;
+constexpr std::uint64_t kCyclesPerTick = AvrBoard::kCpuHz / fw::kTickHz;
 constexpr std::uint8_t kStackPaint = 0xA5;       // untouched-RAM pattern for the stack high-water mark
 
 AvrBoard* board_of(avr_t* avr) { return static_cast<AvrBoard*>(avr->custom.data); }
+
+// USART0 registers in data space and their bits (ATmega328P datasheet, "USART0").
+constexpr std::uint16_t kUcsr0a = 0xC0, kUcsr0b = 0xC1, kUcsr0c = 0xC2, kUbrr0l = 0xC4, kUbrr0h = 0xC5;
+constexpr std::uint8_t kU2x0 = 0x02, kUcsz02 = 0x04, kUsbs0 = 0x08, kUpm0 = 0x30, kUcsz0 = 0x06;
+
+// Cycles of one UART frame as the chip times it: (start + data + parity + stop) bits of (UBRR + 1) x 8 cycles
+// with U2X, x 16 without. 0 while UBRR is not set.
+std::uint64_t uart_cycles_per_byte(const avr_t* avr) {
+    const std::uint32_t ubrr = avr->data[kUbrr0l] | (avr->data[kUbrr0h] & 0x0F) << 8;
+    if (ubrr == 0) {
+        return 0;
+    }
+    const std::uint32_t ucsz = (avr->data[kUcsr0c] & kUcsz0) >> 1 | ((avr->data[kUcsr0b] & kUcsz02) ? 4U : 0U);
+    const std::uint32_t data_bits = ucsz <= 3 ? 5 + ucsz : (ucsz == 7 ? 9 : 8);
+    const std::uint32_t bits = 1 + data_bits + ((avr->data[kUcsr0c] & kUpm0) ? 1 : 0) +
+                               ((avr->data[kUcsr0c] & kUsbs0) ? 2 : 1);
+    const std::uint32_t cycles_per_bit = ((avr->data[kUcsr0a] & kU2x0) ? 8U : 16U) * (ubrr + 1);
+    return std::uint64_t{bits} * cycles_per_bit;
+}
 
 }  // namespace
 
@@ -76,7 +96,12 @@ AvrBoard::AvrBoard(const AvrBoardOptions& options, VoltageSource source)
     avr_irq_t* compb = avr_get_interrupt_irq(avr_, kTimer1CompbVector);
     adc_irq_ = avr_io_getirq(avr_, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0);
     uart_input_ = avr_io_getirq(avr_, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_INPUT);
-    if (compb == nullptr || adc_irq_ == nullptr || uart_input_ == nullptr) {
+    for (avr_io_t* io = avr_->io_port; io != nullptr; io = io->next) {
+        if (std::strcmp(io->kind, "uart") == 0 && reinterpret_cast<avr_uart_t*>(io)->name == '0') {
+            uart0_ = reinterpret_cast<avr_uart_t*>(io);
+        }
+    }
+    if (compb == nullptr || adc_irq_ == nullptr || uart_input_ == nullptr || uart0_ == nullptr) {
         throw AvrError("simavr's ATmega328P lacks Timer1, ADC or UART0 signals");
     }
     avr_irq_register_notify(compb + AVR_INT_IRQ_PENDING, &AvrBoard::on_timer1_compb_pending, this);
@@ -123,6 +148,7 @@ void AvrBoard::run_until_cycle(std::uint64_t cycle) {
     if (avr_->cycle >= cycle) {
         return;
     }
+    sync_uart_rate();
     // A cycle timer at the target ends any sleep there, so the caller gets control back on time.
     avr_cycle_timer_register(avr_, cycle - avr_->cycle, &AvrBoard::on_run_limit, this);
     while (avr_->cycle < cycle) {
@@ -139,6 +165,16 @@ void AvrBoard::run_until_cycle(std::uint64_t cycle) {
         }
     }
     avr_cycle_timer_cancel(avr_, &AvrBoard::on_run_limit, this);
+}
+
+void AvrBoard::run_until_armed() {
+    const std::uint64_t limit = avr_->cycle + kCpuHz;
+    while (!epoch_cycle_ && avr_->cycle < limit) {
+        run_until_cycle(avr_->cycle + kCpuHz / 1000);
+    }
+    if (!epoch_cycle_) {
+        throw AvrError(elf_path_ + ": the firmware armed no ADC conversion within one second of power-on");
+    }
 }
 
 void AvrBoard::receive(const std::uint8_t* bytes, std::size_t count) {
@@ -184,6 +220,12 @@ std::uint32_t AvrBoard::read_ram_u32(std::uint32_t address) const {
            static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
 }
 
+void AvrBoard::sync_uart_rate() {
+    if (const std::uint64_t cycles = uart_cycles_per_byte(avr_); cycles != 0) {
+        uart0_->cycles_per_byte = cycles;
+    }
+}
+
 void AvrBoard::schedule_rx_pump(std::uint64_t at_cycle) {
     if (rx_pump_scheduled_ || rx_queue_.empty() || rx_fifo_full_) {
         return;
@@ -212,18 +254,23 @@ void AvrBoard::on_adc_trigger(avr_irq_t*, std::uint32_t value, void* param) {
     if (mux.kind != ADC_MUX_SINGLE) {
         return;
     }
-    // The firmware's warm-up conversion (avr_board_init) is started by hand, not by Timer1: no trigger tick.
-    const bool timer_triggered = (self->avr_->data[kAdcsraAddress] & kAdcsraAdate) != 0;
+    // The firmware's warm-up conversion (avr_board_init) is started by hand, not by Timer1: it is discarded by
+    // the firmware and must not consume a sample of the source (whose noise streams advance per call).
+    if ((self->avr_->data[kAdcsraAddress] & kAdcsraAdate) == 0) {
+        avr_raise_irq(self->adc_irq_ + mux.src, kBoardVrefMv / 2);
+        return;
+    }
+    self->sync_uart_rate();
+    const std::uint32_t base = self->isr_shared_address_;
+    const auto tick32 = static_cast<std::uint32_t>(self->read_ram_u32(base + IsrSharedLayout::kTriggerTickOffset) +
+                                                   self->read_ram_u32(base + IsrSharedLayout::kStepTicksOffset));
+    // Unwrap: triggers are less than 2^32 ticks (4.77 h) apart.
     std::uint64_t tick = self->last_trigger_tick_;
-    if (timer_triggered) {
-        const std::uint32_t base = self->isr_shared_address_;
-        const auto tick32 =
-            static_cast<std::uint32_t>(self->read_ram_u32(base + IsrSharedLayout::kTriggerTickOffset) +
-                                       self->read_ram_u32(base + IsrSharedLayout::kStepTicksOffset));
-        // Unwrap: triggers are less than 2^32 ticks (4.77 h) apart.
-        tick += static_cast<std::uint32_t>(tick32 - static_cast<std::uint32_t>(tick));
-        self->last_trigger_tick_ = tick;
-        ++self->triggered_conversions_;
+    tick += static_cast<std::uint32_t>(tick32 - static_cast<std::uint32_t>(tick));
+    self->last_trigger_tick_ = tick;
+    if (self->triggered_conversions_++ == 0) {
+        // Timer1 has run without a stop since the first hal_init(): 64 cycles per tick back to tick 0.
+        self->epoch_cycle_ = self->avr_->cycle - tick * kCyclesPerTick;
     }
     std::uint32_t mv = 0;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
@@ -236,6 +283,7 @@ void AvrBoard::on_adc_trigger(avr_irq_t*, std::uint32_t value, void* param) {
 
 void AvrBoard::on_uart_output(avr_irq_t*, std::uint32_t value, void* param) {
     auto* self = static_cast<AvrBoard*>(param);
+    self->sync_uart_rate();
     self->tx_.push_back({self->avr_->cycle, static_cast<std::uint8_t>(value)});
 }
 
@@ -257,6 +305,7 @@ std::uint64_t AvrBoard::on_rx_pump(avr_t*, std::uint64_t when, void* param) {
     if (self->rx_fifo_full_ || self->rx_queue_.empty()) {
         return 0;  // XON reschedules
     }
+    self->sync_uart_rate();
     const std::uint8_t byte = self->rx_queue_.front();
     self->rx_queue_.pop_front();
     avr_raise_irq(self->uart_input_, byte);

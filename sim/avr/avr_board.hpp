@@ -15,6 +15,10 @@
 //  - ADC auto-trigger from Timer1 compare match B (ADTS = 101) is not implemented in avr_adc.c; the board
 //    watches the TIMER1_COMPB vector's pending signal, the compare-B flag rising, and starts the conversion
 //    through ADC_IRQ_IN_TRIGGER, as the chip's trigger logic does.
+//  - UART timing: simavr 1.6 derives the byte time when UBRR0 is written, ignoring a U2X set afterwards (the
+//    firmware sets U2X after UBRR0, in either order on the chip) and counting a parity bit that 8N1 has not: it
+//    would send at 187 us per byte instead of 85. The board keeps simavr's byte time at the chip's, computed from
+//    UBRR0, U2X0, UCSZ0, UPM0 and USBS0.
 //  - Power-on reset: MCUSR reads 0 after simavr's reset; the board sets PORF as a power-up does.
 //  - The default sleep callback paces the emulator to the wall clock; the board replaces it, so the firmware's
 //    idle sleep costs no wall time (except under gdb, whose own callback keeps the stub responsive).
@@ -25,6 +29,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +37,7 @@
 
 struct avr_t;
 struct avr_irq_t;
+struct avr_uart_t;
 
 namespace driftlab::sim::avr {
 
@@ -76,6 +82,13 @@ public:
     /// AvrError when the firmware stops (sleep with interrupts off) or crashes.
     void run_until_cycle(std::uint64_t cycle);
     void run_until_s(double t_s) { run_until_cycle(cycles_for_s(t_s)); }
+    /// Runs the start-up code until the firmware's first timer-triggered conversion, which fixes
+    /// firmware_epoch_cycle(). Throws AvrError when none comes within one emulated second.
+    void run_until_armed();
+    /// Cycle at which the firmware's tick 0 began (Timer1 started by the first hal_init()), known after the first
+    /// triggered conversion. The native board's time 0 is its firmware's tick 0, so a host that wants the same
+    /// instants on both boards counts AVR time from here (0.808 ms after power-on for the current firmware).
+    std::optional<std::uint64_t> firmware_epoch_cycle() const { return epoch_cycle_; }
 
     // ---- UART0 ----
     /// Queues host bytes for UART0's receiver: one every kRxByteCycles from now (or after the bytes already
@@ -112,6 +125,7 @@ private:
 
     std::uint32_t read_ram_u32(std::uint32_t address) const;
     void schedule_rx_pump(std::uint64_t at_cycle);
+    void sync_uart_rate();
 
     avr_t* avr_ = nullptr;
     VoltageSource source_;
@@ -123,10 +137,12 @@ private:
     std::uint32_t data_end_address_ = 0;    // RAM address just past .noinit: the lowest byte the stack may use
     std::uint64_t last_trigger_tick_ = 0;   // unwrapped
     std::uint64_t triggered_conversions_ = 0;
+    std::optional<std::uint64_t> epoch_cycle_;
     std::uint64_t sleep_cycles_ = 0;
 
     avr_irq_t* adc_irq_ = nullptr;     // ADC_IRQ_ADC0.. of the ADC module
     avr_irq_t* uart_input_ = nullptr;  // UART_IRQ_INPUT of UART0
+    avr_uart_t* uart0_ = nullptr;
     std::deque<std::uint8_t> rx_queue_;
     std::uint64_t rx_next_cycle_ = 0;  // earliest cycle for the next byte on the line
     bool rx_fifo_full_ = false;        // XOFF seen, no XON since

@@ -83,8 +83,11 @@ inline std::vector<std::uint8_t> run_native(const std::vector<HostSend>& script,
     return tx;
 }
 
-/// The AVR firmware on `board`: host bytes enter UART0 from their send time on, one byte time apart.
+/// The AVR firmware on `board`: host bytes enter UART0 from their send time on, one byte time apart. Times count
+/// from the firmware's tick 0 (AvrBoard::firmware_epoch_cycle()), as the native board's do.
 inline std::vector<std::uint8_t> run_avr(AvrBoard& board, const std::vector<HostSend>& script, double end_s) {
+    board.run_until_armed();
+    const std::uint64_t epoch = *board.firmware_epoch_cycle();
     std::vector<std::uint8_t> tx;
     std::uint8_t out[256];
     const auto drain = [&] {
@@ -93,11 +96,11 @@ inline std::vector<std::uint8_t> run_avr(AvrBoard& board, const std::vector<Host
         }
     };
     for (const HostSend& send : script) {
-        board.run_until_s(send.t_s);
+        board.run_until_cycle(epoch + AvrBoard::cycles_for_s(send.t_s));
         drain();
         board.receive(send.frame.data(), send.frame.size());
     }
-    board.run_until_s(end_s);
+    board.run_until_cycle(epoch + AvrBoard::cycles_for_s(end_s));
     drain();
     return tx;
 }
