@@ -1,8 +1,8 @@
 // Byte-at-a-time frame decoder with re-scan (decoder.hpp; docs/protocol.md §6).
 //
-// buf_ holds one candidate frame starting at buf_[0] (plus, after a reject, the bytes still to re-examine).
-// The candidate's header is checked again as each byte arrives, which costs a few compares and needs no
-// state beyond the bytes themselves; the CRC is computed once, when the candidate is complete.
+// buf_ holds one candidate frame starting at buf_[0] and, after a reject, the bytes still to re-examine. Each
+// byte is checked once as it becomes next in line (checked_), with the CRC kept running, so the cost per byte
+// is flat; only a reject re-reads held bytes, starting over from the next sync0 among them.
 #include "driftlab/proto/decoder.hpp"
 
 #include "driftlab/proto/byte_order.hpp"
@@ -24,7 +24,7 @@ bool Decoder::feed(uint8_t byte) {
   if (ready_len_ != 0) {
     release();
   }
-  // Room is guaranteed: an incomplete candidate is shorter than kMaxFrameSize, and release() freed >= 9 bytes.
+  // Room is guaranteed: an undecided candidate is shorter than kMaxFrameSize, and release() freed >= 9 bytes.
   buf_[fill_++] = byte;
   return scan();
 }
@@ -44,15 +44,17 @@ void Decoder::release() {
   }
   fill_ = keep;
   ready_len_ = 0;
+  restart_candidate();
 }
 
 bool Decoder::scan() {
-  for (;;) {
-    switch (check_candidate()) {
-      case Verdict::incomplete:
-        return false;
+  while (checked_ < fill_) {
+    switch (check_next_byte()) {
+      case Verdict::pass:
+        ++checked_;
+        break;
       case Verdict::complete:
-        ready_len_ = static_cast<uint8_t>(proto::frame_size(buf_[kOffsetLen]));
+        ready_len_ = frame_len_;
         saturating_add(&counters_.frames_ok, 1);
         return true;
       case Verdict::reject:
@@ -60,55 +62,68 @@ bool Decoder::scan() {
         break;
     }
   }
+  return false;
 }
 
-Decoder::Verdict Decoder::check_candidate() {
-  if (fill_ <= kOffsetSync0) {
-    return Verdict::incomplete;
+Decoder::Verdict Decoder::check_next_byte() {
+  const uint8_t i = checked_;
+  if (i <= kOffsetLen) {
+    return check_header_byte(i);
   }
-  if (buf_[kOffsetSync0] != kSync0) {
-    return Verdict::reject;
+  // Payload and CRC bytes, most of every frame: no locals and no calls beyond the CRC step.
+  const uint8_t byte = buf_[i];
+  const uint8_t crc_offset = static_cast<uint8_t>(frame_len_ - kCrcSize);
+  if (i < crc_offset) {
+    crc_ = crc16_ibm3740_update(crc_, byte);
+    return Verdict::pass;
   }
-  if (fill_ <= kOffsetSync1) {
-    return Verdict::incomplete;
+  if (i == crc_offset) {
+    // First CRC byte: fold in the seed now; the decision waits for the second byte.
+    crc_ = crc16_ibm3740_update(crc_, seed_);
+    return Verdict::pass;
   }
-  if (buf_[kOffsetSync1] != kSync1) {
-    return Verdict::reject;
-  }
-  if (fill_ <= kOffsetVersion) {
-    return Verdict::incomplete;
-  }
-  if (buf_[kOffsetVersion] != kProtocolVersion) {
-    saturating_add(&counters_.bad_version, 1);
-    return Verdict::reject;
-  }
-  if (fill_ <= kOffsetType) {
-    return Verdict::incomplete;
-  }
-  MsgSpec spec{};
-  if (!find_spec(buf_[kOffsetType], &spec)) {
-    saturating_add(&counters_.unknown_type, 1);
-    return Verdict::reject;
-  }
-  if (fill_ <= kOffsetLen) {
-    return Verdict::incomplete;
-  }
-  const uint8_t payload_len = buf_[kOffsetLen];
-  if (payload_len != spec.payload_len) {
-    saturating_add(&counters_.bad_length, 1);
-    return Verdict::reject;
-  }
-  const size_t crc_offset = kOffsetPayload + payload_len;
-  if (fill_ < crc_offset + kCrcSize) {
-    return Verdict::incomplete;
-  }
-  uint16_t crc = crc16_ibm3740(buf_ + kCrcStart, crc_offset - kCrcStart);
-  crc = crc16_ibm3740_update(crc, spec.crc_seed);
-  if (crc != get_u16_le(buf_ + crc_offset)) {
+  if (crc_ != get_u16_le(buf_ + crc_offset)) {
     saturating_add(&counters_.bad_crc, 1);
     return Verdict::reject;
   }
   return Verdict::complete;
+}
+
+Decoder::Verdict Decoder::check_header_byte(uint8_t i) {
+  const uint8_t byte = buf_[i];
+  switch (i) {
+    case kOffsetSync0:
+      return byte == kSync0 ? Verdict::pass : Verdict::reject;
+    case kOffsetSync1:
+      return byte == kSync1 ? Verdict::pass : Verdict::reject;
+    case kOffsetVersion:
+      if (byte != kProtocolVersion) {
+        saturating_add(&counters_.bad_version, 1);
+        return Verdict::reject;
+      }
+      crc_ = crc16_ibm3740_update(kCrc16Ibm3740Init, byte);
+      return Verdict::pass;
+    case kOffsetType: {
+      MsgSpec spec{};
+      if (!find_spec(byte, &spec)) {
+        saturating_add(&counters_.unknown_type, 1);
+        return Verdict::reject;
+      }
+      seed_ = spec.crc_seed;
+      frame_len_ = static_cast<uint8_t>(proto::frame_size(spec.payload_len));
+      break;
+    }
+    case kOffsetLen:
+      if (proto::frame_size(byte) != frame_len_) {
+        saturating_add(&counters_.bad_length, 1);
+        return Verdict::reject;
+      }
+      break;
+    default:  // the two seq bytes: covered by the CRC, no check of their own
+      break;
+  }
+  crc_ = crc16_ibm3740_update(crc_, byte);
+  return Verdict::pass;
 }
 
 void Decoder::drop_candidate() {
@@ -123,6 +138,7 @@ void Decoder::drop_candidate() {
     buf_[i] = buf_[start + i];
   }
   fill_ = keep;
+  restart_candidate();
 }
 
 }  // namespace proto

@@ -65,19 +65,31 @@ class Decoder {
   void reset() {
     fill_ = 0;
     ready_len_ = 0;
+    restart_candidate();
   }
 
  private:
-  enum class Verdict : uint8_t { incomplete, complete, reject };
+  enum class Verdict : uint8_t { pass, complete, reject };
 
   void release();
   bool scan();
-  Verdict check_candidate();
+  Verdict check_next_byte();
+  Verdict check_header_byte(uint8_t i);
   void drop_candidate();
+  void restart_candidate() {
+    checked_ = 0;
+    frame_len_ = 0;
+  }
 
   uint8_t buf_[kMaxFrameSize] = {};
   uint8_t fill_ = 0;       // bytes held in buf_
   uint8_t ready_len_ = 0;  // size of the delivered frame at buf_[0], 0 when none is available
+  // Progress through the candidate at buf_[0]: each byte is checked once, when it first becomes next in line,
+  // so a payload byte costs one CRC step and the header checks are not repeated.
+  uint8_t checked_ = 0;    // bytes of the candidate that passed their check
+  uint8_t frame_len_ = 0;  // the candidate's frame size, known from its type byte on
+  uint8_t seed_ = 0;       // the candidate's CRC seed once its type byte passed
+  uint16_t crc_ = 0;       // CRC over buf_[kCrcStart, checked_)
   DecoderCounters counters_ = {};
 };
 
