@@ -1,0 +1,82 @@
+// One series through grid placement, optional drift removal and the Allan statistics (docs/allan.md §7).
+#include "host/stats/allan_pipeline.hpp"
+
+#include <exception>
+
+#include "host/fit/lm_fit.hpp"
+#include "host/stats/uniform_grid.hpp"
+
+namespace driftlab::host::stats {
+namespace {
+
+AllanCurves analyse_curves(const PhaseRecord& record, const AllanRequest& request) {
+    AllanCurves out;
+    std::vector<Deviation> order = {Deviation::oadev};
+    for (Deviation d : request.deviations) {
+        if (d != Deviation::oadev) order.push_back(d);
+    }
+    for (Deviation d : order) {
+        const auto ms = analysis_factors(record, d, request.grid);
+        out.curves.push_back(analyse_deviation(record, d, ms, request.confidence));
+    }
+    const AnalysedCurve& oadev = out.curves.front();
+    out.terms = fit_noise_terms(oadev.curve.tau_s, oadev.curve.dev, oadev.edf);
+    return out;
+}
+
+PhaseRecord make_record(const std::vector<double>& v, double tau0_s, InputKind kind) {
+    return kind == InputKind::rate ? PhaseRecord::from_rate(v, tau0_s) : PhaseRecord::from_phase(v, tau0_s);
+}
+
+}  // namespace
+
+const AnalysedCurve* AllanCurves::find(Deviation d) const {
+    for (const AnalysedCurve& c : curves) {
+        if (c.curve.type == d) return &c;
+    }
+    return nullptr;
+}
+
+std::optional<fit::DriftParameters> fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
+                                                      std::string& status) {
+    try {
+        const fit::FitResult r = fit::fit_drift(t_s, values);
+        status = fit::fit_status_name(r.status);
+        if (r.status != fit::FitStatus::converged) return std::nullopt;
+        return r.parameters;
+    } catch (const std::exception& e) {
+        status = e.what();
+        return std::nullopt;
+    }
+}
+
+AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<double>& values, double tau0_s,
+                          const AllanRequest& request) {
+    AllanResult out;
+    const UniformSeries grid = to_uniform_grid(t_s, values, tau0_s);
+    out.tau0_s = tau0_s;
+    out.samples = grid.values.size();
+    out.gap_samples = grid.missing;
+    out.collisions = grid.collisions;
+    out.raw = analyse_curves(make_record(grid.values, tau0_s, request.kind), request);
+
+    if (!request.remove_drift) {
+        out.drift_status = "not requested";
+        return out;
+    }
+    if (request.kind != InputKind::rate) {
+        out.drift_status = "not applicable to phase input";
+        return out;
+    }
+    out.drift = fit_turn_on_drift(t_s, values, out.drift_status);
+    if (!out.drift) return out;
+    std::vector<double> residual(grid.values.size());
+    for (std::size_t i = 0; i < residual.size(); ++i) {
+        // NaN gap slots stay NaN.
+        residual[i] = grid.values[i] - fit::drift_model(*out.drift, grid.t0_s + static_cast<double>(i) * tau0_s);
+    }
+    out.drift_removed = analyse_curves(make_record(residual, tau0_s, request.kind), request);
+    return out;
+}
+
+}  // namespace driftlab::host::stats

@@ -1,0 +1,51 @@
+// What `driftlab allan` does to one series (docs/allan.md §7): place it on the tau0 grid with explicit gaps,
+// optionally remove the fitted turn-on drift (paper eq. 1, host/fit), and evaluate the requested deviations with
+// noise type, EDF and confidence intervals, plus the IEEE 952 terms fitted to the overlapping ADEV.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "host/fit/drift_model.hpp"
+#include "host/stats/allan_analysis.hpp"
+#include "host/stats/noise_terms.hpp"
+
+namespace driftlab::host::stats {
+
+struct AllanRequest {
+    InputKind kind = InputKind::rate;
+    TauGridOptions grid;
+    std::vector<Deviation> deviations = {Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
+    bool remove_drift = true;   ///< fit eq. 1 and also analyse the residual (rate input only)
+    double confidence = kOneSigmaConfidence;
+};
+
+/// The curves of one version of the series (raw or drift-removed); `curves` in request order, oadev first.
+struct AllanCurves {
+    std::vector<AnalysedCurve> curves;
+    NoiseTermFit terms;  ///< fitted to the oadev curve
+    const AnalysedCurve* find(Deviation d) const;
+};
+
+struct AllanResult {
+    double tau0_s = 0.0;
+    std::size_t samples = 0;      ///< grid slots (input samples plus gap slots)
+    std::size_t gap_samples = 0;  ///< slots that are gaps (missing, NaN)
+    std::size_t collisions = 0;   ///< samples dropped because two fell into one slot
+    AllanCurves raw;
+    std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
+    std::optional<fit::DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]
+    std::string drift_status;                   ///< why no drift was removed, or the fit status
+};
+
+/// Analyses samples `values` taken at times `t_s` [s] (strictly increasing) on a grid of `tau0_s`.
+AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<double>& values, double tau0_s,
+                          const AllanRequest& request);
+
+/// The one place the turn-on drift enters the Allan analysis: fits eq. 1 to (t_s, values); nothing (and the
+/// reason in `status`) when the fit fails or does not converge.
+std::optional<fit::DriftParameters> fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
+                                                      std::string& status);
+
+}  // namespace driftlab::host::stats

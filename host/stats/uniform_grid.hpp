@@ -1,0 +1,26 @@
+// Time-stamped samples onto the uniform tau0 grid the Allan statistics need, with missing samples as NaN
+// (docs/allan.md §7): a recorder reconnect or lost frames become an explicit gap, never a silent splice.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace driftlab::host::stats {
+
+struct UniformSeries {
+    double tau0_s = 0.0;          ///< grid spacing [s]
+    double t0_s = 0.0;            ///< time of grid index 0 [s]
+    std::vector<double> values;   ///< one per grid slot; NaN where no sample fell
+    std::size_t missing = 0;      ///< slots without a sample (gaps)
+    std::size_t collisions = 0;   ///< samples dropped because an earlier one already held their slot
+};
+
+/// Median spacing of strictly increasing times [s]; 0 for fewer than two samples.
+double median_spacing_s(std::span<const double> t_s);
+
+/// Places sample k at slot round((t_k - t_0) / tau0). Throws std::invalid_argument when the sizes differ,
+/// tau0 <= 0, or the grid would exceed 20x the sample count (tau0 far too small for these times).
+UniformSeries to_uniform_grid(std::span<const double> t_s, std::span<const double> values, double tau0_s);
+
+}  // namespace driftlab::host::stats
