@@ -1,0 +1,122 @@
+// The host-in-the-loop event loop; see hil.hpp.
+#include "sim/hil/hil.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+
+#include "driftlab/proto/wire.hpp"
+#include "host/util/error.hpp"
+#include "sim/hil/native_target.hpp"
+#include "sim/model/sensor_model.hpp"
+
+namespace driftlab::sim {
+
+namespace {
+
+// The sensor model seen from the board: eq. 1 runs on the sensor's own power-on time.
+class SensorSource final : public ConversionSource {
+public:
+    SensorSource(const SimModel& model, std::uint64_t seed, double warm_up_s)
+        : sensor_(model, seed), warm_up_s_(warm_up_s) {}
+    std::uint16_t code(Channel c, double t_s) override { return sensor_.convert(c, t_s + warm_up_s_).code; }
+
+private:
+    SensorModel sensor_;
+    double warm_up_s_;
+};
+
+std::unique_ptr<EmulatedBoard> make_target(TargetKind kind) {
+    switch (kind) {
+    case TargetKind::native: return std::make_unique<NativeTarget>();
+    }
+    return nullptr;
+}
+
+// One link packet per protocol frame, so frame-unit losses take whole frames as a radio packet would.
+void send_frames(LinkDirection& link, const TxChunk& chunk) {
+    const auto& b = chunk.bytes;
+    std::size_t i = 0;
+    while (i < b.size()) {
+        std::size_t size = b.size() - i;
+        if (size > proto::kOffsetLen && b[i] == proto::kSync0 && b[i + 1] == proto::kSync1)
+            size = std::min(size, proto::frame_size(b[i + proto::kOffsetLen]));
+        link.send(chunk.t_s, std::span(b.data() + i, size));
+        i += size;
+    }
+}
+
+double earliest(std::initializer_list<std::optional<double>> times) {
+    double t = std::numeric_limits<double>::infinity();
+    for (const auto& x : times)
+        if (x) t = std::min(t, *x);
+    return t;
+}
+
+}  // namespace
+
+HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
+    SensorSource source(options.model, options.seed, options.warm_up_s);
+    Link link(options.model.link, options.seed);
+    HostPlan plan;
+    plan.config = options.model.firmware;
+    plan.duration_s = options.duration_s;
+    plan.reply_timeout_s = options.reply_timeout_s;
+    HostEndpoint host(plan, sink);
+    const std::unique_ptr<EmulatedBoard> board =
+        options.make_board ? options.make_board() : make_target(options.target);
+
+    std::vector<TxChunk> tx;
+    std::vector<std::uint8_t> rx;
+    std::vector<std::vector<std::uint8_t>> requests;
+    double next_report_s = 0.0;
+    const double report_step_s = std::max(options.duration_s / 200.0, 1e-3);
+    // Handshake and closing take a few round trips; each request may be retried max_tries times.
+    const double give_up_s = options.duration_s + 4.0 * plan.max_tries * plan.reply_timeout_s + 60.0;
+    double t = 0.0;
+    while (!host.done()) {
+        t = earliest({board->next_conversion_s(), link.to_firmware().next_arrival_s(), link.to_host().next_arrival_s(),
+                      host.next_action_s()});
+        if (t == std::numeric_limits<double>::infinity())
+            throw host::DeviceError("emulated board", "the run stalled: nothing left to happen in virtual time");
+        if (t > give_up_s)
+            throw host::DeviceError("emulated board", "the session did not finish within " +
+                                                          std::to_string(give_up_s) + " s of virtual time");
+
+        // Same-instant order: conversions due, then bytes reaching the firmware, then bytes reaching the host,
+        // then whatever the host decides at that instant.
+        board->advance_to(t, source, tx);
+        rx.clear();
+        link.to_firmware().deliver_until(t, rx);
+        if (!rx.empty()) board->receive(rx, tx);
+        for (const TxChunk& chunk : tx) send_frames(link.to_host(), chunk);
+        tx.clear();
+
+        rx.clear();
+        link.to_host().deliver_until(t, rx);
+        if (!rx.empty()) host.receive(t, rx);
+
+        requests.clear();
+        host.act(t, requests);
+        for (const auto& frame : requests) link.to_firmware().send(t, frame);
+
+        if (options.progress && t >= next_report_s) {
+            options.progress(std::min(t / options.duration_s, 1.0));
+            next_report_s = t + report_step_s;
+        }
+    }
+
+    HilSummary s;
+    s.host = host.counters();
+    s.decoder = host.decoder_counters();
+    s.to_host = link.to_host().counters();
+    s.to_firmware = link.to_firmware().counters();
+    s.version = host.version();
+    s.status = host.status();
+    s.conversions = board->conversions();
+    s.simulated_s = t;
+    if (options.progress) options.progress(1.0);
+    return s;
+}
+
+}  // namespace driftlab::sim

@@ -1,0 +1,56 @@
+// Host-in-the-loop: the firmware on an emulated board, fed by the sensor model at the exact conversion instants
+// it armed, its UART bytes carried by the link model (with baud timing) to a host that handshakes, polls or
+// listens, and turns frames into log records. One deterministic event loop in virtual time: the same options
+// and seed give the same records bit for bit. docs/sim.md §Host-in-the-loop.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "driftlab/proto/decoder.hpp"
+#include "driftlab/proto/messages.hpp"
+#include "sim/hil/emulated_board.hpp"
+#include "sim/hil/hil_record.hpp"
+#include "sim/hil/host_endpoint.hpp"
+#include "sim/link/link.hpp"
+#include "sim/model/sim_model.hpp"
+
+namespace driftlab::sim {
+
+/// Which emulated board runs the firmware. Only the native core exists today.
+enum class TargetKind : std::uint8_t { native };
+
+struct HilOptions {
+    SimModel model;                 ///< sensor, effects, firmware CONFIG, link
+    double duration_s = 4000.0;     ///< recording time after the handshake [s] (output count = duration/period)
+    std::uint64_t seed = 1;         ///< every random component derives its substream from it
+    double warm_up_s = 0.0;         ///< the sensor was powered this long before the board booted [s] (eq. 1 time)
+    double reply_timeout_s = 0.5;   ///< host's resend timeout for requests [s]
+    TargetKind target = TargetKind::native;
+    /// When set, builds the board instead of `target`: how the AVR board (sim/avr, a library that depends on this
+    /// one) plugs in for `driftlab hil --target avr`.
+    std::function<std::unique_ptr<EmulatedBoard>()> make_board;
+    /// Called now and then with the fraction of virtual time done (0..1); may be empty.
+    std::function<void(double)> progress;
+};
+
+/// Everything a run counted; the JSON summary of `driftlab hil` is made of these.
+struct HilSummary {
+    HostCounters host;                ///< frames received, lost (seq gaps), polls, rows
+    proto::DecoderCounters decoder{}; ///< host decoder: bad CRC, bad length, resync bytes
+    LinkCounters to_host;             ///< what the link did to the firmware's frames (packets = frames)
+    LinkCounters to_firmware;         ///< ... and to the host's
+    proto::VersionPayload version{};  ///< as the host received it
+    proto::StatusPayload status{};    ///< firmware counters at the end of the run
+    std::uint64_t conversions = 0;    ///< ADC conversions the sensor model produced
+    double simulated_s = 0.0;         ///< virtual time at the end [s since power-on]
+};
+
+/// Runs one host-in-the-loop session; records go to `sink` as the host completes them.
+/// Throws host::DeviceError when the emulated board stops answering, host::UsageError when it refuses the
+/// configuration.
+HilSummary run_hil(const HilOptions& options, const RecordSink& sink);
+
+}  // namespace driftlab::sim

@@ -1,0 +1,31 @@
+// Presets; see hil_preset.hpp.
+#include "sim/hil/hil_preset.hpp"
+
+namespace driftlab::sim {
+
+std::optional<Preset> preset_from_name(std::string_view name) {
+    if (name == "fig3") return Preset::fig3;
+    if (name == "fig2") return Preset::fig2;
+    return std::nullopt;
+}
+
+void apply_preset(Preset preset, HilOptions& options) {
+    switch (preset) {
+    case Preset::fig3:
+        options.duration_s = 4000.0;
+        options.warm_up_s = 0.0;
+        options.model.firmware.output_period_ms = 1000;
+        break;
+    case Preset::fig2:
+        options.duration_s = 100.0;
+        options.warm_up_s = 3600.0;
+        options.model.firmware.output_period_ms = 100;
+        options.model.firmware.conversions_per_output = 25;  // 1 ms = 250 ticks per conversion
+        options.model.firmware.window = kFig2Window;
+        options.model.firmware.fit_order = 0;
+        options.model.firmware.raw = 1;
+        break;
+    }
+}
+
+}  // namespace driftlab::sim

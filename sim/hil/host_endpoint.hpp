@@ -1,0 +1,92 @@
+// HostEndpoint: what a real host program does on its end of the serial line, in virtual time. It decodes the
+// firmware's bytes (common/ decoder), unwraps seq and tick, and talks to the firmware like `driftlab record`:
+//   HELLO -> VERSION, CONFIG_SET -> ACK (NAK ends the run), CONFIG_GET -> CONFIG (must equal what was set),
+//   then POLL every output period (poll mode, the paper's) or just listen (stream mode) until the duration,
+//   then, in stream mode, CONFIG_SET back to poll mode so nothing is in flight, and STATUS_GET -> STATUS.
+// Every request is retried after a timeout; losses are counted from seq gaps, never assumed.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "driftlab/proto/decoder.hpp"
+#include "driftlab/proto/messages.hpp"
+#include "sim/hil/hil_record.hpp"
+
+namespace driftlab::sim {
+
+/// What the host asks for.
+struct HostPlan {
+    proto::ConfigPayload config{};  ///< sent with CONFIG_SET
+    double duration_s = 0.0;        ///< polls at k · period for k = 1 .. duration/period; listens until then
+    double reply_timeout_s = 0.5;   ///< a request unanswered this long is sent again [s]
+    int max_tries = 8;              ///< tries per request before the run fails
+};
+
+/// Counts of the host's side.
+struct HostCounters {
+    std::uint64_t frames_received = 0;   ///< valid frames decoded
+    std::uint64_t frames_lost = 0;       ///< sum of seq gaps between consecutive received frames
+    std::uint64_t polls_sent = 0;
+    std::uint64_t samples_received = 0;  ///< SAMPLE frames received while running
+    std::uint64_t rows = 0;              ///< records handed to the sink
+    std::uint64_t rows_missing_raw = 0;  ///< raw mode: SAMPLEs dropped because their RAW frame was lost
+    std::uint64_t retries = 0;           ///< requests sent again after a timeout
+    std::uint64_t last_seq = 0;          ///< unwrapped seq of the last frame received
+};
+
+class HostEndpoint {
+public:
+    enum class Phase { hello, config_set, config_get, running, stop_stream, status, done };
+
+    HostEndpoint(const HostPlan& plan, RecordSink sink);
+
+    /// Time of the next thing the host does on its own (send, resend, poll) [s], or nothing.
+    std::optional<double> next_action_s() const;
+    /// Does what is due at `t_s`; appends frames to send (one frame per element) to `out`.
+    void act(double t_s, std::vector<std::vector<std::uint8_t>>& out);
+    /// Bytes from the link at `t_s`.
+    void receive(double t_s, std::span<const std::uint8_t> bytes);
+
+    Phase phase() const { return phase_; }
+    bool done() const { return phase_ == Phase::done; }
+    const HostCounters& counters() const { return counters_; }
+    const proto::DecoderCounters& decoder_counters() const { return decoder_.counters(); }
+    /// VERSION and the final STATUS as received (valid once past their phases).
+    const proto::VersionPayload& version() const { return version_; }
+    const proto::StatusPayload& status() const { return status_; }
+
+private:
+    void handle_frame(double t_s);
+    void handle_sample(const proto::SamplePayload& s, std::uint64_t seq);
+    void handle_raw(const proto::RawPayload& r, std::uint64_t seq);
+    void request(double t_s, std::vector<std::vector<std::uint8_t>>& out);
+    void enter(Phase next, double t_s);
+    std::uint64_t unwrap_tick(std::uint32_t tick);
+    double period_s() const { return plan_.config.output_period_ms / 1000.0; }
+
+    HostPlan plan_;
+    RecordSink sink_;
+    proto::Decoder decoder_;
+    Phase phase_ = Phase::hello;
+    std::optional<double> send_at_s_ = 0.0;  // next (re)send of the current request
+    int tries_ = 0;
+    std::uint16_t tx_seq_ = 0;
+    std::uint16_t request_seq_ = 0;
+    std::uint64_t next_poll_k_ = 1;
+    std::uint64_t poll_count_ = 0;
+    double run_start_s_ = 0.0;  // configuration verified: polls at run_start + k · period
+    double run_end_s_ = 0.0;
+    bool have_seq_ = false;
+    bool have_tick_ = false;
+    std::uint64_t last_tick_ = 0;
+    std::optional<HilRecord> pending_;  // raw mode: SAMPLE waiting for its RAW
+    proto::VersionPayload version_{};
+    proto::StatusPayload status_{};
+    HostCounters counters_;
+};
+
+}  // namespace driftlab::sim
