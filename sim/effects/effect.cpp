@@ -15,6 +15,21 @@ const char* stage_name(Stage stage) {
 
 double Effect::actual_instant_s(double nominal_s, const EffectContext&) { return nominal_s; }
 
+void apply_in_chain(Effect& effect, ChannelValues& values, EffectContext& ctx) {
+    if (!effect.is_input()) {
+        effect.apply(values, ctx);
+        return;
+    }
+    EffectContext all = ctx;
+    all.channel.reset();
+    ChannelValues motion{};
+    effect.apply(motion, all);
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        ctx.true_physical[c] += motion[c];
+        if (!ctx.channel || channel_index(*ctx.channel) == c) values[c] += motion[c];
+    }
+}
+
 std::uint64_t effect_stream_id(std::string_view name, std::size_t channel) {
     // FNV-1a of the name: stable across builds and independent of which other effects exist.
     std::uint64_t h = 0xcbf29ce484222325ull;

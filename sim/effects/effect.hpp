@@ -15,11 +15,11 @@
 // channel, so a channel sees the same random sequence in both modes given the same instants; ctx.dt_s is the time
 // since the previous instant of THAT channel (0 at the first instant after reset).
 //
-// Order: within a stage apply effects in list_effects() order (e.g. adc_inl shifts transitions before adc_dnl
-// quantises; saturation clips after the biases). Input effects (is_input(): vibration) are real motion and pure
-// functions of t: evaluate them with ctx.channel empty on a copy of the true input to get all four channels'
-// motion, and pass that as ctx.true_physical so cross-couplings (g_sensitivity reads the accel axes while the gyro
-// is converted) see it.
+// Order: within a stage apply effects in list_effects() order, `application_rank(name)` (e.g. adc_inl shifts
+// transitions before adc_dnl quantises; saturation clips after the biases). Input effects (is_input():
+// vibration) are real motion and pure functions of t: they must reach ctx.true_physical for all four channels, so
+// cross-couplings (g_sensitivity reads the accel axes while the gyro is converted) see them.
+// `apply_in_chain(effect, values, ctx)` does both cases; calling it for every effect is the whole contract.
 //
 // Timing effects (stage timing) do nothing in apply(); the chain asks `actual_instant_s(nominal_s, ctx)` for each
 // conversion (ctx.channel set) or sample, then evaluates the other effects at the returned instant.
@@ -132,6 +132,13 @@ struct EffectInfo {
 
 /// Every effect the registry knows, in the recommended application order.
 const std::vector<EffectInfo>& list_effects();
+
+/// Position of `name` in list_effects(): sort a stage's effects by it. Unknown names sort last.
+std::size_t application_rank(std::string_view name);
+
+/// Applies one effect as the chain must: an input effect (is_input()) is evaluated for all four channels at
+/// ctx.t_s, added to ctx.true_physical and to the channel(s) of this instant; any other effect is apply()'d.
+void apply_in_chain(Effect& effect, ChannelValues& values, EffectContext& ctx);
 
 /// True when `name` is an effect name.
 bool is_effect_name(std::string_view name);

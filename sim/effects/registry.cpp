@@ -85,6 +85,11 @@ const std::vector<EffectInfo>& list_effects() {
 
 bool is_effect_name(std::string_view name) { return lookup(name) != nullptr; }
 
+std::size_t application_rank(std::string_view name) {
+    const Entry* e = lookup(name);
+    return e == nullptr ? entries().size() : static_cast<std::size_t>(e - entries().data());
+}
+
 std::unique_ptr<Effect> make_effect(std::string_view name, const toml::table& table, std::string_view key_path) {
     const Entry* e = lookup(name);
     if (e == nullptr) {
