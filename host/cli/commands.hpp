@@ -4,6 +4,10 @@
 
 #include <CLI/CLI.hpp>
 
+namespace driftlab::host::fit {
+struct FileAnalysisRequest;
+}
+
 namespace driftlab::host::cli {
 
 /// Registers one subcommand (its options struct, flags and callback) on the top-level app.
@@ -12,5 +16,11 @@ using RegisterFn = void (*)(CLI::App& app);
 // One declaration per cmd_*.cpp; keep in the order `driftlab --help` lists them.
 void register_ports(CLI::App& app);
 void register_flash(CLI::App& app);
+void register_fit(CLI::App& app);
+void register_whiteness(CLI::App& app);
+void register_report(CLI::App& app);
+
+/// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
+void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
 
 }  // namespace driftlab::host::cli

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 
@@ -80,6 +81,12 @@ bool is_canonical_log(const std::string& path) {
     std::string first;
     std::getline(in, first);
     return first.rfind("# driftlab-log:", 0) == 0;
+}
+
+std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names,
+                                const std::string& time_column, double sample_period_s) {
+    if (is_canonical_log(path)) return series_from_log(read_log(path), names);
+    return series_from_table(read_numeric_table(path), names, time_column, sample_period_s);
 }
 
 }  // namespace driftlab::host::fit

@@ -32,6 +32,11 @@ std::vector<Series> series_from_log(const LogData& log, const std::vector<std::s
 std::vector<Series> series_from_table(const NumericTable& table, const std::vector<std::string>& names = {},
                                       const std::string& time_column = "", double sample_period_s = 1.0);
 
+/// Reads `path` as a canonical log when it starts with the magic line, else as a plain table, and returns
+/// its series (see the two functions above; `time_column` and `sample_period_s` apply to tables only).
+std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names = {},
+                                const std::string& time_column = "", double sample_period_s = 1.0);
+
 /// True when the file starts with `# driftlab-log:` (a canonical log rather than a plain table).
 bool is_canonical_log(const std::string& path);
 

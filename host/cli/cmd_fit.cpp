@@ -1,0 +1,128 @@
+// `driftlab fit LOG`: eq. 1 per channel by Levenberg–Marquardt, Table 1 layout, whiteness of the residual
+// (host/fit, host/stats; docs/analysis.md §2–3).
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "host/cli/commands.hpp"
+#include "host/fit/file_analysis.hpp"
+#include "host/report/analysis_json.hpp"
+#include "host/report/analysis_plots.hpp"
+#include "host/report/json_out.hpp"
+#include "host/util/error.hpp"
+#include "host/util/units.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct FitCommandOptions {
+    fit::FileAnalysisRequest request;
+    bool json = false;
+    std::string plot_dir;
+};
+
+std::string num(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+std::string interval(const std::array<double, 2>& ci, int digits) {
+    return "[" + num(ci[0], digits) + ", " + num(ci[1], digits) + "]";
+}
+
+void print_table(const fit::FileAnalysis& file) {
+    std::cout << file.path << "\n";
+    std::printf("%-10s %-26s %-26s %-18s %-10s %8s  %s\n", "channel", "C1 [counts] (physical)", "C2 [counts] (physical)",
+                "T [s]", "status", "rms", "residual");
+    for (const auto& s : file.series) {
+        if (!s.analysis) {
+            std::printf("%-10s error: %s\n", s.name.c_str(), s.error.c_str());
+            continue;
+        }
+        const fit::DriftAnalysis& a = *s.analysis;
+        std::string c1 = num(a.plain.c1.value, 3), c2 = num(a.plain.c2.value, 3);
+        if (a.data.channel) {
+            const Channel c = *a.data.channel;
+            const std::string unit = physical_unit(c).name;
+            c1 += " (" + num(counts_to_physical(c, a.plain.c1.value), 4) + " " + unit + ")";
+            c2 += " (" + num(level_to_physical(c, a.plain.c2.value), 4) + " " + unit + ")";
+        }
+        std::printf("%-10s %-26s %-26s %-18s %-10s %8.4g  %s\n", s.name.c_str(), c1.c_str(), c2.c_str(),
+                    num(a.plain.t_s.value, 1).c_str(), fit::fit_status_name(a.fit.status), a.fit.rms,
+                    a.whiteness.white ? "white" : "NOT white");
+    }
+    for (const auto& s : file.series) {
+        if (!s.analysis) continue;
+        const fit::DriftAnalysis& a = *s.analysis;
+        std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << num(a.data.t_s.front(), 3) << " .. "
+                  << num(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
+                  << ")\n";
+        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w, int digits) {
+            std::cout << "  " << name << " = " << num(p.value, digits) << " +- " << num(p.stderr_, digits)
+                      << "  95 % " << interval(p.ci95, digits);
+            if (!a.whiteness.white) std::cout << "  widened " << interval(w.ci95, digits);
+            std::cout << "\n";
+        };
+        row("C1", a.plain.c1, a.widened.c1, 4);
+        row("C2", a.plain.c2, a.widened.c2, 4);
+        row("T ", a.plain.t_s, a.widened.t_s, 2);
+        const auto& w = a.whiteness;
+        std::cout << "  whiteness: " << num(100.0 * w.fraction_inside, 1) << " % of lags inside +-2 sigma ("
+                  << w.sequences_used << " sequences of " << num(w.sequence_length_s, 1) << " s), Ljung-Box Q("
+                  << w.ljung_box.lags << ") = " << num(w.ljung_box.statistic, 2) << ", p = " << w.ljung_box.p_value
+                  << " -> " << (w.white ? "white" : "not white") << "\n";
+        for (const auto& warning : a.warnings) std::cout << "  warning: " << warning << "\n";
+    }
+}
+
+void write_plots(const fit::FileAnalysis& file, const std::string& dir) {
+    for (const auto& s : file.series) {
+        if (!s.analysis) continue;
+        if (auto fig2 = report::raw_vs_smoothed_plot(*s.analysis)) report::render_plot(*fig2, dir, "fig2_" + s.name);
+        report::render_plot(report::drift_fit_plot(*s.analysis), dir, "fig3_" + s.name);
+        report::render_plot(report::autocorrelation_plot(*s.analysis), dir, "fig4_" + s.name);
+    }
+}
+
+void run(const FitCommandOptions& opts) {
+    const fit::FileAnalysis file = fit::analyse_file(opts.request);
+    if (opts.json) {
+        nlohmann::json out = {{"file", file.path}, {"channels", nlohmann::json::object()}};
+        for (const auto& s : file.series)
+            out["channels"][s.name] = s.analysis ? report::fit_json(*s.analysis) : nlohmann::json{{"error", s.error}};
+        report::write_json(std::cout, out);
+    } else {
+        print_table(file);
+    }
+    if (!opts.plot_dir.empty()) write_plots(file, opts.plot_dir);
+    if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
+}
+
+}  // namespace
+
+void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
+    cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required();
+    cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
+    cmd->add_option("--t-min", r.options.t_min_s, "Use samples with t_s >= this [s]");
+    cmd->add_option("--t-max", r.options.t_max_s, "Use samples with t_s <= this [s]");
+    cmd->add_option("--time-column", r.time_column, "Plain tables: the time column [s] (default t_s, t or time)");
+    cmd->add_option("--sample-period", r.sample_period_s, "Plain tables without time: sample period [s]")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--sequences", r.options.whiteness.sequences, "Whiteness: number M of sequences (paper: 10)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--sequence-length", r.options.whiteness.sequence_length_s,
+                    "Whiteness: length L of each sequence [s] (paper: 50)")
+        ->check(CLI::PositiveNumber);
+}
+
+void register_fit(CLI::App& app) {
+    auto opts = std::make_shared<FitCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("fit", "Fit the turn-on drift C1(1-exp(-t/T))+C2 per channel (paper eq. 1)");
+    add_analysis_input_options(cmd, opts->request);
+    cmd->add_flag("--json", opts->json, "Print JSON (keys: channels.<name>.{C1,C2,T,status,n,rms,whiteness,...})");
+    cmd->add_option("--plot", opts->plot_dir, "Write Fig. 2-4 as PNG and SVG into this folder");
+    cmd->callback([opts] { run(*opts); });
+}
+
+}  // namespace driftlab::host::cli

@@ -1,0 +1,56 @@
+// `driftlab report LOG -o report.html`: the drift fit, whiteness and Allan analysis of a log in one
+// self-contained HTML file (host/report/html_report; docs/analysis.md §6).
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "host/cli/commands.hpp"
+#include "host/fit/file_analysis.hpp"
+#include "host/report/analysis_json.hpp"
+#include "host/report/html_report.hpp"
+#include "host/report/json_out.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct ReportCommandOptions {
+    fit::FileAnalysisRequest request;
+    std::string output = "report.html";
+    bool json = false;
+    bool no_plots = false;
+};
+
+void run(const ReportCommandOptions& opts) {
+    const fit::FileAnalysis file = fit::analyse_file(opts.request);
+    report::ReportOptions ropts;
+    ropts.plots = !opts.no_plots;
+    const std::string html = report::render_html_report(file, ropts);
+    std::ofstream out(opts.output, std::ios::binary);
+    out << html;
+    out.close();
+    if (!out) throw UsageError(opts.output + ": cannot write the report");
+    if (opts.json) {
+        nlohmann::json j = {{"file", file.path}, {"report", opts.output}, {"channels", nlohmann::json::object()}};
+        for (const auto& s : file.series)
+            j["channels"][s.name] = s.analysis ? report::fit_json(*s.analysis) : nlohmann::json{{"error", s.error}};
+        report::write_json(std::cout, j);
+    } else {
+        std::cout << "wrote " << opts.output << " (" << html.size() / 1024 << " KiB)\n";
+    }
+    if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
+}
+
+}  // namespace
+
+void register_report(CLI::App& app) {
+    auto opts = std::make_shared<ReportCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("report", "Write one self-contained HTML report (fit, whiteness, Allan, figures)");
+    add_analysis_input_options(cmd, opts->request);
+    cmd->add_option("-o,--output", opts->output, "HTML file to write (default report.html)");
+    cmd->add_flag("--json", opts->json, "Also print the fit results as JSON (same keys as `fit --json`)");
+    cmd->add_flag("--no-plots", opts->no_plots, "Leave the figures out (no gnuplot needed)");
+    cmd->callback([opts] { run(*opts); });
+}
+
+}  // namespace driftlab::host::cli

@@ -1,0 +1,24 @@
+// The Allan part of the HTML report: overlapping ADEV of each channel before and after removing the fitted
+// drift (eq. 1), with confidence intervals and the IEEE 952 noise terms (host/stats/allan_analysis.hpp,
+// noise_terms.hpp; docs/allan.md). Removing the deterministic turn-on drift first keeps it from masquerading as
+// rate random walk or ramp at long tau.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "host/fit/drift_analysis.hpp"
+#include "host/report/gnuplot.hpp"
+
+namespace driftlab::host::report {
+
+struct AllanSection {
+    std::string html;           ///< tables (no plots)
+    std::vector<Plot> plots;    ///< one ADEV plot per channel
+    std::vector<std::string> plot_names;
+};
+
+/// Builds the section for the analysed channels. Uses the median sample spacing as tau0.
+AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channels);
+
+}  // namespace driftlab::host::report

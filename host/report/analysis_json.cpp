@@ -1,0 +1,78 @@
+// Fit and whiteness JSON; see analysis_json.hpp and docs/analysis.md §5.
+#include "host/report/analysis_json.hpp"
+
+#include "host/report/json_out.hpp"
+#include "host/util/units.hpp"
+
+namespace driftlab::host::report {
+namespace {
+
+nlohmann::json estimate_json(const fit::Estimate& plain, const fit::Estimate& widened) {
+    return {{"value", json_number(plain.value)},
+            {"stderr", json_number(plain.stderr_)},
+            {"ci95", {json_number(plain.ci95[0]), json_number(plain.ci95[1])}},
+            {"stderr_widened", json_number(widened.stderr_)},
+            {"ci95_widened", {json_number(widened.ci95[0]), json_number(widened.ci95[1])}}};
+}
+
+}  // namespace
+
+nlohmann::json whiteness_json(const stats::WhitenessResult& w, double sample_period_s, bool arrays) {
+    nlohmann::json out = {
+        {"fraction_inside", json_number(w.fraction_inside)},
+        {"ljung_box_p", json_number(w.ljung_box.p_value)},
+        {"white", w.white},
+        {"ljung_box_q", json_number(w.ljung_box.statistic)},
+        {"ljung_box_lags", w.ljung_box.lags},
+        {"bound", json_number(w.bound)},
+        {"sequences", w.sequences_used},
+        {"sequence_samples", w.sequence_samples},
+        {"sequence_length_s", json_number(w.sequence_length_s)},
+        {"autocorrelation_time_samples", json_number(w.autocorrelation_time.tau)},
+        {"adaptation", w.adaptation},
+    };
+    if (arrays) {
+        std::vector<double> lag_s(w.ensemble_rho.size());
+        for (std::size_t d = 0; d < lag_s.size(); ++d) lag_s[d] = static_cast<double>(d) * sample_period_s;
+        out["ensemble_lag_s"] = json_array(lag_s);
+        out["ensemble_autocorrelation"] = json_array(w.ensemble_rho);
+        out["autocorrelation"] = json_array(w.rho);
+    }
+    return out;
+}
+
+nlohmann::json fit_json(const fit::DriftAnalysis& a) {
+    const fit::FitResult& f = a.fit;
+    nlohmann::json out = {
+        {"C1", estimate_json(a.plain.c1, a.widened.c1)},
+        {"C2", estimate_json(a.plain.c2, a.widened.c2)},
+        {"T", estimate_json(a.plain.t_s, a.widened.t_s)},
+        {"unit", a.data.unit},
+        {"status", fit::fit_status_name(f.status)},
+        {"solver_stop", f.solver_stop},
+        {"iterations", f.iterations},
+        {"n", f.n},
+        {"rms", json_number(f.rms)},
+        {"t_first_s", json_number(a.data.t_s.front())},
+        {"t_last_s", json_number(a.data.t_s.back())},
+        {"sample_period_s", json_number(a.sample_period_s)},
+        {"time_gaps", a.time_gaps},
+        {"interval_inflation", json_number(a.widened.inflation)},
+        {"whiteness", whiteness_json(a.whiteness, a.sample_period_s, false)},
+        {"warnings", a.warnings},
+    };
+    if (a.data.channel) {
+        const Channel c = *a.data.channel;
+        out["physical"] = {
+            {"unit", physical_unit(c).name},
+            {"C1", json_number(counts_to_physical(c, a.plain.c1.value))},
+            {"C1_stderr", json_number(counts_to_physical(c, a.plain.c1.stderr_))},
+            {"C2_offset_from_mid_scale", json_number(level_to_physical(c, a.plain.c2.value))},
+            {"C2_stderr", json_number(counts_to_physical(c, a.plain.c2.stderr_))},
+            {"rms", json_number(counts_to_physical(c, f.rms))},
+        };
+    }
+    return out;
+}
+
+}  // namespace driftlab::host::report
