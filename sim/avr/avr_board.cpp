@@ -28,7 +28,8 @@ constexpr std::uint16_t kMcusrAddress = 0x54;    // MCUSR in data space
 constexpr std::uint8_t kMcusrPorf = 0x01;
 constexpr std::uint16_t kAdcsraAddress = 0x7A;  // ADCSRA in data space
 constexpr std::uint8_t kAdcsraAdate = 0x20;
-constexpr std::uint64_t kCyclesPerTick = AvrBoard::kCpuHz / fw::kTickHz;
+constexpr std::uint16_t kTccr1bAddress = 0x81;  // TCCR1B in data space; CS12..CS10 = clock select
+constexpr std::uint8_t kTccr1bClockSelect = 0x07;
 constexpr std::uint8_t kStackPaint = 0xA5;       // untouched-RAM pattern for the stack high-water mark
 
 AvrBoard* board_of(avr_t* avr) { return static_cast<AvrBoard*>(avr->custom.data); }
@@ -168,9 +169,15 @@ void AvrBoard::run_until_cycle(std::uint64_t cycle) {
 }
 
 void AvrBoard::run_until_armed() {
+    // The first hal_init() starts Timer1 from 0 with the firmware's clock at tick 0 (hal_avr.cpp): the epoch is
+    // the cycle at which TCCR1B first selects a clock. Start-up has no conversion to feed, so stepping one
+    // instruction at a time through it costs little.
     const std::uint64_t limit = avr_->cycle + kCpuHz;
     while (!epoch_cycle_ && avr_->cycle < limit) {
-        run_until_cycle(avr_->cycle + kCpuHz / 1000);
+        run_until_cycle(avr_->cycle + 1);
+        if ((avr_->data[kTccr1bAddress] & kTccr1bClockSelect) != 0) {
+            epoch_cycle_ = avr_->cycle;
+        }
     }
     if (!epoch_cycle_) {
         throw AvrError(elf_path_ + ": the firmware armed no ADC conversion within one second of power-on");
@@ -202,6 +209,13 @@ std::vector<UartTxByte> AvrBoard::transmit_timed() {
     tx_.clear();
     tx_read_ = 0;
     return out;
+}
+
+std::uint64_t AvrBoard::next_trigger_tick() const {
+    const std::uint32_t base = isr_shared_address_;
+    const auto tick32 = static_cast<std::uint32_t>(read_ram_u32(base + IsrSharedLayout::kTriggerTickOffset) +
+                                                   read_ram_u32(base + IsrSharedLayout::kStepTicksOffset));
+    return last_trigger_tick_ + static_cast<std::uint32_t>(tick32 - static_cast<std::uint32_t>(last_trigger_tick_));
 }
 
 std::uint32_t AvrBoard::stack_budget_bytes() const { return avr_->ramend + 1U - data_end_address_; }
@@ -268,10 +282,7 @@ void AvrBoard::on_adc_trigger(avr_irq_t*, std::uint32_t value, void* param) {
     std::uint64_t tick = self->last_trigger_tick_;
     tick += static_cast<std::uint32_t>(tick32 - static_cast<std::uint32_t>(tick));
     self->last_trigger_tick_ = tick;
-    if (self->triggered_conversions_++ == 0) {
-        // Timer1 has run without a stop since the first hal_init(): 64 cycles per tick back to tick 0.
-        self->epoch_cycle_ = self->avr_->cycle - tick * kCyclesPerTick;
-    }
+    ++self->triggered_conversions_;
     std::uint32_t mv = 0;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (fw::kAdcPin[c] == mux.src) {

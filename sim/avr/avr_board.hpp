@@ -82,13 +82,17 @@ public:
     /// AvrError when the firmware stops (sleep with interrupts off) or crashes.
     void run_until_cycle(std::uint64_t cycle);
     void run_until_s(double t_s) { run_until_cycle(cycles_for_s(t_s)); }
-    /// Runs the start-up code until the firmware's first timer-triggered conversion, which fixes
-    /// firmware_epoch_cycle(). Throws AvrError when none comes within one emulated second.
+    /// Runs the start-up code until the firmware starts Timer1 (its first hal_init()), which fixes
+    /// firmware_epoch_cycle(). Throws AvrError when that does not happen within one emulated second.
     void run_until_armed();
-    /// Cycle at which the firmware's tick 0 began (Timer1 started by the first hal_init()), known after the first
-    /// triggered conversion. The native board's time 0 is its firmware's tick 0, so a host that wants the same
+    /// Cycle at which the firmware's tick 0 began (Timer1 started by the first hal_init()), known after
+    /// run_until_armed(). The native board's time 0 is its firmware's tick 0, so a host that wants the same
     /// instants on both boards counts AVR time from here (0.808 ms after power-on for the current firmware).
     std::optional<std::uint64_t> firmware_epoch_cycle() const { return epoch_cycle_; }
+
+    /// Trigger tick of the next timer-triggered conversion [ticks, unwrapped], from the firmware's own state; the
+    /// conversion in progress while its compare vector has not run yet.
+    std::uint64_t next_trigger_tick() const;
 
     // ---- UART0 ----
     /// Queues host bytes for UART0's receiver: one every kRxByteCycles from now (or after the bytes already
