@@ -8,7 +8,7 @@ namespace driftlab::sim {
 double AmbientCycle::lagged_temperature_k(double t_s) const {
     const double half_a = 0.5 * p_.amplitude_k_pp;
     const double w = 2.0 * std::numbers::pi / p_.period_s;
-    if (p_.waveform == "sine") {
+    if (sine_) {
         const double wt = w * p_.lag_s;
         return half_a / std::sqrt(1.0 + wt * wt) * std::sin(w * t_s + p_.phase_rad - std::atan(wt));
     }

@@ -46,7 +46,7 @@ public:
     static constexpr std::string_view kEquation = "y = u + k_T (dT_amb * 1/(1 + s tau_lag))(t)";
     static constexpr std::string_view kSummary = "ambient (HVAC) temperature cycling through a thermal lag (E2)";
 
-    explicit AmbientCycle(const Params& params) : EffectWith(params) {}
+    explicit AmbientCycle(const Params& params) : EffectWith(params), sine_(params.waveform == "sine") {}
     std::string_view name() const override { return kName; }
     Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
@@ -54,6 +54,9 @@ public:
 
     /// Lagged temperature deviation theta(t) [K].
     double lagged_temperature_k(double t_s) const;
+
+private:
+    bool sine_;
 };
 
 }  // namespace driftlab::sim

@@ -23,9 +23,8 @@ void SaturationParams::validate(const TomlReader& r) const {
 }
 
 void Saturation::apply(ChannelValues& values, const EffectContext& ctx) {
-    const bool analog = p_.stage == "analog";
-    const ChannelValues lo = analog ? p_.min_v : physical_per_channel(p_.min_dps, p_.min_g);
-    const ChannelValues hi = analog ? p_.max_v : physical_per_channel(p_.max_dps, p_.max_g);
+    const ChannelValues lo = analog_ ? p_.min_v : physical_per_channel(p_.min_dps, p_.min_g);
+    const ChannelValues hi = analog_ ? p_.max_v : physical_per_channel(p_.max_dps, p_.max_g);
     const auto [first, last] = channels_of(ctx);
     for (std::size_t c = first; c < last; ++c) values[c] = std::clamp(values[c], lo[c], hi[c]);
 }

@@ -45,11 +45,14 @@ public:
     static constexpr std::string_view kEquation = "y = clip(y, lo, hi)";
     static constexpr std::string_view kSummary = "sensor range or amplifier rail clipping (E14)";
 
-    explicit Saturation(const Params& params) : EffectWith(params) {}
+    explicit Saturation(const Params& params) : EffectWith(params), analog_(params.stage == "analog") {}
     std::string_view name() const override { return kName; }
-    Stage stage() const override { return p_.stage == "analog" ? Stage::analog : Stage::physical; }
+    Stage stage() const override { return analog_ ? Stage::analog : Stage::physical; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
+
+private:
+    bool analog_;
 };
 
 }  // namespace driftlab::sim

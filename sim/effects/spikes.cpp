@@ -15,6 +15,15 @@ void SpikesParams::validate(const TomlReader& r) const {
     if (student_dof < 1 || student_dof > 100) r.fail("student_dof", "expected 1..100");
 }
 
+Spikes::Spikes(const Params& params)
+    : EffectWith(params),
+      analog_(params.stage == "analog"),
+      distribution_(params.distribution == "student_t"  ? Distribution::student_t
+                    : params.distribution == "bit_flip" ? Distribution::bit_flip
+                                                        : Distribution::gaussian) {
+    reset(0);
+}
+
 void Spikes::reset(std::uint64_t seed) {
     rng_.clear();
     for (std::size_t c = 0; c < kChannelCount; ++c) rng_.emplace_back(seed, effect_stream_id(kName, c));
@@ -22,8 +31,8 @@ void Spikes::reset(std::uint64_t seed) {
 
 double Spikes::amplitude(std::size_t channel) {
     Rng& rng = rng_[channel];
-    const double scale = p_.stage == "analog" ? p_.scale_v[channel] : p_.scale_counts[channel];
-    if (p_.distribution == "student_t") {
+    const double scale = analog_ ? p_.scale_v[channel] : p_.scale_counts[channel];
+    if (distribution_ == Distribution::student_t) {
         double chi2 = 0.0;  // sum of nu squared normals; only drawn when a spike happens
         for (std::uint64_t i = 0; i < p_.student_dof; ++i) {
             const double z = rng.normal();
@@ -40,7 +49,7 @@ void Spikes::apply(ChannelValues& values, const EffectContext& ctx) {
         if (p_.rate_hz[c] <= 0.0) continue;
         const double p = -std::expm1(-p_.rate_hz[c] * ctx.dt_s);
         if (rng_[c].uniform() >= p) continue;
-        if (p_.distribution == "bit_flip") {
+        if (distribution_ == Distribution::bit_flip) {
             const auto code = static_cast<std::int64_t>(std::clamp(std::round(values[c]), 0.0, 1023.0));
             const auto bit = static_cast<int>(rng_[c].uniform() * 10.0);
             values[c] = static_cast<double>(code ^ (std::int64_t{1} << bit));

@@ -47,14 +47,17 @@ public:
     static constexpr std::string_view kEquation = "P(spike) = 1 - exp(-lambda dt); y += s eta | s t_nu | bit flip";
     static constexpr std::string_view kSummary = "random impulsive outliers, Poisson in time (E15)";
 
-    explicit Spikes(const Params& params) : EffectWith(params) { reset(0); }
+    explicit Spikes(const Params& params);
     std::string_view name() const override { return kName; }
-    Stage stage() const override { return p_.stage == "analog" ? Stage::analog : Stage::converter; }
+    Stage stage() const override { return analog_ ? Stage::analog : Stage::converter; }
     void reset(std::uint64_t seed) override;
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 
 private:
+    enum class Distribution : std::uint8_t { gaussian, student_t, bit_flip };
     double amplitude(std::size_t channel);
+    bool analog_;
+    Distribution distribution_;
     std::vector<Rng> rng_;
 };
 
