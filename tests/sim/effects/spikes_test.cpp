@@ -46,12 +46,14 @@ TEST(Spikes, StudentTAmplitudesHaveHeavierTailsThanGaussian) {
     std::vector<double> amps;
     for (double v : y[0])
         if (v != 0.0) amps.push_back(v);
-    // t_5: variance nu/(nu-2) = 5/3, excess kurtosis 6/(nu-4) = 6 (Gaussian: 0).
-    EXPECT_NEAR(test::variance(amps), 5.0 / 3.0, 0.1);
-    double m4 = 0.0;
-    for (double a : amps) m4 += a * a * a * a;
-    m4 /= static_cast<double>(amps.size());
-    EXPECT_GT(m4 / std::pow(test::variance(amps), 2) - 3.0, 2.0);
+    // Two-sided tail probabilities of t_5: P(|T| > 2.015) = 0.10, P(|T| > 4.032) = 0.01 (a Gaussian gives
+    // 0.044 and 5.5e-5). Binomial counts, 5 sigmas.
+    const double n = static_cast<double>(amps.size());
+    for (const auto& [q, p] : {std::pair{2.015, 0.10}, std::pair{4.032, 0.01}}) {
+        double beyond = 0.0;
+        for (double a : amps) beyond += std::abs(a) > q;
+        EXPECT_NEAR(beyond / n, p, 5.0 * std::sqrt(p * (1.0 - p) / n)) << "q " << q;
+    }
 }
 
 TEST(Spikes, BitFlipsChangeTheCodeByOnePowerOfTwo) {
