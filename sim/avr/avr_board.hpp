@@ -116,6 +116,7 @@ public:
     std::uint32_t stack_budget_bytes() const;
     /// The profiler when options.profile was set, else nullptr.
     const CycleProfiler* profiler() const { return profiler_.get(); }
+    CycleProfiler* profiler() { return profiler_.get(); }
 
 private:
     static void on_timer1_compb_pending(avr_irq_t* irq, std::uint32_t value, void* param);
