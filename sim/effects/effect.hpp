@@ -1,12 +1,11 @@
 // The simulator's effect interface, its context and the registry; spec in docs/effects.md.
 //
-// How to use (chain side). An effect is one named, parameterised error source (E1..E16 of the gap method) that
-// acts at one stage of the sensor chain:
+// How to use (chain side). An effect is one named, parameterised error source (E1..E15 of the gap method, plus
+// temp_scale_factor; E16, the link, lives in sim/link) that acts at one stage of the sensor chain:
 //   true input [deg/s, g] -> physical effects -> transducer -> analog effects [V] -> ADC input in counts
 //   -> converter effects [counts] -> round + clip 0..1023 -> code;   timing effects move the conversion instants.
-// Build effects with `make_effect(name, toml_table, key_path)`, call
-// `reset(seed)` once per run, then for every instant call `apply(values, ctx)` with all four channels in the
-// stage's unit. Converter effects receive the CONTINUOUS ADC input v/LSB (not yet rounded); a converter effect that
+// Build effects with `make_effect(name, toml_table, key_path)`, call `reset(seed)` once per run, then for every
+// instant call `apply_in_chain(effect, values, ctx)` (or `apply`) with all four channels in the stage's unit. Converter effects receive the CONTINUOUS ADC input v/LSB (not yet rounded); a converter effect that
 // quantises (adc_dnl) returns integral codes, which the chain's final round-and-clip leaves unchanged.
 //
 // Per-sample vs per-conversion. An instant is either a sample of all four channels (ctx.channel empty: every
