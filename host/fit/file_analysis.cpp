@@ -32,7 +32,10 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
         try {
             o.analysis = analyse_drift(s, request.options);
         } catch (const DataError& e) {
+            // The caller reports the file once; keep the series' own message.
             o.error = e.what();
+            const std::string prefix = request.path + ": ";
+            if (o.error.rfind(prefix, 0) == 0) o.error.erase(0, prefix.size());
         }
         out.series.push_back(std::move(o));
     }

@@ -7,8 +7,8 @@
 namespace driftlab::host::fit {
 namespace {
 
-constexpr std::size_t kMaxBlocks = 512;
-constexpr std::size_t kGridPoints = 96;
+constexpr std::size_t kMaxBlocks = 200;
+constexpr std::size_t kGridPoints = 64;
 constexpr double kUpperSpanFactor = 100.0;
 
 struct Blocks {

@@ -2,7 +2,7 @@
 //
 // Given T, eq. 1 is linear in C1 and C2, so the best C1, C2 and residual sum of squares follow from a 2x2
 // least-squares solve (variable projection). The profile RSS(T) is scanned on a log grid of T from a
-// fraction of the sampling interval to 100x the record, on block means of the data (at most 512 blocks,
+// quarter of a block to 100x the record, on equal-count block means of the data (at most 200 blocks,
 // so the cost is O(N) + O(grid x blocks)), and refined by golden-section search on log T around the best
 // grid point. The sign of C1 comes out of the linear solve, so rising and falling drifts need nothing special.
 #pragma once

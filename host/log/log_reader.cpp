@@ -95,9 +95,12 @@ public:
                 log_.truncated_tail_dropped = true;
                 return;
             }
+            std::string inner = e.what();
+            const std::string prefix = log_.source_name + ":" + std::to_string(number) + ": ";
+            if (inner.rfind(prefix, 0) == 0) inner.erase(0, prefix.size());
             throw DataError(log_.source_name, number,
                             "truncated last line (no newline at the end of the file; the writer was probably "
-                            "interrupted): " + std::string(e.what()) + "; delete that line to use the rest");
+                            "interrupted): " + inner + "; delete that line to use the rest");
         }
         if (!terminated) {
             if (options_.drop_truncated_tail) {
