@@ -19,6 +19,7 @@ void register_flash(CLI::App& app);
 void register_fit(CLI::App& app);
 void register_whiteness(CLI::App& app);
 void register_report(CLI::App& app);
+void register_allan(CLI::App& app);
 
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);

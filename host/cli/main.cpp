@@ -14,6 +14,7 @@ constexpr driftlab::host::cli::RegisterFn kCommands[] = {
     driftlab::host::cli::register_fit,
     driftlab::host::cli::register_whiteness,
     driftlab::host::cli::register_report,
+    driftlab::host::cli::register_allan,
 };
 
 }  // namespace

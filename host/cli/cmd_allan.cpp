@@ -1,0 +1,258 @@
+// `driftlab allan FILE`: overlapping Allan (and modified Allan, overlapping Hadamard) deviations with
+// confidence intervals, noise types and IEEE 952 terms, per channel; raw and drift-removed (host/stats,
+// docs/allan.md §8).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "host/cli/commands.hpp"
+#include "host/fit/series.hpp"
+#include "host/report/gnuplot.hpp"
+#include "host/report/json_out.hpp"
+#include "host/stats/allan_pipeline.hpp"
+#include "host/stats/uniform_grid.hpp"
+#include "host/util/error.hpp"
+#include "host/util/units.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+using nlohmann::json;
+
+struct AllanCommandOptions {
+    std::string path;
+    std::vector<std::string> channels;  ///< empty or "all" = every channel / column
+    std::string kind;                   ///< plain files: rate | phase (required); logs: rate only
+    double tau0_s = 0.0;                ///< plain files: required; logs: default median spacing
+    std::string unit;                   ///< plain files: the data's rate unit (deg/s, rad/s, m/s^2, g, ...)
+    std::string grid = "octave";
+    int per_decade = 10;
+    std::string deviation = "oadev";
+    bool keep_drift = false;
+    bool json = false;
+    std::string plot_dir;
+};
+
+/// How the series' unit converts to SI for physical terms and Kalibr densities.
+struct UnitInfo {
+    std::string name;
+    stats::RateQuantity quantity = stats::RateQuantity::unknown;
+    double si_per_unit = 1.0;  ///< to rad/s or m/s^2
+};
+
+UnitInfo unit_of_channel(Channel c) {
+    if (c == Channel::gyro) {
+        return {"counts", stats::RateQuantity::angular_rate, kGyroDpsPerCount * std::numbers::pi / 180.0};
+    }
+    return {"counts", stats::RateQuantity::acceleration, kAccelCmps2PerCount / 100.0};
+}
+
+UnitInfo unit_of_name(const std::string& name) {
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    if (name == "deg/s" || name == "dps") return {"deg/s", stats::RateQuantity::angular_rate, kDeg};
+    if (name == "deg/h") return {"deg/h", stats::RateQuantity::angular_rate, kDeg / 3600.0};
+    if (name == "rad/s") return {"rad/s", stats::RateQuantity::angular_rate, 1.0};
+    if (name == "m/s^2" || name == "m/s2") return {"m/s^2", stats::RateQuantity::acceleration, 1.0};
+    if (name == "cm/s^2" || name == "cm/s2") return {"cm/s^2", stats::RateQuantity::acceleration, 0.01};
+    if (name == "g") return {"g", stats::RateQuantity::acceleration, 9.80665};
+    return {name.empty() ? "unit" : name, stats::RateQuantity::unknown, 1.0};
+}
+
+std::vector<stats::Deviation> parse_deviations(const std::string& s) {
+    if (s == "all") return {stats::Deviation::oadev, stats::Deviation::mdev, stats::Deviation::ohdev};
+    if (s == "oadev") return {stats::Deviation::oadev};
+    if (s == "mdev") return {stats::Deviation::mdev};
+    if (s == "hdev") return {stats::Deviation::ohdev};  // the overlapping Hadamard estimator
+    throw UsageError("--deviation: expected oadev, mdev, hdev or all, got '" + s + "'");
+}
+
+json curve_json(const stats::AnalysedCurve& c, const char* dev_key) {
+    json j;
+    j["tau"] = report::json_array(c.curve.tau_s);
+    j[dev_key] = report::json_array(c.curve.dev);
+    j["ci_low"] = report::json_array(c.ci_low);
+    j["ci_high"] = report::json_array(c.ci_high);
+    j["noise"] = c.alpha;
+    j["noise_identified"] = c.alpha_identified;
+    j["n"] = c.curve.n;
+    j["n_skipped"] = c.curve.n_skipped;
+    j["edf"] = report::json_array(c.edf);
+    return j;
+}
+
+json terms_json(const stats::NoiseTermFit& t, const UnitInfo& u) {
+    if (!t.ok) return nullptr;
+    const std::string& U = u.name;
+    const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", "", "/sqrt(s)", "/s"};
+    json j = {{"unit", U}, {"model", "AVAR = 3Q^2/tau^2 + N^2/tau + (2 ln2/pi) B^2 + K^2 tau/3 + R^2 tau^2/2"},
+              {"bias_instability_factor", stats::kBiasInstabilityFactor}};
+    for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
+        j[stats::kNoiseTermSymbols[k]] = {{"value", report::json_number(t.value[k])},
+                                          {"std_error", report::json_number(t.std_error[k])},
+                                          {"unit", U + units[k]}};
+    }
+    json phys = json::object();
+    for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit)) phys[nv.key] = report::json_number(nv.value);
+    j["physical"] = phys;
+    return j;
+}
+
+json version_json(const stats::AllanCurves& v, const UnitInfo& u) {
+    json j = curve_json(v.curves.front(), "adev");
+    if (const auto* m = v.find(stats::Deviation::mdev)) j["mdev"] = curve_json(*m, "dev");
+    if (const auto* h = v.find(stats::Deviation::ohdev)) j["hdev"] = curve_json(*h, "dev");
+    j["terms"] = terms_json(v.terms, u);
+    json k = json::object();
+    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) k[nv.key] = report::json_number(nv.value);
+    j["kalibr"] = k.empty() ? json(nullptr) : k;
+    return j;
+}
+
+void print_version(const char* title, const stats::AllanCurves& v, const UnitInfo& u) {
+    std::printf("  %s\n", title);
+    for (const auto& c : v.curves) {
+        std::printf("    %-6s %12s %10s %5s %12s %12s %12s\n", std::string(stats::deviation_name(c.curve.type)).c_str(),
+                    "tau [s]", "n", "alpha", "low", "dev", "high");
+        for (std::size_t i = 0; i < c.curve.m.size(); ++i) {
+            std::printf("    %-6s %12.5g %10lld %5d %12.5g %12.5g %12.5g\n", "", c.curve.tau_s[i],
+                        static_cast<long long>(c.curve.n[i]), c.alpha[i], c.ci_low[i], c.curve.dev[i], c.ci_high[i]);
+        }
+    }
+    if (!v.terms.ok) return;
+    const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", " (ADEV floor = 0.664 B)", "/sqrt(s)", "/s"};
+    std::printf("    IEEE 952 terms [%s]:", u.name.c_str());
+    for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
+        std::printf(" %s = %.4g%s%s", stats::kNoiseTermSymbols[k], v.terms.value[k], units[k],
+                    k + 1 < stats::kNoiseTermCount ? "," : "\n");
+    }
+    for (const auto& nv : stats::physical_terms(v.terms, u.quantity, u.si_per_unit)) {
+        std::printf("      %-26s %.5g\n", nv.key.c_str(), nv.value);
+    }
+    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) {
+        std::printf("      kalibr %-19s %.5g\n", nv.key.c_str(), nv.value);
+    }
+}
+
+report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, const UnitInfo& u) {
+    report::Plot p;
+    p.title = "Allan deviation: " + name;
+    p.x_label = "tau [s]";
+    p.y_label = "overlapping ADEV [" + u.name + "]";
+    p.log_x = p.log_y = true;
+    const stats::AllanCurves& main = r.drift_removed ? *r.drift_removed : r.raw;
+    const stats::AnalysedCurve& c = main.curves.front();
+    report::PlotSeries band{r.drift_removed ? "drift removed (68 % CI)" : "ADEV (68 % CI)", c.curve.tau_s, c.curve.dev,
+                            c.ci_low, c.ci_high, report::SeriesStyle::error_bars, false, "#1f77b4", 1.5};
+    p.series.push_back(band);
+    if (r.drift_removed) {
+        const auto& raw = r.raw.curves.front();
+        p.series.push_back({"raw (with drift)", raw.curve.tau_s, raw.curve.dev, {}, {}, report::SeriesStyle::lines, false,
+                            "#7f7f7f", 1.5});
+    }
+    if (main.terms.ok) {
+        p.series.push_back({"IEEE 952 fit", c.curve.tau_s, main.terms.model_adev, {}, {}, report::SeriesStyle::lines,
+                            false, "#d62728", 2.0});
+        for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
+            if (main.terms.value[k] <= 0.0) continue;
+            std::array<double, stats::kNoiseTermCount> only{};
+            only[k] = main.terms.value[k];
+            std::vector<double> y;
+            for (double t : c.curve.tau_s) y.push_back(std::sqrt(stats::noise_term_avar(only, t)));
+            p.series.push_back({std::string(stats::kNoiseTermSymbols[k]) + " term", c.curve.tau_s, y, {}, {},
+                                report::SeriesStyle::lines, true, "", 1.0});
+        }
+    }
+    return p;
+}
+
+void run(const AllanCommandOptions& o) {
+    stats::AllanRequest req;
+    req.deviations = parse_deviations(o.deviation);
+    try {
+        req.grid.grid = stats::parse_tau_grid(o.grid);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--grid: ") + e.what());
+    }
+    req.grid.points_per_decade = o.per_decade;
+    req.remove_drift = !o.keep_drift;
+
+    const bool log = fit::is_canonical_log(o.path);
+    std::vector<std::string> names = o.channels;
+    if (names.size() == 1 && names[0] == "all") names.clear();
+    std::vector<fit::Series> series;
+    if (log) {
+        if (!o.kind.empty() && o.kind != "rate") throw UsageError("--kind: a canonical log holds rate samples (counts)");
+        if (!o.unit.empty()) throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
+        series = fit::load_series(o.path, names);
+    } else {
+        if (o.kind.empty() || o.tau0_s <= 0.0) {
+            throw UsageError("a plain numeric file needs --kind rate|phase and --tau0 SECONDS (the input kind is "
+                             "never guessed)");
+        }
+        if (o.kind != "rate" && o.kind != "phase") throw UsageError("--kind: expected rate or phase, got '" + o.kind + "'");
+        req.kind = o.kind == "rate" ? stats::InputKind::rate : stats::InputKind::phase;
+        req.remove_drift = false;  // eq. 1 is fitted to logs only; plain files are analysed as given
+        series = fit::load_series(o.path, names, "", o.tau0_s);
+    }
+
+    json out = {{"file", o.path}, {"kind", req.kind == stats::InputKind::rate ? "rate" : "phase"},
+                {"grid", o.grid}, {"confidence", req.confidence}, {"channels", json::object()}};
+    for (const fit::Series& s : series) {
+        const double tau0 = o.tau0_s > 0.0 ? o.tau0_s : stats::median_spacing_s(s.t_s);
+        if (!(tau0 > 0.0)) throw DataError(o.path, 0, "series '" + s.name + "': fewer than two samples");
+        stats::AllanResult r;
+        try {
+            r = stats::analyse_allan(s.t_s, s.values, tau0, req);
+        } catch (const std::invalid_argument& e) {
+            throw DataError(o.path, 0, "series '" + s.name + "': " + e.what());
+        }
+        const UnitInfo u = s.channel ? unit_of_channel(*s.channel) : unit_of_name(o.unit);
+        if (o.json) {
+            const stats::AllanCurves& main = r.drift_removed ? *r.drift_removed : r.raw;
+            json c = version_json(main, u);
+            c["tau0_s"] = tau0;
+            c["samples"] = r.samples;
+            c["gap_samples"] = r.gap_samples;
+            c["drift_removed"] = r.drift_removed.has_value();
+            c["drift_status"] = r.drift_status;
+            if (r.drift) c["drift"] = {{"C1", r.drift->c1}, {"C2", r.drift->c2}, {"T_s", r.drift->t_s}};
+            if (r.drift_removed) c["raw"] = version_json(r.raw, u);
+            out["channels"][s.name] = c;
+        } else {
+            std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(), s.name.c_str(),
+                        tau0, r.samples, r.gap_samples, r.drift_removed ? "removed (eq. 1)" : r.drift_status.c_str());
+            if (r.drift_removed) print_version("drift removed", *r.drift_removed, u);
+            print_version(r.drift_removed ? "raw" : "as given", r.raw, u);
+        }
+        if (!o.plot_dir.empty()) report::render_plot(allan_plot(s.name, r, u), o.plot_dir, "allan_" + s.name);
+    }
+    if (o.json) report::write_json(std::cout, out);
+}
+
+}  // namespace
+
+void register_allan(CLI::App& app) {
+    auto o = std::make_shared<AllanCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("allan", "Allan deviation (overlapping, modified, Hadamard) with confidence "
+                                                "intervals, noise types and IEEE 952 terms");
+    cmd->add_option("file", o->path, "Canonical log, or a plain numeric file (then --kind and --tau0)")->required();
+    cmd->add_option("--channel", o->channels, "Channels (log) or columns (plain file): NAME[,NAME] or all")->delimiter(',');
+    cmd->add_option("--kind", o->kind, "Plain files: rate (rate / fractional-frequency samples) or phase (integrated)");
+    cmd->add_option("--tau0", o->tau0_s, "Sample period [s]; required for plain files, logs default to the median spacing")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, deg/h, rad/s, m/s^2, cm/s^2, g, or any name)");
+    cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32");
+    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->check(CLI::PositiveNumber);
+    cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all");
+    cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
+    cmd->add_flag("--json", o->json,
+                  "Print JSON (keys: channels.<name>.{tau,adev,ci_low,ci_high,noise,n,mdev,hdev,terms,kalibr,raw})");
+    cmd->add_option("--plot", o->plot_dir, "Write allan_<channel>.png/.svg into this folder");
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace driftlab::host::cli
