@@ -10,6 +10,8 @@ packages=(
   # host libraries
   libeigen3-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libserial-dev libusb-1.0-0-dev
+  # tests: the gzip-compressed reference phase record (tests/host/stats)
+  zlib1g-dev
   # plots
   gnuplot-nox
   # AVR cross build, flashing and emulation
