@@ -1,0 +1,113 @@
+// Stable JSON keys of `fit`, gnuplot rendering and the self-contained HTML report.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "host/fit/drift_analysis.hpp"
+#include "host/fit/file_analysis.hpp"
+#include "host/report/analysis_json.hpp"
+#include "host/report/analysis_plots.hpp"
+#include "host/report/gnuplot.hpp"
+#include "host/report/html_report.hpp"
+#include "host/report/json_out.hpp"
+#include "host/util/error.hpp"
+#include "sim/model/rng.hpp"
+
+namespace driftlab::host::report {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A small canonical log with the paper's gyro row on every channel and raw columns.
+std::string write_log() {
+    const auto path = (fs::temp_directory_path() / "driftlab_report_test.csv").string();
+    std::ofstream out(path);
+    out << "# driftlab-log: 1\n# source: test\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro,raw_accel_x,raw_accel_y,"
+           "raw_accel_z\n";
+    sim::Rng rng(1, 1);
+    for (int k = 1; k <= 600; ++k) {
+        out << k << ',' << k - 1;
+        double v[4];
+        for (double& x : v) x = 3.0 * (1.0 - std::exp(-k / 150.0)) + 505.0 + 0.25 * rng.normal();
+        for (double x : v) out << ',' << x;
+        for (double x : v) out << ',' << std::round(x);
+        out << '\n';
+    }
+    return path;
+}
+
+TEST(Report, FitJsonHasTheStableKeys) {
+    fit::FileAnalysisRequest request;
+    request.path = write_log();
+    const fit::FileAnalysis file = fit::analyse_file(request);
+    ASSERT_EQ(file.failures(), 0u);
+    const nlohmann::json j = fit_json(*file.series[0].analysis);
+    for (const char* p : {"C1", "C2", "T"}) {
+        ASSERT_TRUE(j.contains(p)) << p;
+        EXPECT_TRUE(j[p]["value"].is_number());
+        EXPECT_TRUE(j[p]["stderr"].is_number());
+        ASSERT_TRUE(j[p]["ci95"].is_array());
+        EXPECT_EQ(j[p]["ci95"].size(), 2u);
+        EXPECT_LT(j[p]["ci95"][0].get<double>(), j[p]["ci95"][1].get<double>());
+    }
+    for (const char* k : {"fraction_inside", "ljung_box_p", "white"}) EXPECT_TRUE(j["whiteness"].contains(k)) << k;
+    EXPECT_EQ(j["status"], "converged");
+    EXPECT_EQ(j["n"], 600);
+    EXPECT_TRUE(j["rms"].is_number());
+    EXPECT_EQ(j["physical"]["unit"], "deg/s");
+    // C1 = 3 counts -> 3 x 90/512 deg/s.
+    EXPECT_NEAR(j["physical"]["C1"].get<double>(), j["C1"]["value"].get<double>() * 90.0 / 512.0, 1e-12);
+    EXPECT_TRUE(json_number(std::numeric_limits<double>::infinity()).is_null());
+}
+
+TEST(Report, GnuplotWritesPngAndSvg) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot not on PATH";
+    Plot p;
+    p.title = "it's a test";  // quote in a title must survive
+    p.x_label = "tau [s]";
+    p.y_label = "dev";
+    p.log_x = p.log_y = true;
+    PlotSeries s;
+    s.title = "line";
+    s.x = {1, 10, 100};
+    s.y = {1, 0.3, 0.1};
+    s.y_low = {0.9, 0.25, 0.05};
+    s.y_high = {1.1, 0.35, 0.15};
+    s.style = SeriesStyle::error_bars;
+    p.series = {s};
+    const auto dir = (fs::temp_directory_path() / "driftlab_plot_test").string();
+    const auto images = render_plot(p, dir, "t");
+    ASSERT_EQ(images.size(), 2u);
+    for (const auto& image : images) EXPECT_GT(fs::file_size(image), 500u) << image;
+    EXPECT_NE(render_svg(p).find("<svg"), std::string::npos);
+    Plot empty;
+    EXPECT_THROW(render_plot(empty, dir, "e"), UsageError);
+}
+
+TEST(Report, HtmlIsSelfContainedWithTablesVerdictsAllanAndFigures) {
+    fit::FileAnalysisRequest request;
+    request.path = write_log();
+    const fit::FileAnalysis file = fit::analyse_file(request);
+    ReportOptions options;
+    options.plots = gnuplot_available();
+    const std::string html = render_html_report(file, options);
+    EXPECT_NE(html.find("<table>"), std::string::npos);
+    EXPECT_NE(html.find("Whiteness of the residual"), std::string::npos);
+    EXPECT_NE(html.find("Allan analysis"), std::string::npos);
+    EXPECT_EQ(html.find("Allan analysis failed"), std::string::npos);
+    EXPECT_EQ(html.find("src="), std::string::npos);
+    EXPECT_EQ(html.find("href=\"http"), std::string::npos);
+    EXPECT_EQ(html.find("<link"), std::string::npos);
+    if (options.plots) {
+        // Fig. 2 (raw columns present), 3 and 4 per channel plus one Allan plot per channel.
+        std::size_t svgs = 0;
+        for (std::size_t pos = 0; (pos = html.find("<svg", pos)) != std::string::npos; ++pos) ++svgs;
+        EXPECT_EQ(svgs, 4u * 4u);
+    }
+}
+
+}  // namespace
+}  // namespace driftlab::host::report
