@@ -34,6 +34,9 @@ struct HilOptions {
     std::function<std::unique_ptr<EmulatedBoard>()> make_board;
     /// Called now and then with the fraction of virtual time done (0..1); may be empty.
     std::function<void(double)> progress;
+    /// Called once when the handshake has verified the configuration, before the first record; may be empty
+    /// (a log writer needs VERSION for its metadata).
+    std::function<void(const proto::VersionPayload&, const proto::ConfigPayload&)> on_ready;
 };
 
 /// Everything a run counted; the JSON summary of `driftlab hil` is made of these.

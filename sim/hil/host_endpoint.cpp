@@ -32,7 +32,8 @@ const char* kConfigFieldNames[] = {"output_period_ms", "conversions_per_output",
 
 }  // namespace
 
-HostEndpoint::HostEndpoint(const HostPlan& plan, RecordSink sink) : plan_(plan), sink_(std::move(sink)) {}
+HostEndpoint::HostEndpoint(const HostPlan& plan, RecordSink sink, ReadyFn on_ready)
+    : plan_(plan), sink_(std::move(sink)), on_ready_(std::move(on_ready)) {}
 
 std::optional<double> HostEndpoint::next_action_s() const {
     switch (phase_) {
@@ -168,6 +169,7 @@ void HostEndpoint::handle_frame(double t_s) {
         if (!same_config(got, plan_.config))
             throw host::DeviceError("emulated board", "CONFIG_GET returned a configuration that differs from the "
                                                       "one it acknowledged");
+        if (on_ready_) on_ready_(version_, got);
         enter(Phase::running, t_s);
         break;
     }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,7 +43,10 @@ class HostEndpoint {
 public:
     enum class Phase { hello, config_set, config_get, running, stop_stream, status, done };
 
-    HostEndpoint(const HostPlan& plan, RecordSink sink);
+    /// Callback for the verified configuration (see HilOptions::on_ready).
+    using ReadyFn = std::function<void(const proto::VersionPayload&, const proto::ConfigPayload&)>;
+
+    HostEndpoint(const HostPlan& plan, RecordSink sink, ReadyFn on_ready = {});
 
     /// Time of the next thing the host does on its own (send, resend, poll) [s], or nothing.
     std::optional<double> next_action_s() const;
@@ -70,6 +74,7 @@ private:
 
     HostPlan plan_;
     RecordSink sink_;
+    ReadyFn on_ready_;
     proto::Decoder decoder_;
     Phase phase_ = Phase::hello;
     std::optional<double> send_at_s_ = 0.0;  // next (re)send of the current request
