@@ -57,7 +57,6 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
     out.tau0_s = tau0_s;
     out.samples = grid.values.size();
     out.gap_samples = grid.missing;
-    out.collisions = grid.collisions;
     out.raw = analyse_curves(make_record(grid.values, tau0_s, request.kind), request);
 
     if (!request.remove_drift) {

@@ -32,7 +32,6 @@ struct AllanResult {
     double tau0_s = 0.0;
     std::size_t samples = 0;      ///< grid slots (input samples plus gap slots)
     std::size_t gap_samples = 0;  ///< slots that are gaps (missing, NaN)
-    std::size_t collisions = 0;   ///< samples dropped because two fell into one slot
     AllanCurves raw;
     std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
     std::optional<fit::DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]

@@ -24,23 +24,20 @@ UniformSeries to_uniform_grid(std::span<const double> t_s, std::span<const doubl
     out.tau0_s = tau0_s;
     if (t_s.empty()) return out;
     out.t0_s = t_s.front();
-    const double span_slots = std::round((t_s.back() - t_s.front()) / tau0_s);
-    if (!(span_slots >= 0.0) || span_slots > 20.0 * static_cast<double>(t_s.size()) + 20.0) {
+    std::vector<std::size_t> slot(t_s.size(), 0);
+    for (std::size_t k = 1; k < t_s.size(); ++k) {
+        const double nominal = std::round((t_s[k] - out.t0_s) / tau0_s);
+        if (!(nominal <= 20.0 * static_cast<double>(t_s.size()) + 20.0)) {
+            throw std::invalid_argument("uniform grid: the times span far more slots than samples (tau0 too small?)");
+        }
+        slot[k] = std::max(slot[k - 1] + 1, static_cast<std::size_t>(std::max(nominal, 0.0)));
+    }
+    if (slot.back() > 20 * t_s.size() + 20) {
         throw std::invalid_argument("uniform grid: the times span far more slots than samples (tau0 too small?)");
     }
-    out.values.assign(static_cast<std::size_t>(span_slots) + 1, std::numeric_limits<double>::quiet_NaN());
-    std::vector<bool> filled(out.values.size(), false);
-    for (std::size_t k = 0; k < t_s.size(); ++k) {
-        const double slot = std::round((t_s[k] - out.t0_s) / tau0_s);
-        const auto i = static_cast<std::size_t>(std::clamp(slot, 0.0, span_slots));
-        if (filled[i]) {
-            ++out.collisions;
-            continue;
-        }
-        filled[i] = true;
-        out.values[i] = values[k];
-    }
-    out.missing = static_cast<std::size_t>(std::count(filled.begin(), filled.end(), false));
+    out.values.assign(slot.back() + 1, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t k = 0; k < t_s.size(); ++k) out.values[slot[k]] = values[k];
+    out.missing = out.values.size() - t_s.size();
     return out;
 }
 

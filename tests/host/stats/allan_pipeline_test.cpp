@@ -32,8 +32,20 @@ TEST(UniformGrid, JitterSmallerThanHalfAPeriodKeepsEverySample) {
     }
     const UniformSeries g = to_uniform_grid(t, v, median_spacing_s(t));
     EXPECT_EQ(g.missing, 0u);
-    EXPECT_EQ(g.collisions, 0u);
     EXPECT_EQ(g.values.size(), 1000u);
+}
+
+TEST(UniformGrid, BurstyTimestampsNeverDropASample) {
+    // Two samples 1 ms apart, then 19 ms to the next: a logger flushing in pairs at 100 Hz.
+    std::vector<double> t, v;
+    for (int k = 0; k < 100; ++k) {
+        t.push_back(0.02 * (k / 2) + 0.001 * (k % 2));
+        v.push_back(k);
+    }
+    const UniformSeries g = to_uniform_grid(t, v, 0.01);
+    EXPECT_EQ(g.missing, 0u);
+    ASSERT_EQ(g.values.size(), 100u);
+    EXPECT_EQ(g.values[99], 99.0);
 }
 
 TEST(UniformGrid, RejectsAGridFarFinerThanTheSamples) {
