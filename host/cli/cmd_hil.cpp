@@ -1,0 +1,287 @@
+// `driftlab hil`: host-in-the-loop simulation. The firmware core runs on an emulated board in virtual time, fed
+// by the sensor model, talking through the link model to a host that writes the canonical log (sim/hil,
+// docs/sim.md §Host-in-the-loop).
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "host/cli/commands.hpp"
+#include "host/log/log_writer.hpp"
+#include "host/report/json_out.hpp"
+#include "host/util/error.hpp"
+#include "sim/hil/hil.hpp"
+#include "sim/hil/hil_preset.hpp"
+#include "sim/model/model_file.hpp"
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+#include "sim/avr/avr_error.hpp"
+#include "sim/avr/avr_hil.hpp"
+#endif
+
+namespace driftlab::host::cli {
+namespace {
+
+struct HilCliOptions {
+    std::string preset = "fig3";
+    std::optional<double> duration_s;
+    std::optional<double> period_s;
+    std::optional<int> window;
+    std::optional<int> order;
+    std::optional<double> warm_s;
+    std::string model_file;
+    std::uint64_t seed = 1;
+    bool raw = false;
+    bool stream = false;
+    std::string output;
+    bool json = false;
+    std::string target = "native";  // native | avr (the real ELF in simavr, docs/avr-in-the-loop.md)
+    std::string elf;                 // AVR firmware; default: the one this build made
+    int gdb_port = 0;                // > 0: simavr's gdb stub on this port, CPU stopped until avr-gdb continues
+    bool cycles = false;             // AVR: also print the firmware's cycle budget at this configuration
+};
+
+// Log columns beyond the required ones, in the order the rows fill them.
+std::vector<std::string> optional_columns(bool raw) {
+    std::vector<std::string> c = {"tick", "sat_flags", "n_window", "dropped"};
+    if (raw)
+        for (const char* name : kChannelNames) c.push_back(std::string("raw_") + name);
+    return c;
+}
+
+using MetadataPairs = std::vector<std::pair<std::string, std::string>>;
+
+// The same keys a recording of a real board carries (docs/log-format.md §2), then the simulator's own.
+LogMetadata hil_metadata(const proto::VersionPayload& v, const proto::ConfigPayload& c, const MetadataPairs& extra) {
+    LogMetadata m;
+    m.set("source", std::string("hil"));
+    m.set("firmware_version",
+          std::to_string(v.fw_major) + "." + std::to_string(v.fw_minor) + "." + std::to_string(v.fw_patch));
+    m.set("protocol_version", static_cast<std::int64_t>(v.proto_version));
+    m.set("sample_period_s", c.output_period_ms / 1000.0);
+    m.set("conversions_per_output", static_cast<std::int64_t>(c.conversions_per_output));
+    m.set("window", static_cast<std::int64_t>(c.window));
+    m.set("fit_order", static_cast<std::int64_t>(c.fit_order));
+    m.set("mode", std::string(c.mode == static_cast<std::uint8_t>(proto::OutputMode::stream) ? "stream" : "poll"));
+    m.set("raw", static_cast<std::int64_t>(c.raw));
+    m.set("adc_bits", static_cast<std::int64_t>(v.adc_bits));
+    m.set("vref_v", v.vref_mv / 1000.0);
+    m.set("tick_hz", static_cast<std::int64_t>(v.tick_hz));
+    for (const auto& [key, value] : extra) m.set(key, value);
+    return m;
+}
+
+// One log line per record; the writer is opened once the handshake has produced VERSION for the metadata.
+class HilLog {
+public:
+    HilLog(std::string path, MetadataPairs extra) : path_(std::move(path)), extra_(std::move(extra)) {}
+
+    void open(const proto::VersionPayload& v, const proto::ConfigPayload& c) {
+        raw_ = c.raw != 0;
+        writer_ = std::make_unique<LogWriter>(path_, hil_metadata(v, c, extra_), optional_columns(raw_));
+    }
+    void write(const sim::HilRecord& r) {
+        LogRow row;
+        row.t_s = r.t_s;
+        row.seq = r.seq;
+        row.counts = r.value_counts;
+        row.optional_values = {static_cast<double>(r.tick), static_cast<double>(r.sat_flags),
+                               static_cast<double>(r.n_window), static_cast<double>(r.dropped)};
+        if (raw_)
+            for (std::uint16_t code : r.raw_counts) row.optional_values.push_back(code);
+        writer_->write_row(row);
+    }
+    void close() {
+        if (writer_) writer_->close();
+    }
+
+private:
+    std::string path_;
+    MetadataPairs extra_;
+    bool raw_ = false;
+    std::unique_ptr<LogWriter> writer_;
+};
+
+nlohmann::json link_json(const sim::LinkCounters& c) {
+    return {{"packets_sent", c.packets_sent},     {"packets_lost", c.packets_lost},
+            {"packets_damaged", c.packets_damaged}, {"bytes_sent", c.bytes_sent},
+            {"bytes_lost", c.bytes_lost},         {"bytes_dropped", c.bytes_dropped},
+            {"bytes_corrupted", c.bytes_corrupted}, {"bytes_delivered", c.bytes_delivered}};
+}
+
+void progress_bar(double fraction) {
+    const int width = 40;
+    const int filled = static_cast<int>(fraction * width);
+    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(),
+                 static_cast<int>(fraction * 100.0));
+    if (fraction >= 1.0) std::fprintf(stderr, "\n");
+}
+
+sim::HilOptions build_options(const HilCliOptions& o) {
+    sim::HilOptions h;
+    h.model = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file);
+    h.seed = o.seed;
+    const auto preset = sim::preset_from_name(o.preset);
+    if (!preset) throw UsageError("--preset: expected fig3 or fig2, got '" + o.preset + "'");
+    sim::apply_preset(*preset, h);
+    proto::ConfigPayload& fw = h.model.firmware;
+    if (o.period_s) {
+        const double ms = *o.period_s * 1000.0;
+        if (!(ms >= proto::kOutputPeriodMinMs && ms <= proto::kOutputPeriodMaxMs) || std::abs(ms - std::round(ms)) > 1e-6)
+            throw UsageError("--period: expected a whole number of milliseconds in [0.01, 60] s, got " +
+                             std::to_string(*o.period_s));
+        fw.output_period_ms = static_cast<std::uint16_t>(std::lround(ms));
+    }
+    if (o.window) fw.window = static_cast<std::uint8_t>(*o.window);
+    if (o.order) fw.fit_order = static_cast<std::uint8_t>(*o.order);
+    if (o.raw) fw.raw = 1;
+    if (o.stream) fw.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
+    if (o.duration_s) h.duration_s = *o.duration_s;
+    if (o.warm_s) h.warm_up_s = *o.warm_s;
+    if (h.duration_s < fw.output_period_ms / 1000.0)
+        throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
+    if (o.target == "avr") {
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+        sim::avr::AvrBoardOptions avr{o.elf.empty() ? sim::avr::default_elf_path() : o.elf, o.gdb_port};
+        try {
+            h.make_board = sim::avr::avr_board_factory(avr);
+        } catch (const sim::avr::AvrError& e) {
+            throw UsageError(std::string("--elf: ") + e.what());
+        }
+#else
+        throw UsageError("--target avr: this driftlab was built without libsimavr-dev");
+#endif
+    } else if (o.target != "native") {
+        throw UsageError("--target: expected native or avr, got '" + o.target + "'");
+    }
+    return h;
+}
+
+void run_hil_command(const HilCliOptions& o) {
+    sim::HilOptions h = build_options(o);
+    const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (path != "-" && !parent.empty()) std::filesystem::create_directories(parent);
+
+    MetadataPairs extra = {{"seed", std::to_string(o.seed)},
+                               {"model", o.model_file.empty() ? "paper (built in)" : o.model_file},
+                               {"model_name", h.model.name},
+                               {"preset", o.preset},
+                               {"target", o.target},
+                               {"warm_up_s", std::to_string(h.warm_up_s)},
+                               {"link_baud", std::to_string(h.model.link.baud)}};
+    HilLog log(path, extra);
+    h.on_ready = [&log](const proto::VersionPayload& v, const proto::ConfigPayload& c) { log.open(v, c); };
+    if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar;
+
+    const auto wall0 = std::chrono::steady_clock::now();
+    const sim::HilSummary s = sim::run_hil(h, [&log](const sim::HilRecord& r) { log.write(r); });
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    log.close();
+
+    const double rtf = wall_s > 0.0 ? s.simulated_s / wall_s : 0.0;
+    if (o.json) {
+        nlohmann::json j = {
+            {"log", path},
+            {"preset", o.preset},
+            {"model", h.model.name},
+            {"seed", o.seed},
+            {"duration_s", h.duration_s},
+            {"simulated_s", s.simulated_s},
+            {"wall_s", wall_s},
+            {"real_time_factor", rtf},
+            {"conversions", s.conversions},
+            {"frames_sent", s.to_host.packets_sent},
+            {"frames_received", s.host.frames_received},
+            {"frames_lost", s.host.frames_lost},
+            {"crc_errors", s.decoder.bad_crc},
+            {"bad_length", s.decoder.bad_length},
+            {"resync_bytes", s.decoder.resync_bytes},
+            {"polls_sent", s.host.polls_sent},
+            {"samples_received", s.host.samples_received},
+            {"rows", s.host.rows},
+            {"rows_missing_raw", s.host.rows_missing_raw},
+            {"retries", s.host.retries},
+            {"link", {{"to_host", link_json(s.to_host)}, {"to_firmware", link_json(s.to_firmware)}}},
+            {"firmware",
+             {{"rx_frames", s.status.rx_frames},
+              {"rx_bad_crc", s.status.rx_bad_crc},
+              {"rx_bad_length", s.status.rx_bad_length},
+              {"rx_unknown_type", s.status.rx_unknown_type},
+              {"rx_resync_bytes", s.status.rx_resync_bytes},
+              {"rx_overflow", s.status.rx_overflow},
+              {"tx_overflow", s.status.tx_overflow},
+              {"dropped", s.status.dropped}}}};
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+        if (o.cycles && o.target == "avr") {
+            const auto b = sim::avr::measure_cycle_budget(o.elf.empty() ? sim::avr::default_elf_path() : o.elf,
+                                                          h.model.firmware, 0.5, 5.0, true);
+            nlohmann::json fns = nlohmann::json::object();
+            for (const auto& f : b.functions)
+                fns[f.label] = {{"calls", f.calls}, {"mean_cycles", f.mean_cycles()}, {"max_cycles", f.max_cycles}};
+            j["avr_cycles"] = {{"conversion_period_ticks", b.conversion_period_ticks},
+                               {"cpu_load", b.cpu_load},
+                               {"dropped", b.dropped},
+                               {"tx_overflow", b.tx_overflow},
+                               {"stack_high_water_bytes", b.stack_high_water_bytes},
+                               {"stack_budget_bytes", b.stack_budget_bytes},
+                               {"functions", fns}};
+        }
+#endif
+        report::write_json(std::cout, j);
+        return;
+    }
+    std::cout << "wrote " << s.host.rows << " rows to " << path << "\n"
+              << "frames: sent " << s.to_host.packets_sent << ", received " << s.host.frames_received << ", lost "
+              << s.host.frames_lost << " (crc errors " << s.decoder.bad_crc << ")\n"
+              << "link to host: " << s.to_host.packets_damaged << " frames damaged, " << s.to_host.bytes_dropped
+              << " bytes dropped, " << s.to_host.bytes_corrupted << " corrupted; to firmware: "
+              << s.to_firmware.packets_damaged << " frames damaged\n"
+              << "simulated " << s.simulated_s << " s in " << wall_s << " s wall (" << std::lround(rtf)
+              << "x real time)\n";
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+    if (o.cycles && o.target == "avr")
+        std::cout << sim::avr::format_cycle_budget(sim::avr::measure_cycle_budget(
+            o.elf.empty() ? sim::avr::default_elf_path() : o.elf, h.model.firmware, 0.5, 5.0, true));
+#endif
+}
+
+}  // namespace
+
+void register_hil(CLI::App& app) {
+    auto opts = std::make_shared<HilCliOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "hil", "Run the firmware in virtual time against the sensor and link models and write a canonical log");
+    cmd->add_option("--preset", opts->preset, "fig3 (4000 s from power-on, 1 s outputs) or fig2 (1000 outputs 0.1 s "
+                                              "apart, raw and least-squares)")
+        ->capture_default_str();
+    cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s]");
+    cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds");
+    cmd->add_option("--window", opts->window, "Least-squares window N [conversions]")->check(CLI::Range(1, 64));
+    cmd->add_option("--order", opts->order, "Least-squares fit order")->check(CLI::Range(0, 1));
+    cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s]")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)");
+    cmd->add_option("--seed", opts->seed, "Seed of every random component")->capture_default_str();
+    cmd->add_flag("--raw", opts->raw, "Also log the raw codes (RAW frames)");
+    cmd->add_flag("--stream", opts->stream, "Stream mode: the firmware sends without being polled");
+    cmd->add_option("-o,--output", opts->output, "Log file (default out/<preset>.csv; - for standard output)");
+    cmd->add_flag("--json", opts->json, "Print the run summary as JSON");
+    cmd->add_option("--target", opts->target, "native (firmware core on the host) or avr (the real ELF in simavr)")
+        ->capture_default_str();
+    cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)");
+    cmd->add_option("--gdb", opts->gdb_port, "--target avr: start simavr's gdb stub on this TCP port and wait for "
+                                             "avr-gdb (docs/avr-in-the-loop.md)")->check(CLI::Range(1, 65535));
+    cmd->add_flag("--cycles", opts->cycles, "--target avr: also print the firmware's cycle budget (ISR and fit "
+                                            "cycles, CPU load, stack) at this configuration");
+    cmd->callback([opts] { run_hil_command(*opts); });
+}
+
+}  // namespace driftlab::host::cli
