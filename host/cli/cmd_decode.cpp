@@ -1,0 +1,59 @@
+// `driftlab decode`: rebuilds a recording's log from its raw capture, through the same assembler the recorder
+// used, so the result equals the recorded log (host/io/capture, host/io/log_assembler).
+#include <cstdio>
+#include <memory>
+
+#include "host/cli/commands.hpp"
+#include "host/io/capture.hpp"
+#include "host/io/log_assembler.hpp"
+#include "host/io/status_line.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct DecodeOptions {
+    std::string capture;
+    std::string output;
+};
+
+void run_decode(const DecodeOptions& o) {
+    io::CaptureReader reader(o.capture);
+    io::LogAssembler assembler(o.output, reader.header());
+    bool started = false;
+    while (auto rec = reader.next()) {
+        if (rec->kind == io::CaptureKind::rx) {
+            assembler.on_rx(rec->t_us, rec->payload.data(), rec->payload.size());
+        } else if (rec->kind == io::CaptureKind::event) {
+            assembler.on_event(rec->t_us, rec->text());
+            started = started || assembler.started();
+        }
+    }
+    if (!started) {
+        throw DataError(o.capture, 0, "the capture holds no recording start (the recorder stopped during the "
+                                      "handshake), so there is no log to rebuild");
+    }
+    assembler.finish();
+    if (reader.truncated_at()) {
+        std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: last record cut (recorder killed while "
+                             "writing); decoded up to it\n",
+                     o.capture.c_str(), static_cast<unsigned long long>(*reader.truncated_at()));
+    }
+    const io::AssemblyStats& s = assembler.stats();
+    std::printf("decoded %llu rows to %s; frames %llu, lost %llu (%.3f %%), gaps %llu\n",
+                static_cast<unsigned long long>(s.rows), o.output.c_str(), static_cast<unsigned long long>(s.frames),
+                static_cast<unsigned long long>(s.lost_frames), io::loss_percent(s),
+                static_cast<unsigned long long>(s.gaps));
+}
+
+}  // namespace
+
+void register_decode(CLI::App& app) {
+    auto o = std::make_shared<DecodeOptions>();
+    CLI::App* cmd = app.add_subcommand("decode", "Rebuild a recorded log from its raw capture (LOG.csv.cap)");
+    cmd->add_option("capture", o->capture, "Capture file written by `driftlab record`")->required();
+    cmd->add_option("-o,--output", o->output, "Log file to write")->required();
+    cmd->callback([o] { run_decode(*o); });
+}
+
+}  // namespace driftlab::host::cli

@@ -1,0 +1,124 @@
+// `driftlab record`: records a board over a serial or radio link into a canonical log plus its raw capture
+// (host/io/recorder). Ctrl-C and SIGTERM stop it cleanly; the log is valid at every second anyway.
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "host/cli/commands.hpp"
+#include "host/io/recorder.hpp"
+#include "host/io/status_line.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void on_stop_signal(int) { g_stop.store(true); }
+
+struct RecordCliOptions {
+    std::string port;
+    int baud = 115200;
+    double poll_s = 0.0;
+    double stream_s = 0.0;
+    double duration_s = 0.0;
+    int conversions = 25;
+    int window = 25;
+    int order = 0;
+    bool raw = false;
+    std::string output;
+    std::string capture;
+    bool quiet = false;
+};
+
+std::uint16_t period_ms(double period_s, const char* flag) {
+    const double ms = std::round(period_s * 1000.0);
+    if (!(ms >= proto::kOutputPeriodMinMs && ms <= proto::kOutputPeriodMaxMs)) {
+        throw UsageError(std::string(flag) + " " + std::to_string(period_s) + ": the period must be between 0.01 and 60 s");
+    }
+    return static_cast<std::uint16_t>(ms);
+}
+
+void run_record(const RecordCliOptions& o) {
+    io::RecordOptions r;
+    r.port = o.port;
+    r.baud = o.baud;
+    r.duration_s = o.duration_s;
+    r.log_path = o.output;
+    r.capture_path = o.capture;
+    r.recorder_name = "driftlab 0.1.0";
+    const bool stream = o.stream_s > 0.0;
+    r.config.output_period_ms = period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1),
+                                          stream ? "--stream" : "--poll");
+    r.config.mode = static_cast<std::uint8_t>(stream ? proto::OutputMode::stream : proto::OutputMode::poll);
+    if (o.conversions < 1 || o.conversions > proto::kConversionsPerOutputMax) {
+        throw UsageError("--conversions must be 1..64");
+    }
+    if (o.window < 1 || o.window > proto::kWindowMax) throw UsageError("--window must be 1..64");
+    if (o.order < 0 || o.order > proto::kFitOrderMax) throw UsageError("--order must be 0 or 1");
+    if (o.duration_s < 0.0) throw UsageError("--duration must not be negative");
+    r.config.conversions_per_output = static_cast<std::uint8_t>(o.conversions);
+    r.config.window = static_cast<std::uint8_t>(o.window);
+    r.config.fit_order = static_cast<std::uint8_t>(o.order);
+    r.config.raw = o.raw ? 1 : 0;
+
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+    // An unplugged adapter or a closed pseudo-terminal may raise SIGHUP/SIGPIPE: that is a lost link, which
+    // the recorder survives, not a reason to die.
+    ::signal(SIGHUP, SIG_IGN);
+    ::signal(SIGPIPE, SIG_IGN);
+
+    const bool live = !o.quiet && ::isatty(STDERR_FILENO);
+    io::RecordProgress progress;
+    if (live) {
+        progress = [](const io::AssemblyStats& s, double wall_s, bool connected) {
+            std::fprintf(stderr, "\r%s\033[K", io::format_status_line(s, wall_s, connected).c_str());
+            std::fflush(stderr);
+        };
+    }
+    const io::RecordSummary sum = io::record(r, g_stop, progress);
+    if (live) std::fprintf(stderr, "\n");
+
+    const io::AssemblyStats& s = sum.stats;
+    std::printf("recorded %llu rows", static_cast<unsigned long long>(s.rows));
+    if (s.first_t_s) std::printf(" (t_s %.3f .. %.3f)", *s.first_t_s, *s.last_t_s);
+    std::printf(" in %.1f s to %s\n", sum.wall_s, r.log_path.c_str());
+    std::printf("frames %llu, lost %llu (%.3f %%), duplicate %llu, reordered %llu, polls %llu, reconnects %llu\n",
+                static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.lost_frames),
+                io::loss_percent(s), static_cast<unsigned long long>(s.duplicate_frames),
+                static_cast<unsigned long long>(s.reordered_frames), static_cast<unsigned long long>(sum.polls_sent),
+                static_cast<unsigned long long>(sum.reconnects));
+}
+
+}  // namespace
+
+void register_record(CLI::App& app) {
+    auto o = std::make_shared<RecordCliOptions>();
+    CLI::App* cmd = app.add_subcommand("record", "Record a board over a serial/radio link into a log and a raw capture");
+    cmd->add_option("--port", o->port, "Serial device (/dev/ttyUSB0, /dev/serial/by-id/..., /dev/pts/N)")->required();
+    cmd->add_option("--baud", o->baud, "Baud rate [bit/s]")->capture_default_str();
+    auto* poll = cmd->add_option("--poll", o->poll_s, "Poll mode (the paper's), one POLL every PERIOD [s] (default 0.1)");
+    auto* stream = cmd->add_option("--stream", o->stream_s, "Stream mode: the board sends every PERIOD [s] unasked");
+    poll->excludes(stream);
+    cmd->add_option("--duration", o->duration_s, "Stop after this much board time [s] (default: until Ctrl-C)");
+    cmd->add_option("--conversions", o->conversions, "ADC conversions per channel per output (1..64)")
+        ->capture_default_str();
+    cmd->add_option("--window", o->window, "Least-squares window N [conversions] (1..64)")->capture_default_str();
+    cmd->add_option("--order", o->order, "Least-squares order: 0 mean, 1 line")->capture_default_str();
+    cmd->add_flag("--raw", o->raw, "Also record the raw ADC codes (RAW frames)");
+    cmd->add_option("-o,--output", o->output, "Log file (canonical CSV)")->required();
+    cmd->add_option("--capture", o->capture, "Raw capture file (default: LOG.cap beside the log)");
+    cmd->add_flag("-q,--quiet", o->quiet, "No live status line");
+    cmd->callback([o] { run_record(*o); });
+}
+
+}  // namespace driftlab::host::cli

@@ -1,0 +1,254 @@
+// BoardClient: handshake, configuration and reception of protocol v1 (board_client.hpp).
+#include "host/io/board_client.hpp"
+
+#include <chrono>
+#include <cstring>
+
+#include "driftlab/proto/encoder.hpp"
+#include "driftlab/proto/msg_table.hpp"
+#include "driftlab/proto/status.hpp"
+#include "driftlab/proto/wire.hpp"
+
+namespace driftlab::host::io {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kConfigFieldNames[] = {"output_period_ms", "conversions_per_output", "window",
+                                             "fit_order", "mode", "raw"};
+
+std::string describe_config_difference(const proto::ConfigPayload& want, const proto::ConfigPayload& got) {
+    const int w[] = {want.output_period_ms, want.conversions_per_output, want.window, want.fit_order, want.mode,
+                     want.raw};
+    const int g[] = {got.output_period_ms, got.conversions_per_output, got.window, got.fit_order, got.mode, got.raw};
+    std::string text;
+    for (int i = 0; i < 6; ++i) {
+        if (w[i] != g[i]) {
+            text += std::string(text.empty() ? "" : ", ") + kConfigFieldNames[i] + " is " + std::to_string(g[i]) +
+                    " instead of " + std::to_string(w[i]);
+        }
+    }
+    return text;
+}
+
+}  // namespace
+
+const char* msg_type_name(std::uint8_t type_id) {
+    for (const proto::MsgInfo& info : proto::kMsgTable) {
+        if (proto::type_id(info.type) == type_id) return info.name;
+    }
+    return "unknown type";
+}
+
+const char* status_name(std::uint8_t status) {
+    constexpr const char* kNames[] = {"ok", "bad_length", "unknown_type", "out_of_range",
+                                      "bad_version", "not_allowed", "busy"};
+    return status < proto::kStatusCount ? kNames[status] : "unknown status";
+}
+
+BoardClient::BoardClient(ByteLink& link, ClientOptions options) : link_(link), options_(options) {}
+
+LinkStatus BoardClient::send(proto::MsgType type, const proto::ConfigPayload* config, std::uint16_t* seq_used) {
+    std::uint8_t frame[proto::kMaxFrameSize];
+    const std::uint16_t seq = tx_seq_++;
+    std::size_t n = 0;
+    switch (type) {
+        case proto::MsgType::hello: n = proto::encode_hello(seq, frame, sizeof frame); break;
+        case proto::MsgType::config_get: n = proto::encode_config_get(seq, frame, sizeof frame); break;
+        case proto::MsgType::config_set: n = proto::encode_config_set(*config, seq, frame, sizeof frame); break;
+        case proto::MsgType::poll: n = proto::encode_poll(seq, frame, sizeof frame); break;
+        case proto::MsgType::status_get: n = proto::encode_status_get(seq, frame, sizeof frame); break;
+        default: break;
+    }
+    if (seq_used != nullptr) *seq_used = seq;
+    if (tap_) tap_(CaptureKind::tx, frame, n);
+    return link_.write(frame, n);
+}
+
+void BoardClient::deliver(const Frame& frame) {
+    if (handler_) handler_(frame);
+    if (waiting_for_ && !awaited_ && waiting_for_(frame)) awaited_ = frame;
+}
+
+LinkStatus BoardClient::pump(int timeout_ms) {
+    std::uint8_t buf[4096];
+    const ReadResult r = link_.read(buf, sizeof buf, timeout_ms);
+    if (r.status != LinkStatus::ok) return r.status;
+    counters_.bytes_received += r.bytes;
+    if (tap_) tap_(CaptureKind::rx, buf, r.bytes);
+    for (std::size_t i = 0; i < r.bytes; ++i) {
+        const std::uint8_t byte = buf[i];
+        if (sync_state_ == 2 && byte != proto::kProtocolVersion) foreign_version_ = byte;
+        sync_state_ = byte == proto::kSync0 ? 1 : (sync_state_ == 1 && byte == proto::kSync1 ? 2 : 0);
+        if (!decoder_.feed(byte)) continue;
+        do {
+            Frame f;
+            f.type = decoder_.type();
+            f.seq = decoder_.seq();
+            f.payload_len = decoder_.payload_len();
+            std::memcpy(f.payload.data(), decoder_.payload(), f.payload_len);
+            static_cast<void>(seq_.accept(f.seq));
+            if (f.type == proto::MsgType::nak) ++counters_.naks;
+            deliver(f);
+        } while (decoder_.next());
+    }
+    return LinkStatus::ok;
+}
+
+std::optional<Frame> BoardClient::await(const std::function<bool(const Frame&)>& match, int timeout_ms,
+                                        LinkStatus* status) {
+    waiting_for_ = match;
+    awaited_.reset();
+    const auto deadline = Clock::now() + std::chrono::milliseconds(timeout_ms);
+    *status = LinkStatus::timeout;
+    while (!awaited_) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+        if (left <= 0) break;
+        const LinkStatus s = pump(static_cast<int>(left));
+        if (s == LinkStatus::lost) {
+            *status = s;
+            break;
+        }
+    }
+    waiting_for_ = nullptr;
+    if (awaited_) *status = LinkStatus::ok;
+    std::optional<Frame> found = awaited_;
+    awaited_.reset();
+    return found;
+}
+
+HelloResult BoardClient::hello() {
+    HelloResult result;
+    const std::uint64_t bytes_before = counters_.bytes_received;
+    const std::uint32_t frames_before = decoder_.counters().frames_ok;
+    for (int attempt = 0; attempt < options_.hello_attempts; ++attempt) {
+        if (send(proto::MsgType::hello, nullptr, nullptr) == LinkStatus::lost) {
+            result.problem = "the port went away during the handshake";
+            return result;
+        }
+        LinkStatus status;
+        auto frame = await([](const Frame& f) { return f.type == proto::MsgType::version; },
+                           options_.reply_timeout_ms, &status);
+        if (status == LinkStatus::lost) {
+            result.problem = "the port went away during the handshake";
+            return result;
+        }
+        if (!frame) continue;
+        if (!proto::parse(frame->payload.data(), frame->payload_len, &result.version)) continue;
+        if (result.version.proto_version != proto::kProtocolVersion) {
+            result.problem = "the board speaks protocol version " + std::to_string(result.version.proto_version) +
+                             "; this driftlab speaks version " + std::to_string(proto::kProtocolVersion) +
+                             " (flash matching firmware with `driftlab flash`)";
+            return result;
+        }
+        if (result.version.tick_hz == 0) {
+            result.problem = "the board reports a tick rate of 0 Hz in VERSION";
+            return result;
+        }
+        result.ok = true;
+        return result;
+    }
+    const std::uint64_t bytes = counters_.bytes_received - bytes_before;
+    if (foreign_version_ && decoder_.counters().bad_version > 0) {
+        result.problem = "the board speaks protocol version " + std::to_string(*foreign_version_) +
+                         "; this driftlab speaks version " + std::to_string(proto::kProtocolVersion) +
+                         " (flash matching firmware with `driftlab flash`)";
+    } else if (bytes == 0) {
+        result.problem = "no answer to HELLO in " +
+                         std::to_string(options_.hello_attempts * options_.reply_timeout_ms / 1000.0).substr(0, 3) +
+                         " s: not a driftlab board, wrong --baud, or firmware not flashed";
+    } else if (decoder_.counters().frames_ok == frames_before) {
+        result.problem = "the device sent " + std::to_string(bytes) +
+                         " bytes but no valid driftlab frame: not a driftlab board, or wrong --baud";
+    } else {
+        result.problem = "the board sends frames but never answered HELLO with VERSION";
+    }
+    return result;
+}
+
+ConfigResult BoardClient::configure(const proto::ConfigPayload& wanted) {
+    ConfigResult result;
+    bool acked = false;
+    for (int attempt = 0; attempt < options_.request_attempts && !acked; ++attempt) {
+        std::uint16_t seq = 0;
+        if (send(proto::MsgType::config_set, &wanted, &seq) == LinkStatus::lost) {
+            result.problem = "the port went away while configuring";
+            return result;
+        }
+        const auto set_id = proto::type_id(proto::MsgType::config_set);
+        LinkStatus status;
+        auto answer = await(
+            [&](const Frame& f) {
+                proto::AckPayload ack{};
+                proto::NakPayload nak{};
+                if (f.type == proto::MsgType::ack && proto::parse(f.payload.data(), f.payload_len, &ack)) {
+                    return ack.acked_type == set_id && ack.acked_seq == seq;
+                }
+                if (f.type == proto::MsgType::nak && proto::parse(f.payload.data(), f.payload_len, &nak)) {
+                    return nak.nacked_type == set_id && nak.nacked_seq == seq;
+                }
+                return false;
+            },
+            options_.reply_timeout_ms, &status);
+        if (status == LinkStatus::lost) {
+            result.problem = "the port went away while configuring";
+            return result;
+        }
+        if (!answer) continue;
+        if (answer->type == proto::MsgType::nak) {
+            proto::NakPayload nak{};
+            if (!proto::parse(answer->payload.data(), answer->payload_len, &nak)) continue;
+            result.problem = std::string("the board refused CONFIG_SET: ") + status_name(nak.status) +
+                             (nak.field < 6 ? std::string(" in field ") + kConfigFieldNames[nak.field] : "");
+            return result;
+        }
+        acked = true;
+    }
+    if (!acked) {
+        result.problem = "no ACK or NAK for CONFIG_SET after " + std::to_string(options_.request_attempts) + " tries";
+        return result;
+    }
+    for (int attempt = 0; attempt < options_.request_attempts; ++attempt) {
+        if (send(proto::MsgType::config_get, nullptr, nullptr) == LinkStatus::lost) {
+            result.problem = "the port went away while configuring";
+            return result;
+        }
+        LinkStatus status;
+        auto answer = await([](const Frame& f) { return f.type == proto::MsgType::config; },
+                            options_.reply_timeout_ms, &status);
+        if (status == LinkStatus::lost) {
+            result.problem = "the port went away while configuring";
+            return result;
+        }
+        if (!answer || !proto::parse(answer->payload.data(), answer->payload_len, &result.applied)) continue;
+        const std::string diff = describe_config_difference(wanted, result.applied);
+        if (!diff.empty()) {
+            result.problem = "the board acknowledged CONFIG_SET but CONFIG_GET reads back " + diff;
+            return result;
+        }
+        result.ok = true;
+        return result;
+    }
+    result.problem = "no CONFIG in answer to CONFIG_GET after " + std::to_string(options_.request_attempts) + " tries";
+    return result;
+}
+
+std::optional<proto::StatusPayload> BoardClient::status() {
+    for (int attempt = 0; attempt < options_.request_attempts; ++attempt) {
+        if (send(proto::MsgType::status_get, nullptr, nullptr) == LinkStatus::lost) return std::nullopt;
+        LinkStatus link;
+        auto answer = await([](const Frame& f) { return f.type == proto::MsgType::status; },
+                            options_.reply_timeout_ms, &link);
+        if (link == LinkStatus::lost) return std::nullopt;
+        proto::StatusPayload s{};
+        if (answer && proto::parse(answer->payload.data(), answer->payload_len, &s)) return s;
+    }
+    return std::nullopt;
+}
+
+LinkStatus BoardClient::send_poll() {
+    ++counters_.polls_sent;
+    return send(proto::MsgType::poll, nullptr, nullptr);
+}
+
+}  // namespace driftlab::host::io

@@ -1,0 +1,119 @@
+// BoardClient: the host side of protocol v1 over any ByteLink (docs/protocol.md, docs/recording.md).
+// Handshake (HELLO -> VERSION, refusing another protocol version), configuration (CONFIG_SET answered by
+// ACK, then verified by reading it back with CONFIG_GET), STATUS_GET, POLL, and reception of streamed frames
+// with sequence accounting (SeqTracker).
+//
+// How to use:
+//   BoardClient client(link);
+//   client.set_tap([&](CaptureKind k, const uint8_t* p, size_t n) { capture.write(k, p, n); });
+//   client.set_frame_handler([&](const Frame& f) { ... every frame, in order ... });
+//   auto v = client.hello();          if (!v.ok) -> v.problem says why
+//   auto c = client.configure(cfg);   if (!c.ok) -> c.problem says why
+//   loop { client.send_poll(); client.pump(timeout_ms); }   // or only pump() in stream mode
+// A LinkStatus::lost from send_poll()/pump() means the device went away: reopen the link, call
+// forget_partial_frame(), and do the handshake again. Nothing here throws.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "driftlab/proto/decoder.hpp"
+#include "driftlab/proto/messages.hpp"
+#include "host/io/byte_link.hpp"
+#include "host/io/capture.hpp"
+#include "host/io/seq_tracker.hpp"
+
+namespace driftlab::host::io {
+
+/// One decoded frame, copied out of the decoder.
+struct Frame {
+    proto::MsgType type = proto::MsgType::hello;
+    std::uint16_t seq = 0;
+    std::uint8_t payload_len = 0;
+    std::array<std::uint8_t, proto::kMaxPayload> payload{};
+};
+
+struct ClientOptions {
+    int reply_timeout_ms = 500;  ///< [ms] wait for one answer
+    int hello_attempts = 6;      ///< an Arduino resets when the port opens; its bootloader needs ~2 s
+    int request_attempts = 3;    ///< CONFIG_SET/CONFIG_GET/STATUS_GET tries
+};
+
+struct HelloResult {
+    bool ok = false;
+    std::string problem;  ///< why not, in words for the user
+    proto::VersionPayload version{};
+};
+
+struct ConfigResult {
+    bool ok = false;
+    std::string problem;
+    proto::ConfigPayload applied{};  ///< as read back with CONFIG_GET
+};
+
+/// Link-level counts for the status line and the bench.
+struct ClientCounters {
+    std::uint64_t bytes_received = 0;
+    std::uint64_t naks = 0;
+    std::uint64_t polls_sent = 0;
+};
+
+class BoardClient {
+public:
+    using Tap = std::function<void(CaptureKind, const std::uint8_t*, std::size_t)>;
+    using FrameHandler = std::function<void(const Frame&)>;
+
+    explicit BoardClient(ByteLink& link, ClientOptions options = {});
+
+    /// Sees every byte sent ('T') and received ('R') before anything else does (the capture).
+    void set_tap(Tap tap) { tap_ = std::move(tap); }
+    /// Sees every valid frame received, in order, duplicates included.
+    void set_frame_handler(FrameHandler handler) { handler_ = std::move(handler); }
+
+    HelloResult hello();
+    /// CONFIG_SET `wanted`, expect ACK, then CONFIG_GET and compare field by field.
+    ConfigResult configure(const proto::ConfigPayload& wanted);
+    std::optional<proto::StatusPayload> status();
+
+    LinkStatus send_poll();
+    /// Reads what arrives within `timeout_ms` [ms] and delivers its frames.
+    LinkStatus pump(int timeout_ms);
+
+    /// Drops a frame cut by a reconnect, so its start cannot join bytes of the new connection.
+    void forget_partial_frame() { decoder_.reset(); }
+
+    const SeqTracker& sequence() const { return seq_; }
+    SeqTracker& sequence() { return seq_; }
+    const proto::DecoderCounters& decoder_counters() const { return decoder_.counters(); }
+    const ClientCounters& counters() const { return counters_; }
+
+private:
+    LinkStatus send(proto::MsgType type, const proto::ConfigPayload* config, std::uint16_t* seq_used);
+    // Pumps until `match` accepts a frame or the timeout passes; the frame is returned.
+    std::optional<Frame> await(const std::function<bool(const Frame&)>& match, int timeout_ms, LinkStatus* status);
+    void deliver(const Frame& frame);
+
+    ByteLink& link_;
+    ClientOptions options_;
+    Tap tap_;
+    FrameHandler handler_;
+    proto::Decoder decoder_;
+    SeqTracker seq_;
+    ClientCounters counters_;
+    std::uint16_t tx_seq_ = 0;
+    std::function<bool(const Frame&)> waiting_for_;
+    std::optional<Frame> awaited_;
+    // The version byte after the last sync pair seen, to name the version of a board that speaks another one.
+    std::uint8_t sync_state_ = 0;
+    std::optional<std::uint8_t> foreign_version_;
+};
+
+/// "CONFIG_SET" and friends, for messages.
+const char* msg_type_name(std::uint8_t type_id);
+/// "out_of_range" and friends, for messages.
+const char* status_name(std::uint8_t status);
+
+}  // namespace driftlab::host::io

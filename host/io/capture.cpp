@@ -1,0 +1,141 @@
+// Capture file writer and reader (format in capture.hpp and docs/recording.md).
+#include "host/io/capture.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "host/util/error.hpp"
+
+namespace driftlab::host::io {
+namespace {
+
+constexpr std::size_t kRecordHeaderSize = 1 + 8 + 4;
+constexpr char kMagic[] = "driftlab-capture: 1";
+
+void put_le(std::string& out, std::uint64_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
+}
+
+std::uint64_t get_le(const std::uint8_t* p, int bytes) {
+    std::uint64_t v = 0;
+    for (int i = bytes - 1; i >= 0; --i) v = (v << 8) | p[i];
+    return v;
+}
+
+void write_all(int fd, const std::string& data, const std::string& path) {
+    std::size_t done = 0;
+    while (done < data.size()) {
+        const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw DeviceError(path, std::string("cannot write the capture: ") + std::strerror(errno));
+        }
+        done += static_cast<std::size_t>(n);
+    }
+}
+
+}  // namespace
+
+CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& header)
+    : path_(path), start_(std::chrono::steady_clock::now()) {
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw DeviceError(path, std::string("cannot create the capture: ") + std::strerror(errno));
+    std::string text = std::string(kMagic) + "\n";
+    for (const auto& [key, value] : header) text += key + ": " + value + "\n";
+    text += "\n";
+    write_all(fd_, text, path_);
+}
+
+CaptureWriter::~CaptureWriter() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+std::uint64_t CaptureWriter::now_us() const {
+    return static_cast<std::uint64_t>(
+        std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start_).count());
+}
+
+void CaptureWriter::write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count) {
+    std::string record;
+    record.reserve(kRecordHeaderSize + count);
+    record.push_back(static_cast<char>(kind));
+    put_le(record, now_us(), 8);
+    put_le(record, count, 4);
+    record.append(reinterpret_cast<const char*>(bytes), count);
+    write_all(fd_, record, path_);
+}
+
+void CaptureWriter::write_event(const std::string& text) {
+    write(CaptureKind::event, reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+}
+
+CaptureReader::CaptureReader(const std::string& path) : path_(path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw DataError(path, 0, "cannot open the capture");
+    data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    std::uint64_t line = 0;
+    bool ended = false;
+    while (pos_ < data_.size()) {
+        const auto nl = std::find(data_.begin() + static_cast<std::ptrdiff_t>(pos_), data_.end(), '\n');
+        if (nl == data_.end()) break;
+        const std::string text(data_.begin() + static_cast<std::ptrdiff_t>(pos_), nl);
+        pos_ = static_cast<std::size_t>(nl - data_.begin()) + 1;
+        ++line;
+        if (line == 1) {
+            if (text != kMagic) {
+                throw DataError(path, 1, "not a driftlab capture (expected '" + std::string(kMagic) + "')");
+            }
+            continue;
+        }
+        if (text.empty()) {
+            ended = true;
+            break;
+        }
+        const std::size_t colon = text.find(": ");
+        if (colon == std::string::npos) throw DataError(path, line, "header line without 'key: value'");
+        header_.emplace_back(text.substr(0, colon), text.substr(colon + 2));
+    }
+    if (line == 0) throw DataError(path, 1, "not a driftlab capture (empty or no magic line)");
+    if (!ended) throw DataError(path, line, "capture header not terminated by an empty line");
+}
+
+std::optional<std::string> CaptureReader::header_value(const std::string& key) const {
+    for (const auto& [k, v] : header_) {
+        if (k == key) return v;
+    }
+    return std::nullopt;
+}
+
+std::optional<CaptureRecord> CaptureReader::next() {
+    if (pos_ >= data_.size() || truncated_at_) return std::nullopt;
+    if (data_.size() - pos_ < kRecordHeaderSize) {
+        truncated_at_ = pos_;
+        return std::nullopt;
+    }
+    const std::uint8_t* p = data_.data() + pos_;
+    const auto kind = static_cast<CaptureKind>(p[0]);
+    if (kind != CaptureKind::rx && kind != CaptureKind::tx && kind != CaptureKind::event) {
+        throw DataError(path_, 0, "byte offset " + std::to_string(pos_) + ": unknown record kind " +
+                                      std::to_string(p[0]) + " (expected 'R', 'T' or 'E')");
+    }
+    const std::uint64_t len = get_le(p + 9, 4);
+    if (data_.size() - pos_ - kRecordHeaderSize < len) {
+        truncated_at_ = pos_;
+        return std::nullopt;
+    }
+    CaptureRecord rec;
+    rec.kind = kind;
+    rec.t_us = get_le(p + 1, 8);
+    rec.offset = pos_;
+    rec.payload.assign(p + kRecordHeaderSize, p + kRecordHeaderSize + len);
+    pos_ += kRecordHeaderSize + static_cast<std::size_t>(len);
+    return rec;
+}
+
+}  // namespace driftlab::host::io

@@ -1,0 +1,80 @@
+// Raw capture beside each recorded log (LOG.csv.cap): every byte received from the board, every byte sent to
+// it, and the recorder's events, time-stamped, so `driftlab decode` rebuilds the log exactly.
+// Format: docs/recording.md "Capture format".
+//
+//   driftlab-capture: 1\n             magic line
+//   key: value\n ...                   header (port, baud, start_utc, ...), free text without newlines
+//   \n                                 an empty line ends the header
+//   records until the end of the file, each:
+//     kind   u8   'R' received bytes, 'T' transmitted bytes, 'E' recorder event (text)
+//     t_us   u64  little-endian, monotonic microseconds since the capture started
+//     len    u32  little-endian, payload bytes
+//     payload
+//
+// Each record goes to the OS in one write(2), so a killed recorder leaves at most one cut record at the end,
+// which the reader reports (CaptureReader::truncated_at) and skips.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace driftlab::host::io {
+
+inline constexpr int kCaptureFormatVersion = 1;
+
+enum class CaptureKind : std::uint8_t { rx = 'R', tx = 'T', event = 'E' };
+
+struct CaptureRecord {
+    CaptureKind kind = CaptureKind::rx;
+    std::uint64_t t_us = 0;  ///< [us] since the capture started
+    std::vector<std::uint8_t> payload;
+    std::uint64_t offset = 0;  ///< byte offset of the record in the file, for messages
+    std::string text() const { return std::string(payload.begin(), payload.end()); }
+};
+
+using CaptureHeader = std::vector<std::pair<std::string, std::string>>;
+
+class CaptureWriter {
+public:
+    /// Creates (truncates) `path` and writes the header. Throws DeviceError when the file cannot be written.
+    CaptureWriter(const std::string& path, const CaptureHeader& header);
+    ~CaptureWriter();
+    CaptureWriter(const CaptureWriter&) = delete;
+    CaptureWriter& operator=(const CaptureWriter&) = delete;
+
+    void write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count);
+    void write_event(const std::string& text);
+    /// [us] since the capture started (the t_us of a record written now).
+    std::uint64_t now_us() const;
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+    int fd_ = -1;
+    std::chrono::steady_clock::time_point start_;
+};
+
+class CaptureReader {
+public:
+    /// Opens `path` and reads the header. Throws DataError(path, line, ...) when it is not a capture.
+    explicit CaptureReader(const std::string& path);
+    const CaptureHeader& header() const { return header_; }
+    std::optional<std::string> header_value(const std::string& key) const;
+    /// The next record, or nullopt at the end. Throws DataError naming the byte offset for an unknown kind.
+    std::optional<CaptureRecord> next();
+    /// Byte offset of a cut last record (the recorder was killed mid-write), once next() reached it.
+    std::optional<std::uint64_t> truncated_at() const { return truncated_at_; }
+
+private:
+    std::string path_;
+    std::vector<std::uint8_t> data_;
+    std::size_t pos_ = 0;
+    CaptureHeader header_;
+    std::optional<std::uint64_t> truncated_at_;
+};
+
+}  // namespace driftlab::host::io

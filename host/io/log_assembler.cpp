@@ -1,0 +1,236 @@
+// LogAssembler: capture stream -> canonical log (log_assembler.hpp).
+#include "host/io/log_assembler.hpp"
+
+#include <cstring>
+#include <utility>
+
+#include "host/util/error.hpp"
+
+namespace driftlab::host::io {
+namespace {
+
+constexpr double kQ8PerCount = 256.0;
+// Codes are 0..1023; -1 marks a raw code that never arrived.
+constexpr double kMissingRawCode = -1.0;
+
+std::string header_value(const CaptureHeader& header, const std::string& key) {
+    for (const auto& [k, v] : header) {
+        if (k == key) return v;
+    }
+    return {};
+}
+
+}  // namespace
+
+LogMetadata recording_metadata(const proto::VersionPayload& v, const proto::ConfigPayload& c,
+                               const CaptureHeader& capture_header) {
+    LogMetadata m;
+    m.set("source", std::string("record"));
+    m.set("firmware_version",
+          std::to_string(v.fw_major) + "." + std::to_string(v.fw_minor) + "." + std::to_string(v.fw_patch));
+    m.set("protocol_version", static_cast<std::int64_t>(v.proto_version));
+    m.set("board_id", static_cast<std::int64_t>(v.board_id));
+    m.set("sample_period_s", c.output_period_ms / 1000.0);
+    m.set("conversions_per_output", static_cast<std::int64_t>(c.conversions_per_output));
+    m.set("window", static_cast<std::int64_t>(c.window));
+    m.set("fit_order", static_cast<std::int64_t>(c.fit_order));
+    m.set("mode", std::string(c.mode == static_cast<std::uint8_t>(proto::OutputMode::stream) ? "stream" : "poll"));
+    m.set("raw", static_cast<std::int64_t>(c.raw));
+    m.set("adc_bits", static_cast<std::int64_t>(v.adc_bits));
+    m.set("vref_v", v.vref_mv / 1000.0);
+    m.set("tick_hz", static_cast<std::int64_t>(v.tick_hz));
+    std::string pins;
+    for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) {
+        pins += std::string(ch ? " " : "") + kChannelNames[ch] + "=ADC" + std::to_string(v.adc_pin[ch]);
+    }
+    m.set("adc_pins", pins);
+    m.set("reset_cause", static_cast<std::int64_t>(v.reset_cause));
+    m.set("assert_line", static_cast<std::int64_t>(v.assert_line));
+    for (const auto& [key, value] : capture_header) m.set(key, value);
+    return m;
+}
+
+LogAssembler::LogAssembler(std::string log_path, CaptureHeader capture_header)
+    : log_path_(std::move(log_path)), capture_header_(std::move(capture_header)) {}
+
+void LogAssembler::on_rx(std::uint64_t t_us, const std::uint8_t* bytes, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!decoder_.feed(bytes[i])) continue;
+        do {
+            Frame f;
+            f.type = decoder_.type();
+            f.seq = decoder_.seq();
+            f.payload_len = decoder_.payload_len();
+            std::memcpy(f.payload.data(), decoder_.payload(), f.payload_len);
+            handle_frame(t_us, f);
+        } while (decoder_.next());
+    }
+}
+
+void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
+    if (text == "start") {
+        start_log();
+    } else if (text == "lost") {
+        decoder_.reset();
+        if (pending_sample_) {
+            emit(pending_sample_->first, pending_sample_->second, nullptr);
+            pending_sample_.reset();
+        }
+        if (!holding_) {
+            holding_ = true;
+            lost_t_us_ = t_us;
+            first_held_t_us_.reset();
+        }
+    } else if (text == "resumed") {
+        if (holding_) release_held(std::nullopt);
+    } else if (text.rfind("gap: ", 0) == 0) {
+        ++stats_.gaps;
+        if (writer_) writer_->write_gap(text.substr(5));
+    }
+    // Other events are notes for a person reading the capture; the log does not depend on them.
+}
+
+void LogAssembler::handle_frame(std::uint64_t t_us, const Frame& frame) {
+    if (!holding_) {
+        process_frame(frame);
+        return;
+    }
+    if (!first_held_t_us_) first_held_t_us_ = t_us;
+    held_.push_back(frame);
+    proto::StatusPayload status{};
+    if (frame.type == proto::MsgType::status && proto::parse(frame.payload.data(), frame.payload_len, &status)) {
+        release_held(status);
+    }
+}
+
+void LogAssembler::release_held(std::optional<proto::StatusPayload> status) {
+    holding_ = false;
+    if (status && ticks_.started() && status->uptime_ticks < last_epoch_tick_) {
+        ++stats_.firmware_restarts;
+        seq_.restart_epoch();
+        ticks_.restart_epoch(ticks_.last() + 1);
+        last_epoch_tick_ = 0;
+        if (writer_) {
+            writer_->write_gap("firmware restarted during the gap (uptime " +
+                               std::to_string(version_ ? status->uptime_ticks / static_cast<double>(version_->tick_hz)
+                                                       : 0.0) +
+                               " s); tick and seq continue after the last row");
+        }
+    } else if (config_ && seq_.started() && first_held_t_us_ &&
+               config_->mode == static_cast<std::uint8_t>(proto::OutputMode::stream)) {
+        // A streaming board kept sending while unplugged: unwrap near where its count should be now.
+        const double gap_us = static_cast<double>(*first_held_t_us_ - lost_t_us_);
+        const double frames_per_output = config_->raw ? 2.0 : 1.0;
+        const auto advance =
+            static_cast<std::uint64_t>(gap_us / (config_->output_period_ms * 1000.0) * frames_per_output);
+        seq_.expect_near(seq_.newest() + advance);
+    }
+    std::vector<Frame> frames;
+    frames.swap(held_);
+    for (const Frame& f : frames) process_frame(f);
+}
+
+void LogAssembler::process_frame(const Frame& frame) {
+    ++stats_.frames;
+    const SeqResult seq = seq_.accept(frame.seq);
+    stats_.lost_frames = seq_.lost();
+    stats_.duplicate_frames = seq_.duplicates();
+    stats_.reordered_frames = seq_.reordered();
+    if (seq.verdict == SeqVerdict::duplicate) return;
+
+    const std::uint8_t* p = frame.payload.data();
+    switch (frame.type) {
+        case proto::MsgType::version: {
+            proto::VersionPayload v{};
+            if (proto::parse(p, frame.payload_len, &v)) version_ = v;
+            break;
+        }
+        case proto::MsgType::config: {
+            proto::ConfigPayload c{};
+            if (proto::parse(p, frame.payload_len, &c)) config_ = c;
+            break;
+        }
+        case proto::MsgType::sample: {
+            proto::SamplePayload s{};
+            if (!proto::parse(p, frame.payload_len, &s)) break;
+            last_epoch_tick_ = s.tick;
+            if (!writer_) break;
+            if (pending_sample_) emit(pending_sample_->first, pending_sample_->second, nullptr);
+            pending_sample_.reset();
+            if (config_ && config_->raw) {
+                pending_sample_ = std::make_pair(s, seq.unwrapped);
+            } else {
+                emit(s, seq.unwrapped, nullptr);
+            }
+            break;
+        }
+        case proto::MsgType::raw: {
+            proto::RawPayload r{};
+            if (!proto::parse(p, frame.payload_len, &r)) break;
+            if (pending_sample_ && pending_sample_->first.tick == r.tick) {
+                emit(pending_sample_->first, pending_sample_->second, &r);
+                pending_sample_.reset();
+            }
+            break;
+        }
+        default:
+            break;
+    }
+}
+
+void LogAssembler::start_log() {
+    if (writer_) return;
+    if (!version_ || !config_) {
+        throw DataError(header_value(capture_header_, "capture"), 0,
+                        "recording started before the board's VERSION and CONFIG were received");
+    }
+    std::vector<std::string> columns = {"tick", "sat_flags", "n_window", "dropped"};
+    if (config_->raw) {
+        for (const char* name : {"raw_gyro", "raw_accel_x", "raw_accel_y", "raw_accel_z", "flags"}) {
+            columns.emplace_back(name);
+        }
+    }
+    writer_ = std::make_unique<LogWriter>(log_path_, recording_metadata(*version_, *config_, capture_header_),
+                                          columns);
+}
+
+void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, const proto::RawPayload* raw) {
+    const std::uint64_t tick = ticks_.unwrap(sample.tick);
+    const double t_s = static_cast<double>(tick) / static_cast<double>(version_->tick_hz);
+    if (stats_.last_t_s && t_s <= *stats_.last_t_s) {
+        ++stats_.stale_samples;
+        return;
+    }
+    LogRow row;
+    row.t_s = t_s;
+    row.seq = seq;
+    for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) row.counts[ch] = sample.value_q8[ch] / kQ8PerCount;
+    row.optional_values = {static_cast<double>(tick), static_cast<double>(sample.sat_flags),
+                           static_cast<double>(sample.n_window), static_cast<double>(sample.dropped)};
+    if (config_->raw) {
+        for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) {
+            row.optional_values.push_back(raw ? static_cast<double>(raw->code[ch]) : kMissingRawCode);
+        }
+        row.optional_values.push_back(raw ? 0.0 : static_cast<double>(kFlagRawMissing));
+        if (!raw) ++stats_.raw_missing;
+    }
+    writer_->write_row(row);
+    ++stats_.rows;
+    if (!stats_.first_t_s) stats_.first_t_s = t_s;
+    stats_.last_t_s = t_s;
+    stats_.last_counts = row.counts;
+    stats_.last_dropped = sample.dropped;
+}
+
+void LogAssembler::flush() {
+    if (writer_) writer_->flush();
+}
+
+void LogAssembler::finish() {
+    if (holding_) release_held(std::nullopt);
+    if (pending_sample_ && writer_) emit(pending_sample_->first, pending_sample_->second, nullptr);
+    pending_sample_.reset();
+    if (writer_) writer_->close();
+}
+
+}  // namespace driftlab::host::io

@@ -1,0 +1,97 @@
+// LogAssembler: turns a recording's capture stream (received bytes + recorder events, capture.hpp) into the
+// canonical log (host/log). The recorder feeds it live and `driftlab decode` feeds it from the capture file,
+// through the same code, so the decoded log equals the recorded one byte for byte. docs/recording.md.
+//
+// Events it understands (text of 'E' records):
+//   "start"          handshake and configuration are done: write the log's metadata and header
+//   "lost"           the link went away: forget a cut frame; frames after it wait for the board's STATUS
+//                    (its uptime tells whether the firmware restarted) or for "resumed"
+//   "gap: <text>"    write `# gap: <text>` into the log
+//   "resumed"        the recorder finished the handshake after a reconnect
+// Rows: one per SAMPLE (joined with the RAW of the same tick in raw mode; a lost RAW leaves raw_* = -1 and
+// flags bit 0 set). t_s = unwrapped tick / tick_hz; seq = unwrapped SAMPLE seq.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "driftlab/proto/decoder.hpp"
+#include "driftlab/proto/messages.hpp"
+#include "host/io/board_client.hpp"
+#include "host/io/capture.hpp"
+#include "host/io/seq_tracker.hpp"
+#include "host/io/tick_unwrapper.hpp"
+#include "host/log/log_writer.hpp"
+
+namespace driftlab::host::io {
+
+/// flags column bit: the RAW frame belonging to this SAMPLE was lost.
+inline constexpr int kFlagRawMissing = 1;
+
+/// What has been assembled so far (the status line and the final summary read it).
+struct AssemblyStats {
+    std::uint64_t rows = 0;
+    std::uint64_t frames = 0;          ///< valid frames received, duplicates included
+    std::uint64_t lost_frames = 0;     ///< sequence numbers never received
+    std::uint64_t duplicate_frames = 0;
+    std::uint64_t reordered_frames = 0;
+    std::uint64_t stale_samples = 0;   ///< SAMPLEs whose time was not after the previous row (repeated answers)
+    std::uint64_t raw_missing = 0;
+    std::uint64_t gaps = 0;
+    std::uint64_t firmware_restarts = 0;
+    std::optional<double> first_t_s;   ///< [s] of the first row
+    std::optional<double> last_t_s;    ///< [s] of the newest row
+    std::array<double, kChannelCount> last_counts{};  ///< [counts] newest row
+    std::uint16_t last_dropped = 0;    ///< firmware's dropped-conversion counter in the newest SAMPLE
+};
+
+class LogAssembler {
+public:
+    /// `log_path` is created at the "start" event; `capture_header` supplies port, baud, start time...
+    LogAssembler(std::string log_path, CaptureHeader capture_header);
+
+    void on_rx(std::uint64_t t_us, const std::uint8_t* bytes, std::size_t count);
+    void on_event(std::uint64_t t_us, const std::string& text);
+    /// Writes a pending row and closes the log. Throws what LogWriter throws.
+    void finish();
+    void flush();
+
+    bool started() const { return writer_ != nullptr; }
+    const AssemblyStats& stats() const { return stats_; }
+    const std::optional<proto::VersionPayload>& version() const { return version_; }
+    const std::optional<proto::ConfigPayload>& config() const { return config_; }
+
+private:
+    void handle_frame(std::uint64_t t_us, const Frame& frame);
+    void process_frame(const Frame& frame);
+    void release_held(std::optional<proto::StatusPayload> status);
+    void emit(const proto::SamplePayload& sample, std::uint64_t seq, const proto::RawPayload* raw);
+    void start_log();
+
+    std::string log_path_;
+    CaptureHeader capture_header_;
+    std::unique_ptr<LogWriter> writer_;
+    proto::Decoder decoder_;
+    SeqTracker seq_;
+    TickUnwrapper ticks_;
+    std::optional<proto::VersionPayload> version_;
+    std::optional<proto::ConfigPayload> config_;
+    std::optional<std::pair<proto::SamplePayload, std::uint64_t>> pending_sample_;
+    bool holding_ = false;
+    std::uint64_t lost_t_us_ = 0;
+    std::optional<std::uint64_t> first_held_t_us_;
+    std::vector<Frame> held_;
+    std::uint64_t last_epoch_tick_ = 0;  // newest SAMPLE tick since the last firmware start [ticks]
+    AssemblyStats stats_;
+};
+
+/// Metadata of a recorded log: firmware facts from VERSION, configuration from CONFIG, then the capture
+/// header (port, baud, start time...).
+LogMetadata recording_metadata(const proto::VersionPayload& version, const proto::ConfigPayload& config,
+                               const CaptureHeader& capture_header);
+
+}  // namespace driftlab::host::io

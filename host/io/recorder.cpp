@@ -1,0 +1,174 @@
+// Recorder session: handshake, configuration, poll/stream loop, reconnect with back-off (recorder.hpp).
+#include "host/io/recorder.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <sstream>
+#include <thread>
+
+#include "host/io/board_client.hpp"
+#include "host/io/capture.hpp"
+#include "host/io/serial_port.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::io {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr auto kFlushInterval = std::chrono::milliseconds(1000);
+constexpr auto kProgressInterval = std::chrono::milliseconds(250);
+constexpr int kFirstBackoffMs = 250;
+constexpr int kStreamPumpMs = 50;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string format_s(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", s);
+    return text;
+}
+
+// Handshake and configuration on an open link; empty string when the board is ready, else the problem.
+std::string bring_up(BoardClient& client, const proto::ConfigPayload& config) {
+    const HelloResult hello = client.hello();
+    if (!hello.ok) return hello.problem;
+    static_cast<void>(client.status());  // its uptime tells the log whether the firmware restarted
+    const ConfigResult applied = client.configure(config);
+    if (!applied.ok) return applied.problem;
+    return {};
+}
+
+bool done(const AssemblyStats& s, double duration_s) {
+    return duration_s > 0.0 && s.first_t_s && s.last_t_s && *s.last_t_s - *s.first_t_s >= duration_s;
+}
+
+}  // namespace
+
+std::string utc_now_iso8601() {
+    const auto now = std::chrono::system_clock::now();
+    const std::time_t secs = std::chrono::system_clock::to_time_t(now);
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+    std::tm tm{};
+    gmtime_r(&secs, &tm);
+    char text[80];
+    std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", tm.tm_year + 1900, tm.tm_mon + 1,
+                  tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, static_cast<int>(ms));
+    return text;
+}
+
+RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop, const RecordProgress& progress) {
+    const std::string capture_path = options.capture_path.empty() ? options.log_path + ".cap" : options.capture_path;
+    SerialPort port(options.port, options.baud);
+
+    const CaptureHeader header = {{"port", options.port},
+                                  {"baud", std::to_string(options.baud)},
+                                  {"start_utc", utc_now_iso8601()},
+                                  {"recorder", options.recorder_name},
+                                  {"capture", std::filesystem::path(capture_path).filename().string()}};
+    auto capture = std::make_unique<CaptureWriter>(capture_path, header);
+    LogAssembler assembler(options.log_path, header);
+
+    BoardClient client(port);
+    client.set_tap([&](CaptureKind kind, const std::uint8_t* bytes, std::size_t n) {
+        capture->write(kind, bytes, n);
+        if (kind == CaptureKind::rx) assembler.on_rx(capture->now_us(), bytes, n);
+    });
+    auto event = [&](const std::string& text) {
+        capture->write_event(text);
+        assembler.on_event(capture->now_us(), text);
+    };
+
+    const std::string problem = bring_up(client, options.config);
+    if (!problem.empty()) {
+        capture.reset();
+        std::filesystem::remove(capture_path);
+        throw DeviceError(options.port, problem);
+    }
+    event("start");
+
+    RecordSummary summary;
+    const auto t0 = Clock::now();
+    auto last_flush = t0;
+    auto last_progress = t0;
+    const bool poll_mode = options.config.mode == static_cast<std::uint8_t>(proto::OutputMode::poll);
+    const auto period = std::chrono::milliseconds(options.config.output_period_ms);
+    auto next_poll = Clock::now();
+
+    while (!stop.load() && !done(assembler.stats(), options.duration_s)) {
+        LinkStatus link = LinkStatus::ok;
+        if (poll_mode) {
+            const auto now = Clock::now();
+            if (now >= next_poll) {
+                link = client.send_poll();
+                next_poll += period;
+                if (next_poll < now) next_poll = now + period;  // fell behind (slow disk, suspend): no burst
+            }
+            if (link != LinkStatus::lost) {
+                const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_poll - Clock::now());
+                link = client.pump(static_cast<int>(std::clamp<std::int64_t>(wait.count(), 0, 100)));
+            }
+        } else {
+            link = client.pump(kStreamPumpMs);
+        }
+
+        if (link == LinkStatus::lost) {
+            event("lost");
+            const double lost_at_s = seconds_since(t0);
+            const std::string last_t =
+                assembler.stats().last_t_s ? "t_s=" + format_s(*assembler.stats().last_t_s) : "before the first row";
+            port.close();
+            client.forget_partial_frame();
+            int backoff_ms = kFirstBackoffMs;
+            int attempts = 0;
+            bool back = false;
+            while (!stop.load() && !back) {
+                if (progress) progress(assembler.stats(), seconds_since(t0), false);
+                std::this_thread::sleep_for(std::chrono::milliseconds(backoff_ms));
+                backoff_ms = std::min(backoff_ms * 2, options.reconnect_max_backoff_ms);
+                ++attempts;
+                if (!port.reopen()) continue;
+                client.forget_partial_frame();
+                const std::string again = bring_up(client, options.config);
+                if (again.empty()) {
+                    back = true;
+                } else {
+                    capture->write_event("reconnect failed: " + again);
+                    event("lost");
+                    port.close();
+                }
+            }
+            if (!back) break;
+            ++summary.reconnects;
+            event("gap: link lost after " + last_t + " (" + format_s(lost_at_s) +
+                  " s into the recording), reconnected after " + format_s(seconds_since(t0) - lost_at_s) + " s, " +
+                  std::to_string(attempts) + " attempts");
+            event("resumed");
+            next_poll = Clock::now();
+        }
+
+        const auto now = Clock::now();
+        if (now - last_flush >= kFlushInterval) {
+            assembler.flush();
+            last_flush = now;
+        }
+        if (progress && now - last_progress >= kProgressInterval) {
+            progress(assembler.stats(), seconds_since(t0), true);
+            last_progress = now;
+        }
+    }
+
+    summary.stopped_by_request = stop.load();
+    event("stop");
+    assembler.finish();
+    summary.stats = assembler.stats();
+    summary.polls_sent = client.counters().polls_sent;
+    summary.wall_s = seconds_since(t0);
+    if (progress) progress(summary.stats, summary.wall_s, true);
+    return summary;
+}
+
+}  // namespace driftlab::host::io

@@ -1,0 +1,49 @@
+// Recorder: one `driftlab record` session. Opens the port, does the handshake and the configuration, then
+// polls (the paper's mode) or listens (stream mode) until the board-time duration is reached or a stop is
+// requested; every byte goes to the capture first, then through LogAssembler into the canonical log.
+// Losing the port is survived: it is reopened with back-off, the handshake is repeated, and the gap is
+// written into the log. docs/recording.md.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "driftlab/proto/messages.hpp"
+#include "host/io/log_assembler.hpp"
+
+namespace driftlab::host::io {
+
+struct RecordOptions {
+    std::string port;
+    int baud = 115200;
+    proto::ConfigPayload config{};   ///< what CONFIG_SET asks for
+    double duration_s = 0.0;         ///< [s] of board time (t_s span of the rows); 0 = until stopped
+    std::string log_path;
+    std::string capture_path;        ///< default: log_path + ".cap"
+    int reconnect_max_backoff_ms = 4000;  ///< [ms] longest wait between reopen attempts
+    std::string recorder_name = "driftlab";
+};
+
+/// How the session went, for the final message.
+struct RecordSummary {
+    AssemblyStats stats;
+    std::uint64_t polls_sent = 0;
+    std::uint64_t reconnects = 0;
+    double wall_s = 0.0;  ///< [s] of wall-clock time
+    bool stopped_by_request = false;
+};
+
+/// Called a few times a second with the progress so far (the live status line); `connected` is false
+/// while the port is away.
+using RecordProgress = std::function<void(const AssemblyStats&, double wall_s, bool connected)>;
+
+/// Runs the session. Throws DeviceError when the port cannot be opened or the device is not a driftlab board
+/// of this protocol version (nothing is left behind then), UsageError/DeviceError from the log writer.
+RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop, const RecordProgress& progress);
+
+/// The current UTC time as ISO 8601 with milliseconds ("2026-11-22T10:00:00.123Z").
+std::string utc_now_iso8601();
+
+}  // namespace driftlab::host::io

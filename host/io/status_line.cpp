@@ -1,0 +1,36 @@
+// Status line formatting (status_line.hpp).
+#include "host/io/status_line.hpp"
+
+#include <cstdio>
+
+#include "host/util/units.hpp"
+
+namespace driftlab::host::io {
+
+double loss_percent(const AssemblyStats& s) {
+    const double sent = static_cast<double>(s.frames - s.duplicate_frames + s.lost_frames);
+    return sent > 0.0 ? 100.0 * static_cast<double>(s.lost_frames) / sent : 0.0;
+}
+
+std::string format_status_line(const AssemblyStats& s, double wall_s, bool connected) {
+    char text[256];
+    int n = std::snprintf(text, sizeof text, "%7.1f s  rows %llu  lost %llu (%.2f %%)", wall_s,
+                          static_cast<unsigned long long>(s.rows), static_cast<unsigned long long>(s.lost_frames),
+                          loss_percent(s));
+    if (!connected) {
+        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  PORT LOST, reconnecting...");
+        return text;
+    }
+    if (s.rows > 0) {
+        const auto& c = s.last_counts;
+        const double mid = kMidScaleCode;
+        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
+                      "  gyro %+.2f deg/s  accel %+.3f %+.3f %+.3f g  dropped %u",
+                      (c[0] - mid) * kGyroDpsPerCount, (c[1] - mid) * kAccelGPerCount,
+                      (c[2] - mid) * kAccelGPerCount, (c[3] - mid) * kAccelGPerCount,
+                      static_cast<unsigned>(s.last_dropped));
+    }
+    return text;
+}
+
+}  // namespace driftlab::host::io

@@ -1,0 +1,108 @@
+// Helpers of the end-to-end tests (e2e_support.hpp).
+#include "tests/e2e/e2e_support.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+#include <fcntl.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace driftlab::e2e {
+
+std::uint16_t synthetic_code(Channel c, std::uint64_t tick) {
+    const double t_s = static_cast<double>(tick) / 250000.0;
+    std::uint64_t h = (tick * 0x9E3779B97F4A7C15ull) ^ (static_cast<std::uint64_t>(channel_index(c)) << 56);
+    h ^= h >> 31;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 29;
+    const int noise = static_cast<int>(h % 5) - 2;
+    const double rise = 3.0 * (1.0 - std::exp(-t_s / 411.0)) + 10.0 * channel_index(c);
+    return static_cast<std::uint16_t>(500 + static_cast<int>(rise) + noise);
+}
+
+BoardThread::BoardThread(host::io::PtyBoardOptions options) : options_(std::move(options)) {
+    thread_ = std::thread([this] {
+        summary_ = host::io::serve_pty_board(options_, synthetic_code, stop_, [this](const std::string& p) {
+            if (!ready_.load()) {
+                path_ = p;
+                ready_.store(true);
+            }
+        });
+    });
+}
+
+BoardThread::~BoardThread() {
+    stop_.store(true);
+    join();
+}
+
+void BoardThread::join() {
+    if (thread_.joinable()) thread_.join();
+}
+
+std::string BoardThread::path() {
+    while (!ready_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return path_;
+}
+
+pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
+        std::vector<char*> argv;
+        argv.push_back(const_cast<char*>(DRIFTLAB_BIN));
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::execv(DRIFTLAB_BIN, argv.data());
+        ::_exit(127);
+    }
+    return pid;
+}
+
+RunResult wait_child(pid_t pid, const std::string& output_file) {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    RunResult r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.output = read_text(output_file);
+    return r;
+}
+
+RunResult run_driftlab(const std::vector<std::string>& args, const std::filesystem::path& dir) {
+    const std::string out = (dir / "driftlab.out").string();
+    return wait_child(spawn_driftlab(args, out), out);
+}
+
+TempDir::TempDir(const std::string& name)
+    : path_(std::filesystem::temp_directory_path() / ("driftlab_e2e_" + name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+}
+
+TempDir::~TempDir() { std::filesystem::remove_all(path_); }
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t nl = text.find('\n', start);
+        if (nl == std::string::npos) break;  // an unterminated last line is not a line
+        lines.push_back(text.substr(start, nl - start));
+        start = nl + 1;
+    }
+    return lines;
+}
+
+}  // namespace driftlab::e2e

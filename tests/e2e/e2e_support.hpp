@@ -1,0 +1,68 @@
+// Helpers of the end-to-end tests: a simulated board on a pseudo-terminal in a thread, the driftlab binary as
+// a child process, temporary folders, and file comparison.
+#pragma once
+
+#include <sys/types.h>
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "host/io/pty_board.hpp"
+
+namespace driftlab::e2e {
+
+/// A deterministic sensor: mid-scale plus a slow rise and +-2 counts of hashed noise, per channel.
+std::uint16_t synthetic_code(Channel c, std::uint64_t tick);
+
+/// A board served on a pseudo-terminal from a thread until destroyed (or its duration ends).
+class BoardThread {
+public:
+    explicit BoardThread(host::io::PtyBoardOptions options);
+    ~BoardThread();
+    /// Waits until the pseudo-terminal exists and returns the path clients open.
+    std::string path();
+    void join();
+    const host::io::PtyBoardSummary& summary() const { return summary_; }
+
+private:
+    host::io::PtyBoardOptions options_;
+    std::atomic<bool> stop_{false};
+    std::atomic<bool> ready_{false};
+    std::string path_;
+    host::io::PtyBoardSummary summary_;
+    std::thread thread_;
+};
+
+/// Result of a finished child process.
+struct RunResult {
+    int exit_code = -1;  ///< -1 when killed by a signal
+    std::string output;  ///< stdout and stderr together
+};
+
+/// Starts `driftlab args...` with its output going to `output_file`; returns its pid.
+pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file);
+/// Waits for the child and collects its exit status and output.
+RunResult wait_child(pid_t pid, const std::string& output_file);
+/// spawn + wait.
+RunResult run_driftlab(const std::vector<std::string>& args, const std::filesystem::path& dir);
+
+/// A fresh folder under the system temp dir, removed by the destructor.
+class TempDir {
+public:
+    explicit TempDir(const std::string& name);
+    ~TempDir();
+    const std::filesystem::path& path() const { return path_; }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    std::filesystem::path path_;
+};
+
+std::string read_text(const std::string& path);
+std::vector<std::string> lines_of(const std::string& text);
+
+}  // namespace driftlab::e2e

@@ -1,0 +1,101 @@
+// `driftlab record` refuses what is not a driftlab board of protocol v1: a clear message and exit code 4.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <random>
+#include <thread>
+
+#include "driftlab/proto/encoder.hpp"
+#include "driftlab/proto/wire.hpp"
+#include "host/io/pty_bridge.hpp"
+#include "tests/e2e/e2e_support.hpp"
+
+using namespace driftlab;
+using namespace driftlab::e2e;
+
+namespace {
+
+constexpr int kDeviceErrorExit = 4;
+
+// Something on a pseudo-terminal that answers every write with `answer(bytes_in)`.
+class FakeDevice {
+public:
+    explicit FakeDevice(std::function<std::vector<std::uint8_t>()> answer) : answer_(std::move(answer)) {
+        thread_ = std::thread([this] {
+            std::uint8_t buf[256];
+            while (!stop_.load()) {
+                if (bridge_.read(buf, sizeof buf, 10) > 0) {
+                    const auto out = answer_();
+                    bridge_.write(out.data(), out.size());
+                }
+            }
+        });
+    }
+    ~FakeDevice() {
+        stop_.store(true);
+        thread_.join();
+    }
+    std::string path() const { return bridge_.slave_path(); }
+
+private:
+    host::io::PtyBridge bridge_;
+    std::function<std::vector<std::uint8_t>()> answer_;
+    std::atomic<bool> stop_{false};
+    std::thread thread_;
+};
+
+void expect_refused(const RunResult& r, const std::string& words, const TempDir& dir) {
+    EXPECT_EQ(r.exit_code, kDeviceErrorExit) << r.output;
+    EXPECT_NE(r.output.find(words), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("rec.csv")));
+    EXPECT_FALSE(std::filesystem::exists(dir.file("rec.csv.cap")));
+}
+
+}  // namespace
+
+TEST(RecordErrors, MissingPortNamesThePath) {
+    TempDir dir("noport");
+    const RunResult r = run_driftlab({"record", "--port", dir.file("ttyNONE"), "-o", dir.file("rec.csv")}, dir.path());
+    expect_refused(r, dir.file("ttyNONE") + ": cannot open", dir);
+}
+
+TEST(RecordErrors, AFileThatIsNotATerminalIsRefused) {
+    TempDir dir("notatty");
+    const RunResult r = run_driftlab({"record", "--port", "/dev/null", "-o", dir.file("rec.csv")}, dir.path());
+    expect_refused(r, "not a serial port", dir);
+}
+
+TEST(RecordErrors, ASilentDeviceIsNotADriftlabBoard) {
+    TempDir dir("silent");
+    host::io::PtyBridge silent;
+    const RunResult r = run_driftlab({"record", "--port", silent.slave_path(), "-o", dir.file("rec.csv")}, dir.path());
+    expect_refused(r, "no answer to HELLO", dir);
+}
+
+TEST(RecordErrors, ADeviceAnsweringGarbageIsNotADriftlabBoard) {
+    TempDir dir("garbage");
+    std::mt19937 rng(7);
+    FakeDevice garbage([&] {
+        std::vector<std::uint8_t> out(64);
+        for (auto& b : out) b = static_cast<std::uint8_t>(rng());
+        return out;
+    });
+    const RunResult r = run_driftlab({"record", "--port", garbage.path(), "-o", dir.file("rec.csv")}, dir.path());
+    expect_refused(r, "no valid driftlab frame", dir);
+}
+
+TEST(RecordErrors, ABoardOfAnotherProtocolVersionIsRefusedByNumber) {
+    TempDir dir("version");
+    FakeDevice future([] {
+        proto::VersionPayload v{};
+        v.proto_version = 2;
+        v.tick_hz = 250000;
+        std::vector<std::uint8_t> out(64);
+        out.resize(proto::encode_version(v, 0, out.data(), out.size()));
+        out[proto::kOffsetVersion] = 2;  // a version-2 frame header, as a newer firmware would send
+        return out;
+    });
+    const RunResult r = run_driftlab({"record", "--port", future.path(), "-o", dir.file("rec.csv")}, dir.path());
+    expect_refused(r, "protocol version 2", dir);
+}
