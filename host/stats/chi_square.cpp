@@ -1,5 +1,7 @@
-// Chi-square CDF and quantile through the regularized incomplete gamma function (docs/allan.md §4).
+// Chi-square CDF and quantile through the regularized incomplete gamma function of host/util (docs/allan.md §4).
 #include "host/stats/chi_square.hpp"
+
+#include "host/util/special_functions.hpp"
 
 #include <cmath>
 #include <limits>
@@ -7,47 +9,6 @@
 
 namespace driftlab::host::stats {
 namespace {
-
-constexpr double kEps = 1e-16;
-constexpr double kTiny = 1e-300;
-constexpr int kMaxIterations = 10000;
-
-// exp(-x + a ln x - ln Gamma(a)): the common prefactor of the series and the continued fraction.
-double gamma_prefactor(double a, double x) { return std::exp(-x + a * std::log(x) - std::lgamma(a)); }
-
-double gamma_p_series(double a, double x) {
-    double ap = a;
-    double term = 1.0 / a;
-    double sum = term;
-    for (int i = 0; i < kMaxIterations; ++i) {
-        ap += 1.0;
-        term *= x / ap;
-        sum += term;
-        if (std::fabs(term) < std::fabs(sum) * kEps) break;
-    }
-    return sum * gamma_prefactor(a, x);
-}
-
-// Q(a, x) by the modified Lentz method on the Legendre continued fraction.
-double gamma_q_continued_fraction(double a, double x) {
-    double b = x + 1.0 - a;
-    double c = 1.0 / kTiny;
-    double d = 1.0 / b;
-    double h = d;
-    for (int i = 1; i < kMaxIterations; ++i) {
-        const double an = -i * (i - a);
-        b += 2.0;
-        d = an * d + b;
-        if (std::fabs(d) < kTiny) d = kTiny;
-        c = b + an / c;
-        if (std::fabs(c) < kTiny) c = kTiny;
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::fabs(delta - 1.0) < kEps) break;
-    }
-    return gamma_prefactor(a, x) * h;
-}
 
 // Standard normal quantile by bisection on erfc: only used for a starting point.
 double normal_quantile(double p) {
@@ -61,22 +22,6 @@ double normal_quantile(double p) {
 }
 
 }  // namespace
-
-double regularized_gamma_p(double a, double x) {
-    if (!(a > 0.0)) throw std::invalid_argument("incomplete gamma: a must be > 0");
-    if (x <= 0.0) return 0.0;
-    if (std::isinf(x)) return 1.0;
-    if (x < a + 1.0) return gamma_p_series(a, x);
-    return 1.0 - gamma_q_continued_fraction(a, x);
-}
-
-double regularized_gamma_q(double a, double x) {
-    if (!(a > 0.0)) throw std::invalid_argument("incomplete gamma: a must be > 0");
-    if (x <= 0.0) return 1.0;
-    if (std::isinf(x)) return 0.0;
-    if (x < a + 1.0) return 1.0 - gamma_p_series(a, x);
-    return gamma_q_continued_fraction(a, x);
-}
 
 double chi_square_cdf(double x, double dof) { return regularized_gamma_p(0.5 * dof, 0.5 * x); }
 
