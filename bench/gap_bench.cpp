@@ -1,0 +1,58 @@
+// Wall time of `driftlab gap` (diagnose()) on a 4000 s log at 1 Hz, all four channels of the paper's unit, with a
+// second thermal time constant planted on the gyro so the candidate fits run too. Prints; never asserts.
+#include <cmath>
+
+#include <benchmark/benchmark.h>
+
+#include "host/gap/diagnose.hpp"
+#include "host/gap/sim_chain.hpp"
+
+namespace {
+
+using namespace driftlab;
+using namespace driftlab::host;
+
+LogData paper_log(bool planted) {
+    gap::GapModel m;
+    m.unit = sim::paper_model();
+    m.unit.effects.clear();
+    m.smoothing = {1.0, 25, 25, 0};
+    for (std::size_t c = 0; c < kChannelCount; ++c) m.base[c] = {sim::kPaperDrift[c], c == 0 ? 1.05 : 1.5};
+    LogData log;
+    log.source_name = "bench";
+    for (std::size_t k = 0; k < 4000; ++k) {
+        log.t_s.push_back(static_cast<double>(k + 1));
+        log.seq.push_back(k);
+    }
+    gap::SimRequest req;
+    req.t_s = &log.t_s;
+    if (planted) {
+        req.added_counts[0].resize(log.t_s.size());
+        for (std::size_t k = 0; k < log.t_s.size(); ++k) req.added_counts[0][k] = 2.0 * -std::expm1(-log.t_s[k] / 2000.0);
+    }
+    log.counts = gap::simulate(m, req, 42);
+    log.metadata.set("sample_period_s", 1.0);
+    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(25));
+    log.metadata.set("window", static_cast<std::int64_t>(25));
+    log.metadata.set("fit_order", static_cast<std::int64_t>(0));
+    return log;
+}
+
+void run(benchmark::State& state, bool planted) {
+    const LogData log = paper_log(planted);
+    gap::GapOptions o;
+    for (auto _ : state) {
+        const gap::GapResult r = gap::diagnose(log, sim::paper_model(), o);
+        benchmark::DoNotOptimize(r.verdict);
+        state.counters["located"] = static_cast<double>(r.located.size());
+        state.counters["candidates"] = static_cast<double>(r.tried.size());
+    }
+}
+
+void BM_GapCleanLog4000s(benchmark::State& state) { run(state, false); }
+void BM_GapPlantedLog4000s(benchmark::State& state) { run(state, true); }
+
+BENCHMARK(BM_GapCleanLog4000s)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_GapPlantedLog4000s)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+}  // namespace

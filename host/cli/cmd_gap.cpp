@@ -1,0 +1,108 @@
+// `driftlab gap REAL.csv`: where the calibrated simulator differs from a real log, which effect explains it and
+// how far the gap shrinks once that effect is added (host/gap, docs/gap.md).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "host/cli/commands.hpp"
+#include "host/gap/candidates.hpp"
+#include "host/gap/diagnose.hpp"
+#include "host/gap/gap_json.hpp"
+#include "host/gap/gap_report.hpp"
+#include "host/log/log_reader.hpp"
+#include "host/util/error.hpp"
+#include "sim/model/model_file.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct GapCommandOptions {
+    std::string path;
+    std::string model_path;
+    std::vector<std::string> channels;
+    bool json = false;
+    std::string report_dir;
+    int replicates = 40;
+    std::uint64_t seed = 1;
+    double fit_fraction = 0.6;
+    bool locate_only = false;
+};
+
+void print_text(const gap::GapResult& r) {
+    std::printf("verdict: %s\n", r.verdict.c_str());
+    std::printf("gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f\n",
+                r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout);
+    std::printf("located cells (|z| > %.2f and beyond the margin): %zu\n", r.before.threshold, r.located.size());
+    for (std::size_t i = 0; i < r.located.size() && i < 15; ++i) {
+        const auto& l = r.located[i];
+        const auto& c = r.layout[l.index];
+        std::printf("  %-5s %-16s %-28s %-7s z %7.1f  %s %.3g\n", c.statistic.c_str(), c.channel.c_str(), c.cell.c_str(),
+                    gap::segment_name(c.segment), l.z, std::isnan(l.ratio) ? "diff" : "ratio",
+                    std::isnan(l.ratio) ? l.difference : l.ratio);
+    }
+    if (!r.tried.empty()) std::printf("candidates (fitted on the fitting part, judged on the held-out part):\n");
+    for (const auto& e : r.tried) {
+        std::printf("  %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.effect.c_str(),
+                    e.channel.c_str(), e.accepted ? "ACCEPTED" : "rejected", e.heldout_before, e.heldout_after,
+                    100 * e.heldout_shrink, e.loss_gain, e.penalty);
+        for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
+        if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
+        std::printf("\n");
+    }
+    std::printf("not identifiable from a static log:");
+    for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
+    std::printf("\n");
+    if (r.timing.sequence_jumps || r.timing.gap_events)
+        std::printf("timing: %zu sequence jumps (%llu frames lost), %zu gap events\n", r.timing.sequence_jumps,
+                    static_cast<unsigned long long>(r.timing.lost_frames), r.timing.gap_events);
+}
+
+void run(const GapCommandOptions& o) {
+    const LogData log = read_log(o.path);
+    const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
+    gap::GapOptions options;
+    options.replicates = o.replicates;
+    options.seed = o.seed;
+    options.fit_fraction = o.fit_fraction;
+    options.explain = !o.locate_only;
+    for (const std::string& name : o.channels) {
+        bool found = false;
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            if (name == kChannelNames[c]) options.channels[c] = found = true;
+        if (!found) throw UsageError("--channel: unknown channel '" + name + "' (gyro, accel_x, accel_y, accel_z)");
+    }
+    const gap::GapResult r = gap::diagnose(log, unit, options);
+    if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options);
+    if (o.json) {
+        std::cout << gap::gap_to_json(r, options.replicates).dump(2) << "\n";
+    } else {
+        print_text(r);
+        if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
+    }
+}
+
+}  // namespace
+
+void register_gap(CLI::App& app) {
+    auto o = std::make_shared<GapCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("gap", "Sim-to-real gap: where the calibrated simulator differs from a real log, "
+                                              "which effect explains it, how far the gap shrinks");
+    cmd->add_option("file", o->path, "Real canonical log")->required();
+    cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter); default: the paper's unit");
+    cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
+    cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
+    cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)");
+    cmd->add_option("--fit-fraction", o->fit_fraction, "First part of the log (by time) used to fit candidates")
+        ->check(CLI::Range(0.3, 0.85));
+    cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
+    cmd->add_flag("--json", o->json,
+                  "Print JSON (keys: verdict, explanations, located, located_after, gap_before, gap_after, "
+                  "not_identifiable, not_tried, calibration, timing)");
+    cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace driftlab::host::cli

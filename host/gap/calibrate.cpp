@@ -1,0 +1,145 @@
+// Base-model calibration; see calibrate.hpp.
+#include "host/gap/calibrate.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "host/fit/lm_fit.hpp"
+#include "host/gap/sim_chain.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::gap {
+
+namespace {
+
+constexpr int kCalibrationReplicates = 3;
+constexpr int kBisectionSteps = 16;
+
+double median(std::vector<double> v) {
+    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+int metadata_int(const LogData& log, const std::string& key, int fallback, int lo, int hi) {
+    if (!log.metadata.has(key)) return fallback;
+    const auto v = log.metadata.get_int(key);
+    if (!v || *v < lo || *v > hi)
+        throw DataError(log.source_name, 0,
+                        "metadata '" + key + "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<int>(*v);
+}
+
+// Sum of the squared smoother weights (gap-method §1): order 0 -> 1/N; order 1 at the newest sample -> 2(2N-1)/(N(N+1)).
+double kernel_power(const Smoothing& s) {
+    const double n = s.window;
+    return s.fit_order == 0 ? 1.0 / n : 2.0 * (2.0 * n - 1.0) / (n * (n + 1.0));
+}
+
+}  // namespace
+
+Smoothing smoothing_from_log(const LogData& log) {
+    Smoothing s;
+    if (log.metadata.has("sample_period_s")) {
+        const auto v = log.metadata.get_double("sample_period_s");
+        if (!v || !(*v > 0.0)) throw DataError(log.source_name, 0, "metadata 'sample_period_s' must be a positive number [s]");
+        s.sample_period_s = *v;
+    } else {
+        std::vector<double> dt;
+        for (std::size_t i = 1; i < log.t_s.size(); ++i) dt.push_back(log.t_s[i] - log.t_s[i - 1]);
+        if (dt.empty()) throw DataError(log.source_name, 0, "needs at least two samples");
+        s.sample_period_s = median(dt);
+    }
+    s.conversions_per_output = metadata_int(log, "conversions_per_output", 1, 1, 64);
+    s.window = metadata_int(log, "window", 1, 1, 64);
+    s.fit_order = metadata_int(log, "fit_order", 0, 0, 1);
+    return s;
+}
+
+std::array<bool, kChannelCount> varying_channels(const LogData& log) {
+    std::array<bool, kChannelCount> out{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        const auto& v = log.counts[c];
+        out[c] = !v.empty() && std::any_of(v.begin(), v.end(), [&](double x) { return x != v.front(); });
+    }
+    return out;
+}
+
+double short_lag_spread(const std::vector<double>& residual) {
+    if (residual.size() < 3) return 0.0;
+    std::vector<double> d(residual.size() - 1);
+    for (std::size_t i = 0; i + 1 < residual.size(); ++i) d[i] = residual[i + 1] - residual[i];
+    const double med = median(d);
+    std::vector<double> dev(d.size());
+    for (std::size_t i = 0; i < d.size(); ++i) dev[i] = std::abs(d[i] - med);
+    // +0.5 count keeps quantised differences (many exact zeros) from being clipped away.
+    const double limit = 6.0 * 1.4826 * median(dev) + 0.5;
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (double x : d) {
+        if (std::abs(x - med) > limit) continue;
+        sum += x * x;
+        ++n;
+    }
+    return n ? std::sqrt(sum / static_cast<double>(n) / 2.0) : 0.0;
+}
+
+void match_noise(GapModel& model, const std::vector<double>& t_s, const std::array<bool, kChannelCount>& channels,
+                 const std::array<double, kChannelCount>& target_spread, std::uint64_t seed) {
+    const double h2 = kernel_power(model.smoothing);
+    std::array<double, kChannelCount> lo{}, hi{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        // Start from the additive-quantiser reading sigma_obs^2 = (sigma_n^2 + 1/12) sum h^2, then bracket it.
+        const double guess = std::sqrt(std::max(0.0, target_spread[c] * target_spread[c] / h2 - 1.0 / 12.0));
+        lo[c] = 0.0;
+        hi[c] = 3.0 * guess + 1.0;
+    }
+    auto simulated_spread = [&](const GapModel& m) {
+        std::array<double, kChannelCount> out{};
+        for (int r = 0; r < kCalibrationReplicates; ++r) {
+            SimRequest req;
+            req.t_s = &t_s;
+            req.channels = channels;
+            const SimOutput sim = simulate(m, req, seed + 7919u * static_cast<std::uint64_t>(r));
+            for (std::size_t c = 0; c < kChannelCount; ++c) {
+                if (!channels[c]) continue;
+                // The spread is taken on the same eq. 1 residual the real log gave.
+                out[c] += short_lag_spread(fit::fit_drift(t_s, sim[c]).residual) / kCalibrationReplicates;
+            }
+        }
+        return out;
+    };
+    for (int step = 0; step < kBisectionSteps; ++step) {
+        GapModel trial = model;
+        for (std::size_t c = 0; c < kChannelCount; ++c) trial.base[c].sigma_n_counts = 0.5 * (lo[c] + hi[c]);
+        const auto spread = simulated_spread(trial);
+        for (std::size_t c = 0; c < kChannelCount; ++c) {
+            if (!channels[c]) continue;
+            (spread[c] < target_spread[c] ? lo[c] : hi[c]) = trial.base[c].sigma_n_counts;
+        }
+    }
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (channels[c]) model.base[c].sigma_n_counts = 0.5 * (lo[c] + hi[c]);
+}
+
+GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std::array<bool, kChannelCount>& channels,
+                        std::uint64_t seed) {
+    GapModel model;
+    model.unit = unit;
+    model.unit.effects.clear();
+    model.smoothing = smoothing_from_log(log);
+    std::array<double, kChannelCount> target{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!channels[c]) continue;
+        const fit::FitResult f = fit::fit_drift(log.t_s, log.counts[c]);
+        // A fit that ran off (no warm-up in the log) still yields a usable eq. 1: keep T positive and finite.
+        const double span_s = log.t_s.back() - log.t_s.front();
+        const double tau_s = std::isfinite(f.parameters.t_s) ? std::clamp(f.parameters.t_s, 1e-3 * span_s, 1e3 * span_s) : span_s;
+        model.base[c].drift = {f.parameters.c1, f.parameters.c2, tau_s};
+        target[c] = short_lag_spread(f.residual);
+    }
+    match_noise(model, log.t_s, channels, target, seed);
+    return model;
+}
+
+}  // namespace driftlab::host::gap

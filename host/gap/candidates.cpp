@@ -1,0 +1,123 @@
+// Candidate effects and their mapping onto the simulator's library; see candidates.hpp.
+#include "host/gap/candidates.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace driftlab::host::gap {
+
+namespace {
+
+// Physical-stage effects take a gyro field in deg/s and an accel field as [x, y, z] in g.
+void set_channel_value(toml::table& t, const std::string& gyro_key, const std::string& accel_key, Channel c, double v) {
+    if (c == Channel::gyro) {
+        t.insert_or_assign(gyro_key, v);
+    } else {
+        toml::array a{0.0, 0.0, 0.0};
+        a.get(channel_index(c) - 1)->as_floating_point()->get() = v;
+        t.insert_or_assign(accel_key, a);
+    }
+}
+
+// Per-channel arrays (scalar or 4 values): the other channels keep a harmless default.
+toml::array per_channel(Channel c, double v, double others) {
+    toml::array a;
+    for (std::size_t i = 0; i < kChannelCount; ++i) a.push_back(i == channel_index(c) ? v : others);
+    return a;
+}
+
+}  // namespace
+
+const std::vector<CandidateInfo>& candidate_list() {
+    static const std::vector<CandidateInfo> list = {
+        {"thermal_second_tc", {"c3_unit", "t2_s"}, FitRoute::deterministic,
+         "log a second power-on after a full cool-down: an exponential repeats at the same T2, a random walk does not"},
+        {"ambient_cycle", {"amplitude_unit", "period_s", "phase_rad"}, FitRoute::deterministic,
+         "log a board thermistor, or log long enough for 3 cycles: the line at 1/P must be coherent with temperature"},
+        {"gauss_markov", {"sigma_unit", "tau_s"}, FitRoute::simulated,
+         "log at least 20 correlation times: one Gauss-Markov gives an ADEV bump less than a decade wide, flicker a plateau"},
+        {"flicker", {"b_unit"}, FitRoute::simulated,
+         "log longer (>= 1.5 decades of flat ADEV separate flicker from a single Gauss-Markov process)"},
+        {"rate_random_walk", {"k_unit_per_sqrt_s"}, FitRoute::simulated,
+         "repeat the run: a random walk differs between runs, a thermal exponential repeats"},
+        {"spikes", {"rate_hz", "scale_counts"}, FitRoute::simulated,
+         "log the RAW codes too: a spike before the smoother is kernel-shaped, a link error is a single sample"},
+    };
+    return list;
+}
+
+const std::vector<NotIdentifiable>& not_identifiable_list() {
+    static const std::vector<NotIdentifiable> list = {
+        {"cross_axis", "a static log has constant inputs: misalignment is absorbed in the biases (needs multi-position data)"},
+        {"g_sensitivity", "gravity is constant on a static table: the gyro's g-sensitivity is absorbed in its bias (needs tilts)"},
+        {"temp_scale_factor", "the true rate is zero at rest: a scale-factor tempco multiplies zero (needs a turntable)"},
+        {"vibration", "the table is vibration-isolated: no motion input to identify (needs a shaker or accelerometer reference)"},
+        {"saturation", "nothing approaches the rails at rest (needs motion beyond the range)"},
+        {"adc_inl", "at rest the code follows time, so INL(code) and a slow drift (time) cannot be separated (needs several offsets)"},
+        {"supply_coupling", "no supply channel is logged (log a Vcc divider channel)"},
+    };
+    return list;
+}
+
+const std::vector<NotIdentifiable>& not_tried_list() {
+    static const std::vector<NotIdentifiable> list = {
+        {"adc_dnl", "not a candidate yet: the frac statistic locates it, no fit is attempted"},
+        {"mains_alias", "not a candidate yet: the psd statistic locates it, no fit is attempted"},
+        {"clock_jitter", "not a candidate yet: sample-time statistics are reported under timing"},
+    };
+    return list;
+}
+
+std::vector<std::string> candidate_param_names(const std::string& effect, Channel c) {
+    const std::string unit = c == Channel::gyro ? "dps" : "g";
+    for (const auto& info : candidate_list()) {
+        if (info.effect != effect) continue;
+        std::vector<std::string> out;
+        for (std::string k : info.param_keys) {
+            const auto pos = k.find("unit");
+            if (pos != std::string::npos) k.replace(pos, 4, unit);
+            out.push_back(k);
+        }
+        return out;
+    }
+    throw std::invalid_argument("unknown candidate effect: " + effect);
+}
+
+sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, const std::vector<double>& p,
+                                      const GapModel& model) {
+    sim::EffectSpec spec;
+    spec.name = effect;
+    toml::table& t = spec.table;
+    if (effect == "thermal_second_tc") {
+        set_channel_value(t, "c3_dps", "c3_g", c, p.at(0));
+        t.insert_or_assign("t2_s", per_channel(c, p.at(1), 1800.0));
+    } else if (effect == "ambient_cycle") {
+        // A sine of 2 K peak to peak with no lag: the coupling is then the amplitude per kelvin.
+        t.insert_or_assign("waveform", "sine");
+        t.insert_or_assign("amplitude_k_pp", 2.0);
+        t.insert_or_assign("period_s", p.at(1));
+        t.insert_or_assign("phase_rad", p.at(2));
+        t.insert_or_assign("lag_s", 0.0);
+        set_channel_value(t, "coupling_dps_per_k", "coupling_g_per_k", c, p.at(0));
+    } else if (effect == "gauss_markov") {
+        set_channel_value(t, "sigma_dps", "sigma_g", c, p.at(0));
+        t.insert_or_assign("tau_s", per_channel(c, p.at(1), 100.0));
+    } else if (effect == "flicker") {
+        // The 1/f band spans the log: from below its length to a tenth of the sampling rate (flicker.hpp).
+        set_channel_value(t, "b_dps", "b_g", c, p.at(0));
+        const double fs = 1.0 / model.smoothing.sample_period_s;
+        t.insert_or_assign("f_high_hz", fs / 10.0);
+        t.insert_or_assign("f_low_hz", fs * 1e-5);
+    } else if (effect == "rate_random_walk") {
+        set_channel_value(t, "k_dps_per_sqrt_s", "k_g_per_sqrt_s", c, p.at(0));
+    } else if (effect == "spikes") {
+        t.insert_or_assign("stage", "converter");
+        t.insert_or_assign("rate_hz", per_channel(c, p.at(0), 0.0));
+        t.insert_or_assign("scale_counts", per_channel(c, p.at(1), 0.0));
+    } else {
+        throw std::invalid_argument("unknown candidate effect: " + effect);
+    }
+    return spec;
+}
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,48 @@
+// The candidate effects the diagnosis tries, each with <= 3 parameters in physical units, and how a parameter
+// vector becomes an effect of the simulator's library (sim/effects) acting on one channel. Effects a static log
+// cannot identify, and effects this version does not try, are listed with the reason. docs/gap.md §Candidates.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "driftlab/channels.hpp"
+#include "host/gap/gap_model.hpp"
+
+namespace driftlab::host::gap {
+
+/// How a candidate's parameters are found.
+enum class FitRoute {
+    deterministic,  ///< a mean shape: variable projection on the fitting part of the log, jointly with eq. 1
+    simulated,      ///< a random process: Nelder-Mead on log-parameters against the battery (common random numbers)
+};
+
+struct CandidateInfo {
+    std::string effect;                    ///< library name (sim/effects)
+    std::vector<std::string> param_keys;   ///< unit-suffixed; "_unit" is the channel's unit (dps or g)
+    FitRoute route;
+    std::string settle;                    ///< the experiment that separates it from its look-alikes
+};
+
+/// The candidates, in the order they are tried.
+const std::vector<CandidateInfo>& candidate_list();
+
+/// Effects of the library a static bench log cannot identify, with the reason.
+struct NotIdentifiable {
+    std::string effect;
+    std::string reason;
+};
+const std::vector<NotIdentifiable>& not_identifiable_list();
+
+/// Library effects not tried as candidates by this version, with the reason.
+const std::vector<NotIdentifiable>& not_tried_list();
+
+/// The library effect for candidate `effect` on channel `c` with parameters `params` (candidate_list() keys,
+/// physical units). Throws std::invalid_argument for an unknown name.
+sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, const std::vector<double>& params,
+                                      const GapModel& model);
+
+/// Parameter keys with the channel's unit spelled out (e.g. "c3_dps" for the gyro, "c3_g" for an accel axis).
+std::vector<std::string> candidate_param_names(const std::string& effect, Channel c);
+
+}  // namespace driftlab::host::gap

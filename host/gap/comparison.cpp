@@ -1,0 +1,92 @@
+// Real-vs-replicate comparison; see comparison.hpp.
+#include "host/gap/comparison.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace driftlab::host::gap {
+
+namespace {
+
+// A cell on which every replicate agrees exactly would give an infinite z for the smallest difference.
+double sd_floor(double mean) { return 1e-9 + 1e-6 * std::abs(mean); }
+
+}  // namespace
+
+Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& replicates, double alpha) {
+    const Eigen::Index r_count = replicates.rows();
+    const Eigen::Index cells = replicates.cols();
+    Comparison cmp;
+    cmp.z.resize(static_cast<std::size_t>(cells));
+    cmp.sim_mean.resize(static_cast<std::size_t>(cells));
+    cmp.sim_sd.resize(static_cast<std::size_t>(cells));
+    cmp.loo_z.resize(r_count, cells);
+    for (Eigen::Index j = 0; j < cells; ++j) {
+        const auto col = replicates.col(j);
+        const double s1 = col.sum();
+        const double s2 = col.squaredNorm();
+        const double n = static_cast<double>(r_count);
+        const double mean = s1 / n;
+        const double sd = std::max(std::sqrt(std::max(0.0, (s2 - n * mean * mean) / (n - 1))), sd_floor(mean));
+        const auto u = static_cast<std::size_t>(j);
+        cmp.sim_mean[u] = mean;
+        cmp.sim_sd[u] = sd;
+        cmp.z[u] = (real[u] - mean) / sd;
+        for (Eigen::Index r = 0; r < r_count; ++r) {
+            const double x = col(r);
+            const double m = (s1 - x) / (n - 1);
+            const double v = std::max(0.0, (s2 - x * x - (n - 1) * m * m) / (n - 2));
+            cmp.loo_z(r, j) = (x - m) / std::max(std::sqrt(v), sd_floor(m));
+        }
+    }
+    std::vector<double> maxima(static_cast<std::size_t>(r_count));
+    for (Eigen::Index r = 0; r < r_count; ++r) maxima[static_cast<std::size_t>(r)] = cmp.loo_z.row(r).cwiseAbs().maxCoeff();
+    std::sort(maxima.begin(), maxima.end());
+    // Empirical (1 - alpha) quantile with linear interpolation between order statistics.
+    const double pos = (1.0 - alpha) * static_cast<double>(r_count - 1);
+    const auto lo = static_cast<std::size_t>(std::floor(pos));
+    const auto hi = std::min(lo + 1, maxima.size() - 1);
+    cmp.threshold = maxima[lo] + (pos - static_cast<double>(lo)) * (maxima[hi] - maxima[lo]);
+    return cmp;
+}
+
+double sum_z2(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep) {
+    double sum = 0.0;
+    for (std::size_t j = 0; j < layout.size(); ++j)
+        if (keep(layout[j])) sum += cmp.z[j] * cmp.z[j];
+    return sum;
+}
+
+double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep) {
+    double real = 0.0, null = 0.0;
+    std::size_t count = 0;
+    for (std::size_t j = 0; j < layout.size(); ++j) {
+        if (!keep(layout[j])) continue;
+        ++count;
+        real += cmp.z[j] * cmp.z[j];
+        null += cmp.loo_z.col(static_cast<Eigen::Index>(j)).squaredNorm();
+    }
+    if (count == 0 || null <= 0.0) return 1.0;
+    return real / (null / static_cast<double>(cmp.loo_z.rows()));
+}
+
+std::vector<LocatedCell> locate(const std::vector<double>& real, const Comparison& cmp, const std::vector<Cell>& layout) {
+    std::vector<LocatedCell> out;
+    for (std::size_t j = 0; j < layout.size(); ++j) {
+        const double diff = real[j] - cmp.sim_mean[j];
+        if (std::abs(cmp.z[j]) <= cmp.threshold || std::abs(diff) <= layout[j].margin) continue;
+        LocatedCell c;
+        c.index = j;
+        c.real = real[j];
+        c.sim_mean = cmp.sim_mean[j];
+        c.z = cmp.z[j];
+        c.difference = diff;
+        c.ratio = layout[j].log_scale ? std::exp(diff) : std::numeric_limits<double>::quiet_NaN();
+        out.push_back(c);
+    }
+    std::sort(out.begin(), out.end(), [](const LocatedCell& a, const LocatedCell& b) { return std::abs(a.z) > std::abs(b.z); });
+    return out;
+}
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,49 @@
+// Real-vs-replicate comparison of the battery: per-cell z, the family-wise max-|z| threshold, the located cells
+// and the global gap score. docs/gap.md §Located, §Gap score.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "host/gap/statistics.hpp"
+
+namespace driftlab::host::gap {
+
+/// Per-cell z of the real log against the replicates, and the same for each replicate left out in turn.
+struct Comparison {
+    std::vector<double> z;          ///< real log, per cell
+    std::vector<double> sim_mean;   ///< replicate mean per cell
+    std::vector<double> sim_sd;     ///< replicate standard deviation per cell
+    Eigen::MatrixXd loo_z;          ///< replicate r's z against the other R-1 (rows = replicates)
+    double threshold = 0.0;         ///< (1 - alpha) quantile over replicates of max |z| (leave-one-out)
+};
+
+/// Compares `real` with the replicate matrix (rows = replicates, needs >= 3 rows).
+Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& replicates, double alpha);
+
+/// Which cells a score or a search looks at.
+using CellFilter = std::function<bool(const Cell&)>;
+
+/// Global gap: mean z^2 of the real log over the cells `keep` accepts, divided by the same mean averaged over
+/// the left-out replicates (so a log the model explains scores about 1). 1 when no cell is accepted.
+double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep);
+
+/// Sum of z^2 of the real log over the accepted cells (the candidate fits' objective).
+double sum_z2(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep);
+
+/// A cell that is both significant (|z| above the threshold) and beyond its practical margin.
+struct LocatedCell {
+    std::size_t index = 0;     ///< into the layout
+    double real = 0.0;         ///< the real log's value
+    double sim_mean = 0.0;
+    double z = 0.0;
+    double ratio = 0.0;        ///< real/sim for log-scale statistics; NaN otherwise
+    double difference = 0.0;   ///< real - sim in the statistic's own scale (counts, correlation)
+};
+
+/// The located cells, largest |z| first.
+std::vector<LocatedCell> locate(const std::vector<double>& real, const Comparison& cmp, const std::vector<Cell>& layout);
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,112 @@
+// The whole diagnosis; see diagnose.hpp.
+#include "host/gap/diagnose.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "host/gap/calibrate.hpp"
+#include "host/gap/replicates.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::gap {
+
+namespace {
+
+constexpr std::size_t kMinSamples = 200;
+
+TimingCheck check_timing(const LogData& log, double period_s) {
+    TimingCheck t;
+    t.gap_events = log.gaps.size();
+    double sum = 0.0, sum2 = 0.0;
+    for (std::size_t i = 1; i < log.size(); ++i) {
+        if (log.seq[i] > log.seq[i - 1] + 1) {
+            ++t.sequence_jumps;
+            t.lost_frames += log.seq[i] - log.seq[i - 1] - 1;
+        }
+        const double d = (log.t_s[i] - log.t_s[i - 1]) / period_s - 1.0;
+        sum += d;
+        sum2 += d * d;
+    }
+    const double n = static_cast<double>(std::max<std::size_t>(1, log.size() - 1));
+    t.dt_jitter_rel = std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
+    return t;
+}
+
+CellFilter in_segment(Segment s) {
+    return [s](const Cell& c) { return c.segment == s; };
+}
+
+}  // namespace
+
+std::array<bool, kChannelCount> analysed_channels(const LogData& log, const GapOptions& options) {
+    const bool any = std::any_of(options.channels.begin(), options.channels.end(), [](bool b) { return b; });
+    const auto varying = varying_channels(log);
+    std::array<bool, kChannelCount> out{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) out[c] = varying[c] && (!any || options.channels[c]);
+    return out;
+}
+
+GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options) {
+    if (options.replicates < 10) throw UsageError("--replicates: need at least 10");
+    if (!(options.fit_fraction > 0.2 && options.fit_fraction < 0.9)) throw UsageError("fit fraction must be in (0.2, 0.9)");
+    if (log.size() < kMinSamples)
+        throw DataError(log.source_name, 0, "gap needs at least " + std::to_string(kMinSamples) + " samples, got " +
+                                                std::to_string(log.size()));
+    GapResult result;
+    result.channels = analysed_channels(log, options);
+    if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; }))
+        throw DataError(log.source_name, 0, "no selected channel varies: nothing to compare");
+
+    result.base = calibrate_base(log, unit, result.channels, options.seed);
+    result.timing = check_timing(log, result.base.smoothing.sample_period_s);
+
+    BatteryOptions battery;
+    battery.channels = result.channels;
+    battery.fit_fraction = options.fit_fraction;
+    battery.sample_period_s = result.base.smoothing.sample_period_s;
+    std::array<const std::vector<double>*, kChannelCount> y{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &log.counts[c];
+    result.real_values = compute_battery(log.t_s, y, battery, &result.layout).values;
+
+    auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held) {
+        cmp = compare(result.real_values, run_replicates(model, log.t_s, battery, options.replicates, options.seed, options.threads),
+                      options.alpha);
+        located = locate(result.real_values, cmp, result.layout);
+        fit = gap_score(cmp, result.layout, in_segment(Segment::fit));
+        held = gap_score(cmp, result.layout, in_segment(Segment::heldout));
+    };
+    judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout);
+
+    result.final_model = result.base;
+    if (result.located.empty()) {
+        result.verdict = "none";
+    } else if (options.explain) {
+        std::array<bool, kChannelCount> open{};
+        for (const auto& l : result.located) {
+            const int ci = result.layout[l.index].channel_index;
+            if (ci >= 0) open[static_cast<std::size_t>(ci)] = true;
+        }
+        ExplainOptions eo = options.explain_options;
+        eo.seed = options.seed;
+        eo.threads = options.threads;
+        eo.eval_replicates = options.replicates;
+        ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo);
+        result.tried = std::move(ex.tried);
+        result.accepted = std::move(ex.accepted);
+        result.final_model = std::move(ex.model);
+        result.verdict = result.accepted.empty() ? "unexplained" : result.accepted.front().effect;
+    } else {
+        result.verdict = "unexplained";
+    }
+    if (result.accepted.empty()) {
+        result.after = result.before;
+        result.located_after = result.located;
+        result.gap_after_fit = result.gap_before_fit;
+        result.gap_after_heldout = result.gap_before_heldout;
+    } else {
+        judge(result.final_model, result.after, result.located_after, result.gap_after_fit, result.gap_after_heldout);
+    }
+    return result;
+}
+
+}  // namespace driftlab::host::gap

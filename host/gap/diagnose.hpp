@@ -1,0 +1,63 @@
+// `driftlab gap`: the whole diagnosis of one real log. Calibrate the base, simulate-and-refit R replicates,
+// compare the battery cell by cell (where), fit candidate effects on the fitting part and judge them on the
+// held-out part (which), and score the gap before and after (how far it shrinks). docs/gap.md.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "host/gap/comparison.hpp"
+#include "host/gap/explain.hpp"
+#include "host/gap/gap_model.hpp"
+#include "host/gap/statistics.hpp"
+#include "host/log/log_data.hpp"
+
+namespace driftlab::host::gap {
+
+struct GapOptions {
+    int replicates = 40;            ///< R of the comparison (>= 10)
+    std::uint64_t seed = 1;
+    double alpha = 0.05;            ///< family-wise level of the located cells
+    double fit_fraction = 0.6;      ///< first part of the log used to fit candidates; the rest is held out
+    std::array<bool, kChannelCount> channels{};  ///< all false = every channel whose values vary
+    bool explain = true;            ///< false: locate only
+    ExplainOptions explain_options;
+    int threads = 2;
+};
+
+/// The log's own record of lost frames and sample-time irregularity (the simulation uses the log's instants,
+/// so these are reported beside the battery, not inside it).
+struct TimingCheck {
+    std::size_t sequence_jumps = 0;  ///< places where seq advanced by more than 1
+    std::uint64_t lost_frames = 0;   ///< frames missing by sequence number
+    std::size_t gap_events = 0;      ///< `# gap:` lines
+    double dt_jitter_rel = 0.0;      ///< standard deviation of the spacing over the nominal period [-]
+};
+
+struct GapResult {
+    std::array<bool, kChannelCount> channels{};
+    GapModel base;                   ///< the calibrated base
+    GapModel final_model;            ///< base plus the accepted effects
+    std::vector<Cell> layout;
+    std::vector<double> real_values;
+    Comparison before, after;
+    std::vector<LocatedCell> located, located_after;
+    double gap_before_fit = 1.0, gap_before_heldout = 1.0;
+    double gap_after_fit = 1.0, gap_after_heldout = 1.0;
+    std::vector<Explanation> tried;      ///< every candidate fit, accepted first
+    std::vector<Explanation> accepted;   ///< added stepwise, in order
+    std::string verdict;                 ///< an effect name, "none" or "unexplained"
+    TimingCheck timing;
+};
+
+/// Diagnoses `log` against the unit `unit` (front ends and converter). Throws DataError (naming the log) when it
+/// is too short (< 200 samples) or no channel varies, UsageError on bad options.
+GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options);
+
+/// The channels diagnose() analyses for these options.
+std::array<bool, kChannelCount> analysed_channels(const LogData& log, const GapOptions& options);
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,61 @@
+// The withheld-effect benchmark behind `driftlab gap-eval`: simulate gyro logs of a domain-randomised base with
+// one truth generator (truth.hpp; or none), hide it from the diagnosis, and score the verdicts. Decision
+// thresholds (penalty per parameter, minimum held-out shrink) are tuned on one seed set and scored on another.
+// docs/gap.md §Evaluation.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "host/gap/explain.hpp"
+
+namespace driftlab::host::gap {
+
+struct EvalOptions {
+    std::uint64_t tune_first = 1, tune_last = 4;      ///< seeds the thresholds are tuned on
+    std::uint64_t score_first = 101, score_last = 104;  ///< seeds they are scored on (disjoint)
+    std::vector<std::string> generators;  ///< truth generators (truth_list()); empty = all; "none" is always added
+    std::vector<double> levels{1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's reference size
+    std::size_t samples = 1500;   ///< log length at 1 s per sample
+    int replicates = 20;
+    int fit_replicates = 8;
+    int max_evaluations = 18;
+    int threads = 2;
+    std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional
+};
+
+/// One simulated log and what the diagnosis said about it.
+struct EvalCase {
+    std::string generator;        ///< truth generator or "none"
+    std::string truth;            ///< the library effect it stands for, "none", or "" (out of library)
+    double level = 0.0;           ///< size in multiples of the reference
+    double size_counts = 0.0;
+    std::uint64_t seed = 0;
+    bool tune = false;            ///< in the tuning set
+    bool detected = false;        ///< located cells were found
+    std::vector<Explanation> tried;  ///< every candidate with its metrics (thresholds applied later)
+    double shrink_check = 0.0;    ///< held-out shrink of the truth's candidate re-measured on fresh replicates
+    bool has_shrink_check = false;
+};
+
+/// The tuned thresholds.
+struct Thresholds {
+    double penalty_per_param = 1.0;
+    double min_heldout_shrink = 0.3;
+};
+
+/// The verdict a case gets under `th`: "none", "unexplained" or the best passing candidate.
+std::string decide(const EvalCase& c, const Thresholds& th);
+
+/// Runs every case (tuning and scoring seeds).
+std::vector<EvalCase> run_cases(const EvalOptions& options);
+
+/// Thresholds maximising top-1 accuracy on the tuning cases with a false-positive rate <= 5 %.
+Thresholds tune(const std::vector<EvalCase>& cases);
+
+/// The results table (markdown) of the scoring cases under `th`.
+std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options);
+
+}  // namespace driftlab::host::gap

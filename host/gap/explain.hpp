@@ -1,0 +1,65 @@
+// Which effect closes the gap: each candidate is fitted jointly with the base on the FITTING part of the log
+// (first fit_fraction by time), then judged on the HELD-OUT rest. Accepted only if the synthetic likelihood of the
+// fitting cells improves by more than a BIC-like penalty per parameter AND the held-out gap shrinks by a clear
+// margin; effects are added stepwise (up to max_effects). docs/gap.md §Explain.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "host/gap/gap_model.hpp"
+#include "host/gap/statistics.hpp"
+
+namespace driftlab::host::gap {
+
+struct ExplainOptions {
+    int fit_replicates = 12;       ///< replicates per objective evaluation of a simulated-route fit
+    int eval_replicates = 40;      ///< replicates when judging a fitted candidate
+    int max_evaluations = 36;      ///< Nelder-Mead budget per simulated-route candidate
+    int max_effects = 3;           ///< stepwise limit over the whole log
+    double penalty_per_param = 1.0;  ///< x ln(cells): the BIC-like price of one parameter
+    double min_heldout_shrink = 0.3; ///< the held-out gap excess must shrink by at least this fraction
+    double ambiguity = 0.15;       ///< runner-up within this fraction of the best held-out gain: ambiguous
+    std::vector<std::string> candidates;  ///< empty = all of candidate_list()
+    std::uint64_t seed = 1;
+    int threads = 2;
+};
+
+/// One fitted candidate on one channel.
+struct Explanation {
+    std::string effect;
+    std::string channel;
+    std::vector<std::pair<std::string, double>> params;  ///< physical units, keys as in the effect library
+    double gap_before = 1.0;        ///< this channel's gap score on the fitting part, base only
+    double gap_after = 1.0;         ///< ... with the candidate
+    double heldout_before = 1.0;    ///< on the held-out part, base only
+    double heldout_after = 1.0;     ///< ... with the candidate
+    double heldout_shrink = 0.0;    ///< 1 - (after - 1) / (before - 1): fraction of the held-out excess removed
+    double loss_gain = 0.0;         ///< synthetic log-likelihood gain on the fitting cells (x2)
+    double penalty = 0.0;           ///< parameters x ln(fitting cells): the BIC price before penalty_per_param
+    double heldout_loss_gain = 0.0; ///< synthetic log-likelihood gain on the held-out cells (x2)
+    bool accepted = false;
+    int step = 0;                   ///< stepwise round in which it was tried (1-based)
+    std::string ambiguous_with;     ///< a candidate nearly as good, or ""
+    std::string settle;             ///< the experiment that would separate them
+};
+
+struct ExplainResult {
+    GapModel model;                         ///< base plus the accepted effects
+    std::vector<Explanation> tried;         ///< every fit, accepted first, then by held-out gap
+    std::vector<Explanation> accepted;      ///< in the order they were added
+};
+
+/// The acceptance rule: likelihood gain on the fitting cells above penalty_per_param x penalty, a held-out gap
+/// to shrink, a held-out shrink of at least min_heldout_shrink and a held-out likelihood gain.
+bool passes(const Explanation& e, double penalty_per_param, double min_heldout_shrink);
+
+/// Explains the gap of the channels in `channels` (those with located cells) on `log_t_s`/`log_y`.
+ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
+                      const std::array<const std::vector<double>*, kChannelCount>& y,
+                      const std::array<bool, kChannelCount>& channels, const BatteryOptions& battery,
+                      const ExplainOptions& options);
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,97 @@
+// JSON of a diagnosis; see gap_json.hpp.
+#include "host/gap/gap_json.hpp"
+
+#include <algorithm>
+
+#include "host/gap/candidates.hpp"
+#include "host/report/json_out.hpp"
+
+namespace driftlab::host::gap {
+
+namespace {
+
+using nlohmann::json;
+
+json located_json(const std::vector<LocatedCell>& cells, const std::vector<Cell>& layout) {
+    json out = json::array();
+    for (const auto& l : cells) {
+        const Cell& c = layout[l.index];
+        out.push_back({{"statistic", c.statistic},
+                       {"channel", c.channel},
+                       {"cell", c.cell},
+                       {"segment", segment_name(c.segment)},
+                       {"ratio", report::json_number(l.ratio)},
+                       {"difference", report::json_number(l.difference)},
+                       {"z", report::json_number(l.z)}});
+    }
+    return out;
+}
+
+json explanation_json(const Explanation& e) {
+    json params = json::object();
+    for (const auto& [k, v] : e.params) params[k] = report::json_number(v);
+    return {{"effect", e.effect},
+            {"channel", e.channel},
+            {"params", params},
+            {"gap_before", report::json_number(e.gap_before)},
+            {"gap_after", report::json_number(e.gap_after)},
+            {"heldout_before", report::json_number(e.heldout_before)},
+            {"heldout_after", report::json_number(e.heldout_after)},
+            {"heldout_shrink", report::json_number(e.heldout_shrink)},
+            {"likelihood_gain", report::json_number(e.loss_gain)},
+            {"penalty", report::json_number(e.penalty)},
+            {"accepted", e.accepted},
+            {"step", e.step},
+            {"ambiguous_with", e.ambiguous_with.empty() ? json(nullptr) : json(e.ambiguous_with)},
+            {"settle", e.settle}};
+}
+
+}  // namespace
+
+json gap_to_json(const GapResult& r, int replicates) {
+    json j;
+    j["verdict"] = r.verdict;
+    json ex = json::array();
+    for (const auto& e : r.accepted) ex.push_back(explanation_json(e));
+    for (const auto& e : r.tried) {
+        const bool added = std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
+            return a.effect == e.effect && a.channel == e.channel && a.step == e.step;
+        });
+        if (!added) ex.push_back(explanation_json(e));
+    }
+    j["explanations"] = ex;
+    j["located"] = located_json(r.located, r.layout);
+    j["located_after"] = located_json(r.located_after, r.layout);
+    j["gap_before"] = {{"fit", report::json_number(r.gap_before_fit)}, {"heldout", report::json_number(r.gap_before_heldout)}};
+    j["gap_after"] = {{"fit", report::json_number(r.gap_after_fit)}, {"heldout", report::json_number(r.gap_after_heldout)}};
+    json ni = json::array();
+    for (const auto& n : not_identifiable_list()) ni.push_back({{"effect", n.effect}, {"reason", n.reason}});
+    j["not_identifiable"] = ni;
+    json nt = json::array();
+    for (const auto& n : not_tried_list()) nt.push_back({{"effect", n.effect}, {"reason", n.reason}});
+    j["not_tried"] = nt;
+    json cal = json::object();
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!r.channels[c]) continue;
+        const auto& b = r.base.base[c];
+        cal[kChannelNames[c]] = {{"c1_counts", report::json_number(b.drift.c1_counts)},
+                                 {"c2_counts", report::json_number(b.drift.c2_counts)},
+                                 {"tau_s", report::json_number(b.drift.tau_s)},
+                                 {"sigma_n_counts", report::json_number(b.sigma_n_counts)}};
+    }
+    j["calibration"] = {{"channels", cal},
+                        {"sample_period_s", r.base.smoothing.sample_period_s},
+                        {"conversions_per_output", r.base.smoothing.conversions_per_output},
+                        {"window", r.base.smoothing.window},
+                        {"fit_order", r.base.smoothing.fit_order}};
+    j["timing"] = {{"sequence_jumps", r.timing.sequence_jumps},
+                   {"lost_frames", r.timing.lost_frames},
+                   {"gap_events", r.timing.gap_events},
+                   {"dt_jitter_rel", report::json_number(r.timing.dt_jitter_rel)}};
+    j["replicates"] = replicates;
+    j["threshold_z"] = report::json_number(r.before.threshold);
+    j["cells"] = r.layout.size();
+    return j;
+}
+
+}  // namespace driftlab::host::gap

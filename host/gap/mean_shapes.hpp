@@ -1,0 +1,29 @@
+// Variable-projection fits of the deterministic candidates jointly with eq. 1 on the fitting part of a log:
+// for fixed time constants/period the amplitudes are linear least squares; the nonlinear ones come from a log
+// grid refined by Nelder-Mead. docs/gap.md §Candidate fits.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace driftlab::host::gap {
+
+/// y = C1 (1 - e^{-t/T}) + C3 (1 - e^{-t/T2}) + C2, with T < T2 (E1 on top of eq. 1).
+struct TwoExponentials {
+    double c1_counts = 0.0, c2_counts = 0.0, t_s = 1.0;
+    double c3_counts = 0.0, t2_s = 1.0;
+    double rss = 0.0;
+};
+
+/// y = C1 (1 - e^{-t/T}) + C2 + A sin(2 pi t / P + phi) (E2 on top of eq. 1).
+struct ExponentialAndSine {
+    double c1_counts = 0.0, c2_counts = 0.0, t_s = 1.0;
+    double amplitude_counts = 0.0, period_s = 1.0, phase_rad = 0.0;
+    double rss = 0.0;
+};
+
+/// Fits the first `n` samples of (t_s, y).
+TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);
+ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);
+
+}  // namespace driftlab::host::gap

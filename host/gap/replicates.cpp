@@ -1,0 +1,53 @@
+// Replicates in parallel; see replicates.hpp.
+#include "host/gap/replicates.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace driftlab::host::gap {
+
+std::uint64_t replicate_seed(std::uint64_t seed, int r) {
+    std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(r) + 1;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
+                               int replicates, std::uint64_t seed, int threads) {
+    std::vector<std::vector<double>> rows(static_cast<std::size_t>(replicates));
+    std::atomic<int> next{0};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    auto work = [&] {
+        for (int r = next++; r < replicates; r = next++) {
+            try {
+                SimRequest request;
+                request.t_s = &t_s;
+                request.channels = options.channels;
+                const SimOutput sim = simulate(model, request, replicate_seed(seed, r));
+                std::array<const std::vector<double>*, kChannelCount> y{};
+                for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &sim[c];
+                rows[static_cast<std::size_t>(r)] = compute_battery(t_s, y, options).values;
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < std::max(1, threads); ++i) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    Eigen::MatrixXd out(replicates, static_cast<Eigen::Index>(rows.front().size()));
+    for (int r = 0; r < replicates; ++r)
+        out.row(r) = Eigen::Map<const Eigen::RowVectorXd>(rows[static_cast<std::size_t>(r)].data(),
+                                                         static_cast<Eigen::Index>(rows[static_cast<std::size_t>(r)].size()));
+    return out;
+}
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,25 @@
+// The simulate-refit parametric bootstrap: R replicates of the calibrated model on the real log's instants, each
+// refitted and summarised by the same battery as the real log. Replicate r uses the seed replicate_seed(seed, r)
+// whatever the model, so two models compared with the same seed share their random numbers (common random
+// numbers: smooth objectives for the candidate fits). docs/gap.md §Replicates.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "host/gap/gap_model.hpp"
+#include "host/gap/sim_chain.hpp"
+#include "host/gap/statistics.hpp"
+
+namespace driftlab::host::gap {
+
+/// Seed of replicate `r` of a run seeded with `seed`.
+std::uint64_t replicate_seed(std::uint64_t seed, int r);
+
+/// Battery values of `replicates` replicates (rows) on the instants `t_s`, run on `threads` threads.
+Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
+                               int replicates, std::uint64_t seed, int threads);
+
+}  // namespace driftlab::host::gap

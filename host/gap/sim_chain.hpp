@@ -1,0 +1,30 @@
+// One simulated log of the calibrated model, made the way the board makes it: per conversion the sensor chain
+// (physical effects, front end, analog effects, eq. 1 drift, white noise, converter effects, 10-bit quantiser),
+// then the firmware's own smoother (fw::LsWindow, bit-exact Q8 output) evaluated at each output instant.
+// The frame/link layer is left out: the log's sequence numbers are compared separately (statistics.hpp).
+// docs/gap.md §Replicates.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "host/gap/gap_model.hpp"
+
+namespace driftlab::host::gap {
+
+/// What to simulate: the output instants and, for the withheld-effect benchmark, signals added at the converter
+/// input (a truth generator's output, held over each output period).
+struct SimRequest {
+    const std::vector<double>* t_s = nullptr;                    ///< output instants [s since power-on]
+    std::array<bool, kChannelCount> channels{true, true, true, true};  ///< channels to simulate
+    std::array<std::vector<double>, kChannelCount> added_counts;  ///< per output sample [counts]; empty = none
+};
+
+/// Smoothed outputs [counts] per channel (empty for channels not requested).
+using SimOutput = std::array<std::vector<double>, kChannelCount>;
+
+/// Simulates one replicate with every random component seeded from `seed`.
+SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64_t seed);
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,165 @@
+// The gap battery; see statistics.hpp. Cell margins are the practical-relevance floors of docs/gap.md §Located.
+#include "host/gap/statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "host/fit/lm_fit.hpp"
+#include "host/gap/spectral.hpp"
+
+namespace driftlab::host::gap {
+
+namespace {
+
+constexpr int kTimeWindows = 10;              // windowed mean and variance: 10 windows of L/10
+constexpr double kMeanMarginCounts = 0.1;     // windowed mean of the residual [counts]
+constexpr double kLogRatioMargin = 0.0953;    // ln 1.1: ADEV, variance, frequency-count ratios beyond 10 %
+constexpr double kPsdMargin = 0.2303;         // 1 dB in ln power
+constexpr double kAcfMargin = 0.1;            // mean autocorrelation in a lag band
+constexpr double kCorrMargin = 0.1;           // lag-0 correlation between channels
+constexpr int kFracBins = 8;
+
+class Builder {
+public:
+    Builder(std::vector<double>& values, std::vector<Cell>* layout) : values_(values), layout_(layout) {}
+    void add(double value, const Cell& cell) {
+        values_.push_back(value);
+        if (layout_) layout_->push_back(cell);
+    }
+    bool wants_layout() const { return layout_ != nullptr; }
+
+private:
+    std::vector<double>& values_;
+    std::vector<Cell>* layout_;
+};
+
+std::string short_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
+std::string seconds_label(double s) { return short_number(s) + "s"; }
+
+double log_floor(double v) { return std::log(std::max(v, 1e-300)); }
+
+std::vector<double> slice(const std::vector<double>& v, std::size_t a, std::size_t b) {
+    return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(a), v.begin() + static_cast<std::ptrdiff_t>(b));
+}
+
+// Dispersion of the fractional part of the smoothed output over kFracBins bins: the code/quantiser signature.
+double frac_dispersion(const std::vector<double>& y) {
+    std::array<double, kFracBins> n{};
+    for (double v : y) {
+        const double f = v - std::floor(v);
+        n[std::min(kFracBins - 1, static_cast<int>(f * kFracBins))] += 1.0;
+    }
+    const double expected = static_cast<double>(y.size()) / kFracBins;
+    double chi2 = 0.0;
+    for (double c : n) chi2 += (c - expected) * (c - expected) / expected;
+    return std::log1p(chi2);
+}
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+    double ma = 0, mb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
+    ma /= static_cast<double>(a.size());
+    mb /= static_cast<double>(b.size());
+    double sab = 0, saa = 0, sbb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        sab += (a[i] - ma) * (b[i] - mb);
+        saa += (a[i] - ma) * (a[i] - ma);
+        sbb += (b[i] - mb) * (b[i] - mb);
+    }
+    return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
+}
+
+}  // namespace
+
+const char* segment_name(Segment s) { return s == Segment::fit ? "fit" : "heldout"; }
+
+BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<const std::vector<double>*, kChannelCount>& y,
+                              const BatteryOptions& options, std::vector<Cell>* layout) {
+    BatteryResult result;
+    Builder out(result.values, layout);
+    const std::size_t n = t_s.size();
+    const double t_split = t_s.front() + options.fit_fraction * (t_s.back() - t_s.front());
+    const std::size_t split = static_cast<std::size_t>(std::upper_bound(t_s.begin(), t_s.end(), t_split) - t_s.begin());
+    const std::array<std::pair<std::size_t, std::size_t>, 2> segments = {{{0, split}, {split, n}}};
+    const double tau0 = options.sample_period_s;
+
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!options.channels[c]) continue;
+        const auto& yc = *y[c];
+        const fit::FitResult f = fit::fit_drift(t_s, yc);
+        result.drift[c] = f.parameters;
+        result.residual[c] = f.residual;
+        const std::vector<double>& e = result.residual[c];
+        const std::string name = kChannelNames[c];
+        const int ci = static_cast<int>(c);
+
+        for (int w = 0; w < kTimeWindows; ++w) {
+            const std::size_t a = n * static_cast<std::size_t>(w) / kTimeWindows;
+            const std::size_t b = n * static_cast<std::size_t>(w + 1) / kTimeWindows;
+            double mean = 0.0, var = 0.0;
+            for (std::size_t i = a; i < b; ++i) mean += e[i];
+            mean /= static_cast<double>(b - a);
+            for (std::size_t i = a; i < b; ++i) var += (e[i] - mean) * (e[i] - mean);
+            var /= static_cast<double>(std::max<std::size_t>(1, b - a - 1));
+            const Segment seg = t_s[(a + b) / 2] <= t_split ? Segment::fit : Segment::heldout;
+            std::string label;
+            if (out.wants_layout()) label = "t=" + seconds_label(t_s[a]) + ".." + seconds_label(t_s[b - 1]);
+            out.add(mean, {"mean", name, ci, label, seg, false, kMeanMarginCounts});
+            out.add(log_floor(var), {"var", name, ci, label, seg, true, 2.0 * kLogRatioMargin});
+        }
+        for (int s = 0; s < 2; ++s) {
+            const Segment seg = s == 0 ? Segment::fit : Segment::heldout;
+            const std::vector<double> part = slice(e, segments[s].first, segments[s].second);
+            const std::vector<double> part_y = slice(yc, segments[s].first, segments[s].second);
+            const std::size_t len = part.size();
+            const auto adev = octave_oadev(part, std::max<std::size_t>(1, len / 8));
+            for (std::size_t j = 0; j < adev.size(); ++j)
+                out.add(log_floor(adev[j]), {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau0 * std::ldexp(1.0, static_cast<int>(j))) : "",
+                                             seg, true, kLogRatioMargin});
+            const auto psd = octave_band_power(part);
+            std::size_t nfft = 1;
+            while (nfft < len) nfft <<= 1;
+            for (std::size_t j = 0; j < psd.size(); ++j) {
+                std::string label;
+                if (out.wants_layout()) {
+                    const double f_hi = 0.5 / tau0 / std::ldexp(1.0, static_cast<int>(j));
+                    label = "f=" + short_number(f_hi / 2) + ".." + short_number(f_hi) + "Hz";
+                }
+                out.add(log_floor(psd[j]), {"psd", name, ci, label, seg, true, kPsdMargin});
+            }
+            const auto acf = octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
+            for (std::size_t j = 0; j < acf.size(); ++j) {
+                std::string label;
+                if (out.wants_layout()) {
+                    const double lo = std::ldexp(1.0, static_cast<int>(j));
+                    label = "lag=" + seconds_label(lo * tau0) + ".." + seconds_label((2 * lo - 1) * tau0);
+                }
+                out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin});
+            }
+            out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
+        }
+    }
+    for (std::size_t a = 0; a < kChannelCount; ++a) {
+        for (std::size_t b = a + 1; b < kChannelCount; ++b) {
+            if (!options.channels[a] || !options.channels[b]) continue;
+            const std::string pair =
+                std::string(kChannelNames[a]) + "~" + kChannelNames[b];
+            for (int s = 0; s < 2; ++s) {
+                const Segment seg = s == 0 ? Segment::fit : Segment::heldout;
+                const double r = correlation(slice(result.residual[a], segments[s].first, segments[s].second),
+                                             slice(result.residual[b], segments[s].first, segments[s].second));
+                out.add(r, {"corr", pair, -1, "lag 0", seg, false, kCorrMargin});
+            }
+        }
+    }
+    return result;
+}
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,53 @@
+// The gap battery: the statistics computed with the same code on the real log and on every replicate, after
+// refitting eq. 1 to each channel exactly as the real log is fitted. Each value is one cell
+// (statistic x channel x window/band/octave) on the fitting part or the held-out part of the log.
+// docs/gap.md §Statistics.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "driftlab/channels.hpp"
+#include "host/fit/drift_model.hpp"
+
+namespace driftlab::host::gap {
+
+/// Which part of the log a cell is computed on.
+enum class Segment { fit, heldout };
+
+/// "fit" or "heldout".
+const char* segment_name(Segment s);
+
+/// One cell of the battery.
+struct Cell {
+    std::string statistic;   ///< mean, var, adev, psd, acf, frac, corr
+    std::string channel;     ///< channel name, or "a~b" for a pair
+    int channel_index = -1;  ///< index of the channel; -1 for a pair
+    std::string cell;        ///< window, band or octave, e.g. "tau=16s"
+    Segment segment = Segment::fit;
+    bool log_scale = false;  ///< the value is a logarithm (compare as a ratio)
+    double margin = 0.0;     ///< smallest practically relevant difference of the value
+};
+
+/// Options shared by the real log and its replicates.
+struct BatteryOptions {
+    std::array<bool, kChannelCount> channels{true, true, true, true};
+    double fit_fraction = 0.6;      ///< first part of the log (by time) used to fit candidates
+    double sample_period_s = 1.0;   ///< for cell labels [s]
+};
+
+/// The battery's values for one log, plus the base fit and residual of each channel.
+struct BatteryResult {
+    std::vector<double> values;
+    std::array<fit::DriftParameters, kChannelCount> drift{};
+    std::array<std::vector<double>, kChannelCount> residual;  ///< [counts]
+};
+
+/// Computes the battery of `y` (per channel, [counts]) at instants `t_s`. When `layout` is not null it is
+/// filled with one Cell per value (identical for every log of the same length and options).
+BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<const std::vector<double>*, kChannelCount>& y,
+                              const BatteryOptions& options, std::vector<Cell>* layout = nullptr);
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,43 @@
+// Truth generators of the withheld-effect benchmark (gap-eval). Each makes a signal in counts, added at the
+// converter input of a simulated log, whose FORM differs from what the diagnosis fits (no inverse crime):
+//   thermal_rc      -> thermal_second_tc (fits one more exponential): a three-node die/package/board RC network
+//   thermostat      -> ambient_cycle (fits a sine): a bang-bang thermostat with hysteresis through a thermal lag
+//   kasdin_flicker  -> flicker (fits a sum of Gauss-Markov processes): FFT-shaped 1/f noise (Kasdin 1995)
+//   wandering_ou    -> gauss_markov (fits one exact GM): Euler-Maruyama OU whose correlation time wanders
+//   student_walk    -> rate_random_walk (fits a Gaussian walk): a walk with Student-t (nu = 4) steps
+//   burst_spikes    -> spikes (fits single-conversion Gaussian spikes): bursts of 1-3 whole output periods,
+//                      Laplace amplitudes
+//   mode_hop        -> out of the library: a bias step and a later partial return (mode hop)
+// `size_counts` sets the scale: the peak (deterministic) or standard deviation (random) of the signal, or the
+// step (mode hop), in counts. docs/gap.md §Evaluation.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace driftlab::host::gap {
+
+/// A truth generator: the generator name, the library effect it stands for ("" = out of library).
+struct TruthInfo {
+    std::string generator;
+    std::string effect;
+};
+
+/// Every generator, in the order gap-eval lists them.
+const std::vector<TruthInfo>& truth_list();
+
+/// The signal of `generator` at the output instants `t_s` [counts]. Throws std::invalid_argument on a bad name.
+std::vector<double> make_truth(const std::string& generator, const std::vector<double>& t_s, double size_counts,
+                               std::uint64_t seed);
+
+/// The per-sample signal generators, one file each (truth_*.cpp).
+std::vector<double> truth_thermal_rc(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<double> truth_thermostat(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<double> truth_mode_hop(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+
+}  // namespace driftlab::host::gap

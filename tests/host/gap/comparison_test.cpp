@@ -1,0 +1,84 @@
+// The max-|z| threshold controls the family-wise flag rate, and the gap score is about 1 under the null.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "host/gap/comparison.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+TEST(Comparison, MaxZThresholdFlagsAboutAlphaOfNullLogs) {
+    // 60 correlated cells (an AR(1) along the cells, like neighbouring octaves), R = 40 replicates; a "real" log
+    // from the same distribution must be flagged (any |z| above the threshold) in about alpha of the trials.
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> n01;
+    const int cells = 60, r = 40, trials = 400;
+    auto draw = [&] {
+        std::vector<double> v(cells);
+        double x = n01(rng);
+        for (int j = 0; j < cells; ++j) {
+            x = 0.6 * x + 0.8 * n01(rng);
+            v[static_cast<std::size_t>(j)] = 3.0 + 0.5 * x;
+        }
+        return v;
+    };
+    std::vector<Cell> layout(cells);
+    int flagged = 0;
+    double score = 0.0;
+    for (int t = 0; t < trials; ++t) {
+        Eigen::MatrixXd reps(r, cells);
+        for (int i = 0; i < r; ++i) {
+            const auto v = draw();
+            for (int j = 0; j < cells; ++j) reps(i, j) = v[static_cast<std::size_t>(j)];
+        }
+        const auto real = draw();
+        const Comparison cmp = compare(real, reps, 0.05);
+        flagged += !locate(real, cmp, layout).empty();
+        score += gap_score(cmp, layout, [](const Cell&) { return true; }) / trials;
+    }
+    const double rate = static_cast<double>(flagged) / trials;
+    // Binomial sd at 5 % over 400 trials is 1.1 %; the quantile of 40 maxima adds its own spread.
+    EXPECT_GT(rate, 0.015);
+    EXPECT_LT(rate, 0.10);
+    EXPECT_NEAR(score, 1.0, 0.1);
+}
+
+TEST(Comparison, ShiftedCellIsLocatedWithItsSignAndRatio) {
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> n01;
+    const int cells = 20, r = 30;
+    Eigen::MatrixXd reps(r, cells);
+    for (int i = 0; i < r; ++i)
+        for (int j = 0; j < cells; ++j) reps(i, j) = n01(rng) * 0.1;
+    std::vector<double> real(cells, 0.0);
+    real[7] = std::log(2.0);  // a doubled deviation
+    std::vector<Cell> layout(cells);
+    for (auto& c : layout) c.log_scale = true, c.margin = 0.0953;
+    const Comparison cmp = compare(real, reps, 0.05);
+    const auto located = locate(real, cmp, layout);
+    ASSERT_EQ(located.size(), 1u);
+    EXPECT_EQ(located[0].index, 7u);
+    EXPECT_GT(located[0].z, 3.0);
+    EXPECT_NEAR(located[0].ratio, 2.0 * std::exp(-cmp.sim_mean[7]), 1e-9);
+}
+
+TEST(Comparison, LargeButIrrelevantDifferenceIsNotLocated) {
+    // Significant (tiny spread) but below the practical margin: not a gap.
+    std::mt19937_64 rng(6);
+    std::normal_distribution<double> n01;
+    Eigen::MatrixXd reps(30, 5);
+    for (int i = 0; i < 30; ++i)
+        for (int j = 0; j < 5; ++j) reps(i, j) = 1e-4 * n01(rng);
+    std::vector<double> real(5, 0.0);
+    real[2] = 0.05;
+    std::vector<Cell> layout(5);
+    for (auto& c : layout) c.margin = 0.1;
+    const Comparison cmp = compare(real, reps, 0.05);
+    EXPECT_GT(std::abs(cmp.z[2]), 50.0);
+    EXPECT_TRUE(locate(real, cmp, layout).empty());
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap

@@ -1,0 +1,84 @@
+// End to end on small simulated logs: a clean log gives "none", a planted second time constant is located,
+// attributed and shrunk, and the JSON carries its stable keys.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gap_fixtures.hpp"
+#include "host/gap/calibrate.hpp"
+#include "host/gap/diagnose.hpp"
+#include "host/gap/gap_json.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+GapOptions small_options() {
+    GapOptions o;
+    o.replicates = 20;
+    o.seed = 5;
+    o.explain_options.fit_replicates = 6;
+    o.explain_options.max_evaluations = 12;
+    o.explain_options.max_effects = 1;
+    return o;
+}
+
+TEST(Diagnose, CleanLogHasNoLocatedCellsAndVerdictNone) {
+    const GapModel m = testing::paper_gyro_model(8);
+    const LogData log = testing::gyro_log(m, 1200, {}, 77);
+    const GapResult r = diagnose(log, sim::paper_model(), small_options());
+    EXPECT_EQ(r.verdict, "none");
+    EXPECT_TRUE(r.located.empty());
+    EXPECT_LT(r.gap_before_fit, 2.0);
+    EXPECT_TRUE(r.channels[0]);
+    EXPECT_FALSE(r.channels[1]);
+    // Calibration recovers the planted base: eq. 1 and the white noise before the quantiser.
+    EXPECT_NEAR(r.base.base[0].drift.tau_s, 411.0, 120.0);
+    EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.15);
+}
+
+TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
+    const GapModel m = testing::paper_gyro_model(8);
+    // An opposite-sign slower exponential: an overshoot that one exponential cannot absorb.
+    std::vector<double> added(1500);
+    for (std::size_t k = 0; k < added.size(); ++k) added[k] = -4.0 * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
+    const LogData log = testing::gyro_log(m, 1500, added, 78);
+    const GapResult r = diagnose(log, sim::paper_model(), small_options());
+    ASSERT_FALSE(r.located.empty());
+    EXPECT_EQ(r.verdict, "thermal_second_tc");
+    ASSERT_FALSE(r.accepted.empty());
+    EXPECT_GT(r.accepted[0].heldout_shrink, 0.5);
+    EXPECT_LT(r.gap_after_heldout, r.gap_before_heldout);
+
+    const auto j = gap_to_json(r, 20);
+    for (const char* key : {"verdict", "explanations", "located", "gap_before", "gap_after", "not_identifiable"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    const auto& e = j["explanations"][0];
+    for (const char* key : {"effect", "params", "gap_before", "gap_after", "heldout_shrink"}) EXPECT_TRUE(e.contains(key)) << key;
+    const auto& cell = j["located"][0];
+    for (const char* key : {"statistic", "channel", "cell", "ratio", "z"}) EXPECT_TRUE(cell.contains(key)) << key;
+    bool static_listed = false;
+    for (const auto& n : j["not_identifiable"]) static_listed |= n["effect"] == "cross_axis";
+    EXPECT_TRUE(static_listed);
+}
+
+TEST(Diagnose, ShortLogIsADataErrorNamingTheFile) {
+    const GapModel m = testing::paper_gyro_model(4);
+    const LogData log = testing::gyro_log(m, 50, {}, 1);
+    try {
+        diagnose(log, sim::paper_model(), small_options());
+        FAIL() << "expected DataError";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("test.csv"), std::string::npos);
+    }
+}
+
+TEST(Diagnose, BadSmoothingMetadataIsADataError) {
+    const GapModel m = testing::paper_gyro_model(4);
+    LogData log = testing::gyro_log(m, 300, {}, 1);
+    log.metadata.set("window", static_cast<std::int64_t>(99));
+    EXPECT_THROW(smoothing_from_log(log), DataError);
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap

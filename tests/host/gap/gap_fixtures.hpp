@@ -1,0 +1,42 @@
+// Small simulated logs for the gap tests: a paper-unit gyro log from the replicate chain with an optional signal
+// added at the converter input; the accel channels are constant and so left out of the analysis.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "host/gap/sim_chain.hpp"
+#include "host/log/log_data.hpp"
+
+namespace driftlab::host::gap::testing {
+
+inline GapModel paper_gyro_model(int window) {
+    GapModel m;
+    m.unit = sim::paper_model();
+    m.unit.effects.clear();
+    m.smoothing = {1.0, window, window, 0};
+    m.base[0] = {sim::kPaperDrift[0], 1.05};
+    return m;
+}
+
+inline LogData gyro_log(const GapModel& m, std::size_t samples, const std::vector<double>& added, std::uint64_t seed) {
+    LogData log;
+    log.source_name = "test.csv";
+    for (std::size_t k = 0; k < samples; ++k) {
+        log.t_s.push_back(static_cast<double>(k + 1) * m.smoothing.sample_period_s);
+        log.seq.push_back(k);
+    }
+    SimRequest req;
+    req.t_s = &log.t_s;
+    req.channels = {true, false, false, false};
+    req.added_counts[0] = added;
+    log.counts[0] = simulate(m, req, seed)[0];
+    for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
+    log.metadata.set("sample_period_s", m.smoothing.sample_period_s);
+    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(m.smoothing.conversions_per_output));
+    log.metadata.set("window", static_cast<std::int64_t>(m.smoothing.window));
+    log.metadata.set("fit_order", static_cast<std::int64_t>(m.smoothing.fit_order));
+    return log;
+}
+
+}  // namespace driftlab::host::gap::testing

@@ -1,0 +1,84 @@
+// The replicate chain: the firmware smoother's variance law and the noiseless code path.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "host/gap/sim_chain.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+GapModel flat_model(double level_counts, double sigma_counts, int window, int order) {
+    GapModel m;
+    m.unit = sim::paper_model();
+    m.unit.effects.clear();
+    m.smoothing = {1.0, window, window, order};
+    for (auto& b : m.base) b = {{0.0, level_counts, 100.0}, sigma_counts};
+    return m;
+}
+
+std::vector<double> instants(std::size_t n) {
+    std::vector<double> t(n);
+    for (std::size_t k = 0; k < n; ++k) t[k] = static_cast<double>(k + 1);
+    return t;
+}
+
+TEST(SimChain, NoiselessLevelQuantisesToNearestCode) {
+    const auto t = instants(50);
+    SimRequest req;
+    req.t_s = &t;
+    const SimOutput out = simulate(flat_model(600.3, 0.0, 8, 0), req, 1);
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        for (double v : out[c]) EXPECT_EQ(v, 600.0);
+}
+
+TEST(SimChain, MeanSmootherVarianceIsNoisePlusQuantisationOverN) {
+    // sigma_n = 2 counts >> 0.5 LSB: var(y) = (sigma_n^2 + 1/12) / N for the order-0 window (gap-method §1).
+    const auto t = instants(20000);
+    SimRequest req;
+    req.t_s = &t;
+    req.channels = {true, false, false, false};
+    const int n = 8;
+    const SimOutput out = simulate(flat_model(512.4, 2.0, n, 0), req, 3);
+    double m = 0, v = 0;
+    for (double x : out[0]) m += x;
+    m /= static_cast<double>(out[0].size());
+    for (double x : out[0]) v += (x - m) * (x - m);
+    v /= static_cast<double>(out[0].size() - 1);
+    EXPECT_NEAR(v / ((4.0 + 1.0 / 12.0) / n), 1.0, 0.04);
+    EXPECT_NEAR(m, 512.4, 0.02);
+    EXPECT_TRUE(out[1].empty());
+}
+
+TEST(SimChain, LineSmootherVarianceFollowsItsKernelPower) {
+    // Order 1 evaluated at the newest conversion: sum h^2 = 2(2N-1)/(N(N+1)).
+    const auto t = instants(20000);
+    SimRequest req;
+    req.t_s = &t;
+    req.channels = {true, false, false, false};
+    const int n = 8;
+    const SimOutput out = simulate(flat_model(512.0, 2.0, n, 1), req, 4);
+    double m = 0, v = 0;
+    for (double x : out[0]) m += x;
+    m /= static_cast<double>(out[0].size());
+    for (double x : out[0]) v += (x - m) * (x - m);
+    v /= static_cast<double>(out[0].size() - 1);
+    const double h2 = 2.0 * (2.0 * n - 1.0) / (n * (n + 1.0));
+    EXPECT_NEAR(v / ((4.0 + 1.0 / 12.0) * h2), 1.0, 0.05);
+}
+
+TEST(SimChain, SameSeedGivesSameLogAndAddedSignalShiftsIt) {
+    const auto t = instants(300);
+    SimRequest req;
+    req.t_s = &t;
+    req.channels = {true, false, false, false};
+    const GapModel m = flat_model(512.0, 1.0, 4, 0);
+    const SimOutput a = simulate(m, req, 9);
+    EXPECT_EQ(a[0], simulate(m, req, 9)[0]);
+    req.added_counts[0].assign(t.size(), 10.0);
+    const SimOutput b = simulate(m, req, 9);
+    for (std::size_t k = 0; k < t.size(); ++k) EXPECT_DOUBLE_EQ(b[0][k], a[0][k] + 10.0);
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap
