@@ -16,6 +16,9 @@ using RegisterFn = void (*)(CLI::App& app);
 // One declaration per cmd_*.cpp; keep in the order `driftlab --help` lists them.
 void register_ports(CLI::App& app);
 void register_flash(CLI::App& app);
+void register_record(CLI::App& app);
+void register_decode(CLI::App& app);
+void register_hil(CLI::App& app);
 void register_fit(CLI::App& app);
 void register_whiteness(CLI::App& app);
 void register_report(CLI::App& app);

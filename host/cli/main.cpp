@@ -11,6 +11,9 @@ namespace {
 constexpr driftlab::host::cli::RegisterFn kCommands[] = {
     driftlab::host::cli::register_ports,
     driftlab::host::cli::register_flash,
+    driftlab::host::cli::register_record,
+    driftlab::host::cli::register_decode,
+    driftlab::host::cli::register_hil,
     driftlab::host::cli::register_fit,
     driftlab::host::cli::register_whiteness,
     driftlab::host::cli::register_report,
