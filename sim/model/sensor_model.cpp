@@ -1,6 +1,7 @@
 // The synthetic sensor chain; see sensor_model.hpp.
 #include "sim/model/sensor_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sim/model/streams.hpp"
@@ -29,6 +30,13 @@ SensorModel::SensorModel(const SimModel& model, std::uint64_t seed)
         effect->reset(seed);
         by_stage_[stage_index(effect->stage())].push_back(std::move(effect));
     }
+    // The model file's order is the user's, not the physics': within a stage the effect library fixes it
+    // (adc_inl before adc_dnl quantises, saturation after the biases it clips).
+    for (auto& stage : by_stage_) {
+        std::stable_sort(stage.begin(), stage.end(), [](const auto& a, const auto& b) {
+            return application_rank(a->name()) < application_rank(b->name());
+        });
+    }
 }
 
 double SensorModel::counts_per_unit(Channel c) const {
@@ -48,21 +56,18 @@ Conversion SensorModel::convert(Channel c, double t_s) {
     ctx.true_physical = inputs_unit_;
 
     ChannelValues values = inputs_unit_;
-    for (auto& e : by_stage_[stage_index(Stage::physical)]) {
-        const double before = values[i];
-        e->apply(values, ctx);
-        // Input-like effects (vibration) are real motion: cross-couplings later in the list must see them.
-        if (e->is_input()) ctx.true_physical[i] += values[i] - before;
-    }
+    // apply_in_chain gives input effects (vibration) to all four channels' true motion, so cross-couplings
+    // (g_sensitivity reads the accel axes while the gyro is converted) see them.
+    for (auto& e : by_stage_[stage_index(Stage::physical)]) apply_in_chain(*e, values, ctx);
 
     const FrontEnd& fe = front_ends_[i];
     values[i] = fe.amplifier_v(fe.sensor_v(values[i]));
-    for (auto& e : by_stage_[stage_index(Stage::analog)]) e->apply(values, ctx);
+    for (auto& e : by_stage_[stage_index(Stage::analog)]) apply_in_chain(*e, values, ctx);
 
     // Eq. 1 is the at-rest reading, so the chain adds its distance from mid-scale at the converter input.
     values[i] = adc_.counts_from_volts(values[i]) + (drifts_[i].at_counts(ctx.t_s) - mid_counts_) +
                 noise_[i].sample_counts();
-    for (auto& e : by_stage_[stage_index(Stage::converter)]) e->apply(values, ctx);
+    for (auto& e : by_stage_[stage_index(Stage::converter)]) apply_in_chain(*e, values, ctx);
 
     return {adc_.convert_counts(values[i]), ctx.t_s};
 }
