@@ -34,7 +34,9 @@ BoardThread::BoardThread(host::io::PtyBoardOptions options) : options_(std::move
     });
 }
 
-BoardThread::~BoardThread() {
+BoardThread::~BoardThread() { stop(); }
+
+void BoardThread::stop() {
     stop_.store(true);
     join();
 }

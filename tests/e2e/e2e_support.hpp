@@ -26,6 +26,8 @@ public:
     /// Waits until the pseudo-terminal exists and returns the path clients open.
     std::string path();
     void join();
+    /// Stops the board before its duration and waits for it, so its ground-truth log is complete on disk.
+    void stop();
     const host::io::PtyBoardSummary& summary() const { return summary_; }
 
 private:

@@ -83,6 +83,8 @@ TEST(RecordPty, PolledRecordingHoldsExactlyTheAnswersTheBoardSent) {
                                       "-o", log},
                                      dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
+    // The ground truth is flushed once a second while the board runs: stop it so every answer is on disk.
+    board.stop();
     const host::LogData rec = host::read_log(log);
     const host::LogData truth = host::read_log(dir.file("truth.csv"));
     EXPECT_GE(rec.size(), 21u);
