@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/cli/commands.hpp"
+#include "host/io/log_assembler.hpp"
 #include "host/log/log_writer.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
@@ -58,26 +59,6 @@ std::vector<std::string> optional_columns(bool raw) {
 
 using MetadataPairs = std::vector<std::pair<std::string, std::string>>;
 
-// The same keys a recording of a real board carries (docs/log-format.md §2), then the simulator's own.
-LogMetadata hil_metadata(const proto::VersionPayload& v, const proto::ConfigPayload& c, const MetadataPairs& extra) {
-    LogMetadata m;
-    m.set("source", std::string("hil"));
-    m.set("firmware_version",
-          std::to_string(v.fw_major) + "." + std::to_string(v.fw_minor) + "." + std::to_string(v.fw_patch));
-    m.set("protocol_version", static_cast<std::int64_t>(v.proto_version));
-    m.set("sample_period_s", c.output_period_ms / 1000.0);
-    m.set("conversions_per_output", static_cast<std::int64_t>(c.conversions_per_output));
-    m.set("window", static_cast<std::int64_t>(c.window));
-    m.set("fit_order", static_cast<std::int64_t>(c.fit_order));
-    m.set("mode", std::string(c.mode == static_cast<std::uint8_t>(proto::OutputMode::stream) ? "stream" : "poll"));
-    m.set("raw", static_cast<std::int64_t>(c.raw));
-    m.set("adc_bits", static_cast<std::int64_t>(v.adc_bits));
-    m.set("vref_v", v.vref_mv / 1000.0);
-    m.set("tick_hz", static_cast<std::int64_t>(v.tick_hz));
-    for (const auto& [key, value] : extra) m.set(key, value);
-    return m;
-}
-
 // One log line per record; the writer is opened once the handshake has produced VERSION for the metadata.
 class HilLog {
 public:
@@ -85,7 +66,7 @@ public:
 
     void open(const proto::VersionPayload& v, const proto::ConfigPayload& c) {
         raw_ = c.raw != 0;
-        writer_ = std::make_unique<LogWriter>(path_, hil_metadata(v, c, extra_), optional_columns(raw_));
+        writer_ = std::make_unique<LogWriter>(path_, io::board_metadata("hil", v, c, extra_), optional_columns(raw_));
     }
     void write(const sim::HilRecord& r) {
         LogRow row;

@@ -22,10 +22,10 @@ std::string header_value(const CaptureHeader& header, const std::string& key) {
 
 }  // namespace
 
-LogMetadata recording_metadata(const proto::VersionPayload& v, const proto::ConfigPayload& c,
-                               const CaptureHeader& capture_header) {
+LogMetadata board_metadata(std::string_view source, const proto::VersionPayload& v, const proto::ConfigPayload& c,
+                           const CaptureHeader& extra) {
     LogMetadata m;
-    m.set("source", std::string("record"));
+    m.set("source", std::string(source));
     m.set("firmware_version",
           std::to_string(v.fw_major) + "." + std::to_string(v.fw_minor) + "." + std::to_string(v.fw_patch));
     m.set("protocol_version", static_cast<std::int64_t>(v.proto_version));
@@ -46,7 +46,7 @@ LogMetadata recording_metadata(const proto::VersionPayload& v, const proto::Conf
     m.set("adc_pins", pins);
     m.set("reset_cause", static_cast<std::int64_t>(v.reset_cause));
     m.set("assert_line", static_cast<std::int64_t>(v.assert_line));
-    for (const auto& [key, value] : capture_header) m.set(key, value);
+    for (const auto& [key, value] : extra) m.set(key, value);
     return m;
 }
 
@@ -190,7 +190,7 @@ void LogAssembler::start_log() {
             columns.emplace_back(name);
         }
     }
-    writer_ = std::make_unique<LogWriter>(log_path_, recording_metadata(*version_, *config_, capture_header_),
+    writer_ = std::make_unique<LogWriter>(log_path_, board_metadata("record", *version_, *config_, capture_header_),
                                           columns);
 }
 

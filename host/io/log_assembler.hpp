@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "driftlab/proto/decoder.hpp"
@@ -89,9 +90,9 @@ private:
     AssemblyStats stats_;
 };
 
-/// Metadata of a recorded log: firmware facts from VERSION, configuration from CONFIG, then the capture
-/// header (port, baud, start time...).
-LogMetadata recording_metadata(const proto::VersionPayload& version, const proto::ConfigPayload& config,
-                               const CaptureHeader& capture_header);
+/// Metadata of a log made from a board: `source` (record, hil), firmware facts from VERSION, configuration from
+/// CONFIG, then the `extra` pairs (a capture header: port, baud, start time...; or the simulator's own keys).
+LogMetadata board_metadata(std::string_view source, const proto::VersionPayload& version,
+                           const proto::ConfigPayload& config, const CaptureHeader& extra);
 
 }  // namespace driftlab::host::io
