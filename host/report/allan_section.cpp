@@ -1,12 +1,10 @@
 // Allan section of the report; see allan_section.hpp.
 #include "host/report/allan_section.hpp"
 
-#include <span>
-
 #include "host/report/html.hpp"
 #include "host/stats/allan_analysis.hpp"
+#include "host/stats/allan_pipeline.hpp"
 #include "host/stats/noise_terms.hpp"
-#include "host/stats/phase_record.hpp"
 
 namespace driftlab::host::report {
 namespace {
@@ -14,10 +12,12 @@ namespace {
 /// Fewest samples for an Allan curve with at least a few octaves.
 constexpr std::size_t kMinAllanSamples = 32;
 
-stats::AnalysedCurve oadev(const std::vector<double>& rate, double tau0_s) {
-    const auto record = stats::PhaseRecord::from_rate(std::span<const double>(rate), tau0_s);
-    const auto factors = stats::analysis_factors(record, stats::Deviation::oadev, stats::TauGridOptions{});
-    return stats::analyse_deviation(record, stats::Deviation::oadev, factors);
+// OADEV through the Allan pipeline, so late or missing samples become gaps on the tau0 grid instead of being
+// spliced together. The drift is the report's own eq. 1 fit, removed by the caller.
+stats::AllanCurves oadev(const std::vector<double>& t_s, const std::vector<double>& rate, double tau0_s) {
+    stats::AllanRequest request;
+    request.remove_drift = false;
+    return stats::analyse_allan(t_s, rate, tau0_s, request).raw;
 }
 
 PlotSeries curve_series(const stats::AnalysedCurve& c, const std::string& title, const std::string& color) {
@@ -50,13 +50,15 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
             continue;
         }
         const double tau0_s = a->sample_period_s;
-        const stats::AnalysedCurve raw = oadev(a->data.values, tau0_s);
-        const stats::AnalysedCurve residual = oadev(a->fit.residual, tau0_s);
+        const stats::AllanCurves raw_curves = oadev(a->data.t_s, a->data.values, tau0_s);
+        const stats::AllanCurves residual_curves = oadev(a->data.t_s, a->fit.residual, tau0_s);
+        const stats::AnalysedCurve& raw = *raw_curves.find(stats::Deviation::oadev);
+        const stats::AnalysedCurve& residual = *residual_curves.find(stats::Deviation::oadev);
         if (residual.curve.dev.empty()) continue;
         std::size_t best = 0;
         for (std::size_t i = 1; i < residual.curve.dev.size(); ++i)
             if (residual.curve.dev[i] < residual.curve.dev[best]) best = i;
-        const stats::NoiseTermFit terms = stats::fit_noise_terms(residual.curve.tau_s, residual.curve.dev, residual.edf);
+        const stats::NoiseTermFit& terms = residual_curves.terms;
         h += "<tr><td>" + name + "</td><td>" + sig(tau0_s) + "</td><td>" +
              (raw.curve.dev.empty() ? "-" : sig(raw.curve.dev.front())) + "</td><td>" + sig(residual.curve.dev[best]) +
              "</td><td>" + sig(residual.curve.tau_s[best]) + "</td>";
