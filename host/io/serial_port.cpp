@@ -92,7 +92,10 @@ void SerialPort::close() {
     try {
         if (port_->IsOpen()) port_->Close();
     } catch (const std::exception&) {
-        // Closing a device that vanished can fail; it is gone either way.
+        // Closing a device that vanished can fail, and LibSerial's destructor would then close again and throw
+        // out of a destructor (std::terminate): abandon the object, as open_or_throw does. It is gone either way.
+        static_cast<void>(port_.release());
+        return;
     }
     port_.reset();
 }
