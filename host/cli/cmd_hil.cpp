@@ -3,7 +3,9 @@
 // docs/sim.md §Host-in-the-loop).
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,12 +18,15 @@
 
 #include "host/cli/commands.hpp"
 #include "host/io/log_assembler.hpp"
+#include "host/io/pty_board.hpp"
+#include "firmware/core/hal.hpp"
 #include "host/log/log_writer.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/model_file.hpp"
+#include "sim/model/sensor_model.hpp"
 #ifdef DRIFTLAB_HAVE_SIM_AVR
 #include "sim/avr/avr_error.hpp"
 #include "sim/avr/avr_hil.hpp"
@@ -47,7 +52,37 @@ struct HilCliOptions {
     std::string elf;                 // AVR firmware; default: the one this build made
     int gdb_port = 0;                // > 0: simavr's gdb stub on this port, CPU stopped until avr-gdb continues
     bool cycles = false;             // AVR: also print the firmware's cycle budget at this configuration
+    bool pty = false;                // serve the board on a pseudo-terminal instead of running a host
+    double speed = 1.0;              // --pty: virtual seconds per wall second
+    std::string pty_link;            // --pty: stable symlink to the pseudo-terminal
 };
+
+std::atomic<bool> g_pty_stop{false};
+
+// --pty: the native board serves its UART on a pseudo-terminal, paced to the wall clock, until the duration
+// (only when given) or Ctrl-C; a host such as `driftlab record --port PATH` configures and reads it
+// (docs/recording.md "Recording a simulated board").
+void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
+    if (o.target != "native") throw UsageError("--pty: only the native target is served on a pseudo-terminal");
+    if (!(o.speed > 0.0)) throw UsageError("--speed: expected a positive factor");
+    sim::SensorModel sensor(h.model, o.seed);
+    io::PtyBoardOptions p;
+    p.speed = o.speed;
+    p.duration_s = o.duration_s.value_or(0.0);
+    p.link_path = o.pty_link;
+    const double warm_s = h.warm_up_s;
+    const auto code = [&sensor, warm_s](Channel c, std::uint64_t tick) {
+        return sensor.convert(c, static_cast<double>(tick) / fw::kTickHz + warm_s).code;
+    };
+    std::signal(SIGINT, [](int) { g_pty_stop.store(true); });
+    std::signal(SIGTERM, [](int) { g_pty_stop.store(true); });
+    const io::PtyBoardSummary s = io::serve_pty_board(p, code, g_pty_stop, [](const std::string& path) {
+        std::printf("%s\n", path.c_str());
+        std::fflush(stdout);
+    });
+    std::fprintf(stderr, "served %.1f s of board time: %llu frames sent, %llu bytes nobody read\n", s.virtual_s,
+                 static_cast<unsigned long long>(s.frames_sent), static_cast<unsigned long long>(s.bytes_dropped));
+}
 
 // Log columns beyond the required ones, in the order the rows fill them.
 std::vector<std::string> optional_columns(bool raw) {
@@ -147,6 +182,7 @@ sim::HilOptions build_options(const HilCliOptions& o) {
 
 void run_hil_command(const HilCliOptions& o) {
     sim::HilOptions h = build_options(o);
+    if (o.pty) return serve_pty_command(o, h);
     const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (path != "-" && !parent.empty()) std::filesystem::create_directories(parent);
@@ -255,6 +291,10 @@ void register_hil(CLI::App& app) {
     cmd->add_flag("--stream", opts->stream, "Stream mode: the firmware sends without being polled");
     cmd->add_option("-o,--output", opts->output, "Log file (default out/<preset>.csv; - for standard output)");
     cmd->add_flag("--json", opts->json, "Print the run summary as JSON");
+    cmd->add_flag("--pty", opts->pty, "Serve the board's UART on a pseudo-terminal (prints its path) for "
+                                      "driftlab record; runs until --duration or Ctrl-C");
+    cmd->add_option("--speed", opts->speed, "--pty: virtual seconds per wall second")->capture_default_str();
+    cmd->add_option("--pty-link", opts->pty_link, "--pty: also make this symlink to the pseudo-terminal");
     cmd->add_option("--target", opts->target, "native (firmware core on the host) or avr (the real ELF in simavr)")
         ->capture_default_str();
     cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)");

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <map>
+#include <sstream>
 #include <thread>
 
 #include "host/log/log_reader.hpp"
@@ -163,4 +164,28 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     EXPECT_GT(missed_outputs, 40.0);
     EXPECT_NEAR(static_cast<double>(rec.seq[k] - rec.seq[k - 1] - 1), missed_outputs + kHandshakeReplies, 1e-6);
     expect_rows_in_truth(rec, truth);
+}
+
+// `driftlab hil --pty` serves the simulated board itself: its first output line is the path a recorder opens.
+TEST(RecordPty, HilPtyServesTheSimulatedBoardToTheRecorder) {
+    TempDir dir("hilpty");
+    const pid_t hil = spawn_driftlab({"hil", "--pty", "--speed", "20", "--duration", "120"}, dir.file("hil.out"));
+    std::string path;
+    for (int i = 0; i < 500 && path.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        std::istringstream lines(read_text(dir.file("hil.out")));
+        std::string first;
+        if (std::getline(lines, first) && first.rfind("/dev/", 0) == 0) path = first;
+    }
+    ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
+    const std::string log = dir.file("rec.csv");
+    const RunResult r = run_driftlab({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log},
+                                     dir.path());
+    ::kill(hil, SIGTERM);
+    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const host::LogData rec = host::read_log(log);
+    EXPECT_GE(rec.size(), 101u);
+    // The paper's gyro at rest after the warm-up stays within a few counts of Table 1's C1 + C2 = 508.
+    for (std::size_t i = 0; i < rec.size(); ++i) EXPECT_NEAR(rec.counts[0][i], 506.0, 6.0) << "row " << i;
 }
