@@ -40,6 +40,7 @@ struct HilCliOptions {
     std::optional<double> duration_s;
     std::optional<double> period_s;
     std::optional<int> window;
+    std::optional<int> conversions;
     std::optional<int> order;
     std::optional<double> warm_s;
     std::string model_file;
@@ -156,6 +157,7 @@ sim::HilOptions build_options(const HilCliOptions& o) {
         fw.output_period_ms = static_cast<std::uint16_t>(std::lround(ms));
     }
     if (o.window) fw.window = static_cast<std::uint8_t>(*o.window);
+    if (o.conversions) fw.conversions_per_output = static_cast<std::uint8_t>(*o.conversions);
     if (o.order) fw.fit_order = static_cast<std::uint8_t>(*o.order);
     if (o.raw) fw.raw = 1;
     if (o.stream) fw.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
@@ -276,12 +278,15 @@ void register_hil(CLI::App& app) {
     auto opts = std::make_shared<HilCliOptions>();
     CLI::App* cmd = app.add_subcommand(
         "hil", "Run the firmware in virtual time against the sensor and link models and write a canonical log");
-    cmd->add_option("--preset", opts->preset, "fig3 (4000 s from power-on, 1 s outputs) or fig2 (1000 outputs 0.1 s "
+    cmd->add_option("--preset", opts->preset, "fig3 (4000 s from power-on at the model's output period) or fig2 (1000 outputs 0.1 s "
                                               "apart, raw and least-squares)")
         ->capture_default_str();
     cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s]");
     cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds");
     cmd->add_option("--window", opts->window, "Least-squares window N [conversions]")->check(CLI::Range(1, 64));
+    cmd->add_option("--conversions", opts->conversions,
+                    "Conversions per channel per output (10 ms outputs need <= 12: docs/firmware.md)")
+        ->check(CLI::Range(1, 64));
     cmd->add_option("--order", opts->order, "Least-squares fit order")->check(CLI::Range(0, 1));
     cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s]")
         ->check(CLI::NonNegativeNumber);

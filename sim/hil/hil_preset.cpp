@@ -13,8 +13,7 @@ void apply_preset(Preset preset, HilOptions& options) {
     switch (preset) {
     case Preset::fig3:
         options.duration_s = 4000.0;
-        options.warm_up_s = 0.0;
-        options.model.firmware.output_period_ms = 1000;
+        options.warm_up_s = 0.0;  // the model's own output period (paper.toml: 1 s) is kept
         break;
     case Preset::fig2:
         options.duration_s = 100.0;

@@ -1,5 +1,5 @@
 // The paper's two experiments as presets of a host-in-the-loop run (docs/sim.md §Presets).
-//  fig3: 4000 outputs one second apart from power-on, with the model's own firmware settings (paper.toml: mean
+//  fig3: 4000 s from power-on, with the model's own firmware settings (paper.toml: one output a second, mean
 //        of 25 conversions per output): the warm-up drift of Fig. 3 and Table 1.
 //  fig2: 1000 outputs 0.1 s apart from a sensor powered an hour earlier (settled, so the spread is noise, not
 //        warm-up), raw and least-squares values side by side: window 17, fit order 0, which takes the gyro's raw
