@@ -7,6 +7,7 @@
 #include <string>
 
 #include "host/fit/lm_fit.hpp"
+#include "host/gap/event_statistics.hpp"
 #include "host/gap/spectral.hpp"
 
 namespace driftlab::host::gap {
@@ -20,6 +21,9 @@ constexpr double kPsdMargin = 0.2303;         // 1 dB in ln power
 constexpr double kAcfMargin = 0.1;            // mean autocorrelation in a lag band
 constexpr double kCorrMargin = 0.1;           // lag-0 correlation between channels
 constexpr int kFracBins = 8;
+constexpr double kTailMargin = 0.1906;        // ln 1.21: kurtosis beyond 21 %
+constexpr double kJumpMargin = 0.2231;        // ln 1.25: the largest block step beyond 25 % of the usual
+constexpr std::size_t kJumpBlocks = 16;       // blocks per part for the step statistic
 
 class Builder {
 public:
@@ -144,6 +148,11 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
                 out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin});
             }
             out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
+            out.add(log_kurtosis(part), {"tail", name, ci, "kurtosis", seg, true, kTailMargin});
+            if (len >= kJumpBlocks)
+                out.add(log_jump_ratio(part, kJumpBlocks),
+                        {"jump", name, ci, out.wants_layout() ? "largest of " + std::to_string(kJumpBlocks) + " block steps" : "",
+                         seg, true, kJumpMargin});
         }
     }
     for (std::size_t a = 0; a < kChannelCount; ++a) {
