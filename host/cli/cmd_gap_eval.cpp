@@ -1,5 +1,6 @@
 // `driftlab gap-eval`: the withheld-effect benchmark of the gap diagnosis (host/gap/evaluate, docs/gap.md §Evaluation).
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -55,18 +56,25 @@ void run(const GapEvalCommandOptions& o) {
     if (o.quick) {
         options.samples = 800;
         options.levels = {2.0};
+        options.detection_logs = 4;
         options.replicates = 16;
         options.fit_replicates = 6;
         options.max_evaluations = 12;
     }
-    if (isatty(2))
-        options.progress = [](std::size_t done, std::size_t total) {
-            std::fprintf(stderr, "\rgap-eval: %zu/%zu logs", done, total);
+    const bool tty = isatty(2);
+    auto progress_for = [tty](const char* what) -> std::function<void(std::size_t, std::size_t)> {
+        if (!tty) return {};
+        return [what](std::size_t done, std::size_t total) {
+            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu", what, done, total);
             if (done == total) std::fprintf(stderr, "\n");
         };
-    const auto cases = gap::run_cases(options);
+    };
+    options.progress = progress_for("detection threshold a_50, generator");
+    const auto sizes = gap::detection_sizes(options);
+    options.progress = progress_for("diagnosing log");
+    const auto cases = gap::run_cases(options, sizes);
     const gap::Thresholds th = gap::tune(cases);
-    std::cout << gap::score_table(cases, th, options);
+    std::cout << gap::score_table(cases, th, options, sizes);
 }
 
 }  // namespace

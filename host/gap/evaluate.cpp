@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "host/gap/candidates.hpp"
 #include "host/gap/comparison.hpp"
@@ -12,6 +13,7 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/truth.hpp"
+#include "host/stats/binomial_interval.hpp"
 #include "sim/model/rng.hpp"
 #include "sim/model/white_noise.hpp"
 
@@ -22,13 +24,13 @@ namespace {
 constexpr double kSamplePeriodS = 1.0;
 constexpr int kWindow = 8;
 
-// Reference size of each generator in units of the smoothed output's white-noise standard deviation; chosen
-// near the sizes the battery starts to see on a 1500-sample log (docs/gap.md §Evaluation).
-double reference_size(const std::string& generator) {
-    static const std::map<std::string, double> ref = {
+// Where the search for a_50 starts, in units of the smoothed output's white-noise standard deviation: near the
+// sizes the battery starts to see on a 1500-sample log. Only a starting point; detection_sizes() measures a_50.
+double first_guess(const std::string& generator) {
+    static const std::map<std::string, double> guess = {
         {"thermal_rc", 1.5}, {"thermostat", 0.4}, {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
         {"student_walk", 1.0}, {"burst_spikes", 4.0}, {"mode_hop", 0.5}};
-    return ref.at(generator);
+    return guess.at(generator);
 }
 
 GapModel randomised_truth(std::uint64_t seed) {
@@ -71,18 +73,28 @@ double output_noise_sd(const GapModel& m) {
     return std::sqrt((s * s + 1.0 / 12.0) / kWindow);
 }
 
-EvalCase run_case(const std::string& generator, const std::string& truth, double level, std::uint64_t seed, bool tuning,
-                  const EvalOptions& options) {
-    EvalCase c{generator, truth, level, 0.0, seed, tuning, false, {}, 0.0, false};
-    const GapModel model = randomised_truth(seed);
+struct Planted {
+    GapModel model;
+    LogData log;
+    double size_counts = 0.0;
+};
+
+// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations.
+Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples) {
+    Planted p;
+    p.model = randomised_truth(seed);
     std::vector<double> added;
     if (generator != "none") {
-        c.size_counts = level * reference_size(generator) * output_noise_sd(model);
-        std::vector<double> t(options.samples);
+        p.size_counts = size_sd * output_noise_sd(p.model);
+        std::vector<double> t(samples);
         for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kSamplePeriodS;
-        added = make_truth(generator, t, c.size_counts, seed);
+        added = make_truth(generator, t, p.size_counts, seed, seed);
     }
-    const LogData log = make_log(model, added, options.samples, seed);
+    p.log = make_log(p.model, added, samples, seed);
+    return p;
+}
+
+GapOptions gap_options(std::uint64_t seed, const EvalOptions& options) {
     GapOptions go;
     go.replicates = options.replicates;
     go.seed = seed * 7 + 3;
@@ -90,26 +102,53 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     go.explain_options.fit_replicates = options.fit_replicates;
     go.explain_options.max_evaluations = options.max_evaluations;
     go.explain_options.max_effects = 1;
+    return go;
+}
+
+double size_of(const std::vector<DetectionSize>& sizes, const std::string& generator) {
+    for (const auto& d : sizes)
+        if (d.generator == generator) return d.a50;
+    throw std::invalid_argument("no detection size measured for " + generator);
+}
+
+EvalCase run_case(const std::string& generator, const std::string& truth, double level, std::uint64_t seed, bool tuning,
+                  const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    EvalCase c{generator, truth, level, 0.0, seed, tuning, false, {}, 0.0, false};
+    const Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples);
+    c.size_counts = p.size_counts;
+    const LogData& log = p.log;
+    GapOptions go = gap_options(seed, options);
     // Every candidate's metrics are kept; the thresholds are applied afterwards (decide()).
     go.explain_options.penalty_per_param = 0.0;
     go.explain_options.min_heldout_shrink = -1e9;
     const GapResult r = diagnose(log, sim::paper_model(), go);
     c.detected = !r.located.empty();
     c.tried = r.tried;
-    if (!r.accepted.empty() && r.accepted.front().effect == truth) {
-        // The predicted shrink re-measured on replicates the choice never saw.
-        BatteryOptions b;
-        b.channels = r.channels;
-        b.sample_period_s = kSamplePeriodS;
-        std::array<const std::vector<double>*, kChannelCount> y{};
-        y[0] = &log.counts[0];
-        std::vector<Cell> layout;
-        const auto real = compute_battery(log.t_s, y, b, &layout).values;
-        const auto held = [](const Cell& cell) { return cell.segment == Segment::heldout; };
-        const std::uint64_t fresh = go.seed + 1000003;
-        const double before = gap_score(compare(real, run_replicates(r.base, log.t_s, b, go.replicates, fresh, go.threads), 0.05), layout, held);
-        const double after = gap_score(compare(real, run_replicates(r.final_model, log.t_s, b, go.replicates, fresh, go.threads), 0.05), layout, held);
-        c.shrink_check = before > 1.0 ? (before - after) / (before - 1.0) : 0.0;
+    const bool right = !r.accepted.empty() && r.accepted.front().effect == truth;
+    if (!c.detected || generator == "none") return c;
+    // Held-out gap on replicates the diagnosis never saw: base, chosen model, and the oracle (true model).
+    BatteryOptions b;
+    b.channels = r.channels;
+    b.sample_period_s = kSamplePeriodS;
+    std::array<const std::vector<double>*, kChannelCount> y{};
+    y[0] = &log.counts[0];
+    std::vector<Cell> layout;
+    const auto real = compute_battery(log.t_s, y, b, &layout).values;
+    const auto held = [](const Cell& cell) { return cell.segment == Segment::heldout; };
+    const std::uint64_t fresh = go.seed + 1000003;
+    auto heldout_gap = [&](const GapModel& m, const ReplicateExtra& extra) {
+        return gap_score(compare(real, run_replicates(m, log.t_s, b, go.replicates, fresh, go.threads, extra), 0.05),
+                         layout, held);
+    };
+    const double before = heldout_gap(r.base, {});
+    auto shrink = [before](double after) { return before > 1.0 ? (before - after) / (before - 1.0) : 0.0; };
+    const ReplicateExtra oracle = [&](std::uint64_t rs, SimRequest& req) {
+        req.added_counts[0] = make_truth(generator, log.t_s, p.size_counts, seed, rs);
+    };
+    c.oracle_shrink = shrink(heldout_gap(p.model, oracle));
+    c.has_oracle = true;
+    if (right) {
+        c.shrink_check = shrink(heldout_gap(r.final_model, {}));
         c.has_shrink_check = true;
     }
     return c;
@@ -117,18 +156,99 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
 
 }  // namespace
 
-std::string decide(const EvalCase& c, const Thresholds& th) {
-    if (!c.detected) return "none";
+Decision decide(const EvalCase& c, const Thresholds& th) {
+    if (!c.detected) return {"none", ""};
     const Explanation* best = nullptr;
-    for (const auto& e : c.tried)
-        if (passes(e, th.penalty_per_param, th.min_heldout_shrink) && (!best || e.heldout_loss_gain > best->heldout_loss_gain)) best = &e;
-    return best ? best->effect : "unexplained";
+    const Explanation* second = nullptr;
+    for (const auto& e : c.tried) {
+        if (!passes(e, th.penalty_per_param, th.min_heldout_shrink)) continue;
+        if (!best || e.heldout_loss_gain > best->heldout_loss_gain) {
+            second = best;
+            best = &e;
+        } else if (!second || e.heldout_loss_gain > second->heldout_loss_gain) {
+            second = &e;
+        }
+    }
+    if (!best) return {"unexplained", ""};
+    const bool close = second && second->heldout_loss_gain >= (1.0 - ExplainOptions{}.ambiguity) * best->heldout_loss_gain;
+    return {best->effect, close ? second->effect : ""};
 }
 
-std::vector<EvalCase> run_cases(const EvalOptions& options) {
+namespace {
+
+// Right answer: the truth's effect (or, for `pair_ok`, a declared ambiguous pair containing it); "none" for clean
+// logs; for out-of-library logs anything but a library effect.
+bool correct(const EvalCase& c, const Decision& d, bool pair_ok) {
+    if (c.truth.empty()) return d.verdict == "unexplained" || d.verdict == "none";
+    return d.verdict == c.truth || (pair_ok && d.ambiguous_with == c.truth);
+}
+
+std::string truth_of(const std::string& generator) {
+    for (const auto& t : truth_list())
+        if (t.generator == generator) return t.effect;
+    throw std::invalid_argument("unknown truth generator: " + generator);
+}
+
+std::vector<std::string> generators_of(const EvalOptions& options) {
     std::vector<std::string> gens = options.generators;
     if (gens.empty())
         for (const auto& t : truth_list()) gens.push_back(t.generator);
+    return gens;
+}
+
+// Seeds of the a_50 logs: drawn from the tuning range, offset far from the case seeds (seed * 1009 + index).
+std::uint64_t detection_seed(const EvalOptions& options, std::size_t generator, int step, int log) {
+    const std::uint64_t tune_count = options.tune_last - options.tune_first + 1;
+    const std::uint64_t base = options.tune_first + static_cast<std::uint64_t>(log) % tune_count;
+    return (base << 32) + (generator << 16) + (static_cast<std::uint64_t>(step) << 8) + static_cast<std::uint64_t>(log);
+}
+
+}  // namespace
+
+std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
+    const auto gens = generators_of(options);
+    std::vector<DetectionSize> out;
+    for (std::size_t g = 0; g < gens.size(); ++g) {
+        DetectionSize d{gens[g], first_guess(gens[g]), {}};
+        auto fraction_at = [&](double size, int step) {
+            int hits = 0;
+            for (int k = 0; k < options.detection_logs; ++k) {
+                const std::uint64_t seed = detection_seed(options, g, step, k);
+                GapOptions go = gap_options(seed, options);
+                go.explain = false;
+                hits += !diagnose(plant(gens[g], size, seed, options.samples).log, sim::paper_model(), go).located.empty();
+            }
+            const double f = static_cast<double>(hits) / options.detection_logs;
+            d.curve.emplace_back(size, f);
+            return f;
+        };
+        // Double or halve until the detected fraction crosses 1/2 (at most 6 steps), then interpolate.
+        double size = d.a50;
+        double f = fraction_at(size, 0);
+        const bool above = f >= 0.5;
+        double prev_size = size, prev_f = f;
+        for (int step = 1; step <= 6 && (f >= 0.5) == above; ++step) {
+            prev_size = size, prev_f = f;
+            size = above ? size / 2.0 : size * 2.0;
+            f = fraction_at(size, step);
+        }
+        if ((f >= 0.5) == above) {
+            d.a50 = size;  // never crossed within 64x of the guess: report the last size tried
+        } else {
+            const double lo = std::min(size, prev_size), hi = std::max(size, prev_size);
+            const double f_lo = size < prev_size ? f : prev_f, f_hi = size < prev_size ? prev_f : f;
+            const double w = f_hi > f_lo ? (0.5 - f_lo) / (f_hi - f_lo) : 0.5;
+            d.a50 = std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo)));
+        }
+        std::sort(d.curve.begin(), d.curve.end());
+        out.push_back(std::move(d));
+        if (options.progress) options.progress(g + 1, gens.size());
+    }
+    return out;
+}
+
+std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    const auto gens = generators_of(options);
     struct Job {
         std::string generator, truth;
         double level;
@@ -141,18 +261,14 @@ std::vector<EvalCase> run_cases(const EvalOptions& options) {
         const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
         for (std::uint64_t s = first; s <= last; ++s) {
             jobs.push_back({"none", "none", 0.0, s, set == 0});
-            for (const auto& g : gens) {
-                std::string truth;
-                for (const auto& t : truth_list())
-                    if (t.generator == g) truth = t.effect;
-                for (double level : options.levels) jobs.push_back({g, truth, level, s, set == 0});
-            }
+            for (const auto& g : gens)
+                for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
         }
     }
     std::vector<EvalCase> out;
     for (std::size_t i = 0; i < jobs.size(); ++i) {
         const Job& j = jobs[i];
-        out.push_back(run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options));
+        out.push_back(run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options, sizes));
         if (options.progress) options.progress(i + 1, jobs.size());
     }
     return out;
@@ -164,19 +280,19 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
     for (double pen : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0}) {
         for (double shrink : {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6}) {
             const Thresholds th{pen, shrink};
-            std::size_t none = 0, fp = 0, correct = 0, total = 0;
+            std::size_t none = 0, fp = 0, right = 0, total = 0;
             for (const auto& c : cases) {
                 if (!c.tune) continue;
-                const std::string v = decide(c, th);
+                const Decision d = decide(c, th);
                 ++total;
                 if (c.truth == "none") {
                     ++none;
-                    fp += v != "none";
+                    fp += d.verdict != "none";
                 }
-                correct += c.truth.empty() ? (v == "unexplained" || v == "none") : v == c.truth;
+                right += correct(c, d, false);
             }
             const double fpr = none ? static_cast<double>(fp) / static_cast<double>(none) : 0.0;
-            const double score = static_cast<double>(correct) / static_cast<double>(std::max<std::size_t>(1, total)) -
+            const double score = static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, total)) -
                                  (fpr > 0.05 ? 1.0 : 0.0);
             if (score > best_score) best_score = score, best = th;
         }
@@ -184,7 +300,25 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
     return best;
 }
 
-std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options) {
+namespace {
+
+std::string fixed(double v, int digits) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << std::fixed << v;
+    return s.str();
+}
+
+std::string median(std::vector<double> v) {
+    if (v.empty()) return "-";
+    std::sort(v.begin(), v.end());
+    return fixed(v[v.size() / 2], 2);
+}
+
+}  // namespace
+
+std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options,
+                        const std::vector<DetectionSize>& sizes) {
     std::ostringstream md;
     std::vector<std::string> columns;
     for (const auto& info : candidate_list()) columns.push_back(info.effect);
@@ -198,7 +332,27 @@ std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th
        << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink << ". Scored on seeds "
        << options.score_first << ".." << options.score_last << ", " << options.samples << "-sample logs, R = "
        << options.replicates << ".\n\n";
-    md << "### Confusion (rows: truth generator -> library effect; columns: verdict), all sizes\n\n| truth |";
+
+    md << "### Detection thresholds a_50 (tuning seeds, " << options.detection_logs
+       << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
+          "| generator | a_50 | detected fraction by size |\n|---|---|---|\n";
+    for (const auto& d : sizes) {
+        md << "| " << d.generator << " | " << fixed(d.a50, 2) << " |";
+        for (const auto& [size, f] : d.curve) md << " " << fixed(size, 2) << ": " << fixed(f, 2) << ";";
+        md << " |\n";
+    }
+
+    std::size_t clean = 0, clean_fp = 0;
+    for (const auto& c : cases)
+        if (!c.tune && c.generator == "none") ++clean, clean_fp += decide(c, th).verdict != "none";
+    if (clean) {
+        const auto ci = stats::clopper_pearson(clean_fp, clean);
+        md << "\nFalse-positive rate on clean logs: " << clean_fp << "/" << clean << " = "
+           << fixed(100.0 * static_cast<double>(clean_fp) / static_cast<double>(clean), 1) << " % (95 % Clopper-Pearson "
+           << fixed(100.0 * ci.lower, 1) << "-" << fixed(100.0 * ci.upper, 1) << " %).\n";
+    }
+
+    md << "\n### Confusion (rows: truth generator -> library effect; columns: verdict), all sizes\n\n| truth |";
     for (const auto& c : columns) md << " " << c << " |";
     md << "\n|---|";
     for (std::size_t i = 0; i < columns.size(); ++i) md << "---|";
@@ -209,42 +363,44 @@ std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th
         for (const auto& c : cases) {
             if (c.tune || c.generator != row) continue;
             truth = c.truth.empty() ? "out of library" : c.truth;
-            ++count[decide(c, th)];
+            ++count[decide(c, th).verdict];
         }
         md << "| " << row << " (" << truth << ") |";
         for (const auto& col : columns) md << " " << count[col] << " |";
         md << "\n";
     }
-    md << "\n### Per generator and size (scoring seeds)\n\n| truth | size x ref | n | detected | top-1 correct | "
-          "held-out shrink (predicted, median) | re-measured (median) |\n|---|---|---|---|---|---|---|\n";
+    md << "\n### Per generator and size (scoring seeds)\n\n"
+          "`top-1` counts the verdict alone; `or pair` also counts a declared ambiguous pair holding the truth. "
+          "Held-out shrink: `predicted` by the diagnosis for the right candidate, `re-measured` on fresh replicates "
+          "with the chosen model, `oracle` with the true model (truth base plus fresh realisations of the truth "
+          "generator), and the median |predicted - oracle|.\n\n"
+          "| truth | size x a_50 | n | detected | top-1 | or pair | predicted | re-measured | oracle | abs error |\n"
+          "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& row : rows) {
         std::vector<double> levels;
         for (const auto& c : cases)
             if (!c.tune && c.generator == row && std::find(levels.begin(), levels.end(), c.level) == levels.end())
                 levels.push_back(c.level);
         for (double level : levels) {
-            int n = 0, det = 0, ok = 0;
-            std::vector<double> pred, check;
+            int n = 0, det = 0, ok = 0, ok_pair = 0;
+            std::vector<double> pred, check, oracle, error;
             for (const auto& c : cases) {
                 if (c.tune || c.generator != row || c.level != level) continue;
                 ++n;
                 det += c.detected;
-                const std::string v = decide(c, th);
-                ok += c.truth.empty() ? (v == "unexplained" || v == "none") : v == c.truth;
-                for (const auto& e : c.tried)
-                    if (e.effect == c.truth && v == c.truth) pred.push_back(e.heldout_shrink);
-                if (c.has_shrink_check && v == c.truth) check.push_back(c.shrink_check);
+                const Decision d = decide(c, th);
+                ok += correct(c, d, false);
+                ok_pair += correct(c, d, true);
+                if (c.has_oracle) oracle.push_back(c.oracle_shrink);
+                for (const auto& e : c.tried) {
+                    if (e.effect != c.truth || d.verdict != c.truth) continue;
+                    pred.push_back(e.heldout_shrink);
+                    if (c.has_oracle) error.push_back(std::abs(e.heldout_shrink - c.oracle_shrink));
+                }
+                if (c.has_shrink_check && d.verdict == c.truth) check.push_back(c.shrink_check);
             }
-            auto median = [](std::vector<double> v) {
-                if (v.empty()) return std::string("-");
-                std::sort(v.begin(), v.end());
-                std::ostringstream s;
-                s.precision(2);
-                s << std::fixed << v[v.size() / 2];
-                return s.str();
-            };
-            md << "| " << row << " | " << level << " | " << n << " | " << det << " | " << ok << " | " << median(pred)
-               << " | " << median(check) << " |\n";
+            md << "| " << row << " | " << level << " | " << n << " | " << det << " | " << ok << " | " << ok_pair << " | "
+               << median(pred) << " | " << median(check) << " | " << median(oracle) << " | " << median(error) << " |\n";
         }
     }
     return md.str();

@@ -17,7 +17,8 @@ struct EvalOptions {
     std::uint64_t tune_first = 1, tune_last = 4;      ///< seeds the thresholds are tuned on
     std::uint64_t score_first = 101, score_last = 104;  ///< seeds they are scored on (disjoint)
     std::vector<std::string> generators;  ///< truth generators (truth_list()); empty = all; "none" is always added
-    std::vector<double> levels{1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's reference size
+    std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
+    int detection_logs = 8;       ///< logs per size when measuring a_50 (tuning seeds)
     std::size_t samples = 1500;   ///< log length at 1 s per sample
     int replicates = 20;
     int fit_replicates = 8;
@@ -26,11 +27,23 @@ struct EvalOptions {
     std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional
 };
 
+/// A generator's detection threshold a_50: the size at which the located-cells stage flags half of the logs,
+/// in units of the smoothed output's white-noise standard deviation, with the measured detection curve.
+struct DetectionSize {
+    std::string generator;
+    double a50 = 1.0;
+    std::vector<std::pair<double, double>> curve;  ///< (size, fraction of logs with located cells)
+};
+
+/// Measures a_50 of every generator of `options` on the tuning seeds (locate-only diagnoses), by doubling or
+/// halving from a first guess until the detected fraction crosses 1/2, then interpolating in log size.
+std::vector<DetectionSize> detection_sizes(const EvalOptions& options);
+
 /// One simulated log and what the diagnosis said about it.
 struct EvalCase {
     std::string generator;        ///< truth generator or "none"
     std::string truth;            ///< the library effect it stands for, "none", or "" (out of library)
-    double level = 0.0;           ///< size in multiples of the reference
+    double level = 0.0;           ///< size in multiples of the generator's a_50
     double size_counts = 0.0;
     std::uint64_t seed = 0;
     bool tune = false;            ///< in the tuning set
@@ -38,6 +51,8 @@ struct EvalCase {
     std::vector<Explanation> tried;  ///< every candidate with its metrics (thresholds applied later)
     double shrink_check = 0.0;    ///< held-out shrink of the truth's candidate re-measured on fresh replicates
     bool has_shrink_check = false;
+    double oracle_shrink = 0.0;   ///< held-out shrink with the TRUE model: the truth base plus fresh realisations
+    bool has_oracle = false;      ///< of the truth generator at its planted size (planted, detected cases)
 };
 
 /// The tuned thresholds.
@@ -46,16 +61,23 @@ struct Thresholds {
     double min_heldout_shrink = 0.3;
 };
 
-/// The verdict a case gets under `th`: "none", "unexplained" or the best passing candidate.
-std::string decide(const EvalCase& c, const Thresholds& th);
+/// What the diagnosis says of a case under some thresholds.
+struct Decision {
+    std::string verdict;          ///< "none", "unexplained" or the best passing candidate
+    std::string ambiguous_with;   ///< a passing runner-up within the ambiguity margin of the best, else ""
+};
 
-/// Runs every case (tuning and scoring seeds).
-std::vector<EvalCase> run_cases(const EvalOptions& options);
+/// The decision a case gets under `th` (ambiguity margin as ExplainOptions::ambiguity).
+Decision decide(const EvalCase& c, const Thresholds& th);
+
+/// Runs every case (tuning and scoring seeds), planting each generator at level x its a_50 from `sizes`.
+std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
 
 /// Thresholds maximising top-1 accuracy on the tuning cases with a false-positive rate <= 5 %.
 Thresholds tune(const std::vector<EvalCase>& cases);
 
-/// The results table (markdown) of the scoring cases under `th`.
-std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options);
+/// The results tables (markdown) of the scoring cases under `th`.
+std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options,
+                        const std::vector<DetectionSize>& sizes);
 
 }  // namespace driftlab::host::gap

@@ -17,7 +17,7 @@ std::uint64_t replicate_seed(std::uint64_t seed, int r) {
 }
 
 Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
-                               int replicates, std::uint64_t seed, int threads) {
+                               int replicates, std::uint64_t seed, int threads, const ReplicateExtra& extra) {
     std::vector<std::vector<double>> rows(static_cast<std::size_t>(replicates));
     std::atomic<int> next{0};
     std::exception_ptr failure;
@@ -28,7 +28,9 @@ Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>&
                 SimRequest request;
                 request.t_s = &t_s;
                 request.channels = options.channels;
-                const SimOutput sim = simulate(model, request, replicate_seed(seed, r));
+                const std::uint64_t rs = replicate_seed(seed, r);
+                if (extra) extra(rs, request);
+                const SimOutput sim = simulate(model, request, rs);
                 std::array<const std::vector<double>*, kChannelCount> y{};
                 for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &sim[c];
                 rows[static_cast<std::size_t>(r)] = compute_battery(t_s, y, options).values;

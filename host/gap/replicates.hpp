@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,8 +19,12 @@ namespace driftlab::host::gap {
 /// Seed of replicate `r` of a run seeded with `seed`.
 std::uint64_t replicate_seed(std::uint64_t seed, int r);
 
+/// Fills a replicate's request with signals beyond the model (gap-eval's oracle: a fresh realisation of the
+/// truth generator per replicate, seeded from the replicate's seed).
+using ReplicateExtra = std::function<void(std::uint64_t replicate_seed, SimRequest& request)>;
+
 /// Battery values of `replicates` replicates (rows) on the instants `t_s`, run on `threads` threads.
 Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
-                               int replicates, std::uint64_t seed, int threads);
+                               int replicates, std::uint64_t seed, int threads, const ReplicateExtra& extra = {});
 
 }  // namespace driftlab::host::gap

@@ -15,13 +15,13 @@ const std::vector<TruthInfo>& truth_list() {
 }
 
 std::vector<double> make_truth(const std::string& generator, const std::vector<double>& t_s, double size_counts,
-                               std::uint64_t seed) {
+                               std::uint64_t seed, std::uint64_t noise_seed) {
     if (generator == "thermal_rc") return truth_thermal_rc(t_s, size_counts, seed);
     if (generator == "thermostat") return truth_thermostat(t_s, size_counts, seed);
-    if (generator == "kasdin_flicker") return truth_kasdin_flicker(t_s, size_counts, seed);
-    if (generator == "wandering_ou") return truth_wandering_ou(t_s, size_counts, seed);
-    if (generator == "student_walk") return truth_student_walk(t_s, size_counts, seed);
-    if (generator == "burst_spikes") return truth_burst_spikes(t_s, size_counts, seed);
+    if (generator == "kasdin_flicker") return truth_kasdin_flicker(t_s, size_counts, noise_seed);
+    if (generator == "wandering_ou") return truth_wandering_ou(t_s, size_counts, seed, noise_seed);
+    if (generator == "student_walk") return truth_student_walk(t_s, size_counts, noise_seed);
+    if (generator == "burst_spikes") return truth_burst_spikes(t_s, size_counts, noise_seed);
     if (generator == "mode_hop") return truth_mode_hop(t_s, size_counts, seed);
     throw std::invalid_argument("unknown truth generator: " + generator);
 }

@@ -27,17 +27,20 @@ struct TruthInfo {
 /// Every generator, in the order gap-eval lists them.
 const std::vector<TruthInfo>& truth_list();
 
-/// The signal of `generator` at the output instants `t_s` [counts]. Throws std::invalid_argument on a bad name.
+/// The signal of `generator` at the output instants `t_s` [counts]. `seed` draws the generator's shape (time
+/// constants, period, step instants); `noise_seed` draws the random path of the random generators, so that
+/// fresh realisations of one truth share its shape (gap-eval's oracle). Throws std::invalid_argument on a bad name.
 std::vector<double> make_truth(const std::string& generator, const std::vector<double>& t_s, double size_counts,
-                               std::uint64_t seed);
+                               std::uint64_t seed, std::uint64_t noise_seed);
 
 /// The per-sample signal generators, one file each (truth_*.cpp).
 std::vector<double> truth_thermal_rc(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
 std::vector<double> truth_thermostat(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
-std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
-std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
-std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
-std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
+std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double size_counts, std::uint64_t seed,
+                                       std::uint64_t noise_seed);
+std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
+std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_mode_hop(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
 
 }  // namespace driftlab::host::gap

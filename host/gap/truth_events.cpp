@@ -6,9 +6,9 @@
 
 namespace driftlab::host::gap {
 
-std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t seed) {
+std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed) {
     // About one burst per 150 samples; each covers 1-3 whole output periods with one Laplace amplitude.
-    sim::Rng rng(seed, 0x76);
+    sim::Rng rng(noise_seed, 0x76);
     std::vector<double> out(t_s.size(), 0.0);
     for (std::size_t k = 0; k < t_s.size(); ++k) {
         if (rng.uniform() >= 1.0 / 150.0) continue;

@@ -22,10 +22,10 @@ void scale_to_sd(std::vector<double>& v, double sd) {
 
 }  // namespace
 
-std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double size_counts, std::uint64_t seed) {
+std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed) {
     // Kasdin (Proc. IEEE 83(5), 1995): white noise shaped in frequency by f^(-alpha/2), alpha = 1, on a record
     // twice as long as needed (half discarded) so the circular wrap does not show.
-    sim::Rng rng(seed, 0x73);
+    sim::Rng rng(noise_seed, 0x73);
     const std::size_t n = t_s.size();
     std::size_t nfft = 1;
     while (nfft < 2 * n) nfft <<= 1;
@@ -46,12 +46,14 @@ std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double 
     return out;
 }
 
-std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double size_counts, std::uint64_t seed) {
+std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double size_counts, std::uint64_t seed,
+                                       std::uint64_t noise_seed) {
     // dx = -x/tau(t) dt + sqrt(2/tau(t)) dW by Euler-Maruyama with 8 substeps; tau(t) wanders +-30 % slowly.
-    sim::Rng rng(seed, 0x74);
+    sim::Rng shape(seed, 0x74);
     const double span_s = t_s.back() - t_s.front();
-    const double tau0 = span_s * (0.01 + 0.05 * rng.uniform());
-    const double wander_period = span_s * (0.3 + 0.4 * rng.uniform());
+    const double tau0 = span_s * (0.01 + 0.05 * shape.uniform());
+    const double wander_period = span_s * (0.3 + 0.4 * shape.uniform());
+    sim::Rng rng(noise_seed, 0x84);
     std::vector<double> out(t_s.size());
     double x = rng.normal();
     double t = t_s.front();
@@ -67,10 +69,10 @@ std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double si
     return out;
 }
 
-std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t seed) {
+std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed) {
     // Steps are Student-t with nu = 4 (normal / sqrt(chi2_4 / 4)), scaled to unit variance (nu / (nu - 2) = 2);
     // size_counts is the walk's standard deviation reached at the end of the log.
-    sim::Rng rng(seed, 0x75);
+    sim::Rng rng(noise_seed, 0x75);
     const double n = static_cast<double>(t_s.size());
     const double step_sd = size_counts / std::sqrt(n);
     std::vector<double> out(t_s.size());
