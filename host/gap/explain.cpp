@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
@@ -57,6 +58,12 @@ double sd_of(const std::vector<double>& v) {
     m /= static_cast<double>(v.size());
     for (double x : v) s += (x - m) * (x - m);
     return std::sqrt(s / static_cast<double>(v.size()));
+}
+
+FitRoute route_of(const std::string& effect) {
+    for (const auto& info : candidate_list())
+        if (info.effect == effect) return info.route;
+    throw std::invalid_argument("unknown candidate effect: " + effect);
 }
 
 struct Fitted {
@@ -178,12 +185,14 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
     if (names.empty())
         for (const auto& info : candidate_list()) names.push_back(info.effect);
     std::array<std::vector<std::string>, kChannelCount> used;
+    const std::size_t first_added = base.effects.size();  // effects[first_added + k] is accepted[k]
     std::array<bool, kChannelCount> open = channels;
 
     for (int step = 1; step <= options.max_effects; ++step) {
         struct Option {
             Explanation ex;
             GapModel model;
+            std::vector<std::pair<std::size_t, std::vector<double>>> refits;  ///< accepted index, new parameters
         };
         std::vector<Option> accepted;
         for (std::size_t i = 0; i < kChannelCount; ++i) {
@@ -217,6 +226,19 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                                     : fit_simulated(effect, result.model, c, judge, options);
                 if (info->route == FitRoute::deterministic)
                     fitted.model.effects.push_back(make_candidate_effect(effect, c, fitted.params, fitted.model));
+                // Refit everything: an earlier noise effect on this channel may have been sized to swallow what
+                // this candidate explains (a broad flicker covers a sinusoid), so it is fitted again beside it.
+                std::vector<std::pair<std::size_t, std::vector<double>>> refits;
+                for (std::size_t k = 0; k < result.accepted.size(); ++k) {
+                    const Explanation& prev = result.accepted[k];
+                    if (prev.channel != kChannelNames[i] || route_of(prev.effect) != FitRoute::simulated) continue;
+                    const auto slot = fitted.model.effects.begin() + static_cast<std::ptrdiff_t>(first_added + k);
+                    GapModel without = fitted.model;
+                    without.effects.erase(without.effects.begin() + (slot - fitted.model.effects.begin()));
+                    Fitted again = fit_simulated(prev.effect, without, c, judge, options);
+                    *slot = again.model.effects.back();
+                    refits.emplace_back(k, again.params);
+                }
                 // The candidate takes part of the short-lag spread: match the white noise again with it in place.
                 std::array<bool, kChannelCount> only{};
                 only[i] = true;
@@ -225,7 +247,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 match_noise(fitted.model, t_s, only, target, options.seed);
                 Explanation ex = judge_candidate(effect, fitted, c, judge, base_cmp, options);
                 ex.step = step;
-                here.push_back({ex, fitted.model});
+                here.push_back({ex, fitted.model, std::move(refits)});
             }
             std::sort(here.begin(), here.end(), [](const Option& a, const Option& b) {
                 if (a.ex.accepted != b.ex.accepted) return a.ex.accepted;
@@ -248,6 +270,8 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             return a.ex.heldout_loss_gain < b.ex.heldout_loss_gain;
         });
         result.model = best->model;
+        for (const auto& [k, params] : best->refits)
+            for (std::size_t p = 0; p < params.size(); ++p) result.accepted[k].params[p].second = params[p];
         result.accepted.push_back(best->ex);
         for (std::size_t i = 0; i < kChannelCount; ++i)
             if (kChannelNames[i] == best->ex.channel) used[i].push_back(best->ex.effect);
