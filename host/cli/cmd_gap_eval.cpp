@@ -19,6 +19,7 @@ struct GapEvalCommandOptions {
     std::string tune_seeds = "1..4";
     std::string score_seeds = "101..104";
     std::vector<std::string> effects;
+    std::string holdout = "forecast";
     bool quick = false;
 };
 
@@ -53,6 +54,9 @@ void run(const GapEvalCommandOptions& o) {
             }
         if (!found) throw UsageError("--effects: unknown generator or effect '" + e + "'");
     }
+    const auto holdout = gap::holdout_from_name(o.holdout);
+    if (!holdout) throw UsageError("--holdout: expected forecast or interleaved, got '" + o.holdout + "'");
+    options.holdout = *holdout;
     if (o.quick) {
         options.samples = 800;
         options.levels = {2.0};
@@ -87,6 +91,8 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_option("--seeds-score", o->score_seeds, "Seeds the results are scored on, C..D (disjoint)");
     cmd->add_option("--effects", o->effects, "Truth generators or the effects they stand for (default: all)")
         ->delimiter(',');
+    cmd->add_option("--holdout", o->holdout, "Held-out design of the diagnosis: forecast or interleaved")
+        ->capture_default_str();
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
     cmd->callback([o] { run(*o); });
 }

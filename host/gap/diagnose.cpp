@@ -62,6 +62,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
 
     BatteryOptions battery;
     battery.channels = result.channels;
+    battery.holdout = options.holdout;
     battery.fit_fraction = options.fit_fraction;
     battery.sample_period_s = result.base.smoothing.sample_period_s;
     std::array<const std::vector<double>*, kChannelCount> y{};

@@ -97,6 +97,7 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
 GapOptions gap_options(std::uint64_t seed, const EvalOptions& options) {
     GapOptions go;
     go.replicates = options.replicates;
+    go.holdout = options.holdout;
     go.seed = seed * 7 + 3;
     go.threads = options.threads;
     go.explain_options.fit_replicates = options.fit_replicates;
@@ -129,6 +130,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     // Held-out gap on replicates the diagnosis never saw: base, chosen model, and the oracle (true model).
     BatteryOptions b;
     b.channels = r.channels;
+    b.holdout = options.holdout;
     b.sample_period_s = kSamplePeriodS;
     std::array<const std::vector<double>*, kChannelCount> y{};
     y[0] = &log.counts[0];
@@ -170,7 +172,7 @@ Decision decide(const EvalCase& c, const Thresholds& th) {
         }
     }
     if (!best) return {"unexplained", ""};
-    const bool close = second && second->heldout_loss_gain >= (1.0 - ExplainOptions{}.ambiguity) * best->heldout_loss_gain;
+    const bool close = second && close_call(*best, *second, ExplainOptions{}.ambiguity_z);
     return {best->effect, close ? second->effect : ""};
 }
 
@@ -260,7 +262,8 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
         const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
         const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
         for (std::uint64_t s = first; s <= last; ++s) {
-            jobs.push_back({"none", "none", 0.0, s, set == 0});
+            // As many clean logs per seed as planted ones per generator: the false-positive rate needs them.
+            for (std::size_t k = 0; k < options.levels.size(); ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
             for (const auto& g : gens)
                 for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
         }

@@ -20,6 +20,7 @@ struct EvalOptions {
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
     int detection_logs = 8;       ///< logs per size when measuring a_50 (tuning seeds)
     std::size_t samples = 1500;   ///< log length at 1 s per sample
+    Holdout holdout = Holdout::forecast;
     int replicates = 20;
     int fit_replicates = 8;
     int max_evaluations = 18;
@@ -64,10 +65,10 @@ struct Thresholds {
 /// What the diagnosis says of a case under some thresholds.
 struct Decision {
     std::string verdict;          ///< "none", "unexplained" or the best passing candidate
-    std::string ambiguous_with;   ///< a passing runner-up within the ambiguity margin of the best, else ""
+    std::string ambiguous_with;   ///< a passing runner-up not separated from the best (close_call), else ""
 };
 
-/// The decision a case gets under `th` (ambiguity margin as ExplainOptions::ambiguity).
+/// The decision a case gets under `th` (ambiguity as ExplainOptions::ambiguity_z).
 Decision decide(const EvalCase& c, const Thresholds& th);
 
 /// Runs every case (tuning and scoring seeds), planting each generator at level x its a_50 from `sizes`.

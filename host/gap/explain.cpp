@@ -43,7 +43,7 @@ struct Judge {
     std::vector<double> real;
     std::vector<double> residual;
     double target_spread = 0.0;
-    std::size_t n_fit = 0;
+    std::vector<double> t_fit, y_fit;  ///< the fitting part's instants and values (deterministic fits)
     std::uint64_t seed;
     int threads;
 
@@ -71,17 +71,16 @@ struct Fitted {
     std::vector<double> params;
 };
 
-Fitted fit_deterministic(const std::string& effect, const GapModel& current, Channel c, const Judge& judge,
-                         const std::vector<double>& y) {
+Fitted fit_deterministic(const std::string& effect, const GapModel& current, Channel c, const Judge& judge) {
     const std::size_t i = channel_index(c);
     const double cpu = counts_per_unit(current, c);
     Fitted out{current, {}};
     if (effect == "thermal_second_tc") {
-        const TwoExponentials f = fit_two_exponentials(judge.t_s, y, judge.n_fit);
+        const TwoExponentials f = fit_two_exponentials(judge.t_fit, judge.y_fit, judge.t_fit.size());
         out.model.base[i].drift = {f.c1_counts, f.c2_counts, f.t_s};
         out.params = {f.c3_counts / cpu, f.t2_s};
     } else {
-        const ExponentialAndSine f = fit_exponential_and_sine(judge.t_s, y, judge.n_fit);
+        const ExponentialAndSine f = fit_exponential_and_sine(judge.t_fit, judge.y_fit, judge.t_fit.size());
         out.model.base[i].drift = {f.c1_counts, f.c2_counts, f.t_s};
         out.params = {f.amplitude_counts / cpu, f.period_s, f.phase_rad};
     }
@@ -159,6 +158,9 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, Cha
     ex.penalty = static_cast<double>(names.size()) * std::log(static_cast<double>(cells_in(judge.layout, Segment::fit)));
     ex.heldout_loss_gain =
         synthetic_loss(base_cmp, judge.layout, Segment::heldout) - synthetic_loss(cmp, judge.layout, Segment::heldout);
+    for (std::size_t j = 0; j < judge.layout.size(); ++j)
+        if (judge.layout[j].segment == Segment::heldout)
+            ex.heldout_cell_loss.push_back(cmp.z[j] * cmp.z[j] + 2.0 * std::log(cmp.sim_sd[j]));
     ex.accepted = passes(ex, options.penalty_per_param, options.min_heldout_shrink);
     for (const auto& info : candidate_list())
         if (info.effect == effect) ex.settle = info.settle;
@@ -173,6 +175,20 @@ bool passes(const Explanation& e, double penalty_per_param, double min_heldout_s
     constexpr double kMinHeldoutExcess = 0.2;
     return e.loss_gain > penalty_per_param * e.penalty && e.heldout_before - 1.0 > kMinHeldoutExcess &&
            e.heldout_shrink >= min_heldout_shrink && e.heldout_loss_gain > 0.0;
+}
+
+bool close_call(const Explanation& best, const Explanation& runner_up, double z) {
+    const std::size_t n = std::min(best.heldout_cell_loss.size(), runner_up.heldout_cell_loss.size());
+    if (n < 2) return false;
+    double sum = 0.0, sum2 = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+        const double d = runner_up.heldout_cell_loss[j] - best.heldout_cell_loss[j];
+        sum += d;
+        sum2 += d * d;
+    }
+    const double nd = static_cast<double>(n);
+    const double sd = std::sqrt(std::max(0.0, (sum2 - sum * sum / nd) / (nd - 1.0)));
+    return sum < z * std::sqrt(nd) * sd;
 }
 
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
@@ -198,7 +214,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             if (!open[i]) continue;
             const Channel c = static_cast<Channel>(i);
-            Judge judge{t_s, battery, {}, {}, {}, 0.0, 0, options.seed, options.threads};
+            Judge judge{t_s, battery, {}, {}, {}, 0.0, {}, {}, options.seed, options.threads};
             judge.battery.channels = {};
             judge.battery.channels[i] = true;
             std::array<const std::vector<double>*, kChannelCount> yc{};
@@ -207,8 +223,9 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             judge.real = real.values;
             judge.residual = real.residual[i];
             judge.target_spread = short_lag_spread(judge.residual);
-            const double t_split = t_s.front() + battery.fit_fraction * (t_s.back() - t_s.front());
-            judge.n_fit = static_cast<std::size_t>(std::upper_bound(t_s.begin(), t_s.end(), t_split) - t_s.begin());
+            const std::vector<bool> fitting = fitting_mask(t_s, battery);
+            for (std::size_t k = 0; k < t_s.size(); ++k)
+                if (fitting[k]) judge.t_fit.push_back(t_s[k]), judge.y_fit.push_back((*y[i])[k]);
             const Comparison base_cmp = judge.evaluate(result.model, options.eval_replicates);
             if (locate(judge.real, base_cmp, judge.layout).empty()) {
                 open[i] = false;
@@ -222,7 +239,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                     if (ci.effect == effect) info = &ci;
                 if (!info) continue;
                 Fitted fitted = info->route == FitRoute::deterministic
-                                    ? fit_deterministic(effect, result.model, c, judge, *y[i])
+                                    ? fit_deterministic(effect, result.model, c, judge)
                                     : fit_simulated(effect, result.model, c, judge, options);
                 if (info->route == FitRoute::deterministic)
                     fitted.model.effects.push_back(make_candidate_effect(effect, c, fitted.params, fitted.model));
@@ -254,13 +271,10 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 // The held-out synthetic likelihood ranks: unlike the gap score it charges for wider replicates.
                 return a.ex.heldout_loss_gain > b.ex.heldout_loss_gain;
             });
-            if (here.size() >= 2 && here[0].ex.accepted && here[1].ex.accepted) {
-                const double g0 = here[0].ex.heldout_loss_gain;
-                const double g1 = here[1].ex.heldout_loss_gain;
-                if (g1 >= (1.0 - options.ambiguity) * g0) {
-                    here[0].ex.ambiguous_with = here[1].ex.effect;
-                    here[0].ex.settle += "; vs " + here[1].ex.effect + ": " + here[1].ex.settle;
-                }
+            if (here.size() >= 2 && here[0].ex.accepted && here[1].ex.accepted &&
+                close_call(here[0].ex, here[1].ex, options.ambiguity_z)) {
+                here[0].ex.ambiguous_with = here[1].ex.effect;
+                here[0].ex.settle += "; vs " + here[1].ex.effect + ": " + here[1].ex.settle;
             }
             for (const auto& o : here) result.tried.push_back(o.ex);
             if (!here.empty() && here[0].ex.accepted) accepted.push_back(here[0]);

@@ -21,7 +21,7 @@ struct ExplainOptions {
     int max_effects = 3;           ///< stepwise limit over the whole log
     double penalty_per_param = 1.0;  ///< x ln(cells): the BIC-like price of one parameter
     double min_heldout_shrink = 0.3; ///< the held-out gap excess must shrink by at least this fraction
-    double ambiguity = 0.15;       ///< runner-up within this fraction of the best held-out gain: ambiguous
+    double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
     std::uint64_t seed = 1;
     int threads = 2;
@@ -40,6 +40,7 @@ struct Explanation {
     double loss_gain = 0.0;         ///< synthetic log-likelihood gain on the fitting cells (x2)
     double penalty = 0.0;           ///< parameters x ln(fitting cells): the BIC price before penalty_per_param
     double heldout_loss_gain = 0.0; ///< synthetic log-likelihood gain on the held-out cells (x2)
+    std::vector<double> heldout_cell_loss;  ///< per held-out cell: z^2 + 2 ln sd with the candidate (close_call)
     bool accepted = false;
     int step = 0;                   ///< stepwise round in which it was tried (1-based)
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
@@ -55,6 +56,10 @@ struct ExplainResult {
 /// The acceptance rule: likelihood gain on the fitting cells above penalty_per_param x penalty, a held-out gap
 /// to shrink, a held-out shrink of at least min_heldout_shrink and a held-out likelihood gain.
 bool passes(const Explanation& e, double penalty_per_param, double min_heldout_shrink);
+
+/// Whether `runner_up` is not separated from `best` (Vuong's test for non-nested models, with the held-out cells as
+/// observations): with d_j the runner-up's minus the best's loss on cell j, sum d_j < z sqrt(n) sd(d).
+bool close_call(const Explanation& best, const Explanation& runner_up, double z = 1.96);
 
 /// Explains the gap of the channels in `channels` (those with located cells) on `log_t_s`/`log_y`.
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,

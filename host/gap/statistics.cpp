@@ -49,8 +49,14 @@ std::string seconds_label(double s) { return short_number(s) + "s"; }
 
 double log_floor(double v) { return std::log(std::max(v, 1e-300)); }
 
-std::vector<double> slice(const std::vector<double>& v, std::size_t a, std::size_t b) {
-    return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(a), v.begin() + static_cast<std::ptrdiff_t>(b));
+// The samples of `v` in one part, in time order (interleaved blocks are joined: the same joins happen in the real
+// log and every replicate, so the comparison stays like with like).
+std::vector<double> part_of(const std::vector<double>& v, const std::vector<bool>& fitting, bool want_fitting) {
+    std::vector<double> out;
+    out.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (fitting[i] == want_fitting) out.push_back(v[i]);
+    return out;
 }
 
 // Dispersion of the fractional part of the smoothed output over kFracBins bins: the code/quantiser signature.
@@ -84,14 +90,31 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 
 const char* segment_name(Segment s) { return s == Segment::fit ? "fit" : "heldout"; }
 
+std::optional<Holdout> holdout_from_name(const std::string& name) {
+    if (name == "forecast") return Holdout::forecast;
+    if (name == "interleaved") return Holdout::interleaved;
+    return std::nullopt;
+}
+
+std::vector<bool> fitting_mask(const std::vector<double>& t_s, const BatteryOptions& options) {
+    const std::size_t n = t_s.size();
+    std::vector<bool> mask(n);
+    if (options.holdout == Holdout::interleaved) {
+        for (std::size_t w = 0; w < static_cast<std::size_t>(kTimeWindows); w += 2)
+            for (std::size_t i = n * w / kTimeWindows; i < n * (w + 1) / kTimeWindows; ++i) mask[i] = true;
+    } else {
+        const double t_split = t_s.front() + options.fit_fraction * (t_s.back() - t_s.front());
+        for (std::size_t i = 0; i < n; ++i) mask[i] = t_s[i] <= t_split;
+    }
+    return mask;
+}
+
 BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<const std::vector<double>*, kChannelCount>& y,
                               const BatteryOptions& options, std::vector<Cell>* layout) {
     BatteryResult result;
     Builder out(result.values, layout);
     const std::size_t n = t_s.size();
-    const double t_split = t_s.front() + options.fit_fraction * (t_s.back() - t_s.front());
-    const std::size_t split = static_cast<std::size_t>(std::upper_bound(t_s.begin(), t_s.end(), t_split) - t_s.begin());
-    const std::array<std::pair<std::size_t, std::size_t>, 2> segments = {{{0, split}, {split, n}}};
+    const std::vector<bool> fitting = fitting_mask(t_s, options);
     const double tau0 = options.sample_period_s;
 
     for (std::size_t c = 0; c < kChannelCount; ++c) {
@@ -112,7 +135,7 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
             mean /= static_cast<double>(b - a);
             for (std::size_t i = a; i < b; ++i) var += (e[i] - mean) * (e[i] - mean);
             var /= static_cast<double>(std::max<std::size_t>(1, b - a - 1));
-            const Segment seg = t_s[(a + b) / 2] <= t_split ? Segment::fit : Segment::heldout;
+            const Segment seg = fitting[(a + b) / 2] ? Segment::fit : Segment::heldout;
             std::string label;
             if (out.wants_layout()) label = "t=" + seconds_label(t_s[a]) + ".." + seconds_label(t_s[b - 1]);
             out.add(mean, {"mean", name, ci, label, seg, false, kMeanMarginCounts});
@@ -120,8 +143,8 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
         }
         for (int s = 0; s < 2; ++s) {
             const Segment seg = s == 0 ? Segment::fit : Segment::heldout;
-            const std::vector<double> part = slice(e, segments[s].first, segments[s].second);
-            const std::vector<double> part_y = slice(yc, segments[s].first, segments[s].second);
+            const std::vector<double> part = part_of(e, fitting, s == 0);
+            const std::vector<double> part_y = part_of(yc, fitting, s == 0);
             const std::size_t len = part.size();
             const auto adev = octave_oadev(part, std::max<std::size_t>(1, len / 8));
             for (std::size_t j = 0; j < adev.size(); ++j)
@@ -162,8 +185,8 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
                 std::string(kChannelNames[a]) + "~" + kChannelNames[b];
             for (int s = 0; s < 2; ++s) {
                 const Segment seg = s == 0 ? Segment::fit : Segment::heldout;
-                const double r = correlation(slice(result.residual[a], segments[s].first, segments[s].second),
-                                             slice(result.residual[b], segments[s].first, segments[s].second));
+                const double r = correlation(part_of(result.residual[a], fitting, s == 0),
+                                             part_of(result.residual[b], fitting, s == 0));
                 out.add(r, {"corr", pair, -1, "lag 0", seg, false, kCorrMargin});
             }
         }

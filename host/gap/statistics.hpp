@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,12 +32,26 @@ struct Cell {
     double margin = 0.0;     ///< smallest practically relevant difference of the value
 };
 
+/// How the log is split into the part candidates are fitted on and the part they are judged on.
+enum class Holdout {
+    forecast,     ///< the first fit_fraction of the log by time, then the rest: tests extrapolation (E1 vs E4)
+    interleaved,  ///< alternate tenths of the log: also judges effects confined to the warm-up or rare in time
+};
+
+/// "forecast" or "interleaved"; nothing for any other name.
+std::optional<Holdout> holdout_from_name(const std::string& name);
+
 /// Options shared by the real log and its replicates.
 struct BatteryOptions {
     std::array<bool, kChannelCount> channels{true, true, true, true};
-    double fit_fraction = 0.6;      ///< first part of the log (by time) used to fit candidates
+    Holdout holdout = Holdout::forecast;
+    double fit_fraction = 0.6;      ///< forecast: first part of the log (by time) used to fit candidates
     double sample_period_s = 1.0;   ///< for cell labels [s]
 };
+
+/// Per sample of `t_s`: true where it belongs to the fitting part. Interleaved: tenths 0, 2, 4, 6, 8 by index,
+/// the same tenths as the windowed cells, so each window lies wholly in one part.
+std::vector<bool> fitting_mask(const std::vector<double>& t_s, const BatteryOptions& options);
 
 /// The battery's values for one log, plus the base fit and residual of each channel.
 struct BatteryResult {

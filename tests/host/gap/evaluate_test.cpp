@@ -94,7 +94,19 @@ TEST(GapEval, DetectionThresholdIsBracketedByItsCurve) {
     EXPECT_NEAR(above / below, 2.0, 1e-9);
 }
 
-// A wrong or pending decision is scored as such: a declared ambiguous pair names its runner-up.
+// Vuong's test over held-out cells: a runner-up whose per-cell losses differ from the best's by noise alone is a
+// close call; one that loses consistently on every cell is not.
+TEST(GapEval, CloseCallIsVuongOverHeldOutCells) {
+    Explanation best, noisy, beaten;
+    best.heldout_cell_loss = {1, 2, 3, 4, 5, 6};
+    noisy.heldout_cell_loss = {2, 1, 5, 2, 5.5, 6};     // d = 1 -1 2 -2 0.5 0: sum 0.5, far below 1.96 sqrt(6) sd
+    beaten.heldout_cell_loss = {3, 4.1, 5, 6.1, 7, 8};  // d = 2 2.1 2 2.1 2 2: sum 12.2, sd 0.05
+    EXPECT_TRUE(close_call(best, noisy));
+    EXPECT_FALSE(close_call(best, beaten));
+    EXPECT_FALSE(close_call(best, Explanation{}));  // nothing to compare
+}
+
+// The decision names the best passing candidate and, when close_call holds, its runner-up.
 TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     EvalCase c;
     c.detected = true;
@@ -104,9 +116,9 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
         e->loss_gain = 100.0, e->penalty = 10.0, e->heldout_before = 3.0, e->heldout_after = 1.2;
         e->heldout_shrink = 0.9;
     }
-    a.heldout_loss_gain = 50.0;
-    b.heldout_loss_gain = 45.0;   // within 15 % of the best
-    weak.heldout_loss_gain = 10.0;
+    a.heldout_loss_gain = 50.0, a.heldout_cell_loss = {1, 2, 3, 4, 5, 6};
+    b.heldout_loss_gain = 49.5, b.heldout_cell_loss = {2, 1, 5, 2, 5.5, 6};
+    weak.heldout_loss_gain = 10.0, weak.heldout_cell_loss = {3, 4.1, 5, 6.1, 7, 8};
     c.tried = {weak, b, a};
     const Thresholds th{1.0, 0.3};
     const Decision d = decide(c, th);
