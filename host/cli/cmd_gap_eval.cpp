@@ -20,6 +20,7 @@ struct GapEvalCommandOptions {
     std::string score_seeds = "101..104";
     std::vector<std::string> effects;
     std::string holdout = "forecast";
+    std::vector<double> levels;
     bool quick = false;
 };
 
@@ -76,6 +77,7 @@ void run(const GapEvalCommandOptions& o) {
     options.progress = progress_for("detection threshold a_50, generator");
     const auto sizes = gap::detection_sizes(options);
     options.progress = progress_for("diagnosing log");
+    if (!o.levels.empty()) options.levels = o.levels;
     const auto cases = gap::run_cases(options, sizes);
     const gap::Thresholds th = gap::tune(cases);
     std::cout << gap::score_table(cases, th, options, sizes);
@@ -91,6 +93,9 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_option("--seeds-score", o->score_seeds, "Seeds the results are scored on, C..D (disjoint)");
     cmd->add_option("--effects", o->effects, "Truth generators or the effects they stand for (default: all)")
         ->delimiter(',');
+    cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
+        ->delimiter(',')
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--holdout", o->holdout, "Held-out design of the diagnosis: forecast or interleaved")
         ->capture_default_str();
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
