@@ -81,7 +81,7 @@ void run(const GapCommandOptions& o) {
     const gap::GapResult r = gap::diagnose(log, unit, options);
     if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options);
     if (o.json) {
-        std::cout << gap::gap_to_json(r, options.replicates).dump(2) << "\n";
+        std::cout << gap::gap_to_json(r, options).dump(2) << "\n";
     } else {
         print_text(r);
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());

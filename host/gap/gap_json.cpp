@@ -48,7 +48,7 @@ json explanation_json(const Explanation& e) {
 
 }  // namespace
 
-json gap_to_json(const GapResult& r, int replicates) {
+json gap_to_json(const GapResult& r, const GapOptions& options) {
     json j;
     j["verdict"] = r.verdict;
     json ex = json::array();
@@ -88,7 +88,9 @@ json gap_to_json(const GapResult& r, int replicates) {
                    {"lost_frames", r.timing.lost_frames},
                    {"gap_events", r.timing.gap_events},
                    {"dt_jitter_rel", report::json_number(r.timing.dt_jitter_rel)}};
-    j["replicates"] = replicates;
+    j["replicates"] = options.replicates;
+    j["holdout"] = options.holdout == Holdout::forecast ? "forecast" : "interleaved";
+    j["fit_fraction"] = options.fit_fraction;
     j["threshold_z"] = report::json_number(r.before.threshold);
     j["cells"] = r.layout.size();
     return j;

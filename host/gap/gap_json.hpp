@@ -8,7 +8,7 @@
 namespace driftlab::host::gap {
 
 /// verdict, explanations, located, located_after, gap_before, gap_after, not_identifiable, not_tried,
-/// calibration, timing, replicates, threshold_z.
-nlohmann::json gap_to_json(const GapResult& result, int replicates);
+/// calibration, timing, replicates, holdout, fit_fraction, threshold_z, cells, of a diagnosis run with `options`.
+nlohmann::json gap_to_json(const GapResult& result, const GapOptions& options);
 
 }  // namespace driftlab::host::gap

@@ -60,7 +60,11 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
-       << options.replicates << " replicates:\n\n| | fitting part | held-out part |\n|---|---|---|\n";
+       << options.replicates << " replicates; "
+       << (options.holdout == Holdout::forecast
+               ? "candidates fitted on the first " + fixed(100.0 * options.fit_fraction, 0) + " % of the log, judged on the rest"
+               : std::string("candidates fitted on tenths 0, 2, 4, 6, 8 of the log, judged on tenths 1, 3, 5, 7, 9"))
+       << ":\n\n| | fitting part | held-out part |\n|---|---|---|\n";
     md << "| base simulator | " << fixed(r.gap_before_fit) << " | " << fixed(r.gap_before_heldout) << " |\n";
     md << "| with accepted effects | " << fixed(r.gap_after_fit) << " | " << fixed(r.gap_after_heldout) << " |\n\n";
     md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << ", beyond the practical margin)\n\n";

@@ -50,9 +50,11 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     EXPECT_GT(r.accepted[0].heldout_shrink, 0.5);
     EXPECT_LT(r.gap_after_heldout, r.gap_before_heldout);
 
-    const auto j = gap_to_json(r, 20);
+    const auto j = gap_to_json(r, small_options());
     for (const char* key : {"verdict", "explanations", "located", "gap_before", "gap_after", "not_identifiable"})
         EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_EQ(j["holdout"], "forecast");
+    EXPECT_EQ(j["replicates"], small_options().replicates);
     const auto& e = j["explanations"][0];
     for (const char* key : {"effect", "params", "gap_before", "gap_after", "heldout_shrink"}) EXPECT_TRUE(e.contains(key)) << key;
     const auto& cell = j["located"][0];
