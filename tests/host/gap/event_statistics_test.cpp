@@ -5,21 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include "gap_fixtures.hpp"
+
 #include "host/gap/event_statistics.hpp"
 
 namespace driftlab::host::gap {
 namespace {
 
-std::vector<double> gaussian(std::size_t n, double sigma, unsigned seed) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> d(0.0, sigma);
-    std::vector<double> v(n);
-    for (double& x : v) x = d(rng);
-    return v;
-}
+using testing::white;
 
 TEST(EventStatistics, KurtosisOfClosedFormDistributions) {
-    EXPECT_NEAR(std::exp(log_kurtosis(gaussian(200000, 3.0, 1))), 3.0, 0.05);
+    EXPECT_NEAR(std::exp(log_kurtosis(white(200000, 3.0, 1))), 3.0, 0.05);
     std::mt19937_64 rng(2);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::vector<double> v(200000);
@@ -33,7 +29,7 @@ TEST(EventStatistics, KurtosisOfClosedFormDistributions) {
 }
 
 TEST(EventStatistics, SpikesRaiseTheKurtosis) {
-    auto y = gaussian(4800, 1.0, 3);
+    auto y = white(4800, 1.0, 3);
     EXPECT_NEAR(std::exp(log_kurtosis(y)), 3.0, 0.25);
     for (std::size_t k = 100; k < y.size(); k += 500) y[k] += 12.0;  // 10 spikes of 12 sigma
     // m2 = 1 + 10 * 144 / 4800 = 1.3, m4 = 3 + 10 * 12^4 / 4800 = 46.2: kurtosis 46.2 / 1.69 = 27.3.
@@ -41,7 +37,7 @@ TEST(EventStatistics, SpikesRaiseTheKurtosis) {
 }
 
 TEST(EventStatistics, JumpRatioIsScaleFreeAndIgnoresARandomWalk) {
-    const auto y = gaussian(4800, 1.0, 4);
+    const auto y = white(4800, 1.0, 4);
     std::vector<double> scaled = y;
     for (double& v : scaled) v = 7.0 * v + 100.0;
     EXPECT_NEAR(log_jump_ratio(scaled, 16), log_jump_ratio(y, 16), 1e-12);
@@ -55,7 +51,7 @@ TEST(EventStatistics, JumpRatioIsScaleFreeAndIgnoresARandomWalk) {
 }
 
 TEST(EventStatistics, ALevelJumpStandsOut) {
-    auto y = gaussian(4800, 1.0, 5);
+    auto y = white(4800, 1.0, 5);
     // Block means of 300 samples have sd 1/sqrt(300) = 0.058; a step of 1 is 17 of their differences' sd (0.082)
     // against 14 ordinary steps: 12.2 / sqrt((12.2^2 + 14) / 15) = 3.7, near the bound sqrt(15) = 3.87.
     for (std::size_t k = 2100; k < y.size(); ++k) y[k] += 1.0;  // at a block boundary (7 x 300)

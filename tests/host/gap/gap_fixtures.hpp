@@ -1,14 +1,25 @@
-// Small simulated logs for the gap tests: a paper-unit gyro log from the replicate chain with an optional signal
-// added at the converter input; the accel channels are constant and so left out of the analysis.
+// Small simulated logs for the gap tests: Gaussian white noise, and a paper-unit gyro log from the replicate chain
+// with an optional signal added at the converter input; the accel channels are constant and so left out of the
+// analysis.
 #pragma once
 
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "host/gap/sim_chain.hpp"
 #include "host/log/log_data.hpp"
 
 namespace driftlab::host::gap::testing {
+
+/// n Gaussian samples of standard deviation sigma.
+inline std::vector<double> white(std::size_t n, double sigma, unsigned seed) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> d(0.0, sigma);
+    std::vector<double> v(n);
+    for (double& x : v) x = d(rng);
+    return v;
+}
 
 inline GapModel paper_gyro_model(int window) {
     GapModel m;

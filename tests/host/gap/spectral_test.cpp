@@ -1,21 +1,16 @@
 // Octave-grid ADEV, band power and lag-band ACF against closed forms for white and AR(1) noise.
 #include <cmath>
-#include <random>
 
 #include <gtest/gtest.h>
+
+#include "gap_fixtures.hpp"
 
 #include "host/gap/spectral.hpp"
 
 namespace driftlab::host::gap {
 namespace {
 
-std::vector<double> white(std::size_t n, double sigma, unsigned seed) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> d(0.0, sigma);
-    std::vector<double> v(n);
-    for (double& x : v) x = d(rng);
-    return v;
-}
+using testing::white;
 
 TEST(Spectral, WhiteNoiseAdevFallsAsOneOverRootM) {
     const auto y = white(1 << 16, 2.0, 1);
