@@ -83,6 +83,9 @@ std::vector<LocatedCell> locate(const std::vector<double>& real, const Compariso
         c.z = cmp.z[j];
         c.difference = diff;
         c.ratio = layout[j].log_scale ? std::exp(diff) : std::numeric_limits<double>::quiet_NaN();
+        const double half = 1.96 * cmp.sim_sd[j];
+        c.interval_low = layout[j].log_scale ? std::exp(diff - half) : diff - half;
+        c.interval_high = layout[j].log_scale ? std::exp(diff + half) : diff + half;
         out.push_back(c);
     }
     std::sort(out.begin(), out.end(), [](const LocatedCell& a, const LocatedCell& b) { return std::abs(a.z) > std::abs(b.z); });

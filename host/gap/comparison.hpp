@@ -41,6 +41,8 @@ struct LocatedCell {
     double z = 0.0;
     double ratio = 0.0;        ///< real/sim for log-scale statistics; NaN otherwise
     double difference = 0.0;   ///< real - sim in the statistic's own scale (counts, correlation)
+    double interval_low = 0.0;   ///< 95 % interval of the difference (ratio, for log-scale statistics): the real
+    double interval_high = 0.0;  ///< value against the replicates' spread, difference +- 1.96 sd
 };
 
 /// The located cells, largest |z| first.

@@ -22,6 +22,7 @@ json located_json(const std::vector<LocatedCell>& cells, const std::vector<Cell>
                        {"segment", segment_name(c.segment)},
                        {"ratio", report::json_number(l.ratio)},
                        {"difference", report::json_number(l.difference)},
+                       {"interval", {report::json_number(l.interval_low), report::json_number(l.interval_high)}},
                        {"z", report::json_number(l.z)}});
     }
     return out;

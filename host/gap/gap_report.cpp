@@ -68,13 +68,13 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md << "| base simulator | " << fixed(r.gap_before_fit) << " | " << fixed(r.gap_before_heldout) << " |\n";
     md << "| with accepted effects | " << fixed(r.gap_after_fit) << " | " << fixed(r.gap_after_heldout) << " |\n\n";
     md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << ", beyond the practical margin)\n\n";
-    md << "| statistic | channel | cell | part | z | ratio or difference |\n|---|---|---|---|---|---|\n";
+    md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < r.located.size() && i < 30; ++i) {
         const auto& l = r.located[i];
         const auto& c = r.layout[l.index];
         md << "| " << c.statistic << " | " << c.channel << " | " << c.cell << " | " << segment_name(c.segment) << " | "
            << fixed(l.z, 1) << " | " << (std::isnan(l.ratio) ? "diff " + fixed(l.difference, 3) : "ratio " + fixed(l.ratio, 3))
-           << " |\n";
+           << " [" << fixed(l.interval_low, 3) << ", " << fixed(l.interval_high, 3) << "] |\n";
     }
     md << "\n" << r.located.size() << " cells located before, " << r.located_after.size() << " after.\n\n";
     md << "## Which: candidate effects\n\n| effect | channel | parameters | held-out gap | shrink | gain / penalty | decision |\n"

@@ -62,6 +62,10 @@ TEST(Comparison, ShiftedCellIsLocatedWithItsSignAndRatio) {
     EXPECT_EQ(located[0].index, 7u);
     EXPECT_GT(located[0].z, 3.0);
     EXPECT_NEAR(located[0].ratio, 2.0 * std::exp(-cmp.sim_mean[7]), 1e-9);
+    // The interval is the ratio times exp(+-1.96 sd) of the replicates (about 0.1 here).
+    EXPECT_NEAR(located[0].interval_low, located[0].ratio * std::exp(-1.96 * cmp.sim_sd[7]), 1e-9);
+    EXPECT_NEAR(located[0].interval_high, located[0].ratio * std::exp(1.96 * cmp.sim_sd[7]), 1e-9);
+    EXPECT_LT(located[0].interval_low, located[0].ratio);
 }
 
 TEST(Comparison, LargeButIrrelevantDifferenceIsNotLocated) {
