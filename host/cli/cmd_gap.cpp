@@ -28,7 +28,7 @@ struct GapCommandOptions {
     int replicates = 40;
     std::uint64_t seed = 1;
     double fit_fraction = 0.6;
-    std::string holdout = "forecast";
+    std::string holdout = "interleaved";
     bool locate_only = false;
 };
 

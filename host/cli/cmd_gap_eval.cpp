@@ -19,7 +19,7 @@ struct GapEvalCommandOptions {
     std::string tune_seeds = "1..4";
     std::string score_seeds = "101..104";
     std::vector<std::string> effects;
-    std::string holdout = "forecast";
+    std::string holdout = "interleaved";
     std::vector<double> levels;
     bool quick = false;
 };

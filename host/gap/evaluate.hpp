@@ -20,7 +20,7 @@ struct EvalOptions {
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
     int detection_logs = 8;       ///< logs per size when measuring a_50 (tuning seeds)
     std::size_t samples = 1500;   ///< log length at 1 s per sample
-    Holdout holdout = Holdout::forecast;
+    Holdout holdout = Holdout::interleaved;
     int replicates = 20;
     int fit_replicates = 8;
     int max_evaluations = 18;
@@ -56,10 +56,10 @@ struct EvalCase {
     bool has_oracle = false;      ///< of the truth generator at its planted size (planted, detected cases)
 };
 
-/// The tuned thresholds.
+/// The decision thresholds gap-eval tunes; the defaults are the ones `driftlab gap` ships (ExplainOptions).
 struct Thresholds {
-    double penalty_per_param = 1.0;
-    double min_heldout_shrink = 0.3;
+    double penalty_per_param = ExplainOptions{}.penalty_per_param;
+    double min_heldout_shrink = ExplainOptions{}.min_heldout_shrink;
 };
 
 /// What the diagnosis says of a case under some thresholds.

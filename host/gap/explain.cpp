@@ -164,6 +164,10 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, Cha
     ex.accepted = passes(ex, options.penalty_per_param, options.min_heldout_shrink);
     for (const auto& info : candidate_list())
         if (info.effect == effect) ex.settle = info.settle;
+    // A Gauss-Markov process whose correlation time is not well inside the log shows neither its bump's fall nor
+    // its plateau: within the log it is a flicker or a random walk (method: report coloured noise, don't choose).
+    constexpr double kIdentifiableSpans = 20.0;
+    if (effect == "gauss_markov") ex.long_memory = fitted.params[1] * kIdentifiableSpans > judge.t_s.back() - judge.t_s.front();
     return ex;
 }
 
@@ -178,6 +182,8 @@ bool passes(const Explanation& e, double penalty_per_param, double min_heldout_s
 }
 
 bool close_call(const Explanation& best, const Explanation& runner_up, double z) {
+    const auto low_frequency = [](const Explanation& e) { return e.effect == "flicker" || e.effect == "rate_random_walk"; };
+    if ((best.long_memory && low_frequency(runner_up)) || (runner_up.long_memory && low_frequency(best))) return true;
     const std::size_t n = std::min(best.heldout_cell_loss.size(), runner_up.heldout_cell_loss.size());
     if (n < 2) return false;
     double sum = 0.0, sum2 = 0.0;

@@ -19,7 +19,7 @@ struct ExplainOptions {
     int eval_replicates = 40;      ///< replicates when judging a fitted candidate
     int max_evaluations = 36;      ///< Nelder-Mead budget per simulated-route candidate
     int max_effects = 3;           ///< stepwise limit over the whole log
-    double penalty_per_param = 1.0;  ///< x ln(cells): the BIC-like price of one parameter
+    double penalty_per_param = 0.25; ///< x ln(cells): the BIC-like price of one parameter (tuned by gap-eval)
     double min_heldout_shrink = 0.3; ///< the held-out gap excess must shrink by at least this fraction
     double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
@@ -41,6 +41,7 @@ struct Explanation {
     double penalty = 0.0;           ///< parameters x ln(fitting cells): the BIC price before penalty_per_param
     double heldout_loss_gain = 0.0; ///< synthetic log-likelihood gain on the held-out cells (x2)
     std::vector<double> heldout_cell_loss;  ///< per held-out cell: z^2 + 2 ln sd with the candidate (close_call)
+    bool long_memory = false;       ///< a Gauss-Markov fit whose correlation time exceeds 1/20 of the log
     bool accepted = false;
     int step = 0;                   ///< stepwise round in which it was tried (1-based)
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
@@ -57,8 +58,10 @@ struct ExplainResult {
 /// to shrink, a held-out shrink of at least min_heldout_shrink and a held-out likelihood gain.
 bool passes(const Explanation& e, double penalty_per_param, double min_heldout_shrink);
 
-/// Whether `runner_up` is not separated from `best` (Vuong's test for non-nested models, with the held-out cells as
-/// observations): with d_j the runner-up's minus the best's loss on cell j, sum d_j < z sqrt(n) sd(d).
+/// Whether `runner_up` is not separated from `best`: always when one is a long-memory Gauss-Markov fit and the
+/// other flicker or a random walk (look-alikes within the log); otherwise Vuong's test for non-nested models, with
+/// the held-out cells as observations: with d_j the runner-up's minus the best's loss on cell j,
+/// sum d_j < z sqrt(n) sd(d).
 bool close_call(const Explanation& best, const Explanation& runner_up, double z = 1.96);
 
 /// Explains the gap of the channels in `channels` (those with located cells) on `log_t_s`/`log_y`.

@@ -44,7 +44,7 @@ std::optional<Holdout> holdout_from_name(const std::string& name);
 /// Options shared by the real log and its replicates.
 struct BatteryOptions {
     std::array<bool, kChannelCount> channels{true, true, true, true};
-    Holdout holdout = Holdout::forecast;
+    Holdout holdout = Holdout::interleaved;
     double fit_fraction = 0.6;      ///< forecast: first part of the log (by time) used to fit candidates
     double sample_period_s = 1.0;   ///< for cell labels [s]
 };

@@ -23,18 +23,28 @@ GapOptions small_options() {
     return o;
 }
 
-TEST(Diagnose, CleanLogHasNoLocatedCellsAndVerdictNone) {
+// Each clean log is flagged with family-wise probability about alpha = 5 %, so of five at most one may be
+// (probability of two or more: 2.3 %); those not flagged get the verdict none and a gap score near 1.
+TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
     const GapModel m = testing::paper_gyro_model(8);
-    const LogData log = testing::gyro_log(m, 1200, {}, 77);
-    const GapResult r = diagnose(log, sim::paper_model(), small_options());
-    EXPECT_EQ(r.verdict, "none");
-    EXPECT_TRUE(r.located.empty());
-    EXPECT_LT(r.gap_before_fit, 2.0);
-    EXPECT_TRUE(r.channels[0]);
-    EXPECT_FALSE(r.channels[1]);
-    // Calibration recovers the planted base: eq. 1 and the white noise before the quantiser.
-    EXPECT_NEAR(r.base.base[0].drift.tau_s, 411.0, 120.0);
-    EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.15);
+    GapOptions o = small_options();
+    o.explain = false;
+    int flagged = 0;
+    for (std::uint64_t seed : {77, 78, 79, 80, 81}) {
+        const GapResult r = diagnose(testing::gyro_log(m, 1200, {}, seed), sim::paper_model(), o);
+        EXPECT_TRUE(r.channels[0]);
+        EXPECT_FALSE(r.channels[1]);
+        if (!r.located.empty()) {
+            ++flagged;
+            continue;
+        }
+        EXPECT_EQ(r.verdict, "none");
+        EXPECT_LT(r.gap_before_fit, 2.0) << "seed " << seed;
+        // Calibration recovers the planted base: eq. 1 and the white noise before the quantiser.
+        EXPECT_NEAR(r.base.base[0].drift.tau_s, 411.0, 120.0) << "seed " << seed;
+        EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.15) << "seed " << seed;
+    }
+    EXPECT_LE(flagged, 1);
 }
 
 TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
@@ -53,7 +63,7 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     const auto j = gap_to_json(r, small_options());
     for (const char* key : {"verdict", "explanations", "located", "gap_before", "gap_after", "not_identifiable"})
         EXPECT_TRUE(j.contains(key)) << key;
-    EXPECT_EQ(j["holdout"], "forecast");
+    EXPECT_EQ(j["holdout"], "interleaved");
     EXPECT_EQ(j["replicates"], small_options().replicates);
     const auto& e = j["explanations"][0];
     for (const char* key : {"effect", "params", "gap_before", "gap_after", "heldout_shrink"}) EXPECT_TRUE(e.contains(key)) << key;

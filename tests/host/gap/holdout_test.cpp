@@ -15,15 +15,16 @@ std::vector<double> instants(std::size_t n) {
 
 TEST(Holdout, ForecastFitsTheFirstPartByTime) {
     BatteryOptions o;
+    o.holdout = Holdout::forecast;
     o.fit_fraction = 0.6;
     const auto mask = fitting_mask(instants(1001), o);
     // t = 1 .. 1001: the split is at 1 + 0.6 * 1000 = 601.
     for (std::size_t k = 0; k < mask.size(); ++k) EXPECT_EQ(mask[k], k + 1 <= 601) << k;
 }
 
-TEST(Holdout, InterleavedAlternatesTenths) {
+TEST(Holdout, InterleavedAlternatesTenthsAndIsTheDefault) {
     BatteryOptions o;
-    o.holdout = Holdout::interleaved;
+    EXPECT_EQ(o.holdout, Holdout::interleaved);
     const auto mask = fitting_mask(instants(1000), o);
     for (std::size_t k = 0; k < mask.size(); ++k) EXPECT_EQ(mask[k], (k / 100) % 2 == 0) << k;
 }

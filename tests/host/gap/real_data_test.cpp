@@ -75,6 +75,9 @@ TEST(RealData, Gyro2xRunsAndReportsItsGap) {
 // Injection-recovery: the real log's own flicker-like gap is explained first (step 1); the injected sinusoid must
 // then be accepted as ambient_cycle at its period and about its size. This needs the stepwise refit: a flicker
 // sized on the log with the sinusoid in it swallows the sinusoid until it is fitted again beside it.
+// Forecast design: with the interleaved default a Gauss-Markov process (tau 199 s) wins step 1 by swallowing
+// the sinusoid and the real noise together, closes the gap, and the sinusoid is never tried again
+// (docs/gap.md, known limits).
 TEST(RealData, InjectedSinusoidIsRecoveredAtItsSize) {
     LogData log;
     if (!load(log)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
@@ -83,6 +86,7 @@ TEST(RealData, InjectedSinusoidIsRecoveredAtItsSize) {
     for (std::size_t k = 0; k < log.size(); ++k)
         log.counts[0][k] += amplitude * std::sin(2.0 * std::numbers::pi * log.t_s[k] / period_s + phase);
     GapOptions o = options();
+    o.holdout = Holdout::forecast;
     // The real log's own gap is flicker-like (see the test above): its candidate must be available too.
     o.explain_options.candidates = {"ambient_cycle", "flicker", "gauss_markov"};
     const GapResult r = diagnose(log, sim::paper_model(), o);
