@@ -17,11 +17,13 @@ constexpr std::size_t kMinSamples = 200;
 TimingCheck check_timing(const LogData& log, double period_s) {
     TimingCheck t;
     t.gap_events = log.gaps.size();
+    // Each row is one SAMPLE frame, plus one RAW frame when the log has raw columns: seq steps by that much.
+    const std::uint64_t frames_per_row = log.has_column("raw_gyro") ? 2 : 1;
     double sum = 0.0, sum2 = 0.0;
     for (std::size_t i = 1; i < log.size(); ++i) {
-        if (log.seq[i] > log.seq[i - 1] + 1) {
+        if (log.seq[i] > log.seq[i - 1] + frames_per_row) {
             ++t.sequence_jumps;
-            t.lost_frames += log.seq[i] - log.seq[i - 1] - 1;
+            t.lost_frames += log.seq[i] - log.seq[i - 1] - frames_per_row;
         }
         const double d = (log.t_s[i] - log.t_s[i - 1]) / period_s - 1.0;
         sum += d;

@@ -47,6 +47,25 @@ TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
     EXPECT_LE(flagged, 1);
 }
 
+// A raw-mode log sends a SAMPLE and a RAW frame per row, so seq steps by 2 without any loss.
+TEST(Diagnose, LostFramesCountTheFramesPerRow) {
+    GapOptions o = small_options();
+    o.explain = false;
+    LogData log = testing::gyro_log(testing::paper_gyro_model(8), 1200, {}, 77);
+    EXPECT_EQ(diagnose(log, sim::paper_model(), o).timing.lost_frames, 0u);
+    log.seq[600] += 1;  // one lost frame before row 600, the numbering after it shifted in the real log too
+    for (std::size_t k = 601; k < log.size(); ++k) log.seq[k] += 1;
+    EXPECT_EQ(diagnose(log, sim::paper_model(), o).timing.lost_frames, 1u);
+    for (std::size_t k = 0; k < log.size(); ++k) log.seq[k] = 3 + 2 * k;
+    log.optional_columns["raw_gyro"] = log.counts[0];
+    const GapResult raw = diagnose(log, sim::paper_model(), o);
+    EXPECT_EQ(raw.timing.lost_frames, 0u);
+    EXPECT_EQ(raw.timing.sequence_jumps, 0u);
+    log.seq[900] += 2;  // a lost SAMPLE+RAW pair
+    for (std::size_t k = 901; k < log.size(); ++k) log.seq[k] += 2;
+    EXPECT_EQ(diagnose(log, sim::paper_model(), o).timing.lost_frames, 2u);
+}
+
 TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     const GapModel m = testing::paper_gyro_model(8);
     // An opposite-sign slower exponential: an overshoot that one exponential cannot absorb.
