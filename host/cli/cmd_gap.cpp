@@ -28,7 +28,7 @@ struct GapCommandOptions {
     int replicates = 40;
     std::uint64_t seed = 1;
     double fit_fraction = 0.6;
-    std::string holdout = "interleaved";
+    gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     bool locate_only = false;
 };
 
@@ -68,9 +68,7 @@ void run(const GapCommandOptions& o) {
     options.replicates = o.replicates;
     options.seed = o.seed;
     options.fit_fraction = o.fit_fraction;
-    const auto holdout = gap::holdout_from_name(o.holdout);
-    if (!holdout) throw UsageError("--holdout: expected forecast or interleaved, got '" + o.holdout + "'");
-    options.holdout = *holdout;
+    options.holdout = o.holdout;
     options.explain = !o.locate_only;
     for (const std::string& name : o.channels) {
         bool found = false;
@@ -90,6 +88,18 @@ void run(const GapCommandOptions& o) {
 
 }  // namespace
 
+void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout) {
+    cmd->add_option_function<std::string>(
+        "--holdout",
+        [&holdout](const std::string& name) {
+            const auto h = gap::holdout_from_name(name);
+            if (!h) throw CLI::ValidationError("--holdout", "expected interleaved or forecast, got '" + name + "'");
+            holdout = *h;
+        },
+        "Held-out design: interleaved (alternate tenths; judges effects confined to the warm-up; default) or "
+        "forecast (fit on the first part, judge on the rest)");
+}
+
 void register_gap(CLI::App& app) {
     auto o = std::make_shared<GapCommandOptions>();
     CLI::App* cmd = app.add_subcommand("gap", "Sim-to-real gap: where the calibrated simulator differs from a real log, "
@@ -101,10 +111,7 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)");
     cmd->add_option("--fit-fraction", o->fit_fraction, "First part of the log (by time) used to fit candidates")
         ->check(CLI::Range(0.3, 0.85));
-    cmd->add_option("--holdout", o->holdout,
-                    "forecast (fit on the first part, judge on the rest) or interleaved (alternate tenths; judges "
-                    "effects confined to the warm-up)")
-        ->capture_default_str();
+    add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: verdict, explanations, located, located_after, gap_before, gap_after, "

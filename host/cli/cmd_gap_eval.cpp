@@ -19,7 +19,7 @@ struct GapEvalCommandOptions {
     std::string tune_seeds = "1..4";
     std::string score_seeds = "101..104";
     std::vector<std::string> effects;
-    std::string holdout = "interleaved";
+    gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     std::vector<double> levels;
     bool quick = false;
 };
@@ -55,9 +55,7 @@ void run(const GapEvalCommandOptions& o) {
             }
         if (!found) throw UsageError("--effects: unknown generator or effect '" + e + "'");
     }
-    const auto holdout = gap::holdout_from_name(o.holdout);
-    if (!holdout) throw UsageError("--holdout: expected forecast or interleaved, got '" + o.holdout + "'");
-    options.holdout = *holdout;
+    options.holdout = o.holdout;
     if (o.quick) {
         options.samples = 800;
         options.levels = {2.0};
@@ -96,8 +94,7 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
         ->delimiter(',')
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--holdout", o->holdout, "Held-out design of the diagnosis: forecast or interleaved")
-        ->capture_default_str();
+    add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
     cmd->callback([o] { run(*o); });
 }

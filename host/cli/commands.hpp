@@ -7,6 +7,9 @@
 namespace driftlab::host::fit {
 struct FileAnalysisRequest;
 }
+namespace driftlab::host::gap {
+enum class Holdout;
+}
 
 namespace driftlab::host::cli {
 
@@ -28,5 +31,8 @@ void register_gap_eval(CLI::App& app);
 
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
+
+/// --holdout interleaved|forecast, which gap and gap-eval share (defined in cmd_gap.cpp).
+void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout);
 
 }  // namespace driftlab::host::cli

@@ -21,7 +21,7 @@ struct GapOptions {
     int replicates = 40;            ///< R of the comparison (>= 10)
     std::uint64_t seed = 1;
     double alpha = 0.05;            ///< family-wise level of the located cells
-    Holdout holdout = Holdout::interleaved;  ///< how the log is split into fitting and held-out parts
+    Holdout holdout = BatteryOptions{}.holdout;  ///< how the log is split into fitting and held-out parts
     double fit_fraction = 0.6;      ///< forecast: first part of the log used to fit candidates; the rest is held out
     std::array<bool, kChannelCount> channels{};  ///< all false = every channel whose values vary
     bool explain = true;            ///< false: locate only

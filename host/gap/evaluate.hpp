@@ -20,7 +20,7 @@ struct EvalOptions {
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
     int detection_logs = 8;       ///< logs per size when measuring a_50 (tuning seeds)
     std::size_t samples = 1500;   ///< log length at 1 s per sample
-    Holdout holdout = Holdout::interleaved;
+    Holdout holdout = BatteryOptions{}.holdout;
     int replicates = 20;
     int fit_replicates = 8;
     int max_evaluations = 18;
