@@ -68,19 +68,21 @@ const std::vector<NotIdentifiable>& not_tried_list() {
     return list;
 }
 
+const CandidateInfo& candidate(const std::string& effect) {
+    for (const auto& info : candidate_list())
+        if (info.effect == effect) return info;
+    throw std::invalid_argument("unknown candidate effect: " + effect);
+}
+
 std::vector<std::string> candidate_param_names(const std::string& effect, Channel c) {
     const std::string unit = c == Channel::gyro ? "dps" : "g";
-    for (const auto& info : candidate_list()) {
-        if (info.effect != effect) continue;
-        std::vector<std::string> out;
-        for (std::string k : info.param_keys) {
-            const auto pos = k.find("unit");
-            if (pos != std::string::npos) k.replace(pos, 4, unit);
-            out.push_back(k);
-        }
-        return out;
+    std::vector<std::string> out;
+    for (std::string k : candidate(effect).param_keys) {
+        const auto pos = k.find("unit");
+        if (pos != std::string::npos) k.replace(pos, 4, unit);
+        out.push_back(k);
     }
-    throw std::invalid_argument("unknown candidate effect: " + effect);
+    return out;
 }
 
 sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, const std::vector<double>& p,

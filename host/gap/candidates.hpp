@@ -27,6 +27,9 @@ struct CandidateInfo {
 /// The candidates, in the order they are tried.
 const std::vector<CandidateInfo>& candidate_list();
 
+/// The candidate called `effect`; throws std::invalid_argument when there is none.
+const CandidateInfo& candidate(const std::string& effect);
+
 /// Effects of the library a static bench log cannot identify, with the reason.
 struct NotIdentifiable {
     std::string effect;

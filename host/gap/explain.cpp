@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
@@ -58,12 +57,6 @@ double sd_of(const std::vector<double>& v) {
     m /= static_cast<double>(v.size());
     for (double x : v) s += (x - m) * (x - m);
     return std::sqrt(s / static_cast<double>(v.size()));
-}
-
-FitRoute route_of(const std::string& effect) {
-    for (const auto& info : candidate_list())
-        if (info.effect == effect) return info.route;
-    throw std::invalid_argument("unknown candidate effect: " + effect);
 }
 
 struct Fitted {
@@ -162,8 +155,7 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, Cha
         if (judge.layout[j].segment == Segment::heldout)
             ex.heldout_cell_loss.push_back(cmp.z[j] * cmp.z[j] + 2.0 * std::log(cmp.sim_sd[j]));
     ex.accepted = passes(ex, options.penalty_per_param, options.min_heldout_shrink);
-    for (const auto& info : candidate_list())
-        if (info.effect == effect) ex.settle = info.settle;
+    ex.settle = candidate(effect).settle;
     // A Gauss-Markov process whose correlation time is not well inside the log shows neither its bump's fall nor
     // its plateau: within the log it is a flicker or a random walk (method: report coloured noise, don't choose).
     constexpr double kIdentifiableSpans = 20.0;
@@ -240,26 +232,22 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             std::vector<Option> here;
             for (const std::string& effect : names) {
                 if (std::find(used[i].begin(), used[i].end(), effect) != used[i].end()) continue;
-                const CandidateInfo* info = nullptr;
-                for (const auto& ci : candidate_list())
-                    if (ci.effect == effect) info = &ci;
-                if (!info) continue;
-                Fitted fitted = info->route == FitRoute::deterministic
-                                    ? fit_deterministic(effect, result.model, c, judge)
-                                    : fit_simulated(effect, result.model, c, judge, options);
-                if (info->route == FitRoute::deterministic)
+                const FitRoute route = candidate(effect).route;
+                Fitted fitted = route == FitRoute::deterministic ? fit_deterministic(effect, result.model, c, judge)
+                                                                 : fit_simulated(effect, result.model, c, judge, options);
+                if (route == FitRoute::deterministic)
                     fitted.model.effects.push_back(make_candidate_effect(effect, c, fitted.params, fitted.model));
                 // Refit everything: an earlier noise effect on this channel may have been sized to swallow what
                 // this candidate explains (a broad flicker covers a sinusoid), so it is fitted again beside it.
                 std::vector<std::pair<std::size_t, std::vector<double>>> refits;
                 for (std::size_t k = 0; k < result.accepted.size(); ++k) {
                     const Explanation& prev = result.accepted[k];
-                    if (prev.channel != kChannelNames[i] || route_of(prev.effect) != FitRoute::simulated) continue;
-                    const auto slot = fitted.model.effects.begin() + static_cast<std::ptrdiff_t>(first_added + k);
+                    if (prev.channel != kChannelNames[i] || candidate(prev.effect).route != FitRoute::simulated) continue;
+                    const auto slot = static_cast<std::ptrdiff_t>(first_added + k);
                     GapModel without = fitted.model;
-                    without.effects.erase(without.effects.begin() + (slot - fitted.model.effects.begin()));
+                    without.effects.erase(without.effects.begin() + slot);
                     Fitted again = fit_simulated(prev.effect, without, c, judge, options);
-                    *slot = again.model.effects.back();
+                    fitted.model.effects[static_cast<std::size_t>(slot)] = again.model.effects.back();
                     refits.emplace_back(k, again.params);
                 }
                 // The candidate takes part of the short-lag spread: match the white noise again with it in place.

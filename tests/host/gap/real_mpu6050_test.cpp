@@ -77,7 +77,9 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     EXPECT_GT(r.timing.dt_jitter_rel, 0.1);
     // Block noise: accel 3-5 mg = 12-20 LSB raw, gyro 0.13 deg/s = 16.5 LSB raw, all far above the quantiser.
     for (std::size_t c = 0; c < kChannelCount; ++c) EXPECT_GT(r.base.base[c].sigma_n_counts, 5.0) << kChannelNames[c];
-    if (!r.accepted.empty()) EXPECT_LE(r.gap_after_heldout, r.gap_before_heldout);
+    if (!r.accepted.empty()) {
+        EXPECT_LE(r.gap_after_heldout, r.gap_before_heldout);
+    }
 }
 
 }  // namespace
