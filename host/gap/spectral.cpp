@@ -8,6 +8,8 @@
 
 #include <unsupported/Eigen/FFT>
 
+#include "host/stats/autocorrelation.hpp"
+
 namespace driftlab::host::gap {
 
 namespace {
@@ -67,20 +69,11 @@ std::vector<double> octave_band_power(const std::vector<double>& y) {
 }
 
 std::vector<double> octave_lag_acf(const std::vector<double>& y, std::size_t max_lag) {
-    const std::vector<double> e = demeaned(y);
-    const std::size_t nfft = next_pow2(2 * e.size());
-    std::vector<double> padded(nfft, 0.0);
-    std::copy(e.begin(), e.end(), padded.begin());
-    Eigen::FFT<double> fft;
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, padded);
-    for (auto& s : spec) s = std::norm(s);
-    std::vector<double> acov;
-    fft.inv(acov, spec);
+    const std::vector<double> acov = stats::biased_autocovariance(demeaned(y), max_lag);
     std::vector<double> out;
     // A constant series has no correlation to speak of; keep the band count fixed for the caller.
     const double r0 = acov[0] > 0.0 ? acov[0] : std::numeric_limits<double>::infinity();
-    for (std::size_t lo = 1; 2 * lo - 1 <= max_lag; lo *= 2) {
+    for (std::size_t lo = 1; 2 * lo - 1 <= max_lag && 2 * lo - 1 < acov.size(); lo *= 2) {
         double sum = 0.0;
         for (std::size_t k = lo; k < 2 * lo; ++k) sum += acov[k] / r0;
         out.push_back(sum / static_cast<double>(lo));

@@ -10,6 +10,15 @@
 #include "driftlab/proto/wire.hpp"
 
 namespace driftlab::host::io {
+
+Frame copy_frame(const proto::Decoder& decoder) {
+    Frame f;
+    f.type = decoder.type();
+    f.seq = decoder.seq();
+    f.payload_len = decoder.payload_len();
+    std::memcpy(f.payload.data(), decoder.payload(), f.payload_len);
+    return f;
+}
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -82,11 +91,7 @@ LinkStatus BoardClient::pump(int timeout_ms) {
         sync_state_ = byte == proto::kSync0 ? 1 : (sync_state_ == 1 && byte == proto::kSync1 ? 2 : 0);
         if (!decoder_.feed(byte)) continue;
         do {
-            Frame f;
-            f.type = decoder_.type();
-            f.seq = decoder_.seq();
-            f.payload_len = decoder_.payload_len();
-            std::memcpy(f.payload.data(), decoder_.payload(), f.payload_len);
+            const Frame f = copy_frame(decoder_);
             static_cast<void>(seq_.accept(f.seq));
             if (f.type == proto::MsgType::nak) ++counters_.naks;
             deliver(f);

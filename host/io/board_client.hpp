@@ -36,6 +36,9 @@ struct Frame {
     std::array<std::uint8_t, proto::kMaxPayload> payload{};
 };
 
+/// The frame `decoder` has just completed (valid until its next feed()/next()), copied out.
+Frame copy_frame(const proto::Decoder& decoder);
+
 struct ClientOptions {
     int reply_timeout_ms = 500;  ///< [ms] wait for one answer
     int hello_attempts = 6;      ///< an Arduino resets when the port opens; its bootloader needs ~2 s

@@ -1,7 +1,6 @@
 // LogAssembler: capture stream -> canonical log (log_assembler.hpp).
 #include "host/io/log_assembler.hpp"
 
-#include <cstring>
 #include <utility>
 
 #include "host/util/error.hpp"
@@ -57,11 +56,7 @@ void LogAssembler::on_rx(std::uint64_t t_us, const std::uint8_t* bytes, std::siz
     for (std::size_t i = 0; i < count; ++i) {
         if (!decoder_.feed(bytes[i])) continue;
         do {
-            Frame f;
-            f.type = decoder_.type();
-            f.seq = decoder_.seq();
-            f.payload_len = decoder_.payload_len();
-            std::memcpy(f.payload.data(), decoder_.payload(), f.payload_len);
+            const Frame f = copy_frame(decoder_);
             handle_frame(t_us, f);
         } while (decoder_.next());
     }
