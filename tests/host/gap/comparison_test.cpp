@@ -1,6 +1,7 @@
 // The max-|z| threshold controls the family-wise flag rate, and the gap score is about 1 under the null.
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -9,12 +10,12 @@
 namespace driftlab::host::gap {
 namespace {
 
-TEST(Comparison, MaxZThresholdFlagsAboutAlphaOfNullLogs) {
-    // 60 correlated cells (an AR(1) along the cells, like neighbouring octaves), R = 40 replicates; a "real" log
-    // from the same distribution must be flagged (any |z| above the threshold) in about alpha of the trials.
-    std::mt19937_64 rng(11);
+// The flag rate of a null log (drawn like the replicates): 60 correlated cells (an AR(1) along the cells, like
+// neighbouring octaves). Returns the fraction of trials with any located cell and the mean gap score.
+std::pair<double, double> null_flag_rate(int r, int trials, unsigned seed) {
+    std::mt19937_64 rng(seed);
     std::normal_distribution<double> n01;
-    const int cells = 60, r = 40, trials = 400;
+    const int cells = 60;
     auto draw = [&] {
         std::vector<double> v(cells);
         double x = n01(rng);
@@ -38,11 +39,19 @@ TEST(Comparison, MaxZThresholdFlagsAboutAlphaOfNullLogs) {
         flagged += !locate(real, cmp, layout).empty();
         score += gap_score(cmp, layout, [](const Cell&) { return true; }) / trials;
     }
-    const double rate = static_cast<double>(flagged) / trials;
-    // Binomial sd at 5 % over 400 trials is 1.1 %; the quantile of 40 maxima adds its own spread.
-    EXPECT_GT(rate, 0.015);
-    EXPECT_LT(rate, 0.10);
-    EXPECT_NEAR(score, 1.0, 0.1);
+    return {static_cast<double>(flagged) / trials, score};
+}
+
+// A Monte Carlo test at level alpha: the real log, exchangeable with the R replicates, exceeds the threshold in
+// alpha of the trials, whatever R (19 = the smallest R for which alpha = 5 % is exact, 40 = the default).
+TEST(Comparison, MaxZThresholdFlagsAlphaOfNullLogs) {
+    for (const int r : {19, 40}) {
+        const auto [rate, score] = null_flag_rate(r, 3000, 11u + static_cast<unsigned>(r));
+        // Binomial sd at 5 % over 3000 trials is 0.4 %.
+        EXPECT_GT(rate, 0.035) << "R = " << r;
+        EXPECT_LT(rate, 0.065) << "R = " << r;
+        EXPECT_NEAR(score, 1.0, 0.05) << "R = " << r;
+    }
 }
 
 TEST(Comparison, ShiftedCellIsLocatedWithItsSignAndRatio) {
