@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sim/effects/effect.hpp"
+#include "sim/model/drift.hpp"
+
 namespace driftlab::host::gap {
 
 namespace {
@@ -34,11 +37,11 @@ const std::vector<CandidateInfo>& candidate_list() {
          "log a second power-on after a full cool-down: an exponential repeats at the same T2, a random walk does not"},
         {"ambient_cycle", {"amplitude_unit", "period_s", "phase_rad"}, FitRoute::deterministic,
          "log a board thermistor, or log long enough for 3 cycles: the line at 1/P must be coherent with temperature"},
-        {"gauss_markov", {"sigma_unit", "tau_s"}, FitRoute::simulated,
+        {"gauss_markov", {"sigma_unit", "tau_s"}, FitRoute::spectral,
          "log at least 20 correlation times: one Gauss-Markov gives an ADEV bump less than a decade wide, flicker a plateau"},
-        {"flicker", {"b_unit"}, FitRoute::simulated,
+        {"flicker", {"b_unit"}, FitRoute::spectral,
          "log longer (>= 1.5 decades of flat ADEV separate flicker from a single Gauss-Markov process)"},
-        {"rate_random_walk", {"k_unit_per_sqrt_s"}, FitRoute::simulated,
+        {"rate_random_walk", {"k_unit_per_sqrt_s"}, FitRoute::spectral,
          "repeat the run: a random walk differs between runs, a thermal exponential repeats"},
         {"spikes", {"rate_hz", "scale_counts"}, FitRoute::simulated,
          "log the RAW codes too: a spike before the smoother is kernel-shaped, a link error is a single sample"},
@@ -68,9 +71,14 @@ const std::vector<NotIdentifiable>& not_tried_list() {
     return list;
 }
 
-const CandidateInfo& candidate(const std::string& effect) {
+const CandidateInfo* find_candidate(const std::string& effect) {
     for (const auto& info : candidate_list())
-        if (info.effect == effect) return info;
+        if (info.effect == effect) return &info;
+    return nullptr;
+}
+
+const CandidateInfo& candidate(const std::string& effect) {
+    if (const CandidateInfo* info = find_candidate(effect)) return *info;
     throw std::invalid_argument("unknown candidate effect: " + effect);
 }
 
@@ -83,6 +91,30 @@ std::vector<std::string> candidate_param_names(const std::string& effect, Channe
         out.push_back(k);
     }
     return out;
+}
+
+std::vector<double> model_mean_counts(const GapModel& model, Channel c, const std::vector<double>& t_s) {
+    const std::size_t i = channel_index(c);
+    const sim::Drift drift(model.base[i].drift);
+    std::vector<double> mean(t_s.size());
+    for (std::size_t k = 0; k < t_s.size(); ++k) mean[k] = drift.at_counts(t_s[k]);
+    const double cpu = counts_per_unit(model, c);
+    for (const sim::EffectSpec& spec : model.effects) {
+        const CandidateInfo* info = find_candidate(spec.name);
+        if (!info || info->route != FitRoute::deterministic) continue;
+        const auto effect = sim::make_effect(spec.name, spec.table, "effects." + spec.name);
+        effect->reset(0);
+        sim::EffectContext ctx;
+        ctx.channel = c;
+        for (std::size_t k = 0; k < t_s.size(); ++k) {
+            ctx.dt_s = k ? t_s[k] - t_s[k - 1] : 0.0;
+            ctx.t_s = t_s[k];
+            sim::ChannelValues values{};
+            effect->apply(values, ctx);
+            mean[k] += values[i] * cpu;
+        }
+    }
+    return mean;
 }
 
 sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, const std::vector<double>& p,

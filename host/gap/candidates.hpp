@@ -14,7 +14,8 @@ namespace driftlab::host::gap {
 /// How a candidate's parameters are found.
 enum class FitRoute {
     deterministic,  ///< a mean shape: variable projection on the fitting part of the log, jointly with eq. 1
-    simulated,      ///< a random process: Nelder-Mead on log-parameters against the battery (common random numbers)
+    spectral,       ///< a Gaussian process: debiased Whittle likelihood of the differenced residual (spectral_fit)
+    simulated,      ///< a non-Gaussian process: Nelder-Mead on log-parameters against the battery (common random numbers)
 };
 
 struct CandidateInfo {
@@ -30,6 +31,9 @@ const std::vector<CandidateInfo>& candidate_list();
 /// The candidate called `effect`; throws std::invalid_argument when there is none.
 const CandidateInfo& candidate(const std::string& effect);
 
+/// The candidate called `effect`, or null.
+const CandidateInfo* find_candidate(const std::string& effect);
+
 /// Effects of the library a static bench log cannot identify, with the reason.
 struct NotIdentifiable {
     std::string effect;
@@ -44,6 +48,10 @@ const std::vector<NotIdentifiable>& not_tried_list();
 /// physical units). Throws std::invalid_argument for an unknown name.
 sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, const std::vector<double>& params,
                                       const GapModel& model);
+
+/// The model's noise-free mean of channel `c` at the instants `t_s` [counts, up to a constant]: eq. 1 plus the
+/// deterministic candidates among `model.effects`, evaluated by the library's own effects.
+std::vector<double> model_mean_counts(const GapModel& model, Channel c, const std::vector<double>& t_s);
 
 /// Parameter keys with the channel's unit spelled out (e.g. "c3_dps" for the gyro, "c3_g" for an accel axis).
 std::vector<std::string> candidate_param_names(const std::string& effect, Channel c);

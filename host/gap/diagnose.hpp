@@ -11,6 +11,7 @@
 
 #include "host/gap/comparison.hpp"
 #include "host/gap/explain.hpp"
+#include "host/gap/level_step.hpp"
 #include "host/gap/gap_model.hpp"
 #include "host/gap/statistics.hpp"
 #include "host/log/log_data.hpp"
@@ -50,7 +51,8 @@ struct GapResult {
     double gap_after_fit = 1.0, gap_after_heldout = 1.0;
     std::vector<Explanation> tried;      ///< every candidate fit, accepted first
     std::vector<Explanation> accepted;   ///< added stepwise, in order
-    std::string verdict;                 ///< an effect name, "none" or "unexplained"
+    std::vector<LevelStep> level_steps;  ///< per channel with accepted effects: a step the model leaves unexplained?
+    std::string verdict;                 ///< an effect name, "none" or "unexplained" (also when a level step remains)
     TimingCheck timing;
 };
 

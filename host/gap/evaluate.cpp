@@ -160,20 +160,13 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
 
 Decision decide(const EvalCase& c, const Thresholds& th) {
     if (!c.detected) return {"none", ""};
-    const Explanation* best = nullptr;
-    const Explanation* second = nullptr;
-    for (const auto& e : c.tried) {
-        if (!passes(e, th.penalty_per_param, th.min_heldout_shrink)) continue;
-        if (!best || e.heldout_loss_gain > best->heldout_loss_gain) {
-            second = best;
-            best = &e;
-        } else if (!second || e.heldout_loss_gain > second->heldout_loss_gain) {
-            second = &e;
-        }
-    }
-    if (!best) return {"unexplained", ""};
-    const bool close = second && close_call(*best, *second, ExplainOptions{}.ambiguity_z);
-    return {best->effect, close ? second->effect : ""};
+    std::vector<const Explanation*> passing;
+    for (const auto& e : c.tried)
+        if (passes(e, th.penalty_per_param, th.min_heldout_shrink)) passing.push_back(&e);
+    const Choice choice = choose(passing);
+    if (!choice.best || !closes_gap(*choice.best)) return {"unexplained", ""};
+    const bool close = choice.runner_up && close_call(*choice.best, *choice.runner_up, ExplainOptions{}.ambiguity_z);
+    return {choice.best->effect, close ? choice.runner_up->effect : ""};
 }
 
 namespace {

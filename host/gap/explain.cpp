@@ -10,12 +10,15 @@
 #include "host/gap/mean_shapes.hpp"
 #include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
+#include "host/gap/spectral_fit.hpp"
 
 namespace driftlab::host::gap {
 
 namespace {
 
 constexpr double kAlpha = 0.05;
+// A held-out gap-score excess below this is no gap to shrink (the score is about 1 when the model explains the log).
+constexpr double kMinHeldoutExcess = 0.2;
 
 CellFilter in_segment(Segment s) {
     return [s](const Cell& c) { return c.segment == s; };
@@ -30,27 +33,6 @@ double synthetic_loss(const Comparison& cmp, const std::vector<Cell>& layout, Se
     return loss;
 }
 
-std::size_t cells_in(const std::vector<Cell>& layout, Segment s) {
-    return static_cast<std::size_t>(std::count_if(layout.begin(), layout.end(), [s](const Cell& c) { return c.segment == s; }));
-}
-
-// One channel's battery, real values and replicate runner.
-struct Judge {
-    const std::vector<double>& t_s;
-    BatteryOptions battery;
-    std::vector<Cell> layout;
-    std::vector<double> real;
-    std::vector<double> residual;
-    double target_spread = 0.0;
-    std::vector<double> t_fit, y_fit;  ///< the fitting part's instants and values (deterministic fits)
-    std::uint64_t seed;
-    int threads;
-
-    Comparison evaluate(const GapModel& m, int replicates) const {
-        return compare(real, run_replicates(m, t_s, battery, replicates, seed, threads), kAlpha);
-    }
-};
-
 double sd_of(const std::vector<double>& v) {
     double m = 0, s = 0;
     for (double x : v) m += x;
@@ -59,87 +41,149 @@ double sd_of(const std::vector<double>& v) {
     return std::sqrt(s / static_cast<double>(v.size()));
 }
 
-struct Fitted {
-    GapModel model;
+// One channel's data, battery, real values and replicate runner.
+struct Judge {
+    const std::vector<double>& t_s;
+    const std::vector<double>& y;   ///< this channel's log values [counts]
+    Channel channel;
+    BatteryOptions battery;
+    std::vector<Cell> layout;
+    std::vector<double> real;
+    std::vector<double> residual;   ///< eq. 1 residual of the whole log (the battery's)
+    double target_spread = 0.0;
+    std::vector<bool> fitting;      ///< per sample: in the fitting part
+    std::uint64_t seed;
+    int threads;
+
+    Comparison evaluate(const GapModel& m, int replicates) const {
+        return compare(real, run_replicates(m, t_s, battery, replicates, seed, threads), kAlpha);
+    }
+};
+
+// An accepted effect of this channel that is fitted again beside each new candidate.
+struct Earlier {
+    std::size_t accepted_index;  ///< into ExplainResult::accepted
+    std::size_t slot;            ///< into GapModel::effects
+    std::string effect;
     std::vector<double> params;
 };
 
-Fitted fit_deterministic(const std::string& effect, const GapModel& current, Channel c, const Judge& judge) {
-    const std::size_t i = channel_index(c);
-    const double cpu = counts_per_unit(current, c);
-    Fitted out{current, {}};
-    if (effect == "thermal_second_tc") {
-        const TwoExponentials f = fit_two_exponentials(judge.t_fit, judge.y_fit, judge.t_fit.size());
-        out.model.base[i].drift = {f.c1_counts, f.c2_counts, f.t_s};
-        out.params = {f.c3_counts / cpu, f.t2_s};
-    } else {
-        const ExponentialAndSine f = fit_exponential_and_sine(judge.t_fit, judge.y_fit, judge.t_fit.size());
-        out.model.base[i].drift = {f.c1_counts, f.c2_counts, f.t_s};
-        out.params = {f.amplitude_counts / cpu, f.period_s, f.phase_rad};
-    }
+struct Fitted {
+    GapModel model;
+    std::vector<double> params;
+    std::vector<std::pair<std::size_t, std::vector<double>>> refits;  ///< accepted index, new parameters
+};
+
+// The log minus the mean shapes accepted earlier (not eq. 1): what a new mean shape is fitted to, jointly with eq. 1.
+std::vector<double> without_earlier_shapes(const GapModel& m, const Judge& judge) {
+    GapModel shapes_only = m;
+    const std::vector<double> with_shapes = model_mean_counts(shapes_only, judge.channel, judge.t_s);
+    shapes_only.effects.clear();
+    const std::vector<double> drift_only = model_mean_counts(shapes_only, judge.channel, judge.t_s);
+    std::vector<double> out(judge.y.size());
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = judge.y[k] - (with_shapes[k] - drift_only[k]);
     return out;
 }
 
-Fitted fit_simulated(const std::string& effect, const GapModel& current, Channel c, const Judge& judge,
-                     const ExplainOptions& options) {
+// A mean-shape candidate fitted with eq. 1 by variable projection on the samples of `part`.
+Fitted fit_deterministic(const std::string& effect, const GapModel& current, const Judge& judge, const std::vector<bool>& part) {
+    const Channel c = judge.channel;
+    const std::size_t i = channel_index(c);
     const double cpu = counts_per_unit(current, c);
+    const std::vector<double> y = without_earlier_shapes(current, judge);
+    std::vector<double> t_part, y_part;
+    for (std::size_t k = 0; k < judge.t_s.size(); ++k)
+        if (part[k]) t_part.push_back(judge.t_s[k]), y_part.push_back(y[k]);
+    Fitted out{current, {}, {}};
+    if (effect == "thermal_second_tc") {
+        const TwoExponentials f = fit_two_exponentials(t_part, y_part, t_part.size());
+        out.model.base[i].drift = {f.c1_counts, f.c2_counts, f.t_s};
+        out.params = {f.c3_counts / cpu, f.t2_s};
+    } else {
+        const ExponentialAndSine f = fit_exponential_and_sine(t_part, y_part, t_part.size());
+        out.model.base[i].drift = {f.c1_counts, f.c2_counts, f.t_s};
+        out.params = {f.amplitude_counts / cpu, f.period_s, f.phase_rad};
+    }
+    out.model.effects.push_back(make_candidate_effect(effect, c, out.params, out.model));
+    return out;
+}
+
+// Periodogram, on `part`, of the differenced log minus the model's mean (eq. 1 and the mean shapes).
+PartPeriodogram residual_periodogram(const GapModel& m, const Judge& judge, const std::vector<bool>& part) {
+    const std::vector<double> mean = model_mean_counts(m, judge.channel, judge.t_s);
+    std::vector<double> r(judge.y.size());
+    for (std::size_t k = 0; k < r.size(); ++k) r[k] = judge.y[k] - mean[k];
+    return part_periodogram(r, part);
+}
+
+// Whittle fit on `p` of the earlier spectral effects plus `extra` ("" = none); writes the refitted parameters into
+// `m` (earlier slots in place, `extra` appended) and, when `refits` is not null, lists the earlier ones there.
+SpectralFit fit_noise(GapModel& m, const Judge& judge, const PartPeriodogram& p, const std::vector<Earlier>& earlier,
+                      const std::string& extra, std::vector<std::pair<std::size_t, std::vector<double>>>* refits) {
+    std::vector<std::string> effects;
+    std::vector<double> known;
+    for (const Earlier& e : earlier) {
+        effects.push_back(e.effect);
+        known.insert(known.end(), e.params.begin(), e.params.end());
+    }
+    if (!extra.empty()) effects.push_back(extra);
+    const SpectralFit fit = fit_spectral(effects, judge.channel, m, p, known);
+    std::size_t k = 0;
+    for (const Earlier& e : earlier) {
+        const std::vector<double> q(fit.params.begin() + static_cast<std::ptrdiff_t>(k),
+                                    fit.params.begin() + static_cast<std::ptrdiff_t>(k + e.params.size()));
+        m.effects[e.slot] = make_candidate_effect(e.effect, judge.channel, q, m);
+        if (refits) refits->emplace_back(e.accepted_index, q);
+        k += e.params.size();
+    }
+    if (!extra.empty()) {
+        const std::vector<double> q(fit.params.begin() + static_cast<std::ptrdiff_t>(k), fit.params.end());
+        m.effects.push_back(make_candidate_effect(extra, judge.channel, q, m));
+    }
+    return fit;
+}
+
+// Spikes: Nelder-Mead on log (rate, scale) minimising the synthetic loss of the fitting cells, started from a
+// robust outlier count (a spike of s counts in one conversion leaves about s/N in the output).
+Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOptions& options) {
     const double span_s = judge.t_s.back() - judge.t_s.front();
-    const double sd_unit = std::max(sd_of(judge.residual), 0.05) / cpu;
     auto model_at = [&](const std::vector<double>& log_p) {
-        std::vector<double> p(log_p.size());
-        for (std::size_t k = 0; k < p.size(); ++k) p[k] = std::exp(log_p[k]);
         GapModel m = current;
-        m.effects.push_back(make_candidate_effect(effect, c, p, current));
+        m.effects.push_back(make_candidate_effect("spikes", judge.channel, {std::exp(log_p[0]), std::exp(log_p[1])}, current));
         return m;
     };
     auto objective = [&](const std::vector<double>& log_p) {
         return synthetic_loss(judge.evaluate(model_at(log_p), options.fit_replicates), judge.layout, Segment::fit);
     };
-    // A few starting points spanning the plausible range, then the simplex from the best of them.
-    std::vector<std::vector<double>> starts;
-    if (effect == "gauss_markov") {
-        for (double tau : {span_s / 100, span_s / 20, span_s / 4})
-            for (double s : {0.3, 1.0}) starts.push_back({std::log(s * sd_unit), std::log(tau)});
-    } else if (effect == "flicker") {
-        for (double s : {0.05, 0.2, 0.8}) starts.push_back({std::log(s * sd_unit)});
-    } else if (effect == "rate_random_walk") {
-        for (double s : {0.1, 0.5, 2.0}) starts.push_back({std::log(s * sd_unit / std::sqrt(span_s))});
-    } else {
-        // Spikes: count robust outliers of the residual; a spike of s counts in one conversion leaves about s/N.
-        const auto& e = judge.residual;
-        std::vector<double> dev(e.size());
-        for (std::size_t k = 0; k < e.size(); ++k) dev[k] = std::abs(e[k]);
-        std::vector<double> sorted = dev;
-        std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-        const double scale = 1.4826 * sorted[sorted.size() / 2] + 0.1;
-        std::vector<double> outliers;
-        for (double d : dev)
-            if (d > 5.0 * scale) outliers.push_back(d);
-        const double rate = std::max(1.0, static_cast<double>(outliers.size())) / span_s;
-        const double amp = (outliers.empty() ? 5.0 * scale : sd_of(outliers) + outliers.front()) * current.smoothing.window;
-        starts.push_back({std::log(rate), std::log(amp)});
-        starts.push_back({std::log(rate * 3), std::log(amp / 2)});
-    }
+    const auto& e = judge.residual;
+    std::vector<double> dev(e.size());
+    for (std::size_t k = 0; k < e.size(); ++k) dev[k] = std::abs(e[k]);
+    std::vector<double> sorted = dev;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const double scale = 1.4826 * sorted[sorted.size() / 2] + 0.1;
+    std::vector<double> outliers;
+    for (double d : dev)
+        if (d > 5.0 * scale) outliers.push_back(d);
+    const double rate = std::max(1.0, static_cast<double>(outliers.size())) / span_s;
+    const double amp = (outliers.empty() ? 5.0 * scale : sd_of(outliers) + outliers.front()) * current.smoothing.window;
+    const std::vector<std::vector<double>> starts{{std::log(rate), std::log(amp)}, {std::log(rate * 3), std::log(amp / 2)}};
     std::vector<double> best = starts.front();
     double best_value = INFINITY;
     for (const auto& s : starts) {
         const double v = objective(s);
         if (v < best_value) best_value = v, best = s;
     }
-    const std::vector<double> step(best.size(), 0.7);
-    const auto nm = nelder_mead(objective, best, step, std::max(8, options.max_evaluations - static_cast<int>(starts.size())));
-    Fitted out{model_at(nm.x), {}};
-    for (double v : nm.x) out.params.push_back(std::exp(v));
-    return out;
+    const auto nm = nelder_mead(objective, best, {0.7, 0.7}, std::max(8, options.max_evaluations - static_cast<int>(starts.size())));
+    return {model_at(nm.x), {std::exp(nm.x[0]), std::exp(nm.x[1])}, {}};
 }
 
-Explanation judge_candidate(const std::string& effect, const Fitted& fitted, Channel c, const Judge& judge,
-                            const Comparison& base_cmp, const ExplainOptions& options) {
+Explanation judge_candidate(const std::string& effect, const Fitted& fitted, const Judge& judge, const Comparison& base_cmp,
+                            const ExplainOptions& options) {
     const Comparison cmp = judge.evaluate(fitted.model, options.eval_replicates);
     Explanation ex;
     ex.effect = effect;
-    ex.channel = kChannelNames[channel_index(c)];
-    const auto names = candidate_param_names(effect, c);
+    ex.channel = kChannelNames[channel_index(judge.channel)];
+    const auto names = candidate_param_names(effect, judge.channel);
     for (std::size_t k = 0; k < names.size(); ++k) ex.params.emplace_back(names[k], fitted.params[k]);
     ex.gap_before = gap_score(base_cmp, judge.layout, in_segment(Segment::fit));
     ex.gap_after = gap_score(cmp, judge.layout, in_segment(Segment::fit));
@@ -147,14 +191,19 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, Cha
     ex.heldout_after = gap_score(cmp, judge.layout, in_segment(Segment::heldout));
     const double excess = ex.heldout_before - 1.0;
     ex.heldout_shrink = excess > 0.0 ? (ex.heldout_before - ex.heldout_after) / excess : 0.0;
-    ex.loss_gain = synthetic_loss(base_cmp, judge.layout, Segment::fit) - synthetic_loss(cmp, judge.layout, Segment::fit);
-    ex.penalty = static_cast<double>(names.size()) * std::log(static_cast<double>(cells_in(judge.layout, Segment::fit)));
     ex.heldout_loss_gain =
         synthetic_loss(base_cmp, judge.layout, Segment::heldout) - synthetic_loss(cmp, judge.layout, Segment::heldout);
+    // The penalised likelihood counts every cell: an effect confined in time (rare bursts) may fall mostly in one
+    // part, and the held-out rules below already demand that the fit carries over.
+    ex.loss_gain = synthetic_loss(base_cmp, judge.layout, Segment::fit) - synthetic_loss(cmp, judge.layout, Segment::fit) +
+                   ex.heldout_loss_gain;
+    ex.penalty = static_cast<double>(names.size()) * std::log(static_cast<double>(judge.layout.size()));
+    ex.cells_left = locate(judge.real, cmp, judge.layout).size();
     for (std::size_t j = 0; j < judge.layout.size(); ++j)
         if (judge.layout[j].segment == Segment::heldout)
             ex.heldout_cell_loss.push_back(cmp.z[j] * cmp.z[j] + 2.0 * std::log(cmp.sim_sd[j]));
     ex.accepted = passes(ex, options.penalty_per_param, options.min_heldout_shrink);
+    ex.gaussian = candidate(effect).route != FitRoute::simulated;
     ex.settle = candidate(effect).settle;
     // A Gauss-Markov process whose correlation time is not well inside the log shows neither its bump's fall nor
     // its plateau: within the log it is a flicker or a random walk (method: report coloured noise, don't choose).
@@ -163,30 +212,82 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, Cha
     return ex;
 }
 
+// The full-log spectral likelihood of the current model with the candidate added (all parameters fitted on the
+// whole log): delta_bic against `base_bic` and the per-frequency terms.
+void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& judge, const std::vector<Earlier>& earlier,
+                       double base_bic) {
+    const std::vector<bool> all(judge.t_s.size(), true);
+    const bool shape = candidate(ex.effect).route == FitRoute::deterministic;
+    GapModel m = shape ? fit_deterministic(ex.effect, current, judge, all).model : current;
+    const PartPeriodogram p = residual_periodogram(m, judge, all);
+    const SpectralFit fit = fit_noise(m, judge, p, earlier, shape ? "" : ex.effect, nullptr);
+    spectral_nll(fit, judge.channel, m, p, &ex.spectral_terms);
+    const int shape_params = shape ? static_cast<int>(ex.params.size()) : 0;
+    ex.spectral_parameters = fit.free_parameters + shape_params;
+    ex.delta_bic = base_bic - (spectral_bic(fit, p) + shape_params * std::log(p.count));
+}
+
+// The level-step test of the model with a random-process candidate: its Gaussian processes on this channel (the
+// earlier ones and `spectral`, with their parameters) whiten the residual.
+LevelStep step_test(const GapModel& m, const Judge& judge, const std::vector<Earlier>& earlier, const std::string& spectral,
+                    const std::vector<double>& params, const ExplainOptions& options) {
+    std::vector<std::string> effects;
+    std::vector<double> known;
+    for (const Earlier& e : earlier) effects.push_back(e.effect), known.insert(known.end(), e.params.begin(), e.params.end());
+    if (!spectral.empty()) effects.push_back(spectral), known.insert(known.end(), params.begin(), params.end());
+    return test_level_step(m, judge.channel, judge.t_s, judge.y, effects, known, options.eval_replicates, options.seed + 17,
+                           options.threads, kAlpha);
+}
+
 }  // namespace
 
 bool passes(const Explanation& e, double penalty_per_param, double min_heldout_shrink) {
-    // A held-out excess below kMinHeldoutExcess is no gap to shrink (the score is about 1 when the model explains
-    // the log); the held-out likelihood must improve too, so a shrink bought by wider replicates does not count.
-    constexpr double kMinHeldoutExcess = 0.2;
+    // The held-out likelihood must improve too: a shrink bought by wider replicates does not count.
     return e.loss_gain > penalty_per_param * e.penalty && e.heldout_before - 1.0 > kMinHeldoutExcess &&
            e.heldout_shrink >= min_heldout_shrink && e.heldout_loss_gain > 0.0;
 }
 
+bool closes_gap(const Explanation& e) { return e.cells_left == 0 && !e.residual_step.significant; }
+
 bool close_call(const Explanation& best, const Explanation& runner_up, double z) {
     const auto low_frequency = [](const Explanation& e) { return e.effect == "flicker" || e.effect == "rate_random_walk"; };
     if ((best.long_memory && low_frequency(runner_up)) || (runner_up.long_memory && low_frequency(best))) return true;
-    const std::size_t n = std::min(best.heldout_cell_loss.size(), runner_up.heldout_cell_loss.size());
+    const bool spectral = best.gaussian && runner_up.gaussian && !best.spectral_terms.empty() &&
+                          best.spectral_terms.size() == runner_up.spectral_terms.size();
+    const auto& a = spectral ? best.spectral_terms : best.heldout_cell_loss;
+    const auto& b = spectral ? runner_up.spectral_terms : runner_up.heldout_cell_loss;
+    const std::size_t n = std::min(a.size(), b.size());
     if (n < 2) return false;
     double sum = 0.0, sum2 = 0.0;
     for (std::size_t j = 0; j < n; ++j) {
-        const double d = runner_up.heldout_cell_loss[j] - best.heldout_cell_loss[j];
+        const double d = b[j] - a[j];
         sum += d;
         sum2 += d * d;
     }
     const double nd = static_cast<double>(n);
     const double sd = std::sqrt(std::max(0.0, (sum2 - sum * sum / nd) / (nd - 1.0)));
+    // Vuong's BIC correction: the likelihood ratio is charged half ln(observations) per extra parameter (the
+    // Whittle terms are per Fourier frequency, two real observations each).
+    if (spectral) sum -= 0.5 * (best.spectral_parameters - runner_up.spectral_parameters) * std::log(2.0 * nd);
     return sum < z * std::sqrt(nd) * sd;
+}
+
+Choice choose(const std::vector<const Explanation*>& passing) {
+    const Explanation *g1 = nullptr, *g2 = nullptr, *other = nullptr;
+    for (const Explanation* e : passing) {
+        if (e->gaussian) {
+            if (!g1 || e->delta_bic > g1->delta_bic) {
+                g2 = g1;
+                g1 = e;
+            } else if (!g2 || e->delta_bic > g2->delta_bic) {
+                g2 = e;
+            }
+        } else if (!other || e->heldout_loss_gain > other->heldout_loss_gain) {
+            other = e;
+        }
+    }
+    if (other && (!g1 || other->heldout_loss_gain > g1->heldout_loss_gain)) return {other, g1};
+    return {g1, g2 ? g2 : other};
 }
 
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
@@ -201,18 +302,20 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
     std::array<std::vector<std::string>, kChannelCount> used;
     const std::size_t first_added = base.effects.size();  // effects[first_added + k] is accepted[k]
     std::array<bool, kChannelCount> open = channels;
+    const std::vector<bool> fitting = fitting_mask(t_s, battery);
+    const std::vector<bool> everywhere(t_s.size(), true);
 
     for (int step = 1; step <= options.max_effects; ++step) {
         struct Option {
             Explanation ex;
             GapModel model;
-            std::vector<std::pair<std::size_t, std::vector<double>>> refits;  ///< accepted index, new parameters
+            std::vector<std::pair<std::size_t, std::vector<double>>> refits;
         };
         std::vector<Option> accepted;
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             if (!open[i]) continue;
             const Channel c = static_cast<Channel>(i);
-            Judge judge{t_s, battery, {}, {}, {}, 0.0, {}, {}, options.seed, options.threads};
+            Judge judge{t_s, *y[i], c, battery, {}, {}, {}, 0.0, fitting, options.seed, options.threads};
             judge.battery.channels = {};
             judge.battery.channels[i] = true;
             std::array<const std::vector<double>*, kChannelCount> yc{};
@@ -221,34 +324,48 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             judge.real = real.values;
             judge.residual = real.residual[i];
             judge.target_spread = short_lag_spread(judge.residual);
-            const std::vector<bool> fitting = fitting_mask(t_s, battery);
-            for (std::size_t k = 0; k < t_s.size(); ++k)
-                if (fitting[k]) judge.t_fit.push_back(t_s[k]), judge.y_fit.push_back((*y[i])[k]);
             const Comparison base_cmp = judge.evaluate(result.model, options.eval_replicates);
-            if (locate(judge.real, base_cmp, judge.layout).empty()) {
+            // A channel stays open while cells are located or, after an accepted effect, a held-out excess remains
+            // for another effect to shrink (one broad process may cover a line that is still there).
+            const double excess = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout)) - 1.0;
+            if (locate(judge.real, base_cmp, judge.layout).empty() && (step == 1 || excess <= kMinHeldoutExcess)) {
                 open[i] = false;
                 continue;
             }
+            // Gaussian processes accepted earlier on this channel are fitted again beside each new candidate:
+            // one sized alone may have swallowed what the candidate explains (a broad flicker covers a sinusoid).
+            std::vector<Earlier> earlier;
+            for (std::size_t k = 0; k < result.accepted.size(); ++k) {
+                const Explanation& prev = result.accepted[k];
+                if (prev.channel != kChannelNames[i] || candidate(prev.effect).route != FitRoute::spectral) continue;
+                std::vector<double> p;
+                for (const auto& kv : prev.params) p.push_back(kv.second);
+                earlier.push_back({k, first_added + k, prev.effect, p});
+            }
+            const bool shaped = std::any_of(result.accepted.begin(), result.accepted.end(), [&](const Explanation& e) {
+                return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
+            });
+            const double base_bic = [&] {
+                GapModel m = result.model;
+                const PartPeriodogram p = residual_periodogram(m, judge, everywhere);
+                return spectral_bic(fit_noise(m, judge, p, earlier, "", nullptr), p);
+            }();
             std::vector<Option> here;
             for (const std::string& effect : names) {
                 if (std::find(used[i].begin(), used[i].end(), effect) != used[i].end()) continue;
                 const FitRoute route = candidate(effect).route;
-                Fitted fitted = route == FitRoute::deterministic ? fit_deterministic(effect, result.model, c, judge)
-                                                                 : fit_simulated(effect, result.model, c, judge, options);
-                if (route == FitRoute::deterministic)
-                    fitted.model.effects.push_back(make_candidate_effect(effect, c, fitted.params, fitted.model));
-                // Refit everything: an earlier noise effect on this channel may have been sized to swallow what
-                // this candidate explains (a broad flicker covers a sinusoid), so it is fitted again beside it.
-                std::vector<std::pair<std::size_t, std::vector<double>>> refits;
-                for (std::size_t k = 0; k < result.accepted.size(); ++k) {
-                    const Explanation& prev = result.accepted[k];
-                    if (prev.channel != kChannelNames[i] || candidate(prev.effect).route != FitRoute::simulated) continue;
-                    const auto slot = static_cast<std::ptrdiff_t>(first_added + k);
-                    GapModel without = fitted.model;
-                    without.effects.erase(without.effects.begin() + slot);
-                    Fitted again = fit_simulated(prev.effect, without, c, judge, options);
-                    fitted.model.effects[static_cast<std::size_t>(slot)] = again.model.effects.back();
-                    refits.emplace_back(k, again.params);
+                Fitted fitted;
+                if (route == FitRoute::deterministic) {
+                    fitted = fit_deterministic(effect, result.model, judge, fitting);
+                    if (!earlier.empty())
+                        fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier, "", &fitted.refits);
+                } else if (route == FitRoute::spectral) {
+                    fitted.model = result.model;
+                    const SpectralFit f = fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
+                                                    effect, &fitted.refits);
+                    fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()), f.params.end());
+                } else {
+                    fitted = fit_spikes(result.model, judge, options);
                 }
                 // The candidate takes part of the short-lag spread: match the white noise again with it in place.
                 std::array<bool, kChannelCount> only{};
@@ -256,22 +373,29 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 std::array<double, kChannelCount> target{};
                 target[i] = judge.target_spread;
                 match_noise(fitted.model, t_s, only, target, options.seed);
-                Explanation ex = judge_candidate(effect, fitted, c, judge, base_cmp, options);
+                Explanation ex = judge_candidate(effect, fitted, judge, base_cmp, options);
+                if (ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_bic);
+                // The level-step test is for random explanations: a mean shape's misfit is judged by the cells it
+                // leaves located.
+                if (route != FitRoute::deterministic && !shaped)
+                    ex.residual_step = step_test(fitted.model, judge, earlier, route == FitRoute::spectral ? effect : "", fitted.params, options);
                 ex.step = step;
-                here.push_back({ex, fitted.model, std::move(refits)});
+                here.push_back({ex, fitted.model, std::move(fitted.refits)});
             }
-            std::sort(here.begin(), here.end(), [](const Option& a, const Option& b) {
-                if (a.ex.accepted != b.ex.accepted) return a.ex.accepted;
-                // The held-out synthetic likelihood ranks: unlike the gap score it charges for wider replicates.
-                return a.ex.heldout_loss_gain > b.ex.heldout_loss_gain;
-            });
-            if (here.size() >= 2 && here[0].ex.accepted && here[1].ex.accepted &&
-                close_call(here[0].ex, here[1].ex, options.ambiguity_z)) {
-                here[0].ex.ambiguous_with = here[1].ex.effect;
-                here[0].ex.settle += "; vs " + here[1].ex.effect + ": " + here[1].ex.settle;
+            std::vector<const Explanation*> passing;
+            for (const auto& o : here)
+                if (o.ex.accepted) passing.push_back(&o.ex);
+            const Choice choice = choose(passing);
+            std::size_t best_index = here.size();
+            for (std::size_t k = 0; k < here.size(); ++k)
+                if (&here[k].ex == choice.best) best_index = k;
+            if (choice.best && choice.runner_up && close_call(*choice.best, *choice.runner_up, options.ambiguity_z)) {
+                Explanation& b = here[best_index].ex;
+                b.ambiguous_with = choice.runner_up->effect;
+                b.settle += "; vs " + choice.runner_up->effect + ": " + choice.runner_up->settle;
             }
             for (const auto& o : here) result.tried.push_back(o.ex);
-            if (!here.empty() && here[0].ex.accepted) accepted.push_back(here[0]);
+            if (best_index < here.size()) accepted.push_back(here[best_index]);
         }
         if (accepted.empty()) break;
         const auto best = std::max_element(accepted.begin(), accepted.end(), [](const Option& a, const Option& b) {

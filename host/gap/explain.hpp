@@ -1,7 +1,9 @@
-// Which effect closes the gap: each candidate is fitted jointly with the base on the FITTING part of the log
-// (first fit_fraction by time), then judged on the HELD-OUT rest. Accepted only if the synthetic likelihood of the
-// fitting cells improves by more than a BIC-like penalty per parameter AND the held-out gap shrinks by a clear
-// margin; effects are added stepwise (up to max_effects). docs/gap.md §Explain.
+// Which effect closes the gap: each candidate is fitted jointly with the base on the FITTING part of the log,
+// then judged on the HELD-OUT part. Accepted only if the synthetic likelihood of the fitting cells improves by
+// more than a BIC-like penalty per parameter AND the held-out gap shrinks by a clear margin. Among accepted
+// candidates whose signal is Gaussian (mean shapes and Gaussian processes), the full-log spectral BIC chooses;
+// spikes (non-Gaussian) compete with that choice on the held-out synthetic likelihood. Effects are added
+// stepwise (up to max_effects). docs/gap.md §Explain.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "host/gap/gap_model.hpp"
+#include "host/gap/level_step.hpp"
 #include "host/gap/statistics.hpp"
 
 namespace driftlab::host::gap {
@@ -37,11 +40,17 @@ struct Explanation {
     double heldout_before = 1.0;    ///< on the held-out part, base only
     double heldout_after = 1.0;     ///< ... with the candidate
     double heldout_shrink = 0.0;    ///< 1 - (after - 1) / (before - 1): fraction of the held-out excess removed
-    double loss_gain = 0.0;         ///< synthetic log-likelihood gain on the fitting cells (x2)
-    double penalty = 0.0;           ///< parameters x ln(fitting cells): the BIC price before penalty_per_param
+    double loss_gain = 0.0;         ///< synthetic log-likelihood gain on all cells (x2), parameters from the fitting part
+    double penalty = 0.0;           ///< parameters x ln(cells): the BIC price before penalty_per_param
     double heldout_loss_gain = 0.0; ///< synthetic log-likelihood gain on the held-out cells (x2)
     std::vector<double> heldout_cell_loss;  ///< per held-out cell: z^2 + 2 ln sd with the candidate (close_call)
+    bool gaussian = false;          ///< a mean shape or a Gaussian process: compared by the spectral likelihood
+    double delta_bic = 0.0;         ///< full-log spectral BIC of the current model minus with the candidate
+    std::vector<double> spectral_terms;  ///< per Fourier frequency: Whittle nll with the candidate (close_call)
+    int spectral_parameters = 0;    ///< free parameters of that spectral fit
     bool long_memory = false;       ///< a Gauss-Markov fit whose correlation time exceeds 1/20 of the log
+    std::size_t cells_left = 0;     ///< this channel's cells still located with the candidate in the model
+    LevelStep residual_step;        ///< level-step test with the candidate (random-process candidates only)
     bool accepted = false;
     int step = 0;                   ///< stepwise round in which it was tried (1-based)
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
@@ -54,15 +63,29 @@ struct ExplainResult {
     std::vector<Explanation> accepted;      ///< in the order they were added
 };
 
-/// The acceptance rule: likelihood gain on the fitting cells above penalty_per_param x penalty, a held-out gap
-/// to shrink, a held-out shrink of at least min_heldout_shrink and a held-out likelihood gain.
+/// The acceptance rule: likelihood gain on all cells above penalty_per_param x penalty, a held-out gap to shrink,
+/// a held-out shrink of at least min_heldout_shrink and a held-out likelihood gain.
 bool passes(const Explanation& e, double penalty_per_param, double min_heldout_shrink);
 
 /// Whether `runner_up` is not separated from `best`: always when one is a long-memory Gauss-Markov fit and the
-/// other flicker or a random walk (look-alikes within the log); otherwise Vuong's test for non-nested models, with
-/// the held-out cells as observations: with d_j the runner-up's minus the best's loss on cell j,
-/// sum d_j < z sqrt(n) sd(d).
+/// other flicker or a random walk (look-alikes within the log); otherwise Vuong's test for non-nested models
+/// (Vuong, Econometrica 57(2), 1989) with d_j the runner-up's minus the best's loss: over the Fourier frequencies of
+/// the full-log spectral likelihood when both are Gaussian (with the BIC correction for their parameter counts),
+/// over the held-out cells otherwise; close when sum d_j < z sqrt(n) sd(d).
 bool close_call(const Explanation& best, const Explanation& runner_up, double z = 1.96);
+
+/// The verdict among one channel's passing candidates: the Gaussian one with the largest delta_bic, unless
+/// spikes beat it on the held-out synthetic likelihood; the runner-up is the next Gaussian candidate, else spikes.
+struct Choice {
+    const Explanation* best = nullptr;
+    const Explanation* runner_up = nullptr;
+};
+Choice choose(const std::vector<const Explanation*>& passing);
+
+/// Whether the model with this explanation closes its channel's gap: no cell stays located and no level step is
+/// left (a random process explains a step only by an improbably large increment; no library effect makes one).
+/// An explanation that does not close the gap makes the verdict "unexplained".
+bool closes_gap(const Explanation& e);
 
 /// Explains the gap of the channels in `channels` (those with located cells) on `log_t_s`/`log_y`.
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,

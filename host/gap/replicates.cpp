@@ -16,8 +16,9 @@ std::uint64_t replicate_seed(std::uint64_t seed, int r) {
     return z ^ (z >> 31);
 }
 
-Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
-                               int replicates, std::uint64_t seed, int threads, const ReplicateExtra& extra) {
+Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<double>& t_s,
+                                    const std::array<bool, kChannelCount>& channels, int replicates, std::uint64_t seed,
+                                    int threads, const ReplicateSummary& summary, const ReplicateExtra& extra) {
     std::vector<std::vector<double>> rows(static_cast<std::size_t>(replicates));
     std::atomic<int> next{0};
     std::exception_ptr failure;
@@ -27,13 +28,10 @@ Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>&
             try {
                 SimRequest request;
                 request.t_s = &t_s;
-                request.channels = options.channels;
+                request.channels = channels;
                 const std::uint64_t rs = replicate_seed(seed, r);
                 if (extra) extra(rs, request);
-                const SimOutput sim = simulate(model, request, rs);
-                std::array<const std::vector<double>*, kChannelCount> y{};
-                for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &sim[c];
-                rows[static_cast<std::size_t>(r)] = compute_battery(t_s, y, options).values;
+                rows[static_cast<std::size_t>(r)] = summary(simulate(model, request, rs));
             } catch (...) {
                 const std::lock_guard<std::mutex> lock(failure_mutex);
                 if (!failure) failure = std::current_exception();
@@ -50,6 +48,18 @@ Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>&
         out.row(r) = Eigen::Map<const Eigen::RowVectorXd>(rows[static_cast<std::size_t>(r)].data(),
                                                          static_cast<Eigen::Index>(rows[static_cast<std::size_t>(r)].size()));
     return out;
+}
+
+Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
+                               int replicates, std::uint64_t seed, int threads, const ReplicateExtra& extra) {
+    return simulate_replicates(
+        model, t_s, options.channels, replicates, seed, threads,
+        [&](const SimOutput& sim) {
+            std::array<const std::vector<double>*, kChannelCount> y{};
+            for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &sim[c];
+            return compute_battery(t_s, y, options).values;
+        },
+        extra);
 }
 
 }  // namespace driftlab::host::gap

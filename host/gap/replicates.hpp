@@ -23,6 +23,15 @@ std::uint64_t replicate_seed(std::uint64_t seed, int r);
 /// truth generator per replicate, seeded from the replicate's seed).
 using ReplicateExtra = std::function<void(std::uint64_t replicate_seed, SimRequest& request)>;
 
+/// What one replicate is reduced to (one row of the result).
+using ReplicateSummary = std::function<std::vector<double>(const SimOutput& simulated)>;
+
+/// `summary` of `replicates` replicates (rows) of `model` on the instants `t_s` for `channels`, run on `threads`
+/// threads. Every row must have the same length.
+Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<double>& t_s,
+                                    const std::array<bool, kChannelCount>& channels, int replicates, std::uint64_t seed,
+                                    int threads, const ReplicateSummary& summary, const ReplicateExtra& extra = {});
+
 /// Battery values of `replicates` replicates (rows) on the instants `t_s`, run on `threads` threads.
 Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
                                int replicates, std::uint64_t seed, int threads, const ReplicateExtra& extra = {});

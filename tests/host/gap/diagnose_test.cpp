@@ -23,13 +23,16 @@ GapOptions small_options() {
     return o;
 }
 
-// Each clean log is flagged with family-wise probability about alpha = 5 %, so of five at most one may be
-// (probability of two or more: 2.3 %); those not flagged get the verdict none and a gap score near 1.
+// Each clean log is flagged with family-wise probability alpha = 5 %, so of five at most one may be (probability of
+// two or more: 2.3 %); those not flagged get the verdict none and a gap score near 1. The score is a mean of
+// strongly correlated z^2 (neighbouring octaves move together), so one log may reach 2.5 (200 clean logs: mean
+// 0.99, 99th percentile 2.2); their mean stays near 1.
 TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
     const GapModel m = testing::paper_gyro_model(8);
     GapOptions o = small_options();
     o.explain = false;
     int flagged = 0;
+    double gap_sum = 0.0;
     for (std::uint64_t seed : {77, 78, 79, 80, 81}) {
         const GapResult r = diagnose(testing::gyro_log(m, 1200, {}, seed), sim::paper_model(), o);
         EXPECT_TRUE(r.channels[0]);
@@ -39,12 +42,14 @@ TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
             continue;
         }
         EXPECT_EQ(r.verdict, "none");
-        EXPECT_LT(r.gap_before_fit, 2.0) << "seed " << seed;
+        EXPECT_LT(r.gap_before_fit, 3.0) << "seed " << seed;
+        gap_sum += r.gap_before_fit;
         // Calibration recovers the planted base: eq. 1 and the white noise before the quantiser.
         EXPECT_NEAR(r.base.base[0].drift.tau_s, 411.0, 120.0) << "seed " << seed;
         EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.15) << "seed " << seed;
     }
     EXPECT_LE(flagged, 1);
+    EXPECT_LT(gap_sum / (5 - flagged), 1.8);
 }
 
 // A raw-mode log sends a SAMPLE and a RAW frame per row, so seq steps by 2 without any loss.

@@ -121,7 +121,9 @@ TEST(GapEval, CloseCallIsVuongOverHeldOutCells) {
     EXPECT_FALSE(close_call(best, beaten));
 }
 
-// The decision names the best passing candidate and, when close_call holds, its runner-up.
+// The decision: among passing Gaussian candidates the largest full-log spectral delta BIC, unless spikes beat it on
+// the held-out synthetic likelihood; a close runner-up is named; an explanation that leaves cells located (or a
+// level step) makes the log unexplained.
 TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     EvalCase c;
     c.detected = true;
@@ -131,18 +133,46 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
         e->loss_gain = 100.0, e->penalty = 10.0, e->heldout_before = 3.0, e->heldout_after = 1.2;
         e->heldout_shrink = 0.9;
     }
+    a.gaussian = b.gaussian = true;
+    a.delta_bic = 30.0, a.spectral_parameters = 2, a.spectral_terms = {1, 2, 3, 4, 5, 6};
+    b.delta_bic = 28.0, b.spectral_parameters = 2, b.spectral_terms = {2, 1, 5, 2, 5.5, 6};  // Vuong: noise only
     a.heldout_loss_gain = 50.0, a.heldout_cell_loss = {1, 2, 3, 4, 5, 6};
-    b.heldout_loss_gain = 49.5, b.heldout_cell_loss = {2, 1, 5, 2, 5.5, 6};
+    b.heldout_loss_gain = 60.0;  // the battery prefers b, the spectral likelihood a: the latter decides
     weak.heldout_loss_gain = 10.0, weak.heldout_cell_loss = {3, 4.1, 5, 6.1, 7, 8};
     c.tried = {weak, b, a};
     const Thresholds th{1.0, 0.3};
-    const Decision d = decide(c, th);
+    Decision d = decide(c, th);
     EXPECT_EQ(d.verdict, "flicker");
     EXPECT_EQ(d.ambiguous_with, "gauss_markov");
-    c.tried = {weak, a};
+    c.tried = {weak, a};  // runner-up: spikes, beaten on every held-out cell
+    EXPECT_EQ(decide(c, th).verdict, "flicker");
     EXPECT_EQ(decide(c, th).ambiguous_with, "");
+    c.tried[0].heldout_loss_gain = 80.0;  // spikes beat the best Gaussian candidate on the held-out cells
+    EXPECT_EQ(decide(c, th).verdict, "spikes");
+    c.tried = {weak, a};
+    c.tried[1].cells_left = 1;  // flicker leaves a located cell: the log is not explained
+    EXPECT_EQ(decide(c, th).verdict, "unexplained");
+    c.tried[1].cells_left = 0;
+    c.tried[1].residual_step.significant = true;  // or a level step
+    EXPECT_EQ(decide(c, th).verdict, "unexplained");
     c.detected = false;
     EXPECT_EQ(decide(c, th).verdict, "none");
+}
+
+// Between two Gaussian candidates, Vuong's test runs over the Fourier frequencies of the spectral likelihood, with
+// the BIC correction: an extra parameter costs half ln(observations) of likelihood.
+TEST(GapEval, CloseCallBetweenGaussianCandidatesIsVuongOverFrequencies) {
+    Explanation best, runner;
+    best.gaussian = runner.gaussian = true;
+    best.spectral_parameters = runner.spectral_parameters = 2;
+    best.spectral_terms.assign(200, 1.0);
+    runner.spectral_terms.assign(200, 1.0);
+    for (std::size_t j = 0; j < 200; ++j) runner.spectral_terms[j] += (j % 2 ? 0.25 : -0.15);  // sum 10, sd 0.2
+    EXPECT_FALSE(close_call(best, runner));  // 10 > 1.96 sqrt(200) 0.2 = 5.5
+    best.spectral_parameters = 3;            // one more parameter: 10 - ln(400) / 2 = 7.0, still separated
+    EXPECT_FALSE(close_call(best, runner));
+    best.spectral_parameters = 5;            // three more: 10 - 3 ln(400) / 2 = 1.0 < 5.5
+    EXPECT_TRUE(close_call(best, runner));
 }
 
 TEST(GapEval, TruthGeneratorsHaveTheirRequestedSize) {

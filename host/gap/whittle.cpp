@@ -1,0 +1,151 @@
+// Debiased Whittle likelihood of differenced residuals; see whittle.hpp.
+#include "host/gap/whittle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <stdexcept>
+
+#include <unsupported/Eigen/FFT>
+
+namespace driftlab::host::gap {
+
+namespace {
+
+constexpr std::size_t kMinDifferences = 16;
+constexpr double kTaperFraction = 0.5;  // share of each run inside the cosine ramps (Tukey 1967)
+
+std::size_t smooth_length_at_least(std::size_t n) {
+    std::size_t m = n;
+    while (smooth_length_at_most(m) != m) ++m;
+    return m;
+}
+
+}  // namespace
+
+std::size_t smooth_length_at_most(std::size_t n) {
+    std::size_t best = 1;
+    for (std::size_t p2 = 1; p2 <= n; p2 *= 2)
+        for (std::size_t p3 = p2; p3 <= n; p3 *= 3)
+            for (std::size_t p5 = p3; p5 <= n; p5 *= 5) best = std::max(best, p5);
+    return best;
+}
+
+PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part) {
+    if (e.size() < 2) throw std::invalid_argument("part_periodogram: too few samples");
+    PartPeriodogram p;
+    p.length = smooth_length_at_most(e.size() - 1);
+    std::vector<double> d(p.length, 0.0), h(p.length, 0.0);
+    // Each run of consecutive in-part differences gets a split-cosine (Tukey) taper: the hard edges of the
+    // interleaved blocks would otherwise leak the floor's strong high-frequency power into the low frequencies
+    // that tell the slow processes apart.
+    for (std::size_t a = 0; a < p.length;) {
+        if (!in_part[a] || !in_part[a + 1]) {
+            ++a;
+            continue;
+        }
+        std::size_t b = a;
+        while (b < p.length && in_part[b] && in_part[b + 1]) ++b;
+        const std::size_t len = b - a;
+        const double ramp = std::max(1.0, kTaperFraction * 0.5 * static_cast<double>(len));
+        for (std::size_t t = a; t < b; ++t) {
+            const double edge = std::min(static_cast<double>(t - a) + 0.5, static_cast<double>(b - t) - 0.5);
+            h[t] = edge >= ramp ? 1.0 : 0.5 - 0.5 * std::cos(std::numbers::pi * edge / ramp);
+            d[t] = h[t] * (e[t + 1] - e[t]);
+            p.count += 1.0;
+        }
+        a = b;
+    }
+    if (p.count < kMinDifferences) throw std::invalid_argument("part_periodogram: too few differences in the part");
+    double h2 = 0.0;
+    for (double v : h) h2 += v * v;
+    Eigen::FFT<double> fft;
+    std::vector<std::complex<double>> spec;
+    fft.fwd(spec, d);
+    for (std::size_t j = 1; 2 * j < p.length; ++j) p.power.push_back(std::norm(spec[j]) / h2);
+    // Taper overlap sum_t h_t h_{t+tau}: the taper's autocorrelation, zero-padded so that it does not wrap.
+    const std::size_t padded = smooth_length_at_least(2 * p.length);
+    h.resize(padded, 0.0);
+    fft.fwd(spec, h);
+    for (auto& s : spec) s = std::norm(s);
+    std::vector<double> overlap;
+    fft.inv(overlap, spec);
+    p.mask_overlap.resize(p.length);
+    for (std::size_t tau = 0; tau < p.length; ++tau) p.mask_overlap[tau] = std::max(0.0, overlap[tau]) / h2;
+    return p;
+}
+
+std::vector<double> white_floor_autocovariance(const Smoothing& s) {
+    const int n = s.window;
+    std::vector<double> h(static_cast<std::size_t>(n));  // h[x], x = 0 oldest .. n - 1 newest
+    for (int x = 0; x < n; ++x)
+        h[static_cast<std::size_t>(x)] = s.fit_order == 0 ? 1.0 / n : (6.0 * x - 2.0 * (n - 2)) / (n * (n + 1.0));
+    std::vector<double> r;
+    for (int lag = 0; lag < n; lag += s.conversions_per_output) {
+        double sum = 0.0;
+        for (int x = 0; x + lag < n; ++x) sum += h[static_cast<std::size_t>(x)] * h[static_cast<std::size_t>(x + lag)];
+        r.push_back(sum);
+    }
+    return r;
+}
+
+std::vector<double> differenced_autocovariance(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                               std::size_t n) {
+    std::vector<double> c(n, 0.0);
+    // White floor r(k) = white * floor_acov[k] (0 beyond its support): c(k) = 2 r(k) - r(k - 1) - r(k + 1).
+    auto r = [&](std::ptrdiff_t k) {
+        const auto a = static_cast<std::size_t>(std::abs(k));
+        return a < floor_acov.size() ? model.white * floor_acov[a] : 0.0;
+    };
+    for (std::size_t k = 0; k < std::min(n, floor_acov.size() + 1); ++k) {
+        const auto sk = static_cast<std::ptrdiff_t>(k);
+        c[k] += 2.0 * r(sk) - r(sk - 1) - r(sk + 1);
+    }
+    for (const auto& a : model.ar1) {
+        c[0] += 2.0 * a.variance * (1.0 - a.phi);
+        double power = a.variance * (1.0 - a.phi) * (1.0 - a.phi);  // v phi^(k-1) (1 - phi)^2 at k = 1
+        for (std::size_t k = 1; k < n && power > 1e-300; ++k, power *= a.phi) c[k] -= power;
+    }
+    c[0] += model.walk_increment_variance;
+    return c;
+}
+
+std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov, std::size_t n) {
+    std::vector<double> s(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        const double w = 2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(n);
+        const double c = std::cos(w);
+        double level = model.white * floor_acov[0];
+        for (std::size_t m = 1; m < floor_acov.size(); ++m) level += 2.0 * model.white * floor_acov[m] * std::cos(static_cast<double>(m) * w);
+        for (const auto& a : model.ar1) level += a.variance * (1.0 - a.phi * a.phi) / (1.0 - 2.0 * a.phi * c + a.phi * a.phi);
+        s[j] = 2.0 * (1.0 - c) * level + model.walk_increment_variance;
+    }
+    return s;
+}
+
+std::vector<double> expected_periodogram(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                         const PartPeriodogram& p) {
+    std::vector<double> b = differenced_autocovariance(model, floor_acov, p.length);
+    for (std::size_t tau = 0; tau < p.length; ++tau) b[tau] *= p.mask_overlap[tau];
+    // sum over tau = -(n-1)..n-1 of b(|tau|) e^{-i w tau} = 2 Re FFT(b)_j - b(0).
+    Eigen::FFT<double> fft;
+    std::vector<std::complex<double>> spec;
+    fft.fwd(spec, b);
+    std::vector<double> out(p.power.size());
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] = std::max(2.0 * spec[j + 1].real() - b[0], 1e-300);
+    return out;
+}
+
+double whittle_nll(const PartPeriodogram& p, const std::vector<double>& expected, std::vector<double>* terms) {
+    double sum = 0.0;
+    if (terms) terms->resize(p.power.size());
+    for (std::size_t j = 0; j < p.power.size(); ++j) {
+        const double t = std::log(expected[j]) + p.power[j] / expected[j];
+        sum += t;
+        if (terms) (*terms)[j] = t;
+    }
+    return sum;
+}
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,68 @@
+// The debiased Whittle likelihood of a residual's first differences under a model spectrum: a white floor shaped
+// by the firmware's smoother, first-order Gauss-Markov components and a random walk, all sampled at the output
+// instants. Differencing makes every one of them stationary (a random walk's increments are white) and removes
+// the eq. 1 level the fit leaves uncertain. Only the differences inside one part of the log count (the held-out
+// blocks are missing data): the model's EXPECTED periodogram of the masked series is computed exactly, so the
+// gaps between interleaved blocks bias nothing (a plain periodogram of the joined blocks reads them as a random
+// walk). Sykulski, Olhede, Guillaumin, Lilly & Early, "The debiased Whittle likelihood", Biometrika 106(2), 2019;
+// Whittle, Ark. Mat. 2, 1953. docs/gap.md §Spectral likelihood.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "host/gap/gap_model.hpp"
+
+namespace driftlab::host::gap {
+
+/// The differences of one part of a residual, ready for the likelihood.
+struct PartPeriodogram {
+    std::size_t length = 0;              ///< n: differences in the series, masked ones included (a 2-3-5 length)
+    double count = 0.0;                  ///< differences inside the part
+    std::vector<double> power;           ///< |sum_t m_t d_t e^{-i w_j t}|^2 / count at w_j = 2 pi j / n, j = 1..(n-1)/2
+    std::vector<double> mask_overlap;    ///< sum_t m_t m_{t+tau} / count, tau = 0..n-1
+};
+
+/// The part's periodogram: d_t = e[t+1] - e[t] where both samples lie in the part (`in_part`), 0 elsewhere; the
+/// series is trimmed at its end to a length whose prime factors are 2, 3 and 5. Throws std::invalid_argument
+/// when fewer than 16 differences lie in the part.
+PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part);
+
+/// Largest length <= n whose prime factors are 2, 3 and 5 (an FFT length).
+std::size_t smooth_length_at_most(std::size_t n);
+
+/// Autocovariance at output lags 0, 1, ... of the smoother's output for unit-variance white conversions:
+/// r_m = sum_x h_x h_{x + m D}, with the LS weights h of fw::LsWindow (order 0: 1/N; order 1 evaluated at the
+/// newest conversion: (6x - 2(N - 2)) / (N (N + 1)), x = 0 oldest) and D conversions per output.
+std::vector<double> white_floor_autocovariance(const Smoothing& s);
+
+/// A model of the output noise [counts^2], before differencing.
+struct OutputSpectrum {
+    double white = 0.0;                ///< variance of the conversions' white noise, shaped by the smoother
+    struct Ar1 {
+        double variance = 0.0;         ///< stationary variance [counts^2]
+        double phi = 0.0;              ///< exp(-output period / correlation time)
+    };
+    std::vector<Ar1> ar1;              ///< Gauss-Markov components (flicker is a sum of them)
+    double walk_increment_variance = 0.0;  ///< random walk: variance of its step per output period [counts^2]
+};
+
+/// Autocovariance of the model's first differences at lags 0..n-1. Slow components are taken as sampled at the
+/// output instants (the smoother's averaging of them matters only for correlation times near the output period,
+/// where the white floor dominates): an AR(1) gives c(0) = 2v(1 - phi), c(k) = -v phi^(k-1) (1 - phi)^2.
+std::vector<double> differenced_autocovariance(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                               std::size_t n);
+
+/// The spectral density of the model's first differences at w_j = 2 pi j / n, j = 0..n-1 (the Fourier transform
+/// of differenced_autocovariance(), in closed form: an AR(1) gives 2(1 - cos w) v (1 - phi^2) / (1 - 2 phi cos w
+/// + phi^2), the walk its increment variance).
+std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov, std::size_t n);
+
+/// The expected value of `p.power` under the model: sum_tau mask_overlap(tau) c(tau) e^{-i w_j tau}.
+std::vector<double> expected_periodogram(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                         const PartPeriodogram& p);
+
+/// Whittle negative log-likelihood sum_j ln E_j + I_j / E_j (constants dropped); per-frequency terms if `terms`.
+double whittle_nll(const PartPeriodogram& p, const std::vector<double>& expected, std::vector<double>* terms = nullptr);
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,80 @@
+// Whittle fits of the Gaussian candidates on logs from the replicate chain with the library's own effect planted:
+// the parameters come back, and the spectral BIC prefers the process that made the log.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gap_fixtures.hpp"
+#include "host/fit/lm_fit.hpp"
+#include "host/gap/candidates.hpp"
+#include "host/gap/spectral_fit.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+// The eq. 1 residual of a 4000-sample paper-gyro log with `effect` planted (parameters in physical units).
+PartPeriodogram residual_of(const GapModel& m, const std::string& effect, const std::vector<double>& params,
+                            std::uint64_t seed) {
+    GapModel truth = m;
+    if (!effect.empty()) truth.effects.push_back(make_candidate_effect(effect, Channel::gyro, params, truth));
+    const LogData log = testing::gyro_log(truth, 4000, {}, seed);
+    const auto fit = fit::fit_drift(log.t_s, log.counts[0]);
+    return part_periodogram(fit.residual, std::vector<bool>(log.size(), true));
+}
+
+std::string preferred(const GapModel& m, const PartPeriodogram& p) {
+    std::string best;
+    double best_bic = INFINITY;
+    for (const std::string e : {"", "gauss_markov", "flicker", "rate_random_walk"}) {
+        const double bic = spectral_bic(fit_spectral(e.empty() ? std::vector<std::string>{} : std::vector<std::string>{e},
+                                                     Channel::gyro, m, p),
+                                        p);
+        if (bic < best_bic) best_bic = bic, best = e.empty() ? "none" : e;
+    }
+    return best;
+}
+
+TEST(SpectralFit, GaussMarkovParametersComeBack) {
+    const GapModel m = testing::paper_gyro_model(8);
+    // sigma 0.05 deg/s (0.28 counts, about the output's white deviation), correlation time 30 s.
+    const auto p = residual_of(m, "gauss_markov", {0.05, 30.0}, 21);
+    const SpectralFit f = fit_spectral({"gauss_markov"}, Channel::gyro, m, p);
+    EXPECT_NEAR(f.params[0] / 0.05, 1.0, 0.25);
+    EXPECT_NEAR(std::log(f.params[1] / 30.0), 0.0, std::log(1.5));
+    // The white floor: sigma_n^2 + 1/12 per conversion (the additive quantiser reading, sigma_n = 1.05).
+    EXPECT_NEAR(f.white, 1.05 * 1.05 + 1.0 / 12.0, 0.15);
+    EXPECT_EQ(f.free_parameters, 3);
+}
+
+TEST(SpectralFit, RandomWalkStepComesBack) {
+    const GapModel m = testing::paper_gyro_model(8);
+    const auto p = residual_of(m, "rate_random_walk", {0.002}, 22);
+    const SpectralFit f = fit_spectral({"rate_random_walk"}, Channel::gyro, m, p);
+    EXPECT_NEAR(f.params[0] / 0.002, 1.0, 0.3);
+}
+
+TEST(SpectralFit, BicPrefersTheProcessThatMadeTheLog) {
+    const GapModel m = testing::paper_gyro_model(8);
+    EXPECT_EQ(preferred(m, residual_of(m, "", {}, 23)), "none");
+    EXPECT_EQ(preferred(m, residual_of(m, "gauss_markov", {0.08, 15.0}, 24)), "gauss_markov");
+    EXPECT_EQ(preferred(m, residual_of(m, "rate_random_walk", {0.003}, 25)), "rate_random_walk");
+    EXPECT_EQ(preferred(m, residual_of(m, "flicker", {0.03}, 26)), "flicker");
+}
+
+TEST(SpectralFit, JointFitStartsEarlierEffectsFromTheirParameters) {
+    const GapModel m = testing::paper_gyro_model(8);
+    const auto p = residual_of(m, "gauss_markov", {0.05, 30.0}, 27);
+    const SpectralFit f = fit_spectral({"gauss_markov", "rate_random_walk"}, Channel::gyro, m, p, {0.05, 30.0});
+    ASSERT_EQ(f.params.size(), 3u);
+    EXPECT_EQ(f.free_parameters, 4);
+    // Nothing of a random walk in the log: the joint fit keeps the Gauss-Markov process and no better likelihood
+    // than it alone by more than the extra parameter could buy by chance.
+    const SpectralFit alone = fit_spectral({"gauss_markov"}, Channel::gyro, m, p);
+    EXPECT_LE(f.nll, alone.nll + 1e-6);
+    EXPECT_GT(spectral_bic(f, p), spectral_bic(alone, p));
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap

@@ -1,0 +1,108 @@
+// The debiased Whittle machinery against closed forms and against Monte Carlo: the expected periodogram of a
+// masked, tapered series is what the average periodogram of many realisations converges to.
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "host/gap/whittle.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+TEST(Whittle, WhiteFloorAutocovarianceFollowsTheSmootherKernel) {
+    // Order 0, window = conversions per output: independent outputs of variance 1/N.
+    auto r = white_floor_autocovariance({1.0, 8, 8, 0});
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_NEAR(r[0], 1.0 / 8.0, 1e-15);
+    // Window 8 over 4 conversions per output: neighbouring outputs share 4 of their 8 conversions.
+    r = white_floor_autocovariance({1.0, 4, 8, 0});
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_NEAR(r[0], 1.0 / 8.0, 1e-15);
+    EXPECT_NEAR(r[1], 4.0 / 64.0, 1e-15);
+    // Order 1 evaluated at the newest conversion: sum h^2 = 2(2N - 1) / (N (N + 1)) (gap-method §1: 0.42 at N = 8).
+    r = white_floor_autocovariance({1.0, 8, 8, 1});
+    EXPECT_NEAR(r[0], 2.0 * 15.0 / 72.0, 1e-12);
+}
+
+TEST(Whittle, DifferencedAutocovarianceOfAnAr1IsTheDifferenceOfItsAutocovariances) {
+    OutputSpectrum m;
+    m.ar1.push_back({2.5, 0.9});
+    const auto c = differenced_autocovariance(m, {0.0}, 40);
+    auto gamma = [](int k) { return 2.5 * std::pow(0.9, std::abs(k)); };
+    for (int k = 0; k < 40; ++k) EXPECT_NEAR(c[static_cast<std::size_t>(k)], 2.0 * gamma(k) - gamma(k - 1) - gamma(k + 1), 1e-12) << k;
+    // A random walk's increments are white; the white floor's differences are an MA(1).
+    OutputSpectrum w;
+    w.white = 3.0;
+    w.walk_increment_variance = 0.5;
+    const auto cw = differenced_autocovariance(w, {1.0}, 5);
+    EXPECT_NEAR(cw[0], 6.5, 1e-12);
+    EXPECT_NEAR(cw[1], -3.0, 1e-12);
+    EXPECT_NEAR(cw[2], 0.0, 1e-12);
+}
+
+TEST(Whittle, DensityAveragesToTheDifferencesVariance) {
+    // Parseval: the mean of the spectral density over the Fourier grid is c(0).
+    OutputSpectrum m;
+    m.white = 1.3;
+    m.ar1.push_back({4.0, 0.95});
+    m.walk_increment_variance = 0.01;
+    const std::vector<double> floor{0.125};
+    const auto s = differenced_density(m, floor, 2000);
+    const double mean = std::accumulate(s.begin(), s.end(), 0.0) / 2000.0;
+    EXPECT_NEAR(mean, differenced_autocovariance(m, floor, 1)[0], 1e-3);
+}
+
+// The part is every other tenth of the log (the interleaved design): its masked, tapered periodogram averaged over
+// many realisations of white + AR(1) + random walk matches the expected periodogram band by band.
+TEST(Whittle, ExpectedPeriodogramOfAMaskedSeriesMatchesTheMonteCarloAverage) {
+    const std::size_t n = 1500;
+    const double phi = std::exp(-1.0 / 20.0);
+    OutputSpectrum m;
+    m.white = 1.0;
+    m.ar1.push_back({4.0, phi});
+    m.walk_increment_variance = 0.01;
+    std::vector<bool> part(n);
+    for (std::size_t i = 0; i < n; ++i) part[i] = (i * 10 / n) % 2 == 0;
+    std::mt19937_64 rng(3);
+    std::normal_distribution<double> n01;
+    const int runs = 1500;
+    std::vector<double> average;
+    PartPeriodogram first;
+    for (int r = 0; r < runs; ++r) {
+        std::vector<double> e(n);
+        double x = 2.0 * n01(rng), walk = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            x = phi * x + std::sqrt(4.0 * (1.0 - phi * phi)) * n01(rng);
+            walk += 0.1 * n01(rng);
+            e[i] = x + walk + n01(rng);
+        }
+        const PartPeriodogram p = part_periodogram(e, part);
+        if (average.empty()) average.assign(p.power.size(), 0.0), first = p;
+        for (std::size_t j = 0; j < p.power.size(); ++j) average[j] += p.power[j] / runs;
+    }
+    const auto expected = expected_periodogram(m, {1.0}, first);
+    // Bands of 16 ordinates: the average of 1500 x 16 (correlated) exponentials is within a few per cent.
+    for (std::size_t lo = 0; lo + 16 <= expected.size(); lo += 16) {
+        double a = 0.0, e = 0.0;
+        for (std::size_t j = lo; j < lo + 16; ++j) a += average[j], e += expected[j];
+        EXPECT_NEAR(a / e, 1.0, 0.06) << "ordinates " << lo << "..";
+    }
+}
+
+TEST(Whittle, TooFewDifferencesInThePartAreRefused) {
+    std::vector<double> e(100, 1.0);
+    std::vector<bool> part(100, false);
+    for (std::size_t i = 0; i < 10; ++i) part[i] = true;
+    EXPECT_THROW(part_periodogram(e, part), std::invalid_argument);
+}
+
+TEST(Whittle, SmoothLengthsHaveOnlyFactorsTwoThreeFive) {
+    EXPECT_EQ(smooth_length_at_most(1499), 1458u);  // 2 * 3^6
+    EXPECT_EQ(smooth_length_at_most(1500), 1500u);
+    EXPECT_EQ(smooth_length_at_most(7), 6u);
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap
