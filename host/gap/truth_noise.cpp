@@ -49,9 +49,12 @@ std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double 
 std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double size_counts, std::uint64_t seed,
                                        std::uint64_t noise_seed) {
     // dx = -x/tau(t) dt + sqrt(2/tau(t)) dW by Euler-Maruyama with 8 substeps; tau(t) wanders +-30 % slowly.
+    // tau0 is log-uniform in [L/200, L/30]: with its wander it stays below L/20, the longest correlation time a
+    // static log can tell from flicker or a random walk (gap-method §4; the diagnosis calls a longer one a close
+    // call), so the generator stands for a Gauss-Markov process the log can identify.
     sim::Rng shape(seed, 0x74);
     const double span_s = t_s.back() - t_s.front();
-    const double tau0 = span_s * (0.01 + 0.05 * shape.uniform());
+    const double tau0 = span_s * std::exp(std::log(1.0 / 200.0) + std::log(200.0 / 30.0) * shape.uniform());
     const double wander_period = span_s * (0.3 + 0.4 * shape.uniform());
     sim::Rng rng(noise_seed, 0x84);
     std::vector<double> out(t_s.size());
