@@ -57,13 +57,16 @@ TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::
             if (r < best) best = r, start = {std::log(grid[i]), std::log(grid[j])};
         }
     }
+    // The simplex stays on the grid's range: beyond it two exponentials become a line and a constant with
+    // amplitudes that grow without bound while the residual hardly changes.
+    const auto on_grid = [&](double x) { return std::clamp(std::exp(x), grid.front(), grid.back()); };
     const auto nm = nelder_mead(
         [&](const std::vector<double>& x) {
             Eigen::VectorXd b;
-            return rss_at(std::exp(x[0]), std::exp(x[1]), b);
+            return rss_at(on_grid(x[0]), on_grid(x[1]), b);
         },
         start, {0.2, 0.2}, kRefineEvaluations);
-    double a = std::exp(nm.x[0]), b = std::exp(nm.x[1]);
+    double a = on_grid(nm.x[0]), b = on_grid(nm.x[1]);
     TwoExponentials out;
     out.rss = rss_at(a, b, beta);
     double ca = beta(0), cb = beta(1);
@@ -92,8 +95,9 @@ ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, cons
         return project(x, yv, beta);
     };
     const auto taus = log_grid(3.0 * dt, 5.0 * span, 12);
-    // Periods from 8 samples to the fitting span: at least one cycle must be seen.
-    const auto periods = log_grid(8.0 * dt, span, 4 * kGridPoints);
+    // Periods from 8 samples to half the span: a single cycle is a drift shape that eq. 1 competes for, and a
+    // periodic effect is told from drift only by its repeating (gap-method E2: three cycles are recommended).
+    const auto periods = log_grid(8.0 * dt, 0.5 * span, 4 * kGridPoints);
     Eigen::VectorXd beta;
     double best = INFINITY;
     std::vector<double> start{std::log(taus[0]), std::log(periods[0])};
@@ -103,15 +107,18 @@ ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, cons
             if (r < best) best = r, start = {std::log(tau), std::log(p)};
         }
     }
+    // Within the grid's range: a period beyond the span is a slope with an unbounded amplitude.
+    const auto tau_of = [&](double x) { return std::clamp(std::exp(x), taus.front(), taus.back()); };
+    const auto period_of = [&](double x) { return std::clamp(std::exp(x), periods.front(), periods.back()); };
     const auto nm = nelder_mead(
         [&](const std::vector<double>& x) {
             Eigen::VectorXd b;
-            return rss_at(std::exp(x[0]), std::exp(x[1]), b);
+            return rss_at(tau_of(x[0]), period_of(x[1]), b);
         },
         start, {0.2, 0.02}, kRefineEvaluations);
     ExponentialAndSine out;
-    out.t_s = std::exp(nm.x[0]);
-    out.period_s = std::exp(nm.x[1]);
+    out.t_s = tau_of(nm.x[0]);
+    out.period_s = period_of(nm.x[1]);
     out.rss = rss_at(out.t_s, out.period_s, beta);
     out.c1_counts = beta(0);
     out.c2_counts = beta(1);

@@ -15,7 +15,7 @@ struct TwoExponentials {
     double rss = 0.0;
 };
 
-/// y = C1 (1 - e^{-t/T}) + C2 + A sin(2 pi t / P + phi) (E2 on top of eq. 1).
+/// y = C1 (1 - e^{-t/T}) + C2 + A sin(2 pi t / P + phi) (E2 on top of eq. 1), P between 8 samples and half the span.
 struct ExponentialAndSine {
     double c1_counts = 0.0, c2_counts = 0.0, t_s = 1.0;
     double amplitude_counts = 0.0, period_s = 1.0, phase_rad = 0.0;

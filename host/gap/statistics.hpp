@@ -35,7 +35,7 @@ struct Cell {
 /// How the log is split into the part candidates are fitted on and the part they are judged on.
 enum class Holdout {
     forecast,     ///< the first fit_fraction of the log by time, then the rest: tests extrapolation (E1 vs E4)
-    interleaved,  ///< alternate tenths of the log: also judges effects confined to the warm-up or rare in time
+    interleaved,  ///< interleaved tenths of the log: also judges effects confined to the warm-up or rare in time
 };
 
 /// "forecast" or "interleaved"; nothing for any other name.
@@ -49,8 +49,9 @@ struct BatteryOptions {
     double sample_period_s = 1.0;   ///< for cell labels [s]
 };
 
-/// Per sample of `t_s`: true where it belongs to the fitting part. Interleaved: tenths 0, 2, 4, 6, 8 by index,
-/// the same tenths as the windowed cells, so each window lies wholly in one part.
+/// Per sample of `t_s`: true where it belongs to the fitting part. Interleaved: tenths 0, 4, 5, 7, 9 by index
+/// (an aperiodic pattern: no alias of a periodic effect), the same tenths as the windowed cells, so each window lies
+/// wholly in one part.
 std::vector<bool> fitting_mask(const std::vector<double>& t_s, const BatteryOptions& options);
 
 /// The battery's values for one log, plus the base fit and residual of each channel.
