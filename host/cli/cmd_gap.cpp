@@ -34,8 +34,9 @@ struct GapCommandOptions {
 
 void print_text(const gap::GapResult& r) {
     std::printf("verdict: %s\n", r.verdict.c_str());
-    std::printf("gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f\n",
-                r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout);
+    std::printf("gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f"
+                " (closed below %.2f)\n",
+                r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout, r.gap_bound_after);
     std::printf("located cells (|z| > %.2f and beyond the margin): %zu\n", r.before.threshold, r.located.size());
     for (std::size_t i = 0; i < r.located.size() && i < 15; ++i) {
         const auto& l = r.located[i];
@@ -46,13 +47,17 @@ void print_text(const gap::GapResult& r) {
     }
     if (!r.tried.empty()) std::printf("candidates (fitted on the fitting part, judged on the held-out part):\n");
     for (const auto& e : r.tried) {
-        std::printf("  %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.effect.c_str(),
-                    e.channel.c_str(), e.accepted ? "ACCEPTED" : "rejected", e.heldout_before, e.heldout_after,
-                    100 * e.heldout_shrink, e.loss_gain, e.penalty);
+        std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.step,
+                    e.effect.c_str(), e.channel.c_str(), e.accepted ? "ACCEPTED" : "rejected", e.heldout_before,
+                    e.heldout_after, 100 * e.heldout_shrink, e.loss_gain, e.penalty);
+        if (e.gaussian) std::printf(" dBIC %.1f", e.delta_bic);
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");
     }
+    for (const auto& s : r.level_steps)
+        std::printf("level step on %s: %.3g counts at t = %.1f s, p = %.3f%s\n", kChannelNames[channel_index(s.channel)],
+                    s.size_counts, s.t_s, s.p_value, s.significant ? " (no library effect makes a step: unexplained)" : "");
     std::printf("not identifiable from a static log:");
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
@@ -96,7 +101,7 @@ void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout) {
             if (!h) throw CLI::ValidationError("--holdout", "expected interleaved or forecast, got '" + name + "'");
             holdout = *h;
         },
-        "Held-out design: interleaved (alternate tenths; judges effects confined to the warm-up; default) or "
+        "Held-out design: interleaved (tenths 0, 4, 5, 7, 9 fit, the others judge; sees effects confined to the warm-up; default) or "
         "forecast (fit on the first part, judge on the rest)");
 }
 
@@ -114,7 +119,7 @@ void register_gap(CLI::App& app) {
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
     cmd->add_flag("--json", o->json,
-                  "Print JSON (keys: verdict, explanations, located, located_after, gap_before, gap_after, "
+                  "Print JSON (keys: verdict, explanations, located, located_after, gap_before, gap_after, level_steps, "
                   "not_identifiable, not_tried, calibration, timing)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->callback([o] { run(*o); });

@@ -12,6 +12,19 @@ namespace {
 // A cell on which every replicate agrees exactly would give an infinite z for the smallest difference.
 double sd_floor(double mean) { return 1e-9 + 1e-6 * std::abs(mean); }
 
+// Monte Carlo test: the real log exceeds the k-th smallest of R exchangeable null values with probability
+// (R + 1 - k)/(R + 1), so the level-alpha bound is order statistic k = (1 - alpha)(R + 1), interpolated. (The
+// plain sample quantile, k = 1 + (1 - alpha)(R - 1), flags about 2 alpha at R = 20.) With R + 1 < 1/alpha no bound
+// reaches alpha: the largest null value is the best there is.
+double monte_carlo_bound(std::vector<double> null, double alpha) {
+    std::sort(null.begin(), null.end());
+    const auto r_count = static_cast<double>(null.size());
+    const double pos = (1.0 - alpha) * (r_count + 1.0) - 1.0;  // 0-based
+    const auto lo = static_cast<std::size_t>(std::clamp(std::floor(pos), 0.0, r_count - 1.0));
+    const auto hi = std::min(lo + 1, null.size() - 1);
+    return null[lo] + std::clamp(pos - static_cast<double>(lo), 0.0, 1.0) * (null[hi] - null[lo]);
+}
+
 }  // namespace
 
 Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& replicates, double alpha) {
@@ -42,15 +55,7 @@ Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& repli
     }
     std::vector<double> maxima(static_cast<std::size_t>(r_count));
     for (Eigen::Index r = 0; r < r_count; ++r) maxima[static_cast<std::size_t>(r)] = cmp.loo_z.row(r).cwiseAbs().maxCoeff();
-    std::sort(maxima.begin(), maxima.end());
-    // Monte Carlo test: the real log exceeds the k-th smallest of R exchangeable maxima with probability
-    // (R + 1 - k)/(R + 1), so the level-alpha threshold is order statistic k = (1 - alpha)(R + 1), interpolated.
-    // (The plain sample quantile, k = 1 + (1 - alpha)(R - 1), flags about 2 alpha at R = 20.) With
-    // R + 1 < 1/alpha no threshold reaches alpha: the largest maximum is the best there is.
-    const double pos = (1.0 - alpha) * static_cast<double>(r_count + 1) - 1.0;  // 0-based
-    const auto lo = static_cast<std::size_t>(std::clamp(std::floor(pos), 0.0, static_cast<double>(r_count - 1)));
-    const auto hi = std::min(lo + 1, maxima.size() - 1);
-    cmp.threshold = maxima[lo] + std::clamp(pos - static_cast<double>(lo), 0.0, 1.0) * (maxima[hi] - maxima[lo]);
+    cmp.threshold = monte_carlo_bound(maxima, alpha);
     return cmp;
 }
 
@@ -72,6 +77,22 @@ double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const C
     }
     if (count == 0 || null <= 0.0) return 1.0;
     return real / (null / static_cast<double>(cmp.loo_z.rows()));
+}
+
+double gap_score_threshold(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep, double alpha) {
+    const Eigen::Index r_count = cmp.loo_z.rows();
+    std::vector<double> per_replicate(static_cast<std::size_t>(r_count), 0.0);
+    std::size_t count = 0;
+    for (std::size_t j = 0; j < layout.size(); ++j) {
+        if (!keep(layout[j])) continue;
+        ++count;
+        for (Eigen::Index r = 0; r < r_count; ++r) per_replicate[static_cast<std::size_t>(r)] += cmp.loo_z(r, static_cast<Eigen::Index>(j)) * cmp.loo_z(r, static_cast<Eigen::Index>(j));
+    }
+    double mean = 0.0;
+    for (double v : per_replicate) mean += v / static_cast<double>(r_count);
+    if (count == 0 || mean <= 0.0) return 1.0;
+    for (double& v : per_replicate) v /= mean;
+    return monte_carlo_bound(per_replicate, alpha);
 }
 
 std::vector<LocatedCell> locate(const std::vector<double>& real, const Comparison& cmp, const std::vector<Cell>& layout) {

@@ -30,6 +30,10 @@ using CellFilter = std::function<bool(const Cell&)>;
 /// the left-out replicates (so a log the model explains scores about 1). 1 when no cell is accepted.
 double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep);
 
+/// The level-alpha bound of gap_score(): the (1 - alpha)(R + 1)-th order statistic of the same score computed for
+/// each left-out replicate (a Monte Carlo test, as for the cell threshold). A score at or below it is a closed gap.
+double gap_score_threshold(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep, double alpha);
+
 /// Sum of z^2 of the real log over the accepted cells (the candidate fits' objective).
 double sum_z2(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep);
 

@@ -104,14 +104,16 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &log.counts[c];
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout).values;
 
-    auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held) {
+    auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held,
+                     double& bound) {
         cmp = compare(result.real_values, run_replicates(model, log.t_s, battery, options.replicates, options.seed, options.threads),
                       options.alpha);
         located = locate(result.real_values, cmp, result.layout);
         fit = gap_score(cmp, result.layout, in_segment(Segment::fit));
         held = gap_score(cmp, result.layout, in_segment(Segment::heldout));
+        bound = gap_score_threshold(cmp, result.layout, in_segment(Segment::heldout), options.alpha);
     };
-    judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout);
+    judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout, result.gap_bound_before);
 
     result.final_model = result.base;
     if (result.located.empty()) {
@@ -139,14 +141,15 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         result.located_after = result.located;
         result.gap_after_fit = result.gap_before_fit;
         result.gap_after_heldout = result.gap_before_heldout;
+        result.gap_bound_after = result.gap_bound_before;
     } else {
-        judge(result.final_model, result.after, result.located_after, result.gap_after_fit, result.gap_after_heldout);
-        // The explanation must close the gap: cells still located, or a level step no library effect makes, leave
-        // the log unexplained (the accepted effects are still reported as partial explanations).
+        judge(result.final_model, result.after, result.located_after, result.gap_after_fit, result.gap_after_heldout,
+              result.gap_bound_after);
+        // A level step no library effect makes leaves the log unexplained (closes_gap()); the accepted effects stay
+        // as partial explanations.
         result.level_steps = check_level_steps(result, log, options);
-        const bool step_left =
-            std::any_of(result.level_steps.begin(), result.level_steps.end(), [](const LevelStep& s) { return s.significant; });
-        if (!result.located_after.empty() || step_left) result.verdict = "unexplained";
+        if (std::any_of(result.level_steps.begin(), result.level_steps.end(), [](const LevelStep& s) { return s.significant; }))
+            result.verdict = "unexplained";
     }
     return result;
 }

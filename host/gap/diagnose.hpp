@@ -49,6 +49,7 @@ struct GapResult {
     std::vector<LocatedCell> located, located_after;
     double gap_before_fit = 1.0, gap_before_heldout = 1.0;
     double gap_after_fit = 1.0, gap_after_heldout = 1.0;
+    double gap_bound_before = 1.0, gap_bound_after = 1.0;  ///< level-alpha bounds of the held-out scores (closed gap)
     std::vector<Explanation> tried;      ///< every candidate fit, accepted first
     std::vector<Explanation> accepted;   ///< added stepwise, in order
     std::vector<LevelStep> level_steps;  ///< per channel with accepted effects: a step the model leaves unexplained?

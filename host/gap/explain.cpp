@@ -247,7 +247,7 @@ bool passes(const Explanation& e, double penalty_per_param, double min_heldout_s
            e.heldout_shrink >= min_heldout_shrink && e.heldout_loss_gain > 0.0;
 }
 
-bool closes_gap(const Explanation& e) { return e.cells_left == 0 && !e.residual_step.significant; }
+bool closes_gap(const Explanation& e) { return !e.residual_step.significant; }
 
 bool close_call(const Explanation& best, const Explanation& runner_up, double z) {
     const auto low_frequency = [](const Explanation& e) { return e.effect == "flicker" || e.effect == "rate_random_walk"; };

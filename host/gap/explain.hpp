@@ -82,9 +82,10 @@ struct Choice {
 };
 Choice choose(const std::vector<const Explanation*>& passing);
 
-/// Whether the model with this explanation closes its channel's gap: no cell stays located and no level step is
-/// left (a random process explains a step only by an improbably large increment; no library effect makes one).
-/// An explanation that does not close the gap makes the verdict "unexplained".
+/// Whether the explanation leaves no level step: a random process explains a step only by an improbably large
+/// increment, and no library effect makes one, so a step left behind makes the verdict "unexplained". (Cells may
+/// stay located: the library's forms are not the truth's, e.g. bursts of spikes are not single-conversion spikes;
+/// cells_left and the gap after report how much remains.)
 bool closes_gap(const Explanation& e);
 
 /// Explains the gap of the channels in `channels` (those with located cells) on `log_t_s`/`log_y`.

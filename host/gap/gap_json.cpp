@@ -41,6 +41,9 @@ json explanation_json(const Explanation& e) {
             {"heldout_shrink", report::json_number(e.heldout_shrink)},
             {"likelihood_gain", report::json_number(e.loss_gain)},
             {"penalty", report::json_number(e.penalty)},
+            {"delta_bic", e.gaussian ? report::json_number(e.delta_bic) : json(nullptr)},
+            {"cells_left", e.cells_left},
+            {"level_step_p", e.residual_step.tested ? report::json_number(e.residual_step.p_value) : json(nullptr)},
             {"accepted", e.accepted},
             {"step", e.step},
             {"ambiguous_with", e.ambiguous_with.empty() ? json(nullptr) : json(e.ambiguous_with)},
@@ -63,8 +66,21 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["explanations"] = ex;
     j["located"] = located_json(r.located, r.layout);
     j["located_after"] = located_json(r.located_after, r.layout);
-    j["gap_before"] = {{"fit", report::json_number(r.gap_before_fit)}, {"heldout", report::json_number(r.gap_before_heldout)}};
-    j["gap_after"] = {{"fit", report::json_number(r.gap_after_fit)}, {"heldout", report::json_number(r.gap_after_heldout)}};
+    j["gap_before"] = {{"fit", report::json_number(r.gap_before_fit)},
+                       {"heldout", report::json_number(r.gap_before_heldout)},
+                       {"heldout_bound", report::json_number(r.gap_bound_before)}};
+    j["gap_after"] = {{"fit", report::json_number(r.gap_after_fit)},
+                      {"heldout", report::json_number(r.gap_after_heldout)},
+                      {"heldout_bound", report::json_number(r.gap_bound_after)}};
+    json steps = json::array();
+    for (const auto& s : r.level_steps)
+        steps.push_back({{"channel", kChannelNames[channel_index(s.channel)]},
+                         {"t_s", report::json_number(s.t_s)},
+                         {"size_counts", report::json_number(s.size_counts)},
+                         {"statistic", report::json_number(s.statistic)},
+                         {"p", report::json_number(s.p_value)},
+                         {"significant", s.significant}});
+    j["level_steps"] = steps;
     json ni = json::array();
     for (const auto& n : not_identifiable_list()) ni.push_back({{"effect", n.effect}, {"reason", n.reason}});
     j["not_identifiable"] = ni;

@@ -83,6 +83,7 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
         return std::vector<double>{largest_step(rr, density).t};
     });
     LevelStep out;
+    out.tested = true;
     out.channel = c;
     out.t_s = 0.5 * (t_s[real.index] + t_s[real.index + 1]);
     out.size_counts = real.size;

@@ -16,6 +16,7 @@
 namespace driftlab::host::gap {
 
 struct LevelStep {
+    bool tested = false;       ///< false: no test was run (the fields below are defaults)
     Channel channel = Channel::gyro;
     double t_s = 0.0;          ///< instant of the largest standardised step [s]
     double size_counts = 0.0;  ///< its estimated size [counts]

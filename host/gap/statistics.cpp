@@ -101,6 +101,18 @@ std::optional<Holdout> holdout_from_name(const std::string& name) {
     return std::nullopt;
 }
 
+std::string holdout_description(Holdout holdout, double fit_fraction) {
+    if (holdout == Holdout::forecast)
+        return "candidates fitted on the first " + short_number(100.0 * fit_fraction) + " % of the log (by time), judged on the rest";
+    std::string fit, held;
+    for (std::size_t w = 0; w < static_cast<std::size_t>(kTimeWindows); ++w) {
+        const bool in = std::find(kFittingTenths.begin(), kFittingTenths.end(), w) != kFittingTenths.end();
+        std::string& list = in ? fit : held;
+        list += (list.empty() ? "" : ", ") + std::to_string(w);
+    }
+    return "candidates fitted on tenths " + fit + " of the log, judged on tenths " + held;
+}
+
 std::vector<bool> fitting_mask(const std::vector<double>& t_s, const BatteryOptions& options) {
     const std::size_t n = t_s.size();
     std::vector<bool> mask(n);

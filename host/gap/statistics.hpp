@@ -41,6 +41,9 @@ enum class Holdout {
 /// "forecast" or "interleaved"; nothing for any other name.
 std::optional<Holdout> holdout_from_name(const std::string& name);
 
+/// One sentence saying which part of the log candidates are fitted on and which they are judged on.
+std::string holdout_description(Holdout holdout, double fit_fraction);
+
 /// Options shared by the real log and its replicates.
 struct BatteryOptions {
     std::array<bool, kChannelCount> channels{true, true, true, true};

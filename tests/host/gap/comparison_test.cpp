@@ -1,7 +1,6 @@
 // The max-|z| threshold controls the family-wise flag rate, and the gap score is about 1 under the null.
 #include <cmath>
 #include <random>
-#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -10,9 +9,14 @@
 namespace driftlab::host::gap {
 namespace {
 
-// The flag rate of a null log (drawn like the replicates): 60 correlated cells (an AR(1) along the cells, like
-// neighbouring octaves). Returns the fraction of trials with any located cell and the mean gap score.
-std::pair<double, double> null_flag_rate(int r, int trials, unsigned seed) {
+struct NullRates {
+    double flagged = 0.0;     ///< fraction of trials with a located cell
+    double score = 0.0;       ///< mean gap score
+    double score_over = 0.0;  ///< fraction of trials whose gap score exceeds its bound
+};
+
+// Null logs drawn like the replicates: 60 correlated cells (an AR(1) along the cells, like neighbouring octaves).
+NullRates null_rates(int r, int trials, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> n01;
     const int cells = 60;
@@ -26,8 +30,8 @@ std::pair<double, double> null_flag_rate(int r, int trials, unsigned seed) {
         return v;
     };
     std::vector<Cell> layout(cells);
-    int flagged = 0;
-    double score = 0.0;
+    const auto all = [](const Cell&) { return true; };
+    NullRates out;
     for (int t = 0; t < trials; ++t) {
         Eigen::MatrixXd reps(r, cells);
         for (int i = 0; i < r; ++i) {
@@ -36,21 +40,26 @@ std::pair<double, double> null_flag_rate(int r, int trials, unsigned seed) {
         }
         const auto real = draw();
         const Comparison cmp = compare(real, reps, 0.05);
-        flagged += !locate(real, cmp, layout).empty();
-        score += gap_score(cmp, layout, [](const Cell&) { return true; }) / trials;
+        const double score = gap_score(cmp, layout, all);
+        out.flagged += locate(real, cmp, layout).empty() ? 0.0 : 1.0 / trials;
+        out.score += score / trials;
+        out.score_over += score > gap_score_threshold(cmp, layout, all, 0.05) ? 1.0 / trials : 0.0;
     }
-    return {static_cast<double>(flagged) / trials, score};
+    return out;
 }
 
-// A Monte Carlo test at level alpha: the real log, exchangeable with the R replicates, exceeds the threshold in
-// alpha of the trials, whatever R (19 = the smallest R for which alpha = 5 % is exact, 40 = the default).
-TEST(Comparison, MaxZThresholdFlagsAlphaOfNullLogs) {
+// Monte Carlo tests at level alpha: the real log, exchangeable with the R replicates, exceeds the max-|z| threshold
+// and the gap-score bound in alpha of the trials, whatever R (19 = the smallest R for which alpha = 5 % is exact,
+// 40 = the default).
+TEST(Comparison, ThresholdsFlagAlphaOfNullLogs) {
     for (const int r : {19, 40}) {
-        const auto [rate, score] = null_flag_rate(r, 3000, 11u + static_cast<unsigned>(r));
+        const NullRates n = null_rates(r, 3000, 11u + static_cast<unsigned>(r));
         // Binomial sd at 5 % over 3000 trials is 0.4 %.
-        EXPECT_GT(rate, 0.035) << "R = " << r;
-        EXPECT_LT(rate, 0.065) << "R = " << r;
-        EXPECT_NEAR(score, 1.0, 0.05) << "R = " << r;
+        EXPECT_GT(n.flagged, 0.035) << "R = " << r;
+        EXPECT_LT(n.flagged, 0.065) << "R = " << r;
+        EXPECT_GT(n.score_over, 0.025) << "R = " << r;  // a little conservative: left-out z are wider
+        EXPECT_LT(n.score_over, 0.065) << "R = " << r;
+        EXPECT_NEAR(n.score, 1.0, 0.05) << "R = " << r;
     }
 }
 
