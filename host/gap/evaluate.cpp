@@ -7,6 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <Eigen/Dense>
+
+#include "host/fit/lm_fit.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/comparison.hpp"
 #include "host/gap/diagnose.hpp"
@@ -14,6 +17,7 @@
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/truth.hpp"
 #include "host/stats/binomial_interval.hpp"
+#include "sim/model/drift.hpp"
 #include "sim/model/rng.hpp"
 #include "sim/model/white_noise.hpp"
 
@@ -23,13 +27,15 @@ namespace {
 
 constexpr double kSamplePeriodS = 1.0;
 constexpr int kWindow = 8;
+constexpr double kMaxPeakPerSize = 300.0;  // a deterministic truth's peak, at most this many times its unabsorbed RMS
 
-// Where the search for a_50 starts, in units of the smoothed output's white-noise standard deviation: near the
-// sizes the battery starts to see on a 1500-sample log. Only a starting point; detection_sizes() measures a_50.
+// Where the search for a_50 starts, in units of the smoothed output's white-noise standard deviation (deterministic
+// generators: the RMS of their unabsorbed part): near the sizes the battery starts to see on a 1500-sample log.
+// Only a starting point; detection_sizes() measures a_50.
 double first_guess(const std::string& generator) {
     static const std::map<std::string, double> guess = {
-        {"thermal_rc", 1.5}, {"thermostat", 0.4}, {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
-        {"student_walk", 1.0}, {"burst_spikes", 4.0}, {"mode_hop", 0.5}};
+        {"thermal_rc", 0.2}, {"thermostat", 0.25}, {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
+        {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2}};
     return guess.at(generator);
 }
 
@@ -76,10 +82,30 @@ double output_noise_sd(const GapModel& m) {
 struct Planted {
     GapModel model;
     LogData log;
-    double size_counts = 0.0;
+    double size_counts = 0.0;  ///< the planted size [counts]
+    double scale = 0.0;        ///< make_truth()'s size argument that plants it
 };
 
-// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations.
+const TruthInfo& truth_info(const std::string& generator) {
+    for (const auto& t : truth_list())
+        if (t.generator == generator) return t;
+    throw std::invalid_argument("unknown truth generator: " + generator);
+}
+
+// Root mean square of what the base's eq. 1 fit leaves of `signal` added to the noise-free warm-up of `model`.
+double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const std::vector<double>& signal) {
+    const sim::Drift drift(model.base[0].drift);
+    std::vector<double> y(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) y[k] = drift.at_counts(t[k]) + signal[k];
+    double sum = 0.0;
+    for (double r : fit::fit_drift(t, y).residual) sum += r * r;
+    return std::sqrt(sum / static_cast<double>(t.size()));
+}
+
+// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations. A random
+// generator's size is its standard deviation; a deterministic one's is the RMS of the part the base's eq. 1 fit
+// cannot absorb, since only that part can be detected (a slow RC-network rise is 98-99 % absorbed, by a share
+// that varies threefold with its time constants; sizing by the peak made the detection curve non-monotone).
 Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples) {
     Planted p;
     p.model = randomised_truth(seed);
@@ -88,7 +114,22 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
         p.size_counts = size_sd * output_noise_sd(p.model);
         std::vector<double> t(samples);
         for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kSamplePeriodS;
-        added = make_truth(generator, t, p.size_counts, seed, seed);
+        const std::vector<double> unit = make_truth(generator, t, 1.0, seed, seed);
+        p.scale = p.size_counts;
+        if (!truth_info(generator).random) {
+            // eq. 1 is nonlinear in T, so the absorbed share depends a little on the size: one correction.
+            auto scaled = [&](double g) {
+                std::vector<double> v(unit);
+                for (double& x : v) x *= g;
+                return v;
+            };
+            // A shape eq. 1 absorbs almost wholly stays almost invisible: its peak is capped at kMaxPeakPerSize sizes.
+            const double cap = kMaxPeakPerSize * p.size_counts;
+            p.scale = std::min(cap, p.size_counts / std::max(unabsorbed_rms(p.model, t, unit), 1e-12));
+            p.scale = std::min(cap, p.scale * p.size_counts / std::max(unabsorbed_rms(p.model, t, scaled(p.scale)), 1e-12));
+        }
+        added = unit;
+        for (double& x : added) x *= p.scale;
     }
     p.log = make_log(p.model, added, samples, seed);
     return p;
@@ -145,7 +186,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     const double before = heldout_gap(r.base, {});
     auto shrink = [before](double after) { return before > 1.0 ? (before - after) / (before - 1.0) : 0.0; };
     const ReplicateExtra oracle = [&](std::uint64_t rs, SimRequest& req) {
-        req.added_counts[0] = make_truth(generator, log.t_s, p.size_counts, seed, rs);
+        req.added_counts[0] = make_truth(generator, log.t_s, p.scale, seed, rs);
     };
     c.oracle_shrink = shrink(heldout_gap(p.model, oracle));
     c.has_oracle = true;
@@ -178,11 +219,7 @@ bool correct(const EvalCase& c, const Decision& d, bool pair_ok) {
     return d.verdict == c.truth || (pair_ok && d.ambiguous_with == c.truth);
 }
 
-std::string truth_of(const std::string& generator) {
-    for (const auto& t : truth_list())
-        if (t.generator == generator) return t.effect;
-    throw std::invalid_argument("unknown truth generator: " + generator);
-}
+std::string truth_of(const std::string& generator) { return truth_info(generator).effect; }
 
 std::vector<std::string> generators_of(const EvalOptions& options) {
     std::vector<std::string> gens = options.generators;
@@ -200,6 +237,33 @@ std::uint64_t detection_seed(const EvalOptions& options, std::size_t generator, 
 
 }  // namespace
 
+std::optional<double> logistic_a50(const std::vector<DetectionPoint>& curve) {
+    // Newton's method on the binomial log-likelihood in (a, b), x = ln size.
+    double a = 0.0, b = 1.0;
+    double mean_x = 0.0;
+    for (const auto& p : curve) mean_x += std::log(p.size) / static_cast<double>(curve.size());
+    a = -b * mean_x;
+    for (int it = 0; it < 50; ++it) {
+        Eigen::Vector2d grad = Eigen::Vector2d::Zero();
+        Eigen::Matrix2d info = Eigen::Matrix2d::Zero();
+        for (const auto& p : curve) {
+            const double x = std::log(p.size);
+            const double n = p.logs + 0.5, y = p.detected + 0.25;
+            const double q = 1.0 / (1.0 + std::exp(-(a + b * x)));
+            const Eigen::Vector2d v(1.0, x);
+            grad += (y - n * q) * v;
+            info += n * q * (1.0 - q) * v * v.transpose();
+        }
+        const Eigen::Vector2d step = info.ldlt().solve(grad);
+        if (!step.allFinite()) return std::nullopt;
+        a += step(0);
+        b += step(1);
+        if (step.norm() < 1e-10) break;
+    }
+    if (!(b > 0.0) || !std::isfinite(a)) return std::nullopt;
+    return std::exp(-a / b);
+}
+
 std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
     const auto gens = generators_of(options);
     std::vector<DetectionSize> out;
@@ -213,16 +277,16 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
                 go.explain = false;
                 hits += !diagnose(plant(gens[g], size, seed, options.samples).log, sim::paper_model(), go).located.empty();
             }
-            const double f = static_cast<double>(hits) / options.detection_logs;
-            d.curve.emplace_back(size, f);
-            return f;
+            d.curve.push_back({size, hits, options.detection_logs});
+            return static_cast<double>(hits) / options.detection_logs;
         };
-        // Double or halve until the detected fraction crosses 1/2 (at most 6 steps), then interpolate.
+        // Double or halve until the detected fraction crosses 1/2 (at most 6 steps).
         double size = d.a50;
         double f = fraction_at(size, 0);
         const bool above = f >= 0.5;
         double prev_size = size, prev_f = f;
-        for (int step = 1; step <= 6 && (f >= 0.5) == above; ++step) {
+        int step = 1;
+        for (; step <= 6 && (f >= 0.5) == above; ++step) {
             prev_size = size, prev_f = f;
             size = above ? size / 2.0 : size * 2.0;
             f = fraction_at(size, step);
@@ -233,9 +297,12 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
             const double lo = std::min(size, prev_size), hi = std::max(size, prev_size);
             const double f_lo = size < prev_size ? f : prev_f, f_hi = size < prev_size ? prev_f : f;
             const double w = f_hi > f_lo ? (0.5 - f_lo) / (f_hi - f_lo) : 0.5;
-            d.a50 = std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo)));
+            const double crossing = std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo)));
+            fraction_at(crossing / std::sqrt(2.0), step++);
+            fraction_at(crossing * std::sqrt(2.0), step++);
+            d.a50 = logistic_a50(d.curve).value_or(crossing);
         }
-        std::sort(d.curve.begin(), d.curve.end());
+        std::sort(d.curve.begin(), d.curve.end(), [](const DetectionPoint& a, const DetectionPoint& b) { return a.size < b.size; });
         out.push_back(std::move(d));
         if (options.progress) options.progress(g + 1, gens.size());
     }
@@ -331,10 +398,10 @@ std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th
 
     md << "### Detection thresholds a_50 (tuning seeds, " << options.detection_logs
        << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
-          "| generator | a_50 | detected fraction by size |\n|---|---|---|\n";
+          "| generator | a_50 | size: detected/logs |\n|---|---|---|\n";
     for (const auto& d : sizes) {
         md << "| " << d.generator << " | " << fixed(d.a50, 2) << " |";
-        for (const auto& [size, f] : d.curve) md << " " << fixed(size, 2) << ": " << fixed(f, 2) << ";";
+        for (const auto& p : d.curve) md << " " << fixed(p.size, 2) << ": " << p.detected << "/" << p.logs << ";";
         md << " |\n";
     }
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,7 @@ struct EvalOptions {
     std::uint64_t score_first = 101, score_last = 104;  ///< seeds they are scored on (disjoint)
     std::vector<std::string> generators;  ///< truth generators (truth_list()); empty = all; "none" is always added
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
-    int detection_logs = 8;       ///< logs per size when measuring a_50 (tuning seeds)
+    int detection_logs = 12;      ///< logs per size when measuring a_50 (tuning seeds)
     std::size_t samples = 1500;   ///< log length at 1 s per sample
     Holdout holdout = BatteryOptions{}.holdout;
     int replicates = 20;
@@ -28,16 +29,29 @@ struct EvalOptions {
     std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional
 };
 
+/// One size of a detection curve: logs planted at `size`, and how many of them got located cells.
+struct DetectionPoint {
+    double size = 0.0;
+    int detected = 0;
+    int logs = 0;
+};
+
 /// A generator's detection threshold a_50: the size at which the located-cells stage flags half of the logs,
 /// in units of the smoothed output's white-noise standard deviation, with the measured detection curve.
 struct DetectionSize {
     std::string generator;
     double a50 = 1.0;
-    std::vector<std::pair<double, double>> curve;  ///< (size, fraction of logs with located cells)
+    std::vector<DetectionPoint> curve;  ///< by size
 };
 
-/// Measures a_50 of every generator of `options` on the tuning seeds (locate-only diagnoses), by doubling or
-/// halving from a first guess until the detected fraction crosses 1/2, then interpolating in log size.
+/// a_50 of a detection curve by maximum likelihood of the logistic model P(detected | s) = 1 / (1 + e^-(a + b ln s)):
+/// exp(-a / b). Every point carries a quarter of a pseudo-detection and of a pseudo-miss, so that a curve that
+/// jumps from none to all still has a finite slope. Empty when the fitted slope is not positive.
+std::optional<double> logistic_a50(const std::vector<DetectionPoint>& curve);
+
+/// Measures a_50 of every generator of `options` on the tuning seeds (locate-only diagnoses): doubling or halving
+/// from a first guess until the detected fraction crosses 1/2, two more sizes half an octave either side of the
+/// crossing, then the logistic fit over every size tried (the crossing's interpolation where the fit fails).
 std::vector<DetectionSize> detection_sizes(const EvalOptions& options);
 
 /// One simulated log and what the diagnosis said about it.

@@ -7,9 +7,10 @@ namespace driftlab::host::gap {
 
 const std::vector<TruthInfo>& truth_list() {
     static const std::vector<TruthInfo> list = {
-        {"thermal_rc", "thermal_second_tc"}, {"thermostat", "ambient_cycle"},   {"kasdin_flicker", "flicker"},
-        {"wandering_ou", "gauss_markov"},    {"student_walk", "rate_random_walk"}, {"burst_spikes", "spikes"},
-        {"mode_hop", ""},
+        {"thermal_rc", "thermal_second_tc", false}, {"thermostat", "ambient_cycle", false},
+        {"kasdin_flicker", "flicker", true},        {"wandering_ou", "gauss_markov", true},
+        {"student_walk", "rate_random_walk", true}, {"burst_spikes", "spikes", true},
+        {"mode_hop", "", false},
     };
     return list;
 }

@@ -9,7 +9,8 @@
 //                      Laplace amplitudes
 //   mode_hop        -> out of the library: a bias step and a later partial return (mode hop)
 // `size_counts` sets the scale: the peak (deterministic) or standard deviation (random) of the signal, or the
-// step (mode hop), in counts. docs/gap.md §Evaluation.
+// step (mode hop), in counts; every generator is linear in it. gap-eval sizes a deterministic generator by the
+// part of it the base's eq. 1 fit cannot absorb (evaluate.cpp). docs/gap.md §Evaluation.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,7 @@ namespace driftlab::host::gap {
 struct TruthInfo {
     std::string generator;
     std::string effect;
+    bool random = false;  ///< a random process (sized by its standard deviation), else a deterministic shape
 };
 
 /// Every generator, in the order gap-eval lists them.

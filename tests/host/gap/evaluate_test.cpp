@@ -26,10 +26,10 @@ EvalOptions quick_options() {
     return o;
 }
 
-// a_50 in output-noise deviations as detection_sizes() measured it for these generators on 1200-sample logs
-// (8 logs per size: thermal_rc 15.1, burst_spikes 2.3; eq. 1 absorbs most of an RC network's S-curve). The test
+// a_50 in output-noise deviations (the RC network: of the part eq. 1 does not absorb) as detection_sizes() measured
+// it for these generators on 1200-sample logs (12 logs per size: thermal_rc 0.19, burst_spikes 2.7). The test
 // plants 4x that, so detection is near certain and a_50 need not be re-measured here.
-const std::vector<DetectionSize> kSizes{{"thermal_rc", 15.1, {}}, {"burst_spikes", 2.3, {}}};
+const std::vector<DetectionSize> kSizes{{"thermal_rc", 0.19, {}}, {"burst_spikes", 2.7, {}}};
 
 // The quick run's cases, computed once for the tests that score them.
 const std::vector<EvalCase>& quick_cases() {
@@ -75,8 +75,8 @@ TEST(GapEval, StrongEffectsAttributedToTheRightLibraryEffect) {
     EXPECT_GE(right * 5, planted * 4);
 }
 
-// a_50 is where the detected fraction crosses 1/2: the measured curve brackets it (the search doubles or halves
-// from a first guess until the fraction crosses, then interpolates in log size).
+// a_50 is where the detected fraction crosses 1/2: the search brackets it (doubling or halving from a first guess),
+// adds two sizes half an octave either side, and the logistic fit lands inside the sizes tried.
 TEST(GapEval, DetectionThresholdIsBracketedByItsCurve) {
     EvalOptions o = quick_options();
     o.generators = {"thermostat"};
@@ -86,19 +86,34 @@ TEST(GapEval, DetectionThresholdIsBracketedByItsCurve) {
     const auto sizes = detection_sizes(o);
     ASSERT_EQ(sizes.size(), 1u);
     const auto& d = sizes.front();
-    ASSERT_GE(d.curve.size(), 2u);
-    double below = 0.0, above = 1e300;
-    for (const auto& [size, f] : d.curve) {
-        if (f < 0.5) below = std::max(below, size);
-        if (f >= 0.5) above = std::min(above, size);
+    ASSERT_GE(d.curve.size(), 4u);
+    bool below = false, above = false;
+    for (const auto& p : d.curve) {
+        EXPECT_EQ(p.logs, 4);
+        below |= 2 * p.detected < p.logs;
+        above |= 2 * p.detected >= p.logs;
     }
-    ASSERT_GT(below, 0.0) << "no size below a_50 was tried";
-    ASSERT_LT(above, 1e300) << "no size above a_50 was tried";
-    EXPECT_GE(d.a50, below);
-    EXPECT_LE(d.a50, above);
-    // The search steps by factors of 2, so the bracket is one octave wide.
-    EXPECT_NEAR(above / below, 2.0, 1e-9);
+    EXPECT_TRUE(below) << "no size below a_50 was tried";
+    EXPECT_TRUE(above) << "no size above a_50 was tried";
+    EXPECT_GE(d.a50, d.curve.front().size);
+    EXPECT_LE(d.a50, d.curve.back().size);
 }
+
+// The logistic fit recovers a_50 from the expected counts of a known curve, and refuses a falling one.
+TEST(GapEval, LogisticFitRecoversTheMidpointOfAKnownCurve) {
+    const double a50 = 0.7, slope = 3.0;  // P = 1 / (1 + (a50 / s)^slope)
+    std::vector<DetectionPoint> curve;
+    for (double s : {0.2, 0.35, 0.5, 0.7, 1.0, 1.4, 2.0}) {
+        const double p = 1.0 / (1.0 + std::pow(a50 / s, slope));
+        curve.push_back({s, static_cast<int>(std::lround(400 * p)), 400});
+    }
+    const auto fitted = logistic_a50(curve);
+    ASSERT_TRUE(fitted.has_value());
+    EXPECT_NEAR(*fitted / a50, 1.0, 0.02);
+    for (auto& p : curve) p.detected = p.logs - p.detected;  // detection falling with size: no a_50
+    EXPECT_FALSE(logistic_a50(curve).has_value());
+}
+
 
 // Vuong's test over held-out cells: a runner-up whose per-cell losses differ from the best's by noise alone is a
 // close call; one that loses consistently on every cell is not.
