@@ -49,7 +49,11 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
     if (n < 4 || y.size() != n) throw UsageError("fit_drift: need at least 4 samples with one time each");
     FitResult out;
     out.n = n;
-    out.start = automatic_start(t_s, y);
+    if (options.start) {
+        out.start.parameters = *options.start;
+    } else {
+        out.start = automatic_start(t_s, y);
+    }
 
     DriftFunctor functor(t_s, y);
     Eigen::LevenbergMarquardt<DriftFunctor> lm(functor);
@@ -90,6 +94,11 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
         out.status = FitStatus::iteration_limit;
     else
         out.status = FitStatus::converged;
+    if (options.start && out.status != FitStatus::converged) {
+        FitOptions cold = options;
+        cold.start.reset();
+        return fit_drift(t_s, y, cold);
+    }
     return out;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ const char* fit_status_name(FitStatus s);
 struct FitOptions {
     int max_function_evaluations = 400;  ///< MINPACK maxfev
     double tolerance = 1e-10;            ///< relative ftol and xtol
+    /// Start LM here instead of at automatic_start() (a log simulated from known parameters: the same optimum in a
+    /// few iterations, no search). A start that does not converge falls back to the automatic one.
+    std::optional<DriftParameters> start;
 };
 
 struct FitResult {

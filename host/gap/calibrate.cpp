@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "host/fit/lm_fit.hpp"
+#include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/util/error.hpp"
 
@@ -13,7 +14,8 @@ namespace driftlab::host::gap {
 namespace {
 
 constexpr int kCalibrationReplicates = 3;
-constexpr int kBisectionSteps = 16;
+constexpr int kMaxSteps = 14;                 // regula falsi steps after the two bracket ends
+constexpr double kRelativeTolerance = 1e-4;   // of the target spread
 
 double median(std::vector<double> v) {
     const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
@@ -104,22 +106,49 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
             for (std::size_t c = 0; c < kChannelCount; ++c) {
                 if (!channels[c]) continue;
                 // The spread is taken on the same eq. 1 residual the real log gave.
-                out[c] += short_lag_spread(fit::fit_drift(t_s, sim[c]).residual) / kCalibrationReplicates;
+                out[c] += short_lag_spread(fit::fit_drift(t_s, sim[c], start_at_model(m, static_cast<Channel>(c))).residual) /
+                          kCalibrationReplicates;
             }
         }
         return out;
     };
-    for (int step = 0; step < kBisectionSteps; ++step) {
+    // Regula falsi with the Illinois modification on f(sigma) = simulated spread - target, per channel and in step
+    // (one simulation serves every channel). Common random numbers keep f smooth in sigma; it converges in a few
+    // simulations where bisection took sixteen.
+    std::array<double, kChannelCount> f_lo{}, f_hi{};
+    auto evaluate = [&](const std::array<double, kChannelCount>& sigma) {
         GapModel trial = model;
-        for (std::size_t c = 0; c < kChannelCount; ++c) trial.base[c].sigma_n_counts = 0.5 * (lo[c] + hi[c]);
+        for (std::size_t c = 0; c < kChannelCount; ++c) trial.base[c].sigma_n_counts = sigma[c];
         const auto spread = simulated_spread(trial);
+        std::array<double, kChannelCount> f{};
+        for (std::size_t c = 0; c < kChannelCount; ++c) f[c] = spread[c] - target_spread[c];
+        return f;
+    };
+    f_lo = evaluate(lo);
+    f_hi = evaluate(hi);
+    std::array<double, kChannelCount> sigma = lo;
+    std::array<bool, kChannelCount> done{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        done[c] = !channels[c] || f_lo[c] >= 0.0 || f_hi[c] <= 0.0;  // quantisation alone already spreads enough
+        sigma[c] = f_lo[c] >= 0.0 ? lo[c] : hi[c];
+    }
+    for (int step = 0; step < kMaxSteps && !std::all_of(done.begin(), done.end(), [](bool d) { return d; }); ++step) {
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            if (!done[c]) sigma[c] = (lo[c] * f_hi[c] - hi[c] * f_lo[c]) / (f_hi[c] - f_lo[c]);
+        const auto f = evaluate(sigma);
         for (std::size_t c = 0; c < kChannelCount; ++c) {
-            if (!channels[c]) continue;
-            (spread[c] < target_spread[c] ? lo[c] : hi[c]) = trial.base[c].sigma_n_counts;
+            if (done[c]) continue;
+            if (f[c] * f_hi[c] < 0.0) {
+                lo[c] = hi[c], f_lo[c] = f_hi[c];
+            } else {
+                f_lo[c] *= 0.5;
+            }
+            hi[c] = sigma[c], f_hi[c] = f[c];
+            done[c] = std::abs(f[c]) <= kRelativeTolerance * target_spread[c];
         }
     }
     for (std::size_t c = 0; c < kChannelCount; ++c)
-        if (channels[c]) model.base[c].sigma_n_counts = 0.5 * (lo[c] + hi[c]);
+        if (channels[c]) model.base[c].sigma_n_counts = std::max(0.0, sigma[c]);
 }
 
 GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std::array<bool, kChannelCount>& channels,

@@ -34,7 +34,7 @@ Band adev_band(const GapModel& model, const LogData& log, std::size_t c, std::si
         req.channels = {};
         req.channels[c] = true;
         const SimOutput sim = simulate(model, req, replicate_seed(seed, r));
-        const auto dev = octave_oadev(fit::fit_drift(log.t_s, sim[c]).residual, max_m);
+        const auto dev = octave_oadev(fit::fit_drift(log.t_s, sim[c], start_at_model(model, static_cast<Channel>(c))).residual, max_m);
         if (band.low.empty()) band.low = band.high = dev;
         for (std::size_t j = 0; j < dev.size(); ++j) {
             band.low[j] = std::min(band.low[j], dev[j]);

@@ -50,14 +50,23 @@ Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<dou
     return out;
 }
 
+fit::FitOptions start_at_model(const GapModel& model, Channel c) {
+    const sim::DriftParams& d = model.base[channel_index(c)].drift;
+    fit::FitOptions fo;
+    fo.start = fit::DriftParameters{d.c1_counts, d.c2_counts, d.tau_s};
+    return fo;
+}
+
 Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
                                int replicates, std::uint64_t seed, int threads, const ReplicateExtra& extra) {
+    BatteryOptions warm = options;
+    for (std::size_t c = 0; c < kChannelCount; ++c) warm.fit_start[c] = start_at_model(model, static_cast<Channel>(c)).start;
     return simulate_replicates(
         model, t_s, options.channels, replicates, seed, threads,
         [&](const SimOutput& sim) {
             std::array<const std::vector<double>*, kChannelCount> y{};
             for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &sim[c];
-            return compute_battery(t_s, y, options).values;
+            return compute_battery(t_s, y, warm).values;
         },
         extra);
 }

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "host/fit/lm_fit.hpp"
 #include "host/gap/gap_model.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/statistics.hpp"
@@ -31,6 +32,9 @@ using ReplicateSummary = std::function<std::vector<double>(const SimOutput& simu
 Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<double>& t_s,
                                     const std::array<bool, kChannelCount>& channels, int replicates, std::uint64_t seed,
                                     int threads, const ReplicateSummary& summary, const ReplicateExtra& extra = {});
+
+/// The eq. 1 fit options of a replicate of `model`'s channel `c`: started at the model's drift.
+fit::FitOptions start_at_model(const GapModel& model, Channel c);
 
 /// Battery values of `replicates` replicates (rows) on the instants `t_s`, run on `threads` threads.
 Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,

@@ -137,7 +137,9 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!options.channels[c]) continue;
         const auto& yc = *y[c];
-        const fit::FitResult f = fit::fit_drift(t_s, yc);
+        fit::FitOptions fo;
+        fo.start = options.fit_start[c];
+        const fit::FitResult f = fit::fit_drift(t_s, yc, fo);
         result.drift[c] = f.parameters;
         result.residual[c] = f.residual;
         const std::vector<double>& e = result.residual[c];

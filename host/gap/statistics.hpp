@@ -50,6 +50,9 @@ struct BatteryOptions {
     Holdout holdout = Holdout::interleaved;
     double fit_fraction = 0.6;      ///< forecast: first part of the log (by time) used to fit candidates
     double sample_period_s = 1.0;   ///< for cell labels [s]
+    /// Per channel, where the eq. 1 fit starts: empty for a real log (the automatic start); a replicate of a model
+    /// starts at the model's drift, which is the same optimum reached in a few iterations instead of a search.
+    std::array<std::optional<fit::DriftParameters>, kChannelCount> fit_start{};
 };
 
 /// Per sample of `t_s`: true where it belongs to the fitting part. Interleaved: tenths 0, 4, 5, 7, 9 by index
