@@ -21,6 +21,7 @@ struct GapEvalCommandOptions {
     std::vector<std::string> effects;
     gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     std::vector<double> levels;
+    int clean_per_seed = 0;
     bool quick = false;
 };
 
@@ -56,6 +57,7 @@ void run(const GapEvalCommandOptions& o) {
         if (!found) throw UsageError("--effects: unknown generator or effect '" + e + "'");
     }
     options.holdout = o.holdout;
+    options.clean_per_seed = o.clean_per_seed;
     if (o.quick) {
         options.samples = 800;
         options.levels = {2.0};
@@ -94,6 +96,9 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
         ->delimiter(',')
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--clean-per-seed", o->clean_per_seed,
+                    "Clean logs per seed for the false-positive rate (default: as many as sizes)")
+        ->check(CLI::Range(1, 1000));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
     cmd->callback([o] { run(*o); });

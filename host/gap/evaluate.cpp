@@ -322,8 +322,9 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
         const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
         const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
         for (std::uint64_t s = first; s <= last; ++s) {
-            // As many clean logs per seed as planted ones per generator: the false-positive rate needs them.
-            for (std::size_t k = 0; k < options.levels.size(); ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
+            // By default as many clean logs per seed as planted ones per generator: the false-positive rate needs them.
+            const std::size_t clean = options.clean_per_seed > 0 ? static_cast<std::size_t>(options.clean_per_seed) : options.levels.size();
+            for (std::size_t k = 0; k < clean; ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
             for (const auto& g : gens)
                 for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
         }

@@ -19,6 +19,7 @@ struct EvalOptions {
     std::uint64_t score_first = 101, score_last = 104;  ///< seeds they are scored on (disjoint)
     std::vector<std::string> generators;  ///< truth generators (truth_list()); empty = all; "none" is always added
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
+    int clean_per_seed = 0;       ///< clean logs per seed (0: as many as levels): the false-positive rate's sample
     int detection_logs = 12;      ///< logs per size when measuring a_50 (tuning seeds)
     std::size_t samples = 1500;   ///< log length at 1 s per sample
     Holdout holdout = BatteryOptions{}.holdout;
