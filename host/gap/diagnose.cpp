@@ -55,8 +55,9 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
     }
     std::vector<LevelStep> out;
     if (tested.empty()) return out;
-    const double alpha = options.alpha / static_cast<double>(tested.size());
-    const int replicates = std::max(options.replicates, static_cast<int>(std::ceil(2.0 / alpha)));
+    const double alpha = options.explain_options.step_alpha / static_cast<double>(tested.size());
+    const int replicates = std::max({options.replicates, options.explain_options.step_replicates,
+                                     static_cast<int>(std::ceil(2.0 / alpha))});
     for (std::size_t c : tested) {
         std::vector<std::string> effects;
         std::vector<double> params;

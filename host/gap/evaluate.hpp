@@ -75,6 +75,7 @@ struct EvalCase {
 struct Thresholds {
     double penalty_per_param = ExplainOptions{}.penalty_per_param;
     double min_heldout_shrink = ExplainOptions{}.min_heldout_shrink;
+    double step_alpha = ExplainOptions{}.step_alpha;
 };
 
 /// What the diagnosis says of a case under some thresholds.
@@ -89,7 +90,8 @@ Decision decide(const EvalCase& c, const Thresholds& th);
 /// Runs every case (tuning and scoring seeds), planting each generator at level x its a_50 from `sizes`.
 std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
 
-/// Thresholds maximising top-1 accuracy on the tuning cases with a false-positive rate <= 5 %.
+/// Thresholds (penalty per parameter, minimum held-out shrink, level of the level-step test) maximising top-1
+/// accuracy on the tuning cases with a false-positive rate <= 5 %.
 Thresholds tune(const std::vector<EvalCase>& cases);
 
 /// The results tables (markdown) of the scoring cases under `th`.

@@ -235,8 +235,9 @@ LevelStep step_test(const GapModel& m, const Judge& judge, const std::vector<Ear
     std::vector<double> known;
     for (const Earlier& e : earlier) effects.push_back(e.effect), known.insert(known.end(), e.params.begin(), e.params.end());
     if (!spectral.empty()) effects.push_back(spectral), known.insert(known.end(), params.begin(), params.end());
-    return test_level_step(m, judge.channel, judge.t_s, judge.y, effects, known, options.eval_replicates, options.seed + 17,
-                           options.threads, kAlpha);
+    return test_level_step(m, judge.channel, judge.t_s, judge.y, effects, known,
+                           std::max(options.eval_replicates, options.step_replicates), options.seed + 17, options.threads,
+                           options.step_alpha);
 }
 
 }  // namespace
@@ -247,7 +248,9 @@ bool passes(const Explanation& e, double penalty_per_param, double min_heldout_s
            e.heldout_shrink >= min_heldout_shrink && e.heldout_loss_gain > 0.0;
 }
 
-bool closes_gap(const Explanation& e) { return !e.residual_step.significant; }
+bool closes_gap(const Explanation& e, double step_alpha) {
+    return !(e.residual_step.tested && e.residual_step.p_value <= step_alpha);
+}
 
 bool close_call(const Explanation& best, const Explanation& runner_up, double z) {
     const auto low_frequency = [](const Explanation& e) { return e.effect == "flicker" || e.effect == "rate_random_walk"; };

@@ -25,6 +25,8 @@ struct ExplainOptions {
     double penalty_per_param = 0.25; ///< x ln(cells): the BIC-like price of one parameter (tuned by gap-eval)
     double min_heldout_shrink = 0.3; ///< the held-out gap excess must shrink by at least this fraction
     double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
+    double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
+    int step_replicates = 40;      ///< at least this many replicates for the level-step test's null
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
     std::uint64_t seed = 1;
     int threads = 2;
@@ -86,7 +88,7 @@ Choice choose(const std::vector<const Explanation*>& passing);
 /// increment, and no library effect makes one, so a step left behind makes the verdict "unexplained". (Cells may
 /// stay located: the library's forms are not the truth's, e.g. bursts of spikes are not single-conversion spikes;
 /// cells_left and the gap after report how much remains.)
-bool closes_gap(const Explanation& e);
+bool closes_gap(const Explanation& e, double step_alpha);
 
 /// Explains the gap of the channels in `channels` (those with located cells) on `log_t_s`/`log_y`.
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,

@@ -155,7 +155,7 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     b.heldout_loss_gain = 60.0;  // the battery prefers b, the spectral likelihood a: the latter decides
     weak.heldout_loss_gain = 10.0, weak.heldout_cell_loss = {3, 4.1, 5, 6.1, 7, 8};
     c.tried = {weak, b, a};
-    const Thresholds th{1.0, 0.3};
+    const Thresholds th{1.0, 0.3, 0.05};
     Decision d = decide(c, th);
     EXPECT_EQ(d.verdict, "flicker");
     EXPECT_EQ(d.ambiguous_with, "gauss_markov");
@@ -165,8 +165,10 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     c.tried[0].heldout_loss_gain = 80.0;  // spikes beat the best Gaussian candidate on the held-out cells
     EXPECT_EQ(decide(c, th).verdict, "spikes");
     c.tried = {weak, a};
-    c.tried[1].residual_step.significant = true;  // flicker leaves a level step: the log is not explained
+    c.tried[1].residual_step.tested = true;  // flicker leaves a level step at p = 0.03: the log is not explained
+    c.tried[1].residual_step.p_value = 0.03;
     EXPECT_EQ(decide(c, th).verdict, "unexplained");
+    EXPECT_EQ(decide(c, {1.0, 0.3, 0.02}).verdict, "flicker");  // ... unless the step test's level is below p
     c.detected = false;
     EXPECT_EQ(decide(c, th).verdict, "none");
 }
