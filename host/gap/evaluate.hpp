@@ -24,8 +24,8 @@ struct EvalOptions {
     std::size_t samples = 1500;   ///< log length at 1 s per sample
     Holdout holdout = BatteryOptions{}.holdout;
     int replicates = 20;
-    int fit_replicates = 8;
-    int max_evaluations = 18;
+    int fit_replicates = ExplainOptions{}.fit_replicates;    ///< as `driftlab gap` ships
+    int max_evaluations = ExplainOptions{}.max_evaluations;
     int threads = 2;
     std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional
 };

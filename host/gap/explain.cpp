@@ -108,6 +108,15 @@ Fitted fit_deterministic(const std::string& effect, const GapModel& current, con
     return out;
 }
 
+// Spikes raise the residual's kurtosis before anything else: when the `tail` cells agree with the model
+// (|z| < kTailScreenZ in both parts), spikes cannot explain the gap and their simulated fit is skipped.
+bool tails_differ(const Judge& judge, const Comparison& cmp) {
+    constexpr double kTailScreenZ = 2.0;
+    for (std::size_t j = 0; j < judge.layout.size(); ++j)
+        if (judge.layout[j].statistic == "tail" && std::abs(cmp.z[j]) >= kTailScreenZ) return true;
+    return false;
+}
+
 // Periodogram, on `part`, of the differenced log minus the model's mean (eq. 1 and the mean shapes).
 PartPeriodogram residual_periodogram(const GapModel& m, const Judge& judge, const std::vector<bool>& part) {
     const std::vector<double> mean = model_mean_counts(m, judge.channel, judge.t_s);
@@ -356,6 +365,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             std::vector<Option> here;
             for (const std::string& effect : names) {
                 if (std::find(used[i].begin(), used[i].end(), effect) != used[i].end()) continue;
+                if (effect == "spikes" && !tails_differ(judge, base_cmp)) continue;
                 const FitRoute route = candidate(effect).route;
                 Fitted fitted;
                 if (route == FitRoute::deterministic) {
@@ -377,10 +387,11 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 target[i] = judge.target_spread;
                 match_noise(fitted.model, t_s, only, target, options.seed);
                 Explanation ex = judge_candidate(effect, fitted, judge, base_cmp, options);
-                if (ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_bic);
-                // The level-step test is for random explanations: a mean shape's misfit is judged by the cells it
+                // The choice among accepted candidates and the level-step test concern accepted ones only. The
+                // level-step test is for random explanations: a mean shape's misfit is judged by the cells it
                 // leaves located.
-                if (route != FitRoute::deterministic && !shaped)
+                if (ex.accepted && ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_bic);
+                if (ex.accepted && route != FitRoute::deterministic && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, route == FitRoute::spectral ? effect : "", fitted.params, options);
                 ex.step = step;
                 here.push_back({ex, fitted.model, std::move(fitted.refits)});

@@ -18,9 +18,9 @@
 namespace driftlab::host::gap {
 
 struct ExplainOptions {
-    int fit_replicates = 12;       ///< replicates per objective evaluation of a simulated-route fit
+    int fit_replicates = 8;        ///< replicates per objective evaluation of a simulated-route fit (spikes)
     int eval_replicates = 40;      ///< replicates when judging a fitted candidate
-    int max_evaluations = 36;      ///< Nelder-Mead budget per simulated-route candidate
+    int max_evaluations = 18;      ///< Nelder-Mead budget per simulated-route candidate (the budget gap-eval scores)
     int max_effects = 3;           ///< stepwise limit over the whole log
     double penalty_per_param = 0.25; ///< x ln(cells): the BIC-like price of one parameter (tuned by gap-eval)
     double min_heldout_shrink = 0.3; ///< the held-out gap excess must shrink by at least this fraction

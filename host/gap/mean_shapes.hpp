@@ -8,7 +8,8 @@
 
 namespace driftlab::host::gap {
 
-/// y = C1 (1 - e^{-t/T}) + C3 (1 - e^{-t/T2}) + C2, with T < T2 (E1 on top of eq. 1).
+/// y = C1 (1 - e^{-t/T}) + C3 (1 - e^{-t/T2}) + C2, with T2 >= 2 T (E1 on top of eq. 1; closer time constants are one
+/// exponential's derivative, fitted with huge opposite amplitudes).
 struct TwoExponentials {
     double c1_counts = 0.0, c2_counts = 0.0, t_s = 1.0;
     double c3_counts = 0.0, t2_s = 1.0;

@@ -36,11 +36,19 @@ void Flicker::apply(ChannelValues& values, const EffectContext& ctx) {
     for (std::size_t c = first; c < last; ++c) {
         if (b[c] <= 0.0) continue;
         const double sigma = b[c] * component_sigma_per_b();
+        if (ctx.dt_s != cached_dt_s_) {
+            cached_dt_s_ = ctx.dt_s;
+            phi_.resize(n);
+            innovation_.resize(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                phi_[i] = std::exp(-ctx.dt_s / tau_s_[i]);
+                innovation_[i] = std::sqrt(1.0 - phi_[i] * phi_[i]);
+            }
+        }
         double sum = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            const double phi = std::exp(-ctx.dt_s / tau_s_[i]);
             double& x = state_[c * n + i];
-            x = phi * x + sigma * std::sqrt(1.0 - phi * phi) * rng_[c].normal();
+            x = phi_[i] * x + sigma * innovation_[i] * rng_[c].normal();
             sum += x;
         }
         values[c] += sum;

@@ -64,6 +64,10 @@ private:
     std::vector<double> tau_s_;
     std::vector<Rng> rng_;
     std::vector<double> state_;  // channel-major: state_[c * n + i]
+    // phi_i = exp(-dt / tau_i) and sqrt(1 - phi_i^2) for the last dt: the instants are evenly spaced, so these are
+    // computed once per run rather than once per conversion and component.
+    double cached_dt_s_ = -1.0;
+    std::vector<double> phi_, innovation_;
 };
 
 }  // namespace driftlab::sim
