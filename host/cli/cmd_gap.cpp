@@ -1,11 +1,14 @@
 // `driftlab gap REAL.csv`: where the calibrated simulator differs from a real log, which effect explains it and
 // how far the gap shrinks once that effect is added (host/gap, docs/gap.md).
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "host/cli/commands.hpp"
 #include "host/gap/candidates.hpp"
@@ -75,6 +78,13 @@ void run(const GapCommandOptions& o) {
     options.fit_fraction = o.fit_fraction;
     options.holdout = o.holdout;
     options.explain = !o.locate_only;
+    const bool tty = ::isatty(STDERR_FILENO) != 0;
+    const auto started = std::chrono::steady_clock::now();
+    if (tty)
+        options.progress = [started](const std::string& stage) {
+            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            std::fprintf(stderr, "\r\033[Kgap: %.0f s, %s", s, stage.c_str());
+        };
     for (const std::string& name : o.channels) {
         bool found = false;
         for (std::size_t c = 0; c < kChannelCount; ++c)
@@ -82,6 +92,7 @@ void run(const GapCommandOptions& o) {
         if (!found) throw UsageError("--channel: unknown channel '" + name + "' (gyro, accel_x, accel_y, accel_z)");
     }
     const gap::GapResult r = gap::diagnose(log, unit, options);
+    if (tty) std::fprintf(stderr, "\r\033[K");
     if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options);
     if (o.json) {
         std::cout << gap::gap_to_json(r, options).dump(2) << "\n";

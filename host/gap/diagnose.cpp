@@ -93,6 +93,10 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; }))
         throw DataError(log.source_name, 0, "no selected channel varies: nothing to compare");
 
+    const auto tell = [&](const std::string& stage) {
+        if (options.progress) options.progress(stage);
+    };
+    tell("calibrating the base simulator");
     result.base = calibrate_base(log, unit, result.channels, options.seed);
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
 
@@ -114,6 +118,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         held = gap_score(cmp, result.layout, in_segment(Segment::heldout));
         bound = gap_score_threshold(cmp, result.layout, in_segment(Segment::heldout), options.alpha);
     };
+    tell("comparing with " + std::to_string(options.replicates) + " replicates");
     judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout, result.gap_bound_before);
 
     result.final_model = result.base;
@@ -129,6 +134,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         eo.seed = options.seed;
         eo.threads = options.threads;
         eo.eval_replicates = options.replicates;
+        eo.progress = options.progress;
         ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo);
         result.tried = std::move(ex.tried);
         result.accepted = std::move(ex.accepted);
@@ -144,10 +150,12 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         result.gap_after_heldout = result.gap_before_heldout;
         result.gap_bound_after = result.gap_bound_before;
     } else {
+        tell("judging the final model");
         judge(result.final_model, result.after, result.located_after, result.gap_after_fit, result.gap_after_heldout,
               result.gap_bound_after);
         // A level step no library effect makes leaves the log unexplained (closes_gap()); the accepted effects stay
         // as partial explanations.
+        tell("testing for level steps");
         result.level_steps = check_level_steps(result, log, options);
         if (std::any_of(result.level_steps.begin(), result.level_steps.end(), [](const LevelStep& s) { return s.significant; }))
             result.verdict = "unexplained";

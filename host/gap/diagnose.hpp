@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct GapOptions {
     bool explain = true;            ///< false: locate only
     ExplainOptions explain_options;
     int threads = 2;
+    std::function<void(const std::string& stage)> progress;  ///< optional: told each stage as it starts
 };
 
 /// The log's own record of lost frames and sample-time irregularity (the simulation uses the log's instants,

@@ -366,6 +366,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             for (const std::string& effect : names) {
                 if (std::find(used[i].begin(), used[i].end(), effect) != used[i].end()) continue;
                 if (effect == "spikes" && !tails_differ(judge, base_cmp)) continue;
+                if (options.progress) options.progress("step " + std::to_string(step) + ", " + kChannelNames[i] + ": " + effect);
                 const FitRoute route = candidate(effect).route;
                 Fitted fitted;
                 if (route == FitRoute::deterministic) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,7 @@ struct ExplainOptions {
     double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
     int step_replicates = 40;      ///< at least this many replicates for the level-step test's null
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
+    std::function<void(const std::string& stage)> progress;  ///< optional: told what is being fitted
     std::uint64_t seed = 1;
     int threads = 2;
 };
