@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
-#include "host/gap/evaluate.hpp"
+#include "host/gap/eval_scores.hpp"
 #include "host/gap/truth.hpp"
 #include "host/util/error.hpp"
 
@@ -23,6 +23,7 @@ struct GapEvalCommandOptions {
     std::vector<double> levels;
     int clean_per_seed = 0;
     bool quick = false;
+    bool json = false;
 };
 
 std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, const std::string& s) {
@@ -80,7 +81,11 @@ void run(const GapEvalCommandOptions& o) {
     if (!o.levels.empty()) options.levels = o.levels;
     const auto cases = gap::run_cases(options, sizes);
     const gap::Thresholds th = gap::tune(cases);
-    std::cout << gap::score_table(cases, th, options, sizes);
+    const gap::EvalScores scores = gap::score(cases, th, options, sizes);
+    if (o.json)
+        std::cout << gap::scores_json(scores).dump(2) << "\n";
+    else
+        std::cout << gap::scores_markdown(scores);
 }
 
 }  // namespace
@@ -101,6 +106,8 @@ void register_gap_eval(CLI::App& app) {
         ->check(CLI::Range(1, 1000));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
+    cmd->add_flag("--json", o->json,
+                  "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size)");
     cmd->callback([o] { run(*o); });
 }
 

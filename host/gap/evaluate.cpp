@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 
 #include <Eigen/Dense>
@@ -16,7 +15,6 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/truth.hpp"
-#include "host/stats/binomial_interval.hpp"
 #include "sim/model/drift.hpp"
 #include "sim/model/rng.hpp"
 #include "sim/model/white_noise.hpp"
@@ -199,6 +197,11 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
 
 }  // namespace
 
+bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok) {
+    if (c.truth.empty()) return d.verdict == "unexplained" || d.verdict == "none";
+    return d.verdict == c.truth || (pair_ok && d.ambiguous_with == c.truth);
+}
+
 Decision decide(const EvalCase& c, const Thresholds& th) {
     if (!c.detected) return {"none", ""};
     std::vector<const Explanation*> passing;
@@ -211,13 +214,6 @@ Decision decide(const EvalCase& c, const Thresholds& th) {
 }
 
 namespace {
-
-// Right answer: the truth's effect (or, for `pair_ok`, a declared ambiguous pair containing it); "none" for clean
-// logs; for out-of-library logs anything but a library effect.
-bool correct(const EvalCase& c, const Decision& d, bool pair_ok) {
-    if (c.truth.empty()) return d.verdict == "unexplained" || d.verdict == "none";
-    return d.verdict == c.truth || (pair_ok && d.ambiguous_with == c.truth);
-}
 
 std::string truth_of(const std::string& generator) { return truth_info(generator).effect; }
 
@@ -356,7 +352,7 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
                         ++none;
                         fp += d.verdict != "none";
                     }
-                    right += correct(c, d, false);
+                    right += is_correct(c, d, false);
                 }
                 const double fpr = none ? static_cast<double>(fp) / static_cast<double>(none) : 0.0;
                 const double score = static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, total)) -
@@ -366,113 +362,6 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
         }
     }
     return best;
-}
-
-namespace {
-
-std::string fixed(double v, int digits) {
-    std::ostringstream s;
-    s.precision(digits);
-    s << std::fixed << v;
-    return s.str();
-}
-
-std::string median(std::vector<double> v) {
-    if (v.empty()) return "-";
-    std::sort(v.begin(), v.end());
-    return fixed(v[v.size() / 2], 2);
-}
-
-}  // namespace
-
-std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options,
-                        const std::vector<DetectionSize>& sizes) {
-    std::ostringstream md;
-    std::vector<std::string> columns;
-    for (const auto& info : candidate_list()) columns.push_back(info.effect);
-    columns.push_back("none");
-    columns.push_back("unexplained");
-    std::vector<std::string> rows{"none"};
-    for (const auto& c : cases)
-        if (c.generator != "none" && std::find(rows.begin(), rows.end(), c.generator) == rows.end()) rows.push_back(c.generator);
-
-    md << "Thresholds tuned on seeds " << options.tune_first << ".." << options.tune_last << ": penalty_per_param = "
-       << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink << ", step_alpha = " << th.step_alpha
-       << ". Scored on seeds "
-       << options.score_first << ".." << options.score_last << ", " << options.samples << "-sample logs, R = "
-       << options.replicates << ".\n\n";
-
-    md << "### Detection thresholds a_50 (tuning seeds, " << options.detection_logs
-       << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
-          "| generator | a_50 | size: detected/logs |\n|---|---|---|\n";
-    for (const auto& d : sizes) {
-        md << "| " << d.generator << " | " << fixed(d.a50, 2) << " |";
-        for (const auto& p : d.curve) md << " " << fixed(p.size, 2) << ": " << p.detected << "/" << p.logs << ";";
-        md << " |\n";
-    }
-
-    std::size_t clean = 0, clean_fp = 0;
-    for (const auto& c : cases)
-        if (!c.tune && c.generator == "none") ++clean, clean_fp += decide(c, th).verdict != "none";
-    if (clean) {
-        const auto ci = stats::clopper_pearson(clean_fp, clean);
-        md << "\nFalse-positive rate on clean logs: " << clean_fp << "/" << clean << " = "
-           << fixed(100.0 * static_cast<double>(clean_fp) / static_cast<double>(clean), 1) << " % (95 % Clopper-Pearson "
-           << fixed(100.0 * ci.lower, 1) << "-" << fixed(100.0 * ci.upper, 1) << " %).\n";
-    }
-
-    md << "\n### Confusion (rows: truth generator -> library effect; columns: verdict), all sizes\n\n| truth |";
-    for (const auto& c : columns) md << " " << c << " |";
-    md << "\n|---|";
-    for (std::size_t i = 0; i < columns.size(); ++i) md << "---|";
-    md << "\n";
-    for (const auto& row : rows) {
-        std::map<std::string, int> count;
-        std::string truth = "none";
-        for (const auto& c : cases) {
-            if (c.tune || c.generator != row) continue;
-            truth = c.truth.empty() ? "out of library" : c.truth;
-            ++count[decide(c, th).verdict];
-        }
-        md << "| " << row << " (" << truth << ") |";
-        for (const auto& col : columns) md << " " << count[col] << " |";
-        md << "\n";
-    }
-    md << "\n### Per generator and size (scoring seeds)\n\n"
-          "`top-1` counts the verdict alone; `or pair` also counts a declared ambiguous pair holding the truth. "
-          "Held-out shrink: `predicted` by the diagnosis for the right candidate, `re-measured` on fresh replicates "
-          "with the chosen model, `oracle` with the true model (truth base plus fresh realisations of the truth "
-          "generator), and the median |predicted - oracle|.\n\n"
-          "| truth | size x a_50 | n | detected | top-1 | or pair | predicted | re-measured | oracle | abs error |\n"
-          "|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& row : rows) {
-        std::vector<double> levels;
-        for (const auto& c : cases)
-            if (!c.tune && c.generator == row && std::find(levels.begin(), levels.end(), c.level) == levels.end())
-                levels.push_back(c.level);
-        for (double level : levels) {
-            int n = 0, det = 0, ok = 0, ok_pair = 0;
-            std::vector<double> pred, check, oracle, error;
-            for (const auto& c : cases) {
-                if (c.tune || c.generator != row || c.level != level) continue;
-                ++n;
-                det += c.detected;
-                const Decision d = decide(c, th);
-                ok += correct(c, d, false);
-                ok_pair += correct(c, d, true);
-                if (c.has_oracle) oracle.push_back(c.oracle_shrink);
-                for (const auto& e : c.tried) {
-                    if (e.effect != c.truth || d.verdict != c.truth) continue;
-                    pred.push_back(e.heldout_shrink);
-                    if (c.has_oracle) error.push_back(std::abs(e.heldout_shrink - c.oracle_shrink));
-                }
-                if (c.has_shrink_check && d.verdict == c.truth) check.push_back(c.shrink_check);
-            }
-            md << "| " << row << " | " << level << " | " << n << " | " << det << " | " << ok << " | " << ok_pair << " | "
-               << median(pred) << " | " << median(check) << " | " << median(oracle) << " | " << median(error) << " |\n";
-        }
-    }
-    return md.str();
 }
 
 }  // namespace driftlab::host::gap

@@ -87,15 +87,15 @@ struct Decision {
 /// The decision a case gets under `th` (ambiguity as ExplainOptions::ambiguity_z).
 Decision decide(const EvalCase& c, const Thresholds& th);
 
+/// Whether the decision is right: the truth's effect (with `pair_ok`, also a declared close call holding it);
+/// "none" for a clean log; for an out-of-library log anything but a library effect.
+bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok);
+
 /// Runs every case (tuning and scoring seeds), planting each generator at level x its a_50 from `sizes`.
 std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
 
 /// Thresholds (penalty per parameter, minimum held-out shrink, level of the level-step test) maximising top-1
 /// accuracy on the tuning cases with a false-positive rate <= 5 %.
 Thresholds tune(const std::vector<EvalCase>& cases);
-
-/// The results tables (markdown) of the scoring cases under `th`.
-std::string score_table(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options,
-                        const std::vector<DetectionSize>& sizes);
 
 }  // namespace driftlab::host::gap

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "host/gap/evaluate.hpp"
+#include "host/gap/eval_scores.hpp"
 #include "host/gap/truth.hpp"
 
 namespace driftlab::host::gap {
@@ -187,6 +187,45 @@ TEST(GapEval, CloseCallBetweenGaussianCandidatesIsVuongOverFrequencies) {
     EXPECT_FALSE(close_call(best, runner));
     best.spectral_parameters = 5;            // three more: 10 - 3 ln(400) / 2 = 1.0 < 5.5
     EXPECT_TRUE(close_call(best, runner));
+}
+
+// The scores count the decisions of the scoring cases only, and the JSON carries the documented keys.
+TEST(GapEval, ScoresCountTheScoringDecisions) {
+    Explanation flicker;
+    flicker.effect = "flicker";
+    flicker.gaussian = true;
+    flicker.loss_gain = 100.0, flicker.penalty = 10.0, flicker.heldout_before = 3.0, flicker.heldout_after = 1.2;
+    flicker.heldout_shrink = 0.9, flicker.heldout_loss_gain = 50.0;
+    auto make = [&](const std::string& generator, const std::string& truth, double level, bool detected, bool tune) {
+        EvalCase c;
+        c.generator = generator, c.truth = truth, c.level = level, c.detected = detected, c.tune = tune;
+        if (detected) c.tried = {flicker};
+        return c;
+    };
+    const std::vector<EvalCase> cases{
+        make("none", "none", 0.0, false, false),          make("none", "none", 0.0, true, false),  // one false positive
+        make("none", "none", 0.0, false, false),          make("none", "none", 0.0, true, true),   // tuning: not scored
+        make("kasdin_flicker", "flicker", 2.0, true, false), make("kasdin_flicker", "flicker", 2.0, false, false),
+        make("mode_hop", "", 2.0, true, false)};  // out of library, attributed: wrong
+    EvalOptions o;
+    const EvalScores s = score(cases, Thresholds{1.0, 0.3, 0.05}, o, {});
+    EXPECT_EQ(s.clean, 3u);
+    EXPECT_EQ(s.clean_flagged, 1u);
+    EXPECT_LT(s.fpr_low, 1.0 / 3.0);
+    EXPECT_GT(s.fpr_high, 1.0 / 3.0);
+    ASSERT_EQ(s.by_size.size(), 3u);  // none, kasdin_flicker and mode_hop, one size each
+    const SizeScore& f = s.by_size[1];
+    EXPECT_EQ(f.generator, "kasdin_flicker");
+    EXPECT_EQ(f.logs, 2);
+    EXPECT_EQ(f.detected, 1);
+    EXPECT_EQ(f.top1, 1);
+    EXPECT_NEAR(*f.predicted, 0.9, 1e-12);
+    EXPECT_EQ(s.by_size[2].top1, 0);
+    const auto j = scores_json(s);
+    for (const char* key : {"thresholds", "a50", "false_positive", "confusion", "by_size"}) EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_EQ(j["confusion"]["mode_hop"]["flicker"], 1);
+    EXPECT_EQ(j["by_size"][1]["top1"], 1);
+    EXPECT_NE(scores_markdown(s).find("| kasdin_flicker | 2 | 2 | 1 | 1 | 1 |"), std::string::npos);
 }
 
 TEST(GapEval, TruthGeneratorsHaveTheirRequestedSize) {

@@ -1,0 +1,180 @@
+// Benchmark scores; see eval_scores.hpp.
+#include "host/gap/eval_scores.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "host/gap/candidates.hpp"
+#include "host/report/json_out.hpp"
+#include "host/stats/binomial_interval.hpp"
+
+namespace driftlab::host::gap {
+
+namespace {
+
+std::optional<double> median(std::vector<double> v) {
+    if (v.empty()) return std::nullopt;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+std::string fixed(double v, int digits) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << std::fixed << v;
+    return s.str();
+}
+
+std::string fixed(const std::optional<double>& v) { return v ? fixed(*v, 2) : "-"; }
+
+nlohmann::json number(const std::optional<double>& v) { return v ? report::json_number(*v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+EvalScores score(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options,
+                 const std::vector<DetectionSize>& sizes) {
+    EvalScores s;
+    s.options = options;
+    s.thresholds = th;
+    s.sizes = sizes;
+    for (const auto& info : candidate_list()) s.verdicts.push_back(info.effect);
+    s.verdicts.push_back("none");
+    s.verdicts.push_back("unexplained");
+    std::vector<std::string> rows{"none"};
+    for (const auto& c : cases)
+        if (c.generator != "none" && std::find(rows.begin(), rows.end(), c.generator) == rows.end()) rows.push_back(c.generator);
+    for (const auto& c : cases)
+        if (!c.tune && c.generator == "none") ++s.clean, s.clean_flagged += decide(c, th).verdict != "none";
+    if (s.clean) {
+        const auto ci = stats::clopper_pearson(s.clean_flagged, s.clean);
+        s.fpr_low = ci.lower, s.fpr_high = ci.upper;
+    }
+    for (const auto& row : rows) {
+        std::map<std::string, int> count;
+        for (const auto& c : cases)
+            if (!c.tune && c.generator == row) ++count[decide(c, th).verdict];
+        s.confusion.emplace_back(row, count);
+        std::vector<double> levels;
+        for (const auto& c : cases)
+            if (!c.tune && c.generator == row && std::find(levels.begin(), levels.end(), c.level) == levels.end())
+                levels.push_back(c.level);
+        for (double level : levels) {
+            SizeScore z;
+            z.generator = row;
+            z.level = level;
+            std::vector<double> pred, check, oracle, error;
+            for (const auto& c : cases) {
+                if (c.tune || c.generator != row || c.level != level) continue;
+                z.truth = c.truth;
+                ++z.logs;
+                z.detected += c.detected;
+                const Decision d = decide(c, th);
+                z.top1 += is_correct(c, d, false);
+                z.or_pair += is_correct(c, d, true);
+                if (c.has_oracle) oracle.push_back(c.oracle_shrink);
+                for (const auto& e : c.tried) {
+                    if (e.effect != c.truth || d.verdict != c.truth) continue;
+                    pred.push_back(e.heldout_shrink);
+                    if (c.has_oracle) error.push_back(std::abs(e.heldout_shrink - c.oracle_shrink));
+                }
+                if (c.has_shrink_check && d.verdict == c.truth) check.push_back(c.shrink_check);
+            }
+            z.predicted = median(pred), z.remeasured = median(check), z.oracle = median(oracle), z.abs_error = median(error);
+            s.by_size.push_back(z);
+        }
+    }
+    return s;
+}
+
+std::string scores_markdown(const EvalScores& s) {
+    const EvalOptions& o = s.options;
+    const Thresholds& th = s.thresholds;
+    std::ostringstream md;
+    md << "Thresholds tuned on seeds " << o.tune_first << ".." << o.tune_last << ": penalty_per_param = "
+       << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink << ", step_alpha = " << th.step_alpha
+       << ". Scored on seeds " << o.score_first << ".." << o.score_last << ", " << o.samples << "-sample logs, R = "
+       << o.replicates << ".\n\n";
+    md << "### Detection thresholds a_50 (tuning seeds, " << o.detection_logs
+       << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
+          "| generator | a_50 | size: detected/logs |\n|---|---|---|\n";
+    for (const auto& d : s.sizes) {
+        md << "| " << d.generator << " | " << fixed(d.a50, 2) << " |";
+        for (const auto& p : d.curve) md << " " << fixed(p.size, 2) << ": " << p.detected << "/" << p.logs << ";";
+        md << " |\n";
+    }
+    if (s.clean)
+        md << "\nFalse-positive rate on clean logs: " << s.clean_flagged << "/" << s.clean << " = "
+           << fixed(100.0 * static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean), 1)
+           << " % (95 % Clopper-Pearson " << fixed(100.0 * s.fpr_low, 1) << "-" << fixed(100.0 * s.fpr_high, 1) << " %).\n";
+    md << "\n### Confusion (rows: truth generator -> library effect; columns: verdict), all sizes\n\n| truth |";
+    for (const auto& v : s.verdicts) md << " " << v << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < s.verdicts.size(); ++i) md << "---|";
+    md << "\n";
+    for (const auto& [row, count] : s.confusion) {
+        std::string truth = "none";
+        for (const auto& z : s.by_size)
+            if (z.generator == row) truth = z.truth.empty() ? "out of library" : z.truth;
+        md << "| " << row << " (" << truth << ") |";
+        for (const auto& v : s.verdicts) md << " " << (count.count(v) ? count.at(v) : 0) << " |";
+        md << "\n";
+    }
+    md << "\n### Per generator and size (scoring seeds)\n\n"
+          "`top-1` counts the verdict alone; `or pair` also counts a declared ambiguous pair holding the truth. "
+          "Held-out shrink: `predicted` by the diagnosis for the right candidate, `re-measured` on fresh replicates "
+          "with the chosen model, `oracle` with the true model (truth base plus fresh realisations of the truth "
+          "generator), and the median |predicted - oracle|.\n\n"
+          "| truth | size x a_50 | n | detected | top-1 | or pair | predicted | re-measured | oracle | abs error |\n"
+          "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& z : s.by_size)
+        md << "| " << z.generator << " | " << z.level << " | " << z.logs << " | " << z.detected << " | " << z.top1 << " | "
+           << z.or_pair << " | " << fixed(z.predicted) << " | " << fixed(z.remeasured) << " | " << fixed(z.oracle) << " | "
+           << fixed(z.abs_error) << " |\n";
+    return md.str();
+}
+
+nlohmann::json scores_json(const EvalScores& s) {
+    using nlohmann::json;
+    const EvalOptions& o = s.options;
+    json j;
+    j["thresholds"] = {{"penalty_per_param", s.thresholds.penalty_per_param},
+                       {"min_heldout_shrink", s.thresholds.min_heldout_shrink},
+                       {"step_alpha", s.thresholds.step_alpha}};
+    j["tune_seeds"] = {o.tune_first, o.tune_last};
+    j["score_seeds"] = {o.score_first, o.score_last};
+    j["samples"] = o.samples;
+    j["replicates"] = o.replicates;
+    json a50 = json::array();
+    for (const auto& d : s.sizes) {
+        json curve = json::array();
+        for (const auto& p : d.curve) curve.push_back({{"size", p.size}, {"detected", p.detected}, {"logs", p.logs}});
+        a50.push_back({{"generator", d.generator}, {"a50", report::json_number(d.a50)}, {"curve", curve}});
+    }
+    j["a50"] = a50;
+    j["false_positive"] = {{"clean", s.clean},
+                           {"flagged", s.clean_flagged},
+                           {"rate", s.clean ? static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean) : 0.0},
+                           {"interval", {s.fpr_low, s.fpr_high}}};
+    json confusion = json::object();
+    for (const auto& [row, count] : s.confusion) confusion[row] = count;
+    j["confusion"] = confusion;
+    json rows = json::array();
+    for (const auto& z : s.by_size)
+        rows.push_back({{"generator", z.generator},
+                        {"truth", z.truth},
+                        {"level", z.level},
+                        {"logs", z.logs},
+                        {"detected", z.detected},
+                        {"top1", z.top1},
+                        {"or_pair", z.or_pair},
+                        {"shrink",
+                         {{"predicted", number(z.predicted)},
+                          {"remeasured", number(z.remeasured)},
+                          {"oracle", number(z.oracle)},
+                          {"abs_error", number(z.abs_error)}}}});
+    j["by_size"] = rows;
+    return j;
+}
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,54 @@
+// The scores of a withheld-effect benchmark run (gap-eval), computed once from its cases under the tuned thresholds
+// and rendered as the markdown tables of docs/gap.md or as JSON. docs/gap.md §Evaluation.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "host/gap/evaluate.hpp"
+
+namespace driftlab::host::gap {
+
+/// One truth generator at one size, over the scoring seeds.
+struct SizeScore {
+    std::string generator;
+    std::string truth;            ///< library effect, "none" or "" (out of library)
+    double level = 0.0;           ///< size in multiples of a_50
+    int logs = 0, detected = 0;
+    int top1 = 0;                 ///< right verdicts
+    int or_pair = 0;              ///< right verdicts or declared close calls holding the truth
+    /// Medians of the held-out shrink when the verdict is right: predicted by the diagnosis, re-measured on fresh
+    /// replicates, of the oracle (true model), and of |predicted - oracle|.
+    std::optional<double> predicted, remeasured, oracle, abs_error;
+};
+
+struct EvalScores {
+    EvalOptions options;
+    Thresholds thresholds;
+    std::vector<DetectionSize> sizes;
+    std::size_t clean = 0, clean_flagged = 0;  ///< clean scoring logs and those given a verdict other than none
+    double fpr_low = 0.0, fpr_high = 0.0;      ///< 95 % Clopper-Pearson interval of the false-positive rate
+    std::vector<std::string> verdicts;         ///< the confusion matrix's columns
+    /// Per truth generator ("none" first): its library effect and the count of each verdict, all sizes.
+    std::vector<std::pair<std::string, std::map<std::string, int>>> confusion;
+    std::vector<SizeScore> by_size;
+};
+
+/// Scores the scoring cases under `th`.
+EvalScores score(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options,
+                 const std::vector<DetectionSize>& sizes);
+
+/// The markdown tables of docs/gap.md.
+std::string scores_markdown(const EvalScores& s);
+
+/// The same as JSON: keys `thresholds`, `tune_seeds`, `score_seeds`, `samples`, `replicates`, `a50[]`
+/// (`generator`, `a50`, `curve[]` {`size`, `detected`, `logs`}), `false_positive` {`clean`, `flagged`, `rate`,
+/// `interval`}, `confusion` {generator: {verdict: count}}, `by_size[]` (`generator`, `truth`, `level`, `logs`,
+/// `detected`, `top1`, `or_pair`, `shrink` {`predicted`, `remeasured`, `oracle`, `abs_error`}).
+nlohmann::json scores_json(const EvalScores& s);
+
+}  // namespace driftlab::host::gap
