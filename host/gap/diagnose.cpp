@@ -39,19 +39,19 @@ CellFilter in_segment(Segment s) {
     return [s](const Cell& c) { return c.segment == s; };
 }
 
-// The level-step test of the final model on each channel whose accepted effects are all random processes (a mean
-// shape's misfit is judged by the cells it leaves located), at alpha / channels (Bonferroni), with enough
+// The level-step test of the final model on each channel with an accepted Gaussian process and no accepted mean
+// shape (whose misfit is judged by the cells it leaves located), at alpha / channels (Bonferroni), with enough
 // replicates for that level to be reachable.
 std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData& log, const GapOptions& options) {
     std::vector<std::size_t> tested;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
-        bool any = false, shaped = false;
+        bool random = false, shaped = false;
         for (const auto& e : result.accepted) {
             if (e.channel != kChannelNames[c]) continue;
-            any = true;
+            random = random || candidate(e.effect).route == FitRoute::spectral;
             shaped = shaped || candidate(e.effect).route == FitRoute::deterministic;
         }
-        if (any && !shaped) tested.push_back(c);
+        if (random && !shaped) tested.push_back(c);
     }
     std::vector<LevelStep> out;
     if (tested.empty()) return out;

@@ -236,14 +236,15 @@ void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& ju
     ex.delta_bic = base_bic - (spectral_bic(fit, p) + shape_params * std::log(p.count));
 }
 
-// The level-step test of the model with a random-process candidate: its Gaussian processes on this channel (the
-// earlier ones and `spectral`, with their parameters) whiten the residual.
+// The level-step test of the model with Gaussian-process candidate `spectral`: its Gaussian processes on this
+// channel (the earlier ones and the candidate, with their parameters) whiten the residual.
 LevelStep step_test(const GapModel& m, const Judge& judge, const std::vector<Earlier>& earlier, const std::string& spectral,
                     const std::vector<double>& params, const ExplainOptions& options) {
     std::vector<std::string> effects;
     std::vector<double> known;
     for (const Earlier& e : earlier) effects.push_back(e.effect), known.insert(known.end(), e.params.begin(), e.params.end());
-    if (!spectral.empty()) effects.push_back(spectral), known.insert(known.end(), params.begin(), params.end());
+    effects.push_back(spectral);
+    known.insert(known.end(), params.begin(), params.end());
     return test_level_step(m, judge.channel, judge.t_s, judge.y, effects, known,
                            std::max(options.eval_replicates, options.step_replicates), options.seed + 17, options.threads,
                            options.step_alpha);
@@ -389,11 +390,13 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 match_noise(fitted.model, t_s, only, target, options.seed);
                 Explanation ex = judge_candidate(effect, fitted, judge, base_cmp, options);
                 // The choice among accepted candidates and the level-step test concern accepted ones only. The
-                // level-step test is for random explanations: a mean shape's misfit is judged by the cells it
-                // leaves located.
+                // level-step test is for Gaussian-process explanations, which can close the battery's gap around a
+                // step: a mean shape's misfit is judged by the cells it leaves located, and spikes cannot hold a
+                // level (a burst longer than one conversion, which the library's spikes do not make, would read as
+                // a short step).
                 if (ex.accepted && ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_bic);
-                if (ex.accepted && route != FitRoute::deterministic && !shaped)
-                    ex.residual_step = step_test(fitted.model, judge, earlier, route == FitRoute::spectral ? effect : "", fitted.params, options);
+                if (ex.accepted && route == FitRoute::spectral && !shaped)
+                    ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
                 here.push_back({ex, fitted.model, std::move(fitted.refits)});
             }
