@@ -58,6 +58,8 @@ const std::vector<NotIdentifiable>& not_identifiable_list() {
         {"saturation", "nothing approaches the rails at rest (needs motion beyond the range)"},
         {"adc_inl", "at rest the code follows time, so INL(code) and a slow drift (time) cannot be separated (needs several offsets)"},
         {"supply_coupling", "no supply channel is logged (log a Vcc divider channel)"},
+        {"clock_jitter", "at rest the values hardly change between instants, so a timing error moves them by dy/dt x jitter, "
+                         "about nothing; the log's own timestamps are summarised under timing (needs a reference clock for the drift)"},
     };
     return list;
 }
@@ -66,7 +68,6 @@ const std::vector<NotIdentifiable>& not_tried_list() {
     static const std::vector<NotIdentifiable> list = {
         {"adc_dnl", "not a candidate yet: the frac statistic locates it, no fit is attempted"},
         {"mains_alias", "not a candidate yet: the psd statistic locates it, no fit is attempted"},
-        {"clock_jitter", "not a candidate yet: sample-time statistics are reported under timing"},
     };
     return list;
 }
