@@ -35,7 +35,7 @@ struct GapCommandOptions {
     bool locate_only = false;
 };
 
-void print_text(const gap::GapResult& r) {
+void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     std::printf("verdict: %s\n", r.verdict.c_str());
     std::printf("gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f"
                 " (closed below %.2f)\n",
@@ -53,7 +53,7 @@ void print_text(const gap::GapResult& r) {
         std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.step,
                     e.effect.c_str(), e.channel.c_str(), e.accepted ? "ACCEPTED" : "rejected", e.heldout_before,
                     e.heldout_after, 100 * e.heldout_shrink, e.loss_gain, e.penalty);
-        if (e.gaussian) std::printf(" dBIC %.1f", e.delta_bic);
+        if (e.gaussian) std::printf(" dIC %.1f", gap::delta_ic(e, options.explain_options.information_criterion));
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");
@@ -97,7 +97,7 @@ void run(const GapCommandOptions& o) {
     if (o.json) {
         std::cout << gap::gap_to_json(r, options).dump(2) << "\n";
     } else {
-        print_text(r);
+        print_text(r, options);
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
     }
 }

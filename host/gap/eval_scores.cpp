@@ -93,7 +93,7 @@ std::string scores_markdown(const EvalScores& s) {
     std::ostringstream md;
     md << "Thresholds tuned on seeds " << o.tune_first << ".." << o.tune_last << ": penalty_per_param = "
        << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink << ", step_alpha = " << th.step_alpha
-       << ". Scored on seeds " << o.score_first << ".." << o.score_last << ", " << o.samples << "-sample logs, R = "
+       << ", information criterion = " << criterion_name(th.information_criterion) << ". Scored on seeds " << o.score_first << ".." << o.score_last << ", " << o.samples << "-sample logs, R = "
        << o.replicates << ".\n\n";
     md << "### Detection thresholds a_50 (tuning seeds, " << o.detection_logs
        << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
@@ -140,7 +140,8 @@ nlohmann::json scores_json(const EvalScores& s) {
     json j;
     j["thresholds"] = {{"penalty_per_param", s.thresholds.penalty_per_param},
                        {"min_heldout_shrink", s.thresholds.min_heldout_shrink},
-                       {"step_alpha", s.thresholds.step_alpha}};
+                       {"step_alpha", s.thresholds.step_alpha},
+                       {"information_criterion", criterion_name(s.thresholds.information_criterion)}};
     j["tune_seeds"] = {o.tune_first, o.tune_last};
     j["score_seeds"] = {o.score_first, o.score_last};
     j["samples"] = o.samples;

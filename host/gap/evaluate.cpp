@@ -207,9 +207,10 @@ Decision decide(const EvalCase& c, const Thresholds& th) {
     std::vector<const Explanation*> passing;
     for (const auto& e : c.tried)
         if (passes(e, th.penalty_per_param, th.min_heldout_shrink)) passing.push_back(&e);
-    const Choice choice = choose(passing);
+    const Choice choice = choose(passing, th.information_criterion);
     if (!choice.best || !closes_gap(*choice.best, th.step_alpha)) return {"unexplained", ""};
-    const bool close = choice.runner_up && close_call(*choice.best, *choice.runner_up, ExplainOptions{}.ambiguity_z);
+    const bool close = choice.runner_up &&
+                       close_call(*choice.best, *choice.runner_up, ExplainOptions{}.ambiguity_z, th.information_criterion);
     return {choice.best->effect, close ? choice.runner_up->effect : ""};
 }
 
@@ -342,7 +343,8 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
             // The level-step test's level trades out-of-library logs called unexplained against library effects
             // wrongly called so; the conventional 5 % comes first, so it wins ties.
             for (double step_alpha : {0.05, 0.02, 0.1, 0.2}) {
-                const Thresholds th{pen, shrink, step_alpha};
+              for (InformationCriterion ic : {InformationCriterion::bic, InformationCriterion::aic}) {
+                const Thresholds th{pen, shrink, step_alpha, ic};
                 std::size_t none = 0, fp = 0, right = 0, total = 0;
                 for (const auto& c : cases) {
                     if (!c.tune) continue;
@@ -358,6 +360,7 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
                 const double score = static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, total)) -
                                      (fpr > 0.05 ? 1.0 : 0.0);
                 if (score > best_score) best_score = score, best = th;
+              }
             }
         }
     }

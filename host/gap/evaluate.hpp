@@ -76,6 +76,7 @@ struct Thresholds {
     double penalty_per_param = ExplainOptions{}.penalty_per_param;
     double min_heldout_shrink = ExplainOptions{}.min_heldout_shrink;
     double step_alpha = ExplainOptions{}.step_alpha;
+    InformationCriterion information_criterion = ExplainOptions{}.information_criterion;
 };
 
 /// What the diagnosis says of a case under some thresholds.

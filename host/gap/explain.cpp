@@ -222,18 +222,19 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
 }
 
 // The full-log spectral likelihood of the current model with the candidate added (all parameters fitted on the
-// whole log): delta_bic against `base_bic` and the per-frequency terms.
+// whole log) against the current model's (`base_nll`, `base_parameters`): the gain, the parameters added and the
+// per-frequency terms.
 void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& judge, const std::vector<Earlier>& earlier,
-                       double base_bic) {
+                       double base_nll, int base_parameters) {
     const std::vector<bool> all(judge.t_s.size(), true);
     const bool shape = candidate(ex.effect).route == FitRoute::deterministic;
     GapModel m = shape ? fit_deterministic(ex.effect, current, judge, all).model : current;
     const PartPeriodogram p = residual_periodogram(m, judge, all);
     const SpectralFit fit = fit_noise(m, judge, p, earlier, shape ? "" : ex.effect, nullptr);
     spectral_nll(fit, judge.channel, m, p, &ex.spectral_terms);
-    const int shape_params = shape ? static_cast<int>(ex.params.size()) : 0;
-    ex.spectral_parameters = fit.free_parameters + shape_params;
-    ex.delta_bic = base_bic - (spectral_bic(fit, p) + shape_params * std::log(p.count));
+    ex.spectral_gain = 2.0 * (base_nll - fit.nll);
+    ex.spectral_extra_parameters = fit.free_parameters + (shape ? static_cast<int>(ex.params.size()) : 0) - base_parameters;
+    ex.spectral_observations = p.count;
 }
 
 // The level-step test of the model with Gaussian-process candidate `spectral`: its Gaussian processes on this
@@ -262,7 +263,11 @@ bool closes_gap(const Explanation& e, double step_alpha) {
     return !(e.residual_step.tested && e.residual_step.p_value <= step_alpha);
 }
 
-bool close_call(const Explanation& best, const Explanation& runner_up, double z) {
+double delta_ic(const Explanation& e, InformationCriterion ic) {
+    return e.spectral_gain - e.spectral_extra_parameters * parameter_price(ic, e.spectral_observations);
+}
+
+bool close_call(const Explanation& best, const Explanation& runner_up, double z, InformationCriterion ic) {
     const auto low_frequency = [](const Explanation& e) { return e.effect == "flicker" || e.effect == "rate_random_walk"; };
     if ((best.long_memory && low_frequency(runner_up)) || (runner_up.long_memory && low_frequency(best))) return true;
     const bool spectral = best.gaussian && runner_up.gaussian && !best.spectral_terms.empty() &&
@@ -279,27 +284,31 @@ bool close_call(const Explanation& best, const Explanation& runner_up, double z)
     }
     const double nd = static_cast<double>(n);
     const double sd = std::sqrt(std::max(0.0, (sum2 - sum * sum / nd) / (nd - 1.0)));
-    // Vuong's BIC correction: the likelihood ratio is charged half ln(observations) per extra parameter (the
-    // Whittle terms are per Fourier frequency, two real observations each).
-    if (spectral) sum -= 0.5 * (best.spectral_parameters - runner_up.spectral_parameters) * std::log(2.0 * nd);
+    // Vuong's correction: the likelihood ratio is charged half the criterion's price per extra parameter.
+    if (spectral)
+        sum -= 0.5 * (best.spectral_extra_parameters - runner_up.spectral_extra_parameters) *
+               parameter_price(ic, best.spectral_observations);
     return sum < z * std::sqrt(nd) * sd;
 }
 
-Choice choose(const std::vector<const Explanation*>& passing) {
-    const Explanation *g1 = nullptr, *g2 = nullptr, *other = nullptr;
+Choice choose(const std::vector<const Explanation*>& passing, InformationCriterion ic) {
+    const Explanation *g1 = nullptr, *g2 = nullptr, *other = nullptr, *simpler = nullptr;
     for (const Explanation* e : passing) {
         if (e->gaussian) {
-            if (!g1 || e->delta_bic > g1->delta_bic) {
+            if (!g1 || delta_ic(*e, ic) > delta_ic(*g1, ic)) {
                 g2 = g1;
                 g1 = e;
-            } else if (!g2 || e->delta_bic > g2->delta_bic) {
+            } else if (!g2 || delta_ic(*e, ic) > delta_ic(*g2, ic)) {
                 g2 = e;
             }
+            if ((e->effect == "rate_random_walk" || e->effect == "flicker") && (!simpler || delta_ic(*e, ic) > delta_ic(*simpler, ic)))
+                simpler = e;
         } else if (!other || e->heldout_loss_gain > other->heldout_loss_gain) {
             other = e;
         }
     }
     if (other && (!g1 || other->heldout_loss_gain > g1->heldout_loss_gain)) return {other, g1};
+    if (g1 && g1->long_memory && simpler) return {simpler, g1};
     return {g1, g2 ? g2 : other};
 }
 
@@ -358,10 +367,9 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             const bool shaped = std::any_of(result.accepted.begin(), result.accepted.end(), [&](const Explanation& e) {
                 return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
             });
-            const double base_bic = [&] {
+            const SpectralFit base_fit = [&] {
                 GapModel m = result.model;
-                const PartPeriodogram p = residual_periodogram(m, judge, everywhere);
-                return spectral_bic(fit_noise(m, judge, p, earlier, "", nullptr), p);
+                return fit_noise(m, judge, residual_periodogram(m, judge, everywhere), earlier, "", nullptr);
             }();
             std::vector<Option> here;
             for (const std::string& effect : names) {
@@ -394,7 +402,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 // step: a mean shape's misfit is judged by the cells it leaves located, and spikes cannot hold a
                 // level (a burst longer than one conversion, which the library's spikes do not make, would read as
                 // a short step).
-                if (ex.accepted && ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_bic);
+                if (ex.accepted && ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_fit.nll, base_fit.free_parameters);
                 if (ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
@@ -403,11 +411,12 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             std::vector<const Explanation*> passing;
             for (const auto& o : here)
                 if (o.ex.accepted) passing.push_back(&o.ex);
-            const Choice choice = choose(passing);
+            const Choice choice = choose(passing, options.information_criterion);
             std::size_t best_index = here.size();
             for (std::size_t k = 0; k < here.size(); ++k)
                 if (&here[k].ex == choice.best) best_index = k;
-            if (choice.best && choice.runner_up && close_call(*choice.best, *choice.runner_up, options.ambiguity_z)) {
+            if (choice.best && choice.runner_up &&
+                close_call(*choice.best, *choice.runner_up, options.ambiguity_z, options.information_criterion)) {
                 Explanation& b = here[best_index].ex;
                 b.ambiguous_with = choice.runner_up->effect;
                 b.settle += "; vs " + choice.runner_up->effect + ": " + choice.runner_up->settle;

@@ -14,6 +14,7 @@
 
 #include "host/gap/gap_model.hpp"
 #include "host/gap/level_step.hpp"
+#include "host/gap/spectral_fit.hpp"
 #include "host/gap/statistics.hpp"
 
 namespace driftlab::host::gap {
@@ -27,6 +28,7 @@ struct ExplainOptions {
     double min_heldout_shrink = 0.3; ///< the held-out gap excess must shrink by at least this fraction
     double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
     double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
+    InformationCriterion information_criterion = InformationCriterion::bic;  ///< choice among Gaussian candidates (tuned)
     int step_replicates = 40;      ///< at least this many replicates for the level-step test's null
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
     std::function<void(const std::string& stage)> progress;  ///< optional: told what is being fitted
@@ -49,9 +51,10 @@ struct Explanation {
     double heldout_loss_gain = 0.0; ///< synthetic log-likelihood gain on the held-out cells (x2)
     std::vector<double> heldout_cell_loss;  ///< per held-out cell: z^2 + 2 ln sd with the candidate (close_call)
     bool gaussian = false;          ///< a mean shape or a Gaussian process: compared by the spectral likelihood
-    double delta_bic = 0.0;         ///< full-log spectral BIC of the current model minus with the candidate
+    double spectral_gain = 0.0;     ///< 2 x (full-log Whittle nll of the current model - with the candidate)
+    int spectral_extra_parameters = 0;  ///< parameters the candidate adds to that fit (its own, or its shape's)
+    double spectral_observations = 0.0; ///< differences in the full-log spectral likelihood
     std::vector<double> spectral_terms;  ///< per Fourier frequency: Whittle nll with the candidate (close_call)
-    int spectral_parameters = 0;    ///< free parameters of that spectral fit
     bool long_memory = false;       ///< a Gauss-Markov fit whose correlation time exceeds 1/20 of the log
     std::size_t cells_left = 0;     ///< this channel's cells still located with the candidate in the model
     LevelStep residual_step;        ///< level-step test with the candidate (random-process candidates only)
@@ -71,20 +74,26 @@ struct ExplainResult {
 /// a held-out shrink of at least min_heldout_shrink and a held-out likelihood gain.
 bool passes(const Explanation& e, double penalty_per_param, double min_heldout_shrink);
 
+/// The full-log spectral information criterion of the current model minus that with the candidate (> 0 favours
+/// the candidate).
+double delta_ic(const Explanation& e, InformationCriterion ic);
+
 /// Whether `runner_up` is not separated from `best`: always when one is a long-memory Gauss-Markov fit and the
 /// other flicker or a random walk (look-alikes within the log); otherwise Vuong's test for non-nested models
 /// (Vuong, Econometrica 57(2), 1989) with d_j the runner-up's minus the best's loss: over the Fourier frequencies of
-/// the full-log spectral likelihood when both are Gaussian (with the BIC correction for their parameter counts),
-/// over the held-out cells otherwise; close when sum d_j < z sqrt(n) sd(d).
-bool close_call(const Explanation& best, const Explanation& runner_up, double z = 1.96);
+/// the full-log spectral likelihood when both are Gaussian (corrected for their parameter counts by `ic`), over
+/// the held-out cells otherwise; close when sum d_j < z sqrt(n) sd(d).
+bool close_call(const Explanation& best, const Explanation& runner_up, double z, InformationCriterion ic);
 
-/// The verdict among one channel's passing candidates: the Gaussian one with the largest delta_bic, unless
-/// spikes beat it on the held-out synthetic likelihood; the runner-up is the next Gaussian candidate, else spikes.
+/// The verdict among one channel's passing candidates: the Gaussian one with the largest delta_ic, unless spikes
+/// beat it on the held-out synthetic likelihood; the runner-up is the next Gaussian candidate, else spikes. A
+/// long-memory Gauss-Markov fit gives way to an accepted random walk or flicker (within the log it is one of them,
+/// with a parameter more), and becomes the runner-up.
 struct Choice {
     const Explanation* best = nullptr;
     const Explanation* runner_up = nullptr;
 };
-Choice choose(const std::vector<const Explanation*>& passing);
+Choice choose(const std::vector<const Explanation*>& passing, InformationCriterion ic);
 
 /// Whether the explanation leaves no level step: a random process explains a step only by an improbably large
 /// increment, and no library effect makes one, so a step left behind makes the verdict "unexplained". (Cells may

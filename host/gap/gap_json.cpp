@@ -28,7 +28,7 @@ json located_json(const std::vector<LocatedCell>& cells, const std::vector<Cell>
     return out;
 }
 
-json explanation_json(const Explanation& e) {
+json explanation_json(const Explanation& e, InformationCriterion ic) {
     json params = json::object();
     for (const auto& [k, v] : e.params) params[k] = report::json_number(v);
     return {{"effect", e.effect},
@@ -41,7 +41,7 @@ json explanation_json(const Explanation& e) {
             {"heldout_shrink", report::json_number(e.heldout_shrink)},
             {"likelihood_gain", report::json_number(e.loss_gain)},
             {"penalty", report::json_number(e.penalty)},
-            {"delta_bic", e.gaussian ? report::json_number(e.delta_bic) : json(nullptr)},
+            {"delta_ic", e.gaussian ? report::json_number(delta_ic(e, ic)) : json(nullptr)},
             {"cells_left", e.cells_left},
             {"level_step_p", e.residual_step.tested ? report::json_number(e.residual_step.p_value) : json(nullptr)},
             {"accepted", e.accepted},
@@ -55,13 +55,14 @@ json explanation_json(const Explanation& e) {
 json gap_to_json(const GapResult& r, const GapOptions& options) {
     json j;
     j["verdict"] = r.verdict;
+    j["information_criterion"] = criterion_name(options.explain_options.information_criterion);
     json ex = json::array();
-    for (const auto& e : r.accepted) ex.push_back(explanation_json(e));
+    for (const auto& e : r.accepted) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
     for (const auto& e : r.tried) {
         const bool added = std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
             return a.effect == e.effect && a.channel == e.channel && a.step == e.step;
         });
-        if (!added) ex.push_back(explanation_json(e));
+        if (!added) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
     }
     j["explanations"] = ex;
     j["located"] = located_json(r.located, r.layout);

@@ -78,15 +78,17 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     md << "\n" << r.located.size() << " cells located before, " << r.located_after.size() << " after.\n\n";
     md << "## Which: candidate effects\n\nFitted on the fitting part, judged on the held-out part; among accepted "
-          "Gaussian candidates the full-log spectral delta BIC chooses.\n\n"
-          "| step | effect | channel | parameters | held-out gap | shrink | gain / penalty | delta BIC | decision |\n"
+          "Gaussian candidates the full-log spectral information criterion ("
+       << criterion_name(options.explain_options.information_criterion)
+       << ") chooses.\n\n"
+          "| step | effect | channel | parameters | held-out gap | shrink | gain / penalty | delta IC | decision |\n"
           "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& e : r.tried) {
         std::string params;
         for (const auto& [k, v] : e.params) params += k + "=" + fixed(v, 4) + " ";
         md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << params << " | " << fixed(e.heldout_before)
            << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0) << " % | " << fixed(e.loss_gain, 1)
-           << " / " << fixed(e.penalty, 1) << " | " << (e.gaussian ? fixed(e.delta_bic, 1) : std::string("-")) << " | "
+           << " / " << fixed(e.penalty, 1) << " | " << (e.gaussian ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
            << (e.accepted ? "accepted" : "rejected")
            << (e.residual_step.significant ? ", leaves a level step" : "")
            << (e.ambiguous_with.empty() ? "" : ", ambiguous with " + e.ambiguous_with + " (" + e.settle + ")") << " |\n";

@@ -142,8 +142,14 @@ double spectral_nll(const SpectralFit& fit, Channel c, const GapModel& model, co
         terms);
 }
 
-double spectral_bic(const SpectralFit& fit, const PartPeriodogram& p) {
-    return 2.0 * fit.nll + fit.free_parameters * std::log(p.count);
+const char* criterion_name(InformationCriterion ic) { return ic == InformationCriterion::aic ? "aic" : "bic"; }
+
+double parameter_price(InformationCriterion ic, double observations) {
+    return ic == InformationCriterion::aic ? 2.0 : std::log(observations);
+}
+
+double information_criterion(const SpectralFit& fit, const PartPeriodogram& p, InformationCriterion ic) {
+    return 2.0 * fit.nll + fit.free_parameters * parameter_price(ic, p.count);
 }
 
 }  // namespace driftlab::host::gap

@@ -37,7 +37,13 @@ SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, con
 double spectral_nll(const SpectralFit& fit, Channel c, const GapModel& model, const PartPeriodogram& p,
                     std::vector<double>* terms = nullptr);
 
-/// BIC of a fit on its own periodogram: 2 nll + free parameters x ln(differences in the part).
-double spectral_bic(const SpectralFit& fit, const PartPeriodogram& p);
+/// How an information criterion charges one parameter, in units of 2 x nll: AIC 2, BIC ln(observations).
+enum class InformationCriterion { aic, bic };
+const char* criterion_name(InformationCriterion ic);
+double parameter_price(InformationCriterion ic, double observations);
+
+/// The criterion of a fit on its own periodogram: 2 nll + price x free parameters (observations: the part's
+/// differences).
+double information_criterion(const SpectralFit& fit, const PartPeriodogram& p, InformationCriterion ic);
 
 }  // namespace driftlab::host::gap

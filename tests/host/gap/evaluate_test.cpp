@@ -122,18 +122,19 @@ TEST(GapEval, CloseCallIsVuongOverHeldOutCells) {
     best.heldout_cell_loss = {1, 2, 3, 4, 5, 6};
     noisy.heldout_cell_loss = {2, 1, 5, 2, 5.5, 6};     // d = 1 -1 2 -2 0.5 0: sum 0.5, far below 1.96 sqrt(6) sd
     beaten.heldout_cell_loss = {3, 4.1, 5, 6.1, 7, 8};  // d = 2 2.1 2 2.1 2 2: sum 12.2, sd 0.05
-    EXPECT_TRUE(close_call(best, noisy));
-    EXPECT_FALSE(close_call(best, beaten));
-    EXPECT_FALSE(close_call(best, Explanation{}));  // nothing to compare
+    const auto bic = InformationCriterion::bic;
+    EXPECT_TRUE(close_call(best, noisy, 1.96, bic));
+    EXPECT_FALSE(close_call(best, beaten, 1.96, bic));
+    EXPECT_FALSE(close_call(best, Explanation{}, 1.96, bic));  // nothing to compare
     // A Gauss-Markov fit with a correlation time beyond 1/20 of the log is a random walk or flicker within it.
     best.effect = "gauss_markov";
     beaten.effect = "rate_random_walk";
-    EXPECT_FALSE(close_call(best, beaten));
+    EXPECT_FALSE(close_call(best, beaten, 1.96, bic));
     best.long_memory = true;
-    EXPECT_TRUE(close_call(best, beaten));
-    EXPECT_TRUE(close_call(beaten, best));
+    EXPECT_TRUE(close_call(best, beaten, 1.96, bic));
+    EXPECT_TRUE(close_call(beaten, best, 1.96, bic));
     beaten.effect = "spikes";
-    EXPECT_FALSE(close_call(best, beaten));
+    EXPECT_FALSE(close_call(best, beaten, 1.96, bic));
 }
 
 // The decision: among passing Gaussian candidates the largest full-log spectral delta BIC, unless spikes beat it on
@@ -149,13 +150,14 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
         e->heldout_shrink = 0.9;
     }
     a.gaussian = b.gaussian = true;
-    a.delta_bic = 30.0, a.spectral_parameters = 2, a.spectral_terms = {1, 2, 3, 4, 5, 6};
-    b.delta_bic = 28.0, b.spectral_parameters = 2, b.spectral_terms = {2, 1, 5, 2, 5.5, 6};  // Vuong: noise only
+    for (Explanation* e : {&a, &b}) e->spectral_extra_parameters = 1, e->spectral_observations = 1000.0;
+    a.spectral_gain = 30.0, a.spectral_terms = {1, 2, 3, 4, 5, 6};
+    b.spectral_gain = 28.0, b.spectral_terms = {2, 1, 5, 2, 5.5, 6};  // Vuong: noise only
     a.heldout_loss_gain = 50.0, a.heldout_cell_loss = {1, 2, 3, 4, 5, 6};
     b.heldout_loss_gain = 60.0;  // the battery prefers b, the spectral likelihood a: the latter decides
     weak.heldout_loss_gain = 10.0, weak.heldout_cell_loss = {3, 4.1, 5, 6.1, 7, 8};
     c.tried = {weak, b, a};
-    const Thresholds th{1.0, 0.3, 0.05};
+    const Thresholds th{1.0, 0.3, 0.05, InformationCriterion::bic};
     Decision d = decide(c, th);
     EXPECT_EQ(d.verdict, "flicker");
     EXPECT_EQ(d.ambiguous_with, "gauss_markov");
@@ -168,25 +170,46 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     c.tried[1].residual_step.tested = true;  // flicker leaves a level step at p = 0.03: the log is not explained
     c.tried[1].residual_step.p_value = 0.03;
     EXPECT_EQ(decide(c, th).verdict, "unexplained");
-    EXPECT_EQ(decide(c, {1.0, 0.3, 0.02}).verdict, "flicker");  // ... unless the step test's level is below p
+    EXPECT_EQ(decide(c, {1.0, 0.3, 0.02, InformationCriterion::bic}).verdict, "flicker");  // ... unless the level is below p
     c.detected = false;
     EXPECT_EQ(decide(c, th).verdict, "none");
 }
 
-// Between two Gaussian candidates, Vuong's test runs over the Fourier frequencies of the spectral likelihood, with
-// the BIC correction: an extra parameter costs half ln(observations) of likelihood.
+// Between two Gaussian candidates, Vuong's test runs over the Fourier frequencies of the spectral likelihood,
+// corrected by the information criterion: an extra parameter costs half its price (BIC: ln(observations); AIC: 2).
 TEST(GapEval, CloseCallBetweenGaussianCandidatesIsVuongOverFrequencies) {
     Explanation best, runner;
     best.gaussian = runner.gaussian = true;
-    best.spectral_parameters = runner.spectral_parameters = 2;
+    best.spectral_observations = runner.spectral_observations = 400.0;
+    best.spectral_extra_parameters = runner.spectral_extra_parameters = 2;
     best.spectral_terms.assign(200, 1.0);
     runner.spectral_terms.assign(200, 1.0);
     for (std::size_t j = 0; j < 200; ++j) runner.spectral_terms[j] += (j % 2 ? 0.25 : -0.15);  // sum 10, sd 0.2
-    EXPECT_FALSE(close_call(best, runner));  // 10 > 1.96 sqrt(200) 0.2 = 5.5
-    best.spectral_parameters = 3;            // one more parameter: 10 - ln(400) / 2 = 7.0, still separated
-    EXPECT_FALSE(close_call(best, runner));
-    best.spectral_parameters = 5;            // three more: 10 - 3 ln(400) / 2 = 1.0 < 5.5
-    EXPECT_TRUE(close_call(best, runner));
+    const auto bic = InformationCriterion::bic, aic = InformationCriterion::aic;
+    EXPECT_FALSE(close_call(best, runner, 1.96, bic));  // 10 > 1.96 sqrt(200) 0.2 = 5.5
+    best.spectral_extra_parameters = 3;                 // one more parameter: 10 - ln(400) / 2 = 7.0, still separated
+    EXPECT_FALSE(close_call(best, runner, 1.96, bic));
+    best.spectral_extra_parameters = 5;                 // three more: 10 - 3 ln(400) / 2 = 1.0 < 5.5
+    EXPECT_TRUE(close_call(best, runner, 1.96, bic));
+    EXPECT_FALSE(close_call(best, runner, 1.96, aic));  // AIC: 10 - 3 = 7 > 5.5
+}
+
+// The spectral choice: the largest delta IC; a long-memory Gauss-Markov fit gives way to an accepted random walk.
+TEST(GapEval, ALongMemoryGaussMarkovGivesWayToARandomWalk) {
+    Explanation gm, walk;
+    gm.effect = "gauss_markov", walk.effect = "rate_random_walk";
+    gm.gaussian = walk.gaussian = true;
+    gm.spectral_observations = walk.spectral_observations = 1500.0;
+    gm.spectral_gain = 120.0, gm.spectral_extra_parameters = 2;
+    walk.spectral_gain = 112.0, walk.spectral_extra_parameters = 1;
+    // AIC: 116 against 110; BIC: 105.4 against 104.7.
+    EXPECT_NEAR(delta_ic(gm, InformationCriterion::aic), 116.0, 1e-12);
+    EXPECT_NEAR(delta_ic(gm, InformationCriterion::bic), 120.0 - 2.0 * std::log(1500.0), 1e-12);
+    EXPECT_EQ(choose({&walk, &gm}, InformationCriterion::aic).best, &gm);
+    gm.long_memory = true;
+    const Choice c = choose({&walk, &gm}, InformationCriterion::aic);
+    EXPECT_EQ(c.best, &walk);
+    EXPECT_EQ(c.runner_up, &gm);
 }
 
 // The scores count the decisions of the scoring cases only, and the JSON carries the documented keys.
@@ -208,7 +231,7 @@ TEST(GapEval, ScoresCountTheScoringDecisions) {
         make("kasdin_flicker", "flicker", 2.0, true, false), make("kasdin_flicker", "flicker", 2.0, false, false),
         make("mode_hop", "", 2.0, true, false)};  // out of library, attributed: wrong
     EvalOptions o;
-    const EvalScores s = score(cases, Thresholds{1.0, 0.3, 0.05}, o, {});
+    const EvalScores s = score(cases, Thresholds{1.0, 0.3, 0.05, InformationCriterion::bic}, o, {});
     EXPECT_EQ(s.clean, 3u);
     EXPECT_EQ(s.clean_flagged, 1u);
     EXPECT_LT(s.fpr_low, 1.0 / 3.0);

@@ -28,9 +28,9 @@ std::string preferred(const GapModel& m, const PartPeriodogram& p) {
     std::string best;
     double best_bic = INFINITY;
     for (const std::string e : {"", "gauss_markov", "flicker", "rate_random_walk"}) {
-        const double bic = spectral_bic(fit_spectral(e.empty() ? std::vector<std::string>{} : std::vector<std::string>{e},
-                                                     Channel::gyro, m, p),
-                                        p);
+        const double bic = information_criterion(
+            fit_spectral(e.empty() ? std::vector<std::string>{} : std::vector<std::string>{e}, Channel::gyro, m, p), p,
+            InformationCriterion::bic);
         if (bic < best_bic) best_bic = bic, best = e.empty() ? "none" : e;
     }
     return best;
@@ -73,7 +73,7 @@ TEST(SpectralFit, JointFitStartsEarlierEffectsFromTheirParameters) {
     // than it alone by more than the extra parameter could buy by chance.
     const SpectralFit alone = fit_spectral({"gauss_markov"}, Channel::gyro, m, p);
     EXPECT_LE(f.nll, alone.nll + 1e-6);
-    EXPECT_GT(spectral_bic(f, p), spectral_bic(alone, p));
+    EXPECT_GT(information_criterion(f, p, InformationCriterion::bic), information_criterion(alone, p, InformationCriterion::bic));
 }
 
 }  // namespace
