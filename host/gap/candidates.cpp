@@ -36,7 +36,8 @@ const std::vector<CandidateInfo>& candidate_list() {
         {"thermal_second_tc", {"c3_unit", "t2_s"}, FitRoute::deterministic,
          "log a second power-on after a full cool-down: an exponential repeats at the same T2, a random walk does not"},
         {"ambient_cycle", {"amplitude_unit", "period_s", "phase_rad"}, FitRoute::deterministic,
-         "log a board thermistor, or log long enough for 3 cycles: the line at 1/P must be coherent with temperature"},
+         "log a board thermistor, or log long enough for 3 cycles: the line at 1/P must be coherent with temperature; "
+         "log again at a slightly different sample rate: an aliased mains line moves, a thermal cycle does not"},
         {"gauss_markov", {"sigma_unit", "tau_s"}, FitRoute::spectral,
          "log at least 20 correlation times: one Gauss-Markov gives an ADEV bump less than a decade wide, flicker a plateau"},
         {"flicker", {"b_unit"}, FitRoute::spectral,
@@ -58,6 +59,8 @@ const std::vector<NotIdentifiable>& not_identifiable_list() {
         {"saturation", "nothing approaches the rails at rest (needs motion beyond the range)"},
         {"adc_inl", "at rest the code follows time, so INL(code) and a slow drift (time) cannot be separated (needs several offsets)"},
         {"supply_coupling", "no supply channel is logged (log a Vcc divider channel)"},
+        {"mains_alias", "aliased mains pickup is a sine in the output, the same shape ambient_cycle fits; from one log at one "
+                        "sample rate the two are one candidate (log at a slightly different rate: an alias moves)"},
         {"clock_jitter", "at rest the values hardly change between instants, so a timing error moves them by dy/dt x jitter, "
                          "about nothing; the log's own timestamps are summarised under timing (needs a reference clock for the drift)"},
     };
@@ -66,8 +69,8 @@ const std::vector<NotIdentifiable>& not_identifiable_list() {
 
 const std::vector<NotIdentifiable>& not_tried_list() {
     static const std::vector<NotIdentifiable> list = {
-        {"adc_dnl", "not a candidate yet: the frac statistic locates it, no fit is attempted"},
-        {"mains_alias", "not a candidate yet: the psd statistic locates it, no fit is attempted"},
+        {"adc_dnl", "not a candidate yet: the frac statistic locates it; a per-code pattern needs the raw codes (raw-mode log), "
+                    "which the diagnosis does not read"},
     };
     return list;
 }
