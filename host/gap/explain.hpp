@@ -25,10 +25,10 @@ struct ExplainOptions {
     int max_evaluations = 18;      ///< Nelder-Mead budget per simulated-route candidate (the budget gap-eval scores)
     int max_effects = 3;           ///< stepwise limit over the whole log
     double penalty_per_param = 0.25; ///< x ln(cells): the BIC-like price of one parameter (tuned by gap-eval)
-    double min_heldout_shrink = 0.3; ///< the held-out gap excess must shrink by at least this fraction
+    double min_heldout_shrink = 0.4; ///< the held-out gap excess must shrink by at least this fraction (tuned)
     double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
     double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
-    InformationCriterion information_criterion = InformationCriterion::bic;  ///< choice among Gaussian candidates (tuned)
+    InformationCriterion information_criterion = InformationCriterion::aic;  ///< choice among Gaussian candidates (tuned)
     int step_replicates = 40;      ///< at least this many replicates for the level-step test's null
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
     std::function<void(const std::string& stage)> progress;  ///< optional: told what is being fitted
