@@ -260,7 +260,7 @@ bool passes(const Explanation& e, double penalty_per_param, double min_heldout_s
 }
 
 bool closes_gap(const Explanation& e, double step_alpha) {
-    return !(e.residual_step.tested && e.residual_step.p_value <= step_alpha);
+    return !leaves_step(e.residual_step, step_alpha);
 }
 
 double delta_ic(const Explanation& e, InformationCriterion ic) {

@@ -74,13 +74,17 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
                       {"heldout", report::json_number(r.gap_after_heldout)},
                       {"heldout_bound", report::json_number(r.gap_bound_after)}};
     json steps = json::array();
-    for (const auto& s : r.level_steps)
+    for (const auto& s : r.level_steps) {
+        json found = json::array();
+        for (const auto& step : s.steps)
+            found.push_back({{"t_s", report::json_number(step.t_s)}, {"size_counts", report::json_number(step.size_counts)}});
         steps.push_back({{"channel", kChannelNames[channel_index(s.channel)]},
-                         {"t_s", report::json_number(s.t_s)},
-                         {"size_counts", report::json_number(s.size_counts)},
+                         {"steps", found},
                          {"statistic", report::json_number(s.statistic)},
+                         {"margin", report::json_number(s.margin)},
                          {"p", report::json_number(s.p_value)},
                          {"significant", s.significant}});
+    }
     j["level_steps"] = steps;
     json ni = json::array();
     for (const auto& n : not_identifiable_list()) ni.push_back({{"effect", n.effect}, {"reason", n.reason}});

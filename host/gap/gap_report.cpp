@@ -94,8 +94,11 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
            << (e.ambiguous_with.empty() ? "" : ", ambiguous with " + e.ambiguous_with + " (" + e.settle + ")") << " |\n";
     }
     for (const auto& s : r.level_steps) {
-        md << "\nLevel-step test, " << kChannelNames[channel_index(s.channel)] << ": largest step " << fixed(s.size_counts, 3)
-           << " counts at t = " << fixed(s.t_s, 1) << " s, p = " << fixed(s.p_value, 3)
+        md << "\nLevel-step test, " << kChannelNames[channel_index(s.channel)] << ": two steps of "
+           << fixed(s.steps[0].size_counts, 3) << " counts at t = " << fixed(s.steps[0].t_s, 1) << " s and "
+           << fixed(s.steps[1].size_counts, 3) << " counts at t = " << fixed(s.steps[1].t_s, 1)
+           << " s fit better than the explanation by " << fixed(s.statistic, 1) << " (price " << fixed(s.margin, 1)
+           << "), p = " << fixed(s.p_value, 3)
            << (s.significant ? " (significant: a step no library effect makes; the log is unexplained)" : " (none beyond the model's own)")
            << "\n";
     }

@@ -8,6 +8,7 @@
 #include <unsupported/Eigen/FFT>
 
 #include "host/gap/candidates.hpp"
+#include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
 
@@ -17,6 +18,7 @@ namespace {
 
 constexpr double kEdgeFraction = 0.02;  // a step this close to an end is half absorbed by the eq. 1 fit
 constexpr double kMemoryShare = 0.1;    // the whitening's memory, as a share of the log
+constexpr int kFloorEvaluations = 40;   // Nelder-Mead budget of the explanation's one free parameter, its floor
 
 struct Largest {
     std::size_t index = 0;  ///< difference index: the step lies between samples index and index + 1
@@ -24,7 +26,8 @@ struct Largest {
     double size = 0.0;      ///< estimated impulse [counts]
 };
 
-// The largest |T| of the residual `r` (n + 1 samples) under the differenced spectral density `density` of its
+// The largest standardised impulse |T(theta)| = |(S^-1 d)_theta| / sqrt((S^-1)_theta,theta) of the differenced
+// residual `r` (n + 1 samples; a step is an impulse there) under the differenced spectral density `density` of its
 // mirror extension (length 2n). The mirror makes the series circular without a jump where it wraps; the whitening
 // filter then acts as on an infinite series, and the ends are kept clear of the maximum anyway.
 Largest largest_step(const std::vector<double>& r, const std::vector<double>& density) {
@@ -57,6 +60,8 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
 
 }  // namespace
 
+bool leaves_step(const LevelStep& s, double alpha) { return s.tested && s.p_value <= alpha && s.statistic > s.margin; }
+
 LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s, const std::vector<double>& y,
                           const std::vector<std::string>& spectral_effects, const std::vector<double>& spectral_params,
                           int replicates, std::uint64_t seed, int threads, double alpha) {
@@ -65,32 +70,58 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     std::vector<double> r(y.size());
     for (std::size_t k = 0; k < r.size(); ++k) r[k] = y[k] - mean[k];
     const std::vector<bool> all(r.size(), true);
-    const SpectralFit fit = fit_spectral(spectral_effects, c, model, part_periodogram(r, all), spectral_params);
-    // The whitening compares levels before and after each instant over at most a tenth of the log: a slight random
-    // walk (its filter's memory is sqrt(white / increment) samples) keeps a stationary model's 1/w^2 low-frequency
-    // gain from weighing the whole log's mean, which the eq. 1 fit has already bent.
-    const std::size_t n = smooth_length_at_most(r.size() - 1);
+    const PartPeriodogram real_p = part_periodogram(r, all);
     const std::vector<double> floor_acov = white_floor_autocovariance(model.smoothing);
-    OutputSpectrum spectrum = model_spectrum(spectral_effects, c, fit.params, model, fit.white);
-    spectrum.walk_increment_variance += fit.white * floor_acov[0] * std::pow(kMemoryShare * static_cast<double>(n), -2.0);
-    const std::vector<double> density = differenced_density(spectrum, floor_acov, 2 * n);
-    const Largest real = largest_step(r, density);
+    // The explanation is the model as its replicates simulate it; only its white floor is estimated, on the real
+    // log, so that the statistic means the same on the log and on the replicates.
+    SpectralFit explanation = fit_spectral({}, c, model, real_p);
+    explanation.effects = spectral_effects;
+    explanation.params = spectral_params;
+    const auto floor_nll = [&](const std::vector<double>& ln_white) {
+        explanation.white = std::exp(ln_white[0]);
+        return spectral_nll(explanation, c, model, real_p);
+    };
+    explanation.white = std::exp(nelder_mead(floor_nll, {std::log(explanation.white)}, {0.3}, kFloorEvaluations).x[0]);
+    // The rival's steps are located by whitening with the floor alone, comparing levels before and after each
+    // instant over at most a tenth of the log: a slight random walk (its filter's memory is sqrt(white / increment)
+    // samples) keeps the floor's 1/w^2 low-frequency gain from weighing the whole log's mean, which the eq. 1 fit
+    // has already bent.
+    const std::size_t n = smooth_length_at_most(r.size() - 1);
+    OutputSpectrum floor;
+    floor.white = explanation.white;
+    floor.walk_increment_variance = explanation.white * floor_acov[0] * std::pow(kMemoryShare * static_cast<double>(n), -2.0);
+    const std::vector<double> density = differenced_density(floor, floor_acov, 2 * n);
+    // The rival (floor and steps) is fitted to each series.
+    const auto statistic = [&](std::vector<double> x, std::array<Largest, 2>* found) {
+        const double explained = spectral_nll(explanation, c, model, part_periodogram(x, all));
+        for (std::size_t s = 0; s < 2; ++s) {
+            const Largest l = largest_step(x, density);
+            if (found) (*found)[s] = l;
+            for (std::size_t k = l.index + 1; k < x.size(); ++k) x[k] -= l.size;
+        }
+        return explained - fit_spectral({}, c, model, part_periodogram(x, all)).nll;
+    };
+    std::array<Largest, 2> steps;
+    const double real = statistic(r, &steps);
     std::array<bool, kChannelCount> only{};
     only[i] = true;
     const Eigen::MatrixXd null = simulate_replicates(model, t_s, only, replicates, seed, threads, [&](const SimOutput& sim) {
         std::vector<double> rr(sim[i].size());
         for (std::size_t k = 0; k < rr.size(); ++k) rr[k] = sim[i][k] - mean[k];
-        return std::vector<double>{largest_step(rr, density).t};
+        return std::vector<double>{statistic(std::move(rr), nullptr)};
     });
     LevelStep out;
     out.tested = true;
     out.channel = c;
-    out.t_s = 0.5 * (t_s[real.index] + t_s[real.index + 1]);
-    out.size_counts = real.size;
-    out.statistic = real.t;
-    const auto exceed = (null.col(0).array() >= real.t).count();
+    for (std::size_t s = 0; s < 2; ++s)
+        out.steps[s] = {0.5 * (t_s[steps[s].index] + t_s[steps[s].index + 1]), steps[s].size};
+    out.statistic = real;
+    // Two instants and two sizes against the explanation's own parameters (the floor is in both).
+    const double extra = 4.0 - static_cast<double>(spectral_params.size());
+    out.margin = std::max(0.0, extra) * 0.5 * std::log(real_p.count);
+    const auto exceed = (null.col(0).array() >= real).count();
     out.p_value = (1.0 + static_cast<double>(exceed)) / (1.0 + static_cast<double>(replicates));
-    out.significant = out.p_value <= alpha;
+    out.significant = leaves_step(out, alpha);
     return out;
 }
 
