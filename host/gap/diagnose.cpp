@@ -40,8 +40,8 @@ CellFilter in_segment(Segment s) {
 }
 
 // The level-step test of the final model on each channel with an accepted Gaussian process and no accepted mean
-// shape (whose misfit is judged by the cells it leaves located), at alpha / channels (Bonferroni), with enough
-// replicates for that level to be reachable.
+// shape (whose misfit is judged by the cells it leaves located), at alpha / channels (Bonferroni; the test itself
+// takes enough replicates for its level to be reachable).
 std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData& log, const GapOptions& options) {
     std::vector<std::size_t> tested;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
@@ -56,8 +56,7 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
     std::vector<LevelStep> out;
     if (tested.empty()) return out;
     const double alpha = options.explain_options.step_alpha / static_cast<double>(tested.size());
-    const int replicates = std::max({options.replicates, options.explain_options.step_replicates,
-                                     static_cast<int>(std::ceil(2.0 / alpha))});
+    const int replicates = std::max(options.replicates, options.explain_options.step_replicates);
     for (std::size_t c : tested) {
         std::vector<std::string> effects;
         std::vector<double> params;

@@ -80,8 +80,11 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
             found.push_back({{"t_s", report::json_number(step.t_s)}, {"size_counts", report::json_number(step.size_counts)}});
         steps.push_back({{"channel", kChannelNames[channel_index(s.channel)]},
                          {"steps", found},
+                         {"impulse", report::json_number(s.impulse)},
+                         {"impulse_p", report::json_number(s.impulse_p)},
                          {"statistic", report::json_number(s.statistic)},
                          {"margin", report::json_number(s.margin)},
+                         {"rival_p", report::json_number(s.rival_p)},
                          {"p", report::json_number(s.p_value)},
                          {"significant", s.significant}});
     }

@@ -97,8 +97,9 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         md << "\nLevel-step test, " << kChannelNames[channel_index(s.channel)] << ": two steps of "
            << fixed(s.steps[0].size_counts, 3) << " counts at t = " << fixed(s.steps[0].t_s, 1) << " s and "
            << fixed(s.steps[1].size_counts, 3) << " counts at t = " << fixed(s.steps[1].t_s, 1)
-           << " s fit better than the explanation by " << fixed(s.statistic, 1) << " (price " << fixed(s.margin, 1)
-           << "), p = " << fixed(s.p_value, 3)
+           << " s: likelihood over the explanation " << fixed(s.statistic, 1) << " (price " << fixed(s.margin, 1)
+           << ", p " << fixed(s.rival_p, 3) << "); largest whitened impulse " << fixed(s.impulse, 2) << " (p "
+           << fixed(s.impulse_p, 3) << "); combined p = " << fixed(s.p_value, 3)
            << (s.significant ? " (significant: a step no library effect makes; the log is unexplained)" : " (none beyond the model's own)")
            << "\n";
     }

@@ -1,11 +1,17 @@
 // Is a level step left in the log once the diagnosis has explained it? No effect of the library makes an abrupt,
 // lasting change of the mean (a mode hop, a knocked connector), yet a random walk or a long-memory Gauss-Markov
-// process closes the battery's gap around one. The test pits the explanation against its non-nested rival, the
-// white floor with two level steps (a hop and a return), by their Whittle likelihoods on the whole log: Cox's test
-// of separate families, with the null distribution of the likelihood difference from replicates of the explanation
-// (a parametric bootstrap). The rival must also win by the Schwarz (BIC) price of its extra parameters, the
-// consistent choice for the number of change points: a walk with heavy-tailed increments holds a few large ones,
-// which a Gaussian replicate lacks, and is still a walk. docs/gap.md §Level steps.
+// process closes the battery's gap around one. Two Monte Carlo tests against replicates of the explanation, each at
+// alpha / 2 (Bonferroni):
+// - the impulse test: the differenced residual, whitened by the explanation's own spectrum, where a step becomes a
+//   single impulse; the largest standardised impulse T = max_theta (S^-1 d)_theta / sqrt((S^-1)_theta,theta) (the
+//   additive-outlier statistic). Strong against a large step, weak against a small one that the explanation's
+//   fitted walk has absorbed;
+// - the rival test: the explanation against its non-nested rival, the white floor with two level steps (a hop and a
+//   return), by their Whittle likelihoods on the whole log (Cox's test of separate families, its null distribution
+//   simulated). The rival must also win by the Schwarz (BIC) price of its extra parameters, the consistent choice
+//   for the number of change points: a walk with heavy-tailed increments holds a few large ones, which a Gaussian
+//   replicate lacks, and is still a walk.
+// docs/gap.md §Level steps.
 #pragma once
 
 #include <array>
@@ -26,19 +32,21 @@ struct LevelStep {
     bool tested = false;       ///< false: no test was run (the fields below are defaults)
     Channel channel = Channel::gyro;
     std::array<StepEstimate, 2> steps{};  ///< the rival's two steps, the larger first (2 % kept clear of each end)
+    double impulse = 0.0;      ///< largest standardised impulse under the explanation's whitening
+    double impulse_p = 1.0;    ///< its Monte Carlo p: (1 + replicates at least as large) / (1 + replicates)
     double statistic = 0.0;    ///< Whittle nll of the explanation minus the rival's: > 0 where the steps fit better
     double margin = 0.0;       ///< the BIC price of the rival's extra parameters, ln(n) / 2 each [nll units]
-    double p_value = 1.0;      ///< Monte Carlo: (1 + replicates at least as large) / (1 + replicates)
+    double rival_p = 1.0;      ///< the statistic's Monte Carlo p
+    double p_value = 1.0;      ///< 2 x the smaller p (the rival's only where its statistic exceeds the margin), <= 1
     bool significant = false;  ///< leaves_step() at the test's alpha
 };
 
-/// A level step no library effect makes: the rival beats the explanation beyond the model's own replicates (level
-/// alpha) and by more than its extra parameters' price.
+/// A level step no library effect makes: p_value <= alpha.
 bool leaves_step(const LevelStep& s, double alpha);
 
 /// Tests channel `c` of the log (`t_s`, `y`) against `model`, whose Gaussian-process effects on that channel are
-/// `spectral_effects` with `spectral_params` (concatenated, candidate_param_names() order; refitted on the whole
-/// log together with the white floor before whitening).
+/// `spectral_effects` with `spectral_params` (concatenated, candidate_param_names() order; kept, only the white floor
+/// is estimated on the log), at level `alpha` with at least `replicates` replicates (and at least 4 / alpha).
 LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s, const std::vector<double>& y,
                           const std::vector<std::string>& spectral_effects, const std::vector<double>& spectral_params,
                           int replicates, std::uint64_t seed, int threads, double alpha);

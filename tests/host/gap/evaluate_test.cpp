@@ -167,14 +167,10 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     c.tried[0].heldout_loss_gain = 80.0;  // spikes beat the best Gaussian candidate on the held-out cells
     EXPECT_EQ(decide(c, th).verdict, "spikes");
     c.tried = {weak, a};
-    c.tried[1].residual_step.tested = true;  // flicker leaves a level step at p = 0.03 that pays its price: unexplained
+    c.tried[1].residual_step.tested = true;  // flicker leaves a level step at p = 0.03: the log is not explained
     c.tried[1].residual_step.p_value = 0.03;
-    c.tried[1].residual_step.statistic = 12.0;
-    c.tried[1].residual_step.margin = 11.0;
     EXPECT_EQ(decide(c, th).verdict, "unexplained");
     EXPECT_EQ(decide(c, {1.0, 0.3, 0.02, InformationCriterion::bic}).verdict, "flicker");  // ... unless the level is below p
-    c.tried[1].residual_step.statistic = 10.0;  // ... or the steps fit better by less than their parameters' price
-    EXPECT_EQ(decide(c, th).verdict, "flicker");
     c.detected = false;
     EXPECT_EQ(decide(c, th).verdict, "none");
 }
