@@ -142,6 +142,7 @@ GapOptions gap_options(std::uint64_t seed, const EvalOptions& options) {
     go.explain_options.fit_replicates = options.fit_replicates;
     go.explain_options.max_evaluations = options.max_evaluations;
     go.explain_options.max_effects = 1;
+    go.explain_options.step_test_candidates = true;
     return go;
 }
 

@@ -403,7 +403,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 // level (a burst longer than one conversion, which the library's spikes do not make, would read as
                 // a short step).
                 if (ex.accepted && ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_fit.nll, base_fit.free_parameters);
-                if (ex.accepted && route == FitRoute::spectral && !shaped)
+                if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
                 here.push_back({ex, fitted.model, std::move(fitted.refits)});

@@ -30,6 +30,9 @@ struct ExplainOptions {
     double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
     InformationCriterion information_criterion = InformationCriterion::aic;  ///< choice among Gaussian candidates (tuned)
     int step_replicates = 40;      ///< at least this many replicates for the level-step test's null
+    /// Level-step test every accepted Gaussian-process candidate (gap-eval, whose tuned thresholds may choose any of
+    /// them). driftlab gap tests its final model instead (diagnose()), which the choice does not depend on.
+    bool step_test_candidates = false;
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
     std::function<void(const std::string& stage)> progress;  ///< optional: told what is being fitted
     std::uint64_t seed = 1;
@@ -57,7 +60,7 @@ struct Explanation {
     std::vector<double> spectral_terms;  ///< per Fourier frequency: Whittle nll with the candidate (close_call)
     bool long_memory = false;       ///< a Gauss-Markov fit whose correlation time exceeds 1/20 of the log
     std::size_t cells_left = 0;     ///< this channel's cells still located with the candidate in the model
-    LevelStep residual_step;        ///< level-step test with the candidate (random-process candidates only)
+    LevelStep residual_step;        ///< level-step test with the candidate (Gaussian processes; step_test_candidates)
     bool accepted = false;
     int step = 0;                   ///< stepwise round in which it was tried (1-based)
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
