@@ -15,6 +15,9 @@
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
+#include "host/gap/plain_recording.hpp"
+#include "host/fit/series.hpp"
+#include "host/log/numeric_table.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
 #include "sim/model/model_file.hpp"
@@ -33,7 +36,27 @@ struct GapCommandOptions {
     double fit_fraction = 0.6;
     gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     bool locate_only = false;
+    std::vector<std::string> mappings;  ///< plain recordings: CHANNEL=COLUMN:LSB
+    double tau0_s = 0.0;                ///< plain recordings: the raw sample period
+    std::size_t block = 1;              ///< plain recordings: samples averaged per output
 };
+
+// A canonical log as it is; a plain table through its column mappings (never guessed).
+LogData load(const GapCommandOptions& o) {
+    if (fit::is_canonical_log(o.path)) {
+        if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
+            throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
+        return read_log(o.path);
+    }
+    if (o.mappings.empty() || !(o.tau0_s > 0.0))
+        throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
+                         "--as CHANNEL=COLUMN:LSB (e.g. --as gyro=col1:0.00875)");
+    gap::PlainRecording how;
+    for (const auto& m : o.mappings) how.columns.push_back(gap::parse_column_mapping(m));
+    how.sample_period_s = o.tau0_s;
+    how.block = o.block;
+    return gap::log_from_table(read_numeric_table(o.path), how);
+}
 
 void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     std::printf("verdict: %s\n", r.verdict.c_str());
@@ -72,7 +95,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
 }
 
 void run(const GapCommandOptions& o) {
-    const LogData log = read_log(o.path);
+    const LogData log = load(o);
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     gap::GapOptions options;
     options.replicates = o.replicates;
@@ -122,7 +145,16 @@ void register_gap(CLI::App& app) {
     auto o = std::make_shared<GapCommandOptions>();
     CLI::App* cmd = app.add_subcommand("gap", "Sim-to-real gap: where the calibrated simulator differs from a real log, "
                                               "which effect explains it, how far the gap shrinks");
-    cmd->add_option("file", o->path, "Real canonical log")->required();
+    cmd->add_option("file", o->path, "Real log: a canonical log, or a plain table with --tau0 and --as")->required();
+    cmd->add_option("--as", o->mappings,
+                    "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
+                    "LSB (its resolution in the column's unit), e.g. gyro=col1:0.00875; repeat per channel");
+    cmd->add_option("--tau0", o->tau0_s, "Plain recordings: the raw sample period [s] (timing from a t_s/t/time column "
+                                         "if there is one)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--block", o->block, "Plain recordings: samples averaged per output (an order-0 smoother of that "
+                                         "window; default 1)")
+        ->check(CLI::Range(1, 100000));
     cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter); default: the paper's unit");
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));

@@ -1,6 +1,6 @@
 // Plain numeric files: one or more columns separated by blanks or commas, `#` comment lines, an optional
 // first line of column names. Used by `allan --kind` and for recordings that are not canonical logs.
-// Spec: docs/log-format.md §6.
+// Spec: docs/log-format.md §8.
 #pragma once
 
 #include <cstddef>

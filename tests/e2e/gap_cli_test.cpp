@@ -1,7 +1,10 @@
 // `driftlab gap` as a user runs it on a log of the full host-in-the-loop chain (native firmware, frames, radio
 // link): the diagnosis's in-process replicate chain leaves out frames and link, so a log the simulator made must
-// come out with no gap. And bad input is refused with a message naming the file.
+// come out with no gap. A plain recording (another logger's table) runs through its column mapping. And bad input
+// is refused with a message naming the file.
+#include <cmath>
 #include <fstream>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -25,6 +28,37 @@ TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
     // All four channels vary (drift and noise) and are analysed; the score is near 1 when nothing is missing.
     EXPECT_LT(j["gap_before"]["fit"].get<double>(), 2.0);
     EXPECT_LT(j["gap_before"]["heldout"].get<double>(), 2.0);
+}
+
+// A third-party recording: one column of rate values at 8.75 mdps resolution, 100 Hz, a warm-up and white noise.
+TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
+    TempDir dir("gapplain");
+    const std::string table = dir.file("rate.txt");
+    {
+        std::ofstream out(table);
+        std::mt19937 rng(5);
+        std::normal_distribution<double> noise(0.0, 0.2);
+        for (int k = 0; k < 24000; ++k)
+            out << 0.00875 * std::round((0.5 * (1.0 - std::exp(-k * 0.01 / 60.0)) + noise(rng)) / 0.00875) << "\n";
+    }
+    const RunResult gap = run_driftlab(
+        {"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40", "--replicates", "12", "--locate-only", "--json"},
+        dir.path());
+    ASSERT_EQ(gap.exit_code, 0) << gap.output;
+    const auto j = nlohmann::json::parse(gap.output);
+    EXPECT_EQ(j["verdict"], "none");  // --locate-only: nothing is explained
+    EXPECT_TRUE(j["located"].empty()) << j["located"].dump();  // white noise on eq. 1's own shape: no gap
+    // Only the mapped channel varies and is analysed; the blocks are the smoother.
+    EXPECT_EQ(j["calibration"]["channels"].size(), 1u) << j["calibration"].dump();
+    EXPECT_EQ(j["calibration"]["window"], 40);
+    EXPECT_DOUBLE_EQ(j["calibration"]["sample_period_s"].get<double>(), 0.4);
+
+    const RunResult unmapped = run_driftlab({"gap", table}, dir.path());
+    EXPECT_EQ(unmapped.exit_code, 2);
+    EXPECT_NE(unmapped.output.find("--as CHANNEL=COLUMN:LSB"), std::string::npos) << unmapped.output;
+    const RunResult wrong = run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=gx:0.00875"}, dir.path());
+    EXPECT_EQ(wrong.exit_code, 2);
+    EXPECT_NE(wrong.output.find("col1"), std::string::npos) << wrong.output;  // names the columns there are
 }
 
 TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {

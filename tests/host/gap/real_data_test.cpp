@@ -4,39 +4,26 @@
 // smoother of the log (window = conversions per output = 40), at an assumed 100 Hz raw rate.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "host/gap/diagnose.hpp"
+#include "host/gap/plain_recording.hpp"
 
 namespace driftlab::host::gap {
 namespace {
 
-constexpr int kBlock = 40;
-constexpr double kRawPeriodS = 0.01;
-
 bool load(LogData& log) {
-    std::ifstream in(std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt");
-    if (!in) return false;
-    std::vector<double> raw;
-    double v;
-    while (in >> v) raw.push_back(512.0 + v / 0.00875);
-    log.source_name = "gyro2_x.txt";
-    for (std::size_t b = 0; (b + 1) * kBlock <= raw.size(); ++b) {
-        double sum = 0.0;
-        for (int i = 0; i < kBlock; ++i) sum += std::round(raw[b * kBlock + static_cast<std::size_t>(i)]);
-        log.t_s.push_back(static_cast<double>((b + 1) * kBlock) * kRawPeriodS);
-        log.seq.push_back(b);
-        log.counts[0].push_back(sum / kBlock);
-    }
-    for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(log.t_s.size(), 512.0);
-    log.metadata.set("sample_period_s", kBlock * kRawPeriodS);
-    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(kBlock));
-    log.metadata.set("window", static_cast<std::int64_t>(kBlock));
-    log.metadata.set("fit_order", static_cast<std::int64_t>(0));
+    const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt";
+    if (!std::filesystem::exists(path)) return false;
+    PlainRecording how;
+    how.columns = {parse_column_mapping("gyro=col1:0.00875")};
+    how.sample_period_s = 0.01;
+    how.block = 40;
+    log = log_from_table(read_numeric_table(path), how);
     return true;
 }
 

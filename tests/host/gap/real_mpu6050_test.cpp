@@ -1,7 +1,7 @@
 // The real MPU6050 recording at rest (shared/data/real/mpu6050_unmoved-with-x-pointing-forward-10min.csv,
 // PROVENANCE.md): gyro X and the three accelerometer axes, already warm, 655 s at a nominal 100 Hz with irregular
-// logging. Each channel becomes counts of its own LSB (1/131 deg/s, 1/4096 g) around mid-scale, and blocks of 10
-// samples are the order-0 smoother of the log (window = conversions per output = 10). The diagnosis must run on all
+// logging. Each channel becomes codes of its own LSB (1/131 deg/s, 1/4096 g) around mid-scale, and blocks of 10
+// samples are the order-0 smoother of the log (window = conversions per output = 10; plain_recording.hpp). The diagnosis must run on all
 // four channels and report what it finds, and it must see the logger's irregular timing.
 #include <cmath>
 #include <cstdio>
@@ -11,40 +11,22 @@
 #include <gtest/gtest.h>
 
 #include "host/gap/diagnose.hpp"
+#include "host/gap/plain_recording.hpp"
 #include "host/log/numeric_table.hpp"
 
 namespace driftlab::host::gap {
 namespace {
 
-constexpr std::size_t kBlock = 10;
-
 bool load(LogData& log) {
     const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/mpu6050_unmoved-with-x-pointing-forward-10min.csv";
     if (!std::filesystem::exists(path)) return false;
-    const NumericTable t = read_numeric_table(path);
-    const std::array<std::pair<const char*, double>, kChannelCount> source = {
-        {{"gx_dps", 131.0}, {"ax_g", 4096.0}, {"ay_g", 4096.0}, {"az_g", 4096.0}}};
-    log.source_name = "mpu6050_unmoved-with-x-pointing-forward-10min.csv";
-    const auto& time = t.columns[t.column_index("t_s")];
-    for (std::size_t c = 0; c < kChannelCount; ++c) {
-        const auto& v = t.columns[t.column_index(source[c].first)];
-        double mean = 0.0;
-        for (double x : v) mean += x;
-        mean /= static_cast<double>(v.size());
-        for (std::size_t b = 0; (b + 1) * kBlock <= v.size(); ++b) {
-            double sum = 0.0;
-            for (std::size_t i = 0; i < kBlock; ++i) sum += std::round((v[b * kBlock + i] - mean) * source[c].second);
-            log.counts[c].push_back(512.0 + sum / kBlock);
-        }
-    }
-    for (std::size_t b = 0; (b + 1) * kBlock <= time.size(); ++b) {
-        log.t_s.push_back(time[(b + 1) * kBlock - 1]);
-        log.seq.push_back(b);
-    }
-    log.metadata.set("sample_period_s", 0.1);
-    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(kBlock));
-    log.metadata.set("window", static_cast<std::int64_t>(kBlock));
-    log.metadata.set("fit_order", static_cast<std::int64_t>(0));
+    PlainRecording how;
+    for (const char* m : {"gyro=gx_dps:0.0076335877862595417", "accel_x=ax_g:0.000244140625", "accel_y=ay_g:0.000244140625",
+                          "accel_z=az_g:0.000244140625"})
+        how.columns.push_back(parse_column_mapping(m));
+    how.sample_period_s = 0.01;
+    how.block = 10;
+    log = log_from_table(read_numeric_table(path), how);
     return true;
 }
 

@@ -1,0 +1,95 @@
+// Plain recordings as logs; see plain_recording.hpp.
+#include "host/gap/plain_recording.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "host/fit/series.hpp"
+#include "host/util/error.hpp"
+
+namespace driftlab::host::gap {
+
+namespace {
+
+constexpr double kMidScale = 512.0;
+constexpr double kFullScale = 1023.0;
+
+}  // namespace
+
+ColumnMapping parse_column_mapping(const std::string& text) {
+    const auto eq = text.find('='), colon = text.rfind(':');
+    if (eq == std::string::npos || colon == std::string::npos || colon < eq)
+        throw UsageError("--as: expected CHANNEL=COLUMN:LSB (e.g. gyro=col1:0.00875), got '" + text + "'");
+    ColumnMapping m;
+    const std::string channel = text.substr(0, eq);
+    bool found = false;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (channel == kChannelNames[c]) m.channel = static_cast<Channel>(c), found = true;
+    if (!found) throw UsageError("--as: unknown channel '" + channel + "' (gyro, accel_x, accel_y, accel_z)");
+    m.column = text.substr(eq + 1, colon - eq - 1);
+    if (m.column.empty()) throw UsageError("--as: no column name in '" + text + "'");
+    const std::string lsb = text.substr(colon + 1);
+    char* end = nullptr;
+    m.lsb = std::strtod(lsb.c_str(), &end);
+    if (lsb.empty() || *end != '\0' || !(m.lsb > 0.0) || !std::isfinite(m.lsb))
+        throw UsageError("--as: the LSB must be a positive number, got '" + lsb + "' in '" + text + "'");
+    return m;
+}
+
+LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
+    if (how.columns.empty()) throw UsageError("a plain recording needs at least one --as CHANNEL=COLUMN:LSB");
+    if (!(how.sample_period_s > 0.0)) throw UsageError("a plain recording needs its sample period (--tau0 SECONDS > 0)");
+    if (how.block < 1) throw UsageError("--block: at least 1 sample per output");
+    std::vector<std::string> names;
+    for (const auto& m : how.columns) {
+        for (const auto& other : names)
+            if (other == m.column) throw UsageError("--as: column '" + m.column + "' mapped twice");
+        names.push_back(m.column);
+    }
+    const std::vector<fit::Series> series = fit::series_from_table(table, names, "", how.sample_period_s);
+    const std::size_t outputs = table.rows() / how.block;
+    if (outputs < 2)
+        throw DataError(table.source_name, 0, std::to_string(table.rows()) + " rows make fewer than two blocks of " +
+                                                   std::to_string(how.block));
+    LogData log;
+    log.source_name = table.source_name;
+    const std::vector<double>& t = series.front().t_s;
+    for (std::size_t b = 0; b < outputs; ++b) {
+        log.t_s.push_back(t[(b + 1) * how.block - 1]);  // an output is sent after its last conversion
+        log.seq.push_back(b);
+    }
+    for (std::size_t c = 0; c < kChannelCount; ++c) log.counts[c].assign(outputs, kMidScale);
+    std::vector<bool> mapped(kChannelCount, false);
+    for (const auto& m : how.columns) {
+        const std::size_t c = channel_index(m.channel);
+        if (mapped[c]) throw UsageError(std::string("--as: channel ") + kChannelNames[c] + " mapped twice");
+        mapped[c] = true;
+        const fit::Series* s = nullptr;
+        for (const auto& candidate : series)
+            if (candidate.name == m.column) s = &candidate;
+        // Integer codes, as the sensor produced them, offset so the column's mean sits at mid-scale.
+        double mean = 0.0;
+        for (double v : s->values) mean += v;
+        const double offset = kMidScale - std::round(mean / static_cast<double>(s->values.size()) / m.lsb);
+        for (std::size_t b = 0; b < outputs; ++b) {
+            double sum = 0.0;
+            for (std::size_t i = b * how.block; i < (b + 1) * how.block; ++i) {
+                const double code = std::round(s->values[i] / m.lsb) + offset;
+                if (code < 0.0 || code > kFullScale)
+                    throw DataError(table.source_name, 0,
+                                    "column '" + m.column + "' row " + std::to_string(i + 1) + " is " +
+                                        std::to_string(std::lround(code - kMidScale)) +
+                                        " codes from its mean, beyond the 10-bit range: give a coarser LSB");
+                sum += code;
+            }
+            log.counts[c][b] = sum / static_cast<double>(how.block);
+        }
+    }
+    log.metadata.set("sample_period_s", static_cast<double>(how.block) * how.sample_period_s);
+    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(how.block));
+    log.metadata.set("window", static_cast<std::int64_t>(how.block));
+    log.metadata.set("fit_order", static_cast<std::int64_t>(0));
+    return log;
+}
+
+}  // namespace driftlab::host::gap
