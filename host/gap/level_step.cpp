@@ -76,14 +76,15 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     const std::vector<double> floor_acov = white_floor_autocovariance(model.smoothing);
     // The explanation is the model as its replicates simulate it; only its white floor is estimated, on the real
     // log, so that the statistic means the same on the log and on the replicates.
-    SpectralFit explanation = fit_spectral({}, c, model, real_p);
+    SpectralFit explanation;
     explanation.effects = spectral_effects;
     explanation.params = spectral_params;
+    const double floor_start = fit_spectral({}, c, model, real_p).white;
     const auto floor_nll = [&](const std::vector<double>& ln_white) {
         explanation.white = std::exp(ln_white[0]);
         return spectral_nll(explanation, c, model, real_p);
     };
-    explanation.white = std::exp(nelder_mead(floor_nll, {std::log(explanation.white)}, {0.3}, kFloorEvaluations).x[0]);
+    explanation.white = std::exp(nelder_mead(floor_nll, {std::log(floor_start)}, {0.3}, kFloorEvaluations).x[0]);
     // Whitening compares levels before and after each instant over at most a tenth of the log: a slight random walk
     // (its filter's memory is sqrt(white / increment) samples) keeps a stationary spectrum's 1/w^2 low-frequency gain
     // from weighing the whole log's mean, which the eq. 1 fit has already bent. The rival's steps are located under
@@ -129,9 +130,10 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     out.impulse = real[0];
     out.impulse_p = monte_carlo_p(0);
     out.statistic = real[1];
-    // Two instants and two sizes against the explanation's own parameters (the floor is in both).
+    // Two instants and two sizes against the explanation's own parameters (the floor is in both), at half the BIC
+    // price each (the statistic is in nll units).
     const double extra = 4.0 - static_cast<double>(spectral_params.size());
-    out.margin = std::max(0.0, extra) * 0.5 * std::log(real_p.count);
+    out.margin = std::max(0.0, extra) * 0.5 * parameter_price(InformationCriterion::bic, real_p.count);
     out.rival_p = monte_carlo_p(1);
     out.p_value = std::min(1.0, 2.0 * std::min(out.impulse_p, out.statistic > out.margin ? out.rival_p : 1.0));
     out.significant = leaves_step(out, alpha);

@@ -41,10 +41,14 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
     if (!(how.sample_period_s > 0.0)) throw UsageError("a plain recording needs its sample period (--tau0 SECONDS > 0)");
     if (how.block < 1) throw UsageError("--block: at least 1 sample per output");
     std::vector<std::string> names;
+    std::vector<bool> mapped(kChannelCount, false);
     for (const auto& m : how.columns) {
         for (const auto& other : names)
             if (other == m.column) throw UsageError("--as: column '" + m.column + "' mapped twice");
         names.push_back(m.column);
+        const std::size_t c = channel_index(m.channel);
+        if (mapped[c]) throw UsageError(std::string("--as: channel ") + kChannelNames[c] + " mapped twice");
+        mapped[c] = true;
     }
     const std::vector<fit::Series> series = fit::series_from_table(table, names, "", how.sample_period_s);
     const std::size_t outputs = table.rows() / how.block;
@@ -59,11 +63,8 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         log.seq.push_back(b);
     }
     for (std::size_t c = 0; c < kChannelCount; ++c) log.counts[c].assign(outputs, kMidScale);
-    std::vector<bool> mapped(kChannelCount, false);
     for (const auto& m : how.columns) {
         const std::size_t c = channel_index(m.channel);
-        if (mapped[c]) throw UsageError(std::string("--as: channel ") + kChannelNames[c] + " mapped twice");
-        mapped[c] = true;
         const fit::Series* s = nullptr;
         for (const auto& candidate : series)
             if (candidate.name == m.column) s = &candidate;
