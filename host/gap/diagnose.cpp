@@ -121,15 +121,18 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout, result.gap_bound_before);
 
     result.final_model = result.base;
-    if (result.located.empty()) {
+    result.diffuse_gap = result.located.empty() && result.gap_before_heldout > result.gap_bound_before;
+    if (result.located.empty() && !(result.diffuse_gap && options.search_diffuse)) {
         result.verdict = "none";
     } else if (options.explain) {
-        std::array<bool, kChannelCount> open{};
+        // The channels with located cells; for a diffuse gap, every channel (each is judged on its own bound).
+        std::array<bool, kChannelCount> open = result.located.empty() ? result.channels : std::array<bool, kChannelCount>{};
         for (const auto& l : result.located) {
             const int ci = result.layout[l.index].channel_index;
             if (ci >= 0) open[static_cast<std::size_t>(ci)] = true;
         }
         ExplainOptions eo = options.explain_options;
+        if (options.search_diffuse) eo.diffuse_alpha = options.alpha;
         eo.seed = options.seed;
         eo.threads = options.threads;
         eo.eval_replicates = options.replicates;

@@ -27,6 +27,9 @@ struct GapOptions {
     double fit_fraction = 0.6;      ///< forecast: first part of the log used to fit candidates; the rest is held out
     std::array<bool, kChannelCount> channels{};  ///< all false = every channel whose values vary
     bool explain = true;            ///< false: locate only
+    /// Also search the candidates when no cell is located but the held-out gap score exceeds its bound (a diffuse
+    /// gap). Off by default: the false-positive rate gap-eval measures is without it.
+    bool search_diffuse = false;
     ExplainOptions explain_options;
     int threads = 2;
     std::function<void(const std::string& stage)> progress;  ///< optional: told each stage as it starts
@@ -55,6 +58,9 @@ struct GapResult {
     std::vector<Explanation> tried;      ///< every candidate fit, accepted first
     std::vector<Explanation> accepted;   ///< added stepwise, in order
     std::vector<LevelStep> level_steps;  ///< per channel with accepted effects: a step the model leaves unexplained?
+    /// No cell located, yet the held-out gap score exceeds its bound: many cells a little off, none alone beyond
+    /// the family-wise threshold. The verdict stays "none" unless search_diffuse.
+    bool diffuse_gap = false;
     std::string verdict;                 ///< an effect name, "none" or "unexplained" (also when a level step remains)
     TimingCheck timing;
 };

@@ -349,8 +349,11 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             const Comparison base_cmp = judge.evaluate(result.model, options.eval_replicates);
             // A channel stays open while cells are located or, after an accepted effect, a held-out excess remains
             // for another effect to shrink (one broad process may cover a line that is still there).
-            const double excess = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout)) - 1.0;
-            if (locate(judge.real, base_cmp, judge.layout).empty() && (step == 1 || excess <= kMinHeldoutExcess)) {
+            const double heldout = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout));
+            const bool diffuse = options.diffuse_alpha > 0.0 &&
+                                 heldout > gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), options.diffuse_alpha);
+            if (locate(judge.real, base_cmp, judge.layout).empty() && !diffuse &&
+                (step == 1 || heldout - 1.0 <= kMinHeldoutExcess)) {
                 open[i] = false;
                 continue;
             }
@@ -422,7 +425,10 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 b.settle += "; vs " + choice.runner_up->effect + ": " + choice.runner_up->settle;
             }
             for (const auto& o : here) result.tried.push_back(o.ex);
-            if (best_index < here.size()) accepted.push_back(here[best_index]);
+            if (best_index < here.size())
+                accepted.push_back(here[best_index]);
+            else
+                open[i] = false;  // nothing passed, and the later steps change other channels only: the same fits again
         }
         if (accepted.empty()) break;
         const auto best = std::max_element(accepted.begin(), accepted.end(), [](const Option& a, const Option& b) {

@@ -33,6 +33,10 @@ struct ExplainOptions {
     /// Level-step test every accepted Gaussian-process candidate (gap-eval, whose tuned thresholds may choose any of
     /// them). driftlab gap tests its final model instead (diagnose()), which the choice does not depend on.
     bool step_test_candidates = false;
+    /// > 0: a channel without located cells is still searched when its held-out gap score exceeds its Monte Carlo
+    /// bound at this level (a diffuse gap: many cells a little off, none alone beyond the family-wise threshold).
+    /// 0 (the default, and what gap-eval scores): only channels with located cells are searched.
+    double diffuse_alpha = 0.0;
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
     std::function<void(const std::string& stage)> progress;  ///< optional: told what is being fitted
     std::uint64_t seed = 1;

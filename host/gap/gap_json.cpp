@@ -73,6 +73,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["gap_after"] = {{"fit", report::json_number(r.gap_after_fit)},
                       {"heldout", report::json_number(r.gap_after_heldout)},
                       {"heldout_bound", report::json_number(r.gap_bound_after)}};
+    j["diffuse_gap"] = r.diffuse_gap;
     json steps = json::array();
     for (const auto& s : r.level_steps) {
         json found = json::array();

@@ -77,6 +77,11 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
            << " [" << fixed(l.interval_low, 3) << ", " << fixed(l.interval_high, 3) << "] |\n";
     }
     md << "\n" << r.located.size() << " cells located before, " << r.located_after.size() << " after.\n\n";
+    if (r.diffuse_gap)
+        md << "Diffuse gap: the held-out score exceeds its bound with no cell located (many cells a little off, none "
+              "alone beyond the threshold). "
+           << (options.search_diffuse ? "The candidates were searched on it (--search-diffuse).\n\n"
+                                      : "The candidates were not searched (--search-diffuse searches them).\n\n");
     md << "## Which: candidate effects\n\nFitted on the fitting part, judged on the held-out part; among accepted "
           "Gaussian candidates the full-log spectral information criterion ("
        << criterion_name(options.explain_options.information_criterion)

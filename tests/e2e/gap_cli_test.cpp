@@ -28,6 +28,7 @@ TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
     // All four channels vary (drift and noise) and are analysed; the score is near 1 when nothing is missing.
     EXPECT_LT(j["gap_before"]["fit"].get<double>(), 2.0);
     EXPECT_LT(j["gap_before"]["heldout"].get<double>(), 2.0);
+    EXPECT_FALSE(j["diffuse_gap"].get<bool>()) << j["gap_before"].dump();
 }
 
 // A third-party recording: one column of rate values at 8.75 mdps resolution, 100 Hz, a warm-up and white noise.

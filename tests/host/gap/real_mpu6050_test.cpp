@@ -2,7 +2,8 @@
 // PROVENANCE.md): gyro X and the three accelerometer axes, already warm, 655 s at a nominal 100 Hz with irregular
 // logging. Each channel becomes codes of its own LSB (1/131 deg/s, 1/4096 g) around mid-scale, and blocks of 10
 // samples are the order-0 smoother of the log (window = conversions per output = 10; plain_recording.hpp). The diagnosis must run on all
-// four channels and report what it finds, and it must see the logger's irregular timing.
+// four channels and report what it finds, and it must see the logger's irregular timing; on request it searches a
+// diffuse gap.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -62,6 +63,44 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     if (!r.accepted.empty()) {
         EXPECT_LE(r.gap_after_heldout, r.gap_before_heldout);
     }
+    // Without --search-diffuse a gap without located cells is reported, never searched.
+    EXPECT_EQ(r.diffuse_gap, r.located.empty() && r.gap_before_heldout > r.gap_bound_before);
+    if (r.located.empty()) {
+        EXPECT_EQ(r.verdict, "none");
+        EXPECT_TRUE(r.tried.empty());
+    }
+}
+
+// Four channels raise the family-wise threshold: the gyro's excess at tau of tens of seconds (z 4.3 alone) stays below
+// it, and the held-out score alone exceeds its bound. --search-diffuse fits the candidates on it; whatever it accepts
+// must shrink the held-out gap, and the still accelerometers (no cell, no excess of their own) take nothing.
+TEST(RealData, Mpu6050sDiffuseGapIsSearchedOnRequest) {
+    LogData log;
+    if (!load(log)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
+    GapOptions o;
+    o.replicates = 16;
+    o.seed = 3;
+    o.search_diffuse = true;
+    o.explain_options.fit_replicates = 6;
+    o.explain_options.max_evaluations = 12;
+    o.explain_options.max_effects = 1;
+    const GapResult r = diagnose(log, sim::paper_model(), o);
+    std::printf("mpu6050 --search-diffuse: verdict %s, diffuse %d, heldout %.2f (bound %.2f) -> %.2f, %zu tried\n",
+                r.verdict.c_str(), r.diffuse_gap, r.gap_before_heldout, r.gap_bound_before, r.gap_after_heldout,
+                r.tried.size());
+    for (const auto& e : r.accepted)
+        std::printf("  accepted %s on %s, heldout shrink %.2f%s%s\n", e.effect.c_str(), e.channel.c_str(), e.heldout_shrink,
+                    e.ambiguous_with.empty() ? "" : ", close call with ", e.ambiguous_with.c_str());
+    ASSERT_TRUE(r.diffuse_gap) << "heldout " << r.gap_before_heldout << " bound " << r.gap_bound_before;
+    EXPECT_FALSE(r.tried.empty());
+    for (const auto& e : r.accepted) {
+        EXPECT_EQ(e.channel, "gyro");
+        EXPECT_GE(e.heldout_shrink, o.explain_options.min_heldout_shrink);
+    }
+    if (!r.accepted.empty()) {
+        EXPECT_LT(r.gap_after_heldout, r.gap_before_heldout);
+    }
+    EXPECT_NE(r.verdict, "none");
 }
 
 }  // namespace
