@@ -75,9 +75,10 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
             holding_ = true;
             lost_t_us_ = t_us;
             first_held_t_us_.reset();
+            held_status_.reset();
         }
     } else if (text == "resumed") {
-        if (holding_) release_held(std::nullopt);
+        if (holding_) release_held(held_status_);
     } else if (text.rfind("gap: ", 0) == 0) {
         ++stats_.gaps;
         if (writer_) writer_->write_gap(text.substr(5));
@@ -92,10 +93,11 @@ void LogAssembler::handle_frame(std::uint64_t t_us, const Frame& frame) {
     }
     if (!first_held_t_us_) first_held_t_us_ = t_us;
     held_.push_back(frame);
+    // The handshake's STATUS tells whether the firmware restarted; the frames stay held until "resumed", which
+    // follows the gap line: an output streamed during the handshake is a row after the gap, not before it.
     proto::StatusPayload status{};
-    if (frame.type == proto::MsgType::status && proto::parse(frame.payload.data(), frame.payload_len, &status)) {
-        release_held(status);
-    }
+    if (frame.type == proto::MsgType::status && proto::parse(frame.payload.data(), frame.payload_len, &status))
+        held_status_ = status;
 }
 
 void LogAssembler::release_held(std::optional<proto::StatusPayload> status) {
@@ -222,7 +224,7 @@ void LogAssembler::flush() {
 }
 
 void LogAssembler::finish() {
-    if (holding_) release_held(std::nullopt);
+    if (holding_) release_held(held_status_);
     if (pending_sample_ && writer_) emit(pending_sample_->first, pending_sample_->second, nullptr);
     pending_sample_.reset();
     if (writer_) writer_->close();

@@ -4,8 +4,9 @@
 //
 // Events it understands (text of 'E' records):
 //   "start"          handshake and configuration are done: write the log's metadata and header
-//   "lost"           the link went away: forget a cut frame; frames after it wait for the board's STATUS
-//                    (its uptime tells whether the firmware restarted) or for "resumed"
+//   "lost"           the link went away: forget a cut frame; frames after it wait for "resumed", which follows
+//                    the gap line, and the newest STATUS among them (its uptime tells whether the firmware
+//                    restarted) decides how tick and seq continue
 //   "gap: <text>"    write `# gap: <text>` into the log
 //   "resumed"        the recorder finished the handshake after a reconnect
 // Rows: one per SAMPLE (joined with the RAW of the same tick in raw mode; a lost RAW leaves raw_* = -1 and
@@ -86,6 +87,7 @@ private:
     std::uint64_t lost_t_us_ = 0;
     std::optional<std::uint64_t> first_held_t_us_;
     std::vector<Frame> held_;
+    std::optional<proto::StatusPayload> held_status_;  ///< the newest STATUS among the held frames
     std::uint64_t last_epoch_tick_ = 0;  // newest SAMPLE tick since the last firmware start [ticks]
     AssemblyStats stats_;
 };

@@ -1,0 +1,147 @@
+// LogAssembler across a reconnect, fed as the recorder feeds it: an output the streaming board sends while the
+// recorder repeats its handshake is a row after the `# gap:` line, wherever it falls among the handshake's replies;
+// and a STATUS uptime below the last tick marks a firmware restart after that line.
+#include "host/io/log_assembler.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+#include "driftlab/proto/encoder.hpp"
+#include "host/log/log_reader.hpp"
+
+namespace fs = std::filesystem;
+using namespace driftlab;
+using namespace driftlab::host;
+using namespace driftlab::host::io;
+
+namespace {
+
+constexpr std::uint32_t kTickHz = 250000;
+constexpr std::uint32_t kTicksPerOutput = 25000;  // 0.1 s
+
+// The board side of the link: frames with consecutive seq numbers, each handed to the assembler as received bytes.
+class Board {
+public:
+    explicit Board(LogAssembler& a) : a_(a) {}
+    template <class Encode>
+    void send(Encode encode) {
+        std::uint8_t buf[64];
+        const std::size_t n = encode(seq_++, buf, sizeof buf);
+        ASSERT_GT(n, 0u);
+        a_.on_rx(t_us_ += 1000, buf, n);
+    }
+    void version() {
+        proto::VersionPayload v{};
+        v.proto_version = proto::kProtocolVersion;
+        v.adc_bits = 10;
+        v.vref_mv = 5000;
+        v.tick_hz = kTickHz;
+        v.channel_count = kChannelCount;
+        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_version(v, s, o, n); });
+    }
+    void config() {
+        const proto::ConfigPayload c{100, 8, 8, 0, static_cast<std::uint8_t>(proto::OutputMode::stream), 0};
+        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_config(c, s, o, n); });
+    }
+    void ack() {
+        const proto::AckPayload k{static_cast<std::uint8_t>(proto::MsgType::config_set), 7};
+        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_ack(k, s, o, n); });
+    }
+    void status(std::uint32_t uptime) {
+        proto::StatusPayload st{};
+        st.uptime_ticks = uptime;
+        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_status(st, s, o, n); });
+    }
+    void sample(std::uint32_t tick) {
+        proto::SamplePayload p{};
+        p.tick = tick;
+        for (auto& v : p.value_q8) v = 500 * 256;
+        p.n_window = 8;
+        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_sample(p, s, o, n); });
+    }
+    void skip(std::uint16_t frames) { seq_ = static_cast<std::uint16_t>(seq_ + frames); }
+    void event(const std::string& text) { a_.on_event(t_us_ += 1000, text); }
+    void wait_us(std::uint64_t us) { t_us_ += us; }
+
+private:
+    LogAssembler& a_;
+    std::uint16_t seq_ = 0;
+    std::uint64_t t_us_ = 0;
+};
+
+std::string temp_log(const std::string& name) {
+    return (fs::temp_directory_path() / ("driftlab_asm_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+// Three rows, then the link is lost for 6 s while the board streams on (60 outputs never received).
+void record_until_unplugged(Board& b) {
+    b.version();
+    b.config();
+    b.event("start");
+    for (std::uint32_t k = 1; k <= 3; ++k) b.sample(k * kTicksPerOutput);
+    b.event("lost");
+    b.skip(60);
+    b.wait_us(6'000'000);
+}
+
+}  // namespace
+
+TEST(LogAssembler, AnOutputStreamedDuringTheReconnectHandshakeIsARowAfterTheGap) {
+    const std::string path = temp_log("handshake.csv");
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "handshake.csv.cap"}});
+        Board b(a);
+        record_until_unplugged(b);
+        // The recorder's handshake (VERSION, CONFIG_SET, CONFIG, STATUS) with one streamed output between replies.
+        b.version();
+        b.ack();
+        b.sample(64 * kTicksPerOutput);
+        b.config();
+        b.status(64 * kTicksPerOutput + 100);
+        b.event("gap: link lost after t_s=0.3, reconnected after 6 s, 1 attempts");
+        b.event("resumed");
+        b.sample(65 * kTicksPerOutput);
+        a.finish();
+    }
+    const LogData log = read_log(path);
+    ASSERT_EQ(log.size(), 5u);
+    ASSERT_EQ(log.gaps.size(), 1u);
+    EXPECT_EQ(log.gaps[0].before_row, 3u);  // the handshake's output follows the gap line
+    EXPECT_DOUBLE_EQ(log.t_s[2], 0.3);
+    EXPECT_DOUBLE_EQ(log.t_s[3], 6.4);
+    EXPECT_DOUBLE_EQ(log.t_s[4], 6.5);
+    EXPECT_EQ(log.seq[3] - log.seq[2], 63u);  // 60 unseen frames, VERSION and ACK between the rows
+    fs::remove(path);
+}
+
+TEST(LogAssembler, AFirmwareRestartDuringTheGapIsMarkedAfterTheLinkLoss) {
+    const std::string path = temp_log("restart.csv");
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "restart.csv.cap"}});
+        Board b(a);
+        record_until_unplugged(b);
+        b.version();
+        b.ack();
+        b.sample(2 * kTicksPerOutput);  // a fresh firmware counts its ticks from 0 again
+        b.config();
+        b.status(2 * kTicksPerOutput + 100);
+        b.event("gap: link lost after t_s=0.3, reconnected after 6 s, 1 attempts");
+        b.event("resumed");
+        b.sample(3 * kTicksPerOutput);
+        a.finish();
+    }
+    const LogData log = read_log(path);
+    ASSERT_EQ(log.size(), 5u);
+    ASSERT_EQ(log.gaps.size(), 2u);
+    EXPECT_NE(log.gaps[0].text.find("link lost"), std::string::npos) << log.gaps[0].text;
+    EXPECT_NE(log.gaps[1].text.find("firmware restarted"), std::string::npos) << log.gaps[1].text;
+    EXPECT_EQ(log.gaps[1].before_row, 3u);
+    // tick and seq continue after the last row instead of restarting
+    EXPECT_GT(log.t_s[3], log.t_s[2]);
+    EXPECT_GT(log.seq[3], log.seq[2]);
+    EXPECT_GT(log.t_s[4], log.t_s[3]);
+    fs::remove(path);
+}
