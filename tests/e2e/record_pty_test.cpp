@@ -166,8 +166,8 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     EXPECT_GT(missed_outputs, 40.0);
     const double replies_before = static_cast<double>(rec.seq[k] - rec.seq[k - 1] - 1) - missed_outputs;
     EXPECT_NEAR(replies_before, std::round(replies_before), 1e-6);
-    EXPECT_GE(replies_before, 0.0);
-    EXPECT_LE(replies_before, 4.0);
+    EXPECT_GE(std::lround(replies_before), 0);
+    EXPECT_LE(std::lround(replies_before), 4);
     expect_rows_in_truth(rec, truth);
 }
 
