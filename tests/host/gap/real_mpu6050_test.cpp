@@ -31,15 +31,21 @@ bool load(LogData& log) {
     return true;
 }
 
-TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
-    LogData log;
-    if (!load(log)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
+// R = 16, smaller fit budgets than the command line's and one effect: a test's wall time.
+GapOptions test_options() {
     GapOptions o;
     o.replicates = 16;
     o.seed = 3;
     o.explain_options.fit_replicates = 6;
     o.explain_options.max_evaluations = 12;
     o.explain_options.max_effects = 1;
+    return o;
+}
+
+TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
+    LogData log;
+    if (!load(log)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
+    const GapOptions o = test_options();
     const GapResult r = diagnose(log, sim::paper_model(), o);
     std::printf("mpu6050: verdict %s, gap fit %.2f heldout %.2f -> fit %.2f heldout %.2f, %zu located, dt jitter %.2f\n",
                 r.verdict.c_str(), r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout,
@@ -77,13 +83,8 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
 TEST(RealData, Mpu6050sDiffuseGapIsSearchedOnRequest) {
     LogData log;
     if (!load(log)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
-    GapOptions o;
-    o.replicates = 16;
-    o.seed = 3;
+    GapOptions o = test_options();
     o.search_diffuse = true;
-    o.explain_options.fit_replicates = 6;
-    o.explain_options.max_evaluations = 12;
-    o.explain_options.max_effects = 1;
     const GapResult r = diagnose(log, sim::paper_model(), o);
     std::printf("mpu6050 --search-diffuse: verdict %s, diffuse %d, heldout %.2f (bound %.2f) -> %.2f, %zu tried\n",
                 r.verdict.c_str(), r.diffuse_gap, r.gap_before_heldout, r.gap_bound_before, r.gap_after_heldout,

@@ -87,26 +87,38 @@ void record_until_unplugged(Board& b) {
     b.wait_us(6'000'000);
 }
 
+// The recorder's handshake after reconnecting (VERSION, CONFIG_SET, CONFIG, STATUS), one streamed output at
+// `tick` arriving between the replies, the gap line, then the next output.
+void reconnect_with_an_output_inside(Board& b, std::uint32_t tick, std::uint32_t uptime) {
+    b.version();
+    b.ack();
+    b.sample(tick);
+    b.config();
+    b.status(uptime);
+    b.event("gap: link lost after t_s=0.3, reconnected after 6 s, 1 attempts");
+    b.event("resumed");
+    b.sample(tick + kTicksPerOutput);
+}
+
+// Three rows, the loss, the reconnect with an output at `tick` inside the handshake: the log as read back.
+LogData recorded_across_a_reconnect(const std::string& name, std::uint32_t tick) {
+    const std::string path = temp_log(name);
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", name + ".cap"}});
+        Board b(a);
+        record_until_unplugged(b);
+        reconnect_with_an_output_inside(b, tick, tick + 100);
+        a.finish();
+    }
+    LogData log = read_log(path);
+    fs::remove(path);
+    return log;
+}
+
 }  // namespace
 
 TEST(LogAssembler, AnOutputStreamedDuringTheReconnectHandshakeIsARowAfterTheGap) {
-    const std::string path = temp_log("handshake.csv");
-    {
-        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "handshake.csv.cap"}});
-        Board b(a);
-        record_until_unplugged(b);
-        // The recorder's handshake (VERSION, CONFIG_SET, CONFIG, STATUS) with one streamed output between replies.
-        b.version();
-        b.ack();
-        b.sample(64 * kTicksPerOutput);
-        b.config();
-        b.status(64 * kTicksPerOutput + 100);
-        b.event("gap: link lost after t_s=0.3, reconnected after 6 s, 1 attempts");
-        b.event("resumed");
-        b.sample(65 * kTicksPerOutput);
-        a.finish();
-    }
-    const LogData log = read_log(path);
+    const LogData log = recorded_across_a_reconnect("handshake.csv", 64 * kTicksPerOutput);
     ASSERT_EQ(log.size(), 5u);
     ASSERT_EQ(log.gaps.size(), 1u);
     EXPECT_EQ(log.gaps[0].before_row, 3u);  // the handshake's output follows the gap line
@@ -114,26 +126,11 @@ TEST(LogAssembler, AnOutputStreamedDuringTheReconnectHandshakeIsARowAfterTheGap)
     EXPECT_DOUBLE_EQ(log.t_s[3], 6.4);
     EXPECT_DOUBLE_EQ(log.t_s[4], 6.5);
     EXPECT_EQ(log.seq[3] - log.seq[2], 63u);  // 60 unseen frames, VERSION and ACK between the rows
-    fs::remove(path);
 }
 
 TEST(LogAssembler, AFirmwareRestartDuringTheGapIsMarkedAfterTheLinkLoss) {
-    const std::string path = temp_log("restart.csv");
-    {
-        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "restart.csv.cap"}});
-        Board b(a);
-        record_until_unplugged(b);
-        b.version();
-        b.ack();
-        b.sample(2 * kTicksPerOutput);  // a fresh firmware counts its ticks from 0 again
-        b.config();
-        b.status(2 * kTicksPerOutput + 100);
-        b.event("gap: link lost after t_s=0.3, reconnected after 6 s, 1 attempts");
-        b.event("resumed");
-        b.sample(3 * kTicksPerOutput);
-        a.finish();
-    }
-    const LogData log = read_log(path);
+    // A fresh firmware counts its ticks from 0 again.
+    const LogData log = recorded_across_a_reconnect("restart.csv", 2 * kTicksPerOutput);
     ASSERT_EQ(log.size(), 5u);
     ASSERT_EQ(log.gaps.size(), 2u);
     EXPECT_NE(log.gaps[0].text.find("link lost"), std::string::npos) << log.gaps[0].text;
@@ -143,5 +140,4 @@ TEST(LogAssembler, AFirmwareRestartDuringTheGapIsMarkedAfterTheLinkLoss) {
     EXPECT_GT(log.t_s[3], log.t_s[2]);
     EXPECT_GT(log.seq[3], log.seq[2]);
     EXPECT_GT(log.t_s[4], log.t_s[3]);
-    fs::remove(path);
 }
