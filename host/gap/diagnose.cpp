@@ -141,7 +141,9 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         result.tried = std::move(ex.tried);
         result.accepted = std::move(ex.accepted);
         result.final_model = std::move(ex.model);
-        result.verdict = result.accepted.empty() ? "unexplained" : result.accepted.front().effect;
+        // Only located cells make a gap no effect explains; a diffuse gap's search can name an effect or nothing.
+        const char* nothing = result.located.empty() ? "none" : "unexplained";
+        result.verdict = result.accepted.empty() ? nothing : result.accepted.front().effect;
     } else {
         result.verdict = "unexplained";
     }

@@ -28,7 +28,8 @@ struct GapOptions {
     std::array<bool, kChannelCount> channels{};  ///< all false = every channel whose values vary
     bool explain = true;            ///< false: locate only
     /// Also search the candidates when no cell is located but the held-out gap score exceeds its bound (a diffuse
-    /// gap). Off by default: the false-positive rate gap-eval measures is without it.
+    /// gap); an accepted effect becomes the verdict, none accepted leaves it "none". Off by default: the
+    /// false-positive rate gap-eval measures is without it.
     bool search_diffuse = false;
     ExplainOptions explain_options;
     int threads = 2;
@@ -59,7 +60,7 @@ struct GapResult {
     std::vector<Explanation> accepted;   ///< added stepwise, in order
     std::vector<LevelStep> level_steps;  ///< per channel with accepted effects: a step the model leaves unexplained?
     /// No cell located, yet the held-out gap score exceeds its bound: many cells a little off, none alone beyond
-    /// the family-wise threshold. The verdict stays "none" unless search_diffuse.
+    /// the family-wise threshold. The verdict stays "none" unless search_diffuse accepts an effect.
     bool diffuse_gap = false;
     std::string verdict;                 ///< an effect name, "none" or "unexplained" (also when a level step remains)
     TimingCheck timing;
