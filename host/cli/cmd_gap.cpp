@@ -82,7 +82,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
         std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.step,
                     e.effect.c_str(), e.channel.c_str(), e.accepted ? "ACCEPTED" : "rejected", e.heldout_before,
                     e.heldout_after, 100 * e.heldout_shrink, e.loss_gain, e.penalty);
-        if (e.gaussian) std::printf(" dIC %.1f", gap::delta_ic(e, options.explain_options.information_criterion));
+        if (gap::has_delta_ic(e)) std::printf(" dIC %.1f", gap::delta_ic(e, options.explain_options.information_criterion));
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");

@@ -85,6 +85,9 @@ bool passes(const Explanation& e, double penalty_per_param, double min_heldout_s
 /// the candidate).
 double delta_ic(const Explanation& e, InformationCriterion ic);
 
+/// Whether delta_ic() means anything: the spectral evidence is computed for accepted Gaussian candidates only.
+inline bool has_delta_ic(const Explanation& e) { return e.gaussian && e.accepted; }
+
 /// Whether `runner_up` is not separated from `best`: always when one is a long-memory Gauss-Markov fit and the
 /// other flicker or a random walk (look-alikes within the log); otherwise Vuong's test for non-nested models
 /// (Vuong, Econometrica 57(2), 1989) with d_j the runner-up's minus the best's loss: over the Fourier frequencies of

@@ -41,7 +41,7 @@ json explanation_json(const Explanation& e, InformationCriterion ic) {
             {"heldout_shrink", report::json_number(e.heldout_shrink)},
             {"likelihood_gain", report::json_number(e.loss_gain)},
             {"penalty", report::json_number(e.penalty)},
-            {"delta_ic", e.gaussian ? report::json_number(delta_ic(e, ic)) : json(nullptr)},
+            {"delta_ic", has_delta_ic(e) ? report::json_number(delta_ic(e, ic)) : json(nullptr)},
             {"cells_left", e.cells_left},
             {"level_step_p", e.residual_step.tested ? report::json_number(e.residual_step.p_value) : json(nullptr)},
             {"accepted", e.accepted},

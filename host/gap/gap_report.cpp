@@ -93,7 +93,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         for (const auto& [k, v] : e.params) params += k + "=" + fixed(v, 4) + " ";
         md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << params << " | " << fixed(e.heldout_before)
            << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0) << " % | " << fixed(e.loss_gain, 1)
-           << " / " << fixed(e.penalty, 1) << " | " << (e.gaussian ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
+           << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
            << (e.accepted ? "accepted" : "rejected")
            << (e.residual_step.significant ? ", leaves a level step" : "")
            << (e.ambiguous_with.empty() ? "" : ", ambiguous with " + e.ambiguous_with + " (" + e.settle + ")") << " |\n";
