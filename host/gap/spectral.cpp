@@ -1,4 +1,4 @@
-// Octave-grid ADEV, band power and lag-band autocorrelation; see spectral.hpp.
+// Octave-grid ADEV, band power, band coherence and lag-band autocorrelation; see spectral.hpp.
 #include "host/gap/spectral.hpp"
 
 #include <cmath>
@@ -48,22 +48,42 @@ std::vector<double> octave_oadev(const std::vector<double>& y, std::size_t max_m
     return out;
 }
 
-std::vector<double> octave_band_power(const std::vector<double>& y) {
+BandSpectrum band_spectrum(const std::vector<double>& y) {
     const std::vector<double> e = demeaned(y);
-    const std::size_t nfft = next_pow2(e.size());
-    std::vector<double> w(nfft, 0.0);
+    std::vector<double> w(next_pow2(e.size()), 0.0);
     const double n = static_cast<double>(e.size());
     for (std::size_t i = 0; i < e.size(); ++i)
         w[i] = e[i] * (0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / n));
+    BandSpectrum s;
+    s.length = e.size();
     Eigen::FFT<double> fft;
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, w);
+    fft.fwd(s.bins, w);
+    return s;
+}
+
+std::vector<double> octave_band_power(const BandSpectrum& s) {
     std::vector<double> out;
-    const std::size_t half = nfft / 2;
-    for (std::size_t hi = half; hi / 2 >= 2; hi /= 2) {
+    for (std::size_t hi = s.bins.size() / 2; hi / 2 >= 2; hi /= 2) {
         double sum = 0.0;
-        for (std::size_t b = hi / 2; b < hi; ++b) sum += std::norm(spec[b]);
-        out.push_back(sum / static_cast<double>(hi - hi / 2) / n);
+        for (std::size_t b = hi / 2; b < hi; ++b) sum += std::norm(s.bins[b]);
+        out.push_back(sum / static_cast<double>(hi - hi / 2) / static_cast<double>(s.length));
+    }
+    return out;
+}
+
+std::vector<double> octave_band_power(const std::vector<double>& y) { return octave_band_power(band_spectrum(y)); }
+
+std::vector<double> octave_band_coherence(const BandSpectrum& a, const BandSpectrum& b) {
+    std::vector<double> out;
+    for (std::size_t hi = a.bins.size() / 2; hi / 2 >= kCoherenceMinBins; hi /= 2) {
+        std::complex<double> cross = 0.0;
+        double pa = 0.0, pb = 0.0;
+        for (std::size_t k = hi / 2; k < hi; ++k) {
+            cross += a.bins[k] * std::conj(b.bins[k]);
+            pa += std::norm(a.bins[k]);
+            pb += std::norm(b.bins[k]);
+        }
+        out.push_back(pa > 0.0 && pb > 0.0 ? std::norm(cross) / (pa * pb) : 0.0);
     }
     return out;
 }

@@ -25,6 +25,7 @@ constexpr double kLogRatioMargin = 0.0953;    // ln 1.1: ADEV, variance, frequen
 constexpr double kPsdMargin = 0.2303;         // 1 dB in ln power
 constexpr double kAcfMargin = 0.1;            // mean autocorrelation in a lag band
 constexpr double kCorrMargin = 0.1;           // lag-0 correlation between channels
+constexpr double kCoherenceMargin = 0.1;      // band coherence between channels
 constexpr int kFracBins = 8;
 constexpr double kTailMargin = 0.1906;        // ln 1.21: kurtosis beyond 21 %
 constexpr double kJumpMargin = 0.2231;        // ln 1.25: the largest block step beyond 25 % of the usual
@@ -133,6 +134,12 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
     const std::size_t n = t_s.size();
     const std::vector<bool> fitting = fitting_mask(t_s, options);
     const double tau0 = options.sample_period_s;
+    // Each analysed channel's transform per part (fitting, held-out), shared by its band power and the coherences.
+    std::array<std::array<BandSpectrum, 2>, kChannelCount> spectra;
+    const auto band_label = [&](std::size_t j) {
+        const double f_hi = 0.5 / tau0 / std::ldexp(1.0, static_cast<int>(j));
+        return "f=" + short_number(f_hi / 2) + ".." + short_number(f_hi) + "Hz";
+    };
 
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!options.channels[c]) continue;
@@ -169,17 +176,10 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
             for (std::size_t j = 0; j < adev.size(); ++j)
                 out.add(log_floor(adev[j]), {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau0 * std::ldexp(1.0, static_cast<int>(j))) : "",
                                              seg, true, kLogRatioMargin});
-            const auto psd = octave_band_power(part);
-            std::size_t nfft = 1;
-            while (nfft < len) nfft <<= 1;
-            for (std::size_t j = 0; j < psd.size(); ++j) {
-                std::string label;
-                if (out.wants_layout()) {
-                    const double f_hi = 0.5 / tau0 / std::ldexp(1.0, static_cast<int>(j));
-                    label = "f=" + short_number(f_hi / 2) + ".." + short_number(f_hi) + "Hz";
-                }
-                out.add(log_floor(psd[j]), {"psd", name, ci, label, seg, true, kPsdMargin});
-            }
+            spectra[c][static_cast<std::size_t>(s)] = band_spectrum(part);
+            const auto psd = octave_band_power(spectra[c][static_cast<std::size_t>(s)]);
+            for (std::size_t j = 0; j < psd.size(); ++j)
+                out.add(log_floor(psd[j]), {"psd", name, ci, out.wants_layout() ? band_label(j) : "", seg, true, kPsdMargin});
             const auto acf = octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
             for (std::size_t j = 0; j < acf.size(); ++j) {
                 std::string label;
@@ -207,6 +207,14 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
                 const double r = correlation(part_of(result.residual[a], fitting, s == 0),
                                              part_of(result.residual[b], fitting, s == 0));
                 out.add(r, {"corr", pair, -1, "lag 0", seg, false, kCorrMargin});
+                // Shared content in one band (a common disturbance), or at a short lag, which lag 0 dilutes or misses.
+                const auto coh = octave_band_coherence(spectra[a][static_cast<std::size_t>(s)], spectra[b][static_cast<std::size_t>(s)]);
+                // atanh(sqrt(coherence)) is near Gaussian with a variance set by the band's bins alone (Enochson and
+                // Goodman's transform): raw coherence in a band of few bins is skewed, and its z would inflate the
+                // family-wise threshold of every cell.
+                for (std::size_t j = 0; j < coh.size(); ++j)
+                    out.add(std::atanh(std::sqrt(std::min(coh[j], 0.999999))),
+                            {"coh", pair, -1, out.wants_layout() ? band_label(j) : "", seg, false, kCoherenceMargin});
             }
         }
     }

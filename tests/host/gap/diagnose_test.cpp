@@ -130,6 +130,34 @@ TEST(Diagnose, ADiffuseGapIsReportedAndSearchedOnRequest) {
     EXPECT_GE(named, 2);
 }
 
+// Two channels share a white disturbance, one 3 outputs after the other. Each channel's own statistics see only
+// white noise, which calibration absorbs, and the lag-0 correlation is nil; the band coherence of the pair is what
+// locates it, in the bands narrow enough for the lag not to turn the phase across them.
+TEST(Diagnose, ADisturbanceSharedAtALagIsLocatedByBandCoherence) {
+    const GapModel m = testing::paper_gyro_model(8);
+    LogData log = testing::gyro_log(m, 1500, {}, 91);
+    log.counts[1] = testing::gyro_log(m, 1500, {}, 92).counts[0];
+    constexpr std::size_t kLag = 3;
+    const auto shared = testing::white(1500 + kLag, 0.5, 93);
+    const auto q8 = [](double v) { return std::round(v * 256.0) / 256.0; };  // the firmware's output grid
+    for (std::size_t k = 0; k < 1500; ++k) {
+        log.counts[0][k] += q8(shared[k + kLag]);
+        log.counts[1][k] += q8(shared[k]);
+    }
+    GapOptions o = small_options();
+    o.explain = false;
+    const GapResult r = diagnose(log, sim::paper_model(), o);
+    ASSERT_TRUE(r.channels[0] && r.channels[1]);
+    int coherence = 0;
+    for (const auto& l : r.located) {
+        const Cell& c = r.layout[l.index];
+        EXPECT_EQ(c.channel, "gyro~accel_x") << c.statistic << " " << c.cell;
+        EXPECT_NE(c.statistic, "corr") << c.cell;
+        coherence += c.statistic == "coh";
+    }
+    EXPECT_GE(coherence, 1);
+}
+
 TEST(Diagnose, ShortLogIsADataErrorNamingTheFile) {
     const GapModel m = testing::paper_gyro_model(4);
     const LogData log = testing::gyro_log(m, 50, {}, 1);

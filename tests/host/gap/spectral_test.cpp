@@ -1,5 +1,6 @@
-// Octave-grid ADEV, band power and lag-band ACF against closed forms for white and AR(1) noise.
+// Octave-grid ADEV, band power, band coherence and lag-band ACF against closed forms for white and AR(1) noise.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +31,36 @@ TEST(Spectral, WhiteNoiseBandPowerIsFlatAtHannPowerFactor) {
     ASSERT_GE(p.size(), 8u);
     for (std::size_t j = 0; j < 7; ++j)  // bands of >= 64 bins: the lower ones average too few for a tight check
         EXPECT_NEAR(p[j] / (0.375 * sigma * sigma), 1.0, 0.12) << "band " << j;
+}
+
+// x = s + n1, y = s + n2 with white s, n1, n2 of unit variance: coherence (1 / (1 + 1))^2 = 1/4 in every band.
+// With y's share of s delayed by d samples the cross term's phase turns across band j (width w = pi / 2^(j+1)):
+// 1/4 (sin(d w / 2) / (d w / 2))^2. Independent series leave only the estimator's bias, about the inverse of the
+// independent bins (a Hann window halves them).
+TEST(Spectral, BandCoherenceOfASharedComponentMatchesItsShare) {
+    const std::size_t n = 1 << 14;
+    const std::size_t d = 2;
+    const auto shared = white(n, 1.0, 4), n1 = white(n, 1.0, 5), n2 = white(n, 1.0, 6);
+    std::vector<double> x(n), y(n), lagged(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        x[i] = shared[i] + n1[i];
+        y[i] = shared[i] + n2[i];
+        lagged[i] = (i >= d ? shared[i - d] : 0.0) + n2[i];
+    }
+    const BandSpectrum sx = band_spectrum(x);
+    const auto coh = octave_band_coherence(sx, band_spectrum(y));
+    const auto none = octave_band_coherence(band_spectrum(n1), band_spectrum(n2));
+    const auto self = octave_band_coherence(sx, sx);
+    const auto lag = octave_band_coherence(sx, band_spectrum(lagged));
+    ASSERT_EQ(coh.size(), octave_band_power(x).size() - 2);  // not the bands of 2 and 4 bins
+    for (std::size_t j = 0; j < 5; ++j) {  // bands of >= 256 bins: the lower ones average too few for a tight check
+        const double bins = std::ldexp(static_cast<double>(n) / 2.0, -static_cast<int>(j) - 1);
+        const double half_turn = static_cast<double>(d) * std::numbers::pi / std::ldexp(2.0, static_cast<int>(j)) / 2.0;
+        EXPECT_NEAR(coh[j], 0.25, 0.05) << "band " << j;
+        EXPECT_NEAR(lag[j], 0.25 * std::pow(std::sin(half_turn) / half_turn, 2), 0.05) << "band " << j;
+        EXPECT_LT(none[j], 2.0 * 4.0 / bins + 0.005) << "band " << j;
+        EXPECT_NEAR(self[j], 1.0, 1e-12) << "band " << j;
+    }
 }
 
 TEST(Spectral, Ar1LagBandsMatchGeometricAutocorrelation) {
