@@ -29,6 +29,14 @@ std::vector<double> demeaned(const std::vector<double>& y) {
     return out;
 }
 
+// The octave bands of frequency index of an nfft-point transform, from Nyquist down: band j covers [hi / 2, hi) with
+// hi = nfft / 2^(j+1), while its lower index is >= min_lo. f(j, lo, hi) per band.
+template <class F>
+void for_each_octave_band(std::size_t nfft, std::size_t min_lo, F&& f) {
+    std::size_t j = 0;
+    for (std::size_t hi = nfft / 2; hi / 2 >= min_lo; hi /= 2) f(j++, hi / 2, hi);
+}
+
 }  // namespace
 
 std::vector<double> octave_oadev(const std::vector<double>& y, std::size_t max_m) {
@@ -58,16 +66,19 @@ BandSpectrum band_spectrum(const std::vector<double>& y) {
     s.length = e.size();
     Eigen::FFT<double> fft;
     fft.fwd(s.bins, w);
+    for_each_octave_band(s.bins.size(), 2, [&](std::size_t, std::size_t lo, std::size_t hi) {
+        double sum = 0.0;
+        for (std::size_t k = lo; k < hi; ++k) sum += std::norm(s.bins[k]);
+        s.band_energy.push_back(sum);
+    });
     return s;
 }
 
 std::vector<double> octave_band_power(const BandSpectrum& s) {
     std::vector<double> out;
-    for (std::size_t hi = s.bins.size() / 2; hi / 2 >= 2; hi /= 2) {
-        double sum = 0.0;
-        for (std::size_t b = hi / 2; b < hi; ++b) sum += std::norm(s.bins[b]);
-        out.push_back(sum / static_cast<double>(hi - hi / 2) / static_cast<double>(s.length));
-    }
+    for_each_octave_band(s.bins.size(), 2, [&](std::size_t j, std::size_t lo, std::size_t hi) {
+        out.push_back(s.band_energy[j] / static_cast<double>(hi - lo) / static_cast<double>(s.length));
+    });
     return out;
 }
 
@@ -75,16 +86,12 @@ std::vector<double> octave_band_power(const std::vector<double>& y) { return oct
 
 std::vector<double> octave_band_coherence(const BandSpectrum& a, const BandSpectrum& b) {
     std::vector<double> out;
-    for (std::size_t hi = a.bins.size() / 2; hi / 2 >= kCoherenceMinBins; hi /= 2) {
+    for_each_octave_band(a.bins.size(), kCoherenceMinBins, [&](std::size_t j, std::size_t lo, std::size_t hi) {
         std::complex<double> cross = 0.0;
-        double pa = 0.0, pb = 0.0;
-        for (std::size_t k = hi / 2; k < hi; ++k) {
-            cross += a.bins[k] * std::conj(b.bins[k]);
-            pa += std::norm(a.bins[k]);
-            pb += std::norm(b.bins[k]);
-        }
+        for (std::size_t k = lo; k < hi; ++k) cross += a.bins[k] * std::conj(b.bins[k]);
+        const double pa = a.band_energy[j], pb = b.band_energy[j];
         out.push_back(pa > 0.0 && pb > 0.0 ? std::norm(cross) / (pa * pb) : 0.0);
-    }
+    });
     return out;
 }
 

@@ -23,6 +23,7 @@ std::vector<double> octave_band_power(const std::vector<double>& y);
 /// two. Computed once per series, it serves its own band power and its coherence with every other series.
 struct BandSpectrum {
     std::vector<std::complex<double>> bins;  ///< FFT of the windowed series, nfft bins
+    std::vector<double> band_energy;         ///< sum of |X_k|^2 in each band of octave_band_power()
     std::size_t length = 0;                  ///< samples of the series
 };
 BandSpectrum band_spectrum(const std::vector<double>& y);
@@ -33,8 +34,9 @@ std::vector<double> octave_band_power(const BandSpectrum& s);
 inline constexpr std::size_t kCoherenceMinBins = 8;
 
 /// Magnitude-squared coherence |sum X conj(Y)|^2 / (sum |X|^2 sum |Y|^2) of two series of equal length in the
-/// bands of octave_band_power() of at least kCoherenceMinBins bins, in [0, 1]: how much of one series each band of the other predicts linearly, at lags
-/// short against the inverse of the band's width (a longer lag turns the phase across the band and averages it away).
+/// bands of octave_band_power() of at least kCoherenceMinBins bins, in [0, 1]: how much of one series each band of
+/// the other predicts linearly, at lags short against the inverse of the band's width (a longer lag turns the phase
+/// across the band and averages it away).
 /// Its bias with no shared content is about 1 / (independent bins in the band).
 std::vector<double> octave_band_coherence(const BandSpectrum& a, const BandSpectrum& b);
 
