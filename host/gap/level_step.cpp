@@ -60,12 +60,30 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
 
 }  // namespace
 
+StepPValues step_p_values(const Eigen::MatrixXd& null, double impulse, double statistic, double margin) {
+    // Each statistic's p is its rank among the log and the replicates, the log's and every replicate's alike, so
+    // that their smaller one can be ranked in turn.
+    Eigen::MatrixXd ranked(null.rows() + 1, 2);
+    ranked.topRows(null.rows()) = null;
+    ranked.bottomRows(1) << impulse, statistic;
+    const auto rank_p = [&](Eigen::Index col, double value) {
+        return static_cast<double>((ranked.col(col).array() >= value).count()) / static_cast<double>(ranked.rows());
+    };
+    const auto min_p = [&](Eigen::Index row) {
+        return std::min(rank_p(0, ranked(row, 0)), ranked(row, 1) > margin ? rank_p(1, ranked(row, 1)) : 1.0);
+    };
+    const double own = min_p(ranked.rows() - 1);
+    int as_small = 0;
+    for (Eigen::Index k = 0; k < ranked.rows(); ++k) as_small += min_p(k) <= own;
+    return {rank_p(0, impulse), rank_p(1, statistic), static_cast<double>(as_small) / static_cast<double>(ranked.rows())};
+}
+
 bool leaves_step(const LevelStep& s, double alpha) { return s.tested && s.p_value <= alpha; }
 
 LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s, const std::vector<double>& y,
                           const std::vector<std::string>& spectral_effects, const std::vector<double>& spectral_params,
                           int replicates, std::uint64_t seed, int threads, double alpha) {
-    // Each of the two tests runs at alpha / 2 and must be able to reach it twice over.
+    // Enough replicates that the combined p resolves alpha four times over.
     replicates = std::max(replicates, static_cast<int>(std::ceil(4.0 / alpha)));
     const std::size_t i = channel_index(c);
     const std::vector<double> mean = model_mean_counts(model, c, t_s);
@@ -123,19 +141,16 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     out.channel = c;
     for (std::size_t s = 0; s < 2; ++s)
         out.steps[s] = {0.5 * (t_s[steps[s].index] + t_s[steps[s].index + 1]), steps[s].size};
-    const auto monte_carlo_p = [&](Eigen::Index col) {
-        const auto exceed = (null.col(col).array() >= real[static_cast<std::size_t>(col)]).count();
-        return (1.0 + static_cast<double>(exceed)) / (1.0 + static_cast<double>(replicates));
-    };
-    out.impulse = real[0];
-    out.impulse_p = monte_carlo_p(0);
-    out.statistic = real[1];
     // Two instants and two sizes against the explanation's own parameters (the floor is in both), at half the BIC
     // price each (the statistic is in nll units).
     const double extra = 4.0 - static_cast<double>(spectral_params.size());
     out.margin = std::max(0.0, extra) * 0.5 * parameter_price(InformationCriterion::bic, real_p.count);
-    out.rival_p = monte_carlo_p(1);
-    out.p_value = std::min(1.0, 2.0 * std::min(out.impulse_p, out.statistic > out.margin ? out.rival_p : 1.0));
+    out.impulse = real[0];
+    out.statistic = real[1];
+    const StepPValues p = step_p_values(null, out.impulse, out.statistic, out.margin);
+    out.impulse_p = p.impulse;
+    out.rival_p = p.rival;
+    out.p_value = p.combined;
     out.significant = leaves_step(out, alpha);
     return out;
 }

@@ -1,7 +1,7 @@
 // Is a level step left in the log once the diagnosis has explained it? No effect of the library makes an abrupt,
 // lasting change of the mean (a mode hop, a knocked connector), yet a random walk or a long-memory Gauss-Markov
-// process closes the battery's gap around one. Two Monte Carlo tests against replicates of the explanation, each at
-// alpha / 2 (Bonferroni):
+// process closes the battery's gap around one. Two Monte Carlo tests against replicates of the explanation,
+// combined by their smaller p-value (step_p_values()):
 // - the impulse test: the differenced residual, whitened by the explanation's own spectrum, where a step becomes a
 //   single impulse; the largest standardised impulse T = max_theta (S^-1 d)_theta / sqrt((S^-1)_theta,theta) (the
 //   additive-outlier statistic). Strong against a large step, weak against a small one that the explanation's
@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "host/gap/gap_model.hpp"
 
@@ -37,9 +39,21 @@ struct LevelStep {
     double statistic = 0.0;    ///< Whittle nll of the explanation minus the rival's: > 0 where the steps fit better
     double margin = 0.0;       ///< the BIC price of the rival's extra parameters, ln(n) / 2 each [nll units]
     double rival_p = 1.0;      ///< the statistic's Monte Carlo p
-    double p_value = 1.0;      ///< 2 x the smaller p (the rival's only where its statistic exceeds the margin), <= 1
+    double p_value = 1.0;      ///< Monte Carlo p of the smaller p (the rival's only where it exceeds the margin)
     bool significant = false;  ///< leaves_step() at the test's alpha
 };
+
+struct StepPValues {
+    double impulse = 1.0;   ///< the impulse's rank p among the log and the replicates
+    double rival = 1.0;     ///< the rival statistic's
+    double combined = 1.0;  ///< the rank p of the smaller of the two (the rival's counting only above `margin`)
+};
+
+/// The level-step test's p-values from the replicates' statistics (`null`, one row per replicate: impulse, rival
+/// statistic) and the log's. The smaller p is referred to the same smaller p of every replicate: an exact Monte
+/// Carlo test, where twice the smaller (Bonferroni) is conservative, since the two tests respond to the same
+/// features and under the explanation the margin rarely lets the rival count.
+StepPValues step_p_values(const Eigen::MatrixXd& null, double impulse, double statistic, double margin);
 
 /// A level step no library effect makes: p_value <= alpha.
 bool leaves_step(const LevelStep& s, double alpha);

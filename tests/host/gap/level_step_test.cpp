@@ -1,6 +1,8 @@
 // The level-step test: a hop and a return planted on top of a random walk are found where and about as large as they
 // were planted, while the same random walk without them passes.
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -49,6 +51,45 @@ TEST(LevelStep, TheModelsOwnLogsPass) {
     int flagged = 0;
     for (std::uint64_t seed = 41; seed < 49; ++seed) flagged += run(walk_model(), {}, seed).significant;
     EXPECT_LE(flagged, 2);
+}
+
+// Two correlated statistics and the rival's margin at its 70th percentile, as under the explanation: the combined p
+// of a draw from the replicates' own distribution is uniform on the ranks (an exact test: P(p <= 0.05) = 4/80 with
+// 79 replicates), and it lies between the smaller p and Bonferroni's twice that.
+TEST(LevelStep, TheCombinedPIsAnExactMonteCarloTest) {
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> normal;
+    const auto draw = [&] {
+        const double a = normal(rng);
+        return std::array<double, 2>{a, 0.6 * a + 0.8 * normal(rng)};
+    };
+    constexpr int kReplicates = 79, kTrials = 4000;
+    const double margin = 0.524;  // the standard normal's 70th percentile
+    int rejected = 0;
+    for (int trial = 0; trial < kTrials; ++trial) {
+        Eigen::MatrixXd null(kReplicates, 2);
+        for (int k = 0; k < kReplicates; ++k) {
+            const auto d = draw();
+            null(k, 0) = d[0], null(k, 1) = d[1];
+        }
+        const auto real = draw();
+        const StepPValues p = step_p_values(null, real[0], real[1], margin);
+        const double smaller = std::min(p.impulse, real[1] > margin ? p.rival : 1.0);
+        ASSERT_GE(p.combined, smaller - 1e-12);
+        ASSERT_LE(p.combined, 2.0 * smaller + 1e-12);
+        rejected += p.combined <= 0.05;
+    }
+    const double rate = static_cast<double>(rejected) / kTrials;
+    EXPECT_NEAR(rate, 4.0 / 80.0, 3.0 * std::sqrt(0.05 * 0.95 / kTrials));
+}
+
+// Where the rival never pays its price, the combined p is the impulse test's own.
+TEST(LevelStep, WithoutTheRivalTheCombinedPIsTheImpulses) {
+    Eigen::MatrixXd null(9, 2);
+    for (int k = 0; k < 9; ++k) null(k, 0) = k, null(k, 1) = -1.0;
+    const StepPValues p = step_p_values(null, 6.5, -1.0, 0.0);
+    EXPECT_DOUBLE_EQ(p.impulse, 3.0 / 10.0);  // 6.5 itself, 7 and 8
+    EXPECT_DOUBLE_EQ(p.combined, p.impulse);
 }
 
 }  // namespace

@@ -53,12 +53,6 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     for (const auto& l : r.located)
         std::printf("  located %s %s %s z=%.1f\n", r.layout[l.index].statistic.c_str(), r.layout[l.index].channel.c_str(),
                     r.layout[l.index].cell.c_str(), l.z);
-    for (const auto& e : r.accepted) {
-        std::printf("  accepted %s on %s:", e.effect.c_str(), e.channel.c_str());
-        for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
-        std::printf(" heldout shrink %.2f%s%s\n", e.heldout_shrink, e.ambiguous_with.empty() ? "" : ", close call with ",
-                    e.ambiguous_with.c_str());
-    }
     for (std::size_t c = 0; c < kChannelCount; ++c) EXPECT_TRUE(r.channels[c]) << kChannelNames[c];
     EXPECT_TRUE(std::isfinite(r.gap_before_fit) && std::isfinite(r.gap_before_heldout));
     // PROVENANCE: sample spacing 10.07 ms mean, 17 ms standard deviation, gaps up to 0.5 s: the spacing of
@@ -66,15 +60,12 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     EXPECT_GT(r.timing.dt_jitter_rel, 0.1);
     // Block noise: accel 3-5 mg = 12-20 LSB raw, gyro 0.13 deg/s = 16.5 LSB raw, all far above the quantiser.
     for (std::size_t c = 0; c < kChannelCount; ++c) EXPECT_GT(r.base.base[c].sigma_n_counts, 5.0) << kChannelNames[c];
-    if (!r.accepted.empty()) {
-        EXPECT_LE(r.gap_after_heldout, r.gap_before_heldout);
-    }
-    // Without --search-diffuse a gap without located cells is reported, never searched.
-    EXPECT_EQ(r.diffuse_gap, r.located.empty() && r.gap_before_heldout > r.gap_bound_before);
-    if (r.located.empty()) {
-        EXPECT_EQ(r.verdict, "none");
-        EXPECT_TRUE(r.tried.empty());
-    }
+    // No cell of the four channels passes the family-wise threshold, yet the held-out score exceeds its bound (the
+    // gyro's excess, next test): a diffuse gap, reported and, without --search-diffuse, never searched.
+    EXPECT_TRUE(r.located.empty());
+    EXPECT_TRUE(r.diffuse_gap) << "heldout " << r.gap_before_heldout << " bound " << r.gap_bound_before;
+    EXPECT_EQ(r.verdict, "none");
+    EXPECT_TRUE(r.tried.empty());
 }
 
 // Four channels raise the family-wise threshold: the gyro's excess at tau of tens of seconds (z 4.3 alone) stays below
