@@ -23,6 +23,7 @@ struct GapEvalCommandOptions {
     std::vector<double> levels;
     int clean_per_seed = 0;
     bool quick = false;
+    bool clean_only = false;
     bool json = false;
 };
 
@@ -75,12 +76,19 @@ void run(const GapEvalCommandOptions& o) {
             if (done == total) std::fprintf(stderr, "\n");
         };
     };
-    options.progress = progress_for("detection threshold a_50, generator");
-    const auto sizes = gap::detection_sizes(options);
-    options.progress = progress_for("diagnosing log");
     if (!o.levels.empty()) options.levels = o.levels;
+    std::vector<gap::DetectionSize> sizes;
+    if (o.clean_only) {
+        // Nothing planted, so nothing to measure a_50 on or to tune with: the shipped thresholds are scored.
+        options.tune = false;
+        options.levels.clear();
+    } else {
+        options.progress = progress_for("detection threshold a_50, generator");
+        sizes = gap::detection_sizes(options);
+    }
+    options.progress = progress_for("diagnosing log");
     const auto cases = gap::run_cases(options, sizes);
-    const gap::Thresholds th = gap::tune(cases);
+    const gap::Thresholds th = o.clean_only ? gap::Thresholds{} : gap::tune(cases);
     const gap::EvalScores scores = gap::score(cases, th, options, sizes);
     if (o.json)
         std::cout << gap::scores_json(scores).dump(2) << "\n";
@@ -96,9 +104,9 @@ void register_gap_eval(CLI::App& app) {
                                                    "(truth generators differ from the fitted forms)");
     cmd->add_option("--seeds-tune", o->tune_seeds, "Seeds the decision thresholds are tuned on, A..B");
     cmd->add_option("--seeds-score", o->score_seeds, "Seeds the results are scored on, C..D (disjoint)");
-    cmd->add_option("--effects", o->effects, "Truth generators or the effects they stand for (default: all)")
+    CLI::Option* effects = cmd->add_option("--effects", o->effects, "Truth generators or the effects they stand for (default: all)")
         ->delimiter(',');
-    cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
+    CLI::Option* levels = cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
         ->delimiter(',')
         ->check(CLI::PositiveNumber);
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
@@ -106,6 +114,11 @@ void register_gap_eval(CLI::App& app) {
         ->check(CLI::Range(1, 1000));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
+    cmd->add_flag("--clean-only", o->clean_only,
+                  "Clean logs only, scored with the thresholds `driftlab gap` ships: the false-positive rate on many "
+                  "seeds (no a_50, no tuning)")
+        ->excludes(effects)
+        ->excludes(levels);
     cmd->add_flag("--json", o->json,
                   "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size)");
     cmd->callback([o] { run(*o); });

@@ -91,13 +91,17 @@ std::string scores_markdown(const EvalScores& s) {
     const EvalOptions& o = s.options;
     const Thresholds& th = s.thresholds;
     std::ostringstream md;
-    md << "Thresholds tuned on seeds " << o.tune_first << ".." << o.tune_last << ": penalty_per_param = "
-       << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink << ", step_alpha = " << th.step_alpha
+    if (o.tune)
+        md << "Thresholds tuned on seeds " << o.tune_first << ".." << o.tune_last;
+    else
+        md << "Thresholds as `driftlab gap` ships them (not tuned)";
+    md << ": penalty_per_param = " << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink << ", step_alpha = " << th.step_alpha
        << ", information criterion = " << criterion_name(th.information_criterion) << ". Scored on seeds " << o.score_first << ".." << o.score_last << ", " << o.samples << "-sample logs, R = "
        << o.replicates << ".\n\n";
-    md << "### Detection thresholds a_50 (tuning seeds, " << o.detection_logs
-       << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
-          "| generator | a_50 | size: detected/logs |\n|---|---|---|\n";
+    if (!s.sizes.empty())
+        md << "### Detection thresholds a_50 (tuning seeds, " << o.detection_logs
+           << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
+              "| generator | a_50 | size: detected/logs |\n|---|---|---|\n";
     for (const auto& d : s.sizes) {
         md << "| " << d.generator << " | " << fixed(d.a50, 2) << " |";
         for (const auto& p : d.curve) md << " " << fixed(p.size, 2) << ": " << p.detected << "/" << p.logs << ";";
@@ -142,7 +146,7 @@ nlohmann::json scores_json(const EvalScores& s) {
                        {"min_heldout_shrink", s.thresholds.min_heldout_shrink},
                        {"step_alpha", s.thresholds.step_alpha},
                        {"information_criterion", criterion_name(s.thresholds.information_criterion)}};
-    j["tune_seeds"] = {o.tune_first, o.tune_last};
+    j["tune_seeds"] = o.tune ? json{o.tune_first, o.tune_last} : json(nullptr);
     j["score_seeds"] = {o.score_first, o.score_last};
     j["samples"] = o.samples;
     j["replicates"] = o.replicates;

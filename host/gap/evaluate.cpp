@@ -316,7 +316,7 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
         bool tune;
     };
     std::vector<Job> jobs;
-    for (int set = 0; set < 2; ++set) {
+    for (int set = options.tune ? 0 : 1; set < 2; ++set) {
         const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
         const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
         for (std::uint64_t s = first; s <= last; ++s) {

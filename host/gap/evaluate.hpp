@@ -16,6 +16,7 @@ namespace driftlab::host::gap {
 
 struct EvalOptions {
     std::uint64_t tune_first = 1, tune_last = 4;      ///< seeds the thresholds are tuned on
+    bool tune = true;  ///< false: no tuning logs; the thresholds `driftlab gap` ships are scored (Thresholds{})
     std::uint64_t score_first = 101, score_last = 104;  ///< seeds they are scored on (disjoint)
     std::vector<std::string> generators;  ///< truth generators (truth_list()); empty = all; "none" is always added
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50

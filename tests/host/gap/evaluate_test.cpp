@@ -251,6 +251,28 @@ TEST(GapEval, ScoresCountTheScoringDecisions) {
     EXPECT_NE(scores_markdown(s).find("| kasdin_flicker | 2 | 2 | 1 | 1 | 1 |"), std::string::npos);
 }
 
+// --clean-only: the false-positive rate of the shipped thresholds on many seeds, with no tuning logs and no a_50.
+TEST(GapEval, ACleanOnlyRunScoresTheShippedThresholdsOnCleanLogsAlone) {
+    EvalOptions o;
+    o.tune = false;
+    o.levels.clear();
+    o.score_first = 21;
+    o.score_last = 22;
+    o.clean_per_seed = 3;
+    o.samples = 800;
+    o.replicates = 16;
+    const auto cases = run_cases(o, {});
+    ASSERT_EQ(cases.size(), 6u);
+    for (const auto& c : cases) {
+        EXPECT_FALSE(c.tune);
+        EXPECT_EQ(c.generator, "none");
+    }
+    const EvalScores s = score(cases, Thresholds{}, o, {});
+    EXPECT_EQ(s.clean, 6u);
+    EXPECT_NE(scores_markdown(s).find("Thresholds as `driftlab gap` ships them (not tuned)"), std::string::npos);
+    EXPECT_TRUE(scores_json(s)["tune_seeds"].is_null());
+}
+
 TEST(GapEval, TruthGeneratorsHaveTheirRequestedSize) {
     std::vector<double> t(2000);
     for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1);
