@@ -24,6 +24,7 @@ struct GapEvalCommandOptions {
     int clean_per_seed = 0;
     bool quick = false;
     bool clean_only = false;
+    bool shipped = false;
     bool json = false;
 };
 
@@ -78,17 +79,17 @@ void run(const GapEvalCommandOptions& o) {
     };
     if (!o.levels.empty()) options.levels = o.levels;
     std::vector<gap::DetectionSize> sizes;
+    // With the shipped thresholds the tuning seeds only measure a_50 (the thresholds were tuned on the default ones).
+    options.tune = !(o.shipped || o.clean_only);
     if (o.clean_only) {
-        // Nothing planted, so nothing to measure a_50 on or to tune with: the shipped thresholds are scored.
-        options.tune = false;
-        options.levels.clear();
+        options.levels.clear();  // nothing planted: no a_50 to measure
     } else {
         options.progress = progress_for("detection threshold a_50, generator");
         sizes = gap::detection_sizes(options);
     }
     options.progress = progress_for("diagnosing log");
     const auto cases = gap::run_cases(options, sizes);
-    const gap::Thresholds th = o.clean_only ? gap::Thresholds{} : gap::tune(cases);
+    const gap::Thresholds th = options.tune ? gap::tune(cases) : gap::Thresholds{};
     const gap::EvalScores scores = gap::score(cases, th, options, sizes);
     if (o.json)
         std::cout << gap::scores_json(scores).dump(2) << "\n";
@@ -114,9 +115,12 @@ void register_gap_eval(CLI::App& app) {
         ->check(CLI::Range(1, 1000));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
+    cmd->add_flag("--shipped", o->shipped,
+                  "Score the thresholds `driftlab gap` ships instead of tuning them (the tuning seeds then only measure "
+                  "a_50): more scoring seeds for the same frozen thresholds");
     cmd->add_flag("--clean-only", o->clean_only,
-                  "Clean logs only, scored with the thresholds `driftlab gap` ships: the false-positive rate on many "
-                  "seeds (no a_50, no tuning)")
+                  "Clean logs only, scored with the thresholds `driftlab gap` ships (implies --shipped): the "
+                  "false-positive rate on many seeds (no a_50)")
         ->excludes(effects)
         ->excludes(levels);
     cmd->add_flag("--json", o->json,
