@@ -316,7 +316,7 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
         bool tune;
     };
     std::vector<Job> jobs;
-    for (int set = options.tune ? 0 : 1; set < 2; ++set) {
+    for (int set = 0; set < 2; ++set) {
         const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
         const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
         for (std::uint64_t s = first; s <= last; ++s) {
@@ -327,11 +327,16 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
                 for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
         }
     }
+    // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in
+    // the list) and hence the log itself are the same either way.
+    const auto to_run = static_cast<std::size_t>(
+        std::count_if(jobs.begin(), jobs.end(), [&](const Job& j) { return options.tune || !j.tune; }));
     std::vector<EvalCase> out;
     for (std::size_t i = 0; i < jobs.size(); ++i) {
         const Job& j = jobs[i];
+        if (!options.tune && j.tune) continue;
         out.push_back(run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options, sizes));
-        if (options.progress) options.progress(i + 1, jobs.size());
+        if (options.progress) options.progress(out.size(), to_run);
     }
     return out;
 }

@@ -267,6 +267,17 @@ TEST(GapEval, ACleanOnlyRunScoresTheShippedThresholdsOnCleanLogsAlone) {
         EXPECT_FALSE(c.tune);
         EXPECT_EQ(c.generator, "none");
     }
+    // The same scoring logs as a run that tunes first: the same seeds, so the same verdict on each.
+    EvalOptions tuned = o;
+    tuned.tune = true;
+    std::vector<EvalCase> scored;
+    for (const auto& c : run_cases(tuned, {}))
+        if (!c.tune) scored.push_back(c);
+    ASSERT_EQ(scored.size(), cases.size());
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        EXPECT_EQ(scored[k].seed, cases[k].seed);
+        EXPECT_EQ(scored[k].detected, cases[k].detected);
+    }
     const EvalScores s = score(cases, Thresholds{}, o, {});
     EXPECT_EQ(s.clean, 6u);
     EXPECT_NE(scores_markdown(s).find("Thresholds as `driftlab gap` ships them (not tuned)"), std::string::npos);
