@@ -329,12 +329,12 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
     }
     // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in
     // the list) and hence the log itself are the same either way.
-    const auto to_run = static_cast<std::size_t>(
-        std::count_if(jobs.begin(), jobs.end(), [&](const Job& j) { return options.tune || !j.tune; }));
+    const auto runs = [&](const Job& j) { return options.tune || !j.tune; };
+    const auto to_run = static_cast<std::size_t>(std::count_if(jobs.begin(), jobs.end(), runs));
     std::vector<EvalCase> out;
     for (std::size_t i = 0; i < jobs.size(); ++i) {
         const Job& j = jobs[i];
-        if (!options.tune && j.tune) continue;
+        if (!runs(j)) continue;
         out.push_back(run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options, sizes));
         if (options.progress) options.progress(out.size(), to_run);
     }

@@ -82,8 +82,6 @@ std::vector<double> octave_band_power(const BandSpectrum& s) {
     return out;
 }
 
-std::vector<double> octave_band_power(const std::vector<double>& y) { return octave_band_power(band_spectrum(y)); }
-
 std::vector<double> octave_band_coherence(const BandSpectrum& a, const BandSpectrum& b) {
     std::vector<double> out;
     for_each_octave_band(a.bins.size(), kCoherenceMinBins, [&](std::size_t j, std::size_t lo, std::size_t hi) {

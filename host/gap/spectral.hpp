@@ -14,11 +14,6 @@ namespace driftlab::host::gap {
 /// (NIST SP 1065 eq. 14, via the phase x = cumsum(y) tau0). Returns one value per m [unit of y].
 std::vector<double> octave_oadev(const std::vector<double>& y, std::size_t max_m);
 
-/// Mean periodogram power of `y` (mean removed, Hann window, zero-padded to a power of two) in octave bands of
-/// frequency index, from Nyquist down: band j covers [K/2^(j+1), K/2^j) with K = nfft/2, while the band's lower
-/// index is >= 2. Power is per bin in [unit^2 * samples]; only ratios between logs of equal length matter here.
-std::vector<double> octave_band_power(const std::vector<double>& y);
-
 /// The transform both band summaries start from: `y` with its mean removed, Hann window, zero-padded to a power of
 /// two. Computed once per series, it serves its own band power and its coherence with every other series.
 struct BandSpectrum {
@@ -27,6 +22,10 @@ struct BandSpectrum {
     std::size_t length = 0;                  ///< samples of the series
 };
 BandSpectrum band_spectrum(const std::vector<double>& y);
+
+/// Mean periodogram power of the series of `s` in octave bands of frequency index, from Nyquist down: band j covers
+/// [K/2^(j+1), K/2^j) with K = nfft/2, while the band's lower index is >= 2. Power is per bin in
+/// [unit^2 * samples]; only ratios between logs of equal length matter here.
 std::vector<double> octave_band_power(const BandSpectrum& s);
 
 /// Bands of fewer bins hold too few independent ones (a Hann window couples neighbours) for a coherence: with one,
