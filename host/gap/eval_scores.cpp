@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "host/gap/candidates.hpp"
 #include "host/report/json_out.hpp"
@@ -29,6 +30,42 @@ std::string fixed(double v, int digits) {
 std::string fixed(const std::optional<double>& v) { return v ? fixed(*v, 2) : "-"; }
 
 nlohmann::json number(const std::optional<double>& v) { return v ? report::json_number(*v) : nlohmann::json(nullptr); }
+
+TargetScore target(std::string name, std::size_t count, std::size_t logs, double bound, bool at_most) {
+    TargetScore t{std::move(name), count, logs};
+    t.rate = static_cast<double>(count) / static_cast<double>(logs);
+    const auto ci = stats::clopper_pearson(count, logs);
+    t.low = ci.lower, t.high = ci.upper;
+    t.bound = bound, t.at_most = at_most;
+    t.met = at_most ? t.rate <= bound : t.rate >= bound;
+    t.settled = t.high < bound || t.low > bound;
+    return t;
+}
+
+// The targets of docs/gap.md read on the scores: the false-positive rate, and at kTargetLevel the top-1 rate of each
+// library effect and the attributed share of each out-of-library generator (that one over all sizes too).
+std::vector<TargetScore> read_targets(const EvalScores& s) {
+    std::vector<TargetScore> out;
+    if (s.clean) out.push_back(target("false positives: clean logs given a verdict", s.clean_flagged, s.clean, 0.05, true));
+    for (const auto& z : s.by_size) {
+        if (z.generator == "none" || z.level != kTargetLevel || z.logs == 0) continue;
+        if (!z.truth.empty()) {
+            out.push_back(target("top-1: " + z.generator + " -> " + z.truth + " at 2 x a_50", static_cast<std::size_t>(z.top1),
+                                 static_cast<std::size_t>(z.logs), 0.8, false));
+            continue;
+        }
+        const std::size_t wrong = static_cast<std::size_t>(z.logs - z.top1);
+        out.push_back(target("attributed: " + z.generator + " (out of library) at 2 x a_50", wrong, static_cast<std::size_t>(z.logs), 0.2, true));
+        std::size_t all = 0, all_wrong = 0;
+        for (const auto& y : s.by_size)
+            if (y.generator == z.generator) all += static_cast<std::size_t>(y.logs), all_wrong += static_cast<std::size_t>(y.logs - y.top1);
+        if (all > static_cast<std::size_t>(z.logs))
+            out.push_back(target("attributed: " + z.generator + " (out of library), all sizes", all_wrong, all, 0.2, true));
+    }
+    return out;
+}
+
+std::string percent(double v) { return fixed(100.0 * v, 1) + " %"; }
 
 }  // namespace
 
@@ -84,6 +121,7 @@ EvalScores score(const std::vector<EvalCase>& cases, const Thresholds& th, const
             s.by_size.push_back(z);
         }
     }
+    s.targets = read_targets(s);
     return s;
 }
 
@@ -135,6 +173,15 @@ std::string scores_markdown(const EvalScores& s) {
         md << "| " << z.generator << " | " << z.level << " | " << z.logs << " | " << z.detected << " | " << z.top1 << " | "
            << z.or_pair << " | " << fixed(z.predicted) << " | " << fixed(z.remeasured) << " | " << fixed(z.oracle) << " | "
            << fixed(z.abs_error) << " |\n";
+    if (!s.targets.empty()) {
+        md << "\n### Targets (scoring seeds; 95 % Clopper-Pearson intervals)\n\n"
+              "`met` reads the estimate; `settled` says whether the interval lies wholly on one side of the bound.\n\n"
+              "| target | count / logs | rate | 95 % interval | bound | met | settled |\n|---|---|---|---|---|---|---|\n";
+        for (const auto& t : s.targets)
+            md << "| " << t.target << " | " << t.count << " / " << t.logs << " | " << percent(t.rate) << " | " << percent(t.low)
+               << " - " << percent(t.high) << " | " << (t.at_most ? "<= " : ">= ") << percent(t.bound) << " | "
+               << (t.met ? "yes" : "no") << " | " << (t.settled ? "yes" : "no") << " |\n";
+    }
     return md.str();
 }
 
@@ -179,6 +226,18 @@ nlohmann::json scores_json(const EvalScores& s) {
                           {"oracle", number(z.oracle)},
                           {"abs_error", number(z.abs_error)}}}});
     j["by_size"] = rows;
+    json targets = json::array();
+    for (const auto& t : s.targets)
+        targets.push_back({{"target", t.target},
+                           {"count", t.count},
+                           {"logs", t.logs},
+                           {"rate", t.rate},
+                           {"interval", {t.low, t.high}},
+                           {"bound", t.bound},
+                           {"at_most", t.at_most},
+                           {"met", t.met},
+                           {"settled", t.settled}});
+    j["targets"] = targets;
     return j;
 }
 

@@ -26,6 +26,20 @@ struct SizeScore {
     std::optional<double> predicted, remeasured, oracle, abs_error;
 };
 
+/// One of the benchmark's targets read on the scoring cases: a rate with its 95 % Clopper-Pearson interval.
+struct TargetScore {
+    std::string target;       ///< what is counted, e.g. "top-1: kasdin_flicker -> flicker at 2 x a_50"
+    std::size_t count = 0, logs = 0;
+    double rate = 0.0, low = 0.0, high = 1.0;
+    double bound = 0.0;       ///< the target: rate <= bound when `at_most`, else rate >= bound
+    bool at_most = false;
+    bool met = false;         ///< by the estimate
+    bool settled = false;     ///< the interval lies wholly on one side of the bound
+};
+
+/// The level at which attribution is judged: twice each effect's detection threshold.
+inline constexpr double kTargetLevel = 2.0;
+
 struct EvalScores {
     EvalOptions options;
     Thresholds thresholds;
@@ -36,6 +50,9 @@ struct EvalScores {
     /// Per truth generator ("none" first): its library effect and the count of each verdict, all sizes.
     std::vector<std::pair<std::string, std::map<std::string, int>>> confusion;
     std::vector<SizeScore> by_size;
+    /// False-positive rate <= 5 %; at kTargetLevel, top-1 >= 80 % per library effect and out-of-library logs
+    /// attributed to a library effect <= 20 % (also over all sizes). Rows without logs are left out.
+    std::vector<TargetScore> targets;
 };
 
 /// Scores the scoring cases under `th`.
@@ -48,7 +65,8 @@ std::string scores_markdown(const EvalScores& s);
 /// The same as JSON: keys `thresholds`, `tune_seeds`, `score_seeds`, `samples`, `replicates`, `a50[]`
 /// (`generator`, `a50`, `curve[]` {`size`, `detected`, `logs`}), `false_positive` {`clean`, `flagged`, `rate`,
 /// `interval`}, `confusion` {generator: {verdict: count}}, `by_size[]` (`generator`, `truth`, `level`, `logs`,
-/// `detected`, `top1`, `or_pair`, `shrink` {`predicted`, `remeasured`, `oracle`, `abs_error`}).
+/// `detected`, `top1`, `or_pair`, `shrink` {`predicted`, `remeasured`, `oracle`, `abs_error`}), `targets[]` (`target`,
+/// `count`, `logs`, `rate`, `interval`, `bound`, `at_most`, `met`, `settled`).
 nlohmann::json scores_json(const EvalScores& s);
 
 }  // namespace driftlab::host::gap

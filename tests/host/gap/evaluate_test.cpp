@@ -249,6 +249,39 @@ TEST(GapEval, ScoresCountTheScoringDecisions) {
     EXPECT_EQ(j["confusion"]["mode_hop"]["flicker"], 1);
     EXPECT_EQ(j["by_size"][1]["top1"], 1);
     EXPECT_NE(scores_markdown(s).find("| kasdin_flicker | 2 | 2 | 1 | 1 | 1 |"), std::string::npos);
+
+    // The targets, read at 2 x a_50 with exact intervals: the false-positive rate 1/3 (Clopper-Pearson 0.8-90.6 %),
+    // flicker's top-1 1/2 and the mode hop attributed 1/1; none met, none settled by so few logs.
+    ASSERT_EQ(s.targets.size(), 3u);
+    EXPECT_EQ(s.targets[0].count, 1u);
+    EXPECT_EQ(s.targets[0].logs, 3u);
+    EXPECT_NEAR(s.targets[0].low, 0.0084, 1e-4);
+    EXPECT_NEAR(s.targets[0].high, 0.9057, 1e-4);
+    EXPECT_TRUE(s.targets[0].at_most);
+    EXPECT_FALSE(s.targets[0].met);
+    EXPECT_FALSE(s.targets[0].settled);
+    EXPECT_EQ(s.targets[1].target, "top-1: kasdin_flicker -> flicker at 2 x a_50");
+    EXPECT_DOUBLE_EQ(s.targets[1].rate, 0.5);
+    EXPECT_FALSE(s.targets[1].at_most);
+    EXPECT_FALSE(s.targets[1].met);
+    EXPECT_DOUBLE_EQ(s.targets[2].rate, 1.0);
+    EXPECT_FALSE(s.targets[2].met);
+    EXPECT_EQ(j["targets"].size(), 3u);
+    EXPECT_NE(scores_markdown(s).find("| top-1: kasdin_flicker -> flicker at 2 x a_50 | 1 / 2 | 50.0 % |"), std::string::npos);
+
+    // 100 clean logs, none flagged: the interval (0-3.6 %) lies below 5 %, so the target is met and settled; the
+    // mode hop now at two sizes also gets its all-sizes row (1 of 2 attributed).
+    std::vector<EvalCase> more(100, make("none", "none", 0.0, false, false));
+    more.push_back(make("mode_hop", "", 2.0, true, false));
+    more.push_back(make("mode_hop", "", 1.0, false, false));
+    const EvalScores t = score(more, Thresholds{1.0, 0.3, 0.05, InformationCriterion::bic}, o, {});
+    ASSERT_EQ(t.targets.size(), 3u);
+    EXPECT_TRUE(t.targets[0].met);
+    EXPECT_TRUE(t.targets[0].settled);
+    EXPECT_NEAR(t.targets[0].high, 1.0 - std::pow(0.025, 1.0 / 100.0), 1e-9);  // k = 0: 1 - (alpha/2)^(1/n)
+    EXPECT_EQ(t.targets[2].target, "attributed: mode_hop (out of library), all sizes");
+    EXPECT_EQ(t.targets[2].count, 1u);
+    EXPECT_EQ(t.targets[2].logs, 2u);
 }
 
 // --clean-only: the false-positive rate of the shipped thresholds on many seeds, with no tuning logs and no a_50.
