@@ -124,7 +124,7 @@ void register_gap_eval(CLI::App& app) {
         ->excludes(effects)
         ->excludes(levels);
     cmd->add_flag("--json", o->json,
-                  "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size)");
+                  "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size, targets)");
     cmd->callback([o] { run(*o); });
 }
 

@@ -46,16 +46,17 @@ TargetScore target(std::string name, std::size_t count, std::size_t logs, double
 // library effect and the attributed share of each out-of-library generator (that one over all sizes too).
 std::vector<TargetScore> read_targets(const EvalScores& s) {
     std::vector<TargetScore> out;
+    const std::string at_level = " at " + fixed(kTargetLevel, 0) + " x a_50";
     if (s.clean) out.push_back(target("false positives: clean logs given a verdict", s.clean_flagged, s.clean, 0.05, true));
     for (const auto& z : s.by_size) {
         if (z.generator == "none" || z.level != kTargetLevel || z.logs == 0) continue;
         if (!z.truth.empty()) {
-            out.push_back(target("top-1: " + z.generator + " -> " + z.truth + " at 2 x a_50", static_cast<std::size_t>(z.top1),
+            out.push_back(target("top-1: " + z.generator + " -> " + z.truth + at_level, static_cast<std::size_t>(z.top1),
                                  static_cast<std::size_t>(z.logs), 0.8, false));
             continue;
         }
         const std::size_t wrong = static_cast<std::size_t>(z.logs - z.top1);
-        out.push_back(target("attributed: " + z.generator + " (out of library) at 2 x a_50", wrong, static_cast<std::size_t>(z.logs), 0.2, true));
+        out.push_back(target("attributed: " + z.generator + " (out of library)" + at_level, wrong, static_cast<std::size_t>(z.logs), 0.2, true));
         std::size_t all = 0, all_wrong = 0;
         for (const auto& y : s.by_size)
             if (y.generator == z.generator) all += static_cast<std::size_t>(y.logs), all_wrong += static_cast<std::size_t>(y.logs - y.top1);
