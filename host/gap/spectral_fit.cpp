@@ -148,8 +148,4 @@ double parameter_price(InformationCriterion ic, double observations) {
     return ic == InformationCriterion::aic ? 2.0 : std::log(observations);
 }
 
-double information_criterion(const SpectralFit& fit, const PartPeriodogram& p, InformationCriterion ic) {
-    return 2.0 * fit.nll + fit.free_parameters * parameter_price(ic, p.count);
-}
-
 }  // namespace driftlab::host::gap

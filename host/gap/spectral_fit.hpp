@@ -42,8 +42,4 @@ enum class InformationCriterion { aic, bic };
 const char* criterion_name(InformationCriterion ic);
 double parameter_price(InformationCriterion ic, double observations);
 
-/// The criterion of a fit on its own periodogram: 2 nll + price x free parameters (observations: the part's
-/// differences).
-double information_criterion(const SpectralFit& fit, const PartPeriodogram& p, InformationCriterion ic);
-
 }  // namespace driftlab::host::gap
