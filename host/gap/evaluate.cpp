@@ -342,31 +342,35 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
 }
 
 Thresholds tune(const std::vector<EvalCase>& cases) {
+    const auto score = [&](const Thresholds& th) {
+        std::size_t none = 0, fp = 0, right = 0, total = 0;
+        for (const auto& c : cases) {
+            if (!c.tune) continue;
+            const Decision d = decide(c, th);
+            ++total;
+            if (c.truth == "none") {
+                ++none;
+                fp += d.verdict != "none";
+            }
+            right += is_correct(c, d, false);
+        }
+        const double fpr = none ? static_cast<double>(fp) / static_cast<double>(none) : 0.0;
+        return static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, total)) - (fpr > 0.05 ? 1.0 : 0.0);
+    };
+    // The shipped thresholds win ties: they change only when the tuning seeds prefer others (a few hundred logs
+    // often tie, and grid order alone would then pick a new shipped value).
     Thresholds best;
-    double best_score = -1.0;
+    double best_score = score(best);
     for (double pen : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0}) {
         for (double shrink : {0.3, 0.4, 0.5, 0.6, 0.7}) {  // a clear margin: at least 30 % of the excess
             // The level-step test's level trades out-of-library logs called unexplained against library effects
-            // wrongly called so; the conventional 5 % comes first, so it wins ties.
+            // wrongly called so; among the rest, the conventional 5 % comes first, so it wins ties.
             for (double step_alpha : {0.05, 0.02, 0.1, 0.2}) {
-              for (InformationCriterion ic : {InformationCriterion::bic, InformationCriterion::aic}) {
-                const Thresholds th{pen, shrink, step_alpha, ic};
-                std::size_t none = 0, fp = 0, right = 0, total = 0;
-                for (const auto& c : cases) {
-                    if (!c.tune) continue;
-                    const Decision d = decide(c, th);
-                    ++total;
-                    if (c.truth == "none") {
-                        ++none;
-                        fp += d.verdict != "none";
-                    }
-                    right += is_correct(c, d, false);
+                for (InformationCriterion ic : {InformationCriterion::bic, InformationCriterion::aic}) {
+                    const Thresholds th{pen, shrink, step_alpha, ic};
+                    const double s = score(th);
+                    if (s > best_score) best_score = s, best = th;
                 }
-                const double fpr = none ? static_cast<double>(fp) / static_cast<double>(none) : 0.0;
-                const double score = static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, total)) -
-                                     (fpr > 0.05 ? 1.0 : 0.0);
-                if (score > best_score) best_score = score, best = th;
-              }
             }
         }
     }

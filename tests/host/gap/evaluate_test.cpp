@@ -175,6 +175,38 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     EXPECT_EQ(decide(c, th).verdict, "none");
 }
 
+// Tuning keeps the shipped thresholds when every threshold scores alike, and moves them when the tuning cases
+// prefer others: a spurious Gauss-Markov fit that only a penalty of 0.25 admits beats the right flicker.
+TEST(GapEval, TuningKeepsTheShippedThresholdsUnlessTheTuningSeedsPreferOthers) {
+    EvalCase clean;
+    clean.truth = clean.generator = "none";
+    clean.tune = true;  // not detected: "none" under any thresholds
+    const Thresholds shipped = tune({clean});
+    const Thresholds defaults{};
+    EXPECT_EQ(shipped.penalty_per_param, defaults.penalty_per_param);
+    EXPECT_EQ(shipped.min_heldout_shrink, defaults.min_heldout_shrink);
+    EXPECT_EQ(shipped.step_alpha, defaults.step_alpha);
+    EXPECT_EQ(shipped.information_criterion, defaults.information_criterion);
+
+    EvalCase planted;
+    planted.generator = "kasdin_flicker", planted.truth = "flicker";
+    planted.tune = planted.detected = true;
+    Explanation right, spurious;
+    right.effect = "flicker", spurious.effect = "gauss_markov";
+    for (Explanation* e : {&right, &spurious}) {
+        e->penalty = 10.0, e->heldout_before = 3.0, e->heldout_after = 1.2, e->heldout_shrink = 0.9;
+        e->heldout_loss_gain = 20.0, e->gaussian = true, e->spectral_observations = 1000.0;
+    }
+    right.loss_gain = 100.0, right.spectral_gain = 40.0, right.spectral_extra_parameters = 1;
+    spurious.loss_gain = 3.0;  // passes at 0.25 x 10, not at 0.5 x 10
+    spurious.spectral_gain = 400.0, spurious.spectral_extra_parameters = 2;  // the best under AIC and BIC
+    planted.tried = {right, spurious};
+    ASSERT_EQ(decide(planted, defaults).verdict, "gauss_markov");
+    const Thresholds moved = tune({clean, planted});
+    EXPECT_GE(moved.penalty_per_param, 0.5);
+    EXPECT_EQ(decide(planted, moved).verdict, "flicker");
+}
+
 // Between two Gaussian candidates, Vuong's test runs over the Fourier frequencies of the spectral likelihood,
 // corrected by the information criterion: an extra parameter costs half its price (BIC: ln(observations); AIC: 2).
 TEST(GapEval, CloseCallBetweenGaussianCandidatesIsVuongOverFrequencies) {
