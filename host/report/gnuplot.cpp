@@ -34,13 +34,15 @@ std::string quoted(const std::string& text) {
     return out + "'";
 }
 
+bool has_ends(const PlotSeries& s) { return s.style == SeriesStyle::error_bars || s.style == SeriesStyle::band; }
+
 void check(const Plot& plot) {
     if (plot.series.empty()) throw UsageError("plot '" + plot.title + "' has no series");
     for (const auto& s : plot.series) {
         if (s.x.size() != s.y.size())
             throw UsageError("plot series '" + s.title + "': x and y differ in length");
-        if (s.style == SeriesStyle::error_bars && (s.y_low.size() != s.y.size() || s.y_high.size() != s.y.size()))
-            throw UsageError("plot series '" + s.title + "': error bars need y_low and y_high for every point");
+        if (has_ends(s) && (s.y_low.size() != s.y.size() || s.y_high.size() != s.y.size()))
+            throw UsageError("plot series '" + s.title + "': error bars and bands need y_low and y_high for every point");
     }
 }
 
@@ -59,7 +61,7 @@ void write_data(const Plot& plot, const fs::path& path) {
             put(s.x[i]);
             text += ' ';
             put(s.y[i]);
-            if (s.style == SeriesStyle::error_bars) {
+            if (has_ends(s)) {
                 text += ' ';
                 put(s.y_low[i]);
                 text += ' ';
@@ -82,6 +84,7 @@ std::string style_clause(const PlotSeries& s) {
         case SeriesStyle::dots: clause = "with dots"; break;
         case SeriesStyle::steps: clause = "with steps"; break;
         case SeriesStyle::error_bars: clause = "with yerrorbars pt 7 ps 0.6"; break;
+        case SeriesStyle::band: clause = "with filledcurves fs transparent solid 0.25 noborder"; break;
     }
     clause += " lw " + format_double(s.line_width);
     if (s.dashed) clause += " dt 3";
@@ -110,7 +113,8 @@ std::string script(const Plot& plot, const fs::path& data, const fs::path& image
     for (std::size_t i = 0; i < plot.series.size(); ++i) {
         const auto& s = plot.series[i];
         if (i) gp << ", \\\n     ";
-        gp << quoted(data.string()) << " index " << i << (s.style == SeriesStyle::error_bars ? " using 1:2:3:4 " : " using 1:2 ")
+        const char* columns = s.style == SeriesStyle::error_bars ? " using 1:2:3:4 " : s.style == SeriesStyle::band ? " using 1:3:4 " : " using 1:2 ";
+        gp << quoted(data.string()) << " index " << i << columns
            << style_clause(s);
     }
     gp << "\nunset output\n";

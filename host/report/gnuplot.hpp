@@ -14,12 +14,13 @@
 
 namespace driftlab::host::report {
 
-enum class SeriesStyle { lines, points, dots, steps, error_bars };
+/// band: the area between y_low and y_high, filled half-transparent (a replicate envelope); y is not drawn.
+enum class SeriesStyle { lines, points, dots, steps, error_bars, band };
 
 struct PlotSeries {
     std::string title;           ///< legend entry ("" = none)
     std::vector<double> x, y;
-    std::vector<double> y_low, y_high;  ///< for error_bars: the bar ends (same length as y)
+    std::vector<double> y_low, y_high;  ///< for error_bars and band: the ends (same length as y)
     SeriesStyle style = SeriesStyle::lines;
     bool dashed = false;         ///< dotted line, e.g. for bounds
     std::string color;           ///< gnuplot colour name or "#rrggbb"; "" = automatic

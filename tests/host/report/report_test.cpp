@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <iterator>
 
 #include "host/fit/drift_analysis.hpp"
 #include "host/fit/file_analysis.hpp"
@@ -77,14 +78,23 @@ TEST(Report, GnuplotWritesPngAndSvg) {
     s.y_low = {0.9, 0.25, 0.05};
     s.y_high = {1.1, 0.35, 0.15};
     s.style = SeriesStyle::error_bars;
-    p.series = {s};
+    PlotSeries band = s;
+    band.title = "band";
+    band.style = SeriesStyle::band;
+    p.series = {s, band};
     const auto dir = (fs::temp_directory_path() / "driftlab_plot_test").string();
     const auto images = render_plot(p, dir, "t");
     ASSERT_EQ(images.size(), 2u);
     for (const auto& image : images) EXPECT_GT(fs::file_size(image), 500u) << image;
     EXPECT_NE(render_svg(p).find("<svg"), std::string::npos);
+    // The band fills between its low and high columns (3 and 4 of its data block).
+    std::ifstream script(fs::path(dir) / "t.png.gp");
+    const std::string gp((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
+    EXPECT_NE(gp.find("index 1 using 1:3:4 with filledcurves"), std::string::npos) << gp;
     Plot empty;
     EXPECT_THROW(render_plot(empty, dir, "e"), UsageError);
+    p.series[1].y_high.pop_back();
+    EXPECT_THROW(render_plot(p, dir, "b"), UsageError);
 }
 
 TEST(Report, HtmlIsSelfContainedWithTablesVerdictsAllanAndFigures) {
