@@ -60,7 +60,7 @@ LogData load(const GapCommandOptions& o) {
 }
 
 void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
-    std::printf("verdict: %s\n", r.verdict.c_str());
+    std::printf("verdict: %s (%s)\n", r.verdict.c_str(), gap::verdict_reason(r, options).c_str());
     std::printf("gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f"
                 " (held-out bound %.2f: %s)\n",
                 r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout, r.gap_bound_after,
@@ -77,10 +77,18 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                     gap::segment_name(c.segment), l.z, std::isnan(l.ratio) ? "diff" : "ratio",
                     std::isnan(l.ratio) ? l.difference : l.ratio);
     }
+    if (!r.accepted.empty()) std::printf("explanation (effects added in order; parameters refitted beside the later ones):\n");
+    for (const auto& e : r.accepted) {
+        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %.0f%%) ", e.step, e.effect.c_str(), e.channel.c_str(),
+                    e.heldout_before, e.heldout_after, 100 * e.heldout_shrink);
+        for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
+        std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
+                    e.settle.c_str());
+    }
     if (!r.tried.empty()) std::printf("candidates (fitted on the fitting part, judged on the held-out part):\n");
     for (const auto& e : r.tried) {
         std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.step,
-                    e.effect.c_str(), e.channel.c_str(), e.accepted ? "ACCEPTED" : "rejected", e.heldout_before,
+                    e.effect.c_str(), e.channel.c_str(), gap::was_added(r, e) ? "ADDED   " : e.accepted ? "passed  " : "rejected", e.heldout_before,
                     e.heldout_after, 100 * e.heldout_shrink, e.loss_gain, e.penalty);
         if (gap::has_delta_ic(e)) std::printf(" dIC %.1f", gap::delta_ic(e, options.explain_options.information_criterion));
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);

@@ -23,25 +23,54 @@ constexpr int kBandReplicates = 12;
 
 struct Band {
     std::vector<double> low, high;
+
+    void widen(const std::vector<double>& v) {
+        if (low.empty()) low = high = v;
+        for (std::size_t j = 0; j < v.size(); ++j) {
+            low[j] = std::min(low[j], v[j]);
+            high[j] = std::max(high[j], v[j]);
+        }
+    }
 };
 
-// Pointwise min/max of the residual ADEV over a few replicates: the band the real curve should fall in.
-Band adev_band(const GapModel& model, const LogData& log, std::size_t c, std::size_t max_m, std::uint64_t seed) {
-    Band band;
+// Sample-index edges of the time bins of the mean-over-time plot: about 30 outputs each, 10 to 60 bins.
+std::vector<std::size_t> time_bins(std::size_t n) {
+    const std::size_t bins = std::clamp<std::size_t>(n / 30, 10, 60);
+    std::vector<std::size_t> edges(bins + 1);
+    for (std::size_t b = 0; b <= bins; ++b) edges[b] = b * n / bins;
+    return edges;
+}
+
+std::vector<double> binned_mean(const std::vector<double>& v, const std::vector<std::size_t>& edges) {
+    std::vector<double> out(edges.size() - 1);
+    for (std::size_t b = 0; b + 1 < edges.size(); ++b) {
+        double sum = 0.0;
+        for (std::size_t k = edges[b]; k < edges[b + 1]; ++k) sum += v[k];
+        out[b] = sum / static_cast<double>(std::max<std::size_t>(1, edges[b + 1] - edges[b]));
+    }
+    return out;
+}
+
+// What the real log's eq. 1 residual should fall in under `model`: pointwise min/max over a few replicates, each
+// refitted as the log is, of the residual's octave ADEV and of its mean per time bin.
+struct ReplicateBands {
+    Band adev, mean;
+};
+
+ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::size_t c, std::size_t max_m,
+                               const std::vector<std::size_t>& edges, std::uint64_t seed) {
+    ReplicateBands bands;
     for (int r = 0; r < kBandReplicates; ++r) {
         SimRequest req;
         req.t_s = &log.t_s;
         req.channels = {};
         req.channels[c] = true;
         const SimOutput sim = simulate(model, req, replicate_seed(seed, r));
-        const auto dev = octave_oadev(fit::fit_drift(log.t_s, sim[c], start_at_model(model, static_cast<Channel>(c))).residual, max_m);
-        if (band.low.empty()) band.low = band.high = dev;
-        for (std::size_t j = 0; j < dev.size(); ++j) {
-            band.low[j] = std::min(band.low[j], dev[j]);
-            band.high[j] = std::max(band.high[j], dev[j]);
-        }
+        const auto residual = fit::fit_drift(log.t_s, sim[c], start_at_model(model, static_cast<Channel>(c))).residual;
+        bands.adev.widen(octave_oadev(residual, max_m));
+        bands.mean.widen(binned_mean(residual, edges));
     }
-    return band;
+    return bands;
 }
 
 std::string fixed(double v, int digits = 2) {
@@ -52,21 +81,84 @@ std::string fixed(double v, int digits = 2) {
     return s.str();
 }
 
+std::string parameter_list(const Explanation& e) {
+    std::string out;
+    for (const auto& [k, v] : e.params) out += (out.empty() ? "" : " ") + k + "=" + fixed(v, 4);
+    return out;
+}
+
+// A channel's real residual against the replicate bands of the base and of the final model.
+void plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
+                const std::vector<double>& x, const std::vector<double>& real, const Band& base, const Band* after,
+                const std::string& dir, const std::string& name) {
+    report::Plot p;
+    p.title = title;
+    p.x_label = x_label;
+    p.y_label = y_label;
+    p.log_x = p.log_y = log_axes;
+    p.series.push_back({"base simulator (12 replicates)", x, base.low, base.low, base.high, report::SeriesStyle::band, false, "red", 1.0});
+    if (after)
+        p.series.push_back({"with the added effects", x, after->low, after->low, after->high, report::SeriesStyle::band, false, "blue", 1.0});
+    p.series.push_back({"real", x, real, {}, {}, report::SeriesStyle::lines, false, "black", 2.0});
+    report::render_plot(p, dir, name, {report::ImageFormat::png});
+}
+
 }  // namespace
+
+bool was_added(const GapResult& r, const Explanation& e) {
+    return std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
+        return a.step == e.step && a.effect == e.effect && a.channel == e.channel;
+    });
+}
+
+std::string verdict_reason(const GapResult& r, const GapOptions& options) {
+    for (const auto& s : r.level_steps)
+        if (s.significant)
+            return std::string("a level step on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed(s.steps[0].size_counts) +
+                   " counts at t = " + fixed(s.steps[0].t_s, 1) + " s; p = " + fixed(s.p_value, 3) +
+                   ") that no library effect makes; the added effects stay as partial explanations";
+    const std::string located = std::to_string(r.located.size()) + " cells located";
+    if (!r.accepted.empty()) {
+        const Explanation& e = r.accepted.front();
+        std::string out = "on " + e.channel + " it removes " + fixed(100 * e.heldout_shrink, 0) + " % of the held-out gap excess (" +
+                          fixed(e.heldout_before) + " -> " + fixed(e.heldout_after) + ")";
+        for (std::size_t k = 1; k < r.accepted.size(); ++k)
+            out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel;
+        return out + (r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound");
+    }
+    if (r.located.empty()) {
+        if (!r.diffuse_gap) return "no cell located and the held-out score within its bound: the calibrated base simulator explains the log";
+        return options.search_diffuse ? "no cell located; the diffuse gap was searched and no candidate passed"
+                                      : "no cell located, but the held-out score exceeds its bound (a diffuse gap); --search-diffuse tries the candidates on it";
+    }
+    if (!options.explain) return located + "; no candidate tried (--locate-only)";
+    return located + " and no candidate passes (held-out shrink, held-out likelihood and penalised gain)";
+}
 
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options) {
     std::filesystem::create_directories(dir);
     std::ostringstream md;
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
-    md << "**Verdict: " << r.verdict << "**\n\n";
+    md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)
        << ". A held-out score within its bound (level " << options.alpha << ") is a closed gap."
        << "\n\n| | fitting part | held-out part | held-out bound |\n|---|---|---|---|\n";
     md << "| base simulator | " << fixed(r.gap_before_fit) << " | " << fixed(r.gap_before_heldout) << " | "
        << fixed(r.gap_bound_before) << " |\n";
-    md << "| with accepted effects | " << fixed(r.gap_after_fit) << " | " << fixed(r.gap_after_heldout) << " | "
+    md << "| with the added effects | " << fixed(r.gap_after_fit) << " | " << fixed(r.gap_after_heldout) << " | "
        << fixed(r.gap_bound_after) << " |\n\n";
+    if (!r.accepted.empty()) {
+        md << "## Explanation: the effects added, in order\n\nParameters as refitted beside the later effects; the "
+              "held-out gap is the channel's, before and after each step.\n\n"
+              "| step | effect | channel | parameters | held-out gap | shrink | close call | what would confirm it |\n"
+              "|---|---|---|---|---|---|---|---|\n";
+        for (const auto& e : r.accepted)
+            md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e) << " | "
+               << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0)
+               << " % | " << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
+        md << "\n";
+    }
     md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << ", beyond the practical margin)\n\n";
     md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < r.located.size() && i < 30; ++i) {
@@ -89,14 +181,12 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
           "| step | effect | channel | parameters | held-out gap | shrink | gain / penalty | delta IC | decision |\n"
           "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& e : r.tried) {
-        std::string params;
-        for (const auto& [k, v] : e.params) params += k + "=" + fixed(v, 4) + " ";
-        md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << params << " | " << fixed(e.heldout_before)
+        md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e) << " | " << fixed(e.heldout_before)
            << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0) << " % | " << fixed(e.loss_gain, 1)
            << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
-           << (e.accepted ? "accepted" : "rejected")
+           << (was_added(r, e) ? "**added**" : e.accepted ? "passed, not chosen" : "rejected")
            << (e.residual_step.significant ? ", leaves a level step" : "")
-           << (e.ambiguous_with.empty() ? "" : ", ambiguous with " + e.ambiguous_with + " (" + e.settle + ")") << " |\n";
+           << (e.ambiguous_with.empty() ? "" : ", ambiguous with " + e.ambiguous_with) << " |\n";
     }
     for (const auto& s : r.level_steps) {
         md << "\nLevel-step test, " << kChannelNames[channel_index(s.channel)] << ": two steps of "
@@ -110,32 +200,32 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     md << "\nNot identifiable from a static log:\n\n";
     for (const auto& n : not_identifiable_list()) md << "- " << n.effect << ": " << n.reason << "\n";
-    md << "\n## Residual Allan deviation: real vs simulator bands\n\n";
+    md << "\n## The residual against the simulator's replicates\n\nThe eq. 1 residual of the real log (black) against "
+          "the min-max band of " << kBandReplicates << " replicates of the base simulator (red) and of the simulator with "
+          "the added effects (blue), each replicate refitted as the log is: its Allan deviation by octave, and its mean "
+          "over time (where a mean shape or a step shows).\n\n";
     const bool plots = report::gnuplot_available();
     if (!plots) md << "(gnuplot not found: plots skipped)\n";
+    const std::vector<std::size_t> edges = time_bins(log.size());
+    std::vector<double> bin_t(edges.size() - 1);
+    for (std::size_t b = 0; b + 1 < edges.size(); ++b) bin_t[b] = 0.5 * (log.t_s[edges[b]] + log.t_s[edges[b + 1] - 1]);
     for (std::size_t c = 0; c < kChannelCount && plots; ++c) {
         if (!r.channels[c]) continue;
         const std::size_t max_m = std::max<std::size_t>(1, log.size() / 8);
-        const auto real = octave_oadev(fit::fit_drift(log.t_s, log.counts[c]).residual, max_m);
-        const Band base = adev_band(r.base, log, c, max_m, options.seed);
-        const Band after = adev_band(r.final_model, log, c, max_m, options.seed);
+        const auto residual = fit::fit_drift(log.t_s, log.counts[c]).residual;
+        const auto real = octave_oadev(residual, max_m);
+        const ReplicateBands base = replicate_bands(r.base, log, c, max_m, edges, options.seed);
+        const ReplicateBands after = replicate_bands(r.final_model, log, c, max_m, edges, options.seed);
+        const ReplicateBands* added = r.accepted.empty() ? nullptr : &after;
         std::vector<double> tau(real.size());
         for (std::size_t j = 0; j < tau.size(); ++j) tau[j] = r.base.smoothing.sample_period_s * std::ldexp(1.0, static_cast<int>(j));
-        report::Plot p;
-        p.title = std::string("Residual ADEV, ") + kChannelNames[c];
-        p.x_label = "tau [s]";
-        p.y_label = "ADEV of the eq. 1 residual [counts]";
-        p.log_x = p.log_y = true;
-        p.series.push_back({"real", tau, real, {}, {}, report::SeriesStyle::lines, false, "black", 2.5});
-        p.series.push_back({"base sim min", tau, base.low, {}, {}, report::SeriesStyle::lines, true, "red", 1.2});
-        p.series.push_back({"base sim max", tau, base.high, {}, {}, report::SeriesStyle::lines, true, "red", 1.2});
-        if (!r.accepted.empty()) {
-            p.series.push_back({"with effects min", tau, after.low, {}, {}, report::SeriesStyle::lines, false, "blue", 1.2});
-            p.series.push_back({"with effects max", tau, after.high, {}, {}, report::SeriesStyle::lines, false, "blue", 1.2});
-        }
-        const std::string name = std::string("gap_adev_") + kChannelNames[c];
-        report::render_plot(p, dir, name, {report::ImageFormat::png});
-        md << "![" << name << "](" << name << ".png)\n\n";
+        const std::string channel = kChannelNames[c];
+        plot_bands("Residual ADEV, " + channel, "tau [s]", "ADEV of the eq. 1 residual [counts]", true, tau, real, base.adev,
+                   added ? &added->adev : nullptr, dir, "gap_adev_" + channel);
+        plot_bands("Residual mean over time, " + channel, "t [s]", "mean of the eq. 1 residual per bin [counts]", false, bin_t,
+                   binned_mean(residual, edges), base.mean, added ? &added->mean : nullptr, dir, "gap_mean_" + channel);
+        md << "![gap_adev_" << channel << "](gap_adev_" << channel << ".png)\n\n![gap_mean_" << channel << "](gap_mean_"
+           << channel << ".png)\n\n";
     }
     std::ofstream out(dir + "/gap.md");
     out << md.str();

@@ -1,6 +1,8 @@
-// The readable report of `driftlab gap --report DIR`: DIR/gap.md with the verdict, located cells, candidates and
-// plots (gnuplot through host/report) of the residual Allan deviation of the real log against the band of the
-// base simulator and of the simulator with the accepted effects. docs/gap.md §Report.
+// The readable report of `driftlab gap --report DIR`: DIR/gap.md with the verdict and why, the explanation (the
+// effects added, their parameters, the shrink at each step, close calls and the experiment that settles them),
+// located cells, candidates, and plots (gnuplot through host/report) of the real log's residual against the
+// replicate bands of the base simulator and of the simulator with the added effects: its Allan deviation and its
+// mean over time. docs/gap.md §Report.
 #pragma once
 
 #include <string>
@@ -10,7 +12,14 @@
 
 namespace driftlab::host::gap {
 
-/// Writes DIR/gap.md and DIR/gap_adev_<channel>.png/.svg (plots skipped with a note when gnuplot is missing).
+/// One sentence on why the verdict is what it is (the rule that decided it).
+std::string verdict_reason(const GapResult& result, const GapOptions& options);
+
+/// True when candidate fit `e` (of result.tried) is one of the effects added to the model, not only one that passed.
+bool was_added(const GapResult& result, const Explanation& e);
+
+/// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
+/// gnuplot is missing).
 void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options);
 
 }  // namespace driftlab::host::gap

@@ -1,7 +1,11 @@
 // End to end on small simulated logs: a clean log gives "none", a planted second time constant is located,
-// attributed and shrunk, a smaller one leaves a diffuse gap that is searched on request, and the JSON carries its
-// stable keys.
+// attributed and shrunk, a smaller one leaves a diffuse gap that is searched on request, and the JSON and the
+// report carry what the diagnosis found.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -11,6 +15,8 @@
 #include "host/gap/calibrate.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
+#include "host/gap/gap_report.hpp"
+#include "host/report/gnuplot.hpp"
 #include "host/util/error.hpp"
 
 namespace driftlab::host::gap {
@@ -45,6 +51,7 @@ TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
             continue;
         }
         EXPECT_EQ(r.verdict, "none");
+        EXPECT_NE(verdict_reason(r, o).find("explains the log"), std::string::npos) << verdict_reason(r, o);
         EXPECT_LT(r.gap_before_fit, 3.0) << "seed " << seed;
         gap_sum += r.gap_before_fit;
         // Calibration recovers the planted base: eq. 1 and the white noise before the quantiser.
@@ -74,13 +81,27 @@ TEST(Diagnose, LostFramesCountTheFramesPerRow) {
     EXPECT_EQ(diagnose(log, sim::paper_model(), o).timing.lost_frames, 2u);
 }
 
+// An opposite-sign slower exponential: an overshoot that one exponential cannot absorb. Diagnosed once, shared by
+// the tests that read the result, its JSON and its report.
+struct Planted {
+    LogData log;
+    GapResult result;
+};
+
+const Planted& planted_second_time_constant() {
+    static const Planted planted = [] {
+        const GapModel m = testing::paper_gyro_model(8);
+        std::vector<double> added(1500);
+        for (std::size_t k = 0; k < added.size(); ++k) added[k] = -4.0 * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
+        Planted p{testing::gyro_log(m, 1500, added, 78), {}};
+        p.result = diagnose(p.log, sim::paper_model(), small_options());
+        return p;
+    }();
+    return planted;
+}
+
 TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
-    const GapModel m = testing::paper_gyro_model(8);
-    // An opposite-sign slower exponential: an overshoot that one exponential cannot absorb.
-    std::vector<double> added(1500);
-    for (std::size_t k = 0; k < added.size(); ++k) added[k] = -4.0 * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
-    const LogData log = testing::gyro_log(m, 1500, added, 78);
-    const GapResult r = diagnose(log, sim::paper_model(), small_options());
+    const GapResult& r = planted_second_time_constant().result;
     ASSERT_FALSE(r.located.empty());
     EXPECT_EQ(r.verdict, "thermal_second_tc");
     ASSERT_FALSE(r.accepted.empty());
@@ -99,6 +120,69 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     bool static_listed = false;
     for (const auto& n : j["not_identifiable"]) static_listed |= n["effect"] == "cross_axis";
     EXPECT_TRUE(static_listed);
+}
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// gnuplot data blocks (separated by blank-line pairs) as rows of numbers.
+std::vector<std::vector<std::vector<double>>> data_blocks(const std::string& text) {
+    std::vector<std::vector<std::vector<double>>> blocks(1);
+    std::istringstream in(text);
+    std::string line;
+    int blank = 0;
+    while (std::getline(in, line)) {
+        if (line.empty()) {
+            if (++blank == 2 && !blocks.back().empty()) blocks.emplace_back();
+            continue;
+        }
+        blank = 0;
+        std::istringstream row(line);
+        std::vector<double> v;
+        for (double x; row >> x;) v.push_back(x);
+        blocks.back().push_back(v);
+    }
+    if (blocks.back().empty()) blocks.pop_back();
+    return blocks;
+}
+
+// The report names the verdict and why, lists the added effect with its parameters, marks it among the candidates,
+// and plots the residual's mean over time: the planted overshoot lies outside the base simulator's band and inside
+// the band with the added effect in most time bins.
+TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
+    const Planted& p = planted_second_time_constant();
+    ASSERT_EQ(p.result.verdict, "thermal_second_tc");
+    const auto dir = std::filesystem::temp_directory_path() / "driftlab_gap_report_test";
+    std::filesystem::remove_all(dir);
+    write_gap_report(p.result, p.log, dir.string(), small_options());
+    const std::string md = read_text(dir / "gap.md");
+    EXPECT_NE(md.find("**Verdict: thermal_second_tc**: on gyro it removes"), std::string::npos) << md.substr(0, 300);
+    const auto explanation = md.find("## Explanation");
+    ASSERT_NE(explanation, std::string::npos);
+    EXPECT_NE(md.find("| 1 | thermal_second_tc | gyro | c3_dps=", explanation), std::string::npos);
+    std::size_t added = 0;
+    for (auto at = md.find("**added**"); at != std::string::npos; at = md.find("**added**", at + 1)) ++added;
+    EXPECT_EQ(added, p.result.accepted.size());
+    if (!report::gnuplot_available()) GTEST_SKIP() << "gnuplot not on PATH: the plots are not drawn";
+    EXPECT_TRUE(std::filesystem::exists(dir / "gap_adev_gyro.png"));
+    ASSERT_TRUE(std::filesystem::exists(dir / "gap_mean_gyro.png"));
+    const auto blocks = data_blocks(read_text(dir / "gap_mean_gyro.dat"));
+    ASSERT_EQ(blocks.size(), 3u);  // base band, band with the effect, real
+    const auto& real = blocks[2];
+    ASSERT_EQ(real.size(), blocks[0].size());
+    int in_base = 0, in_after = 0;
+    for (std::size_t b = 0; b < real.size(); ++b) {
+        in_base += real[b][1] >= blocks[0][b][2] && real[b][1] <= blocks[0][b][3];
+        in_after += real[b][1] >= blocks[1][b][2] && real[b][1] <= blocks[1][b][3];
+    }
+    const int bins = static_cast<int>(real.size());
+    EXPECT_EQ(bins, 50);  // 1500 outputs, about 30 per bin
+    EXPECT_LT(in_base, bins / 2) << in_base << " of " << bins;
+    EXPECT_GT(in_after, bins * 3 / 4) << in_after << " of " << bins;
 }
 
 // The same overshoot a little smaller: on these logs no cell reaches the family-wise threshold, yet the held-out
