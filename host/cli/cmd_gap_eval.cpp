@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
+#include "host/gap/eval_plots.hpp"
 #include "host/gap/eval_scores.hpp"
 #include "host/gap/truth.hpp"
 #include "host/util/error.hpp"
@@ -26,6 +27,7 @@ struct GapEvalCommandOptions {
     bool clean_only = false;
     bool shipped = false;
     bool json = false;
+    std::string plot_dir;
 };
 
 std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, const std::string& s) {
@@ -91,6 +93,10 @@ void run(const GapEvalCommandOptions& o) {
     const auto cases = gap::run_cases(options, sizes);
     const gap::Thresholds th = options.tune ? gap::tune(cases) : gap::Thresholds{};
     const gap::EvalScores scores = gap::score(cases, th, options, sizes);
+    if (!o.plot_dir.empty()) {
+        gap::write_eval_plots(scores, o.plot_dir);
+        std::fprintf(stderr, "gap-eval: plots in %s (gap_eval_detected, gap_eval_top1)\n", o.plot_dir.c_str());
+    }
     if (o.json)
         std::cout << gap::scores_json(scores).dump(2) << "\n";
     else
@@ -125,6 +131,10 @@ void register_gap_eval(CLI::App& app) {
         ->excludes(levels);
     cmd->add_flag("--json", o->json,
                   "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size, targets)");
+    cmd->add_option("--plot", o->plot_dir,
+                    "Also write DIR/gap_eval_detected and DIR/gap_eval_top1 (PNG, SVG): detected and right-verdict shares "
+                    "against size, with 95 % intervals")
+        ->excludes("--clean-only");
     cmd->callback([o] { run(*o); });
 }
 

@@ -89,7 +89,7 @@ std::string style_clause(const PlotSeries& s) {
     clause += " lw " + format_double(s.line_width);
     if (s.dashed) clause += " dt 3";
     if (!s.color.empty()) clause += " lc rgb " + quoted(s.color);
-    clause += s.title.empty() ? " notitle" : " title " + quoted(s.title);
+    clause += s.title.empty() ? " notitle" : " title " + quoted(s.title) + " noenhanced";  // names hold underscores
     return clause;
 }
 
@@ -105,7 +105,12 @@ std::string script(const Plot& plot, const fs::path& data, const fs::path& image
     gp << "set title " << quoted(plot.title) << " noenhanced\n";
     gp << "set xlabel " << quoted(plot.x_label) << " noenhanced\n";
     gp << "set ylabel " << quoted(plot.y_label) << " noenhanced\n";
-    if (plot.log_x) gp << "set logscale x\nset format x '10^{%L}'\n";
+    if (plot.log_x) gp << "set logscale x\n" << (plot.x_tics.empty() ? "set format x '10^{%L}'\n" : "");
+    if (!plot.x_tics.empty()) {
+        gp << "set xtics (";
+        for (std::size_t i = 0; i < plot.x_tics.size(); ++i) gp << (i ? ", " : "") << format_double(plot.x_tics[i]);
+        gp << ")\n";
+    }
     if (plot.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
     if (plot.x_range) gp << "set xrange [" << format_double(plot.x_range->first) << ":" << format_double(plot.x_range->second) << "]\n";
     if (plot.y_range) gp << "set yrange [" << format_double(plot.y_range->first) << ":" << format_double(plot.y_range->second) << "]\n";

@@ -32,6 +32,7 @@ struct Plot {
     std::string x_label, y_label;
     bool log_x = false, log_y = false;
     std::optional<std::pair<double, double>> x_range, y_range;
+    std::vector<double> x_tics;  ///< explicit x tick positions, labelled as plain numbers (empty = automatic)
     std::vector<PlotSeries> series;
     int width_px = 900, height_px = 540;
 };
