@@ -33,6 +33,8 @@ report::Plot rate_plot(const EvalScores& s, const std::string& title, const std:
     p.x_range = std::make_pair(*lo / 1.5, *hi * 1.5);
     p.y_range = std::make_pair(-0.02, 1.02);
     p.x_tics = levels;
+    p.key = "outside right top";  // seven generators' bars fill the plot's corners
+    p.width_px = 1000;
     for (std::size_t g = 0; g < generators.size(); ++g) {
         report::PlotSeries series;
         series.title = generators[g];

@@ -96,7 +96,7 @@ void plot_bands(const std::string& title, const std::string& x_label, const std:
     p.x_label = x_label;
     p.y_label = y_label;
     p.log_x = p.log_y = log_axes;
-    p.series.push_back({"base simulator (12 replicates)", x, base.low, base.low, base.high, report::SeriesStyle::band, false, "red", 1.0});
+    p.series.push_back({"base simulator (" + std::to_string(kBandReplicates) + " replicates)", x, base.low, base.low, base.high, report::SeriesStyle::band, false, "red", 1.0});
     if (after)
         p.series.push_back({"with the added effects", x, after->low, after->low, after->high, report::SeriesStyle::band, false, "blue", 1.0});
     p.series.push_back({"real", x, real, {}, {}, report::SeriesStyle::lines, false, "black", 2.0});

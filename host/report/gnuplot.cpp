@@ -101,7 +101,7 @@ std::string script(const Plot& plot, const fs::path& data, const fs::path& image
     else
         gp << "set terminal svg size " << size << " dynamic enhanced font 'sans,10' background rgb 'white'\n";
     gp << "set output " << quoted(image.string()) << "\n";
-    gp << "set encoding utf8\nset grid\nset key top right\n";
+    gp << "set encoding utf8\nset grid\nset key " << plot.key << "\n";
     gp << "set title " << quoted(plot.title) << " noenhanced\n";
     gp << "set xlabel " << quoted(plot.x_label) << " noenhanced\n";
     gp << "set ylabel " << quoted(plot.y_label) << " noenhanced\n";

@@ -29,6 +29,11 @@ TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
     EXPECT_LT(j["gap_before"]["fit"].get<double>(), 2.0);
     EXPECT_LT(j["gap_before"]["heldout"].get<double>(), 2.0);
     EXPECT_FALSE(j["diffuse_gap"].get<bool>()) << j["gap_before"].dump();
+    // The terminal output says why: nothing located, nothing to explain.
+    const RunResult text = run_driftlab({"gap", log, "--replicates", "16"}, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.output;
+    EXPECT_NE(text.output.find("verdict: none (no cell located and the held-out score within its bound"), std::string::npos)
+        << text.output;
 }
 
 // A third-party recording: one column of rate values at 8.75 mdps resolution, 100 Hz, a warm-up and white noise.
