@@ -243,10 +243,10 @@ void register_allan(CLI::App& app) {
     cmd->add_option("--channel", o->channels, "Channels (log) or columns (plain file): NAME[,NAME] or all")->delimiter(',');
     cmd->add_option("--kind", o->kind, "Plain files: rate (rate / fractional-frequency samples) or phase (integrated)");
     cmd->add_option("--tau0", o->tau0_s, "Sample period [s]; required for plain files, logs default to the median spacing")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, deg/h, rad/s, m/s^2, cm/s^2, g, or any name)");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32");
-    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->check(CLI::PositiveNumber);
+    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->check(positive_number());
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all");
     cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
     cmd->add_flag("--json", o->json,

@@ -108,12 +108,12 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
     cmd->add_option("--t-max", r.options.t_max_s, "Use samples with t_s <= this [s]");
     cmd->add_option("--time-column", r.time_column, "Plain tables: the time column [s] (default t_s, t or time)");
     cmd->add_option("--sample-period", r.sample_period_s, "Plain tables without time: sample period [s]")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("--sequences", r.options.whiteness.sequences, "Whiteness: number M of sequences (paper: 10)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("--sequence-length", r.options.whiteness.sequence_length_s,
                     "Whiteness: length L of each sequence [s] (paper: 50)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
 }
 
 void register_fit(CLI::App& app) {

@@ -166,7 +166,7 @@ void register_gap(CLI::App& app) {
                     "LSB (its resolution in the column's unit), e.g. gyro=col1:0.00875; repeat per channel");
     cmd->add_option("--tau0", o->tau0_s, "Plain recordings: the raw sample period [s] (timing from a t_s/t/time column "
                                          "if there is one)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("--block", o->block, "Plain recordings: samples averaged per output (an order-0 smoother of that "
                                          "window; default 1)")
         ->check(CLI::Range(1, 100000));

@@ -1,5 +1,6 @@
 // `driftlab gap-eval`: the withheld-effect benchmark of the gap diagnosis (host/gap/evaluate, docs/gap.md §Evaluation).
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -61,6 +62,12 @@ void run(const GapEvalCommandOptions& o) {
             }
         if (!found) throw UsageError("--effects: unknown generator or effect '" + e + "'");
     }
+    if (!o.plot_dir.empty()) {
+        // Before the run, so that an unwritable folder is reported at once rather than after it.
+        std::error_code ec;
+        std::filesystem::create_directories(o.plot_dir, ec);
+        if (ec) throw DeviceError(o.plot_dir, "cannot create the plot folder: " + ec.message());
+    }
     options.holdout = o.holdout;
     options.clean_per_seed = o.clean_per_seed;
     if (o.quick) {
@@ -93,14 +100,16 @@ void run(const GapEvalCommandOptions& o) {
     const auto cases = gap::run_cases(options, sizes);
     const gap::Thresholds th = options.tune ? gap::tune(cases) : gap::Thresholds{};
     const gap::EvalScores scores = gap::score(cases, th, options, sizes);
-    if (!o.plot_dir.empty()) {
-        gap::write_eval_plots(scores, o.plot_dir);
-        std::fprintf(stderr, "gap-eval: plots in %s (gap_eval_detected, gap_eval_top1)\n", o.plot_dir.c_str());
-    }
+    // The scores first: a plot that fails must not lose a run of many minutes.
     if (o.json)
         std::cout << gap::scores_json(scores).dump(2) << "\n";
     else
         std::cout << gap::scores_markdown(scores);
+    std::cout.flush();
+    if (!o.plot_dir.empty()) {
+        gap::write_eval_plots(scores, o.plot_dir);
+        std::fprintf(stderr, "gap-eval: plots in %s (gap_eval_detected, gap_eval_top1)\n", o.plot_dir.c_str());
+    }
 }
 
 }  // namespace
@@ -115,7 +124,7 @@ void register_gap_eval(CLI::App& app) {
         ->delimiter(',');
     CLI::Option* levels = cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
         ->delimiter(',')
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
                     "Clean logs per seed for the false-positive rate (default: as many as sizes)")
         ->check(CLI::Range(1, 1000));

@@ -289,7 +289,7 @@ void register_hil(CLI::App& app) {
         ->check(CLI::Range(1, 64));
     cmd->add_option("--order", opts->order, "Least-squares fit order")->check(CLI::Range(0, 1));
     cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s]")
-        ->check(CLI::NonNegativeNumber);
+        ->check(non_negative_number());
     cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)");
     cmd->add_option("--seed", opts->seed, "Seed of every random component")->capture_default_str();
     cmd->add_flag("--raw", opts->raw, "Also log the raw codes (RAW frames)");

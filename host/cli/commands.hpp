@@ -32,6 +32,11 @@ void register_gap_eval(CLI::App& app);
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
 
+/// Checks for numeric options. CLI11's PositiveNumber and NonNegativeNumber state their range as 0 to the largest
+/// double written out in full; these say what is wanted and what was given (number_checks.cpp).
+const CLI::Validator& positive_number();
+const CLI::Validator& non_negative_number();
+
 /// --holdout interleaved|forecast, which gap and gap-eval share (defined in cmd_gap.cpp).
 void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout);
 

@@ -2,6 +2,8 @@
 #include "host/fit/series.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 
 #include "host/log/log_reader.hpp"
@@ -78,6 +80,7 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 
 bool is_canonical_log(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
+    if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
     std::string first;
     std::getline(in, first);
     return first.rfind("# driftlab-log:", 0) == 0;

@@ -37,7 +37,8 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names = {},
                                 const std::string& time_column = "", double sample_period_s = 1.0);
 
-/// True when the file starts with `# driftlab-log:` (a canonical log rather than a plain table).
+/// True when the file starts with `# driftlab-log:` (a canonical log rather than a plain table). Throws DataError
+/// naming the file when it cannot be opened, so that a missing file is not mistaken for a table missing its options.
 bool is_canonical_log(const std::string& path);
 
 }  // namespace driftlab::host::fit

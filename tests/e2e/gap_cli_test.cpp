@@ -78,6 +78,24 @@ TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {
     const RunResult holdout = run_driftlab({"gap", log, "--holdout", "random"}, dir.path());
     EXPECT_NE(holdout.exit_code, 0);
     EXPECT_NE(holdout.output.find("--holdout"), std::string::npos) << holdout.output;
+    // A missing file is said to be missing, not taken for a plain table that lacks its options.
+    const RunResult missing = run_driftlab({"gap", dir.file("absent.csv")}, dir.path());
+    EXPECT_NE(missing.exit_code, 0);
+    EXPECT_NE(missing.output.find("absent.csv: cannot open"), std::string::npos) << missing.output;
+    const RunResult tau0 = run_driftlab({"gap", log, "--tau0", "-1"}, dir.path());
+    EXPECT_NE(tau0.exit_code, 0);
+    EXPECT_NE(tau0.output.find("--tau0: expected a number > 0, got '-1'"), std::string::npos) << tau0.output;
+}
+
+// A plot folder that cannot be made is refused before minutes of benchmark, not after them.
+TEST(GapEvalCli, AnUnusablePlotFolderIsRefusedBeforeTheRun) {
+    TempDir dir("gapevalplot");
+    const std::string blocker = dir.file("file");
+    std::ofstream(blocker) << "not a folder\n";
+    const RunResult r = run_driftlab({"gap-eval", "--quick", "--effects", "thermal_rc", "--plot", blocker + "/plots"}, dir.path());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.output.find("cannot create the plot folder"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("| generator"), std::string::npos) << "no benchmark output before the refusal";
 }
 
 }  // namespace
