@@ -69,8 +69,8 @@ const std::vector<NotIdentifiable>& not_identifiable_list() {
 
 const std::vector<NotIdentifiable>& not_tried_list() {
     static const std::vector<NotIdentifiable> list = {
-        {"adc_dnl", "not a candidate yet: the frac statistic locates it; a per-code pattern needs the raw codes (raw-mode log), "
-                    "which the diagnosis does not read"},
+        {"adc_dnl", "not a candidate yet: the codes cells of a raw-mode log (and weakly the frac cells) locate it; its "
+                    "per-code widths are not estimated"},
     };
     return list;
 }

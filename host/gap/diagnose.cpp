@@ -106,7 +106,17 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     battery.sample_period_s = result.base.smoothing.sample_period_s;
     std::array<const std::vector<double>*, kChannelCount> y{};
     for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &log.counts[c];
-    result.real_values = compute_battery(log.t_s, y, battery, &result.layout).values;
+    // A raw-mode log's raw column (integral codes, one per row) gives the channel its code-histogram cells.
+    RawCodes raw{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        const auto column = log.optional_columns.find(std::string("raw_") + kChannelNames[c]);
+        if (!result.channels[c] || column == log.optional_columns.end() || column->second.size() != log.size() ||
+            !std::all_of(column->second.begin(), column->second.end(), [](double v) { return std::isfinite(v) && v == std::round(v); }))
+            continue;
+        raw[c] = &column->second;
+        battery.raw_codes[c] = true;
+    }
+    result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
     auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held,
                      double& bound) {
@@ -137,7 +147,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         eo.threads = options.threads;
         eo.eval_replicates = options.replicates;
         eo.progress = options.progress;
-        ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo);
+        ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo, raw);
         result.tried = std::move(ex.tried);
         result.accepted = std::move(ex.accepted);
         result.final_model = std::move(ex.model);

@@ -315,7 +315,7 @@ Choice choose(const std::vector<const Explanation*>& passing, InformationCriteri
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                       const std::array<const std::vector<double>*, kChannelCount>& y,
                       const std::array<bool, kChannelCount>& channels, const BatteryOptions& battery,
-                      const ExplainOptions& options) {
+                      const ExplainOptions& options, const RawCodes& raw) {
     ExplainResult result;
     result.model = base;
     std::vector<std::string> names = options.candidates;
@@ -340,9 +340,13 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             Judge judge{t_s, *y[i], c, battery, {}, {}, {}, 0.0, fitting, options.seed, options.threads};
             judge.battery.channels = {};
             judge.battery.channels[i] = true;
+            judge.battery.raw_codes = {};
+            judge.battery.raw_codes[i] = battery.raw_codes[i];
             std::array<const std::vector<double>*, kChannelCount> yc{};
             yc[i] = y[i];
-            const BatteryResult real = compute_battery(t_s, yc, judge.battery, &judge.layout);
+            RawCodes raw_c{};
+            raw_c[i] = raw[i];
+            const BatteryResult real = compute_battery(t_s, yc, judge.battery, &judge.layout, raw_c);
             judge.real = real.values;
             judge.residual = real.residual[i];
             judge.target_spread = short_lag_spread(judge.residual);

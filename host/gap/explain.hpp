@@ -115,6 +115,6 @@ bool closes_gap(const Explanation& e, double step_alpha);
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                       const std::array<const std::vector<double>*, kChannelCount>& y,
                       const std::array<bool, kChannelCount>& channels, const BatteryOptions& battery,
-                      const ExplainOptions& options);
+                      const ExplainOptions& options, const RawCodes& raw = {});
 
 }  // namespace driftlab::host::gap

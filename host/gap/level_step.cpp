@@ -131,7 +131,7 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     const std::vector<double> real = statistics(r, &steps);
     std::array<bool, kChannelCount> only{};
     only[i] = true;
-    const Eigen::MatrixXd null = simulate_replicates(model, t_s, only, replicates, seed, threads, [&](const SimOutput& sim) {
+    const Eigen::MatrixXd null = simulate_replicates(model, t_s, only, replicates, seed, threads, [&](const SimOutput& sim, const SimOutput&) {
         std::vector<double> rr(sim[i].size());
         for (std::size_t k = 0; k < rr.size(); ++k) rr[k] = sim[i][k] - mean[k];
         return statistics(std::move(rr), nullptr);

@@ -18,7 +18,8 @@ std::uint64_t replicate_seed(std::uint64_t seed, int r) {
 
 Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<double>& t_s,
                                     const std::array<bool, kChannelCount>& channels, int replicates, std::uint64_t seed,
-                                    int threads, const ReplicateSummary& summary, const ReplicateExtra& extra) {
+                                    int threads, const ReplicateSummary& summary, const ReplicateExtra& extra,
+                                    bool raw_codes) {
     std::vector<std::vector<double>> rows(static_cast<std::size_t>(replicates));
     std::atomic<int> next{0};
     std::exception_ptr failure;
@@ -31,7 +32,10 @@ Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<dou
                 request.channels = channels;
                 const std::uint64_t rs = replicate_seed(seed, r);
                 if (extra) extra(rs, request);
-                rows[static_cast<std::size_t>(r)] = summary(simulate(model, request, rs));
+                SimOutput raw;
+                if (raw_codes) request.raw_codes = &raw;
+                const SimOutput y = simulate(model, request, rs);
+                rows[static_cast<std::size_t>(r)] = summary(y, raw);
             } catch (...) {
                 const std::lock_guard<std::mutex> lock(failure_mutex);
                 if (!failure) failure = std::current_exception();
@@ -63,12 +67,16 @@ Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>&
     for (std::size_t c = 0; c < kChannelCount; ++c) warm.fit_start[c] = start_at_model(model, static_cast<Channel>(c)).start;
     return simulate_replicates(
         model, t_s, options.channels, replicates, seed, threads,
-        [&](const SimOutput& sim) {
+        [&](const SimOutput& sim, const SimOutput& raw_codes) {
             std::array<const std::vector<double>*, kChannelCount> y{};
-            for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &sim[c];
-            return compute_battery(t_s, y, warm).values;
+            RawCodes raw{};
+            for (std::size_t c = 0; c < kChannelCount; ++c) {
+                y[c] = &sim[c];
+                if (options.raw_codes[c]) raw[c] = &raw_codes[c];
+            }
+            return compute_battery(t_s, y, warm, nullptr, raw).values;
         },
-        extra);
+        extra, std::any_of(options.raw_codes.begin(), options.raw_codes.end(), [](bool b) { return b; }));
 }
 
 }  // namespace driftlab::host::gap

@@ -24,14 +24,16 @@ std::uint64_t replicate_seed(std::uint64_t seed, int r);
 /// truth generator per replicate, seeded from the replicate's seed).
 using ReplicateExtra = std::function<void(std::uint64_t replicate_seed, SimRequest& request)>;
 
-/// What one replicate is reduced to (one row of the result).
-using ReplicateSummary = std::function<std::vector<double>(const SimOutput& simulated)>;
+/// What one replicate is reduced to (one row of the result): its smoothed outputs and, when asked for, the raw
+/// codes of the same rows (else empty).
+using ReplicateSummary = std::function<std::vector<double>(const SimOutput& simulated, const SimOutput& raw_codes)>;
 
 /// `summary` of `replicates` replicates (rows) of `model` on the instants `t_s` for `channels`, run on `threads`
-/// threads. Every row must have the same length.
+/// threads, with raw codes when `raw_codes`. Every row must have the same length.
 Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<double>& t_s,
                                     const std::array<bool, kChannelCount>& channels, int replicates, std::uint64_t seed,
-                                    int threads, const ReplicateSummary& summary, const ReplicateExtra& extra = {});
+                                    int threads, const ReplicateSummary& summary, const ReplicateExtra& extra = {},
+                                    bool raw_codes = false);
 
 /// The eq. 1 fit options of a replicate of `model`'s channel `c`: started at the model's drift.
 fit::FitOptions start_at_model(const GapModel& model, Channel c);

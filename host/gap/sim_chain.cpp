@@ -64,6 +64,9 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
         bool started = false;
         std::vector<double>& y = out[i];
         y.resize(t_s.size());
+        std::vector<double>* raw = request.raw_codes ? &(*request.raw_codes)[i] : nullptr;
+        if (raw) raw->resize(t_s.size());
+        double newest = 0.0;
         for (std::size_t k = 0; k < t_s.size(); ++k) {
             // The window holds the last N conversions; older ones cannot change the output, so only those are
             // simulated (all of them when N exceeds the conversions per output).
@@ -87,9 +90,12 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
                 values[i] = adc.counts_from_volts(values[i]) + (drift.at_counts(ctx.t_s) - mid_counts) +
                             sigma * noise.normal() + (added.empty() ? 0.0 : added[k]);
                 for (auto& e : converter) e->apply(values, ctx);
-                window.push(adc.convert_counts(values[i]));
+                const auto code = adc.convert_counts(values[i]);
+                window.push(code);
+                newest = code;
             }
             y[k] = window.estimate_q8(order) / 256.0;
+            if (raw) (*raw)[k] = newest;
         }
     }
     return out;

@@ -19,6 +19,9 @@ struct SimRequest {
     const std::vector<double>* t_s = nullptr;                    ///< output instants [s since power-on]
     std::array<bool, kChannelCount> channels{true, true, true, true};  ///< channels to simulate
     std::array<std::vector<double>, kChannelCount> added_counts;  ///< per output sample [counts]; empty = none
+    /// Optional: receives per requested channel the newest conversion's code at each output instant, the raw
+    /// column of a raw-mode log [counts].
+    std::array<std::vector<double>, kChannelCount>* raw_codes = nullptr;
 };
 
 /// Smoothed outputs [counts] per channel (empty for channels not requested).

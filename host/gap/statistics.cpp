@@ -5,9 +5,11 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "host/fit/lm_fit.hpp"
+#include "host/gap/code_density.hpp"
 #include "host/gap/event_statistics.hpp"
 #include "host/gap/spectral.hpp"
 
@@ -128,7 +130,7 @@ std::vector<bool> fitting_mask(const std::vector<double>& t_s, const BatteryOpti
 }
 
 BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<const std::vector<double>*, kChannelCount>& y,
-                              const BatteryOptions& options, std::vector<Cell>* layout) {
+                              const BatteryOptions& options, std::vector<Cell>* layout, const RawCodes& raw) {
     BatteryResult result;
     Builder out(result.values, layout);
     const std::size_t n = t_s.size();
@@ -152,6 +154,9 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
         const std::vector<double>& e = result.residual[c];
         const std::string name = kChannelNames[c];
         const int ci = static_cast<int>(c);
+        const bool codes = options.raw_codes[c];
+        if (codes && (!raw[c] || raw[c]->size() != n))
+            throw std::invalid_argument(std::string("compute_battery: no raw codes for ") + name);
 
         for (int w = 0; w < kTimeWindows; ++w) {
             const std::size_t a = n * static_cast<std::size_t>(w) / kTimeWindows;
@@ -190,6 +195,9 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
                 out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin});
             }
             out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
+            if (codes)
+                out.add(code_density_excess(part_of(*raw[c], fitting, s == 0), part_y),
+                        {"codes", name, ci, "raw-code histogram", seg, true, kLogRatioMargin});
             out.add(log_kurtosis(part), {"tail", name, ci, "kurtosis", seg, true, kTailMargin});
             if (len >= kJumpBlocks)
                 out.add(log_jump_ratio(part, kJumpBlocks),

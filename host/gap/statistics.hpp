@@ -23,7 +23,7 @@ const char* segment_name(Segment s);
 
 /// One cell of the battery.
 struct Cell {
-    std::string statistic;   ///< mean, var, adev, psd, acf, frac, corr
+    std::string statistic;   ///< mean, var, adev, psd, acf, frac, tail, jump, codes, corr, coh
     std::string channel;     ///< channel name, or "a~b" for a pair
     int channel_index = -1;  ///< index of the channel; -1 for a pair
     std::string cell;        ///< window, band or octave, e.g. "tau=16s"
@@ -53,6 +53,9 @@ struct BatteryOptions {
     /// Per channel, where the eq. 1 fit starts: empty for a real log (the automatic start); a replicate of a model
     /// starts at the model's drift, which is the same optimum reached in a few iterations instead of a search.
     std::array<std::optional<fit::DriftParameters>, kChannelCount> fit_start{};
+    /// Channels whose raw codes (a raw-mode log's raw column) get the `codes` cells: the log and every replicate
+    /// then pass them to compute_battery.
+    std::array<bool, kChannelCount> raw_codes{};
 };
 
 /// Per sample of `t_s`: true where it belongs to the fitting part. Interleaved: tenths 0, 4, 5, 7, 9 by index
@@ -67,9 +70,13 @@ struct BatteryResult {
     std::array<std::vector<double>, kChannelCount> residual;  ///< [counts]
 };
 
+/// Raw codes per channel (null where the log has none).
+using RawCodes = std::array<const std::vector<double>*, kChannelCount>;
+
 /// Computes the battery of `y` (per channel, [counts]) at instants `t_s`. When `layout` is not null it is
-/// filled with one Cell per value (identical for every log of the same length and options).
+/// filled with one Cell per value (identical for every log of the same length and options). `raw` must hold the
+/// raw codes of every channel in options.raw_codes (std::invalid_argument otherwise).
 BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<const std::vector<double>*, kChannelCount>& y,
-                              const BatteryOptions& options, std::vector<Cell>* layout = nullptr);
+                              const BatteryOptions& options, std::vector<Cell>* layout = nullptr, const RawCodes& raw = {});
 
 }  // namespace driftlab::host::gap

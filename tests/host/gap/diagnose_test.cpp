@@ -16,6 +16,7 @@
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
+#include "host/gap/sim_chain.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/util/error.hpp"
 
@@ -183,6 +184,48 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     EXPECT_EQ(bins, 50);  // 1500 outputs, about 30 per bin
     EXPECT_LT(in_base, bins / 2) << in_base << " of " << bins;
     EXPECT_GT(in_after, bins * 3 / 4) << in_after << " of " << bins;
+}
+
+// A raw-mode log's raw codes get the code-histogram cells. A converter whose code widths differ by 0.3 LSB rms
+// (the library's adc_dnl, absent from the diagnosis's base) is located there; the ideal converter is not.
+TEST(Diagnose, ARawModeLogsCodeHistogramLocatesDifferentialNonLinearity) {
+    GapOptions o = small_options();
+    o.explain = false;
+    const auto raw_mode_log = [](const GapModel& m, std::uint64_t seed) {
+        LogData log = testing::gyro_log(m, 1500, {}, seed);
+        SimOutput raw;
+        SimRequest req;
+        req.t_s = &log.t_s;
+        req.channels = {true, false, false, false};
+        req.raw_codes = &raw;
+        log.counts[0] = simulate(m, req, seed)[0];
+        log.optional_columns["raw_gyro"] = raw[0];
+        return log;
+    };
+    const auto codes_cells = [](const GapResult& r, bool located_only) {
+        int n = 0;
+        if (located_only) {
+            for (const auto& l : r.located) n += r.layout[l.index].statistic == "codes";
+        } else {
+            for (const auto& c : r.layout) n += c.statistic == "codes";
+        }
+        return n;
+    };
+    const GapModel ideal = testing::paper_gyro_model(8);
+    GapModel dnl = ideal;
+    dnl.effects.push_back({"adc_dnl", toml::parse("dnl_rms_lsb = 0.3\npattern_seed = 3")});
+    int found = 0;
+    for (std::uint64_t seed : {21, 22, 23}) {
+        const GapResult clean = diagnose(raw_mode_log(ideal, seed), sim::paper_model(), o);
+        EXPECT_EQ(codes_cells(clean, false), 2) << "one per part, gyro only";
+        EXPECT_EQ(codes_cells(clean, true), 0) << "seed " << seed;
+        found += codes_cells(diagnose(raw_mode_log(dnl, seed), sim::paper_model(), o), true) > 0;
+    }
+    EXPECT_GE(found, 2);
+    // Values that are not integral codes are not a raw column: no code cells.
+    LogData smoothed = raw_mode_log(ideal, 21);
+    smoothed.optional_columns["raw_gyro"] = smoothed.counts[0];
+    EXPECT_EQ(codes_cells(diagnose(smoothed, sim::paper_model(), o), false), 0);
 }
 
 // The same overshoot a little smaller: on these logs no cell reaches the family-wise threshold, yet the held-out

@@ -50,6 +50,33 @@ TEST(SimChain, MeanSmootherVarianceIsNoisePlusQuantisationOverN) {
     EXPECT_TRUE(out[1].empty());
 }
 
+// The raw column of a raw-mode log is one conversion, not a window: integral codes of variance sigma_n^2 + 1/12,
+// N times the smoothed output's.
+TEST(SimChain, RawCodesAreSingleConversions) {
+    const auto t = instants(20000);
+    SimOutput raw;
+    SimRequest req;
+    req.t_s = &t;
+    req.channels = {true, false, false, false};
+    req.raw_codes = &raw;
+    const SimOutput out = simulate(flat_model(512.4, 2.0, 8, 0), req, 5);
+    ASSERT_EQ(raw[0].size(), t.size());
+    EXPECT_TRUE(raw[1].empty());
+    double m = 0, v = 0;
+    for (double x : raw[0]) {
+        EXPECT_EQ(x, std::round(x));
+        m += x;
+    }
+    m /= static_cast<double>(raw[0].size());
+    for (double x : raw[0]) v += (x - m) * (x - m);
+    v /= static_cast<double>(raw[0].size() - 1);
+    EXPECT_NEAR(m, 512.4, 0.05);
+    EXPECT_NEAR(v, 4.0 + 1.0 / 12.0, 4.083 * 0.05);  // sampling error of a variance from 20000 draws: 1 %
+    // A window of one conversion per output: the output is the raw code itself.
+    const SimOutput single = simulate(flat_model(512.4, 2.0, 1, 0), req, 6);
+    EXPECT_EQ(single[0], raw[0]);
+}
+
 TEST(SimChain, LineSmootherVarianceFollowsItsKernelPower) {
     // Order 1 evaluated at the newest conversion: sum h^2 = 2(2N-1)/(N(N+1)).
     const auto t = instants(20000);

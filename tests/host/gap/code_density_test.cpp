@@ -1,0 +1,68 @@
+// The raw-code histogram statistic: about ln 2 for an ideal converter (its deviance is about its degrees of
+// freedom), far above for a widened code or a missing one, and blind to the drift and the noise level.
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "host/gap/code_density.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+struct Rows {
+    std::vector<double> raw, level;
+};
+
+// A level drifting over a few codes with Gaussian noise of `sigma` counts, through a quantiser whose transition
+// into code `moved_code` sits `shift` LSB above the ideal one (a code below it wider, it narrower).
+Rows rows(std::size_t n, double sigma, unsigned seed, long moved_code = 0, double shift = 0.0) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> noise(0.0, sigma);
+    Rows r;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double level = 505.0 + 3.0 * (1.0 - std::exp(-static_cast<double>(k) / 400.0));
+        const double x = level + noise(rng);
+        double code = std::floor(x + 0.5);
+        if (code == static_cast<double>(moved_code) && x - (static_cast<double>(moved_code) - 0.5) < shift) code -= 1.0;
+        r.raw.push_back(code);
+        r.level.push_back(level);
+    }
+    return r;
+}
+
+TEST(CodeDensity, AnIdealConverterGivesADevianceNearItsDegreesOfFreedom) {
+    double sum = 0.0;
+    for (unsigned seed = 1; seed <= 40; ++seed) {
+        const Rows r = rows(1500, 1.05, seed);
+        sum += std::expm1(code_density_excess(r.raw, r.level));
+    }
+    // The mean of G2/df over 40 logs: about 1 (0.8-1.3 allows for the sparse end codes and the fitted deviation).
+    EXPECT_GT(sum / 40.0, 0.6);
+    EXPECT_LT(sum / 40.0, 1.4);
+}
+
+TEST(CodeDensity, AWidenedCodeStandsOut) {
+    double ideal = 0.0, moved = 0.0;
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+        const Rows a = rows(1500, 1.05, seed);
+        const Rows b = rows(1500, 1.05, seed, 507, 0.3);  // code 506 0.3 LSB wider, 507 narrower
+        ideal += code_density_excess(a.raw, a.level);
+        moved += code_density_excess(b.raw, b.level);
+    }
+    EXPECT_GT(moved / 10.0, ideal / 10.0 + 1.0);  // G2/df about 10 against 1.2 (ln: 2.4 against 0.8)
+}
+
+TEST(CodeDensity, AMissingCodeStandsOut) {
+    const Rows r = rows(1500, 1.05, 3, 507, 1.0);  // code 507 never occurs
+    EXPECT_GT(std::expm1(code_density_excess(r.raw, r.level)), 10.0);
+}
+
+TEST(CodeDensity, OneOrTwoCodesCarryNoWidthInformation) {
+    EXPECT_EQ(code_density_excess({5, 5, 6, 6}, {5.4, 5.4, 5.6, 5.6}), 0.0);
+    EXPECT_THROW(code_density_excess({5, 6}, {5.5}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap
