@@ -227,6 +227,8 @@ std::vector<std::string> generators_of(const EvalOptions& options) {
 }
 
 // Seeds of the a_50 logs: drawn from the tuning range, offset far from the case seeds (seed * 1009 + index).
+// `generator` is the generator's place in truth_list(), not in the run's list, so that a run of a few generators
+// measures each a_50 on the same logs as the full run.
 std::uint64_t detection_seed(const EvalOptions& options, std::size_t generator, int step, int log) {
     const std::uint64_t tune_count = options.tune_last - options.tune_first + 1;
     const std::uint64_t base = options.tune_first + static_cast<std::uint64_t>(log) % tune_count;
@@ -267,10 +269,13 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
     std::vector<DetectionSize> out;
     for (std::size_t g = 0; g < gens.size(); ++g) {
         DetectionSize d{gens[g], first_guess(gens[g]), {}};
+        const auto& list = truth_list();
+        const auto place = static_cast<std::size_t>(
+            std::find_if(list.begin(), list.end(), [&](const TruthInfo& t) { return t.generator == gens[g]; }) - list.begin());
         auto fraction_at = [&](double size, int step) {
             int hits = 0;
             for (int k = 0; k < options.detection_logs; ++k) {
-                const std::uint64_t seed = detection_seed(options, g, step, k);
+                const std::uint64_t seed = detection_seed(options, place, step, k);
                 GapOptions go = gap_options(seed, options);
                 go.explain = false;
                 hits += !diagnose(plant(gens[g], size, seed, options.samples).log, sim::paper_model(), go).located.empty();

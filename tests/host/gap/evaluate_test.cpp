@@ -99,6 +99,24 @@ TEST(GapEval, DetectionThresholdIsBracketedByItsCurve) {
     EXPECT_LE(d.a50, d.curve.back().size);
 }
 
+// A run of some generators measures each a_50 on the logs the full run measures it on, so a subset reproduces the
+// full run's sizes.
+TEST(GapEval, AGeneratorsDetectionThresholdDoesNotDependOnTheOthersInTheRun) {
+    EvalOptions o = quick_options();
+    o.samples = 800;
+    o.detection_logs = 2;
+    o.replicates = 12;
+    o.generators = {"thermostat", "mode_hop"};
+    const auto both = detection_sizes(o);
+    o.generators = {"mode_hop"};
+    const auto alone = detection_sizes(o);
+    ASSERT_EQ(both.size(), 2u);
+    ASSERT_EQ(alone.size(), 1u);
+    EXPECT_EQ(alone[0].a50, both[1].a50);
+    ASSERT_EQ(alone[0].curve.size(), both[1].curve.size());
+    for (std::size_t k = 0; k < alone[0].curve.size(); ++k) EXPECT_EQ(alone[0].curve[k].detected, both[1].curve[k].detected);
+}
+
 // The logistic fit recovers a_50 from the expected counts of a known curve, and refuses a falling one.
 TEST(GapEval, LogisticFitRecoversTheMidpointOfAKnownCurve) {
     const double a50 = 0.7, slope = 3.0;  // P = 1 / (1 + (a50 / s)^slope)
