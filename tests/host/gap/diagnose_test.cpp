@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "gap_fixtures.hpp"
+#include "plot_data.hpp"
 #include "host/gap/calibrate.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
@@ -130,27 +131,6 @@ std::string read_text(const std::filesystem::path& path) {
     return ss.str();
 }
 
-// gnuplot data blocks (separated by blank-line pairs) as rows of numbers.
-std::vector<std::vector<std::vector<double>>> data_blocks(const std::string& text) {
-    std::vector<std::vector<std::vector<double>>> blocks(1);
-    std::istringstream in(text);
-    std::string line;
-    int blank = 0;
-    while (std::getline(in, line)) {
-        if (line.empty()) {
-            if (++blank == 2 && !blocks.back().empty()) blocks.emplace_back();
-            continue;
-        }
-        blank = 0;
-        std::istringstream row(line);
-        std::vector<double> v;
-        for (double x; row >> x;) v.push_back(x);
-        blocks.back().push_back(v);
-    }
-    if (blocks.back().empty()) blocks.pop_back();
-    return blocks;
-}
-
 // The report names the verdict and why, lists the added effect with its parameters, marks it among the candidates,
 // and plots the residual's mean over time: the planted overshoot lies outside the base simulator's band and inside
 // the band with the added effect in most time bins.
@@ -171,8 +151,9 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     if (!report::gnuplot_available()) GTEST_SKIP() << "gnuplot not on PATH: the plots are not drawn";
     EXPECT_TRUE(std::filesystem::exists(dir / "gap_adev_gyro.png"));
     ASSERT_TRUE(std::filesystem::exists(dir / "gap_mean_gyro.png"));
-    const auto blocks = data_blocks(read_text(dir / "gap_mean_gyro.dat"));
-    ASSERT_EQ(blocks.size(), 3u);  // base band, band with the effect, real
+    std::vector<std::vector<std::vector<double>>> blocks;  // base band, band with the effect, real
+    for (int i = 0; i < 3; ++i) blocks.push_back(testing::plot_block(dir / "gap_mean_gyro.dat", i));
+    EXPECT_TRUE(testing::plot_block(dir / "gap_mean_gyro.dat", 3).empty());
     const auto& real = blocks[2];
     ASSERT_EQ(real.size(), blocks[0].size());
     int in_base = 0, in_after = 0;

@@ -1,12 +1,11 @@
 // gap-eval's plots: each generator's shares against size, with exact binomial intervals, written for gnuplot.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "plot_data.hpp"
 #include "host/gap/eval_plots.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/util/error.hpp"
@@ -24,27 +23,6 @@ SizeScore size_score(const std::string& generator, double level, int logs, int d
     return z;
 }
 
-// The rows of gnuplot data block `index` (blocks are separated by two blank lines).
-std::vector<std::vector<double>> block(const std::filesystem::path& path, int index) {
-    std::ifstream in(path);
-    std::vector<std::vector<double>> rows;
-    std::string line;
-    int at = 0, blank = 0;
-    while (std::getline(in, line)) {
-        if (line.empty()) {
-            if (++blank == 2) ++at;
-            continue;
-        }
-        blank = 0;
-        if (at != index) continue;
-        std::istringstream row(line);
-        std::vector<double> v;
-        for (double x; row >> x;) v.push_back(x);
-        rows.push_back(v);
-    }
-    return rows;
-}
-
 TEST(EvalPlots, SharesAgainstSizeCarryClopperPearsonIntervals) {
     if (!report::gnuplot_available()) GTEST_SKIP() << "gnuplot not on PATH";
     EvalScores s;
@@ -54,7 +32,7 @@ TEST(EvalPlots, SharesAgainstSizeCarryClopperPearsonIntervals) {
     const auto dir = std::filesystem::temp_directory_path() / "driftlab_eval_plots_test";
     std::filesystem::remove_all(dir);
     EXPECT_EQ(write_eval_plots(s, dir.string()).size(), 4u);  // two plots, PNG and SVG
-    const auto detected = block(dir / "gap_eval_detected.dat", 0);
+    const auto detected = testing::plot_block(dir / "gap_eval_detected.dat", 0);
     ASSERT_EQ(detected.size(), 2u);  // thermal_rc at sizes 1 and 2; the clean row is not a size
     // 10 of 20: the exact 95 % interval is 0.2720-0.7280 (Clopper & Pearson 1934; tabulated).
     EXPECT_DOUBLE_EQ(detected[0][1], 0.5);
@@ -64,14 +42,14 @@ TEST(EvalPlots, SharesAgainstSizeCarryClopperPearsonIntervals) {
     EXPECT_NEAR(detected[1][2], 0.8316, 5e-4);
     EXPECT_DOUBLE_EQ(detected[1][3], 1.0);
     // The two generators sit a few per cent apart at the same size, thermal_rc left of mode_hop.
-    const auto hop = block(dir / "gap_eval_top1.dat", 1);
+    const auto hop = testing::plot_block(dir / "gap_eval_top1.dat", 1);
     ASSERT_EQ(hop.size(), 2u);
     EXPECT_DOUBLE_EQ(hop[1][1], 12.0 / 20.0);
     EXPECT_NEAR(hop[0][0] / detected[0][0], 1.04, 1e-9);
     EXPECT_GT(hop[0][0], 0.9);
     EXPECT_LT(hop[0][0], 1.1);
     // The last block is the target line.
-    const auto target = block(dir / "gap_eval_top1.dat", 2);
+    const auto target = testing::plot_block(dir / "gap_eval_top1.dat", 2);
     ASSERT_EQ(target.size(), 2u);
     EXPECT_DOUBLE_EQ(target[0][1], 0.8);
 }
