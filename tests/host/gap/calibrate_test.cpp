@@ -1,0 +1,43 @@
+// Calibration of the base: a log without a warm-up (a unit already warm, a slow straight drift) drives the eq. 1
+// fit's T far beyond the log; the base must still reproduce the log's level and slope, or every replicate drifts
+// away from the real log and the battery locates a gap that is the calibration's.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gap_fixtures.hpp"
+#include "host/gap/calibrate.hpp"
+#include "sim/model/drift.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+double mean_of(const std::vector<double>& v, std::size_t from, std::size_t to) {
+    double s = 0.0;
+    for (std::size_t k = from; k < to; ++k) s += v[k];
+    return s / static_cast<double>(to - from);
+}
+
+TEST(Calibrate, AStraightLogKeepsItsLevelAndSlopeWhenTheTimeConstantIsBounded) {
+    GapModel m = testing::paper_gyro_model(8);
+    m.base[0].drift = {0.0, 508.0, 411.0};  // warm already: no rise
+    std::vector<double> ramp(1500);
+    for (std::size_t k = 0; k < ramp.size(); ++k) ramp[k] = 0.0005 * static_cast<double>(k + 1);  // 0.75 counts
+    const LogData log = testing::gyro_log(m, 1500, ramp, 31);
+    const GapModel base = calibrate_base(log, sim::paper_model(), {true, false, false, false}, 1);
+    const double span = log.t_s.back() - log.t_s.front();
+    const auto& d = base.base[0].drift;
+    EXPECT_LE(d.tau_s, 1e3 * span * (1 + 1e-12)) << "T is bounded";
+    const sim::Drift drift(d);
+    // The model's level over the first and the last tenth against the log's (noise of a tenth's mean: ~0.03 counts).
+    double model_first = 0.0, model_last = 0.0;
+    for (std::size_t k = 0; k < 150; ++k) model_first += drift.at_counts(log.t_s[k]) / 150.0;
+    for (std::size_t k = 1350; k < 1500; ++k) model_last += drift.at_counts(log.t_s[k]) / 150.0;
+    EXPECT_NEAR(model_first, mean_of(log.counts[0], 0, 150), 0.1);
+    EXPECT_NEAR(model_last, mean_of(log.counts[0], 1350, 1500), 0.1);
+    EXPECT_NEAR(model_last - model_first, 0.0005 * 1350.0, 0.15);
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap
