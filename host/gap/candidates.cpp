@@ -46,6 +46,9 @@ const std::vector<CandidateInfo>& candidate_list() {
          "repeat the run: a random walk differs between runs, a thermal exponential repeats"},
         {"spikes", {"rate_hz", "scale_counts"}, FitRoute::simulated,
          "log the RAW codes too: a spike before the smoother is kernel-shaped, a link error is a single sample"},
+        {"adc_dnl", {}, FitRoute::code_density,
+         "sweep the input slowly through the codes (a code-density test, IEEE 1241): DNL repeats at the same codes, "
+         "whatever the noise or the drift"},
     };
     return list;
 }
@@ -67,12 +70,13 @@ const std::vector<NotIdentifiable>& not_identifiable_list() {
     return list;
 }
 
-const std::vector<NotIdentifiable>& not_tried_list() {
-    static const std::vector<NotIdentifiable> list = {
-        {"adc_dnl", "not a candidate yet: the codes cells of a raw-mode log (and weakly the frac cells) locate it; its "
-                    "per-code widths are not estimated"},
-    };
-    return list;
+std::vector<NotIdentifiable> not_tried_without_raw_codes() {
+    std::vector<NotIdentifiable> out;
+    for (const auto& info : candidate_list())
+        if (info.route == FitRoute::code_density)
+            out.push_back({info.effect, "fitted to the raw codes of a raw-mode log (a raw_<channel> column), which this log "
+                                        "lacks; on smoothed outputs alone the frac cells locate it, weakly"});
+    return out;
 }
 
 const CandidateInfo* find_candidate(const std::string& effect) {

@@ -1,5 +1,6 @@
-// The candidate effects the diagnosis tries, each with <= 3 parameters in physical units, and how a parameter
-// vector becomes an effect of the simulator's library (sim/effects) acting on one channel. Effects a static log
+// The candidate effects the diagnosis tries, each with <= 3 parameters in physical units (adc_dnl: one transition
+// per code the log crosses, on raw-mode logs only), and how a parameter vector becomes an effect of the
+// simulator's library (sim/effects) acting on one channel. Effects a static log
 // cannot identify, and effects this version does not try, are listed with the reason. docs/gap.md §Candidates.
 #pragma once
 
@@ -16,11 +17,12 @@ enum class FitRoute {
     deterministic,  ///< a mean shape: variable projection on the fitting part of the log, jointly with eq. 1
     spectral,       ///< a Gaussian process: debiased Whittle likelihood of the differenced residual (spectral_fit)
     simulated,      ///< a non-Gaussian process: Nelder-Mead on log-parameters against the battery (common random numbers)
+    code_density,   ///< the converter's transitions: a probit fit per code to a raw-mode log's raw codes (code_density)
 };
 
 struct CandidateInfo {
     std::string effect;                    ///< library name (sim/effects)
-    std::vector<std::string> param_keys;   ///< unit-suffixed; "_unit" is the channel's unit (dps or g)
+    std::vector<std::string> param_keys;   ///< unit-suffixed; "_unit" is the channel's unit (dps or g); empty: per fit
     FitRoute route;
     std::string settle;                    ///< the experiment that separates it from its look-alikes
 };
@@ -41,8 +43,8 @@ struct NotIdentifiable {
 };
 const std::vector<NotIdentifiable>& not_identifiable_list();
 
-/// Library effects not tried as candidates by this version, with the reason.
-const std::vector<NotIdentifiable>& not_tried_list();
+/// The candidates a log without raw codes cannot have tried (those fitted to raw codes), with the reason.
+std::vector<NotIdentifiable> not_tried_without_raw_codes();
 
 /// The library effect for candidate `effect` on channel `c` with parameters `params` (candidate_list() keys,
 /// physical units). Throws std::invalid_argument for an unknown name.

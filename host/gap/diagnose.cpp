@@ -116,6 +116,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         raw[c] = &column->second;
         battery.raw_codes[c] = true;
     }
+    result.raw_codes = battery.raw_codes;
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
     auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held,

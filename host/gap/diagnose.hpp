@@ -47,6 +47,7 @@ struct TimingCheck {
 
 struct GapResult {
     std::array<bool, kChannelCount> channels{};
+    std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
     GapModel base;                   ///< the calibrated base
     GapModel final_model;            ///< base plus the accepted effects
     std::vector<Cell> layout;

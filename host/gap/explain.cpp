@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
+#include "host/gap/code_density.hpp"
 #include "host/gap/comparison.hpp"
 #include "host/gap/mean_shapes.hpp"
 #include "host/gap/nelder_mead.hpp"
@@ -54,6 +56,7 @@ struct Judge {
     std::vector<bool> fitting;      ///< per sample: in the fitting part
     std::uint64_t seed;
     int threads;
+    const std::vector<double>* raw = nullptr;  ///< this channel's raw codes (raw-mode log), or null
 
     Comparison evaluate(const GapModel& m, int replicates) const {
         return compare(real, run_replicates(m, t_s, battery, replicates, seed, threads), kAlpha);
@@ -72,6 +75,7 @@ struct Fitted {
     GapModel model;
     std::vector<double> params;
     std::vector<std::pair<std::size_t, std::vector<double>>> refits;  ///< accepted index, new parameters
+    std::vector<std::string> names;  ///< the parameters' names when they vary per fit (adc_dnl), else empty
 };
 
 // The log minus the mean shapes accepted earlier (not eq. 1): what a new mean shape is fitted to, jointly with eq. 1.
@@ -94,7 +98,7 @@ Fitted fit_deterministic(const std::string& effect, const GapModel& current, con
     std::vector<double> t_part, y_part;
     for (std::size_t k = 0; k < judge.t_s.size(); ++k)
         if (part[k]) t_part.push_back(judge.t_s[k]), y_part.push_back(y[k]);
-    Fitted out{current, {}, {}};
+    Fitted out{current, {}, {}, {}};
     if (effect == "thermal_second_tc") {
         const TwoExponentials f = fit_two_exponentials(t_part, y_part, t_part.size());
         out.model.base[i].drift = {f.c1_counts, f.c2_counts, f.t_s};
@@ -183,7 +187,49 @@ Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOpti
         if (v < best_value) best_value = v, best = s;
     }
     const auto nm = nelder_mead(objective, best, {0.7, 0.7}, std::max(8, options.max_evaluations - static_cast<int>(starts.size())));
-    return {model_at(nm.x), {std::exp(nm.x[0]), std::exp(nm.x[1])}, {}};
+    return {model_at(nm.x), {std::exp(nm.x[0]), std::exp(nm.x[1])}, {}, {}};
+}
+
+// The converter's transitions where the fitting part's raw codes cross them (code_density.hpp), as a measured
+// adc_dnl table. One converter serves every channel: a table fitted on another channel is kept, this one's codes
+// replacing its entries where both cross the same codes.
+Fitted fit_code_density(const GapModel& current, const Judge& judge) {
+    std::vector<double> raw, level;
+    for (std::size_t k = 0; k < judge.y.size(); ++k)
+        if (judge.fitting[k]) raw.push_back((*judge.raw)[k]), level.push_back(judge.y[k]);
+    const TransitionFit fit = fit_transitions(raw, level);
+    Fitted out{current, {}, {}, {}};
+    std::map<std::int64_t, double> table;
+    auto slot = std::find_if(out.model.effects.begin(), out.model.effects.end(),
+                             [](const sim::EffectSpec& e) { return e.name == "adc_dnl"; });
+    if (slot != out.model.effects.end()) {
+        const auto* codes = slot->table["transition_codes"].as_array();
+        const auto* counts = slot->table["transition_counts"].as_array();
+        for (std::size_t k = 0; codes && counts && k < codes->size(); ++k)
+            table[codes->get(k)->value_or<std::int64_t>(0)] = counts->get(k)->value_or(0.0);
+    }
+    for (const auto& t : fit.transitions) {
+        table[t.code] = t.counts;
+        out.params.push_back(t.counts);
+        out.names.push_back("t" + std::to_string(t.code) + "_counts");
+    }
+    sim::EffectSpec spec{"adc_dnl", {}};
+    toml::array codes, counts;
+    double previous = -1e300;
+    for (const auto& [code, counts_at] : table) {
+        const double t = std::max(counts_at, previous + 1e-3);  // tables of two channels meet increasing
+        codes.push_back(code);
+        counts.push_back(t);
+        previous = t;
+    }
+    spec.table.insert_or_assign("transition_codes", codes);
+    spec.table.insert_or_assign("transition_counts", counts);
+    if (slot != out.model.effects.end()) {
+        out.model.effects[static_cast<std::size_t>(slot - out.model.effects.begin())] = spec;
+    } else {
+        out.model.effects.push_back(spec);
+    }
+    return out;
 }
 
 Explanation judge_candidate(const std::string& effect, const Fitted& fitted, const Judge& judge, const Comparison& base_cmp,
@@ -192,7 +238,7 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
     Explanation ex;
     ex.effect = effect;
     ex.channel = kChannelNames[channel_index(judge.channel)];
-    const auto names = candidate_param_names(effect, judge.channel);
+    const auto names = fitted.names.empty() ? candidate_param_names(effect, judge.channel) : fitted.names;
     for (std::size_t k = 0; k < names.size(); ++k) ex.params.emplace_back(names[k], fitted.params[k]);
     ex.gap_before = gap_score(base_cmp, judge.layout, in_segment(Segment::fit));
     ex.gap_after = gap_score(cmp, judge.layout, in_segment(Segment::fit));
@@ -212,7 +258,7 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
         if (judge.layout[j].segment == Segment::heldout)
             ex.heldout_cell_loss.push_back(cmp.z[j] * cmp.z[j] + 2.0 * std::log(cmp.sim_sd[j]));
     ex.accepted = passes(ex, options.penalty_per_param, options.min_heldout_shrink);
-    ex.gaussian = candidate(effect).route != FitRoute::simulated;
+    ex.gaussian = candidate(effect).route == FitRoute::deterministic || candidate(effect).route == FitRoute::spectral;
     ex.settle = candidate(effect).settle;
     // A Gauss-Markov process whose correlation time is not well inside the log shows neither its bump's fall nor
     // its plateau: within the log it is a flicker or a random walk (method: report coloured noise, don't choose).
@@ -337,7 +383,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             if (!open[i]) continue;
             const Channel c = static_cast<Channel>(i);
-            Judge judge{t_s, *y[i], c, battery, {}, {}, {}, 0.0, fitting, options.seed, options.threads};
+            Judge judge{t_s, *y[i], c, battery, {}, {}, {}, 0.0, fitting, options.seed, options.threads, battery.raw_codes[i] ? raw[i] : nullptr};
             judge.battery.channels = {};
             judge.battery.channels[i] = true;
             judge.battery.raw_codes = {};
@@ -382,6 +428,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             for (const std::string& effect : names) {
                 if (std::find(used[i].begin(), used[i].end(), effect) != used[i].end()) continue;
                 if (effect == "spikes" && !tails_differ(judge, base_cmp)) continue;
+                if (candidate(effect).route == FitRoute::code_density && !judge.raw) continue;  // needs raw codes
                 if (options.progress) options.progress("step " + std::to_string(step) + ", " + kChannelNames[i] + ": " + effect);
                 const FitRoute route = candidate(effect).route;
                 Fitted fitted;
@@ -394,6 +441,9 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                     const SpectralFit f = fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
                                                     effect, &fitted.refits);
                     fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()), f.params.end());
+                } else if (route == FitRoute::code_density) {
+                    fitted = fit_code_density(result.model, judge);
+                    if (fitted.params.empty()) continue;  // no transition crossed often enough to place
                 } else {
                     fitted = fit_spikes(result.model, judge, options);
                 }

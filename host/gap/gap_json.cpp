@@ -94,7 +94,8 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     for (const auto& n : not_identifiable_list()) ni.push_back({{"effect", n.effect}, {"reason", n.reason}});
     j["not_identifiable"] = ni;
     json nt = json::array();
-    for (const auto& n : not_tried_list()) nt.push_back({{"effect", n.effect}, {"reason", n.reason}});
+    if (std::none_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; }))
+        for (const auto& n : not_tried_without_raw_codes()) nt.push_back({{"effect", n.effect}, {"reason", n.reason}});
     j["not_tried"] = nt;
     json cal = json::object();
     for (std::size_t c = 0; c < kChannelCount; ++c) {

@@ -200,6 +200,10 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     md << "\nNot identifiable from a static log:\n\n";
     for (const auto& n : not_identifiable_list()) md << "- " << n.effect << ": " << n.reason << "\n";
+    if (std::none_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; })) {
+        md << "\nNot tried on this log:\n\n";
+        for (const auto& n : not_tried_without_raw_codes()) md << "- " << n.effect << ": " << n.reason << "\n";
+    }
     md << "\n## The residual against the simulator's replicates\n\nThe eq. 1 residual of the real log (black) against "
           "the min-max band of " << kBandReplicates << " replicates of the base simulator (red) and of the simulator with "
           "the added effects (blue), each replicate refitted as the log is: its Allan deviation by octave, and its mean "

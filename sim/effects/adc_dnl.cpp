@@ -8,7 +8,8 @@
 namespace driftlab::sim {
 
 AdcDnl::AdcDnl(const Params& params) : EffectWith(params) {
-    active_ = p_.dnl_rms_lsb > 0.0 || !p_.missing_codes.empty() || (p_.carry_bits > 0 && p_.carry_dnl_lsb != 0.0);
+    active_ = p_.dnl_rms_lsb > 0.0 || !p_.missing_codes.empty() || (p_.carry_bits > 0 && p_.carry_dnl_lsb != 0.0) ||
+              !p_.transition_codes.empty();
     // Widths of the inner codes 1..1022; the end codes are open.
     constexpr int kInner = kCodeCount - 2;
     std::vector<double> width(kInner + 1, 1.0);  // index = code, [0] unused
@@ -30,6 +31,10 @@ AdcDnl::AdcDnl(const Params& params) : EffectWith(params) {
         if (j <= kInner) t += width[static_cast<std::size_t>(j)] * scale;
     }
     transitions_.back() = kCodeCount - 1.5;  // exact despite rounding in the running sum
+    for (std::size_t k = 0; k < p_.transition_codes.size(); ++k)
+        transitions_[static_cast<std::size_t>(p_.transition_codes[k] - 1)] = p_.transition_counts[k];
+    // A listed transition beyond a neighbour of the random pattern would make codes overlap.
+    std::sort(transitions_.begin(), transitions_.end());
 }
 
 int AdcDnl::code_of(double x_counts) const {

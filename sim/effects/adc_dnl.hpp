@@ -5,7 +5,9 @@
 //   Widths W_j = T_{j+1} - T_j = 1 + DNL_j [LSB] for codes 1..1022, DNL_j = rms * eta_j (+ carry_dnl on codes
 //   that are multiples of 2^carry_bits: the SAR major-carry pattern), W_j >= 0, W_j = 0 for listed missing codes;
 //   then all widths are rescaled so that T_1 = 0.5 and T_1023 = 1022.5 stay ideal (no gain error: that is INL's).
-//   Code 0 and 1023 are the open end codes. (gap-method.md E6; IEEE 1241 code-density test.)
+//   Code 0 and 1023 are the open end codes. (gap-method.md E6; IEEE 1241 code-density test.) Listed transitions
+//   (transition_codes, transition_counts: a measured table, or what the gap diagnosis fits) then replace T_j at
+//   their codes; the table is kept increasing.
 // The pattern is a property of the device: it is drawn once from `pattern_seed` (not the run seed), so every run
 // and replicate of a model sees the same DNL. apply() returns integral codes; the chain's rounding keeps them.
 // Default parameters leave the input untouched (the chain's ideal rounding applies).
@@ -13,6 +15,7 @@
 // conversion rate, converters other than 10-bit.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "sim/effects/params.hpp"
@@ -25,6 +28,8 @@ struct AdcDnlParams {
     std::uint64_t carry_bits = 0;              ///< codes that are multiples of 2^carry_bits get carry_dnl, 0 = none
     double carry_dnl_lsb = 0.0;                ///< extra DNL at those codes [LSB]
     std::uint64_t pattern_seed = 1;            ///< seed of the device's DNL pattern (independent of the run seed)
+    std::vector<std::int64_t> transition_codes;  ///< codes j whose lower transition is given (a measured table)
+    std::vector<double> transition_counts;       ///< T_j of those codes [counts], overriding the pattern there
 
     template <class V>
     void visit(V& v) {
@@ -33,10 +38,21 @@ struct AdcDnlParams {
         v.field("carry_bits", carry_bits, "bits", "SAR carry pattern period 2^carry_bits (0 = none)");
         v.field("carry_dnl_lsb", carry_dnl_lsb, "LSB", "extra DNL on codes that are multiples of 2^carry_bits");
         v.field("pattern_seed", pattern_seed, "-", "seed of the device's fixed DNL pattern");
+        v.field("transition_codes", transition_codes, "counts", "codes whose lower transition is given", 1, 1023);
+        v.field("transition_counts", transition_counts, "counts", "the input at which each of those codes begins");
     }
     void validate(const TomlReader& r) const {
         if (carry_bits > 9) r.fail("carry_bits", "expected 0..9 bits for a 10-bit converter");
         if (carry_dnl_lsb < -1.0) r.fail("carry_dnl_lsb", "expected >= -1 [LSB] (-1 = missing code)");
+        if (transition_codes.size() != transition_counts.size())
+            r.fail("transition_counts", "expected one value per entry of transition_codes");
+        for (std::size_t k = 0; k < transition_codes.size(); ++k) {
+            const double ideal = static_cast<double>(transition_codes[k]) - 0.5;
+            if (!(std::abs(transition_counts[k] - ideal) < 1.0))
+                r.fail("transition_counts", "expected each transition within 1 LSB of its ideal place (code - 1/2)");
+            if (k > 0 && (transition_codes[k] <= transition_codes[k - 1] || transition_counts[k] <= transition_counts[k - 1]))
+                r.fail("transition_codes", "expected increasing codes with increasing transitions");
+        }
     }
 };
 

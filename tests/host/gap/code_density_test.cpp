@@ -59,6 +59,30 @@ TEST(CodeDensity, AMissingCodeStandsOut) {
     EXPECT_GT(std::expm1(code_density_excess(r.raw, r.level)), 10.0);
 }
 
+// The probit fit puts each crossed transition where the rows say it is: the moved one 0.3 LSB above its ideal
+// place, the others at theirs. Transitions with 200 rows a side come within 0.1 LSB; those at the edges of the
+// range, which fewer rows reach, within 0.25.
+TEST(CodeDensity, TransitionsAreFoundWhereTheConverterHasThem) {
+    for (unsigned seed : {7u, 8u, 9u}) {
+        const Rows r = rows(3000, 1.05, seed, 507, 0.3);
+        const auto truth = [](long code) { return static_cast<double>(code) - 0.5 + (code == 507 ? 0.3 : 0.0); };
+        const TransitionFit fit = fit_transitions(r.raw, r.level);
+        EXPECT_NEAR(fit.s, 1.05, 0.08) << "the shared deviation, not widened by the moved transition";
+        ASSERT_GE(fit.transitions.size(), 5u);
+        for (const auto& t : fit.transitions) EXPECT_NEAR(t.counts, truth(t.code), 0.25) << "seed " << seed << ", code " << t.code;
+        for (std::size_t k = 1; k < fit.transitions.size(); ++k)
+            EXPECT_GT(fit.transitions[k].counts, fit.transitions[k - 1].counts);
+        const TransitionFit well = fit_transitions(r.raw, r.level, 200);
+        ASSERT_LT(well.transitions.size(), fit.transitions.size());
+        bool moved_seen = false;
+        for (const auto& t : well.transitions) {
+            EXPECT_NEAR(t.counts, truth(t.code), 0.1) << "seed " << seed << ", code " << t.code;
+            moved_seen |= t.code == 507;
+        }
+        EXPECT_TRUE(moved_seen);
+    }
+}
+
 TEST(CodeDensity, OneOrTwoCodesCarryNoWidthInformation) {
     EXPECT_EQ(code_density_excess({5, 5, 6, 6}, {5.4, 5.4, 5.6, 5.6}), 0.0);
     EXPECT_THROW(code_density_excess({5, 6}, {5.5}), std::invalid_argument);

@@ -19,6 +19,7 @@
 #include "host/gap/gap_report.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/report/gnuplot.hpp"
+#include "sim/effects/adc_dnl.hpp"
 #include "host/util/error.hpp"
 
 namespace driftlab::host::gap {
@@ -168,8 +169,9 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
 }
 
 // A raw-mode log's raw codes get the code-histogram cells. A converter whose code widths differ by 0.3 LSB rms
-// (the library's adc_dnl, absent from the diagnosis's base) is located there; the ideal converter is not.
-TEST(Diagnose, ARawModeLogsCodeHistogramLocatesDifferentialNonLinearity) {
+// (the library's adc_dnl, absent from the diagnosis's base) is located there, and explained by the adc_dnl
+// candidate's transition table; the ideal converter is not located.
+TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLinearity) {
     GapOptions o = small_options();
     o.explain = false;
     const auto raw_mode_log = [](const GapModel& m, std::uint64_t seed) {
@@ -203,10 +205,50 @@ TEST(Diagnose, ARawModeLogsCodeHistogramLocatesDifferentialNonLinearity) {
         found += codes_cells(diagnose(raw_mode_log(dnl, seed), sim::paper_model(), o), true) > 0;
     }
     EXPECT_GE(found, 2);
+    // Explained: adc_dnl, its table near the converter's own transitions, and the held-out gap shrinks.
+    GapOptions full = small_options();
+    const GapResult r = diagnose(raw_mode_log(dnl, 22), sim::paper_model(), full);
+    EXPECT_EQ(r.verdict, "adc_dnl");
+    ASSERT_FALSE(r.accepted.empty());
+    EXPECT_GT(r.accepted[0].heldout_shrink, 0.4);
+    sim::AdcDnlParams truth;
+    truth.dnl_rms_lsb = 0.3;
+    truth.pattern_seed = 3;
+    const sim::AdcDnl converter(truth);
+    // The table is placed on the smoothed output's scale, which the DNL itself bends (and eq. 1's offset absorbs
+    // any common shift), so the code widths are what it must get right: their pattern follows the converter's
+    // (correlation over the codes crossed; on this log 0.69/0.80/1.51/0.74/1.26/0.63 against
+    // 0.69/0.66/1.38/0.63/0.98/0.56 LSB).
+    const auto& p = r.accepted[0].params;
+    ASSERT_GE(p.size(), 4u);
+    std::vector<double> fitted_width, true_width;
+    for (std::size_t k = 1; k < p.size(); ++k) {
+        const int lower = std::stoi(p[k - 1].first.substr(1)), upper = std::stoi(p[k].first.substr(1));  // "t507_counts"
+        if (upper != lower + 1) continue;
+        fitted_width.push_back(p[k].second - p[k - 1].second);
+        true_width.push_back(converter.transition_counts(upper) - converter.transition_counts(lower));
+    }
+    ASSERT_GE(fitted_width.size(), 3u);
+    double mf = 0, mt = 0, sft = 0, sff = 0, stt = 0;
+    for (std::size_t k = 0; k < fitted_width.size(); ++k) mf += fitted_width[k], mt += true_width[k];
+    mf /= static_cast<double>(fitted_width.size());
+    mt /= static_cast<double>(true_width.size());
+    for (std::size_t k = 0; k < fitted_width.size(); ++k) {
+        sft += (fitted_width[k] - mf) * (true_width[k] - mt);
+        sff += (fitted_width[k] - mf) * (fitted_width[k] - mf);
+        stt += (true_width[k] - mt) * (true_width[k] - mt);
+    }
+    EXPECT_GT(sft / std::sqrt(sff * stt), 0.8);
+    const auto j = gap_to_json(r, full);
+    EXPECT_TRUE(j["not_tried"].empty()) << "adc_dnl was tried on this raw-mode log";
     // Values that are not integral codes are not a raw column: no code cells.
     LogData smoothed = raw_mode_log(ideal, 21);
     smoothed.optional_columns["raw_gyro"] = smoothed.counts[0];
-    EXPECT_EQ(codes_cells(diagnose(smoothed, sim::paper_model(), o), false), 0);
+    const GapResult plain = diagnose(smoothed, sim::paper_model(), o);
+    EXPECT_EQ(codes_cells(plain, false), 0);
+    const auto not_tried = gap_to_json(plain, o)["not_tried"];
+    ASSERT_EQ(not_tried.size(), 1u);
+    EXPECT_EQ(not_tried[0]["effect"], "adc_dnl");
 }
 
 // The same overshoot a little smaller: on these logs no cell reaches the family-wise threshold, yet the held-out

@@ -92,6 +92,25 @@ TEST(AdcDnl, PatternDependsOnPatternSeedNotOnRunSeed) {
     EXPECT_DOUBLE_EQ(a.transition_counts(1023), 1022.5);
 }
 
+// A measured table: the listed transitions are where the codes begin; the other codes keep their ideal places.
+TEST(AdcDnl, ListedTransitionsReplaceTheIdealOnes) {
+    AdcDnlParams p;
+    p.transition_codes = {506, 507};
+    p.transition_counts = {505.2, 506.9};  // code 505 0.3 LSB narrower, 506 0.2 LSB wider
+    AdcDnl dnl(p);
+    EXPECT_DOUBLE_EQ(dnl.transition_counts(506), 505.2);
+    EXPECT_DOUBLE_EQ(dnl.transition_counts(507), 506.9);
+    EXPECT_DOUBLE_EQ(dnl.transition_counts(505), 504.5);
+    EXPECT_DOUBLE_EQ(dnl.transition_counts(508), 507.5);
+    EXPECT_EQ(dnl.code_of(505.1), 505);
+    EXPECT_EQ(dnl.code_of(505.3), 506);
+    EXPECT_EQ(dnl.code_of(506.8), 506);
+    EXPECT_EQ(dnl.code_of(507.0), 507);
+    ChannelValues v = {505.3, 0.0, 0.0, 0.0};
+    dnl.apply(v, EffectContext{});
+    EXPECT_EQ(v[0], 506.0);  // a table alone makes the effect active
+}
+
 TEST(AdcDnl, OutputIsAnIntegralCodeClippedToTheRange) {
     AdcDnlParams p;
     p.dnl_rms_lsb = 0.2;

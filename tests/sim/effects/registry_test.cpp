@@ -167,6 +167,10 @@ TEST(EffectRegistry, BadValuesNameTheKeyAndTheExpectedUnit) {
     const std::string codes = error_of("adc_dnl", "missing_codes = [0]");
     EXPECT_NE(codes.find("missing_codes: expected an array of integers [counts] in [1, 1022]"), std::string::npos)
         << codes;
+    const std::string table = error_of("adc_dnl", "transition_codes = [506, 507]\ntransition_counts = [505.2]");
+    EXPECT_NE(table.find("transition_counts: expected one value per entry of transition_codes"), std::string::npos) << table;
+    const std::string far = error_of("adc_dnl", "transition_codes = [506]\ntransition_counts = [507.0]");
+    EXPECT_NE(far.find("within 1 LSB of its ideal place"), std::string::npos) << far;
     const std::string band = error_of("flicker", "f_low_hz = 1.0\nf_high_hz = 0.1");
     EXPECT_NE(band.find("f_high_hz: expected f_high_hz > f_low_hz"), std::string::npos) << band;
     const std::string tones = error_of("vibration", "tone_hz = [1.0, 2.0]\ntone_dps = [0.1]");
