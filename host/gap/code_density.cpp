@@ -147,6 +147,8 @@ TransitionFit fit_transitions(const std::vector<double>& raw, const std::vector<
     }
     for (const auto& c : crossings) {
         double t = place(c, out.s).first;
+        // At the end of its range the likelihood was still rising: the rows do not place this transition.
+        if (std::abs(t - (static_cast<double>(c.code) - 0.5)) > 0.99) continue;
         if (!out.transitions.empty() && t <= out.transitions.back().counts) t = out.transitions.back().counts + 1e-3;
         out.transitions.push_back({c.code, t});
     }

@@ -33,8 +33,8 @@ struct FittedTransition {
 /// The transitions a raw-mode log crosses and the noise deviation, by maximum likelihood: for each code j above
 /// the lowest seen, P(code_t >= j) = Phi((level_t - T_j) / s), a probit in T_j searched within 1 LSB of the ideal
 /// j - 1/2, with s shared by all of them (profiled). Only transitions with at least `min_each_side` rows on each
-/// side near them are fitted; the result is increasing (a transition at or below the previous one is put just
-/// above it).
+/// side near them are fitted, and those whose estimate reaches the end of the search range (the rows do not place
+/// them) are left out; the result is increasing (a transition at or below the previous one is put just above it).
 struct TransitionFit {
     double s = 0.0;                              ///< [counts]
     std::vector<FittedTransition> transitions;   ///< by code
