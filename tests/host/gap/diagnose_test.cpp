@@ -218,7 +218,7 @@ TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLineari
     // The table is placed on the smoothed output's scale, which the DNL itself bends (and eq. 1's offset absorbs
     // any common shift), so the code widths are what it must get right: their pattern follows the converter's
     // (correlation over the codes crossed; on this log 0.69/0.80/1.51/0.74/1.26/0.63 against
-    // 0.69/0.66/1.38/0.63/0.98/0.56 LSB).
+    // 0.69/0.66/1.38/0.62/0.98/0.56 LSB).
     const auto& p = r.accepted[0].params;
     ASSERT_GE(p.size(), 4u);
     std::vector<double> fitted_width, true_width;
