@@ -36,6 +36,21 @@ TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
         << text.output;
 }
 
+// Fig. 2's log: raw mode (a RAW frame per SAMPLE), 100 s of an already warm unit. Its raw codes give the code
+// histogram cells and let adc_dnl be tried; a flat log's eq. 1 fit runs off to a huge T, which the calibration
+// bounds without turning the base into a ramp (it once did, and the frac cells were located).
+TEST(GapCli, TheSimulatorsOwnRawModeLogOfAWarmUnitHasNoGap) {
+    TempDir dir("gapfig2");
+    const std::string log = dir.file("fig2.csv");
+    const RunResult hil = run_driftlab({"hil", "--preset", "fig2", "-o", log}, dir.path());
+    ASSERT_EQ(hil.exit_code, 0) << hil.output;
+    const RunResult gap = run_driftlab({"gap", log, "--replicates", "20", "--json"}, dir.path());
+    ASSERT_EQ(gap.exit_code, 0) << gap.output;
+    const auto j = nlohmann::json::parse(gap.output);
+    EXPECT_EQ(j["verdict"], "none") << j["located"].dump();
+    EXPECT_TRUE(j["not_tried"].empty()) << "the raw codes were read: adc_dnl is a candidate here";
+}
+
 // A third-party recording: one column of rate values at 8.75 mdps resolution, 100 Hz, a warm-up and white noise.
 TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
     TempDir dir("gapplain");
