@@ -73,6 +73,11 @@ Profile profile(const Blocks& b, double t_const_s) {
 
 }  // namespace
 
+DriftParameters amplitudes_at(const std::vector<double>& t_s, const std::vector<double>& y, double t_const_s) {
+    const Profile p = profile(Blocks{t_s, y, std::vector<double>(t_s.size(), 1.0)}, t_const_s);
+    return {p.c1, p.c2, t_const_s};
+}
+
 StartValues automatic_start(const std::vector<double>& t_s, const std::vector<double>& y) {
     const Blocks b = block_means(t_s, y);
     const double span_s = t_s.back() - t_s.front();

@@ -23,4 +23,7 @@ struct StartValues {
 /// Start values for t_s (strictly increasing, >= 2 distinct times) and y of equal length.
 StartValues automatic_start(const std::vector<double>& t_s, const std::vector<double>& y);
 
+/// The least-squares C1 and C2 of eq. 1 at a fixed T (the variable-projection profile, every sample alike).
+DriftParameters amplitudes_at(const std::vector<double>& t_s, const std::vector<double>& y, double t_const_s);
+
 }  // namespace driftlab::host::fit

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "host/fit/lm_fit.hpp"
+#include "host/fit/start_values.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/util/error.hpp"
@@ -36,22 +37,6 @@ int metadata_int(const LogData& log, const std::string& key, int fallback, int l
 double kernel_power(const Smoothing& s) {
     const double n = s.window;
     return s.fit_order == 0 ? 1.0 / n : 2.0 * (2.0 * n - 1.0) / (n * (n + 1.0));
-}
-
-// Eq. 1's C1 and C2 by linear least squares at a fixed T.
-sim::DriftParams amplitudes_at(const std::vector<double>& t_s, const std::vector<double>& y, double tau_s) {
-    const double n = static_cast<double>(t_s.size());
-    double mg = 0.0, my = 0.0;
-    for (std::size_t k = 0; k < t_s.size(); ++k) mg += -std::expm1(-t_s[k] / tau_s), my += y[k];
-    mg /= n, my /= n;
-    double sgy = 0.0, sgg = 0.0;
-    for (std::size_t k = 0; k < t_s.size(); ++k) {
-        const double g = -std::expm1(-t_s[k] / tau_s) - mg;
-        sgy += g * (y[k] - my);
-        sgg += g * g;
-    }
-    const double c1 = sgg > 0.0 ? sgy / sgg : 0.0;
-    return {c1, my - c1 * mg, tau_s};
 }
 
 }  // namespace
@@ -182,8 +167,8 @@ GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std
         // keeps the log's level and slope (C1 alone is the slope times T: kept with a shortened T, it was a ramp).
         const double span_s = log.t_s.back() - log.t_s.front();
         const double tau_s = std::isfinite(f.parameters.t_s) ? std::clamp(f.parameters.t_s, 1e-3 * span_s, 1e3 * span_s) : span_s;
-        model.base[c].drift = tau_s == f.parameters.t_s ? sim::DriftParams{f.parameters.c1, f.parameters.c2, tau_s}
-                                                        : amplitudes_at(log.t_s, log.counts[c], tau_s);
+        const fit::DriftParameters d = tau_s == f.parameters.t_s ? f.parameters : fit::amplitudes_at(log.t_s, log.counts[c], tau_s);
+        model.base[c].drift = {d.c1, d.c2, tau_s};
         target[c] = short_lag_spread(f.residual);
     }
     match_noise(model, log.t_s, channels, target, seed);
