@@ -1,6 +1,5 @@
 // `driftlab gap REAL.csv`: where the calibrated simulator differs from a real log, which effect explains it and
 // how far the gap shrinks once that effect is added (host/gap, docs/gap.md).
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -104,8 +103,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     std::printf("not identifiable from a static log:");
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
-    if (std::none_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; }))
-        for (const auto& n : gap::not_tried_without_raw_codes()) std::printf("not tried: %s (%s)\n", n.effect.c_str(), n.reason.c_str());
+    for (const auto& n : r.not_tried) std::printf("not tried: %s (%s)\n", n.effect.c_str(), n.reason.c_str());
     if (r.timing.sequence_jumps || r.timing.gap_events)
         std::printf("timing: %zu sequence jumps (%llu frames lost), %zu gap events\n", r.timing.sequence_jumps,
                     static_cast<unsigned long long>(r.timing.lost_frames), r.timing.gap_events);

@@ -73,6 +73,12 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
 
 }  // namespace
 
+bool was_added(const GapResult& r, const Explanation& e) {
+    return std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
+        return a.step == e.step && a.effect == e.effect && a.channel == e.channel;
+    });
+}
+
 std::array<bool, kChannelCount> analysed_channels(const LogData& log, const GapOptions& options) {
     const bool any = std::any_of(options.channels.begin(), options.channels.end(), [](bool b) { return b; });
     const auto varying = varying_channels(log);
@@ -117,6 +123,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         battery.raw_codes[c] = true;
     }
     result.raw_codes = battery.raw_codes;
+    if (std::none_of(battery.raw_codes.begin(), battery.raw_codes.end(), [](bool b) { return b; }))
+        result.not_tried = not_tried_without_raw_codes();
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
     auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held,

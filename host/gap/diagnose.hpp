@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "host/gap/candidates.hpp"
 #include "host/gap/comparison.hpp"
 #include "host/gap/explain.hpp"
 #include "host/gap/level_step.hpp"
@@ -48,6 +49,7 @@ struct TimingCheck {
 struct GapResult {
     std::array<bool, kChannelCount> channels{};
     std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
+    std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
     GapModel base;                   ///< the calibrated base
     GapModel final_model;            ///< base plus the accepted effects
     std::vector<Cell> layout;
@@ -70,6 +72,9 @@ struct GapResult {
 /// Diagnoses `log` against the unit `unit` (front ends and converter). Throws DataError (naming the log) when it
 /// is too short (< 200 samples) or no channel varies, UsageError on bad options.
 GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options);
+
+/// True when candidate fit `e` (of result.tried) is one of the effects added to the model, not only one that passed.
+bool was_added(const GapResult& result, const Explanation& e);
 
 /// The channels diagnose() analyses for these options.
 std::array<bool, kChannelCount> analysed_channels(const LogData& log, const GapOptions& options);

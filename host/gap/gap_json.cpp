@@ -1,8 +1,6 @@
 // JSON of a diagnosis; see gap_json.hpp.
 #include "host/gap/gap_json.hpp"
 
-#include <algorithm>
-
 #include "host/gap/candidates.hpp"
 #include "host/report/json_out.hpp"
 
@@ -58,12 +56,8 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["information_criterion"] = criterion_name(options.explain_options.information_criterion);
     json ex = json::array();
     for (const auto& e : r.accepted) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
-    for (const auto& e : r.tried) {
-        const bool added = std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
-            return a.effect == e.effect && a.channel == e.channel && a.step == e.step;
-        });
-        if (!added) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
-    }
+    for (const auto& e : r.tried)
+        if (!was_added(r, e)) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
     j["explanations"] = ex;
     j["located"] = located_json(r.located, r.layout);
     j["located_after"] = located_json(r.located_after, r.layout);
@@ -94,8 +88,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     for (const auto& n : not_identifiable_list()) ni.push_back({{"effect", n.effect}, {"reason", n.reason}});
     j["not_identifiable"] = ni;
     json nt = json::array();
-    if (std::none_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; }))
-        for (const auto& n : not_tried_without_raw_codes()) nt.push_back({{"effect", n.effect}, {"reason", n.reason}});
+    for (const auto& n : r.not_tried) nt.push_back({{"effect", n.effect}, {"reason", n.reason}});
     j["not_tried"] = nt;
     json cal = json::object();
     for (std::size_t c = 0; c < kChannelCount; ++c) {

@@ -105,12 +105,6 @@ void plot_bands(const std::string& title, const std::string& x_label, const std:
 
 }  // namespace
 
-bool was_added(const GapResult& r, const Explanation& e) {
-    return std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
-        return a.step == e.step && a.effect == e.effect && a.channel == e.channel;
-    });
-}
-
 std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     for (const auto& s : r.level_steps)
         if (s.significant)
@@ -200,10 +194,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     md << "\nNot identifiable from a static log:\n\n";
     for (const auto& n : not_identifiable_list()) md << "- " << n.effect << ": " << n.reason << "\n";
-    if (std::none_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; })) {
-        md << "\nNot tried on this log:\n\n";
-        for (const auto& n : not_tried_without_raw_codes()) md << "- " << n.effect << ": " << n.reason << "\n";
-    }
+    if (!r.not_tried.empty()) md << "\nNot tried on this log:\n\n";
+    for (const auto& n : r.not_tried) md << "- " << n.effect << ": " << n.reason << "\n";
     md << "\n## The residual against the simulator's replicates\n\nThe eq. 1 residual of the real log (black) against "
           "the min-max band of " << kBandReplicates << " replicates of the base simulator (red) and of the simulator with "
           "the added effects (blue), each replicate refitted as the log is: its Allan deviation by octave, and its mean "

@@ -15,9 +15,6 @@ namespace driftlab::host::gap {
 /// One sentence on why the verdict is what it is (the rule that decided it).
 std::string verdict_reason(const GapResult& result, const GapOptions& options);
 
-/// True when candidate fit `e` (of result.tried) is one of the effects added to the model, not only one that passed.
-bool was_added(const GapResult& result, const Explanation& e);
-
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing).
 void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options);
