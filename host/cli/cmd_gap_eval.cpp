@@ -26,6 +26,7 @@ struct GapEvalCommandOptions {
     int clean_per_seed = 0;
     bool quick = false;
     bool clean_only = false;
+    bool raw_clean = false;
     bool shipped = false;
     bool json = false;
     std::string plot_dir;
@@ -70,6 +71,7 @@ void run(const GapEvalCommandOptions& o) {
     }
     options.holdout = o.holdout;
     options.clean_per_seed = o.clean_per_seed;
+    options.raw_clean = o.raw_clean;
     if (o.quick) {
         options.samples = 800;
         options.levels = {2.0};
@@ -138,6 +140,9 @@ void register_gap_eval(CLI::App& app) {
                   "false-positive rate on many seeds (no a_50)")
         ->excludes(effects)
         ->excludes(levels);
+    cmd->add_flag("--raw-clean", o->raw_clean,
+                  "Clean logs are raw-mode (a raw_gyro column, so their code-histogram cells are tested too), as the "
+                  "converter generator's logs are");
     cmd->add_flag("--json", o->json,
                   "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size, targets)");
     cmd->add_option("--plot", o->plot_dir,

@@ -147,7 +147,7 @@ std::string scores_markdown(const EvalScores& s) {
         md << " |\n";
     }
     if (s.clean)
-        md << "\nFalse-positive rate on clean logs: " << s.clean_flagged << "/" << s.clean << " = "
+        md << "\nFalse-positive rate on clean" << (o.raw_clean ? " raw-mode" : "") << " logs: " << s.clean_flagged << "/" << s.clean << " = "
            << fixed(100.0 * static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean), 1)
            << " % (95 % Clopper-Pearson " << fixed(100.0 * s.fpr_low, 1) << "-" << fixed(100.0 * s.fpr_high, 1) << " %).\n";
     md << "\n### Confusion (rows: truth generator -> library effect; columns: verdict), all sizes\n\n| truth |";
@@ -208,7 +208,8 @@ nlohmann::json scores_json(const EvalScores& s) {
     j["false_positive"] = {{"clean", s.clean},
                            {"flagged", s.clean_flagged},
                            {"rate", s.clean ? static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean) : 0.0},
-                           {"interval", {s.fpr_low, s.fpr_high}}};
+                           {"interval", {s.fpr_low, s.fpr_high}},
+                           {"raw_mode", s.options.raw_clean}};
     json confusion = json::object();
     for (const auto& [row, count] : s.confusion) confusion[row] = count;
     j["confusion"] = confusion;

@@ -33,7 +33,7 @@ constexpr double kMaxPeakPerSize = 300.0;  // a deterministic truth's peak, at m
 double first_guess(const std::string& generator) {
     static const std::map<std::string, double> guess = {
         {"thermal_rc", 0.2}, {"thermostat", 0.25}, {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
-        {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2}};
+        {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2}, {"sar_mismatch", 0.5}};
     return guess.at(generator);
 }
 
@@ -51,7 +51,21 @@ GapModel randomised_truth(std::uint64_t seed) {
     return m;
 }
 
-LogData make_log(const GapModel& truth, const std::vector<double>& added, std::size_t samples, std::uint64_t seed) {
+const TruthInfo& truth_info(const std::string& generator) {
+    for (const auto& t : truth_list())
+        if (t.generator == generator) return t;
+    throw std::invalid_argument("unknown truth generator: " + generator);
+}
+
+bool raw_mode(const std::string& generator) {
+    return generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter;
+}
+
+// A gyro log of `truth` with `added` at the converter input and, when given, `quantiser` as its converter. A `raw`
+// log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
+// numbers stepping by two (a SAMPLE and a RAW frame per row).
+LogData make_log(const GapModel& truth, const std::vector<double>& added, const Quantiser& quantiser, std::size_t samples,
+                 std::uint64_t seed, bool raw_mode) {
     LogData log;
     log.source_name = "gap-eval";
     log.t_s.resize(samples);
@@ -60,11 +74,15 @@ LogData make_log(const GapModel& truth, const std::vector<double>& added, std::s
     req.t_s = &log.t_s;
     req.channels = {true, false, false, false};
     if (!added.empty()) req.added_counts[0] = added;
+    req.quantiser[0] = quantiser;
+    SimOutput raw;
+    if (raw_mode) req.raw_codes = &raw;
     const SimOutput sim = simulate(truth, req, seed ^ 0xA5A5A5A5ull);
     log.counts[0] = sim[0];
     for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
+    if (raw_mode) log.optional_columns["raw_gyro"] = raw[0];
     log.seq.resize(samples);
-    for (std::size_t k = 0; k < samples; ++k) log.seq[k] = k;
+    for (std::size_t k = 0; k < samples; ++k) log.seq[k] = raw_mode ? 2 * k : k;
     log.metadata.set("sample_period_s", kSamplePeriodS);
     log.metadata.set("conversions_per_output", static_cast<std::int64_t>(kWindow));
     log.metadata.set("window", static_cast<std::int64_t>(kWindow));
@@ -82,13 +100,8 @@ struct Planted {
     LogData log;
     double size_counts = 0.0;  ///< the planted size [counts]
     double scale = 0.0;        ///< make_truth()'s size argument that plants it
+    std::vector<double> occupancy;  ///< a converter truth's: the codes of the log made with the model's converter
 };
-
-const TruthInfo& truth_info(const std::string& generator) {
-    for (const auto& t : truth_list())
-        if (t.generator == generator) return t;
-    throw std::invalid_argument("unknown truth generator: " + generator);
-}
 
 // Root mean square of what the base's eq. 1 fit leaves of `signal` added to the noise-free warm-up of `model`.
 double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const std::vector<double>& signal) {
@@ -101,20 +114,30 @@ double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const
 }
 
 // A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations. A random
-// generator's size is its standard deviation; a deterministic one's is the RMS of the part the base's eq. 1 fit
-// cannot absorb, since only that part can be detected (a slow RC-network rise is 98-99 % absorbed, by a share
-// that varies threefold with its time constants; sizing by the peak made the detection curve non-monotone).
-Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples) {
+// generator's size is its standard deviation, a converter's its rms DNL; a deterministic one's is the RMS of the
+// part the base's eq. 1 fit cannot absorb, since only that part can be detected (a slow RC-network rise is 98-99 %
+// absorbed, by a share that varies threefold with its time constants; sizing by the peak made the detection curve
+// non-monotone).
+Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean) {
     Planted p;
     p.model = randomised_truth(seed);
     std::vector<double> added;
-    if (generator != "none") {
+    Quantiser quantiser;
+    if (raw_mode(generator)) {
+        // Sized by the code widths the log can see: those of the codes it occupies (the same noise path through the
+        // model's converter), as a deterministic shape by the part eq. 1 cannot absorb.
+        p.size_counts = p.scale = size_sd * output_noise_sd(p.model);
+        p.occupancy.assign(std::size_t{1} << p.model.unit.adc.bits, 0.0);
+        for (double code : make_log(p.model, {}, {}, samples, seed, true).optional_columns.at("raw_gyro"))
+            p.occupancy[static_cast<std::size_t>(code)] += 1.0;
+        quantiser = make_converter_truth(generator, p.scale, p.occupancy, seed, seed);
+    } else if (generator != "none") {
         p.size_counts = size_sd * output_noise_sd(p.model);
         std::vector<double> t(samples);
         for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kSamplePeriodS;
         const std::vector<double> unit = make_truth(generator, t, 1.0, seed, seed);
         p.scale = p.size_counts;
-        if (!truth_info(generator).random) {
+        if (truth_info(generator).kind == TruthInfo::Kind::shape) {
             // eq. 1 is nonlinear in T, so the absorbed share depends a little on the size: one correction.
             auto scaled = [&](double g) {
                 std::vector<double> v(unit);
@@ -129,7 +152,7 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
         added = unit;
         for (double& x : added) x *= p.scale;
     }
-    p.log = make_log(p.model, added, samples, seed);
+    p.log = make_log(p.model, added, quantiser, samples, seed, quantiser || (generator == "none" && raw_clean));
     return p;
 }
 
@@ -155,7 +178,8 @@ double size_of(const std::vector<DetectionSize>& sizes, const std::string& gener
 EvalCase run_case(const std::string& generator, const std::string& truth, double level, std::uint64_t seed, bool tuning,
                   const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
     EvalCase c{generator, truth, level, 0.0, seed, tuning, false, {}, 0.0, false};
-    const Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples);
+    const Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples,
+                            options.raw_clean);
     c.size_counts = p.size_counts;
     const LogData& log = p.log;
     GapOptions go = gap_options(seed, options);
@@ -172,10 +196,13 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     b.channels = r.channels;
     b.holdout = options.holdout;
     b.sample_period_s = kSamplePeriodS;
+    b.raw_codes = r.raw_codes;
     std::array<const std::vector<double>*, kChannelCount> y{};
     y[0] = &log.counts[0];
+    RawCodes raw{};
+    if (r.raw_codes[0]) raw[0] = &log.optional_columns.at("raw_gyro");
     std::vector<Cell> layout;
-    const auto real = compute_battery(log.t_s, y, b, &layout).values;
+    const auto real = compute_battery(log.t_s, y, b, &layout, raw).values;
     const auto held = [](const Cell& cell) { return cell.segment == Segment::heldout; };
     const std::uint64_t fresh = go.seed + 1000003;
     auto heldout_gap = [&](const GapModel& m, const ReplicateExtra& extra) {
@@ -185,7 +212,10 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     const double before = heldout_gap(r.base, {});
     auto shrink = [before](double after) { return before > 1.0 ? (before - after) / (before - 1.0) : 0.0; };
     const ReplicateExtra oracle = [&](std::uint64_t rs, SimRequest& req) {
-        req.added_counts[0] = make_truth(generator, log.t_s, p.scale, seed, rs);
+        if (raw_mode(generator))
+            req.quantiser[0] = make_converter_truth(generator, p.scale, p.occupancy, seed, rs);
+        else
+            req.added_counts[0] = make_truth(generator, log.t_s, p.scale, seed, rs);
     };
     c.oracle_shrink = shrink(heldout_gap(p.model, oracle));
     c.has_oracle = true;
@@ -278,7 +308,7 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
                 const std::uint64_t seed = detection_seed(options, place, step, k);
                 GapOptions go = gap_options(seed, options);
                 go.explain = false;
-                hits += !diagnose(plant(gens[g], size, seed, options.samples).log, sim::paper_model(), go).located.empty();
+                hits += !diagnose(plant(gens[g], size, seed, options.samples, false).log, sim::paper_model(), go).located.empty();
             }
             d.curve.push_back({size, hits, options.detection_logs});
             return static_cast<double>(hits) / options.detection_logs;
@@ -321,15 +351,21 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
         bool tune;
     };
     std::vector<Job> jobs;
-    for (int set = 0; set < 2; ++set) {
-        const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
-        const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
-        for (std::uint64_t s = first; s <= last; ++s) {
-            // By default as many clean logs per seed as planted ones per generator: the false-positive rate needs them.
-            const std::size_t clean = options.clean_per_seed > 0 ? static_cast<std::size_t>(options.clean_per_seed) : options.levels.size();
-            for (std::size_t k = 0; k < clean; ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
-            for (const auto& g : gens)
-                for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
+    // Raw-mode generators' logs come after all the others, so that the others' places (their seeds), and so their
+    // logs, are the same whether or not a raw-mode generator is in the run.
+    for (const bool raw : {false, true}) {
+        for (int set = 0; set < 2; ++set) {
+            const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
+            const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
+            for (std::uint64_t s = first; s <= last; ++s) {
+                // By default as many clean logs per seed as planted ones per generator: the false-positive rate needs them.
+                const std::size_t clean = options.clean_per_seed > 0 ? static_cast<std::size_t>(options.clean_per_seed) : options.levels.size();
+                if (!raw)
+                    for (std::size_t k = 0; k < clean; ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
+                for (const auto& g : gens)
+                    if (raw_mode(g) == raw)
+                        for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
+            }
         }
     }
     // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in

@@ -57,6 +57,7 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
         const double sigma = model.base[i].sigma_n_counts;
         sim::Rng noise(seed, sim::kNoiseStreamBase + i);
         const std::vector<double>& added = request.added_counts[i];
+        const Quantiser& quantiser = request.quantiser[i];
         fw::LsWindow window;
         window.reset(static_cast<std::uint8_t>(sm.window));
         double last_instant_s = -1e300;
@@ -89,8 +90,13 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
                 for (auto& e : analog) e->apply(values, ctx);
                 values[i] = adc.counts_from_volts(values[i]) + (drift.at_counts(ctx.t_s) - mid_counts) +
                             sigma * noise.normal() + (added.empty() ? 0.0 : added[k]);
-                for (auto& e : converter) e->apply(values, ctx);
-                const auto code = adc.convert_counts(values[i]);
+                std::uint16_t code = 0;
+                if (quantiser) {
+                    code = static_cast<std::uint16_t>(quantiser(values[i]));
+                } else {
+                    for (auto& e : converter) e->apply(values, ctx);
+                    code = adc.convert_counts(values[i]);
+                }
                 window.push(code);
                 newest = code;
             }

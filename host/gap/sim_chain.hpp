@@ -7,11 +7,16 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "host/gap/gap_model.hpp"
 
 namespace driftlab::host::gap {
+
+/// A converter that replaces the model's converter effects and 10-bit quantiser (gap-eval's converter truth): the
+/// code of a converter input [counts].
+using Quantiser = std::function<int(double input_counts)>;
 
 /// What to simulate: the output instants and, for the withheld-effect benchmark, signals added at the converter
 /// input (a truth generator's output, held over each output period).
@@ -19,6 +24,7 @@ struct SimRequest {
     const std::vector<double>* t_s = nullptr;                    ///< output instants [s since power-on]
     std::array<bool, kChannelCount> channels{true, true, true, true};  ///< channels to simulate
     std::array<std::vector<double>, kChannelCount> added_counts;  ///< per output sample [counts]; empty = none
+    std::array<Quantiser, kChannelCount> quantiser;  ///< per channel; empty = the model's converter
     /// Optional: receives per requested channel the newest conversion's code at each output instant, the raw
     /// column of a raw-mode log [counts].
     std::array<std::vector<double>, kChannelCount>* raw_codes = nullptr;

@@ -8,22 +8,34 @@
 //   burst_spikes    -> spikes (fits single-conversion Gaussian spikes): bursts of 1-3 whole output periods,
 //                      Laplace amplitudes
 //   mode_hop        -> out of the library: a bias step and a later partial return (mode hop)
-// `size_counts` sets the scale: the peak (deterministic) or standard deviation (random) of the signal, or the
-// step (mode hop), in counts; every generator is linear in it. gap-eval sizes a deterministic generator by the
-// part of it the base's eq. 1 fit cannot absorb (evaluate.cpp). docs/gap.md §Evaluation.
+//   sar_mismatch    -> adc_dnl (fits one transition per code, a deterministic table): a successive-approximation
+//                      converter whose binary-weighted DAC has unit-capacitor mismatch, with a noisy comparator;
+//                      it replaces the quantiser and its logs are raw-mode
+// `size_counts` sets the scale: the peak (deterministic) or standard deviation (random) of the signal, the step
+// (mode hop), or the rms code-width error over the codes a log occupies (converter) [counts = LSB]; every signal
+// generator is linear in it.
+// gap-eval sizes a deterministic generator by the part of it the base's eq. 1 fit cannot absorb (evaluate.cpp).
+// docs/gap.md §Evaluation.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "host/gap/sim_chain.hpp"
+
 namespace driftlab::host::gap {
 
 /// A truth generator: the generator name, the library effect it stands for ("" = out of library).
 struct TruthInfo {
+    enum class Kind {
+        shape,      ///< a deterministic signal added at the converter input (sized by what eq. 1 cannot absorb)
+        process,    ///< a random signal added there (sized by its standard deviation)
+        converter,  ///< a quantiser replacing the converter (sized by its rms DNL); its logs are raw-mode
+    };
     std::string generator;
     std::string effect;
-    bool random = false;  ///< a random process (sized by its standard deviation), else a deterministic shape
+    Kind kind = Kind::shape;
 };
 
 /// Every generator, in the order gap-eval lists them.
@@ -35,6 +47,12 @@ const std::vector<TruthInfo>& truth_list();
 std::vector<double> make_truth(const std::string& generator, const std::vector<double>& t_s, double size_counts,
                                std::uint64_t seed, std::uint64_t noise_seed);
 
+/// The quantiser of a converter generator (Kind::converter): `size_counts` is its rms DNL [LSB] over the codes as
+/// `occupancy` weights them (index = code; empty: the inner codes 1..1022 alike); `seed` draws the device (its
+/// mismatch), `noise_seed` the comparator's noise. Throws std::invalid_argument on a bad name.
+Quantiser make_converter_truth(const std::string& generator, double size_counts, const std::vector<double>& occupancy,
+                               std::uint64_t seed, std::uint64_t noise_seed);
+
 /// The per-sample signal generators, one file each (truth_*.cpp).
 std::vector<double> truth_thermal_rc(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
 std::vector<double> truth_thermostat(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
@@ -44,5 +62,7 @@ std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double si
 std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_mode_hop(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
+                             std::uint64_t noise_seed);
 
 }  // namespace driftlab::host::gap

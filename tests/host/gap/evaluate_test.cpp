@@ -117,6 +117,49 @@ TEST(GapEval, AGeneratorsDetectionThresholdDoesNotDependOnTheOthersInTheRun) {
     for (std::size_t k = 0; k < alone[0].curve.size(); ++k) EXPECT_EQ(alone[0].curve[k].detected, both[1].curve[k].detected);
 }
 
+// The converter truth: a SAR converter with mismatched bits, planted at 4 x a_50 (0.51 output-noise deviations of
+// rms DNL over the codes the log occupies, as detection_sizes() measured it on 1500-sample logs). Its logs are
+// raw-mode, so the diagnosis can fit adc_dnl to their code histogram; a log without raw codes could not (not_tried).
+TEST(GapEval, AConvertersMismatchIsFoundInTheRawCodesAndAttributedToDnl) {
+    EvalOptions o = quick_options();
+    o.tune = false;
+    o.generators = {"sar_mismatch"};
+    o.samples = 1500;
+    const auto cases = run_cases(o, {{"sar_mismatch", 0.51, {}}});
+    int planted = 0, right = 0;
+    for (const auto& c : cases) {
+        if (c.generator == "none") continue;
+        ++planted;
+        right += decide(c, Thresholds{}).verdict == "adc_dnl";
+    }
+    EXPECT_EQ(planted, 3);
+    EXPECT_GE(right, 2);
+}
+
+// Raw-mode generators' logs are placed after all others, so adding one to a run changes no other log.
+TEST(GapEval, ARawModeGeneratorInTheRunChangesNoOtherLog) {
+    EvalOptions o = quick_options();
+    o.tune = false;
+    o.score_last = o.score_first;
+    o.samples = 800;
+    o.generators = {"mode_hop"};
+    const std::vector<DetectionSize> sizes{{"mode_hop", 0.4, {}}, {"sar_mismatch", 1.0, {}}};
+    const auto alone = run_cases(o, sizes);
+    o.generators = {"sar_mismatch", "mode_hop"};
+    const auto both = run_cases(o, sizes);
+    ASSERT_EQ(alone.size(), 2u);
+    ASSERT_EQ(both.size(), 3u);
+    for (std::size_t k = 0; k < alone.size(); ++k) {
+        EXPECT_EQ(both[k].generator, alone[k].generator);
+        EXPECT_EQ(both[k].seed, alone[k].seed);
+        EXPECT_EQ(both[k].detected, alone[k].detected);
+        ASSERT_EQ(both[k].tried.size(), alone[k].tried.size());
+        for (std::size_t e = 0; e < alone[k].tried.size(); ++e)
+            EXPECT_EQ(both[k].tried[e].heldout_after, alone[k].tried[e].heldout_after);
+    }
+    EXPECT_EQ(both.back().generator, "sar_mismatch");
+}
+
 // The logistic fit recovers a_50 from the expected counts of a known curve, and refuses a falling one.
 TEST(GapEval, LogisticFitRecoversTheMidpointOfAKnownCurve) {
     const double a50 = 0.7, slope = 3.0;  // P = 1 / (1 + (a50 / s)^slope)
