@@ -113,5 +113,26 @@ TEST(GapEvalCli, AnUnusablePlotFolderIsRefusedBeforeTheRun) {
     EXPECT_EQ(r.output.find("| generator"), std::string::npos) << "no benchmark output before the refusal";
 }
 
+// --raw-clean makes the clean logs raw-mode: the scores say so, and the false-positive line names them.
+TEST(GapEvalCli, RawCleanLogsAreReportedAsRawMode) {
+    TempDir dir("gapevalraw");
+    const std::vector<std::string> base{"gap-eval", "--clean-only", "--quick", "--seeds-score", "11..12", "--clean-per-seed", "2"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = base;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return run_driftlab(args, dir.path());
+    };
+    const RunResult raw = with({"--raw-clean", "--json"});
+    ASSERT_EQ(raw.exit_code, 0) << raw.output;
+    const auto j = nlohmann::json::parse(raw.output.substr(raw.output.find('{')));
+    EXPECT_EQ(j["false_positive"]["clean"], 4);
+    EXPECT_TRUE(j["false_positive"]["raw_mode"].get<bool>());
+    const RunResult plain = with({"--json"});
+    ASSERT_EQ(plain.exit_code, 0) << plain.output;
+    EXPECT_FALSE(nlohmann::json::parse(plain.output.substr(plain.output.find('{')))["false_positive"]["raw_mode"].get<bool>());
+    const RunResult md = with({"--raw-clean"});
+    EXPECT_NE(md.output.find("False-positive rate on clean raw-mode logs: "), std::string::npos) << md.output;
+}
+
 }  // namespace
 }  // namespace driftlab::e2e
