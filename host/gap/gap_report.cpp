@@ -51,24 +51,44 @@ std::vector<double> binned_mean(const std::vector<double>& v, const std::vector<
     return out;
 }
 
+// The share of rows on each code from `lowest` to `highest` (codes outside count in neither).
+std::vector<double> code_shares(const std::vector<double>& codes, int lowest, int highest) {
+    std::vector<double> out(static_cast<std::size_t>(highest - lowest + 1), 0.0);
+    for (double v : codes) {
+        const long code = std::lround(v);
+        if (code >= lowest && code <= highest) out[static_cast<std::size_t>(code - lowest)] += 1.0 / static_cast<double>(codes.size());
+    }
+    return out;
+}
+
+// The codes a raw-mode log's channel holds, lowest to highest; empty for a channel without raw codes.
+struct CodeRange {
+    const std::vector<double>* real = nullptr;
+    int lowest = 0, highest = -1;
+};
+
 // What the real log's eq. 1 residual should fall in under `model`: pointwise min/max over a few replicates, each
-// refitted as the log is, of the residual's octave ADEV and of its mean per time bin.
+// refitted as the log is, of the residual's octave ADEV and of its mean per time bin; and, for a raw-mode channel,
+// of the share of rows on each code (where a code of the wrong width shows).
 struct ReplicateBands {
-    Band adev, mean;
+    Band adev, mean, codes;
 };
 
 ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::size_t c, std::size_t max_m,
-                               const std::vector<std::size_t>& edges, std::uint64_t seed) {
+                               const std::vector<std::size_t>& edges, const CodeRange& range, std::uint64_t seed) {
     ReplicateBands bands;
     for (int r = 0; r < kBandReplicates; ++r) {
         SimRequest req;
         req.t_s = &log.t_s;
         req.channels = {};
         req.channels[c] = true;
+        SimOutput raw;
+        if (range.real) req.raw_codes = &raw;
         const SimOutput sim = simulate(model, req, replicate_seed(seed, r));
         const auto residual = fit::fit_drift(log.t_s, sim[c], start_at_model(model, static_cast<Channel>(c))).residual;
         bands.adev.widen(octave_oadev(residual, max_m));
         bands.mean.widen(binned_mean(residual, edges));
+        if (range.real) bands.codes.widen(code_shares(raw[c], range.lowest, range.highest));
     }
     return bands;
 }
@@ -199,7 +219,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md << "\n## The residual against the simulator's replicates\n\nThe eq. 1 residual of the real log (black) against "
           "the min-max band of " << kBandReplicates << " replicates of the base simulator (red) and of the simulator with "
           "the added effects (blue), each replicate refitted as the log is: its Allan deviation by octave, and its mean "
-          "over time (where a mean shape or a step shows).\n\n";
+          "over time (where a mean shape or a step shows); for a raw-mode log also the share of rows on each raw code "
+          "(where a code of the wrong width shows).\n\n";
     const bool plots = report::gnuplot_available();
     if (!plots) md << "(gnuplot not found: plots skipped)\n";
     const std::vector<std::size_t> edges = time_bins(log.size());
@@ -210,8 +231,15 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         const std::size_t max_m = std::max<std::size_t>(1, log.size() / 8);
         const auto residual = fit::fit_drift(log.t_s, log.counts[c]).residual;
         const auto real = octave_oadev(residual, max_m);
-        const ReplicateBands base = replicate_bands(r.base, log, c, max_m, edges, options.seed);
-        const ReplicateBands after = replicate_bands(r.final_model, log, c, max_m, edges, options.seed);
+        CodeRange range;
+        if (r.raw_codes[c]) {
+            range.real = &log.optional_columns.at(std::string("raw_") + kChannelNames[c]);
+            const auto [lo, hi] = std::minmax_element(range.real->begin(), range.real->end());
+            range.lowest = static_cast<int>(std::lround(*lo));
+            range.highest = static_cast<int>(std::lround(*hi));
+        }
+        const ReplicateBands base = replicate_bands(r.base, log, c, max_m, edges, range, options.seed);
+        const ReplicateBands after = replicate_bands(r.final_model, log, c, max_m, edges, range, options.seed);
         const ReplicateBands* added = r.accepted.empty() ? nullptr : &after;
         std::vector<double> tau(real.size());
         for (std::size_t j = 0; j < tau.size(); ++j) tau[j] = r.base.smoothing.sample_period_s * std::ldexp(1.0, static_cast<int>(j));
@@ -222,6 +250,14 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
                    binned_mean(residual, edges), base.mean, added ? &added->mean : nullptr, dir, "gap_mean_" + channel);
         md << "![gap_adev_" << channel << "](gap_adev_" << channel << ".png)\n\n![gap_mean_" << channel << "](gap_mean_"
            << channel << ".png)\n\n";
+        if (range.real) {
+            std::vector<double> code(static_cast<std::size_t>(range.highest - range.lowest + 1));
+            for (std::size_t j = 0; j < code.size(); ++j) code[j] = range.lowest + static_cast<double>(j);
+            plot_bands("Raw codes, " + channel, "code", "share of rows on the code", false, code,
+                       code_shares(*range.real, range.lowest, range.highest), base.codes, added ? &added->codes : nullptr, dir,
+                       "gap_codes_" + channel);
+            md << "![gap_codes_" << channel << "](gap_codes_" << channel << ".png)\n\n";
+        }
     }
     std::ofstream out(dir + "/gap.md");
     out << md.str();

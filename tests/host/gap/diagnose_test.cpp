@@ -241,6 +241,26 @@ TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLineari
     EXPECT_GT(sft / std::sqrt(sff * stt), 0.8);
     const auto j = gap_to_json(r, full);
     EXPECT_TRUE(j["not_tried"].empty()) << "adc_dnl was tried on this raw-mode log";
+    // The report draws the raw codes' shares against the replicate bands: the base's ideal converter misses codes
+    // the table gets right (the plot is drawn where gnuplot is, which the setup script installs).
+    if (report::gnuplot_available()) {
+        const auto dir = std::filesystem::temp_directory_path() / "driftlab_gap_report_dnl_test";
+        std::filesystem::remove_all(dir);
+        write_gap_report(r, raw_mode_log(dnl, 22), dir.string(), full);
+        ASSERT_TRUE(std::filesystem::exists(dir / "gap_codes_gyro.png"));
+        const auto base = testing::plot_block(dir / "gap_codes_gyro.dat", 0), after = testing::plot_block(dir / "gap_codes_gyro.dat", 1),
+                   real = testing::plot_block(dir / "gap_codes_gyro.dat", 2);
+        ASSERT_EQ(real.size(), base.size());
+        ASSERT_EQ(real.size(), after.size());
+        int in_base = 0, in_after = 0;
+        for (std::size_t k = 0; k < real.size(); ++k) {
+            in_base += real[k][1] >= base[k][2] && real[k][1] <= base[k][3];
+            in_after += real[k][1] >= after[k][2] && real[k][1] <= after[k][3];
+        }
+        // On this log: 3 of the 10 codes within the base's band, 9 within the table's.
+        EXPECT_LE(in_base * 2, static_cast<int>(real.size()));
+        EXPECT_GE(in_after * 10, static_cast<int>(real.size()) * 8);
+    }
     // Values that are not integral codes are not a raw column: no code cells.
     LogData smoothed = raw_mode_log(ideal, 21);
     smoothed.optional_columns["raw_gyro"] = smoothed.counts[0];
