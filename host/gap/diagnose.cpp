@@ -180,7 +180,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         // as partial explanations.
         tell("testing for level steps");
         result.level_steps = check_level_steps(result, log, options);
-        if (std::any_of(result.level_steps.begin(), result.level_steps.end(), [](const LevelStep& s) { return s.significant; }))
+        if (std::any_of(result.level_steps.begin(), result.level_steps.end(), [](const LevelStep& s) { return s.significant; }) ||
+            std::any_of(result.accepted.begin(), result.accepted.end(), [](const Explanation& e) { return e.shape_steps.steps_win; }))
             result.verdict = "unexplained";
     }
     return result;

@@ -13,6 +13,7 @@
 #include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
+#include "host/gap/whittle.hpp"
 
 namespace driftlab::host::gap {
 
@@ -279,6 +280,20 @@ void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& ju
     const SpectralFit fit = fit_noise(m, judge, p, earlier, shape ? "" : ex.effect, nullptr);
     spectral_nll(fit, judge.channel, m, p, &ex.spectral_terms);
     ex.spectral_gain = 2.0 * (base_nll - fit.nll);
+    // A shape on a channel whose noise is the white floor alone (no Gaussian process accepted on it) must also
+    // describe the log better than a hop and a return would (steps_over_shape()).
+    if (shape && earlier.empty()) {
+        const std::vector<double> with_shape = model_mean_counts(m, judge.channel, judge.t_s);
+        const std::vector<double> without = model_mean_counts(current, judge.channel, judge.t_s);
+        std::vector<double> shape_residual(judge.y.size()), base_residual(judge.y.size());
+        for (std::size_t k = 0; k < judge.y.size(); ++k)
+            shape_residual[k] = judge.y[k] - with_shape[k], base_residual[k] = judge.y[k] - without[k];
+        const std::vector<double> floor = white_floor_autocovariance(current.smoothing);
+        double long_run = floor[0];
+        for (std::size_t m_lag = 1; m_lag < floor.size(); ++m_lag) long_run += 2.0 * floor[m_lag];
+        ex.shape_steps = steps_over_shape(judge.t_s, base_residual, shape_residual, static_cast<int>(ex.params.size()),
+                                          long_run / floor[0]);
+    }
     ex.spectral_extra_parameters = fit.free_parameters + (shape ? static_cast<int>(ex.params.size()) : 0) - base_parameters;
     ex.spectral_observations = p.count;
 }
@@ -306,7 +321,7 @@ bool passes(const Explanation& e, double penalty_per_param, double min_heldout_s
 }
 
 bool closes_gap(const Explanation& e, double step_alpha) {
-    return !leaves_step(e.residual_step, step_alpha);
+    return !leaves_step(e.residual_step, step_alpha) && !e.shape_steps.steps_win;
 }
 
 double delta_ic(const Explanation& e, InformationCriterion ic) {

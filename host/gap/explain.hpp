@@ -65,6 +65,7 @@ struct Explanation {
     bool long_memory = false;       ///< a Gauss-Markov fit whose correlation time exceeds 1/20 of the log
     std::size_t cells_left = 0;     ///< this channel's cells still located with the candidate in the model
     LevelStep residual_step;        ///< level-step test with the candidate (Gaussian processes; step_test_candidates)
+    StepsOverShape shape_steps;     ///< a mean shape against two level steps (accepted shapes on a white floor)
     bool accepted = false;
     int step = 0;                   ///< stepwise round in which it was tried (1-based)
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""

@@ -26,9 +26,21 @@ json located_json(const std::vector<LocatedCell>& cells, const std::vector<Cell>
     return out;
 }
 
+json steps_json(const std::array<StepEstimate, 2>& steps) {
+    json out = json::array();
+    for (const auto& s : steps) out.push_back({{"t_s", report::json_number(s.t_s)}, {"size_counts", report::json_number(s.size_counts)}});
+    return out;
+}
+
 json explanation_json(const Explanation& e, InformationCriterion ic) {
     json params = json::object();
     for (const auto& [k, v] : e.params) params[k] = report::json_number(v);
+    const StepsOverShape& s = e.shape_steps;
+    const json shape_steps = s.tested ? json{{"statistic", report::json_number(s.statistic)},
+                                             {"margin", report::json_number(s.margin)},
+                                             {"steps", steps_json(s.steps)},
+                                             {"steps_win", s.steps_win}}
+                                      : json(nullptr);
     return {{"effect", e.effect},
             {"channel", e.channel},
             {"params", params},
@@ -42,6 +54,7 @@ json explanation_json(const Explanation& e, InformationCriterion ic) {
             {"delta_ic", has_delta_ic(e) ? report::json_number(delta_ic(e, ic)) : json(nullptr)},
             {"cells_left", e.cells_left},
             {"level_step_p", e.residual_step.tested ? report::json_number(e.residual_step.p_value) : json(nullptr)},
+            {"steps_over_shape", shape_steps},
             {"accepted", e.accepted},
             {"step", e.step},
             {"ambiguous_with", e.ambiguous_with.empty() ? json(nullptr) : json(e.ambiguous_with)},
@@ -70,11 +83,8 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["diffuse_gap"] = r.diffuse_gap;
     json steps = json::array();
     for (const auto& s : r.level_steps) {
-        json found = json::array();
-        for (const auto& step : s.steps)
-            found.push_back({{"t_s", report::json_number(step.t_s)}, {"size_counts", report::json_number(step.size_counts)}});
         steps.push_back({{"channel", kChannelNames[channel_index(s.channel)]},
-                         {"steps", found},
+                         {"steps", steps_json(s.steps)},
                          {"impulse", report::json_number(s.impulse)},
                          {"impulse_p", report::json_number(s.impulse_p)},
                          {"statistic", report::json_number(s.statistic)},

@@ -131,6 +131,13 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
             return std::string("a level step on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed(s.steps[0].size_counts) +
                    " counts at t = " + fixed(s.steps[0].t_s, 1) + " s; p = " + fixed(s.p_value, 3) +
                    ") that no library effect makes; the added effects stay as partial explanations";
+    for (const auto& e : r.accepted)
+        if (e.shape_steps.steps_win)
+            return "a hop and a return on " + e.channel + " (" + fixed(e.shape_steps.steps[0].size_counts) + " counts at t = " +
+                   fixed(e.shape_steps.steps[0].t_s, 1) + " s, " + fixed(e.shape_steps.steps[1].size_counts) + " at " +
+                   fixed(e.shape_steps.steps[1].t_s, 1) + " s) describe its mean better than " + e.effect +
+                   " (likelihood " + fixed(e.shape_steps.statistic, 1) + " over the price " + fixed(e.shape_steps.margin, 1) +
+                   "): a level step no library effect makes; the added effects stay as partial explanations";
     const std::string located = std::to_string(r.located.size()) + " cells located";
     if (!r.accepted.empty()) {
         const Explanation& e = r.accepted.front();
@@ -200,6 +207,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
            << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
            << (was_added(r, e) ? "**added**" : e.accepted ? "passed, not chosen" : "rejected")
            << (e.residual_step.significant ? ", leaves a level step" : "")
+           << (e.shape_steps.steps_win ? ", two level steps fit better" : "")
            << (e.ambiguous_with.empty() ? "" : ", ambiguous with " + e.ambiguous_with) << " |\n";
     }
     for (const auto& s : r.level_steps) {

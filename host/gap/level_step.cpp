@@ -155,4 +155,75 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     return out;
 }
 
+namespace {
+
+// Least-squares change points in mean: the residual sum of squares of `x` as constant pieces between `cuts`
+// (indices where a piece begins), from prefix sums.
+struct Pieces {
+    std::vector<double> sum, sum2;  // prefix sums, size n + 1
+
+    explicit Pieces(const std::vector<double>& x) : sum(x.size() + 1, 0.0), sum2(x.size() + 1, 0.0) {
+        for (std::size_t k = 0; k < x.size(); ++k) sum[k + 1] = sum[k] + x[k], sum2[k + 1] = sum2[k] + x[k] * x[k];
+    }
+    double cost(std::size_t a, std::size_t b) const {  // [a, b)
+        const double s = sum[b] - sum[a];
+        return sum2[b] - sum2[a] - s * s / static_cast<double>(b - a);
+    }
+    double mean(std::size_t a, std::size_t b) const { return (sum[b] - sum[a]) / static_cast<double>(b - a); }
+    double rss(std::size_t c1, std::size_t c2) const {
+        const std::size_t n = sum.size() - 1;
+        return cost(0, c1) + cost(c1, c2) + cost(c2, n);
+    }
+};
+
+}  // namespace
+
+StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vector<double>& base_residual,
+                                const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor) {
+    StepsOverShape out;
+    const std::size_t n = base_residual.size();
+    const auto edge = std::max<std::size_t>(2, static_cast<std::size_t>(kEdgeFraction * static_cast<double>(n)));
+    if (n < 4 * edge + 4 || shape_residual.size() != n) return out;
+    const Pieces pieces(base_residual);
+    // Alternating scans (exact for either cut given the other; O(n) each): from the best single cut, the best second
+    // cut, then each again given the other until neither moves.
+    std::size_t c1 = edge, best = edge;
+    double best_cost = 1e300;
+    for (std::size_t c = edge; c + edge < n; ++c) {
+        const double v = pieces.cost(0, c) + pieces.cost(c, n);
+        if (v < best_cost) best_cost = v, best = c;
+    }
+    c1 = best;
+    std::size_t c2 = 0;
+    auto best_other = [&](std::size_t fixed) {
+        std::size_t arg = 0;
+        double v_best = 1e300;
+        for (std::size_t c = edge; c + edge < n; ++c) {
+            if (c + 1 >= fixed && c <= fixed + 1) continue;  // pieces of at least two outputs
+            const double v = pieces.rss(std::min(c, fixed), std::max(c, fixed));
+            if (v < v_best) v_best = v, arg = c;
+        }
+        return arg;
+    };
+    c2 = best_other(c1);
+    for (int round = 0; round < 8; ++round) {
+        const std::size_t new1 = best_other(c2);
+        const std::size_t new2 = best_other(new1);
+        if (new1 == c1 && new2 == c2) break;
+        c1 = new1, c2 = new2;
+    }
+    if (c1 > c2) std::swap(c1, c2);
+    double shape_rss = 0.0;
+    for (double r : shape_residual) shape_rss += r * r;
+    const double steps_rss = pieces.rss(c1, c2);
+    const double outputs = static_cast<double>(n) / std::max(1.0, long_run_factor);
+    out.tested = true;
+    out.steps[0] = {t_s[c1], pieces.mean(c1, c2) - pieces.mean(0, c1)};
+    out.steps[1] = {t_s[c2], pieces.mean(c2, n) - pieces.mean(c1, c2)};
+    out.statistic = 0.5 * outputs * std::log(shape_rss / std::max(steps_rss, 1e-300));
+    out.margin = 0.5 * (4 - shape_parameters) * std::log(outputs);
+    out.steps_win = out.statistic > out.margin;
+    return out;
+}
+
 }  // namespace driftlab::host::gap

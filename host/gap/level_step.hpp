@@ -65,4 +65,22 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
                           const std::vector<std::string>& spectral_effects, const std::vector<double>& spectral_params,
                           int replicates, std::uint64_t seed, int threads, double alpha);
 
+/// A mean shape against its rival, two level steps (a hop and a return). A mode hop drawn by a second time constant
+/// or a sine closes the battery's gap, as a random walk does around one; but two steps describe it better than the
+/// shape, while a thermostat's cycles or an RC network's rise are no steps. Both are fitted to the whole log over the
+/// current model (eq. 1 and the shapes accepted before): the shape jointly with eq. 1 (`shape_residual`), the steps
+/// by least squares on the current model's residual (`base_residual`; the best two change points in mean). Their
+/// Gaussian likelihoods of a white floor are compared, each output counting 1 / `long_run_factor` (the smoother's
+/// overlapping windows make neighbouring outputs share noise), and the steps must win by the Schwarz price of their
+/// parameters beyond the shape's (two instants and two sizes against `shape_parameters`; ln n / 2 each).
+struct StepsOverShape {
+    bool tested = false;
+    std::array<StepEstimate, 2> steps{};  ///< the two steps, in time order
+    double statistic = 0.0;  ///< the shape's negative log-likelihood minus the steps' [nll units]
+    double margin = 0.0;     ///< the Schwarz price of the steps' extra parameters
+    bool steps_win = false;  ///< statistic > margin: a level step no library effect makes
+};
+StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vector<double>& base_residual,
+                                const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor);
+
 }  // namespace driftlab::host::gap

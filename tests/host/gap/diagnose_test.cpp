@@ -110,6 +110,9 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     ASSERT_FALSE(r.accepted.empty());
     EXPECT_GT(r.accepted[0].heldout_shrink, 0.5);
     EXPECT_LT(r.gap_after_heldout, r.gap_before_heldout);
+    // A rise is no pair of steps: the shape describes the log better than a hop and a return would.
+    ASSERT_TRUE(r.accepted[0].shape_steps.tested);
+    EXPECT_FALSE(r.accepted[0].shape_steps.steps_win);
 
     const auto j = gap_to_json(r, small_options());
     for (const char* key : {"verdict", "explanations", "located", "gap_before", "gap_after", "not_identifiable"})
@@ -166,6 +169,34 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     EXPECT_EQ(bins, 50);  // 1500 outputs, about 30 per bin
     EXPECT_LT(in_base, bins / 2) << in_base << " of " << bins;
     EXPECT_GT(in_after, bins * 3 / 4) << in_after << " of " << bins;
+}
+
+// A mode hop (0.35 counts up at 700 s, 60 % of it back at 1200 s) that a sine closes the battery's gap around: two
+// level steps describe the log better than the sine by more than their price, so the verdict is unexplained (a
+// level step no library effect makes), the sine staying as a partial explanation, and the steps are reported.
+TEST(Diagnose, AHopDrawnAsAShapeIsALevelStepNoLibraryEffectMakes) {
+    const GapModel m = testing::paper_gyro_model(8);
+    std::vector<double> added(1500, 0.0);
+    for (std::size_t k = 0; k < added.size(); ++k) added[k] = (k >= 700 ? 0.35 : 0.0) - (k >= 1200 ? 0.21 : 0.0);
+    const LogData log = testing::gyro_log(m, 1500, added, 3);
+    const GapOptions o = small_options();
+    const GapResult r = diagnose(log, sim::paper_model(), o);
+    ASSERT_EQ(r.accepted.size(), 1u);
+    EXPECT_EQ(r.accepted[0].effect, "ambient_cycle");
+    EXPECT_EQ(r.verdict, "unexplained");
+    const StepsOverShape& s = r.accepted[0].shape_steps;
+    ASSERT_TRUE(s.steps_win);
+    EXPECT_GT(s.statistic, s.margin);
+    EXPECT_NEAR(s.steps[0].t_s, 701.0, 40.0);
+    EXPECT_NEAR(s.steps[1].t_s, 1201.0, 40.0);
+    // Sized on the base's residual, whose eq. 1 fit has bent toward the hop: smaller than planted, same signs.
+    EXPECT_GT(s.steps[0].size_counts, 0.15);
+    EXPECT_LT(s.steps[0].size_counts, 0.45);
+    EXPECT_LT(s.steps[1].size_counts, -0.05);
+    EXPECT_GT(s.steps[1].size_counts, -0.35);
+    const auto j = gap_to_json(r, o);
+    EXPECT_TRUE(j["explanations"][0]["steps_over_shape"]["steps_win"].get<bool>());
+    EXPECT_EQ(verdict_reason(r, o).rfind("a hop and a return on gyro", 0), 0u) << verdict_reason(r, o);
 }
 
 // A raw-mode log's raw codes get the code-histogram cells. A converter whose code widths differ by 0.3 LSB rms

@@ -92,5 +92,59 @@ TEST(LevelStep, WithoutTheRivalTheCombinedPIsTheImpulses) {
     EXPECT_DOUBLE_EQ(p.combined, p.impulse);
 }
 
+// A mean shape against two level steps (steps_over_shape()). The change points are the least-squares optimum: on a
+// hop and a return in white noise they match a brute-force search over every pair of cuts, and lie where planted.
+TEST(StepsOverShape, TheTwoStepsAreTheLeastSquaresOptimumAndLieWherePlanted) {
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> noise(0.0, 0.4);
+    const std::size_t n = 400;
+    std::vector<double> t(n), x(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        t[k] = static_cast<double>(k + 1);
+        x[k] = noise(rng) + (k >= 150 ? 1.0 : 0.0) - (k >= 290 ? 0.7 : 0.0);
+    }
+    const StepsOverShape s = steps_over_shape(t, x, x, 2, 1.0);
+    ASSERT_TRUE(s.tested);
+    EXPECT_NEAR(s.steps[0].t_s, t[150], 3.0);
+    EXPECT_NEAR(s.steps[1].t_s, t[290], 3.0);
+    EXPECT_NEAR(s.steps[0].size_counts, 1.0, 0.15);
+    EXPECT_NEAR(s.steps[1].size_counts, -0.7, 0.15);
+    // Brute force over every pair of cuts (pieces of at least two outputs, 2 % clear of the ends).
+    auto rss = [&](std::size_t a, std::size_t b) {
+        double sum = 0, sum2 = 0;
+        for (std::size_t k = a; k < b; ++k) sum += x[k], sum2 += x[k] * x[k];
+        return sum2 - sum * sum / static_cast<double>(b - a);
+    };
+    double best = 1e300;
+    for (std::size_t c1 = 8; c1 + 8 < n; ++c1)
+        for (std::size_t c2 = c1 + 2; c2 + 8 < n; ++c2) best = std::min(best, rss(0, c1) + rss(c1, c2) + rss(c2, n));
+    double total = 0.0;
+    for (double v : x) total += v * v;
+    // The statistic against a "shape" that explains nothing is the Gaussian likelihood ratio of the optimum.
+    EXPECT_NEAR(s.statistic, 0.5 * static_cast<double>(n) * std::log(total / best), 1e-9);
+    EXPECT_NEAR(s.margin, 0.5 * 2.0 * std::log(static_cast<double>(n)), 1e-12);
+    EXPECT_TRUE(s.steps_win);
+}
+
+// A shape that describes the log (its residual is the noise alone) keeps it: the steps would have to fit the noise
+// better by more than their price. Overlapping windows (a long-run factor of 3) count each output a third.
+TEST(StepsOverShape, AShapeThatFitsIsKeptAndSharedNoiseCountsLess) {
+    std::mt19937_64 rng(6);
+    std::normal_distribution<double> noise(0.0, 0.4);
+    const std::size_t n = 1500;
+    std::vector<double> t(n), shaped(n), residual(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        t[k] = static_cast<double>(k + 1);
+        residual[k] = noise(rng);
+        shaped[k] = residual[k] + 0.8 * std::sin(2.0 * M_PI * t[k] / 300.0);  // five cycles: no pair of steps
+    }
+    const StepsOverShape kept = steps_over_shape(t, shaped, residual, 3, 1.0);
+    EXPECT_FALSE(kept.steps_win) << kept.statistic << " vs " << kept.margin;
+    EXPECT_LT(kept.statistic, 0.0);
+    const StepsOverShape shared = steps_over_shape(t, shaped, residual, 3, 3.0);
+    EXPECT_NEAR(shared.statistic, kept.statistic / 3.0, 1e-9);
+    EXPECT_NEAR(shared.margin, 0.5 * std::log(500.0), 1e-12);
+}
+
 }  // namespace
 }  // namespace driftlab::host::gap
