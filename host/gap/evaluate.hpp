@@ -101,7 +101,8 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
 
 /// Thresholds (penalty per parameter, minimum held-out shrink, level of the level-step test, information criterion)
 /// maximising top-1 accuracy on the tuning cases with a false-positive rate <= 5 %; the shipped ones (Thresholds{})
-/// win ties.
+/// are kept unless the best is significantly better on the same cases (one-sided McNemar test at 5 %) or they
+/// break the false-positive bound.
 Thresholds tune(const std::vector<EvalCase>& cases);
 
 }  // namespace driftlab::host::gap
