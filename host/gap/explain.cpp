@@ -288,11 +288,8 @@ void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& ju
         std::vector<double> shape_residual(judge.y.size()), base_residual(judge.y.size());
         for (std::size_t k = 0; k < judge.y.size(); ++k)
             shape_residual[k] = judge.y[k] - with_shape[k], base_residual[k] = judge.y[k] - without[k];
-        const std::vector<double> floor = white_floor_autocovariance(current.smoothing);
-        double long_run = floor[0];
-        for (std::size_t m_lag = 1; m_lag < floor.size(); ++m_lag) long_run += 2.0 * floor[m_lag];
         ex.shape_steps = steps_over_shape(judge.t_s, base_residual, shape_residual, static_cast<int>(ex.params.size()),
-                                          long_run / floor[0]);
+                                          white_floor_long_run_factor(current.smoothing));
     }
     ex.spectral_extra_parameters = fit.free_parameters + (shape ? static_cast<int>(ex.params.size()) : 0) - base_parameters;
     ex.spectral_observations = p.count;

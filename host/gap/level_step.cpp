@@ -187,14 +187,12 @@ StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vecto
     const Pieces pieces(base_residual);
     // Alternating scans (exact for either cut given the other; O(n) each): from the best single cut, the best second
     // cut, then each again given the other until neither moves.
-    std::size_t c1 = edge, best = edge;
+    std::size_t c1 = edge;
     double best_cost = 1e300;
     for (std::size_t c = edge; c + edge < n; ++c) {
         const double v = pieces.cost(0, c) + pieces.cost(c, n);
-        if (v < best_cost) best_cost = v, best = c;
+        if (v < best_cost) best_cost = v, c1 = c;
     }
-    c1 = best;
-    std::size_t c2 = 0;
     auto best_other = [&](std::size_t fixed) {
         std::size_t arg = 0;
         double v_best = 1e300;
@@ -205,7 +203,7 @@ StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vecto
         }
         return arg;
     };
-    c2 = best_other(c1);
+    std::size_t c2 = best_other(c1);
     for (int round = 0; round < 8; ++round) {
         const std::size_t new1 = best_other(c2);
         const std::size_t new2 = best_other(new1);

@@ -90,6 +90,13 @@ std::vector<double> white_floor_autocovariance(const Smoothing& s) {
     return r;
 }
 
+double white_floor_long_run_factor(const Smoothing& s) {
+    const std::vector<double> r = white_floor_autocovariance(s);
+    double long_run = r[0];
+    for (std::size_t m = 1; m < r.size(); ++m) long_run += 2.0 * r[m];
+    return long_run / r[0];
+}
+
 std::vector<double> differenced_autocovariance(const OutputSpectrum& model, const std::vector<double>& floor_acov,
                                                std::size_t n) {
     std::vector<double> c(n, 0.0);

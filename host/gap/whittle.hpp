@@ -36,6 +36,10 @@ std::size_t smooth_length_at_most(std::size_t n);
 /// newest conversion: (6x - 2(N - 2)) / (N (N + 1)), x = 0 oldest) and D conversions per output.
 std::vector<double> white_floor_autocovariance(const Smoothing& s);
 
+/// The smoother output's long-run variance over its variance, (r_0 + 2 sum_{m>0} r_m) / r_0: how many outputs share
+/// one output's worth of independent noise (1 when the windows do not overlap).
+double white_floor_long_run_factor(const Smoothing& s);
+
 /// A model of the output noise [counts^2], before differencing.
 struct OutputSpectrum {
     double white = 0.0;                ///< variance of the conversions' white noise, shaped by the smoother

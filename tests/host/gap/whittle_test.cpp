@@ -26,6 +26,14 @@ TEST(Whittle, WhiteFloorAutocovarianceFollowsTheSmootherKernel) {
     EXPECT_NEAR(r[0], 2.0 * 15.0 / 72.0, 1e-12);
 }
 
+// Order 0 with D conversions per output over a window of N = kD: k outputs share each conversion, so the long-run
+// variance of the outputs is k times their variance.
+TEST(Whittle, LongRunFactorCountsTheOutputsThatShareAConversion) {
+    EXPECT_NEAR(white_floor_long_run_factor({1.0, 8, 8, 0}), 1.0, 1e-12);
+    EXPECT_NEAR(white_floor_long_run_factor({1.0, 4, 8, 0}), 2.0, 1e-12);
+    EXPECT_NEAR(white_floor_long_run_factor({1.0, 1, 8, 0}), 8.0, 1e-12);
+}
+
 TEST(Whittle, DifferencedAutocovarianceOfAnAr1IsTheDifferenceOfItsAutocovariances) {
     OutputSpectrum m;
     m.ar1.push_back({2.5, 0.9});
