@@ -91,6 +91,9 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
                          {"margin", report::json_number(s.margin)},
                          {"rival_p", report::json_number(s.rival_p)},
                          {"p", report::json_number(s.p_value)},
+                         {"process_gain", report::json_number(s.process_gain)},
+                         {"process_margin", report::json_number(s.process_margin)},
+                         {"outsized_increments", s.outsized},
                          {"significant", s.significant}});
     }
     j["level_steps"] = steps;

@@ -11,6 +11,9 @@
 //   simulated). The rival must also win by the Schwarz (BIC) price of its extra parameters, the consistent choice
 //   for the number of change points: a walk with heavy-tailed increments holds a few large ones, which a Gaussian
 //   replicate lacks, and is still a walk.
+// A step either test finds makes the log unexplained only where the explanation is a stand-in for it: where its
+// processes, refitted beside two steps (and eq. 1), still beat the white floor by their Schwarz price, the steps are
+// read as outsized increments of a heavy-tailed process (a Student-t walk) and reported as such.
 // docs/gap.md §Level steps.
 #pragma once
 
@@ -40,7 +43,13 @@ struct LevelStep {
     double margin = 0.0;       ///< the BIC price of the rival's extra parameters, ln(n) / 2 each [nll units]
     double rival_p = 1.0;      ///< the statistic's Monte Carlo p
     double p_value = 1.0;      ///< Monte Carlo p of the smaller p (the rival's only where it exceeds the margin)
-    bool significant = false;  ///< leaves_step() at the test's alpha
+    /// The explanation's processes refitted beside the rival's steps: Whittle nll of the floor with the steps minus
+    /// theirs (> 0 where the processes are there beyond the steps), and the Schwarz price of their parameters.
+    double process_gain = 0.0;
+    double process_margin = 0.0;
+    bool process_beside_steps = false;  ///< process_gain > process_margin: the steps may be the process's increments
+    bool significant = false;  ///< leaves_step() at the test's alpha: a step no library effect makes
+    bool outsized = false;     ///< p_value <= alpha with the processes beside the steps: read as their outsized increments
 };
 
 struct StepPValues {
@@ -55,7 +64,9 @@ struct StepPValues {
 /// features and under the explanation the margin rarely lets the rival count.
 StepPValues step_p_values(const Eigen::MatrixXd& null, double impulse, double statistic, double margin);
 
-/// A level step no library effect makes: p_value <= alpha.
+/// A level step no library effect makes: p_value <= alpha, and the explanation's processes are not there beyond the
+/// rival's steps (where they are, the steps are read as outsized increments of a heavy-tailed process, reported but
+/// no reason to reject it: a mode hop on a white floor leaves nothing for a process once its two steps are out).
 bool leaves_step(const LevelStep& s, double alpha);
 
 /// Tests channel `c` of the log (`t_s`, `y`) against `model`, whose Gaussian-process effects on that channel are

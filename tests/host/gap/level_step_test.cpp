@@ -1,5 +1,6 @@
 // The level-step test: a hop and a return planted on top of a random walk are found where and about as large as they
-// were planted, while the same random walk without them passes.
+// were planted, and read as the walk's outsized increments (the walk is there beside them); the same hop on the white
+// floor, which the walk only stands in for, is a step no library effect makes; the random walk alone passes.
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -27,13 +28,24 @@ LevelStep run(const GapModel& m, const std::vector<double>& added, std::uint64_t
     return test_level_step(m, Channel::gyro, log.t_s, log.counts[0], {"rate_random_walk"}, {kWalk}, 40, 9, 2, 0.05);
 }
 
-TEST(LevelStep, AHopAndReturnOnARandomWalkAreFoundWhereAndAsLargeAsTheyWere) {
+std::vector<double> hop_and_return() {
     std::vector<double> hop(2000, 0.0);
     for (std::size_t k = 700; k < 1400; ++k) hop[k] = 1.5;  // counts: up at t = 700.5 s, back at 1400.5 s
+    return hop;
+}
+
+TEST(LevelStep, AHopAndReturnOnARandomWalkAreFoundWhereAndAsLargeAsTheyWereAndReadAsItsIncrements) {
+    const std::vector<double> hop = hop_and_return();
     for (std::uint64_t seed : {31, 32, 33, 34, 35}) {
         const LevelStep s = run(walk_model(), hop, seed);
-        EXPECT_TRUE(s.significant) << "seed " << seed << " p " << s.p_value << " statistic " << s.statistic;
+        EXPECT_LE(s.p_value, 0.05) << "seed " << seed << " statistic " << s.statistic;
         EXPECT_GT(s.statistic, s.margin) << "seed " << seed;
+        // The walk (about 1 count over the log) is still there once the steps are out: its Whittle gain over the
+        // floor beside them exceeds the Schwarz price of its one parameter, so the steps are its outsized increments.
+        EXPECT_GT(s.process_gain, s.process_margin) << "seed " << seed;
+        EXPECT_NEAR(s.process_margin, 0.5 * std::log(1999.0), 0.1) << "seed " << seed;
+        EXPECT_TRUE(s.outsized) << "seed " << seed;
+        EXPECT_FALSE(s.significant) << "seed " << seed;
         // The larger first; either may be the up or the down step.
         const bool up_first = s.steps[0].size_counts > 0.0;
         const StepEstimate& up = s.steps[up_first ? 0 : 1];
@@ -42,6 +54,21 @@ TEST(LevelStep, AHopAndReturnOnARandomWalkAreFoundWhereAndAsLargeAsTheyWere) {
         EXPECT_NEAR(down.t_s, 1400.5, 20.0) << "seed " << seed;
         EXPECT_NEAR(up.size_counts, 1.5, 0.5) << "seed " << seed;
         EXPECT_NEAR(down.size_counts, -1.5, 0.5) << "seed " << seed;
+    }
+}
+
+// The same hop on the white floor, explained by the walk: once two steps (and eq. 1) are fitted, nothing is left for
+// the walk, whose gain over the floor is then the chance gain of a nested parameter at its boundary (half a chi^2_1:
+// P(gain > ln(n) / 2) is about 0.3 %), so the step is one no library effect makes.
+TEST(LevelStep, AHopOnTheWhiteFloorThatAWalkStandsInForIsAStepNoLibraryEffectMakes) {
+    const std::vector<double> hop = hop_and_return();
+    for (std::uint64_t seed : {31, 32, 33}) {
+        const LogData log = testing::gyro_log(testing::paper_gyro_model(8), 2000, hop, seed);
+        const LevelStep s = test_level_step(walk_model(), Channel::gyro, log.t_s, log.counts[0], {"rate_random_walk"}, {kWalk}, 40, 9, 2, 0.05);
+        EXPECT_LE(s.process_gain, s.process_margin) << "seed " << seed;
+        EXPECT_FALSE(s.process_beside_steps) << "seed " << seed;
+        EXPECT_TRUE(s.significant) << "seed " << seed << " p " << s.p_value;
+        EXPECT_FALSE(s.outsized) << "seed " << seed;
     }
 }
 

@@ -50,8 +50,9 @@ TEST(RealData, Gyro2xRunsAndReportsItsGap) {
     }
     for (const auto& s : r.level_steps)
         std::printf("  level steps %.2f counts at %.1f s, %.2f at %.1f s: rival %.1f (price %.1f, p %.3f), impulse %.2f (p %.3f), "
-                    "p %.3f\n", s.steps[0].size_counts, s.steps[0].t_s, s.steps[1].size_counts, s.steps[1].t_s, s.statistic,
-                    s.margin, s.rival_p, s.impulse, s.impulse_p, s.p_value);
+                    "p %.3f; processes beside them %.1f (price %.1f)%s\n", s.steps[0].size_counts, s.steps[0].t_s,
+                    s.steps[1].size_counts, s.steps[1].t_s, s.statistic, s.margin, s.rival_p, s.impulse, s.impulse_p, s.p_value,
+                    s.process_gain, s.process_margin, s.outsized ? ": outsized increments" : "");
     EXPECT_TRUE(std::isfinite(r.gap_before_fit));
     // The warm-up is falling (1.10 -> 0.64 deg/s, PROVENANCE.md): eq. 1 calibrates a negative C1.
     EXPECT_LT(r.base.base[0].drift.c1_counts, 0.0);
