@@ -145,7 +145,14 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
                           fixed(e.heldout_before) + " -> " + fixed(e.heldout_after) + ")";
         for (std::size_t k = 1; k < r.accepted.size(); ++k)
             out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel;
-        return out + (r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound");
+        out += r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound";
+        for (const auto& s : r.level_steps)
+            if (s.outsized)
+                out += std::string("; level steps on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed(s.steps[0].size_counts) +
+                       " counts at t = " + fixed(s.steps[0].t_s, 1) + " s, " + fixed(s.steps[1].size_counts) + " at " +
+                       fixed(s.steps[1].t_s, 1) + " s; p = " + fixed(s.p_value, 3) +
+                       ") are read as the processes' outsized increments: they remain beside them";
+        return out;
     }
     if (r.located.empty()) {
         if (!r.diffuse_gap) return "no cell located and the held-out score within its bound: the calibrated base simulator explains the log";

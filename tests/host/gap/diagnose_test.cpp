@@ -202,6 +202,35 @@ TEST(Diagnose, AHopDrawnAsAShapeIsALevelStepNoLibraryEffectMakes) {
 // A raw-mode log's raw codes get the code-histogram cells. A converter whose code widths differ by 0.3 LSB rms
 // (the library's adc_dnl, absent from the diagnosis's base) is located there, and explained by the adc_dnl
 // candidate's transition table; the ideal converter is not located.
+// The verdict's reason follows the level-step test's reading: a step beside a process that remains without it is
+// named as that process's outsized increments after the explanation; a step the process only stands in for makes the
+// log unexplained and comes first.
+TEST(Diagnose, TheVerdictReasonReadsALevelStepAsOutsizedIncrementsOrAsNoLibraryEffect) {
+    GapResult r;
+    Explanation walk;
+    walk.effect = "rate_random_walk";
+    walk.channel = "gyro";
+    walk.heldout_before = 4.0, walk.heldout_after = 1.0, walk.heldout_shrink = 1.0;
+    r.accepted.push_back(walk);
+    r.gap_after_heldout = 1.0, r.gap_bound_after = 2.0;
+    LevelStep s;
+    s.tested = true;
+    s.steps = {StepEstimate{700.5, 1.5}, StepEstimate{1400.5, -1.5}};
+    s.p_value = 0.012;
+    s.outsized = true;
+    r.level_steps.push_back(s);
+    const std::string outsized = verdict_reason(r, small_options());
+    EXPECT_EQ(outsized.rfind("on gyro it removes 100 %", 0), 0u) << outsized;
+    EXPECT_NE(outsized.find("level steps on gyro (1.50 counts at t = 700.5 s, -1.50 at 1400.5 s; p = 0.012) are read as the "
+                            "processes' outsized increments"), std::string::npos) << outsized;
+    r.level_steps[0].outsized = false;
+    r.level_steps[0].significant = true;
+    const std::string unexplained = verdict_reason(r, small_options());
+    EXPECT_EQ(unexplained.rfind("a level step on gyro (1.50 counts at t = 700.5 s; p = 0.012) that no library effect makes", 0), 0u)
+        << unexplained;
+    EXPECT_EQ(unexplained.find("outsized"), std::string::npos) << unexplained;
+}
+
 TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLinearity) {
     GapOptions o = small_options();
     o.explain = false;
