@@ -107,7 +107,8 @@ struct Choice {
 Choice choose(const std::vector<const Explanation*>& passing, InformationCriterion ic);
 
 /// Whether the explanation leaves no level step: a random process explains a step only by an improbably large
-/// increment, and no library effect makes one, so a step left behind makes the verdict "unexplained". (Cells may
+/// increment, and no library effect makes one, so a step left behind makes the verdict "unexplained" unless the
+/// process remains beside it (leaves_step(): then the step is read as the process's outsized increment). (Cells may
 /// stay located: the library's forms are not the truth's, e.g. bursts of spikes are not single-conversion spikes;
 /// cells_left and the gap after report how much remains.)
 bool closes_gap(const Explanation& e, double step_alpha);
