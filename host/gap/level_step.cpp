@@ -8,6 +8,7 @@
 #include <unsupported/Eigen/FFT>
 
 #include "host/gap/candidates.hpp"
+#include "host/gap/mean_shapes.hpp"
 #include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
@@ -17,6 +18,11 @@ namespace driftlab::host::gap {
 namespace {
 
 constexpr double kEdgeFraction = 0.02;  // a step this close to an end is half absorbed by the eq. 1 fit
+
+// Outputs kept clear of each end of an n-output series when placing a step.
+std::size_t edge_outputs(std::size_t n) {
+    return std::max<std::size_t>(2, static_cast<std::size_t>(kEdgeFraction * static_cast<double>(n)));
+}
 constexpr double kMemoryShare = 0.1;    // the whitening's memory, as a share of the log
 constexpr int kFloorEvaluations = 40;   // Nelder-Mead budget of the explanation's one free parameter, its floor
 
@@ -50,7 +56,7 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
     std::vector<double> u;
     fft.inv(u, spec);
     Largest best;
-    const auto edge = std::max<std::size_t>(2, static_cast<std::size_t>(kEdgeFraction * static_cast<double>(n)));
+    const std::size_t edge = edge_outputs(n);
     for (std::size_t t = edge; t + edge < n; ++t) {
         const double stat = std::abs(u[t]) / std::sqrt(kappa);
         if (stat > best.t) best = {t, stat, u[t] / kappa};
@@ -200,19 +206,8 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     // points in mean, refitted together with eq. 1 (linear in its level and rise at a given time constant, which is
     // profiled over a grid): the eq. 1 fit has bent toward a hop and would otherwise leave a slow remainder for a
     // process to take up.
-    const auto edge = std::max<std::size_t>(2, static_cast<std::size_t>(kEdgeFraction * static_cast<double>(r.size())));
-    const auto [c1, c2] = best_two_cuts(Pieces(r), edge);
-    const Eigen::Map<const Eigen::VectorXd> yv(y.data(), static_cast<Eigen::Index>(y.size()));
-    Eigen::VectorXd left;
-    const double span = t_s.back() - t_s.front();
-    for (double tau = 0.003 * span; tau < 30.0 * span; tau *= 1.2) {
-        Eigen::MatrixXd design(r.size(), 4);
-        for (std::size_t k = 0; k < r.size(); ++k)
-            design.row(static_cast<Eigen::Index>(k)) << 1.0, 1.0 - std::exp(-t_s[k] / tau), k >= c1 ? 1.0 : 0.0, k >= c2 ? 1.0 : 0.0;
-        const Eigen::VectorXd e = yv - design * design.colPivHouseholderQr().solve(yv);
-        if (left.size() == 0 || e.squaredNorm() < left.squaredNorm()) left = e;
-    }
-    const std::vector<double> stepped(left.data(), left.data() + left.size());
+    const auto [c1, c2] = best_two_cuts(Pieces(r), edge_outputs(r.size()));
+    const std::vector<double> stepped = eq1_and_steps_residual(t_s, y, c1, c2);
     const PartPeriodogram stepped_p = part_periodogram(stepped, all);
     const SpectralFit beside = fit_spectral(spectral_effects, c, model, stepped_p, spectral_params);
     out.process_gain = fit_spectral({}, c, model, stepped_p).nll - beside.nll;
@@ -233,7 +228,7 @@ StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vecto
                                 const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor) {
     StepsOverShape out;
     const std::size_t n = base_residual.size();
-    const auto edge = std::max<std::size_t>(2, static_cast<std::size_t>(kEdgeFraction * static_cast<double>(n)));
+    const std::size_t edge = edge_outputs(n);
     if (n < 4 * edge + 4 || shape_residual.size() != n) return out;
     const Pieces pieces(base_residual);
     const auto [c1, c2] = best_two_cuts(pieces, edge);

@@ -86,6 +86,33 @@ Data centred_data(const std::vector<double>& y, std::size_t n) {
 
 }  // namespace
 
+std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t cut1,
+                                           std::size_t cut2) {
+    const std::size_t n = y.size();
+    const Data data = centred_data(y, n);
+    const auto step = [&](std::size_t cut) {
+        Eigen::VectorXd v(static_cast<Eigen::Index>(n));
+        for (std::size_t k = 0; k < n; ++k) v(static_cast<Eigen::Index>(k)) = k >= cut ? 1.0 : 0.0;
+        return centre(std::move(v));
+    };
+    const Column s1 = step(cut1), s2 = step(cut2);
+    Eigen::VectorXd best;
+    const double span = t_s.back() - t_s.front();
+    for (double tau = 0.003 * span; tau < 30.0 * span; tau *= 1.2) {
+        const Column r = rise(t_s, n, tau);
+        Eigen::Matrix3d g;
+        g << r.centred.squaredNorm(), r.centred.dot(s1.centred), r.centred.dot(s2.centred), 0.0, s1.centred.squaredNorm(),
+            s1.centred.dot(s2.centred), 0.0, 0.0, s2.centred.squaredNorm();
+        g = g.selfadjointView<Eigen::Upper>();
+        Eigen::VectorXd beta;
+        solve(g, Eigen::Vector3d(r.centred.dot(data.centred), s1.centred.dot(data.centred), s2.centred.dot(data.centred)),
+              data.yy, beta);
+        Eigen::VectorXd e = data.centred - beta(0) * r.centred - beta(1) * s1.centred - beta(2) * s2.centred;
+        if (best.size() == 0 || e.squaredNorm() < best.squaredNorm()) best = std::move(e);
+    }
+    return {best.data(), best.data() + best.size()};
+}
+
 TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n) {
     const Data data = centred_data(y, n);
     const double dt = (t_s[n - 1] - t_s[0]) / static_cast<double>(n - 1);

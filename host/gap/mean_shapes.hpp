@@ -23,6 +23,12 @@ struct ExponentialAndSine {
     double rss = 0.0;
 };
 
+/// The residual of y = C1 (1 - e^{-t/T}) + C2 + S1 [k >= cut1] + S2 [k >= cut2] (eq. 1 with two level steps at given
+/// sample indices) over all of (t_s, y), T profiled over a log grid from 0.003 to about 27 spans (ratio 1.2): the
+/// level-step test's steps with eq. 1 fitted again beside them.
+std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t cut1,
+                                           std::size_t cut2);
+
 /// Fits the first `n` samples of (t_s, y).
 TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);
 ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);

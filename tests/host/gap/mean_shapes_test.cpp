@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -40,6 +41,32 @@ TEST(MeanShapes, SineOnTopOfWarmUpRecovered) {
     EXPECT_NEAR(f.amplitude_counts, 0.7, 0.03);
     EXPECT_NEAR(std::remainder(f.phase_rad - 1.0, 2.0 * std::numbers::pi), 0.0, 0.08);
     EXPECT_NEAR(f.t_s, 300.0, 30.0);
+}
+
+// Eq. 1 with two level steps: where the log is exactly that (T on the profile's grid), nothing is left; with noise
+// added, the residual is least squares, so orthogonal to the constant and to both step columns.
+TEST(MeanShapes, Eq1AndStepsResidualIsLeastSquaresAndExactOnItsOwnForm) {
+    std::vector<double> t(1500), y(1500);
+    const double span = 1499.0, tau = 0.003 * span * std::pow(1.2, 30);  // on the grid: about 356 s
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        t[k] = static_cast<double>(k);
+        y[k] = -40.0 * (1.0 - std::exp(-t[k] / tau)) + 512.0 + (k >= 500 ? 1.5 : 0.0) + (k >= 1100 ? -0.9 : 0.0);
+    }
+    for (double e : eq1_and_steps_residual(t, y, 500, 1100)) EXPECT_NEAR(e, 0.0, 1e-8);
+    std::mt19937_64 rng(3);
+    std::normal_distribution<double> noise(0.0, 0.4);
+    for (double& v : y) v += noise(rng);
+    const std::vector<double> e = eq1_and_steps_residual(t, y, 500, 1100);
+    double all = 0.0, after1 = 0.0, after2 = 0.0, ss = 0.0;
+    for (std::size_t k = 0; k < e.size(); ++k) {
+        all += e[k], ss += e[k] * e[k];
+        if (k >= 500) after1 += e[k];
+        if (k >= 1100) after2 += e[k];
+    }
+    EXPECT_NEAR(all, 0.0, 1e-8);
+    EXPECT_NEAR(after1, 0.0, 1e-8);
+    EXPECT_NEAR(after2, 0.0, 1e-8);
+    EXPECT_NEAR(std::sqrt(ss / static_cast<double>(e.size())), 0.4, 0.03);  // what is left is the noise
 }
 
 }  // namespace
