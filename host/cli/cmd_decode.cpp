@@ -44,6 +44,7 @@ void run_decode(const DecodeOptions& o) {
                 static_cast<unsigned long long>(s.rows), o.output.c_str(), static_cast<unsigned long long>(s.frames),
                 static_cast<unsigned long long>(s.lost_frames), io::loss_percent(s),
                 static_cast<unsigned long long>(s.gaps));
+    if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::printf("%s\n", skipped.c_str());
 }
 
 }  // namespace

@@ -97,6 +97,7 @@ void run_record(const RecordCliOptions& o) {
                 io::loss_percent(s), static_cast<unsigned long long>(s.duplicate_frames),
                 static_cast<unsigned long long>(s.reordered_frames), static_cast<unsigned long long>(sum.polls_sent),
                 static_cast<unsigned long long>(sum.reconnects));
+    if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::printf("%s\n", skipped.c_str());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // LogAssembler: capture stream -> canonical log (log_assembler.hpp).
 #include "host/io/log_assembler.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "host/util/error.hpp"
@@ -202,6 +203,13 @@ void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, c
     row.t_s = t_s;
     row.seq = seq;
     for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) row.counts[ch] = sample.value_q8[ch] / kQ8PerCount;
+    // A frame can pass its CRC and still carry a value no converter of this resolution makes (a firmware fault):
+    // skipped and counted, as the reader would reject the row.
+    const auto reach = counts_reach(version_->adc_bits);
+    if (reach && !std::all_of(row.counts.begin(), row.counts.end(), [&](double v) { return reach->holds(v); })) {
+        ++stats_.unreachable_samples;
+        return;
+    }
     row.optional_values = {static_cast<double>(tick), static_cast<double>(sample.sat_flags),
                            static_cast<double>(sample.n_window), static_cast<double>(sample.dropped)};
     if (config_->raw) {

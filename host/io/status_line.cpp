@@ -33,4 +33,11 @@ std::string format_status_line(const AssemblyStats& s, double wall_s, bool conne
     return text;
 }
 
+std::string skipped_samples(const AssemblyStats& stats) {
+    if (stats.stale_samples + stats.unreachable_samples == 0) return "";
+    return "skipped " + std::to_string(stats.stale_samples + stats.unreachable_samples) + " samples: " +
+           std::to_string(stats.stale_samples) + " repeated (time not after the previous row), " +
+           std::to_string(stats.unreachable_samples) + " beyond the converter's reach";
+}
+
 }  // namespace driftlab::host::io

@@ -15,4 +15,8 @@ std::string format_status_line(const AssemblyStats& stats, double wall_s, bool c
 /// Lost frames as a percentage of frames sent (received - duplicates + lost); 0 when nothing was sent.
 double loss_percent(const AssemblyStats& stats);
 
+/// The SAMPLEs not written as rows, for a summary: "" when none, else e.g.
+/// "skipped 3 samples: 2 repeated (time not after the previous row), 1 beyond the converter's reach".
+std::string skipped_samples(const AssemblyStats& stats);
+
 }  // namespace driftlab::host::io

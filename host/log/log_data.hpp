@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,20 @@ inline constexpr std::array<const char*, 2 + kChannelCount> kRequiredLogColumns 
 /// Optional columns a reader keeps (by name) when present; any other column is ignored.
 inline constexpr std::array<const char*, 9> kOptionalLogColumns = {
     "raw_gyro", "raw_accel_x", "raw_accel_y", "raw_accel_z", "tick", "flags", "sat_flags", "n_window", "dropped"};
+
+/// The channel values a converter of `adc_bits` bits can produce, [counts]: the least-squares estimate of codes
+/// 0..2^bits - 1. A fitted line (order 1) is read at the window's end, where its weights sum to at most 4/3 above
+/// zero and -1/3 below, so the estimate reaches a third of full scale past either end; one count more for Q8
+/// rounding. None for a resolution outside 1..32 bits (no bound is known).
+struct CountsReach {
+    double low = 0.0, high = 0.0;
+    bool holds(double counts) const { return counts >= low && counts <= high; }
+};
+inline std::optional<CountsReach> counts_reach(std::int64_t adc_bits) {
+    if (adc_bits < 1 || adc_bits > 32) return std::nullopt;
+    const double full = static_cast<double>((std::int64_t{1} << adc_bits) - 1);
+    return CountsReach{-full / 3.0 - 1.0, full * 4.0 / 3.0 + 1.0};
+}
 
 /// A `# gap: text` line: the recorder lost the link; `before_row` is the index of the first row after it.
 struct LogGap {

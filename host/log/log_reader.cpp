@@ -158,6 +158,8 @@ private:
         split_fields(text, ',', fields_);
         plan_ = plan_columns(fields_, log_, number);
         header_line_ = number;
+        // Converter resolution from the metadata: what the channel columns can hold (a wild value is a corrupt row).
+        if (const auto bits = log_.metadata.get_int("adc_bits")) reach_ = counts_reach(*bits);
     }
 
     void row(std::string_view text, std::uint64_t number) {
@@ -178,8 +180,15 @@ private:
                             "field " + std::to_string(req[1] + 1) + " (seq) '" +
                                 std::string(trim_blanks(fields_[req[1]])) + "': not a non-negative integer");
         std::array<double, kChannelCount> values{};
-        for (std::size_t c = 0; c < kChannelCount; ++c)
+        for (std::size_t c = 0; c < kChannelCount; ++c) {
             values[c] = parse_field(log_, number, fields_[req[2 + c]], req[2 + c], kRequiredLogColumns[2 + c]);
+            if (reach_ && !reach_->holds(values[c]))
+                throw DataError(log_.source_name, number,
+                                "field " + std::to_string(req[2 + c] + 1) + " (" + kRequiredLogColumns[2 + c] + ") '" +
+                                    std::string(trim_blanks(fields_[req[2 + c]])) + "': beyond the " +
+                                    *log_.metadata.get("adc_bits") + "-bit converter's reach (" + format_double(reach_->low) +
+                                    " to " + format_double(reach_->high) + " counts)");
+        }
         optional_scratch_.clear();
         for (const auto& [field, column] : plan_->optional_fields)
             optional_scratch_.push_back(parse_field(log_, number, fields_[field], field, "optional column"));
@@ -206,6 +215,7 @@ private:
     bool seen_magic_ = false;
     std::optional<ColumnPlan> plan_;
     std::uint64_t header_line_ = 0;
+    std::optional<CountsReach> reach_;
     std::vector<std::string_view> fields_;
     std::vector<double> optional_scratch_;
 };

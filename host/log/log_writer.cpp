@@ -29,6 +29,7 @@ LogWriter::LogWriter(const std::string& path, const LogMetadata& metadata, std::
         if (fd_ < 0) throw DeviceError(path_, std::string("cannot open for writing: ") + std::strerror(errno));
         owns_fd_ = true;
     }
+    if (const auto bits = metadata.get_int("adc_bits")) reach_ = counts_reach(*bits);
     pending_ = "# driftlab-log: " + std::to_string(kLogFormatVersion) + "\n";
     for (const auto& [key, value] : metadata.entries()) pending_ += "# " + key + ": " + value + "\n";
     for (std::size_t i = 0; i < kRequiredLogColumns.size(); ++i) {
@@ -56,6 +57,11 @@ void LogWriter::write_row(const LogRow& row) {
     if (!std::isfinite(row.t_s) || !std::all_of(row.counts.begin(), row.counts.end(), finite) ||
         !std::all_of(row.optional_values.begin(), row.optional_values.end(), finite))
         throw UsageError("log row at t_s=" + format_double(row.t_s) + " has a NaN or infinite value");
+    for (std::size_t c = 0; reach_ && c < kChannelCount; ++c)
+        if (!reach_->holds(row.counts[c]))
+            throw UsageError("log row at t_s=" + format_double(row.t_s) + " has " + kChannelNames[c] + " = " +
+                             format_double(row.counts[c]) + " counts, beyond the converter's reach (" +
+                             format_double(reach_->low) + " to " + format_double(reach_->high) + ")");
     if (rows_ > 0 && !(row.t_s > last_t_s_))
         throw UsageError("log row t_s=" + format_double(row.t_s) + " does not follow the previous t_s=" +
                          format_double(last_t_s_));

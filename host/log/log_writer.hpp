@@ -11,10 +11,12 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "driftlab/channels.hpp"
+#include "host/log/log_data.hpp"
 #include "host/log/log_metadata.hpp"
 
 namespace driftlab::host {
@@ -40,8 +42,9 @@ public:
     /// Pending lines are written when this much time has passed since the last flush; zero = every line.
     void set_flush_interval(std::chrono::milliseconds interval) { flush_interval_ = interval; }
 
-    /// Appends one row. Throws UsageError on NaN/inf, a t_s not after the previous one, or a wrong
-    /// number of optional values: the writer never produces a file its reader rejects.
+    /// Appends one row. Throws UsageError on NaN/inf, a channel value beyond the converter's reach (when the
+    /// metadata holds `adc_bits`), a t_s not after the previous one, or a wrong number of optional values: the
+    /// writer never produces a file its reader rejects.
     void write_row(const LogRow& row);
     /// Appends `# gap: text` (text without newlines).
     void write_gap(const std::string& text);
@@ -65,6 +68,7 @@ private:
     std::chrono::steady_clock::time_point last_flush_;
     std::uint64_t rows_ = 0;
     double last_t_s_ = 0.0;
+    std::optional<CountsReach> reach_;
 };
 
 }  // namespace driftlab::host

@@ -55,10 +55,11 @@ public:
         st.uptime_ticks = uptime;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_status(st, s, o, n); });
     }
-    void sample(std::uint32_t tick) {
+    void sample(std::uint32_t tick, std::int32_t gyro_q8 = 500 * 256) {
         proto::SamplePayload p{};
         p.tick = tick;
         for (auto& v : p.value_q8) v = 500 * 256;
+        p.value_q8[0] = gyro_q8;
         p.n_window = 8;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_sample(p, s, o, n); });
     }
@@ -140,4 +141,30 @@ TEST(LogAssembler, AFirmwareRestartDuringTheGapIsMarkedAfterTheLinkLoss) {
     EXPECT_GT(log.t_s[3], log.t_s[2]);
     EXPECT_GT(log.seq[3], log.seq[2]);
     EXPECT_GT(log.t_s[4], log.t_s[3]);
+}
+
+TEST(LogAssembler, ASampleBeyondTheConvertersReachIsSkippedAndCounted) {
+    // A frame whose CRC holds can still carry a value no 10-bit estimate reaches (a firmware fault): the rows around
+    // it are kept, it is counted, and the log reads back.
+    const std::string path = temp_log("reach.csv");
+    AssemblyStats stats;
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "reach.cap"}});
+        Board b(a);
+        b.version();
+        b.config();
+        b.event("start");
+        b.sample(1 * kTicksPerOutput);
+        b.sample(2 * kTicksPerOutput, 1366 * 256);  // beyond 4/3 of full scale
+        b.sample(3 * kTicksPerOutput, -341 * 256);  // within: an order-1 estimate's undershoot
+        a.finish();
+        stats = a.stats();
+    }
+    const LogData log = read_log(path);
+    fs::remove(path);
+    EXPECT_EQ(stats.unreachable_samples, 1u);
+    EXPECT_EQ(stats.rows, 2u);
+    ASSERT_EQ(log.size(), 2u);
+    EXPECT_DOUBLE_EQ(log.t_s[1], 0.3);
+    EXPECT_EQ(log.channel(Channel::gyro)[1], -341.0);
 }

@@ -118,6 +118,17 @@ TEST(LogIo, WriterRefusesRowsItsReaderWouldReject) {
     r.optional_values = {1.0};
     EXPECT_THROW(w.write_row(r), UsageError);  // no optional columns declared
     EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"colour"}), UsageError);
+    {
+        LogMetadata m;
+        m.set("adc_bits", std::int64_t{10});
+        LogWriter bounded(temp_path("x.csv"), m);
+        r.optional_values.clear();
+        r.counts = {1365.0, -342.0, 0.0, 1023.0};
+        bounded.write_row(r);
+        r.t_s = 3.0;
+        r.counts[2] = 1365.5;
+        EXPECT_THROW(bounded.write_row(r), UsageError);  // beyond the 10-bit converter's reach
+    }
     w.close();
     std::filesystem::remove(path);
     std::filesystem::remove(temp_path("x.csv"));
@@ -169,6 +180,23 @@ TEST(LogIo, EachRejectionNamesTheLine) {
               std::string::npos);
     EXPECT_NE(rejection("# driftlab-log: 1\n# a: 1\n# a: 2\n").find("mem.csv:3: metadata key 'a' appears twice"),
               std::string::npos);
+}
+
+// A 10-bit converter's least-squares estimate reaches from -1023/3 to 4 x 1023/3 counts (the order-1 weights at the
+// window's end sum to 4/3 above zero and -1/3 below), a count more either side for the Q8 rounding.
+TEST(LogIo, AValueBeyondTheConvertersReachIsRejectedWhenTheLogNamesItsResolution) {
+    const std::string head = "# driftlab-log: 1\n# adc_bits: 10\nt_s,seq,gyro,accel_x,accel_y,accel_z\n";
+    const LogData edge = parse(head + "0,0,-342,1365,512,-341.5\n");  // the reach's ends are values it can hold
+    EXPECT_EQ(edge.channel(Channel::accel_x)[0], 1365.0);
+    EXPECT_NE(rejection(head + "0,0,1,2,3,4\n1,1,512,1e308,3,4\n")
+                  .find("mem.csv:5: field 4 (accel_x) '1e308': beyond the 10-bit converter's reach (-342 to 1365 counts)"),
+              std::string::npos);
+    EXPECT_NE(rejection(head + "0,0,-342.01,2,3,4\n").find("mem.csv:4: field 3 (gyro)"), std::string::npos);
+    EXPECT_NE(rejection("# driftlab-log: 1\n# adc_bits: 12\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,5461.5\n")
+                  .find("field 6 (accel_z) '5461.5': beyond the 12-bit converter's reach (-1366 to 5461 counts)"),
+              std::string::npos);
+    // Without the resolution no bound is known: the value is kept.
+    EXPECT_EQ(parse(kHead + "0,0,1e9,2,3,4\n").channel(Channel::gyro)[0], 1e9);
 }
 
 TEST(LogIo, TruncatedLastLineIsReportedOrDroppedOnRequest) {
