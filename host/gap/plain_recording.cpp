@@ -1,11 +1,13 @@
 // Plain recordings as logs; see plain_recording.hpp.
 #include "host/gap/plain_recording.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
 #include "host/fit/series.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
 
@@ -68,19 +70,22 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         const fit::Series* s = nullptr;
         for (const auto& candidate : series)
             if (candidate.name == m.column) s = &candidate;
-        // Integer codes, as the sensor produced them, offset so the column's mean sits at mid-scale.
-        double mean = 0.0;
-        for (double v : s->values) mean += v;
-        const double offset = kMidScale - std::round(mean / static_cast<double>(s->values.size()) / m.lsb);
+        // Integer codes, as the sensor produced them, offset so the column's median sits at mid-scale (a median:
+        // one wild value must not move the others off the scale, so that the error names its own row).
+        std::vector<double> sorted = s->values;
+        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+        std::nth_element(sorted.begin(), middle, sorted.end());
+        const double offset = kMidScale - std::round(*middle / m.lsb);
         for (std::size_t b = 0; b < outputs; ++b) {
             double sum = 0.0;
             for (std::size_t i = b * how.block; i < (b + 1) * how.block; ++i) {
                 const double code = std::round(s->values[i] / m.lsb) + offset;
-                if (code < 0.0 || code > kFullScale)
+                if (!(code >= 0.0 && code <= kFullScale))
                     throw DataError(table.source_name, 0,
-                                    "column '" + m.column + "' row " + std::to_string(i + 1) + " is " +
-                                        std::to_string(std::lround(code - kMidScale)) +
-                                        " codes from its mean, beyond the 10-bit range: give a coarser LSB");
+                                    "column '" + m.column + "' row " + std::to_string(i + 1) + " (" + format_double(s->values[i]) +
+                                        ") lies beyond the 10-bit range around the column's median (" +
+                                        format_double(kMidScale) + " codes of LSB " + format_double(m.lsb) +
+                                        "): give a coarser LSB, or check that row");
                 sum += code;
             }
             log.counts[c][b] = sum / static_cast<double>(how.block);

@@ -1,5 +1,5 @@
 // A plain recording becomes the log the diagnosis reads: integer codes of each column's LSB, offset so the column's
-// mean sits at mid-scale, averaged over blocks (the order-0 smoother), timed at each block's last sample.
+// median sits at mid-scale, averaged over blocks (the order-0 smoother), timed at each block's last sample.
 #include <cmath>
 #include <string>
 
@@ -20,7 +20,7 @@ NumericTable table(std::vector<std::string> names, std::vector<std::vector<doubl
 }
 
 TEST(PlainRecording, BlocksOfCodesAroundMidScaleTimedAtTheirLastSample) {
-    // Codes 100, 102, 104, 106, 101, 99 of an LSB of 0.5: mean code 102 -> offset 410.
+    // Codes 100, 102, 104, 106, 101, 99 of an LSB of 0.5: median code 102 (the upper middle one) -> offset 410.
     const double lsb = 0.5;
     const NumericTable t = table({"col1"}, {{50.0, 51.0, 52.0, 53.0, 50.5, 49.5}});
     PlainRecording how;
@@ -52,8 +52,8 @@ TEST(PlainRecording, ATimeColumnGivesTheInstantsAndColumnsMapToTheirChannels) {
     how.block = 2;
     const LogData log = log_from_table(t, how);
     EXPECT_EQ(log.t_s, (std::vector<double>{0.013, 0.041}));
-    EXPECT_EQ(log.counts[channel_index(Channel::gyro)], (std::vector<double>{510.5, 512.5}));  // mean 2.5 -> round 3
-    EXPECT_EQ(log.counts[channel_index(Channel::accel_z)], (std::vector<double>{511.0, 512.0}));  // mean 8.5 -> 9
+    EXPECT_EQ(log.counts[channel_index(Channel::gyro)], (std::vector<double>{510.5, 512.5}));  // median 3
+    EXPECT_EQ(log.counts[channel_index(Channel::accel_z)], (std::vector<double>{511.0, 512.0}));  // median 9
 }
 
 TEST(PlainRecording, BadMappingsAndTablesAreRefusedSayingWhy) {
@@ -69,6 +69,13 @@ TEST(PlainRecording, BadMappingsAndTablesAreRefusedSayingWhy) {
         ADD_FAILURE() << "a column beyond the 10-bit range was accepted";
     } catch (const DataError& e) {
         EXPECT_NE(std::string(e.what()).find("col1' row 4"), std::string::npos) << e.what();
+    }
+    // One wild value among ordinary ones is named at its own row: the median it cannot move sets the scale.
+    try {
+        log_from_table(table({"col1"}, {{0.0, 1.0, 2.0, 1e308, 3.0, 4.0, 5.0}}), how);
+        ADD_FAILURE() << "a value of 1e308 codes was accepted";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("col1' row 4 (1e+308)"), std::string::npos) << e.what();
     }
     how.block = 3;  // 4 rows: one block
     EXPECT_THROW(log_from_table(t, how), DataError);
