@@ -97,11 +97,8 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     }
     for (const auto& s : r.level_steps)
         std::printf("level steps on %s: %.3g counts at t = %.1f s, %.3g at %.1f s; likelihood %.1f over the model (price %.1f), "
-                    "p = %.3f%s\n", kChannelNames[channel_index(s.channel)], s.steps[0].size_counts, s.steps[0].t_s,
-                    s.steps[1].size_counts, s.steps[1].t_s, s.statistic, s.margin, s.p_value,
-                    s.significant ? " (no library effect makes a step: unexplained)"
-                    : s.outsized  ? " (the process remains beside them: its outsized increments)"
-                                  : "");
+                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)], s.steps[0].size_counts, s.steps[0].t_s,
+                    s.steps[1].size_counts, s.steps[1].t_s, s.statistic, s.margin, s.p_value, gap::step_reading(s));
     std::printf("not identifiable from a static log:");
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");

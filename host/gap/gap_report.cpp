@@ -225,10 +225,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
            << ", p " << fixed(s.rival_p, 3) << "); largest whitened impulse " << fixed(s.impulse, 2) << " (p "
            << fixed(s.impulse_p, 3) << "); combined p = " << fixed(s.p_value, 3)
            << "; the processes beside the steps " << fixed(s.process_gain, 1) << " over the floor (price " << fixed(s.process_margin, 1) << ")"
-           << (s.significant ? " (significant: a step no library effect makes; the log is unexplained)"
-               : s.outsized  ? " (beyond the model's own, but the process remains beside the steps: read as its outsized increments)"
-                             : " (none beyond the model's own)")
-           << "\n";
+           << " (" << step_reading(s) << ")\n";
     }
     md << "\nNot identifiable from a static log:\n\n";
     for (const auto& n : not_identifiable_list()) md << "- " << n.effect << ": " << n.reason << "\n";

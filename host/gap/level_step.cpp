@@ -134,6 +134,12 @@ StepPValues step_p_values(const Eigen::MatrixXd& null, double impulse, double st
     return {rank_p(0, impulse), rank_p(1, statistic), static_cast<double>(as_small) / static_cast<double>(ranked.rows())};
 }
 
+const char* step_reading(const LevelStep& s) {
+    if (s.significant) return "a step no library effect makes: the log is unexplained";
+    if (s.outsized) return "beyond the model's own, but its processes remain beside the steps: their outsized increments";
+    return "none beyond the model's own";
+}
+
 bool leaves_step(const LevelStep& s, double alpha) { return s.tested && s.p_value <= alpha && !s.process_beside_steps; }
 
 LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s, const std::vector<double>& y,

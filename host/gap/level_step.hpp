@@ -69,6 +69,10 @@ StepPValues step_p_values(const Eigen::MatrixXd& null, double impulse, double st
 /// no reason to reject it: a mode hop on a white floor leaves nothing for a process once its two steps are out).
 bool leaves_step(const LevelStep& s, double alpha);
 
+/// What a level-step test says, in words the report and the terminal share: a step no library effect makes (the log
+/// is unexplained), the processes' outsized increments, or none beyond the model's own.
+const char* step_reading(const LevelStep& s);
+
 /// Tests channel `c` of the log (`t_s`, `y`) against `model`, whose Gaussian-process effects on that channel are
 /// `spectral_effects` with `spectral_params` (concatenated, candidate_param_names() order; kept, only the white floor
 /// is estimated on the log), at level `alpha` with at least `replicates` replicates (and at least 4 / alpha).

@@ -46,6 +46,7 @@ TEST(LevelStep, AHopAndReturnOnARandomWalkAreFoundWhereAndAsLargeAsTheyWereAndRe
         EXPECT_NEAR(s.process_margin, 0.5 * std::log(1999.0), 0.1) << "seed " << seed;
         EXPECT_TRUE(s.outsized) << "seed " << seed;
         EXPECT_FALSE(s.significant) << "seed " << seed;
+        EXPECT_NE(std::string(step_reading(s)).find("outsized increments"), std::string::npos) << step_reading(s);
         // The larger first; either may be the up or the down step.
         const bool up_first = s.steps[0].size_counts > 0.0;
         const StepEstimate& up = s.steps[up_first ? 0 : 1];
@@ -69,6 +70,7 @@ TEST(LevelStep, AHopOnTheWhiteFloorThatAWalkStandsInForIsAStepNoLibraryEffectMak
         EXPECT_FALSE(s.process_beside_steps) << "seed " << seed;
         EXPECT_TRUE(s.significant) << "seed " << seed << " p " << s.p_value;
         EXPECT_FALSE(s.outsized) << "seed " << seed;
+        EXPECT_NE(std::string(step_reading(s)).find("no library effect makes"), std::string::npos) << step_reading(s);
     }
 }
 
@@ -76,7 +78,13 @@ TEST(LevelStep, AHopOnTheWhiteFloorThatAWalkStandsInForIsAStepNoLibraryEffectMak
 // (binomial, 5 %: probability 0.6 %; the likelihood margin only lowers the rate).
 TEST(LevelStep, TheModelsOwnLogsPass) {
     int flagged = 0;
-    for (std::uint64_t seed = 41; seed < 49; ++seed) flagged += run(walk_model(), {}, seed).significant;
+    for (std::uint64_t seed = 41; seed < 49; ++seed) {
+        const LevelStep s = run(walk_model(), {}, seed);
+        flagged += s.significant;
+        if (!s.significant && !s.outsized) {
+            EXPECT_STREQ(step_reading(s), "none beyond the model's own");
+        }
+    }
     EXPECT_LE(flagged, 2);
 }
 
