@@ -2,6 +2,8 @@
 #include "host/stats/allan_pipeline.hpp"
 
 #include <exception>
+#include <stdexcept>
+#include <string>
 
 #include "host/fit/lm_fit.hpp"
 #include "host/stats/uniform_grid.hpp"
@@ -17,6 +19,12 @@ AllanCurves analyse_curves(const PhaseRecord& record, const AllanRequest& reques
     }
     for (Deviation d : order) {
         const auto ms = analysis_factors(record, d, request.grid);
+        // An empty table would read as a result; too short a record is bad input (the overlapping deviation's bound
+        // is the loosest, so it decides).
+        if (ms.empty() && d == Deviation::oadev)
+            throw std::invalid_argument(std::to_string(record.size()) + " phase samples leave no averaging time on this grid "
+                                        "(the largest averaging factor is (phase samples - 1) / 4, rounded down; a "
+                                        "rate series of n samples has n + 1 phase samples)");
         out.curves.push_back(analyse_deviation(record, d, ms, request.confidence));
     }
     const AnalysedCurve& oadev = out.curves.front();

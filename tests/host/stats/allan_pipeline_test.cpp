@@ -110,5 +110,22 @@ TEST(AllanPipeline, TimeGapIsCountedAndNotBridged) {
     EXPECT_EQ(c.curve.n[0], 4999 - 101);
 }
 
+// Stable32's bound m <= (N - 1) / 4 for N phase samples: 4 rate samples (5 phase) give the first averaging time,
+// with 3 overlapping terms; fewer give none, which is an error rather than an empty table.
+TEST(AllanPipeline, TooShortASeriesForAnyAveragingTimeIsRefused) {
+    AllanRequest req;
+    req.remove_drift = false;
+    for (std::size_t n : {2u, 3u}) {
+        std::vector<double> t(n), y(n);
+        for (std::size_t k = 0; k < n; ++k) t[k] = static_cast<double>(k), y[k] = static_cast<double>(k % 2);
+        EXPECT_THROW(analyse_allan(t, y, 1.0, req), std::invalid_argument) << n << " samples";
+    }
+    const AllanResult r = analyse_allan({0.0, 1.0, 2.0, 3.0}, {1.0, 0.0, 1.0, 0.0}, 1.0, req);
+    ASSERT_EQ(r.raw.curves.front().curve.m.size(), 1u);
+    EXPECT_EQ(r.raw.curves.front().curve.m[0], 1);
+    // Rate differences of +-1 at every step: sigma^2 = (1/2) <(y_{k+1} - y_k)^2> = 1/2 over the 3 pairs.
+    EXPECT_NEAR(r.raw.curves.front().curve.dev[0], std::sqrt(0.5), 1e-12);
+}
+
 }  // namespace
 }  // namespace driftlab::host::stats
