@@ -20,6 +20,7 @@
 #include "host/log/numeric_table.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_folder.hpp"
 #include "sim/model/model_file.hpp"
 
 namespace driftlab::host::cli {
@@ -110,6 +111,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
 
 void run(const GapCommandOptions& o) {
     const LogData log = load(o);
+    if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     gap::GapOptions options;
     options.replicates = o.replicates;

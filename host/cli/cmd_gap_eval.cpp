@@ -13,6 +13,7 @@
 #include "host/gap/eval_scores.hpp"
 #include "host/gap/truth.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_folder.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -65,9 +66,7 @@ void run(const GapEvalCommandOptions& o) {
     }
     if (!o.plot_dir.empty()) {
         // Before the run, so that an unwritable folder is reported at once rather than after it.
-        std::error_code ec;
-        std::filesystem::create_directories(o.plot_dir, ec);
-        if (ec) throw DeviceError(o.plot_dir, "cannot create the plot folder: " + ec.message());
+        make_output_folder(o.plot_dir, "plot");
     }
     options.holdout = o.holdout;
     options.clean_per_seed = o.clean_per_seed;

@@ -23,6 +23,7 @@
 #include "host/log/log_writer.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_folder.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/model_file.hpp"
@@ -187,7 +188,7 @@ void run_hil_command(const HilCliOptions& o) {
     if (o.pty) return serve_pty_command(o, h);
     const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (path != "-" && !parent.empty()) std::filesystem::create_directories(parent);
+    if (path != "-" && !parent.empty()) make_output_folder(parent.string(), "log");
 
     MetadataPairs extra = {{"seed", std::to_string(o.seed)},
                                {"model", o.model_file.empty() ? "paper (built in)" : o.model_file},

@@ -14,6 +14,7 @@
 #include "host/gap/spectral.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_folder.hpp"
 
 namespace driftlab::host::gap {
 
@@ -164,7 +165,7 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
 }
 
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options) {
-    std::filesystem::create_directories(dir);
+    make_output_folder(dir, "report");
     std::ostringstream md;
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";

@@ -16,6 +16,7 @@
 
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
+#include "host/util/output_folder.hpp"
 
 extern char** environ;
 
@@ -169,9 +170,7 @@ bool gnuplot_available() {
 std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, const std::string& name,
                                      const std::vector<ImageFormat>& formats) {
     check(plot);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw Error(dir + ": cannot create plot folder: " + ec.message());
+    make_output_folder(dir, "plot");
     const fs::path base = fs::path(dir) / name;
     const fs::path data = base.string() + ".dat";
     write_data(plot, data);
@@ -184,6 +183,7 @@ std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, c
         run_gnuplot(gp, base.string() + ".gnuplot.log");
         images.push_back(image.string());
     }
+    std::error_code ec;  // a log left behind is harmless
     fs::remove(base.string() + ".gnuplot.log", ec);
     return images;
 }

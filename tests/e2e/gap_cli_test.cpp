@@ -102,6 +102,21 @@ TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {
     EXPECT_NE(tau0.output.find("--tau0: expected a number > 0, got '-1'"), std::string::npos) << tau0.output;
 }
 
+// A report folder that cannot be made (a file in the way) is refused before the diagnosis, with the device error's
+// exit code and the folder named; so is a log folder for hil.
+TEST(GapCli, AnUnusableReportFolderIsRefusedBeforeTheDiagnosis) {
+    TempDir dir("gapreportdir");
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "-o", log}, dir.path()).exit_code, 0);
+    const RunResult gap = run_driftlab({"gap", log, "--replicates", "10", "--report", log + "/report"}, dir.path());
+    EXPECT_EQ(gap.exit_code, 4) << gap.output;
+    EXPECT_NE(gap.output.find("hil.csv/report: cannot create the report folder"), std::string::npos) << gap.output;
+    EXPECT_EQ(gap.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
+    const RunResult hil = run_driftlab({"hil", "--duration", "10", "-o", log + "/x.csv"}, dir.path());
+    EXPECT_EQ(hil.exit_code, 4) << hil.output;
+    EXPECT_NE(hil.output.find("cannot create the log folder"), std::string::npos) << hil.output;
+}
+
 // A plot folder that cannot be made is refused before minutes of benchmark, not after them.
 TEST(GapEvalCli, AnUnusablePlotFolderIsRefusedBeforeTheRun) {
     TempDir dir("gapevalplot");
