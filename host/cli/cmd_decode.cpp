@@ -34,6 +34,11 @@ void run_decode(const DecodeOptions& o) {
                                       "handshake), so there is no log to rebuild");
     }
     assembler.finish();
+    for (const auto& d : reader.damaged())
+        std::fprintf(stderr, "driftlab: warning: %s: byte offsets %llu..%llu: damaged, %llu bytes skipped to the next whole "
+                             "records (frames in them count as lost)\n",
+                     o.capture.c_str(), static_cast<unsigned long long>(d.offset),
+                     static_cast<unsigned long long>(d.offset + d.bytes), static_cast<unsigned long long>(d.bytes));
     if (reader.truncated_at()) {
         std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: last record cut (recorder killed while "
                              "writing); decoded up to it\n",

@@ -112,30 +112,51 @@ std::optional<std::string> CaptureReader::header_value(const std::string& key) c
     return std::nullopt;
 }
 
-std::optional<CaptureRecord> CaptureReader::next() {
-    if (pos_ >= data_.size() || truncated_at_) return std::nullopt;
-    if (data_.size() - pos_ < kRecordHeaderSize) {
-        truncated_at_ = pos_;
-        return std::nullopt;
-    }
-    const std::uint8_t* p = data_.data() + pos_;
+std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::uint64_t after_us) const {
+    // A day: the longest wait between two records the reader believes (a recorder writes at least a status per poll).
+    constexpr std::uint64_t kMaxStepUs = 86'400'000'000ULL;
+    if (data_.size() - offset < kRecordHeaderSize) return std::nullopt;
+    const std::uint8_t* p = data_.data() + offset;
     const auto kind = static_cast<CaptureKind>(p[0]);
-    if (kind != CaptureKind::rx && kind != CaptureKind::tx && kind != CaptureKind::event) {
-        throw DataError(path_, 0, "byte offset " + std::to_string(pos_) + ": unknown record kind " +
-                                      std::to_string(p[0]) + " (expected 'R', 'T' or 'E')");
-    }
+    if (kind != CaptureKind::rx && kind != CaptureKind::tx && kind != CaptureKind::event) return std::nullopt;
+    const std::uint64_t t_us = get_le(p + 1, 8);
     const std::uint64_t len = get_le(p + 9, 4);
-    if (data_.size() - pos_ - kRecordHeaderSize < len) {
-        truncated_at_ = pos_;
-        return std::nullopt;
-    }
+    if (t_us < after_us || t_us - after_us > kMaxStepUs || data_.size() - offset - kRecordHeaderSize < len) return std::nullopt;
     CaptureRecord rec;
     rec.kind = kind;
-    rec.t_us = get_le(p + 1, 8);
-    rec.offset = pos_;
+    rec.t_us = t_us;
+    rec.offset = offset;
     rec.payload.assign(p + kRecordHeaderSize, p + kRecordHeaderSize + len);
-    pos_ += kRecordHeaderSize + static_cast<std::size_t>(len);
     return rec;
+}
+
+bool CaptureReader::records_resume_at(std::size_t offset) const {
+    const auto first = record_at(offset, last_t_us_);
+    if (!first) return false;
+    const std::size_t end = offset + kRecordHeaderSize + first->payload.size();
+    return end == data_.size() || record_at(end, first->t_us).has_value();
+}
+
+std::optional<CaptureRecord> CaptureReader::next() {
+    if (pos_ >= data_.size() || truncated_at_) return std::nullopt;
+    if (auto rec = record_at(pos_, last_t_us_)) {
+        pos_ += kRecordHeaderSize + rec->payload.size();
+        last_t_us_ = rec->t_us;
+        return rec;
+    }
+    std::size_t resume = pos_ + 1;
+    while (resume < data_.size() && !records_resume_at(resume)) ++resume;
+    if (resume == data_.size()) {
+        // Nothing whole follows: a record cut by a kill (its kind known, its length past the end), or a damaged tail.
+        const std::uint8_t kind = data_[pos_];
+        if (kind == 'R' || kind == 'T' || kind == 'E') {
+            truncated_at_ = pos_;
+            return std::nullopt;
+        }
+    }
+    damaged_.push_back({pos_, resume - pos_});
+    pos_ = resume;
+    return next();
 }
 
 }  // namespace driftlab::host::io

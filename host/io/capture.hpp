@@ -12,7 +12,8 @@
 //     payload
 //
 // Each record goes to the OS in one write(2), so a killed recorder leaves at most one cut record at the end,
-// which the reader reports (CaptureReader::truncated_at) and skips.
+// which the reader reports (CaptureReader::truncated_at) and skips. A damaged stretch (a disk or copy fault) is
+// skipped to the next place where whole records follow one another again, and reported (CaptureReader::damaged).
 #pragma once
 
 #include <chrono>
@@ -64,17 +65,32 @@ public:
     explicit CaptureReader(const std::string& path);
     const CaptureHeader& header() const { return header_; }
     std::optional<std::string> header_value(const std::string& key) const;
-    /// The next record, or nullopt at the end. Throws DataError naming the byte offset for an unknown kind.
+    /// A stretch of the file that holds no whole record: skipped, so that the records after it are not lost.
+    struct Damage {
+        std::uint64_t offset = 0;  ///< byte offset where it starts
+        std::uint64_t bytes = 0;   ///< its length
+    };
+
+    /// The next whole record, or nullopt at the end. A record is whole when its kind is known, its payload lies in
+    /// the file and its time neither goes back nor jumps a day ahead; where none is, the reader skips to the next
+    /// offset where two whole records follow one another (or one ends the file) and notes the damage.
     std::optional<CaptureRecord> next();
     /// Byte offset of a cut last record (the recorder was killed mid-write), once next() reached it.
     std::optional<std::uint64_t> truncated_at() const { return truncated_at_; }
+    /// The damaged stretches skipped so far, in file order.
+    const std::vector<Damage>& damaged() const { return damaged_; }
 
 private:
+    std::optional<CaptureRecord> record_at(std::size_t offset, std::uint64_t after_us) const;
+    bool records_resume_at(std::size_t offset) const;
+
     std::string path_;
     std::vector<std::uint8_t> data_;
     std::size_t pos_ = 0;
+    std::uint64_t last_t_us_ = 0;
     CaptureHeader header_;
     std::optional<std::uint64_t> truncated_at_;
+    std::vector<Damage> damaged_;
 };
 
 }  // namespace driftlab::host::io
