@@ -51,11 +51,14 @@ std::string default_hex_file(const std::string& exe_path) {
     std::error_code ec;
     const fs::path exe = fs::weakly_canonical(exe_path, ec);
     if (ec) return {};
-    // exe = <build>/<preset>/bin/driftlab; the AVR preset builds into <build>/avr.
-    const fs::path avr_dir = exe.parent_path().parent_path().parent_path() / "avr";
-    if (!fs::is_directory(avr_dir, ec)) return {};
-    for (fs::recursive_directory_iterator it(avr_dir, ec), end; !ec && it != end; it.increment(ec)) {
-        if (it->path().filename() == "driftlab_fw.hex") return it->path().string();
+    // exe = <build>/<preset>/bin/driftlab; the AVR preset builds into <build>/avr, and a native build with avr-gcc
+    // builds the same firmware into <build>/<preset>/avr-fw (the image `hil --target avr` runs).
+    const fs::path tree = exe.parent_path().parent_path();
+    for (const fs::path& dir : {tree.parent_path() / "avr", tree / "avr-fw"}) {
+        if (!fs::is_directory(dir, ec)) continue;
+        for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+            if (it->path().filename() == "driftlab_fw.hex") return it->path().string();
+        }
     }
     return {};
 }

@@ -27,7 +27,8 @@ std::vector<std::string> avrdude_arguments(const FlashRequest& request);
 std::string find_in_path(const std::string& program, const std::string& path_env);
 
 /// The firmware image of the AVR build next to the native build that holds `exe_path`
-/// (build/native/bin/driftlab -> build/avr/**/driftlab_fw.hex); empty when there is none.
+/// (build/native/bin/driftlab -> build/avr/**/driftlab_fw.hex), else the one the native build made itself
+/// (build/native/avr-fw/**/driftlab_fw.hex); empty when there is none.
 std::string default_hex_file(const std::string& exe_path);
 
 /// Checks the pieces, runs avrdude with its output on ours and returns when it succeeded.

@@ -98,13 +98,20 @@ TEST_F(FakeAvrdude, MissingAvrdudeMissingPortAndMissingImageAreClearErrors) {
     EXPECT_THROW(run_avrdude(no_hex, (dir_ / "bin").string()), DataError);
 }
 
-TEST_F(FakeAvrdude, DefaultImageIsFoundInTheSiblingAvrBuild) {
+// The AVR preset's image first; else the one a native build with avr-gcc made in its own tree (avr-fw), which is
+// what a user who ran the README's main command has.
+TEST_F(FakeAvrdude, DefaultImageIsFoundInTheSiblingAvrBuildElseTheNativeTreesOwn) {
     fs::create_directories(dir_ / "build/native/bin");
     fs::create_directories(dir_ / "build/avr/firmware/port/avr");
+    fs::create_directories(dir_ / "build/native/avr-fw/firmware");
     std::ofstream(dir_ / "build/native/bin/driftlab") << "";
     std::ofstream(dir_ / "build/avr/firmware/port/avr/driftlab_fw.hex") << ":00000001FF\n";
+    std::ofstream(dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex") << ":00000001FF\n";
     EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()),
               (dir_ / "build/avr/firmware/port/avr/driftlab_fw.hex").string());
     fs::remove_all(dir_ / "build/avr");
+    EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()),
+              (dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex").string());
+    fs::remove_all(dir_ / "build/native/avr-fw");
     EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()), "");
 }
