@@ -64,10 +64,21 @@ void check_rows(const std::vector<double>& raw, const std::vector<double>& level
     if (raw.size() != level.size() || raw.size() < 2) throw std::invalid_argument("raw codes and levels differ in length or are too short");
 }
 
+// The rows that hold a code: a negative one marks a row whose RAW frame was lost (the recorder writes -1), which no
+// converter makes and which would stretch the histogram over hundreds of empty codes.
+std::pair<std::vector<double>, std::vector<double>> coded_rows(const std::vector<double>& raw, const std::vector<double>& level) {
+    check_rows(raw, level);
+    std::pair<std::vector<double>, std::vector<double>> out;
+    for (std::size_t i = 0; i < raw.size(); ++i)
+        if (raw[i] >= 0.0) out.first.push_back(raw[i]), out.second.push_back(level[i]);
+    check_rows(out.first, out.second);
+    return out;
+}
+
 }  // namespace
 
-CodeDensity code_density(const std::vector<double>& raw, const std::vector<double>& level) {
-    check_rows(raw, level);
+CodeDensity code_density(const std::vector<double>& all_raw, const std::vector<double>& all_level) {
+    const auto [raw, level] = coded_rows(all_raw, all_level);
     Histograms h;
     const auto [lo, hi] = std::minmax_element(raw.begin(), raw.end());
     h.first_code = std::lround(*lo);
@@ -97,7 +108,8 @@ double code_density_excess(const std::vector<double>& raw, const std::vector<dou
     return d.codes < 3 ? 0.0 : std::log1p(d.g2 / static_cast<double>(d.codes - 2));
 }
 
-TransitionFit fit_transitions(const std::vector<double>& raw, const std::vector<double>& level, int min_each_side) {
+TransitionFit fit_transitions(const std::vector<double>& all_raw, const std::vector<double>& all_level, int min_each_side) {
+    const auto [raw, level] = coded_rows(all_raw, all_level);
     const double s0 = code_density(raw, level).s;
     // Per crossed transition, the rows within 4 s0 of its ideal place, pooled by level bin: (at or above j, below j).
     struct Crossing {

@@ -16,7 +16,8 @@ struct CodeDensity {
     int codes = 0;     ///< codes from the lowest to the highest seen
 };
 
-/// Fits s; needs raw.size() == level.size() >= 2 (std::invalid_argument otherwise). With fewer than three codes
+/// Fits s; needs raw.size() == level.size() and two rows with a code (std::invalid_argument otherwise). Rows with a
+/// negative code (a lost RAW frame, marked -1) are left out, here and in fit_transitions(). With fewer than three codes
 /// there is nothing to compare widths with: s is the rows' own spread and g2 is 0.
 CodeDensity code_density(const std::vector<double>& raw, const std::vector<double>& level);
 

@@ -43,6 +43,25 @@ TEST(CodeDensity, AnIdealConverterGivesADevianceNearItsDegreesOfFreedom) {
     EXPECT_LT(sum / 40.0, 1.4);
 }
 
+// A raw-mode log over a lossy link marks a row whose RAW frame was lost with code -1: those rows hold no code, and
+// the statistic and the transitions are those of the other rows exactly (with them, the histogram would run from -1
+// over hundreds of empty codes).
+TEST(CodeDensity, RowsOfALostRawFrameHoldNoCode) {
+    const Rows r = rows(1500, 1.05, 7);
+    Rows lossy = r;
+    for (std::size_t k : {3u, 400u, 401u, 1200u}) lossy.raw[k] = -1.0;
+    Rows kept;
+    for (std::size_t k = 0; k < r.raw.size(); ++k)
+        if (lossy.raw[k] >= 0.0) kept.raw.push_back(r.raw[k]), kept.level.push_back(r.level[k]);
+    EXPECT_EQ(code_density_excess(lossy.raw, lossy.level), code_density_excess(kept.raw, kept.level));
+    const CodeDensity d = code_density(lossy.raw, lossy.level);
+    EXPECT_EQ(d.codes, code_density(kept.raw, kept.level).codes);
+    EXPECT_LT(d.codes, 20);
+    const TransitionFit a = fit_transitions(lossy.raw, lossy.level), b = fit_transitions(kept.raw, kept.level);
+    ASSERT_EQ(a.transitions.size(), b.transitions.size());
+    for (std::size_t k = 0; k < a.transitions.size(); ++k) EXPECT_EQ(a.transitions[k].counts, b.transitions[k].counts);
+}
+
 TEST(CodeDensity, AWidenedCodeStandsOut) {
     double ideal = 0.0, moved = 0.0;
     for (unsigned seed = 1; seed <= 10; ++seed) {
