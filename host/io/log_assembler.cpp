@@ -213,6 +213,11 @@ void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, c
     row.optional_values = {static_cast<double>(tick), static_cast<double>(sample.sat_flags),
                            static_cast<double>(sample.n_window), static_cast<double>(sample.dropped)};
     if (config_->raw) {
+        // A RAW frame with a code the converter cannot make is kept out like a lost one (its CRC held; the fault is
+        // the firmware's), so that the log stays readable.
+        if (raw && !std::all_of(std::begin(raw->code), std::end(raw->code),
+                                [&](auto code) { return holds_raw_code(static_cast<double>(code), version_->adc_bits); }))
+            raw = nullptr;
         for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) {
             row.optional_values.push_back(raw ? static_cast<double>(raw->code[ch]) : kMissingRawCode);
         }

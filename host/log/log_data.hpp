@@ -40,6 +40,17 @@ inline std::optional<CountsReach> counts_reach(std::int64_t adc_bits) {
     return CountsReach{-full / 3.0 - 1.0, full * 4.0 / 3.0 + 1.0};
 }
 
+/// Whether `value` can stand in a raw-code column (`raw_<channel>`) of a converter of `adc_bits` bits: an integral
+/// code 0..2^bits - 1, or -1 where the row's RAW frame was lost. True when the resolution is outside 1..32 bits.
+inline bool holds_raw_code(double value, std::int64_t adc_bits) {
+    if (adc_bits < 1 || adc_bits > 32) return true;
+    const double full = static_cast<double>((std::int64_t{1} << adc_bits) - 1);
+    return value == -1.0 || (value >= 0.0 && value <= full && value == static_cast<double>(static_cast<std::int64_t>(value)));
+}
+
+/// A raw-code column: `raw_` and a channel name.
+inline bool is_raw_code_column(const std::string& name) { return name.rfind("raw_", 0) == 0; }
+
 /// A `# gap: text` line: the recorder lost the link; `before_row` is the index of the first row after it.
 struct LogGap {
     std::size_t before_row = 0;

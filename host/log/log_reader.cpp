@@ -22,6 +22,7 @@ struct ColumnPlan {
     std::size_t field_count = 0;
     std::array<std::size_t, kRequiredLogColumns.size()> required_field{};  // field index of t_s, seq, channels
     std::vector<std::pair<std::size_t, std::vector<double>*>> optional_fields;
+    std::vector<std::string> optional_names;  // same order
 };
 
 std::optional<std::pair<std::string, std::string>> split_comment_key_value(std::string_view body) {
@@ -53,8 +54,10 @@ ColumnPlan plan_columns(const std::vector<std::string_view>& names, LogData& log
     }
     for (const char* name : kOptionalLogColumns) {
         const auto it = std::find(seen.begin(), seen.end(), name);
-        if (it != seen.end())
+        if (it != seen.end()) {
             plan.optional_fields.emplace_back(static_cast<std::size_t>(it - seen.begin()), &log.optional_columns[name]);
+            plan.optional_names.emplace_back(name);
+        }
     }
     return plan;
 }
@@ -159,7 +162,7 @@ private:
         plan_ = plan_columns(fields_, log_, number);
         header_line_ = number;
         // Converter resolution from the metadata: what the channel columns can hold (a wild value is a corrupt row).
-        if (const auto bits = log_.metadata.get_int("adc_bits")) reach_ = counts_reach(*bits);
+        if (const auto bits = log_.metadata.get_int("adc_bits")) reach_ = counts_reach(*bits), adc_bits_ = *bits;
     }
 
     void row(std::string_view text, std::uint64_t number) {
@@ -190,8 +193,17 @@ private:
                                     " to " + format_double(reach_->high) + " counts)");
         }
         optional_scratch_.clear();
-        for (const auto& [field, column] : plan_->optional_fields)
-            optional_scratch_.push_back(parse_field(log_, number, fields_[field], field, "optional column"));
+        for (std::size_t i = 0; i < plan_->optional_fields.size(); ++i) {
+            const std::size_t field = plan_->optional_fields[i].first;
+            const std::string& name = plan_->optional_names[i];
+            optional_scratch_.push_back(parse_field(log_, number, fields_[field], field, name));
+            if (adc_bits_ && is_raw_code_column(name) && !holds_raw_code(optional_scratch_.back(), *adc_bits_))
+                throw DataError(log_.source_name, number,
+                                "field " + std::to_string(field + 1) + " (" + name + ") '" + std::string(trim_blanks(fields_[field])) +
+                                    "': not a code of the " + std::to_string(*adc_bits_) +
+                                    "-bit converter (0 to " + format_double(static_cast<double>((std::int64_t{1} << *adc_bits_) - 1)) +
+                                    ", or -1 for a lost RAW frame)");
+        }
         if (!log_.t_s.empty() && !(t_s > log_.t_s.back()))
             throw DataError(log_.source_name, number,
                             "t_s " + format_double(t_s) + " is not after the previous row's " +
@@ -216,6 +228,7 @@ private:
     std::optional<ColumnPlan> plan_;
     std::uint64_t header_line_ = 0;
     std::optional<CountsReach> reach_;
+    std::optional<std::int64_t> adc_bits_;
     std::vector<std::string_view> fields_;
     std::vector<double> optional_scratch_;
 };

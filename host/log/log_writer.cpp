@@ -29,7 +29,7 @@ LogWriter::LogWriter(const std::string& path, const LogMetadata& metadata, std::
         if (fd_ < 0) throw DeviceError(path_, std::string("cannot open for writing: ") + std::strerror(errno));
         owns_fd_ = true;
     }
-    if (const auto bits = metadata.get_int("adc_bits")) reach_ = counts_reach(*bits);
+    if (const auto bits = metadata.get_int("adc_bits")) reach_ = counts_reach(*bits), adc_bits_ = *bits;
     pending_ = "# driftlab-log: " + std::to_string(kLogFormatVersion) + "\n";
     for (const auto& [key, value] : metadata.entries()) pending_ += "# " + key + ": " + value + "\n";
     for (std::size_t i = 0; i < kRequiredLogColumns.size(); ++i) {
@@ -62,6 +62,10 @@ void LogWriter::write_row(const LogRow& row) {
             throw UsageError("log row at t_s=" + format_double(row.t_s) + " has " + kChannelNames[c] + " = " +
                              format_double(row.counts[c]) + " counts, beyond the converter's reach (" +
                              format_double(reach_->low) + " to " + format_double(reach_->high) + ")");
+    for (std::size_t i = 0; adc_bits_ && i < optional_columns_.size(); ++i)
+        if (is_raw_code_column(optional_columns_[i]) && !holds_raw_code(row.optional_values[i], *adc_bits_))
+            throw UsageError("log row at t_s=" + format_double(row.t_s) + " has " + optional_columns_[i] + " = " +
+                             format_double(row.optional_values[i]) + ", not a code of the converter");
     if (rows_ > 0 && !(row.t_s > last_t_s_))
         throw UsageError("log row t_s=" + format_double(row.t_s) + " does not follow the previous t_s=" +
                          format_double(last_t_s_));

@@ -42,8 +42,8 @@ public:
     /// Pending lines are written when this much time has passed since the last flush; zero = every line.
     void set_flush_interval(std::chrono::milliseconds interval) { flush_interval_ = interval; }
 
-    /// Appends one row. Throws UsageError on NaN/inf, a channel value beyond the converter's reach (when the
-    /// metadata holds `adc_bits`), a t_s not after the previous one, or a wrong number of optional values: the
+    /// Appends one row. Throws UsageError on NaN/inf, a channel value beyond the converter's reach or a raw code it
+    /// cannot make (when the metadata holds `adc_bits`), a t_s not after the previous one, or a wrong number of optional values: the
     /// writer never produces a file its reader rejects.
     void write_row(const LogRow& row);
     /// Appends `# gap: text` (text without newlines).
@@ -69,6 +69,7 @@ private:
     std::uint64_t rows_ = 0;
     double last_t_s_ = 0.0;
     std::optional<CountsReach> reach_;
+    std::optional<std::int64_t> adc_bits_;
 };
 
 }  // namespace driftlab::host

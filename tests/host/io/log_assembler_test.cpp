@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <unistd.h>
 
@@ -42,8 +43,8 @@ public:
         v.channel_count = kChannelCount;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_version(v, s, o, n); });
     }
-    void config() {
-        const proto::ConfigPayload c{100, 8, 8, 0, static_cast<std::uint8_t>(proto::OutputMode::stream), 0};
+    void config(std::uint8_t raw = 0) {
+        const proto::ConfigPayload c{100, 8, 8, 0, static_cast<std::uint8_t>(proto::OutputMode::stream), raw};
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_config(c, s, o, n); });
     }
     void ack() {
@@ -62,6 +63,13 @@ public:
         p.value_q8[0] = gyro_q8;
         p.n_window = 8;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_sample(p, s, o, n); });
+    }
+    void raw(std::uint32_t tick, std::uint16_t gyro_code) {
+        proto::RawPayload r{};
+        r.tick = tick;
+        for (auto& c : r.code) c = 500;
+        r.code[0] = gyro_code;
+        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_raw(r, s, o, n); });
     }
     void skip(std::uint16_t frames) { seq_ = static_cast<std::uint16_t>(seq_ + frames); }
     void event(const std::string& text) { a_.on_event(t_us_ += 1000, text); }
@@ -116,6 +124,24 @@ LogData recorded_across_a_reconnect(const std::string& name, std::uint32_t tick)
     return log;
 }
 
+// A recording of the frames `send` makes after the handshake (VERSION, CONFIG with `raw`, start), read back.
+LogData recorded(const std::string& name, std::uint8_t raw, const std::function<void(Board&)>& send, AssemblyStats& stats) {
+    const std::string path = temp_log(name);
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", name + ".cap"}});
+        Board b(a);
+        b.version();
+        b.config(raw);
+        b.event("start");
+        send(b);
+        a.finish();
+        stats = a.stats();
+    }
+    LogData log = read_log(path);
+    fs::remove(path);
+    return log;
+}
+
 }  // namespace
 
 TEST(LogAssembler, AnOutputStreamedDuringTheReconnectHandshakeIsARowAfterTheGap) {
@@ -146,25 +172,30 @@ TEST(LogAssembler, AFirmwareRestartDuringTheGapIsMarkedAfterTheLinkLoss) {
 TEST(LogAssembler, ASampleBeyondTheConvertersReachIsSkippedAndCounted) {
     // A frame whose CRC holds can still carry a value no 10-bit estimate reaches (a firmware fault): the rows around
     // it are kept, it is counted, and the log reads back.
-    const std::string path = temp_log("reach.csv");
     AssemblyStats stats;
-    {
-        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "reach.cap"}});
-        Board b(a);
-        b.version();
-        b.config();
-        b.event("start");
+    const LogData log = recorded("reach.csv", 0, [](Board& b) {
         b.sample(1 * kTicksPerOutput);
         b.sample(2 * kTicksPerOutput, 1366 * 256);  // beyond 4/3 of full scale
         b.sample(3 * kTicksPerOutput, -341 * 256);  // within: an order-1 estimate's undershoot
-        a.finish();
-        stats = a.stats();
-    }
-    const LogData log = read_log(path);
-    fs::remove(path);
+    }, stats);
     EXPECT_EQ(stats.unreachable_samples, 1u);
     EXPECT_EQ(stats.rows, 2u);
     ASSERT_EQ(log.size(), 2u);
     EXPECT_DOUBLE_EQ(log.t_s[1], 0.3);
     EXPECT_EQ(log.channel(Channel::gyro)[1], -341.0);
+}
+
+TEST(LogAssembler, ARawFrameWithACodeTheConverterCannotMakeIsKeptOutLikeALostOne) {
+    AssemblyStats stats;
+    const LogData log = recorded("rawreach.csv", 1, [](Board& b) {
+        b.sample(1 * kTicksPerOutput);
+        b.raw(1 * kTicksPerOutput, 1023);  // the 10-bit converter's top code
+        b.sample(2 * kTicksPerOutput);
+        b.raw(2 * kTicksPerOutput, 1024);  // no 10-bit code
+        b.sample(3 * kTicksPerOutput);
+    }, stats);
+    ASSERT_EQ(log.size(), 3u);
+    EXPECT_EQ(log.optional_columns.at("raw_gyro"), (std::vector<double>{1023.0, -1.0, -1.0}));
+    EXPECT_EQ(log.optional_columns.at("flags"), (std::vector<double>{0.0, kFlagRawMissing, kFlagRawMissing}));
+    EXPECT_EQ(stats.raw_missing, 2u);  // the unmakeable code and the last row's RAW that never came
 }

@@ -128,6 +128,13 @@ TEST(LogIo, WriterRefusesRowsItsReaderWouldReject) {
         r.t_s = 3.0;
         r.counts[2] = 1365.5;
         EXPECT_THROW(bounded.write_row(r), UsageError);  // beyond the 10-bit converter's reach
+        LogWriter with_raw(temp_path("x.csv"), m, {"raw_gyro"});
+        r.counts[2] = 0.0;
+        r.optional_values = {-1.0};
+        with_raw.write_row(r);
+        r.t_s = 4.0;
+        r.optional_values = {1024.0};
+        EXPECT_THROW(with_raw.write_row(r), UsageError);  // no 10-bit code
     }
     w.close();
     std::filesystem::remove(path);
@@ -195,6 +202,13 @@ TEST(LogIo, AValueBeyondTheConvertersReachIsRejectedWhenTheLogNamesItsResolution
     EXPECT_NE(rejection("# driftlab-log: 1\n# adc_bits: 12\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,5461.5\n")
                   .find("field 6 (accel_z) '5461.5': beyond the 12-bit converter's reach (-1366 to 5461 counts)"),
               std::string::npos);
+    // Raw codes are the converter's own: 0 to 2^bits - 1 and integral, or -1 where the row's RAW frame was lost.
+    const std::string raw_head = "# driftlab-log: 1\n# adc_bits: 10\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro\n";
+    EXPECT_EQ(parse(raw_head + "0,0,1,2,3,4,1023\n1,2,1,2,3,4,-1\n").optional_columns.at("raw_gyro")[1], -1.0);
+    EXPECT_NE(rejection(raw_head + "0,0,1,2,3,4,1024\n")
+                  .find("mem.csv:4: field 7 (raw_gyro) '1024': not a code of the 10-bit converter (0 to 1023, or -1 for a lost RAW frame)"),
+              std::string::npos);
+    EXPECT_NE(rejection(raw_head + "0,0,1,2,3,4,511.5\n").find("field 7 (raw_gyro) '511.5'"), std::string::npos);
     // Without the resolution no bound is known: the value is kept.
     EXPECT_EQ(parse(kHead + "0,0,1e9,2,3,4\n").channel(Channel::gyro)[0], 1e9);
 }
