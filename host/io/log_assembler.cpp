@@ -11,7 +11,6 @@ namespace {
 
 constexpr double kQ8PerCount = 256.0;
 // Codes are 0..1023; -1 marks a raw code that never arrived.
-constexpr double kMissingRawCode = -1.0;
 
 std::string header_value(const CaptureHeader& header, const std::string& key) {
     for (const auto& [k, v] : header) {
@@ -205,8 +204,8 @@ void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, c
     for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) row.counts[ch] = sample.value_q8[ch] / kQ8PerCount;
     // A frame can pass its CRC and still carry a value no converter of this resolution makes (a firmware fault):
     // skipped and counted, as the reader would reject the row.
-    const auto reach = counts_reach(version_->adc_bits);
-    if (reach && !std::all_of(row.counts.begin(), row.counts.end(), [&](double v) { return reach->holds(v); })) {
+    const auto range = converter_range(version_->adc_bits);
+    if (range && !std::all_of(row.counts.begin(), row.counts.end(), [&](double v) { return range->holds_estimate(v); })) {
         ++stats_.unreachable_samples;
         return;
     }
@@ -215,11 +214,11 @@ void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, c
     if (config_->raw) {
         // A RAW frame with a code the converter cannot make is kept out like a lost one (its CRC held; the fault is
         // the firmware's), so that the log stays readable.
-        if (raw && !std::all_of(std::begin(raw->code), std::end(raw->code),
-                                [&](auto code) { return holds_raw_code(static_cast<double>(code), version_->adc_bits); }))
+        if (raw && range && !std::all_of(std::begin(raw->code), std::end(raw->code),
+                                         [&](auto code) { return range->holds_raw_code(static_cast<double>(code)); }))
             raw = nullptr;
         for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) {
-            row.optional_values.push_back(raw ? static_cast<double>(raw->code[ch]) : kMissingRawCode);
+            row.optional_values.push_back(raw ? static_cast<double>(raw->code[ch]) : kLostRawCode);
         }
         row.optional_values.push_back(raw ? 0.0 : static_cast<double>(kFlagRawMissing));
         if (!raw) ++stats_.raw_missing;

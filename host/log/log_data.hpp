@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -26,26 +27,26 @@ inline constexpr std::array<const char*, 2 + kChannelCount> kRequiredLogColumns 
 inline constexpr std::array<const char*, 9> kOptionalLogColumns = {
     "raw_gyro", "raw_accel_x", "raw_accel_y", "raw_accel_z", "tick", "flags", "sat_flags", "n_window", "dropped"};
 
-/// The channel values a converter of `adc_bits` bits can produce, [counts]: the least-squares estimate of codes
-/// 0..2^bits - 1. A fitted line (order 1) is read at the window's end, where its weights sum to at most 4/3 above
-/// zero and -1/3 below, so the estimate reaches a third of full scale past either end; one count more for Q8
-/// rounding. None for a resolution outside 1..32 bits (no bound is known).
-struct CountsReach {
-    double low = 0.0, high = 0.0;
-    bool holds(double counts) const { return counts >= low && counts <= high; }
-};
-inline std::optional<CountsReach> counts_reach(std::int64_t adc_bits) {
-    if (adc_bits < 1 || adc_bits > 32) return std::nullopt;
-    const double full = static_cast<double>((std::int64_t{1} << adc_bits) - 1);
-    return CountsReach{-full / 3.0 - 1.0, full * 4.0 / 3.0 + 1.0};
-}
+/// What a raw-code column holds where the row's RAW frame was lost.
+inline constexpr double kLostRawCode = -1.0;
 
-/// Whether `value` can stand in a raw-code column (`raw_<channel>`) of a converter of `adc_bits` bits: an integral
-/// code 0..2^bits - 1, or -1 where the row's RAW frame was lost. True when the resolution is outside 1..32 bits.
-inline bool holds_raw_code(double value, std::int64_t adc_bits) {
-    if (adc_bits < 1 || adc_bits > 32) return true;
-    const double full = static_cast<double>((std::int64_t{1} << adc_bits) - 1);
-    return value == -1.0 || (value >= 0.0 && value <= full && value == static_cast<double>(static_cast<std::int64_t>(value)));
+/// What a converter of `bits` bits can put in a log (docs/log-format.md §4). Its channel values are the least-squares
+/// estimate of codes 0..full: a fitted line (order 1) is read at the window's end, where its weights sum to at most
+/// 4/3 above zero and -1/3 below, so the estimate reaches a third of full scale past either end; one count more for
+/// Q8 rounding. Its raw codes are integral codes 0..full, or kLostRawCode.
+struct ConverterRange {
+    int bits = 0;
+    double full = 0.0;  ///< the top code, 2^bits - 1
+    double estimate_low() const { return -full / 3.0 - 1.0; }
+    double estimate_high() const { return full * 4.0 / 3.0 + 1.0; }
+    bool holds_estimate(double counts) const { return counts >= estimate_low() && counts <= estimate_high(); }
+    bool holds_raw_code(double v) const { return v == kLostRawCode || (v >= 0.0 && v <= full && v == std::floor(v)); }
+};
+
+/// The range of a converter of `adc_bits` bits; none for a resolution outside 1..32 bits (no bound is known).
+inline std::optional<ConverterRange> converter_range(std::int64_t adc_bits) {
+    if (adc_bits < 1 || adc_bits > 32) return std::nullopt;
+    return ConverterRange{static_cast<int>(adc_bits), static_cast<double>((std::int64_t{1} << adc_bits) - 1)};
 }
 
 /// A raw-code column: `raw_` and a channel name.

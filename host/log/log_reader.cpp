@@ -162,7 +162,7 @@ private:
         plan_ = plan_columns(fields_, log_, number);
         header_line_ = number;
         // Converter resolution from the metadata: what the channel columns can hold (a wild value is a corrupt row).
-        if (const auto bits = log_.metadata.get_int("adc_bits")) reach_ = counts_reach(*bits), adc_bits_ = *bits;
+        if (const auto bits = log_.metadata.get_int("adc_bits")) range_ = converter_range(*bits);
     }
 
     void row(std::string_view text, std::uint64_t number) {
@@ -185,24 +185,24 @@ private:
         std::array<double, kChannelCount> values{};
         for (std::size_t c = 0; c < kChannelCount; ++c) {
             values[c] = parse_field(log_, number, fields_[req[2 + c]], req[2 + c], kRequiredLogColumns[2 + c]);
-            if (reach_ && !reach_->holds(values[c]))
+            if (range_ && !range_->holds_estimate(values[c]))
                 throw DataError(log_.source_name, number,
                                 "field " + std::to_string(req[2 + c] + 1) + " (" + kRequiredLogColumns[2 + c] + ") '" +
                                     std::string(trim_blanks(fields_[req[2 + c]])) + "': beyond the " +
-                                    *log_.metadata.get("adc_bits") + "-bit converter's reach (" + format_double(reach_->low) +
-                                    " to " + format_double(reach_->high) + " counts)");
+                                    std::to_string(range_->bits) + "-bit converter's reach (" +
+                                    format_double(range_->estimate_low()) + " to " + format_double(range_->estimate_high()) +
+                                    " counts)");
         }
         optional_scratch_.clear();
         for (std::size_t i = 0; i < plan_->optional_fields.size(); ++i) {
             const std::size_t field = plan_->optional_fields[i].first;
             const std::string& name = plan_->optional_names[i];
             optional_scratch_.push_back(parse_field(log_, number, fields_[field], field, name));
-            if (adc_bits_ && is_raw_code_column(name) && !holds_raw_code(optional_scratch_.back(), *adc_bits_))
+            if (range_ && is_raw_code_column(name) && !range_->holds_raw_code(optional_scratch_.back()))
                 throw DataError(log_.source_name, number,
                                 "field " + std::to_string(field + 1) + " (" + name + ") '" + std::string(trim_blanks(fields_[field])) +
-                                    "': not a code of the " + std::to_string(*adc_bits_) +
-                                    "-bit converter (0 to " + format_double(static_cast<double>((std::int64_t{1} << *adc_bits_) - 1)) +
-                                    ", or -1 for a lost RAW frame)");
+                                    "': not a code of the " + std::to_string(range_->bits) + "-bit converter (0 to " +
+                                    format_double(range_->full) + ", or " + format_double(kLostRawCode) + " for a lost RAW frame)");
         }
         if (!log_.t_s.empty() && !(t_s > log_.t_s.back()))
             throw DataError(log_.source_name, number,
@@ -227,8 +227,7 @@ private:
     bool seen_magic_ = false;
     std::optional<ColumnPlan> plan_;
     std::uint64_t header_line_ = 0;
-    std::optional<CountsReach> reach_;
-    std::optional<std::int64_t> adc_bits_;
+    std::optional<ConverterRange> range_;  // from the metadata's adc_bits
     std::vector<std::string_view> fields_;
     std::vector<double> optional_scratch_;
 };

@@ -29,7 +29,7 @@ LogWriter::LogWriter(const std::string& path, const LogMetadata& metadata, std::
         if (fd_ < 0) throw DeviceError(path_, std::string("cannot open for writing: ") + std::strerror(errno));
         owns_fd_ = true;
     }
-    if (const auto bits = metadata.get_int("adc_bits")) reach_ = counts_reach(*bits), adc_bits_ = *bits;
+    if (const auto bits = metadata.get_int("adc_bits")) range_ = converter_range(*bits);
     pending_ = "# driftlab-log: " + std::to_string(kLogFormatVersion) + "\n";
     for (const auto& [key, value] : metadata.entries()) pending_ += "# " + key + ": " + value + "\n";
     for (std::size_t i = 0; i < kRequiredLogColumns.size(); ++i) {
@@ -57,13 +57,13 @@ void LogWriter::write_row(const LogRow& row) {
     if (!std::isfinite(row.t_s) || !std::all_of(row.counts.begin(), row.counts.end(), finite) ||
         !std::all_of(row.optional_values.begin(), row.optional_values.end(), finite))
         throw UsageError("log row at t_s=" + format_double(row.t_s) + " has a NaN or infinite value");
-    for (std::size_t c = 0; reach_ && c < kChannelCount; ++c)
-        if (!reach_->holds(row.counts[c]))
+    for (std::size_t c = 0; range_ && c < kChannelCount; ++c)
+        if (!range_->holds_estimate(row.counts[c]))
             throw UsageError("log row at t_s=" + format_double(row.t_s) + " has " + kChannelNames[c] + " = " +
                              format_double(row.counts[c]) + " counts, beyond the converter's reach (" +
-                             format_double(reach_->low) + " to " + format_double(reach_->high) + ")");
-    for (std::size_t i = 0; adc_bits_ && i < optional_columns_.size(); ++i)
-        if (is_raw_code_column(optional_columns_[i]) && !holds_raw_code(row.optional_values[i], *adc_bits_))
+                             format_double(range_->estimate_low()) + " to " + format_double(range_->estimate_high()) + ")");
+    for (std::size_t i = 0; range_ && i < optional_columns_.size(); ++i)
+        if (is_raw_code_column(optional_columns_[i]) && !range_->holds_raw_code(row.optional_values[i]))
             throw UsageError("log row at t_s=" + format_double(row.t_s) + " has " + optional_columns_[i] + " = " +
                              format_double(row.optional_values[i]) + ", not a code of the converter");
     if (rows_ > 0 && !(row.t_s > last_t_s_))

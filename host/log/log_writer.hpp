@@ -68,8 +68,7 @@ private:
     std::chrono::steady_clock::time_point last_flush_;
     std::uint64_t rows_ = 0;
     double last_t_s_ = 0.0;
-    std::optional<CountsReach> reach_;
-    std::optional<std::int64_t> adc_bits_;
+    std::optional<ConverterRange> range_;  // from the metadata's adc_bits
 };
 
 }  // namespace driftlab::host
