@@ -16,6 +16,12 @@ namespace driftlab::host::io {
 namespace {
 
 constexpr std::size_t kRecordHeaderSize = 1 + 8 + 4;
+
+bool known_kind(std::uint8_t kind) {
+    return kind == static_cast<std::uint8_t>(CaptureKind::rx) || kind == static_cast<std::uint8_t>(CaptureKind::tx) ||
+           kind == static_cast<std::uint8_t>(CaptureKind::event);
+}
+
 constexpr char kMagic[] = "driftlab-capture: 1";
 
 void put_le(std::string& out, std::uint64_t v, int bytes) {
@@ -117,13 +123,12 @@ std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::u
     constexpr std::uint64_t kMaxStepUs = 86'400'000'000ULL;
     if (data_.size() - offset < kRecordHeaderSize) return std::nullopt;
     const std::uint8_t* p = data_.data() + offset;
-    const auto kind = static_cast<CaptureKind>(p[0]);
-    if (kind != CaptureKind::rx && kind != CaptureKind::tx && kind != CaptureKind::event) return std::nullopt;
+    if (!known_kind(p[0])) return std::nullopt;
     const std::uint64_t t_us = get_le(p + 1, 8);
     const std::uint64_t len = get_le(p + 9, 4);
     if (t_us < after_us || t_us - after_us > kMaxStepUs || data_.size() - offset - kRecordHeaderSize < len) return std::nullopt;
     CaptureRecord rec;
-    rec.kind = kind;
+    rec.kind = static_cast<CaptureKind>(p[0]);
     rec.t_us = t_us;
     rec.offset = offset;
     rec.payload.assign(p + kRecordHeaderSize, p + kRecordHeaderSize + len);
@@ -148,8 +153,7 @@ std::optional<CaptureRecord> CaptureReader::next() {
     while (resume < data_.size() && !records_resume_at(resume)) ++resume;
     if (resume == data_.size()) {
         // Nothing whole follows: a record cut by a kill (its kind known, its length past the end), or a damaged tail.
-        const std::uint8_t kind = data_[pos_];
-        if (kind == 'R' || kind == 'T' || kind == 'E') {
+        if (known_kind(data_[pos_])) {
             truncated_at_ = pos_;
             return std::nullopt;
         }
