@@ -75,10 +75,8 @@ std::pair<std::vector<double>, std::vector<double>> coded_rows(const std::vector
     return out;
 }
 
-}  // namespace
-
-CodeDensity code_density(const std::vector<double>& all_raw, const std::vector<double>& all_level) {
-    const auto [raw, level] = coded_rows(all_raw, all_level);
+// code_density() of rows that all hold a code.
+CodeDensity density_of_coded(const std::vector<double>& raw, const std::vector<double>& level) {
     Histograms h;
     const auto [lo, hi] = std::minmax_element(raw.begin(), raw.end());
     h.first_code = std::lround(*lo);
@@ -103,6 +101,13 @@ CodeDensity code_density(const std::vector<double>& all_raw, const std::vector<d
     return out;
 }
 
+}  // namespace
+
+CodeDensity code_density(const std::vector<double>& raw, const std::vector<double>& level) {
+    const auto [coded_raw, coded_level] = coded_rows(raw, level);
+    return density_of_coded(coded_raw, coded_level);
+}
+
 double code_density_excess(const std::vector<double>& raw, const std::vector<double>& level) {
     const CodeDensity d = code_density(raw, level);
     return d.codes < 3 ? 0.0 : std::log1p(d.g2 / static_cast<double>(d.codes - 2));
@@ -110,7 +115,7 @@ double code_density_excess(const std::vector<double>& raw, const std::vector<dou
 
 TransitionFit fit_transitions(const std::vector<double>& all_raw, const std::vector<double>& all_level, int min_each_side) {
     const auto [raw, level] = coded_rows(all_raw, all_level);
-    const double s0 = code_density(raw, level).s;
+    const double s0 = density_of_coded(raw, level).s;
     // Per crossed transition, the rows within 4 s0 of its ideal place, pooled by level bin: (at or above j, below j).
     struct Crossing {
         long code;
