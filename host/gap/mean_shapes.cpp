@@ -243,4 +243,13 @@ ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, cons
     return out;
 }
 
+Eigen::MatrixXd eq1_tangent(const std::vector<double>& t_s, double tau_s) {
+    Eigen::MatrixXd x(static_cast<Eigen::Index>(t_s.size()), 3);
+    for (std::size_t k = 0; k < t_s.size(); ++k) {
+        const double u = t_s[k] / tau_s, e = std::exp(-u);
+        x.row(static_cast<Eigen::Index>(k)) << 1.0, e, u * e;
+    }
+    return x;
+}
+
 }  // namespace driftlab::host::gap

@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include <Eigen/Dense>
+
 namespace driftlab::host::gap {
 
 /// y = C1 (1 - e^{-t/T}) + C3 (1 - e^{-t/T2}) + C2, with T2 >= 2 T (E1 on top of eq. 1; closer time constants are one
@@ -28,6 +30,11 @@ struct ExponentialAndSine {
 /// level-step test's steps with eq. 1 fitted again beside them.
 std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t cut1,
                                            std::size_t cut2);
+
+/// The directions in which a least-squares fit of eq. 1 with time constant T moves the mean: 1, e^{-t/T} and
+/// (t/T) e^{-t/T} (its derivative in T), one row per sample. What such a fit absorbs of the noise lies in their span
+/// (AbsorbedColumns, whittle.hpp).
+Eigen::MatrixXd eq1_tangent(const std::vector<double>& t_s, double tau_s);
 
 /// Fits the first `n` samples of (t_s, y).
 TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);

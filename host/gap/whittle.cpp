@@ -32,7 +32,39 @@ std::size_t smooth_length_at_most(std::size_t n) {
     return best;
 }
 
-PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part) {
+Eigen::MatrixXd orthonormal_basis(const Eigen::MatrixXd& x) {
+    return Eigen::HouseholderQR<Eigen::MatrixXd>(x).householderQ() * Eigen::MatrixXd::Identity(x.rows(), x.cols());
+}
+
+namespace {
+
+// The fitted columns' share of the differences (whittle.hpp, AbsorbedColumns), for the part's taper.
+AbsorbedColumns absorbed_columns(const Eigen::MatrixXd& x, const PartPeriodogram& p) {
+    const auto samples = static_cast<Eigen::Index>(x.rows());
+    const Eigen::MatrixXd q = orthonormal_basis(x);
+    AbsorbedColumns a;
+    a.differences = static_cast<std::size_t>(samples - 1);
+    Eigen::FFT<double> fft;
+    std::vector<std::complex<double>> spec;
+    for (Eigen::Index k = 0; k < q.cols(); ++k) {
+        std::vector<double> v(p.length);
+        for (std::size_t t = 0; t < p.length; ++t) {
+            const auto i = static_cast<Eigen::Index>(t);
+            v[t] = p.taper[t] * (q(i + 1, k) - q(i, k));
+        }
+        fft.fwd(spec, v);
+        a.alpha.emplace_back(spec.begin() + 1, spec.begin() + 1 + static_cast<std::ptrdiff_t>(p.power.size()));
+        std::vector<double> b(a.differences);
+        double tail = 0.0;
+        for (std::size_t j = a.differences; j-- > 0;) b[j] = tail += q(static_cast<Eigen::Index>(j + 1), k);
+        a.load.push_back(std::move(b));
+    }
+    return a;
+}
+
+}  // namespace
+
+PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part, const Eigen::MatrixXd* absorbed) {
     if (e.size() < 2) throw std::invalid_argument("part_periodogram: too few samples");
     PartPeriodogram p;
     p.length = smooth_length_at_most(e.size() - 1);
@@ -73,6 +105,10 @@ PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector
     fft.inv(overlap, spec);
     p.mask_overlap.resize(p.length);
     for (std::size_t tau = 0; tau < p.length; ++tau) p.mask_overlap[tau] = std::max(0.0, overlap[tau]) / h2;
+    h.resize(p.length);
+    p.taper = h;
+    p.taper_energy = h2;
+    if (absorbed) p.absorbed = absorbed_columns(*absorbed, p);
     return p;
 }
 
@@ -118,6 +154,34 @@ std::vector<double> differenced_autocovariance(const OutputSpectrum& model, cons
     return c;
 }
 
+std::vector<double> differenced_covariance_times(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                                 const std::vector<double>& v) {
+    const std::size_t n = v.size();
+    std::vector<double> out(n, model.walk_increment_variance);
+    for (std::size_t t = 0; t < n; ++t) out[t] *= v[t];
+    // The floor's differences are a short moving average: its few lags directly.
+    const std::vector<double> c_floor = differenced_autocovariance({model.white, {}, 0.0}, floor_acov, floor_acov.size() + 1);
+    for (std::size_t t = 0; t < n; ++t)
+        for (std::size_t lag = 0; lag < c_floor.size(); ++lag) {
+            if (lag == 0) {
+                out[t] += c_floor[0] * v[t];
+                continue;
+            }
+            if (t >= lag) out[t] += c_floor[lag] * v[t - lag];
+            if (t + lag < n) out[t] += c_floor[lag] * v[t + lag];
+        }
+    // An AR(1)'s geometric lags by one recursion each way: sum_{s<t} phi^(t-s-1) v_s and sum_{s>t} phi^(s-t-1) v_s.
+    std::vector<double> before(n), after(n);
+    for (const auto& a : model.ar1) {
+        for (std::size_t t = 1; t < n; ++t) before[t] = a.phi * before[t - 1] + v[t - 1];
+        after[n - 1] = 0.0;
+        for (std::size_t t = n - 1; t-- > 0;) after[t] = a.phi * after[t + 1] + v[t + 1];
+        const double centre = 2.0 * a.variance * (1.0 - a.phi), side = a.variance * (1.0 - a.phi) * (1.0 - a.phi);
+        for (std::size_t t = 0; t < n; ++t) out[t] += centre * v[t] - side * (before[t] + after[t]);
+    }
+    return out;
+}
+
 std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov, std::size_t n) {
     std::vector<double> s(n);
     for (std::size_t j = 0; j < n; ++j) {
@@ -140,7 +204,38 @@ std::vector<double> expected_periodogram(const OutputSpectrum& model, const std:
     std::vector<std::complex<double>> spec;
     fft.fwd(spec, b);
     std::vector<double> out(p.power.size());
-    for (std::size_t j = 0; j < out.size(); ++j) out[j] = std::max(2.0 * spec[j + 1].real() - b[0], 1e-300);
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] = 2.0 * spec[j + 1].real() - b[0];
+    if (p.absorbed) {
+        const AbsorbedColumns& a = *p.absorbed;
+        const std::size_t k_count = a.load.size();
+        std::vector<std::vector<std::complex<double>>> beta(k_count);
+        Eigen::MatrixXd g(k_count, k_count);
+        std::vector<std::vector<double>> cb(k_count);
+        for (std::size_t k = 0; k < k_count; ++k) {
+            cb[k] = differenced_covariance_times(model, floor_acov, a.load[k]);
+            std::vector<double> v(p.length);
+            for (std::size_t t = 0; t < p.length; ++t) v[t] = p.taper[t] * cb[k][t];
+            fft.fwd(spec, v);
+            beta[k].assign(spec.begin() + 1, spec.begin() + 1 + static_cast<std::ptrdiff_t>(out.size()));
+        }
+        for (std::size_t k = 0; k < k_count; ++k)
+            for (std::size_t l = 0; l < k_count; ++l) {
+                double sum = 0.0;
+                for (std::size_t j = 0; j < a.differences; ++j) sum += a.load[k][j] * cb[l][j];
+                g(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l)) = sum;
+            }
+        for (std::size_t j = 0; j < out.size(); ++j) {
+            double cross = 0.0, quadratic = 0.0;
+            for (std::size_t k = 0; k < k_count; ++k) {
+                cross += (std::conj(a.alpha[k][j]) * beta[k][j]).real();
+                for (std::size_t l = 0; l < k_count; ++l)
+                    quadratic += (std::conj(a.alpha[k][j]) * a.alpha[l][j]).real() *
+                                 g(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l));
+            }
+            out[j] += (quadratic - 2.0 * cross) / p.taper_energy;
+        }
+    }
+    for (double& v : out) v = std::max(v, 1e-300);
     return out;
 }
 

@@ -8,12 +8,26 @@
 // Whittle, Ark. Mat. 2, 1953. docs/gap.md §Spectral likelihood.
 #pragma once
 
+#include <complex>
 #include <cstddef>
+#include <optional>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "host/gap/gap_model.hpp"
 
 namespace driftlab::host::gap {
+
+/// What a least-squares fit of the mean took out of the residual, as the expected periodogram needs it. The residual
+/// is e = (I - P) x with P the projection onto columns X that hold the constant, so its differences are
+/// d = delta - A B' delta (delta the noise's differences, A = D X (X'X)^-1, b_k(j) = sum_{s > j} X_sk); a slow
+/// process loses its lowest frequencies to the fit, and a model that ignores that reads a random walk as flicker.
+struct AbsorbedColumns {
+    std::size_t differences = 0;                               ///< N - 1: every difference of the log
+    std::vector<std::vector<std::complex<double>>> alpha;      ///< sum_t h_t A_tk e^{-i w_j t}, j = 1..(n-1)/2
+    std::vector<std::vector<double>> load;                     ///< b_k, length `differences`
+};
 
 /// The differences of one part of a residual, ready for the likelihood.
 struct PartPeriodogram {
@@ -21,12 +35,21 @@ struct PartPeriodogram {
     double count = 0.0;                  ///< differences inside the part
     std::vector<double> power;           ///< |sum_t m_t d_t e^{-i w_j t}|^2 / count at w_j = 2 pi j / n, j = 1..(n-1)/2
     std::vector<double> mask_overlap;    ///< sum_t m_t m_{t+tau} / count, tau = 0..n-1
+    std::vector<double> taper;           ///< m_t, t = 0..n-1 (the part's mask times its taper)
+    double taper_energy = 0.0;           ///< sum_t m_t^2
+    std::optional<AbsorbedColumns> absorbed;  ///< the mean fit's columns, when the residual is one's
 };
 
 /// The part's periodogram: d_t = e[t+1] - e[t] where both samples lie in the part (`in_part`), 0 elsewhere; the
-/// series is trimmed at its end to a length whose prime factors are 2, 3 and 5. Throws std::invalid_argument
-/// when fewer than 16 differences lie in the part.
-PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part);
+/// series is trimmed at its end to a length whose prime factors are 2, 3 and 5. `absorbed` (optional, one row per
+/// sample, the constant in its span) are the columns a least-squares fit of the mean removed from `e`. Throws
+/// std::invalid_argument when fewer than 16 differences lie in the part.
+PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part,
+                                 const Eigen::MatrixXd* absorbed = nullptr);
+
+/// An orthonormal basis of x's columns (the thin Q of its QR): the same span, its projection q q', without the
+/// near-collinearity of eq. 1's exponentials.
+Eigen::MatrixXd orthonormal_basis(const Eigen::MatrixXd& x);
 
 /// Largest length <= n whose prime factors are 2, 3 and 5 (an FFT length).
 std::size_t smooth_length_at_most(std::size_t n);
@@ -57,12 +80,20 @@ struct OutputSpectrum {
 std::vector<double> differenced_autocovariance(const OutputSpectrum& model, const std::vector<double>& floor_acov,
                                                std::size_t n);
 
+/// C v for C the covariance of the model's first differences over v.size() consecutive lags (the Toeplitz matrix of
+/// differenced_autocovariance()), in O(n) per component: the floor's few lags directly, each AR(1) by a recursion
+/// each way, the walk's white increments as a multiple of v.
+std::vector<double> differenced_covariance_times(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                                 const std::vector<double>& v);
+
 /// The spectral density of the model's first differences at w_j = 2 pi j / n, j = 0..n-1 (the Fourier transform
 /// of differenced_autocovariance(), in closed form: an AR(1) gives 2(1 - cos w) v (1 - phi^2) / (1 - 2 phi cos w
 /// + phi^2), the walk its increment variance).
 std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov, std::size_t n);
 
-/// The expected value of `p.power` under the model: sum_tau mask_overlap(tau) c(tau) e^{-i w_j tau}.
+/// The expected value of `p.power` under the model: sum_tau mask_overlap(tau) c(tau) e^{-i w_j tau}, less what the
+/// mean fit absorbed when `p.absorbed` is set (with C the differences' covariance, per frequency
+/// -2 Re sum_k conj(alpha_k) F(C b_k) + alpha^H B'CB alpha, over the taper energy).
 std::vector<double> expected_periodogram(const OutputSpectrum& model, const std::vector<double>& floor_acov,
                                          const PartPeriodogram& p);
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "host/gap/mean_shapes.hpp"
 #include "host/gap/whittle.hpp"
 
 namespace driftlab::host::gap {
@@ -48,6 +49,24 @@ TEST(Whittle, DifferencedAutocovarianceOfAnAr1IsTheDifferenceOfItsAutocovariance
     EXPECT_NEAR(cw[0], 6.5, 1e-12);
     EXPECT_NEAR(cw[1], -3.0, 1e-12);
     EXPECT_NEAR(cw[2], 0.0, 1e-12);
+}
+
+TEST(Whittle, CovarianceTimesAVectorIsTheToeplitzProduct) {
+    OutputSpectrum m;
+    m.white = 1.7;
+    m.ar1 = {{2.5, 0.9}, {0.4, 0.3}};
+    m.walk_increment_variance = 0.05;
+    const std::vector<double> floor{0.125, 0.0625};  // window 8 over 4 conversions per output
+    const std::size_t n = 60;
+    std::vector<double> v(n);
+    for (std::size_t t = 0; t < n; ++t) v[t] = std::sin(0.37 * static_cast<double>(t)) + (t == 17 ? 3.0 : 0.0);
+    const auto c = differenced_autocovariance(m, floor, n);
+    const auto fast = differenced_covariance_times(m, floor, v);
+    for (std::size_t t = 0; t < n; ++t) {
+        double direct = 0.0;
+        for (std::size_t s2 = 0; s2 < n; ++s2) direct += c[t > s2 ? t - s2 : s2 - t] * v[s2];
+        EXPECT_NEAR(fast[t], direct, 1e-12) << t;
+    }
 }
 
 TEST(Whittle, DensityAveragesToTheDifferencesVariance) {
@@ -97,6 +116,61 @@ TEST(Whittle, ExpectedPeriodogramOfAMaskedSeriesMatchesTheMonteCarloAverage) {
         for (std::size_t j = lo; j < lo + 16; ++j) a += average[j], e += expected[j];
         EXPECT_NEAR(a / e, 1.0, 0.06) << "ordinates " << lo << "..";
     }
+}
+
+// A least-squares fit of the mean takes a walk's lowest frequencies with it: the residual of a fixed linear span (eq.
+// 1's tangent at T = 400 s) from white + random walk, on the interleaved part, averages to the expected periodogram
+// that knows the span, also in the lowest ordinates, whose shape the plain one misses.
+TEST(Whittle, ExpectedPeriodogramOfAFittedResidualKnowsWhatTheFitAbsorbed) {
+    const std::size_t n = 1500;
+    OutputSpectrum m;
+    m.white = 1.0;
+    m.walk_increment_variance = 0.04;
+    std::vector<double> t(n);
+    for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<double>(i + 1);
+    const Eigen::MatrixXd x = eq1_tangent(t, 400.0);
+    const Eigen::MatrixXd projector = x * (x.transpose() * x).ldlt().solve(x.transpose());
+    std::vector<bool> part(n);
+    for (std::size_t i = 0; i < n; ++i) part[i] = (i * 10 / n) % 2 == 0;
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> n01;
+    const int runs = 1500;
+    std::vector<double> average;
+    PartPeriodogram first;
+    for (int r = 0; r < runs; ++r) {
+        Eigen::VectorXd e(static_cast<Eigen::Index>(n));
+        double walk = 0.0;
+        for (Eigen::Index i = 0; i < e.size(); ++i) {
+            walk += 0.2 * n01(rng);
+            e(i) = walk + n01(rng);
+        }
+        e -= projector * e;
+        const PartPeriodogram p = part_periodogram(std::vector<double>(e.data(), e.data() + e.size()), part, &x);
+        if (average.empty()) average.assign(p.power.size(), 0.0), first = p;
+        for (std::size_t j = 0; j < p.power.size(); ++j) average[j] += p.power[j] / runs;
+    }
+    const auto expected = expected_periodogram(m, {1.0}, first);
+    PartPeriodogram plain = first;
+    plain.absorbed.reset();
+    const auto unaware = expected_periodogram(m, {1.0}, plain);
+    for (std::size_t lo = 0; lo + 4 <= 64; lo += 4) {
+        double a = 0.0, e = 0.0;
+        for (std::size_t j = lo; j < lo + 4; ++j) a += average[j], e += expected[j];
+        EXPECT_NEAR(a / e, 1.0, 0.08) << "ordinates " << lo << "..";
+    }
+    for (std::size_t lo = 64; lo + 16 <= expected.size(); lo += 16) {
+        double a = 0.0, e = 0.0;
+        for (std::size_t j = lo; j < lo + 16; ++j) a += average[j], e += expected[j];
+        EXPECT_NEAR(a / e, 1.0, 0.06) << "ordinates " << lo << "..";
+    }
+    // In the lowest ordinates the fit reshapes the part's expected power by up to a fifth either way; the plain
+    // expectation misses that shape, the one that knows the span follows it.
+    double aware = 0.0, plain_misfit = 0.0;
+    for (std::size_t j = 0; j < 12; ++j) {
+        aware += std::pow(std::log(average[j] / expected[j]), 2);
+        plain_misfit += std::pow(std::log(average[j] / unaware[j]), 2);
+    }
+    EXPECT_LT(aware, 0.25 * plain_misfit) << aware << " vs " << plain_misfit;
 }
 
 TEST(Whittle, TooFewDifferencesInThePartAreRefused) {
