@@ -149,8 +149,18 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     replicates = std::max(replicates, static_cast<int>(std::ceil(4.0 / alpha)));
     const std::size_t i = channel_index(c);
     const std::vector<double> mean = model_mean_counts(model, c, t_s);
-    std::vector<double> r(y.size());
-    for (std::size_t k = 0; k < r.size(); ++k) r[k] = y[k] - mean[k];
+    // The log's residual is what its eq. 1 fit left, so it lacks the slow part that fit took up; a replicate's
+    // residual about the same mean still has it. Each (the log's too, for a like statistic) therefore loses its
+    // projection onto eq. 1's tangent, the fit linearised: without it a walk's replicates keep the lowest frequencies
+    // the log's fit absorbed, and their excursions pass for steps as large as the log's.
+    const Eigen::MatrixXd q = orthonormal_basis(eq1_tangent(t_s, model.base[i].drift.tau_s));
+    const auto residual_about_mean = [&](const std::vector<double>& x) {
+        Eigen::VectorXd e(static_cast<Eigen::Index>(x.size()));
+        for (std::size_t k = 0; k < x.size(); ++k) e[static_cast<Eigen::Index>(k)] = x[k] - mean[k];
+        e -= q * (q.transpose() * e);
+        return std::vector<double>(e.data(), e.data() + e.size());
+    };
+    const std::vector<double> r = residual_about_mean(y);
     const std::vector<bool> all(r.size(), true);
     const PartPeriodogram real_p = part_periodogram(r, all);
     const std::vector<double> floor_acov = white_floor_autocovariance(model.smoothing);
@@ -194,9 +204,7 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     std::array<bool, kChannelCount> only{};
     only[i] = true;
     const Eigen::MatrixXd null = simulate_replicates(model, t_s, only, replicates, seed, threads, [&](const SimOutput& sim, const SimOutput&) {
-        std::vector<double> rr(sim[i].size());
-        for (std::size_t k = 0; k < rr.size(); ++k) rr[k] = sim[i][k] - mean[k];
-        return statistics(std::move(rr), nullptr);
+        return statistics(residual_about_mean(sim[i]), nullptr);
     });
     LevelStep out;
     out.tested = true;
