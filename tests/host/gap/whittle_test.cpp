@@ -81,6 +81,38 @@ TEST(Whittle, DensityAveragesToTheDifferencesVariance) {
     EXPECT_NEAR(mean, differenced_autocovariance(m, floor, 1)[0], 1e-3);
 }
 
+// The interleaved design's fitting part: the even tenths of the log.
+std::vector<bool> even_tenths(std::size_t n) {
+    std::vector<bool> part(n);
+    for (std::size_t i = 0; i < n; ++i) part[i] = (i * 10 / n) % 2 == 0;
+    return part;
+}
+
+// The average periodogram on `part` of 1500 series drawn by `draw(rng, n01)`, and the first one's periodogram
+// (which carries the part's mask and taper, and `absorbed`).
+template <class Draw>
+std::pair<std::vector<double>, PartPeriodogram> average_periodogram(const std::vector<bool>& part, std::uint64_t seed,
+                                                                    const Eigen::MatrixXd* absorbed, Draw draw) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> n01;
+    const int runs = 1500;
+    std::vector<double> average;
+    PartPeriodogram first;
+    for (int r = 0; r < runs; ++r) {
+        const PartPeriodogram p = part_periodogram(draw(rng, n01), part, absorbed);
+        if (average.empty()) average.assign(p.power.size(), 0.0), first = p;
+        for (std::size_t j = 0; j < p.power.size(); ++j) average[j] += p.power[j] / runs;
+    }
+    return {average, first};
+}
+
+// Average over expected power in ordinates lo..lo + width - 1.
+double band_ratio(const std::vector<double>& average, const std::vector<double>& expected, std::size_t lo, std::size_t width) {
+    double a = 0.0, e = 0.0;
+    for (std::size_t j = lo; j < lo + width; ++j) a += average[j], e += expected[j];
+    return a / e;
+}
+
 // The part is every other tenth of the log (the interleaved design): its masked, tapered periodogram averaged over
 // many realisations of white + AR(1) + random walk matches the expected periodogram band by band.
 TEST(Whittle, ExpectedPeriodogramOfAMaskedSeriesMatchesTheMonteCarloAverage) {
@@ -90,14 +122,7 @@ TEST(Whittle, ExpectedPeriodogramOfAMaskedSeriesMatchesTheMonteCarloAverage) {
     m.white = 1.0;
     m.ar1.push_back({4.0, phi});
     m.walk_increment_variance = 0.01;
-    std::vector<bool> part(n);
-    for (std::size_t i = 0; i < n; ++i) part[i] = (i * 10 / n) % 2 == 0;
-    std::mt19937_64 rng(3);
-    std::normal_distribution<double> n01;
-    const int runs = 1500;
-    std::vector<double> average;
-    PartPeriodogram first;
-    for (int r = 0; r < runs; ++r) {
+    const auto [average, first] = average_periodogram(even_tenths(n), 3, nullptr, [&](auto& rng, auto& n01) {
         std::vector<double> e(n);
         double x = 2.0 * n01(rng), walk = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
@@ -105,17 +130,12 @@ TEST(Whittle, ExpectedPeriodogramOfAMaskedSeriesMatchesTheMonteCarloAverage) {
             walk += 0.1 * n01(rng);
             e[i] = x + walk + n01(rng);
         }
-        const PartPeriodogram p = part_periodogram(e, part);
-        if (average.empty()) average.assign(p.power.size(), 0.0), first = p;
-        for (std::size_t j = 0; j < p.power.size(); ++j) average[j] += p.power[j] / runs;
-    }
+        return e;
+    });
     const auto expected = expected_periodogram(m, {1.0}, first);
     // Bands of 16 ordinates: the average of 1500 x 16 (correlated) exponentials is within a few per cent.
-    for (std::size_t lo = 0; lo + 16 <= expected.size(); lo += 16) {
-        double a = 0.0, e = 0.0;
-        for (std::size_t j = lo; j < lo + 16; ++j) a += average[j], e += expected[j];
-        EXPECT_NEAR(a / e, 1.0, 0.06) << "ordinates " << lo << "..";
-    }
+    for (std::size_t lo = 0; lo + 16 <= expected.size(); lo += 16)
+        EXPECT_NEAR(band_ratio(average, expected, lo, 16), 1.0, 0.06) << "ordinates " << lo << "..";
 }
 
 // A least-squares fit of the mean takes a walk's lowest frequencies with it: the residual of a fixed linear span (eq.
@@ -130,14 +150,7 @@ TEST(Whittle, ExpectedPeriodogramOfAFittedResidualKnowsWhatTheFitAbsorbed) {
     for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<double>(i + 1);
     const Eigen::MatrixXd x = eq1_tangent(t, 400.0);
     const Eigen::MatrixXd projector = x * (x.transpose() * x).ldlt().solve(x.transpose());
-    std::vector<bool> part(n);
-    for (std::size_t i = 0; i < n; ++i) part[i] = (i * 10 / n) % 2 == 0;
-    std::mt19937_64 rng(5);
-    std::normal_distribution<double> n01;
-    const int runs = 1500;
-    std::vector<double> average;
-    PartPeriodogram first;
-    for (int r = 0; r < runs; ++r) {
+    const auto [average, first] = average_periodogram(even_tenths(n), 5, &x, [&](auto& rng, auto& n01) {
         Eigen::VectorXd e(static_cast<Eigen::Index>(n));
         double walk = 0.0;
         for (Eigen::Index i = 0; i < e.size(); ++i) {
@@ -145,24 +158,16 @@ TEST(Whittle, ExpectedPeriodogramOfAFittedResidualKnowsWhatTheFitAbsorbed) {
             e(i) = walk + n01(rng);
         }
         e -= projector * e;
-        const PartPeriodogram p = part_periodogram(std::vector<double>(e.data(), e.data() + e.size()), part, &x);
-        if (average.empty()) average.assign(p.power.size(), 0.0), first = p;
-        for (std::size_t j = 0; j < p.power.size(); ++j) average[j] += p.power[j] / runs;
-    }
+        return std::vector<double>(e.data(), e.data() + e.size());
+    });
     const auto expected = expected_periodogram(m, {1.0}, first);
     PartPeriodogram plain = first;
     plain.absorbed.reset();
     const auto unaware = expected_periodogram(m, {1.0}, plain);
-    for (std::size_t lo = 0; lo + 4 <= 64; lo += 4) {
-        double a = 0.0, e = 0.0;
-        for (std::size_t j = lo; j < lo + 4; ++j) a += average[j], e += expected[j];
-        EXPECT_NEAR(a / e, 1.0, 0.08) << "ordinates " << lo << "..";
-    }
-    for (std::size_t lo = 64; lo + 16 <= expected.size(); lo += 16) {
-        double a = 0.0, e = 0.0;
-        for (std::size_t j = lo; j < lo + 16; ++j) a += average[j], e += expected[j];
-        EXPECT_NEAR(a / e, 1.0, 0.06) << "ordinates " << lo << "..";
-    }
+    for (std::size_t lo = 0; lo + 4 <= 64; lo += 4)
+        EXPECT_NEAR(band_ratio(average, expected, lo, 4), 1.0, 0.08) << "ordinates " << lo << "..";
+    for (std::size_t lo = 64; lo + 16 <= expected.size(); lo += 16)
+        EXPECT_NEAR(band_ratio(average, expected, lo, 16), 1.0, 0.06) << "ordinates " << lo << "..";
     // In the lowest ordinates the fit reshapes the part's expected power by up to a fifth either way; the plain
     // expectation misses that shape, the one that knows the span follows it.
     double aware = 0.0, plain_misfit = 0.0;
@@ -172,6 +177,7 @@ TEST(Whittle, ExpectedPeriodogramOfAFittedResidualKnowsWhatTheFitAbsorbed) {
     }
     EXPECT_LT(aware, 0.25 * plain_misfit) << aware << " vs " << plain_misfit;
 }
+
 
 TEST(Whittle, TooFewDifferencesInThePartAreRefused) {
     std::vector<double> e(100, 1.0);
