@@ -38,6 +38,16 @@ Eigen::MatrixXd orthonormal_basis(const Eigen::MatrixXd& x) {
 
 namespace {
 
+// sum_t m_t x_t e^{-i w_j t} at the periodogram's frequencies j = 1..(n-1)/2: x (its first n entries) under the part's
+// taper, as the part's differences are transformed.
+std::vector<std::complex<double>> tapered_transform(Eigen::FFT<double>& fft, const PartPeriodogram& p, const std::vector<double>& x) {
+    std::vector<double> v(p.length);
+    for (std::size_t t = 0; t < p.length; ++t) v[t] = p.taper[t] * x[t];
+    std::vector<std::complex<double>> spec;
+    fft.fwd(spec, v);
+    return {spec.begin() + 1, spec.begin() + 1 + static_cast<std::ptrdiff_t>(p.power.size())};
+}
+
 // The fitted columns' share of the differences (whittle.hpp, AbsorbedColumns), for the part's taper.
 AbsorbedColumns absorbed_columns(const Eigen::MatrixXd& x, const PartPeriodogram& p) {
     const auto samples = static_cast<Eigen::Index>(x.rows());
@@ -45,15 +55,13 @@ AbsorbedColumns absorbed_columns(const Eigen::MatrixXd& x, const PartPeriodogram
     AbsorbedColumns a;
     a.differences = static_cast<std::size_t>(samples - 1);
     Eigen::FFT<double> fft;
-    std::vector<std::complex<double>> spec;
     for (Eigen::Index k = 0; k < q.cols(); ++k) {
-        std::vector<double> v(p.length);
+        std::vector<double> dq(p.length);
         for (std::size_t t = 0; t < p.length; ++t) {
             const auto i = static_cast<Eigen::Index>(t);
-            v[t] = p.taper[t] * (q(i + 1, k) - q(i, k));
+            dq[t] = q(i + 1, k) - q(i, k);
         }
-        fft.fwd(spec, v);
-        a.alpha.emplace_back(spec.begin() + 1, spec.begin() + 1 + static_cast<std::ptrdiff_t>(p.power.size()));
+        a.alpha.push_back(tapered_transform(fft, p, dq));
         std::vector<double> b(a.differences);
         double tail = 0.0;
         for (std::size_t j = a.differences; j-- > 0;) b[j] = tail += q(static_cast<Eigen::Index>(j + 1), k);
@@ -213,10 +221,7 @@ std::vector<double> expected_periodogram(const OutputSpectrum& model, const std:
         std::vector<std::vector<double>> cb(k_count);
         for (std::size_t k = 0; k < k_count; ++k) {
             cb[k] = differenced_covariance_times(model, floor_acov, a.load[k]);
-            std::vector<double> v(p.length);
-            for (std::size_t t = 0; t < p.length; ++t) v[t] = p.taper[t] * cb[k][t];
-            fft.fwd(spec, v);
-            beta[k].assign(spec.begin() + 1, spec.begin() + 1 + static_cast<std::ptrdiff_t>(out.size()));
+            beta[k] = tapered_transform(fft, p, cb[k]);
         }
         for (std::size_t k = 0; k < k_count; ++k)
             for (std::size_t l = 0; l < k_count; ++l) {
