@@ -2,8 +2,10 @@
 #include "host/gap/evaluate.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include <Eigen/Dense>
@@ -15,6 +17,7 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/truth.hpp"
+#include "host/util/parallel_for.hpp"
 #include "sim/model/drift.hpp"
 #include "sim/model/rng.hpp"
 #include "sim/model/white_noise.hpp"
@@ -161,7 +164,7 @@ GapOptions gap_options(std::uint64_t seed, const EvalOptions& options) {
     go.replicates = options.replicates;
     go.holdout = options.holdout;
     go.seed = seed * 7 + 3;
-    go.threads = options.threads;
+    go.threads = 1;  // the logs run in parallel instead (options.threads of them): no core waits on a serial fit
     go.explain_options.fit_replicates = options.fit_replicates;
     go.explain_options.max_evaluations = options.max_evaluations;
     go.explain_options.max_effects = 1;
@@ -303,13 +306,13 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
         const auto place = static_cast<std::size_t>(
             std::find_if(list.begin(), list.end(), [&](const TruthInfo& t) { return t.generator == gens[g]; }) - list.begin());
         auto fraction_at = [&](double size, int step) {
-            int hits = 0;
-            for (int k = 0; k < options.detection_logs; ++k) {
-                const std::uint64_t seed = detection_seed(options, place, step, k);
+            std::atomic<int> hits{0};
+            parallel_for(static_cast<std::size_t>(options.detection_logs), options.threads, [&](std::size_t k) {
+                const std::uint64_t seed = detection_seed(options, place, step, static_cast<int>(k));
                 GapOptions go = gap_options(seed, options);
                 go.explain = false;
                 hits += !diagnose(plant(gens[g], size, seed, options.samples, false).log, sim::paper_model(), go).located.empty();
-            }
+            });
             d.curve.push_back({size, hits, options.detection_logs});
             return static_cast<double>(hits) / options.detection_logs;
         };
@@ -371,14 +374,20 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
     // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in
     // the list) and hence the log itself are the same either way.
     const auto runs = [&](const Job& j) { return options.tune || !j.tune; };
-    const auto to_run = static_cast<std::size_t>(std::count_if(jobs.begin(), jobs.end(), runs));
-    std::vector<EvalCase> out;
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
+    std::vector<std::size_t> places;
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+        if (runs(jobs[i])) places.push_back(i);
+    std::vector<EvalCase> out(places.size());
+    std::size_t done = 0;
+    std::mutex progress_mutex;
+    parallel_for(places.size(), options.threads, [&](std::size_t n) {
+        const std::size_t i = places[n];
         const Job& j = jobs[i];
-        if (!runs(j)) continue;
-        out.push_back(run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options, sizes));
-        if (options.progress) options.progress(out.size(), to_run);
-    }
+        out[n] = run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options, sizes);
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        ++done;
+        if (options.progress) options.progress(done, places.size());
+    });
     return out;
 }
 

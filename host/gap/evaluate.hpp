@@ -30,8 +30,8 @@ struct EvalOptions {
     int replicates = 20;
     int fit_replicates = ExplainOptions{}.fit_replicates;    ///< as `driftlab gap` ships
     int max_evaluations = ExplainOptions{}.max_evaluations;
-    int threads = 2;
-    std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional
+    int threads = 2;              ///< logs diagnosed at once, one thread each (the verdicts do not depend on it)
+    std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional; called from those threads, one at a time
 };
 
 /// One size of a detection curve: logs planted at `size`, and how many of them got located cells.

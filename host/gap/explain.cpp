@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
+#include <optional>
 
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
@@ -14,6 +16,7 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
 #include "host/gap/whittle.hpp"
+#include "host/util/parallel_for.hpp"
 
 namespace driftlab::host::gap {
 
@@ -440,12 +443,23 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 GapModel m = result.model;
                 return fit_noise(m, judge, residual_periodogram(m, judge, everywhere), earlier, "", nullptr);
             }();
-            std::vector<Option> here;
+            std::vector<std::string> to_try;
             for (const std::string& effect : names) {
                 if (std::find(used[i].begin(), used[i].end(), effect) != used[i].end()) continue;
                 if (effect == "spikes" && !tails_differ(judge, base_cmp)) continue;
                 if (candidate(effect).route == FitRoute::code_density && !judge.raw) continue;  // needs raw codes
-                if (options.progress) options.progress("step " + std::to_string(step) + ", " + kChannelNames[i] + ": " + effect);
+                to_try.push_back(effect);
+            }
+            // The candidates' fits are independent and mostly serial (the spectral fits): they run side by side, and
+            // keep the list's order, so that the result does not depend on which finishes first.
+            std::vector<std::optional<Option>> slots(to_try.size());
+            std::mutex progress_mutex;
+            parallel_for(to_try.size(), options.threads, [&](std::size_t n) {
+                const std::string& effect = to_try[n];
+                if (options.progress) {
+                    const std::lock_guard<std::mutex> lock(progress_mutex);
+                    options.progress("step " + std::to_string(step) + ", " + kChannelNames[i] + ": " + effect);
+                }
                 const FitRoute route = candidate(effect).route;
                 Fitted fitted;
                 if (route == FitRoute::deterministic) {
@@ -459,7 +473,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                     fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()), f.params.end());
                 } else if (route == FitRoute::code_density) {
                     fitted = fit_code_density(result.model, judge);
-                    if (fitted.params.empty()) continue;  // no transition crossed often enough to place
+                    if (fitted.params.empty()) return;  // no transition crossed often enough to place
                 } else {
                     fitted = fit_spikes(result.model, judge, options);
                 }
@@ -479,8 +493,11 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
-                here.push_back({ex, fitted.model, std::move(fitted.refits)});
-            }
+                slots[n] = Option{ex, fitted.model, std::move(fitted.refits)};
+            });
+            std::vector<Option> here;
+            for (auto& o : slots)
+                if (o) here.push_back(std::move(*o));
             std::vector<const Explanation*> passing;
             for (const auto& o : here)
                 if (o.ex.accepted) passing.push_back(&o.ex);

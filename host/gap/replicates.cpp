@@ -1,11 +1,9 @@
-// Replicates in parallel; see replicates.hpp.
+// Replicates in parallel (parallel_for); see replicates.hpp.
 #include "host/gap/replicates.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <mutex>
-#include <thread>
+
+#include "host/util/parallel_for.hpp"
 
 namespace driftlab::host::gap {
 
@@ -21,32 +19,17 @@ Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<dou
                                     int threads, const ReplicateSummary& summary, const ReplicateExtra& extra,
                                     bool raw_codes) {
     std::vector<std::vector<double>> rows(static_cast<std::size_t>(replicates));
-    std::atomic<int> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto work = [&] {
-        for (int r = next++; r < replicates; r = next++) {
-            try {
-                SimRequest request;
-                request.t_s = &t_s;
-                request.channels = channels;
-                const std::uint64_t rs = replicate_seed(seed, r);
-                if (extra) extra(rs, request);
-                SimOutput raw;
-                if (raw_codes) request.raw_codes = &raw;
-                const SimOutput y = simulate(model, request, rs);
-                rows[static_cast<std::size_t>(r)] = summary(y, raw);
-            } catch (...) {
-                const std::lock_guard<std::mutex> lock(failure_mutex);
-                if (!failure) failure = std::current_exception();
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int i = 1; i < std::max(1, threads); ++i) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    parallel_for(rows.size(), threads, [&](std::size_t r) {
+        SimRequest request;
+        request.t_s = &t_s;
+        request.channels = channels;
+        const std::uint64_t rs = replicate_seed(seed, static_cast<int>(r));
+        if (extra) extra(rs, request);
+        SimOutput raw;
+        if (raw_codes) request.raw_codes = &raw;
+        const SimOutput y = simulate(model, request, rs);
+        rows[r] = summary(y, raw);
+    });
     Eigen::MatrixXd out(replicates, static_cast<Eigen::Index>(rows.front().size()));
     for (int r = 0; r < replicates; ++r)
         out.row(r) = Eigen::Map<const Eigen::RowVectorXd>(rows[static_cast<std::size_t>(r)].data(),

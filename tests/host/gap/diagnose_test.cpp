@@ -128,6 +128,15 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     EXPECT_TRUE(static_listed);
 }
 
+// A step's candidates are fitted side by side and the replicates on a pool: on one thread the JSON is the same.
+TEST(Diagnose, TheResultDoesNotDependOnTheThreadCount) {
+    GapOptions one = small_options();
+    one.threads = 1;
+    const Planted& p = planted_second_time_constant();
+    ASSERT_GE(p.result.tried.size(), 3u) << "several candidates, so that they did run side by side";
+    EXPECT_EQ(gap_to_json(diagnose(p.log, sim::paper_model(), one), one).dump(), gap_to_json(p.result, small_options()).dump());
+}
+
 std::string read_text(const std::filesystem::path& path) {
     std::ifstream in(path);
     std::stringstream ss;

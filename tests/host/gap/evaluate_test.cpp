@@ -75,6 +75,31 @@ TEST(GapEval, StrongEffectsAttributedToTheRightLibraryEffect) {
     EXPECT_GE(right * 5, planted * 4);
 }
 
+// The logs run side by side, one thread each: the cases (and so every table) are the same on one thread, down to
+// the last bit of each candidate's metrics, since a replicate's random numbers follow its index, not its thread.
+TEST(GapEval, TheCasesDoNotDependOnTheThreadCount) {
+    EvalOptions one = quick_options();
+    one.threads = 1;
+    const auto serial = run_cases(one, kSizes);
+    const auto& parallel = quick_cases();
+    ASSERT_EQ(serial.size(), parallel.size());
+    for (std::size_t k = 0; k < serial.size(); ++k) {
+        const EvalCase &a = serial[k], &b = parallel[k];
+        EXPECT_EQ(a.generator, b.generator);
+        EXPECT_EQ(a.seed, b.seed);
+        EXPECT_EQ(a.detected, b.detected);
+        EXPECT_EQ(a.oracle_shrink, b.oracle_shrink);
+        EXPECT_EQ(a.shrink_check, b.shrink_check);
+        ASSERT_EQ(a.tried.size(), b.tried.size()) << a.generator << " seed " << a.seed;
+        for (std::size_t e = 0; e < a.tried.size(); ++e) {
+            EXPECT_EQ(a.tried[e].effect, b.tried[e].effect);
+            EXPECT_EQ(a.tried[e].params, b.tried[e].params);
+            EXPECT_EQ(a.tried[e].heldout_loss_gain, b.tried[e].heldout_loss_gain);
+            EXPECT_EQ(a.tried[e].spectral_gain, b.tried[e].spectral_gain);
+        }
+    }
+}
+
 // a_50 is where the detected fraction crosses 1/2: the search brackets it (doubling or halving from a first guess),
 // adds two sizes half an octave either side, and the logistic fit lands inside the sizes tried.
 TEST(GapEval, DetectionThresholdIsBracketedByItsCurve) {
