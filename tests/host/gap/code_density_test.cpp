@@ -1,12 +1,15 @@
 // The raw-code histogram statistic: about ln 2 for an ideal converter (its deviance is about its degrees of
-// freedom), far above for a widened code or a missing one, and blind to the drift and the noise level.
+// freedom), far above for a widened code or a missing one, and blind to the drift and the noise level; and the
+// transitions it places, on the true level and on the smoothed output's.
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "gap_fixtures.hpp"
 #include "host/gap/code_density.hpp"
+#include "sim/effects/adc_dnl.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -100,6 +103,57 @@ TEST(CodeDensity, TransitionsAreFoundWhereTheConverterHasThem) {
         }
         EXPECT_TRUE(moved_seen);
     }
+}
+
+// Against the smoothed output (what a log gives), the transitions sit on the output's scale, which counts codes: the
+// codes a log crosses average one count wide there, so each fitted width is the converter's divided by the mean width
+// of the codes crossed (where they are narrow the output moves faster than the input). Per log, ln(sum of fitted
+// widths / sum of the converter's) against ln(1 / that mean) has slope 1 (0 if the widths were the converter's), and
+// dividing the converter's widths by the mean leaves only the noise of the fit.
+TEST(CodeDensity, AgainstTheSmoothedOutputTheWidthsAreTheConvertersOverTheirMeanWidth) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, raw_sq = 0, scaled_sum = 0, scaled_sq = 0;
+    int logs = 0, widths = 0;
+    for (int pattern = 1; pattern <= 40; ++pattern) {
+        GapModel m = testing::paper_gyro_model(8);
+        const std::string spec = "dnl_rms_lsb = 0.3\npattern_seed = " + std::to_string(pattern);
+        m.effects.push_back({"adc_dnl", toml::parse(spec)});
+        LogData log = testing::gyro_log(m, 1500, {}, 100 + static_cast<std::uint64_t>(pattern));
+        SimOutput raw;
+        SimRequest req;
+        req.t_s = &log.t_s;
+        req.channels = {true, false, false, false};
+        req.raw_codes = &raw;
+        const std::vector<double> output = simulate(m, req, 100 + static_cast<std::uint64_t>(pattern))[0];
+        const TransitionFit fit = fit_transitions(raw[0], output);
+        sim::AdcDnlParams truth;
+        truth.dnl_rms_lsb = 0.3;
+        truth.pattern_seed = static_cast<std::uint64_t>(pattern);
+        const sim::AdcDnl converter(truth);
+        const auto at = [&](long code) { return converter.transition_counts(static_cast<int>(code)); };
+        ASSERT_GE(fit.transitions.size(), 2u) << "pattern " << pattern;
+        const long lo = fit.transitions.front().code, hi = fit.transitions.back().code;
+        const double mean_width = (at(hi) - at(lo)) / static_cast<double>(hi - lo);
+        double fitted_sum = 0, true_sum = 0;
+        for (std::size_t k = 1; k < fit.transitions.size(); ++k) {
+            const long code = fit.transitions[k].code;
+            if (code != fit.transitions[k - 1].code + 1) continue;
+            const double fitted = fit.transitions[k].counts - fit.transitions[k - 1].counts, width = at(code) - at(code - 1);
+            fitted_sum += fitted, true_sum += width;
+            const double r = std::log(fitted / width);
+            raw_sq += r * r;
+            scaled_sum += r + std::log(mean_width), scaled_sq += std::pow(r + std::log(mean_width), 2);
+            ++widths;
+        }
+        if (true_sum == 0) continue;
+        const double x = -std::log(mean_width), y = std::log(fitted_sum / true_sum);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+        ++logs;
+    }
+    ASSERT_GE(logs, 35);
+    const double slope = (sxy - sx * sy / logs) / (sxx - sx * sx / logs);
+    EXPECT_NEAR(slope, 1.0, 0.25);
+    EXPECT_NEAR(scaled_sum / widths, 0.0, 0.05) << "no bias left once divided by the mean width";
+    EXPECT_LT(std::sqrt(scaled_sq / widths), 0.8 * std::sqrt(raw_sq / widths));
 }
 
 TEST(CodeDensity, OneOrTwoCodesCarryNoWidthInformation) {
