@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 
+#include <Eigen/Dense>
 #include <unsupported/Eigen/FFT>
 
 #include "host/gap/candidates.hpp"
@@ -72,26 +73,62 @@ struct Pieces {
     explicit Pieces(const std::vector<double>& x) : sum(x.size() + 1, 0.0), sum2(x.size() + 1, 0.0) {
         for (std::size_t k = 0; k < x.size(); ++k) sum[k + 1] = sum[k] + x[k], sum2[k + 1] = sum2[k] + x[k] * x[k];
     }
+    std::size_t size() const { return sum.size() - 1; }
     double cost(std::size_t a, std::size_t b) const {  // [a, b)
         const double s = sum[b] - sum[a];
         return sum2[b] - sum2[a] - s * s / static_cast<double>(b - a);
     }
     double mean(std::size_t a, std::size_t b) const { return (sum[b] - sum[a]) / static_cast<double>(b - a); }
+    double rss(std::size_t c) const { return cost(0, c) + cost(c, size()); }
+    double rss(std::size_t c1, std::size_t c2) const { return cost(0, c1) + cost(c1, c2) + cost(c2, size()); }
+};
+
+// Change points in mean fitted together with the columns of `q` (orthonormal; eq. 1's tangent, whose constant is
+// the pieces' common level): the residual sum of squares of `r` (orthogonal to q) on q and the steps' columns
+// h_c (1 from index c on), from suffix sums. A hop bends the eq. 1 fit toward it, and the bend, fitted alone, leaves
+// a step-like remainder near the start that the cuts would otherwise take for the hop's return.
+struct StepsBesideColumns {
+    std::vector<double> tail_r;  // sum_{k >= c} r_k, size n + 1
+    Eigen::MatrixXd tail_q;      // row c: sum_{k >= c} q_k (the columns' share of h_c)
+    double rr = 0.0;
+
+    StepsBesideColumns(const std::vector<double>& r, const Eigen::MatrixXd& q)
+        : tail_r(r.size() + 1, 0.0), tail_q(Eigen::MatrixXd::Zero(q.rows() + 1, q.cols())) {
+        for (std::size_t k = r.size(); k-- > 0;) {
+            const auto i = static_cast<Eigen::Index>(k);
+            tail_r[k] = tail_r[k + 1] + r[k];
+            tail_q.row(i) = tail_q.row(i + 1) + q.row(i);
+            rr += r[k] * r[k];
+        }
+    }
+    std::size_t size() const { return tail_r.size() - 1; }
+    // Inner product of h_a and h_b once the columns are projected out.
+    double gram(std::size_t a, std::size_t b) const {
+        return static_cast<double>(size() - std::max(a, b)) -
+               tail_q.row(static_cast<Eigen::Index>(a)).dot(tail_q.row(static_cast<Eigen::Index>(b)));
+    }
+    double rss(std::size_t c) const {
+        const double g = gram(c, c);
+        return g > 0.0 ? rr - tail_r[c] * tail_r[c] / g : rr;
+    }
     double rss(std::size_t c1, std::size_t c2) const {
-        const std::size_t n = sum.size() - 1;
-        return cost(0, c1) + cost(c1, c2) + cost(c2, n);
+        const Eigen::Matrix2d g{{gram(c1, c1), gram(c1, c2)}, {gram(c1, c2), gram(c2, c2)}};
+        const Eigen::Vector2d u(tail_r[c1], tail_r[c2]);
+        const double det = g.determinant();
+        return det > 0.0 ? rr - u.dot(g.inverse() * u) : rss(c1);
     }
 };
 
-// The best two change points in mean (c1 < c2, each piece at least two outputs, `edge` clear of the ends) by
-// alternating scans, exact for either cut given the other (O(n) each): from the best single cut, the best second
-// cut, then each again given the other until neither moves.
-std::pair<std::size_t, std::size_t> best_two_cuts(const Pieces& pieces, std::size_t edge) {
-    const std::size_t n = pieces.sum.size() - 1;
+// The best two change points (c1 < c2, each piece at least two outputs, `edge` clear of the ends) of a residual sum
+// of squares `cost` (Pieces, StepsBesideColumns) by alternating scans, exact for either cut given the other (O(n)
+// each): from the best single cut, the best second cut, then each again given the other until neither moves.
+template <class Cost>
+std::pair<std::size_t, std::size_t> best_two_cuts(const Cost& cost, std::size_t edge) {
+    const std::size_t n = cost.size();
     std::size_t c1 = edge;
     double best_cost = 1e300;
     for (std::size_t c = edge; c + edge < n; ++c) {
-        const double v = pieces.cost(0, c) + pieces.cost(c, n);
+        const double v = cost.rss(c);
         if (v < best_cost) best_cost = v, c1 = c;
     }
     auto best_other = [&](std::size_t fixed) {
@@ -99,7 +136,7 @@ std::pair<std::size_t, std::size_t> best_two_cuts(const Pieces& pieces, std::siz
         double v_best = 1e300;
         for (std::size_t c = edge; c + edge < n; ++c) {
             if (c + 1 >= fixed && c <= fixed + 1) continue;  // pieces of at least two outputs
-            const double v = pieces.rss(std::min(c, fixed), std::max(c, fixed));
+            const double v = cost.rss(std::min(c, fixed), std::max(c, fixed));
             if (v < v_best) v_best = v, arg = c;
         }
         return arg;
@@ -217,10 +254,10 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     out.margin = std::max(0.0, extra) * 0.5 * parameter_price(InformationCriterion::bic, real_p.count);
     // Is the explanation more than a stand-in for steps? Its processes refitted beside two steps against the floor
     // beside them (nested: the Schwarz price of the processes' parameters). The steps are the least-squares change
-    // points in mean, refitted together with eq. 1 (linear in its level and rise at a given time constant, which is
-    // profiled over a grid): the eq. 1 fit has bent toward a hop and would otherwise leave a slow remainder for a
-    // process to take up.
-    const auto [c1, c2] = best_two_cuts(Pieces(r), edge_outputs(r.size()));
+    // points in mean placed beside eq. 1's tangent, then refitted together with eq. 1 (linear in its level and rise
+    // at a given time constant, which is profiled over a grid): the eq. 1 fit has bent toward a hop and would
+    // otherwise leave a slow remainder for a process to take up.
+    const auto [c1, c2] = best_two_cuts(StepsBesideColumns(r, q), edge_outputs(r.size()));
     const std::vector<double> stepped = eq1_and_steps_residual(t_s, y, c1, c2);
     const PartPeriodogram stepped_p = part_periodogram(stepped, all);
     const SpectralFit beside = fit_spectral(spectral_effects, c, model, stepped_p, spectral_params);
