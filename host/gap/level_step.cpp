@@ -65,26 +65,8 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
     return best;
 }
 
-// Least-squares change points in mean: the residual sum of squares of `x` as constant pieces between `cuts`
-// (indices where a piece begins), from prefix sums.
-struct Pieces {
-    std::vector<double> sum, sum2;  // prefix sums, size n + 1
-
-    explicit Pieces(const std::vector<double>& x) : sum(x.size() + 1, 0.0), sum2(x.size() + 1, 0.0) {
-        for (std::size_t k = 0; k < x.size(); ++k) sum[k + 1] = sum[k] + x[k], sum2[k + 1] = sum2[k] + x[k] * x[k];
-    }
-    std::size_t size() const { return sum.size() - 1; }
-    double cost(std::size_t a, std::size_t b) const {  // [a, b)
-        const double s = sum[b] - sum[a];
-        return sum2[b] - sum2[a] - s * s / static_cast<double>(b - a);
-    }
-    double mean(std::size_t a, std::size_t b) const { return (sum[b] - sum[a]) / static_cast<double>(b - a); }
-    double rss(std::size_t c) const { return cost(0, c) + cost(c, size()); }
-    double rss(std::size_t c1, std::size_t c2) const { return cost(0, c1) + cost(c1, c2) + cost(c2, size()); }
-};
-
-// Change points in mean fitted together with the columns of `q` (orthonormal; eq. 1's tangent, whose constant is
-// the pieces' common level): the residual sum of squares of `r` (orthogonal to q) on q and the steps' columns
+// Change points in mean fitted together with the columns of `q` (orthonormal: eq. 1's tangent, whose constant is
+// the pieces' common level, or the constant alone): the residual sum of squares of `r` (orthogonal to q) on q and the steps' columns
 // h_c (1 from index c on), from suffix sums. A hop bends the eq. 1 fit toward it, and the bend, fitted alone, leaves
 // a step-like remainder near the start that the cuts would otherwise take for the hop's return.
 struct StepsBesideColumns {
@@ -119,11 +101,10 @@ struct StepsBesideColumns {
     }
 };
 
-// The best two change points (c1 < c2, each piece at least two outputs, `edge` clear of the ends) of a residual sum
-// of squares `cost` (Pieces, StepsBesideColumns) by alternating scans, exact for either cut given the other (O(n)
-// each): from the best single cut, the best second cut, then each again given the other until neither moves.
-template <class Cost>
-std::pair<std::size_t, std::size_t> best_two_cuts(const Cost& cost, std::size_t edge) {
+// The best two change points (c1 < c2, each piece at least two outputs, `edge` clear of the ends) by alternating
+// scans, exact for either cut given the other (O(n) each): from the best single cut, the best second cut, then each
+// again given the other until neither moves.
+std::pair<std::size_t, std::size_t> best_two_cuts(const StepsBesideColumns& cost, std::size_t edge) {
     const std::size_t n = cost.size();
     std::size_t c1 = edge;
     double best_cost = 1e300;
@@ -276,21 +257,25 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
 }
 
 StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vector<double>& base_residual,
-                                const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor) {
+                                const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor,
+                                const Eigen::MatrixXd& beside) {
     StepsOverShape out;
     const std::size_t n = base_residual.size();
     const std::size_t edge = edge_outputs(n);
     if (n < 4 * edge + 4 || shape_residual.size() != n) return out;
-    const Pieces pieces(base_residual);
-    const auto [c1, c2] = best_two_cuts(pieces, edge);
     double shape_rss = 0.0;
     for (double r : shape_residual) shape_rss += r * r;
-    const double steps_rss = pieces.rss(c1, c2);
+    Eigen::VectorXd e = Eigen::Map<const Eigen::VectorXd>(base_residual.data(), static_cast<Eigen::Index>(n));
+    e -= beside * (beside.transpose() * e);
+    const StepsBesideColumns cost(std::vector<double>(e.data(), e.data() + e.size()), beside);
+    const auto [c1, c2] = best_two_cuts(cost, edge);
+    const Eigen::Matrix2d g{{cost.gram(c1, c1), cost.gram(c1, c2)}, {cost.gram(c1, c2), cost.gram(c2, c2)}};
+    const Eigen::Vector2d size = g.ldlt().solve(Eigen::Vector2d(cost.tail_r[c1], cost.tail_r[c2]));
     const double outputs = static_cast<double>(n) / std::max(1.0, long_run_factor);
     out.tested = true;
-    out.steps[0] = {t_s[c1], pieces.mean(c1, c2) - pieces.mean(0, c1)};
-    out.steps[1] = {t_s[c2], pieces.mean(c2, n) - pieces.mean(c1, c2)};
-    out.statistic = 0.5 * outputs * std::log(shape_rss / std::max(steps_rss, 1e-300));
+    out.steps[0] = {t_s[c1], size(0)};
+    out.steps[1] = {t_s[c2], size(1)};
+    out.statistic = 0.5 * outputs * std::log(shape_rss / std::max(cost.rss(c1, c2), 1e-300));
     out.margin = 0.5 * (4 - shape_parameters) * std::log(outputs);
     out.steps_win = out.statistic > out.margin;
     return out;

@@ -84,7 +84,9 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
 /// or a sine closes the battery's gap, as a random walk does around one; but two steps describe it better than the
 /// shape, while a thermostat's cycles or an RC network's rise are no steps. Both are fitted to the whole log over the
 /// current model (eq. 1 and the shapes accepted before): the shape jointly with eq. 1 (`shape_residual`), the steps
-/// by least squares on the current model's residual (`base_residual`; the best two change points in mean). Their
+/// by least squares on the current model's residual (`base_residual`; the best two change points), jointly with the
+/// orthonormal columns `beside` (eq. 1's tangent: eq. 1 refitted beside the steps, linearised, as it is beside the
+/// shape; without it eq. 1 stays bent toward a hop and the steps lose what the bend took). Their
 /// Gaussian likelihoods of a white floor are compared, each output counting 1 / `long_run_factor` (the smoother's
 /// overlapping windows make neighbouring outputs share noise), and the steps must win by the Schwarz price of their
 /// parameters beyond the shape's (two instants and two sizes against `shape_parameters`; ln n / 2 each).
@@ -96,6 +98,7 @@ struct StepsOverShape {
     bool steps_win = false;  ///< statistic > margin: a level step no library effect makes
 };
 StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vector<double>& base_residual,
-                                const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor);
+                                const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor,
+                                const Eigen::MatrixXd& beside);
 
 }  // namespace driftlab::host::gap

@@ -3,6 +3,7 @@
 // floor, which the walk only stands in for, is a step no library effect makes; the random walk alone passes.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -11,6 +12,8 @@
 #include "gap_fixtures.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/level_step.hpp"
+#include "host/gap/mean_shapes.hpp"
+#include "host/gap/whittle.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -147,18 +150,30 @@ TEST(LevelStep, WithoutTheRivalTheCombinedPIsTheImpulses) {
     EXPECT_DOUBLE_EQ(p.combined, p.impulse);
 }
 
-// A mean shape against two level steps (steps_over_shape()). The change points are the least-squares optimum: on a
-// hop and a return in white noise they match a brute-force search over every pair of cuts, and lie where planted.
-TEST(StepsOverShape, TheTwoStepsAreTheLeastSquaresOptimumAndLieWherePlanted) {
-    std::mt19937_64 rng(5);
-    std::normal_distribution<double> noise(0.0, 0.4);
-    const std::size_t n = 400;
+// Instants 1..n s and `mean(k, t)` plus white noise of deviation `sigma`.
+std::pair<std::vector<double>, std::vector<double>> noisy_series(std::size_t n, unsigned seed, double sigma,
+                                                                 const std::function<double(std::size_t, double)>& mean) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> noise(0.0, sigma);
     std::vector<double> t(n), x(n);
     for (std::size_t k = 0; k < n; ++k) {
         t[k] = static_cast<double>(k + 1);
-        x[k] = noise(rng) + (k >= 150 ? 1.0 : 0.0) - (k >= 290 ? 0.7 : 0.0);
+        x[k] = noise(rng) + mean(k, t[k]);
     }
-    const StepsOverShape s = steps_over_shape(t, x, x, 2, 1.0);
+    return {t, x};
+}
+
+// The constant alone as the columns fitted beside the steps: change points in mean.
+Eigen::MatrixXd level_column(std::size_t n) {
+    return Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(n), 1, 1.0 / std::sqrt(static_cast<double>(n)));
+}
+
+// A mean shape against two level steps (steps_over_shape()). The change points are the least-squares optimum: on a
+// hop and a return in white noise they match a brute-force search over every pair of cuts, and lie where planted.
+TEST(StepsOverShape, TheTwoStepsAreTheLeastSquaresOptimumAndLieWherePlanted) {
+    const std::size_t n = 400;
+    const auto [t, x] = noisy_series(n, 5, 0.4, [](std::size_t k, double) { return (k >= 150 ? 1.0 : 0.0) - (k >= 290 ? 0.7 : 0.0); });
+    const StepsOverShape s = steps_over_shape(t, x, x, 2, 1.0, level_column(n));
     ASSERT_TRUE(s.tested);
     EXPECT_NEAR(s.steps[0].t_s, t[150], 3.0);
     EXPECT_NEAR(s.steps[1].t_s, t[290], 3.0);
@@ -181,6 +196,50 @@ TEST(StepsOverShape, TheTwoStepsAreTheLeastSquaresOptimumAndLieWherePlanted) {
     EXPECT_TRUE(s.steps_win);
 }
 
+// Beside fitted columns (eq. 1's tangent, which the shape's own fit refits too), the two steps are the joint least-
+// squares optimum of the columns and two steps: a brute-force search over every pair of cuts, each fitted by QR,
+// finds the same residual sum of squares and the same sizes, on a hop early in a drift that bends toward it.
+TEST(StepsOverShape, BesideFittedColumnsTheStepsAreTheJointLeastSquaresOptimum) {
+    const std::size_t n = 200;
+    const auto [t, x] = noisy_series(n, 8, 0.3, [](std::size_t k, double t_s) {
+        return 2.0 * std::exp(-t_s / 60.0) + (k >= 40 ? 1.0 : 0.0) - (k >= 150 ? 0.6 : 0.0);
+    });
+    const Eigen::MatrixXd q = orthonormal_basis(eq1_tangent(t, 60.0));
+    const StepsOverShape s = steps_over_shape(t, x, x, 2, 1.0, q);
+    ASSERT_TRUE(s.tested);
+    const auto fit = [&](std::size_t c1, std::size_t c2, Eigen::VectorXd* coef) {
+        Eigen::MatrixXd a(n, q.cols() + 2);
+        a.leftCols(q.cols()) = q;
+        for (std::size_t k = 0; k < n; ++k) {
+            a(static_cast<Eigen::Index>(k), q.cols()) = k >= c1 ? 1.0 : 0.0;
+            a(static_cast<Eigen::Index>(k), q.cols() + 1) = k >= c2 ? 1.0 : 0.0;
+        }
+        const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(n));
+        const Eigen::VectorXd b = a.colPivHouseholderQr().solve(y);
+        if (coef) *coef = b;
+        return (y - a * b).squaredNorm();
+    };
+    double best = 1e300;
+    std::size_t b1 = 0, b2 = 0;
+    const std::size_t edge = 4;  // 2 % of 200 outputs
+    for (std::size_t c1 = edge; c1 + edge < n; ++c1)
+        for (std::size_t c2 = c1 + 2; c2 + edge < n; ++c2) {
+            const double v = fit(c1, c2, nullptr);
+            if (v < best) best = v, b1 = c1, b2 = c2;
+        }
+    EXPECT_NEAR(b1, 40u, 3u);
+    EXPECT_NEAR(b2, 150u, 3u);
+    EXPECT_EQ(s.steps[0].t_s, t[b1]);
+    EXPECT_EQ(s.steps[1].t_s, t[b2]);
+    Eigen::VectorXd coef;
+    fit(b1, b2, &coef);
+    EXPECT_NEAR(s.steps[0].size_counts, coef(q.cols()), 1e-9);
+    EXPECT_NEAR(s.steps[1].size_counts, coef(q.cols() + 1), 1e-9);
+    double total = 0.0;
+    for (double v : x) total += v * v;
+    EXPECT_NEAR(s.statistic, 0.5 * static_cast<double>(n) * std::log(total / best), 1e-9);
+}
+
 // A shape that describes the log (its residual is the noise alone) keeps it: the steps would have to fit the noise
 // better by more than their price. Overlapping windows (a long-run factor of 3) count each output a third.
 TEST(StepsOverShape, AShapeThatFitsIsKeptAndSharedNoiseCountsLess) {
@@ -193,10 +252,10 @@ TEST(StepsOverShape, AShapeThatFitsIsKeptAndSharedNoiseCountsLess) {
         residual[k] = noise(rng);
         shaped[k] = residual[k] + 0.8 * std::sin(2.0 * M_PI * t[k] / 300.0);  // five cycles: no pair of steps
     }
-    const StepsOverShape kept = steps_over_shape(t, shaped, residual, 3, 1.0);
+    const StepsOverShape kept = steps_over_shape(t, shaped, residual, 3, 1.0, level_column(n));
     EXPECT_FALSE(kept.steps_win) << kept.statistic << " vs " << kept.margin;
     EXPECT_LT(kept.statistic, 0.0);
-    const StepsOverShape shared = steps_over_shape(t, shaped, residual, 3, 3.0);
+    const StepsOverShape shared = steps_over_shape(t, shaped, residual, 3, 3.0, level_column(n));
     EXPECT_NEAR(shared.statistic, kept.statistic / 3.0, 1e-9);
     EXPECT_NEAR(shared.margin, 0.5 * std::log(500.0), 1e-12);
 }
