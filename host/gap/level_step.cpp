@@ -66,8 +66,8 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
 }
 
 // Change points in mean fitted together with the columns of `q` (orthonormal: eq. 1's tangent, whose constant is
-// the pieces' common level, or the constant alone): the residual sum of squares of `r` (orthogonal to q) on q and the steps' columns
-// h_c (1 from index c on), from suffix sums. A hop bends the eq. 1 fit toward it, and the bend, fitted alone, leaves
+// the pieces' common level, or the constant alone): the residual sum of squares of `r` (orthogonal to q) on q and
+// the steps' columns h_c (1 from index c on), from suffix sums. A hop bends the eq. 1 fit toward it, and the bend, fitted alone, leaves
 // a step-like remainder near the start that the cuts would otherwise take for the hop's return.
 struct StepsBesideColumns {
     std::vector<double> tail_r;  // sum_{k >= c} r_k, size n + 1
@@ -93,9 +93,14 @@ struct StepsBesideColumns {
         const double g = gram(c, c);
         return g > 0.0 ? rr - tail_r[c] * tail_r[c] / g : rr;
     }
+    // The normal equations of two steps at c1 and c2: their Gram matrix and their products with r.
+    Eigen::Matrix2d gram(std::size_t c1, std::size_t c2, Eigen::Vector2d& u) const {
+        u = {tail_r[c1], tail_r[c2]};
+        return Eigen::Matrix2d{{gram(c1, c1), gram(c1, c2)}, {gram(c1, c2), gram(c2, c2)}};
+    }
     double rss(std::size_t c1, std::size_t c2) const {
-        const Eigen::Matrix2d g{{gram(c1, c1), gram(c1, c2)}, {gram(c1, c2), gram(c2, c2)}};
-        const Eigen::Vector2d u(tail_r[c1], tail_r[c2]);
+        Eigen::Vector2d u;
+        const Eigen::Matrix2d g = gram(c1, c2, u);
         const double det = g.determinant();
         return det > 0.0 ? rr - u.dot(g.inverse() * u) : rss(c1);
     }
@@ -269,8 +274,8 @@ StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vecto
     e -= beside * (beside.transpose() * e);
     const StepsBesideColumns cost(std::vector<double>(e.data(), e.data() + e.size()), beside);
     const auto [c1, c2] = best_two_cuts(cost, edge);
-    const Eigen::Matrix2d g{{cost.gram(c1, c1), cost.gram(c1, c2)}, {cost.gram(c1, c2), cost.gram(c2, c2)}};
-    const Eigen::Vector2d size = g.ldlt().solve(Eigen::Vector2d(cost.tail_r[c1], cost.tail_r[c2]));
+    Eigen::Vector2d u;
+    const Eigen::Vector2d size = cost.gram(c1, c2, u).ldlt().solve(u);
     const double outputs = static_cast<double>(n) / std::max(1.0, long_run_factor);
     out.tested = true;
     out.steps[0] = {t_s[c1], size(0)};
