@@ -295,7 +295,7 @@ void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& ju
         std::vector<double> shape_residual(judge.y.size()), base_residual(judge.y.size());
         for (std::size_t k = 0; k < judge.y.size(); ++k)
             shape_residual[k] = judge.y[k] - with_shape[k], base_residual[k] = judge.y[k] - without[k];
-        const Eigen::MatrixXd q = orthonormal_basis(eq1_tangent(judge.t_s, current.base[channel_index(judge.channel)].drift.tau_s));
+        const Eigen::MatrixXd q = eq1_tangent_basis(judge.t_s, current.base[channel_index(judge.channel)].drift.tau_s);
         ex.shape_steps = steps_over_shape(judge.t_s, base_residual, shape_residual, static_cast<int>(ex.params.size()),
                                           white_floor_long_run_factor(current.smoothing), q);
     }

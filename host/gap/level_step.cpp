@@ -24,6 +24,13 @@ constexpr double kEdgeFraction = 0.02;  // a step this close to an end is half a
 std::size_t edge_outputs(std::size_t n) {
     return std::max<std::size_t>(2, static_cast<std::size_t>(kEdgeFraction * static_cast<double>(n)));
 }
+
+// x less its projection onto the span of the orthonormal columns q (eq. 1 refitted beside, linearised).
+std::vector<double> off_span(const Eigen::MatrixXd& q, Eigen::VectorXd x) {
+    x -= q * (q.transpose() * x);
+    return {x.data(), x.data() + x.size()};
+}
+
 constexpr double kMemoryShare = 0.1;    // the whitening's memory, as a share of the log
 constexpr int kFloorEvaluations = 40;   // Nelder-Mead budget of the explanation's one free parameter, its floor
 
@@ -176,12 +183,11 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     // residual about the same mean still has it. Each (the log's too, for a like statistic) therefore loses its
     // projection onto eq. 1's tangent, the fit linearised: without it a walk's replicates keep the lowest frequencies
     // the log's fit absorbed, and their excursions pass for steps as large as the log's.
-    const Eigen::MatrixXd q = orthonormal_basis(eq1_tangent(t_s, model.base[i].drift.tau_s));
+    const Eigen::MatrixXd q = eq1_tangent_basis(t_s, model.base[i].drift.tau_s);
     const auto residual_about_mean = [&](const std::vector<double>& x) {
         Eigen::VectorXd e(static_cast<Eigen::Index>(x.size()));
         for (std::size_t k = 0; k < x.size(); ++k) e[static_cast<Eigen::Index>(k)] = x[k] - mean[k];
-        e -= q * (q.transpose() * e);
-        return std::vector<double>(e.data(), e.data() + e.size());
+        return off_span(q, e);
     };
     const std::vector<double> r = residual_about_mean(y);
     const std::vector<bool> all(r.size(), true);
@@ -270,9 +276,8 @@ StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vecto
     if (n < 4 * edge + 4 || shape_residual.size() != n) return out;
     double shape_rss = 0.0;
     for (double r : shape_residual) shape_rss += r * r;
-    Eigen::VectorXd e = Eigen::Map<const Eigen::VectorXd>(base_residual.data(), static_cast<Eigen::Index>(n));
-    e -= beside * (beside.transpose() * e);
-    const StepsBesideColumns cost(std::vector<double>(e.data(), e.data() + e.size()), beside);
+    const StepsBesideColumns cost(off_span(beside, Eigen::Map<const Eigen::VectorXd>(base_residual.data(), static_cast<Eigen::Index>(n))),
+                                  beside);
     const auto [c1, c2] = best_two_cuts(cost, edge);
     Eigen::Vector2d u;
     const Eigen::Vector2d size = cost.gram(c1, c2, u).ldlt().solve(u);

@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 
 #include "host/gap/nelder_mead.hpp"
+#include "host/gap/whittle.hpp"
 
 namespace driftlab::host::gap {
 
@@ -250,6 +251,10 @@ Eigen::MatrixXd eq1_tangent(const std::vector<double>& t_s, double tau_s) {
         x.row(static_cast<Eigen::Index>(k)) << 1.0, e, u * e;
     }
     return x;
+}
+
+Eigen::MatrixXd eq1_tangent_basis(const std::vector<double>& t_s, double tau_s) {
+    return orthonormal_basis(eq1_tangent(t_s, tau_s));
 }
 
 }  // namespace driftlab::host::gap

@@ -36,6 +36,9 @@ std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const
 /// (AbsorbedColumns, whittle.hpp).
 Eigen::MatrixXd eq1_tangent(const std::vector<double>& t_s, double tau_s);
 
+/// An orthonormal basis of eq1_tangent()'s span: what a residual loses when eq. 1 is refitted beside another fit.
+Eigen::MatrixXd eq1_tangent_basis(const std::vector<double>& t_s, double tau_s);
+
 /// Fits the first `n` samples of (t_s, y).
 TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);
 ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);

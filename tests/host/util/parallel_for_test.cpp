@@ -2,6 +2,7 @@
 #include "host/util/parallel_for.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -22,14 +23,16 @@ TEST(ParallelFor, CallsEveryIndexExactlyOnceWhateverTheThreadCount) {
 }
 
 TEST(ParallelFor, RunsOnAsManyThreadsAsAskedWhenThereIsWork) {
-    // Each call waits until `threads` calls are under way at once: it returns only if the pool has that many threads.
+    // Each call waits until `threads` calls are under way at once, which happens only if the pool has that many
+    // threads; a pool with fewer would wait forever, so the wait gives up after a generous while and the count fails.
     constexpr int kThreads = 3;
     std::atomic<int> running{0}, most{0};
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
     parallel_for(kThreads, kThreads, [&](std::size_t) {
         const int now = ++running;
         for (int seen = most.load(); now > seen && !most.compare_exchange_weak(seen, now);) {
         }
-        while (most.load() < kThreads) std::this_thread::yield();
+        while (most.load() < kThreads && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
     });
     EXPECT_EQ(most.load(), kThreads);
 }
