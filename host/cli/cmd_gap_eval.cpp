@@ -24,6 +24,8 @@ struct GapEvalCommandOptions {
     std::vector<std::string> effects;
     gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     std::vector<double> levels;
+    std::vector<std::string> pairs;
+    double pair_level = 2.0;
     int clean_per_seed = 0;
     bool quick = false;
     bool clean_only = false;
@@ -49,21 +51,45 @@ std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, con
     }
 }
 
+// A generator named by itself or by the library effect it stands for.
+std::string generator_named(const std::string& flag, const std::string& name) {
+    for (const auto& t : gap::truth_list())
+        if (t.generator == name || t.effect == name) return t.generator;
+    throw UsageError(flag + ": unknown generator or effect '" + name + "'");
+}
+
+std::vector<std::pair<std::string, std::string>> parse_pairs(const std::vector<std::string>& list) {
+    std::vector<std::pair<std::string, std::string>> pairs;
+    if (list.size() == 1 && list.front() == "none") return pairs;
+    for (const std::string& p : list) {
+        const auto plus = p.find('+');
+        if (plus == std::string::npos) throw UsageError("--pairs: expected A+B, got '" + p + "'");
+        const std::string a = generator_named("--pairs", p.substr(0, plus)), b = generator_named("--pairs", p.substr(plus + 1));
+        if (a == b) throw UsageError("--pairs: '" + p + "' names one generator twice");
+        for (const std::string& g : {a, b}) {
+            const gap::TruthInfo& t = gap::truth_info(g);
+            if (t.kind == gap::TruthInfo::Kind::converter)
+                throw UsageError("--pairs: " + g + " replaces the converter; pairs act at its input");
+            // A pair is scored by the library effects it holds; an out-of-library one has none to find.
+            if (t.effect.empty()) throw UsageError("--pairs: " + g + " stands for no library effect");
+        }
+        pairs.emplace_back(a, b);
+    }
+    return pairs;
+}
+
 void run(const GapEvalCommandOptions& o) {
     gap::EvalOptions options;
     std::tie(options.tune_first, options.tune_last) = parse_range("--seeds-tune", o.tune_seeds);
     std::tie(options.score_first, options.score_last) = parse_range("--seeds-score", o.score_seeds);
     if (!(options.score_first > options.tune_last || options.score_last < options.tune_first))
         throw UsageError("--seeds-tune and --seeds-score must not overlap");
-    for (const std::string& e : o.effects) {
-        bool found = false;
-        for (const auto& t : gap::truth_list())
-            if (t.generator == e || t.effect == e) {
-                options.generators.push_back(t.generator);
-                found = true;
-            }
-        if (!found) throw UsageError("--effects: unknown generator or effect '" + e + "'");
-    }
+    for (const std::string& e : o.effects) options.generators.push_back(generator_named("--effects", e));
+    // The full run plants the default pairs too; a run of chosen effects only those asked for.
+    options.pairs = o.pairs.empty() ? (o.effects.empty() && !o.quick && !o.clean_only ? gap::default_pairs()
+                                                                                     : decltype(options.pairs){})
+                                    : parse_pairs(o.pairs);
+    options.pair_level = o.pair_level;
     if (!o.plot_dir.empty()) {
         // Before the run, so that an unwritable folder is reported at once rather than after it.
         make_output_folder(o.plot_dir, "plot");
@@ -99,8 +125,10 @@ void run(const GapEvalCommandOptions& o) {
     }
     options.progress = progress_for("diagnosing log");
     const auto cases = gap::run_cases(options, sizes);
+    options.progress = progress_for("diagnosing two-effect log");
+    const auto pair_cases = gap::run_pairs(options, sizes);
     const gap::Thresholds th = options.tune ? gap::tune(cases) : gap::Thresholds{};
-    const gap::EvalScores scores = gap::score(cases, th, options, sizes);
+    const gap::EvalScores scores = gap::score(cases, th, options, sizes, pair_cases);
     // The scores first: a plot that fails must not lose a run of many minutes.
     if (o.json)
         std::cout << gap::scores_json(scores).dump(2) << "\n";
@@ -111,6 +139,12 @@ void run(const GapEvalCommandOptions& o) {
         gap::write_eval_plots(scores, o.plot_dir);
         std::fprintf(stderr, "gap-eval: plots in %s (gap_eval_detected, gap_eval_top1)\n", o.plot_dir.c_str());
     }
+}
+
+std::string default_pairs_text() {
+    std::string text;
+    for (const auto& [a, b] : gap::default_pairs()) text += (text.empty() ? "" : ",") + a + "+" + b;
+    return text;
 }
 
 }  // namespace
@@ -126,6 +160,13 @@ void register_gap_eval(CLI::App& app) {
     CLI::Option* levels = cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
         ->delimiter(',')
         ->check(positive_number());
+    CLI::Option* pairs =
+        cmd->add_option("--pairs", o->pairs,
+                        "Two-effect logs: pairs A+B of generators (or effects) planted together, diagnosed as `driftlab gap` "
+                        "runs; 'none' for none (default: " + default_pairs_text() + " in a run of all effects, none with --effects)")
+            ->delimiter(',');
+    cmd->add_option("--pair-level", o->pair_level, "Each of a pair at this multiple of its own a_50 (default 2)")
+        ->check(positive_number());
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
                     "Clean logs per seed for the false-positive rate (default: as many as sizes)")
         ->check(CLI::Range(1, 1000));
@@ -138,12 +179,13 @@ void register_gap_eval(CLI::App& app) {
                   "Clean logs only, scored with the thresholds `driftlab gap` ships (implies --shipped): the "
                   "false-positive rate on many seeds (no a_50)")
         ->excludes(effects)
-        ->excludes(levels);
+        ->excludes(levels)
+        ->excludes(pairs);
     cmd->add_flag("--raw-clean", o->raw_clean,
                   "Clean logs are raw-mode (a raw_gyro column, so their code-histogram cells are tested too), as the "
                   "converter generator's logs are");
     cmd->add_flag("--json", o->json,
-                  "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size, targets)");
+                  "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size, targets, pairs)");
     cmd->add_option("--plot", o->plot_dir,
                     "Also write DIR/gap_eval_detected and DIR/gap_eval_top1 (PNG, SVG): detected and right-verdict shares "
                     "against size, with 95 % intervals")

@@ -26,6 +26,26 @@ struct SizeScore {
     std::optional<double> predicted, remeasured, oracle, abs_error;
 };
 
+/// Two truth generators planted together (EvalOptions::pairs), over the scoring seeds. The set scores treat each
+/// log's added effects as a set against the two truth effects (precision: added effects that are true; recall: true
+/// effects added; F1: their harmonic mean), pooled over the logs.
+struct PairScore {
+    std::string first, second;                ///< truth generators
+    std::string first_effect, second_effect;  ///< the library effects they stand for
+    double level = 0.0;                       ///< each at this multiple of its own a_50
+    int logs = 0, detected = 0;
+    int verdict_one = 0;   ///< the verdict (the first effect added) is one of the two
+    int both = 0;          ///< both effects added
+    int wrong = 0;         ///< an effect added that neither generator stands for
+    int unexplained = 0;   ///< verdict `unexplained`
+    int added = 0;         ///< effects added, over the logs
+    int found = 0;         ///< true effects added, over the logs (at most 2 per log)
+    int found_or_pair = 0; ///< true effects added or declared as an added effect's close call
+    double precision = 0.0, recall = 0.0, f1 = 0.0, recall_or_pair = 0.0;
+    /// Median held-out shrink, (before - after) / (before - 1), of the final model on the logs given both effects.
+    std::optional<double> shrink;
+};
+
 /// One of the benchmark's targets read on the scoring cases: a rate with its 95 % Clopper-Pearson interval.
 struct TargetScore {
     std::string target;       ///< what is counted, e.g. "top-1: kasdin_flicker -> flicker at 2 x a_50"
@@ -53,11 +73,12 @@ struct EvalScores {
     /// False-positive rate <= 5 %; at kTargetLevel, top-1 >= 80 % per library effect and out-of-library logs
     /// attributed to a library effect <= 20 % (also over all sizes). Rows without logs are left out.
     std::vector<TargetScore> targets;
+    std::vector<PairScore> pairs;  ///< two-effect logs, per pair
 };
 
 /// Scores the scoring cases under `th`.
 EvalScores score(const std::vector<EvalCase>& cases, const Thresholds& th, const EvalOptions& options,
-                 const std::vector<DetectionSize>& sizes);
+                 const std::vector<DetectionSize>& sizes, const std::vector<PairCase>& pairs = {});
 
 /// The markdown tables of docs/gap.md.
 std::string scores_markdown(const EvalScores& s);
@@ -66,7 +87,9 @@ std::string scores_markdown(const EvalScores& s);
 /// (`generator`, `a50`, `curve[]` {`size`, `detected`, `logs`}), `false_positive` {`clean`, `flagged`, `rate`,
 /// `interval`}, `confusion` {generator: {verdict: count}}, `by_size[]` (`generator`, `truth`, `level`, `logs`,
 /// `detected`, `top1`, `or_pair`, `shrink` {`predicted`, `remeasured`, `oracle`, `abs_error`}), `targets[]` (`target`,
-/// `count`, `logs`, `rate`, `interval`, `bound`, `at_most`, `met`, `settled`).
+/// `count`, `logs`, `rate`, `interval`, `bound`, `at_most`, `met`, `settled`), `pairs[]` (`generators`, `effects`,
+/// `level`, `logs`, `detected`, `verdict_one`, `both`, `wrong`, `unexplained`, `added`, `found`, `found_or_pair`,
+/// `precision`, `recall`, `recall_or_pair`, `f1`, `shrink`).
 nlohmann::json scores_json(const EvalScores& s);
 
 }  // namespace driftlab::host::gap

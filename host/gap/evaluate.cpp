@@ -54,12 +54,6 @@ GapModel randomised_truth(std::uint64_t seed) {
     return m;
 }
 
-const TruthInfo& truth_info(const std::string& generator) {
-    for (const auto& t : truth_list())
-        if (t.generator == generator) return t;
-    throw std::invalid_argument("unknown truth generator: " + generator);
-}
-
 bool raw_mode(const std::string& generator) {
     return generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter;
 }
@@ -116,11 +110,43 @@ double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const
     return std::sqrt(sum / static_cast<double>(t.size()));
 }
 
-// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations. A random
-// generator's size is its standard deviation, a converter's its rms DNL; a deterministic one's is the RMS of the
+// `generator`, acting at the converter input, at `size_sd` output-noise deviations on `model`: the signal added and
+// its planted size. A random generator's size is its standard deviation; a deterministic one's is the RMS of the
 // part the base's eq. 1 fit cannot absorb, since only that part can be detected (a slow RC-network rise is 98-99 %
 // absorbed, by a share that varies threefold with its time constants; sizing by the peak made the detection curve
 // non-monotone).
+struct InputSignal {
+    std::vector<double> added;
+    double size_counts = 0.0;  ///< the planted size [counts]
+    double scale = 0.0;        ///< make_truth()'s size argument that plants it
+};
+InputSignal input_signal(const std::string& generator, double size_sd, const GapModel& model, std::uint64_t seed,
+                         std::size_t samples) {
+    InputSignal s;
+    s.size_counts = size_sd * output_noise_sd(model);
+    std::vector<double> t(samples);
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kSamplePeriodS;
+    const std::vector<double> unit = make_truth(generator, t, 1.0, seed, seed);
+    s.scale = s.size_counts;
+    if (truth_info(generator).kind == TruthInfo::Kind::shape) {
+        // eq. 1 is nonlinear in T, so the absorbed share depends a little on the size: one correction.
+        auto scaled = [&](double g) {
+            std::vector<double> v(unit);
+            for (double& x : v) x *= g;
+            return v;
+        };
+        // A shape eq. 1 absorbs almost wholly stays almost invisible: its peak is capped at kMaxPeakPerSize sizes.
+        const double cap = kMaxPeakPerSize * s.size_counts;
+        s.scale = std::min(cap, s.size_counts / std::max(unabsorbed_rms(model, t, unit), 1e-12));
+        s.scale = std::min(cap, s.scale * s.size_counts / std::max(unabsorbed_rms(model, t, scaled(s.scale)), 1e-12));
+    }
+    s.added = unit;
+    for (double& x : s.added) x *= s.scale;
+    return s;
+}
+
+// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations (a converter
+// generator's size is its rms DNL).
 Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean) {
     Planted p;
     p.model = randomised_truth(seed);
@@ -135,25 +161,10 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
             p.occupancy[static_cast<std::size_t>(code)] += 1.0;
         quantiser = make_converter_truth(generator, p.scale, p.occupancy, seed, seed);
     } else if (generator != "none") {
-        p.size_counts = size_sd * output_noise_sd(p.model);
-        std::vector<double> t(samples);
-        for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kSamplePeriodS;
-        const std::vector<double> unit = make_truth(generator, t, 1.0, seed, seed);
-        p.scale = p.size_counts;
-        if (truth_info(generator).kind == TruthInfo::Kind::shape) {
-            // eq. 1 is nonlinear in T, so the absorbed share depends a little on the size: one correction.
-            auto scaled = [&](double g) {
-                std::vector<double> v(unit);
-                for (double& x : v) x *= g;
-                return v;
-            };
-            // A shape eq. 1 absorbs almost wholly stays almost invisible: its peak is capped at kMaxPeakPerSize sizes.
-            const double cap = kMaxPeakPerSize * p.size_counts;
-            p.scale = std::min(cap, p.size_counts / std::max(unabsorbed_rms(p.model, t, unit), 1e-12));
-            p.scale = std::min(cap, p.scale * p.size_counts / std::max(unabsorbed_rms(p.model, t, scaled(p.scale)), 1e-12));
-        }
-        added = unit;
-        for (double& x : added) x *= p.scale;
+        InputSignal in = input_signal(generator, size_sd, p.model, seed, samples);
+        p.size_counts = in.size_counts;
+        p.scale = in.scale;
+        added = std::move(in.added);
     }
     p.log = make_log(p.model, added, quantiser, samples, seed, quantiser || (generator == "none" && raw_clean));
     return p;
@@ -229,7 +240,40 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     return c;
 }
 
+// A second generator's noise is drawn apart from the first's (their generators' streams could otherwise coincide).
+constexpr std::uint64_t kSecondGeneratorSeed = 0x5EC0D5EEDull;
+
+PairCase run_pair_case(const std::string& first, const std::string& second, double level, std::uint64_t seed,
+                       const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    PairCase c;
+    c.first = first, c.second = second, c.level = level, c.seed = seed;
+    const GapModel model = randomised_truth(seed);
+    std::vector<double> added = input_signal(first, level * size_of(sizes, first), model, seed, options.samples).added;
+    const std::vector<double> more =
+        input_signal(second, level * size_of(sizes, second), model, seed ^ kSecondGeneratorSeed, options.samples).added;
+    for (std::size_t k = 0; k < added.size(); ++k) added[k] += more[k];
+    // As `driftlab gap` runs: its shipped thresholds and stepwise limit.
+    GapOptions go = gap_options(seed, options);
+    go.explain_options.max_effects = ExplainOptions{}.max_effects;
+    go.explain_options.step_test_candidates = false;
+    const GapResult r = diagnose(make_log(model, added, {}, options.samples, seed, false), sim::paper_model(), go);
+    c.detected = !r.located.empty();
+    c.verdict = r.verdict;
+    for (const auto& e : r.accepted) {
+        c.added.push_back(e.effect);
+        c.close_calls.push_back(e.ambiguous_with);
+    }
+    c.heldout_before = r.gap_before_heldout;
+    c.heldout_after = r.gap_after_heldout;
+    return c;
+}
+
 }  // namespace
+
+std::vector<std::pair<std::string, std::string>> default_pairs() {
+    return {{"thermostat", "thermal_rc"}, {"thermostat", "kasdin_flicker"}, {"thermal_rc", "student_walk"},
+            {"wandering_ou", "burst_spikes"}};
+}
 
 bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok) {
     if (c.truth.empty()) return d.verdict == "unexplained" || d.verdict == "none";
@@ -298,7 +342,10 @@ std::optional<double> logistic_a50(const std::vector<DetectionPoint>& curve) {
 }
 
 std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
-    const auto gens = generators_of(options);
+    auto gens = generators_of(options);
+    for (const auto& [first, second] : options.pairs)
+        for (const std::string& g : {first, second})
+            if (std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
     std::vector<DetectionSize> out;
     for (std::size_t g = 0; g < gens.size(); ++g) {
         DetectionSize d{gens[g], first_guess(gens[g]), {}};
@@ -387,6 +434,32 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
         const std::lock_guard<std::mutex> lock(progress_mutex);
         ++done;
         if (options.progress) options.progress(done, places.size());
+    });
+    return out;
+}
+
+std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    for (const auto& [first, second] : options.pairs)
+        for (const std::string& g : {first, second})
+            if (raw_mode(g) || truth_info(g).effect.empty())
+                throw std::invalid_argument(g + ": pairs hold generators of library effects that act at the converter input");
+    struct Job {
+        std::size_t pair;
+        std::uint64_t seed;
+    };
+    std::vector<Job> jobs;
+    // Seeds above any of run_cases() (seed * 1009 + place stays below 2^32 for any seed range a run can hold).
+    for (std::uint64_t s = options.score_first; s <= options.score_last; ++s)
+        for (std::size_t k = 0; k < options.pairs.size(); ++k) jobs.push_back({k, (s << 32) + 0x9A1Bull + k});
+    std::vector<PairCase> out(jobs.size());
+    std::size_t done = 0;
+    std::mutex progress_mutex;
+    parallel_for(jobs.size(), options.threads, [&](std::size_t n) {
+        const auto& [first, second] = options.pairs[jobs[n].pair];
+        out[n] = run_pair_case(first, second, options.pair_level, jobs[n].seed, options, sizes);
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        ++done;
+        if (options.progress) options.progress(done, jobs.size());
     });
     return out;
 }

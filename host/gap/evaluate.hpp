@@ -30,9 +30,19 @@ struct EvalOptions {
     int replicates = 20;
     int fit_replicates = ExplainOptions{}.fit_replicates;    ///< as `driftlab gap` ships
     int max_evaluations = ExplainOptions{}.max_evaluations;
+    /// Two-effect logs: each pair of truth generators planted together, each at `pair_level` x its own a_50, on the
+    /// scoring seeds, diagnosed as `driftlab gap` runs (its shipped thresholds, effects added stepwise). Converter
+    /// generators (sar_mismatch) replace the quantiser and out-of-library ones (mode_hop) have no effect to find:
+    /// neither is paired.
+    std::vector<std::pair<std::string, std::string>> pairs;
+    double pair_level = 2.0;
     int threads = 2;              ///< logs diagnosed at once, one thread each (the verdicts do not depend on it)
     std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional; called from those threads, one at a time
 };
+
+/// The pairs a full run plants together (no --effects): two mean shapes (a thermostat's cycle over a board's slow
+/// warm-up), a mean shape on a noise process, a mean shape on a heavy-tailed walk, and a process with events.
+std::vector<std::pair<std::string, std::string>> default_pairs();
 
 /// One size of a detection curve: logs planted at `size`, and how many of them got located cells.
 struct DetectionPoint {
@@ -75,6 +85,18 @@ struct EvalCase {
     bool has_oracle = false;      ///< of the truth generator at its planted size (planted, detected cases)
 };
 
+/// A log with two truth generators planted together, and what the diagnosis made of it.
+struct PairCase {
+    std::string first, second;          ///< truth generators
+    double level = 0.0;                 ///< each at this multiple of its own a_50
+    std::uint64_t seed = 0;
+    bool detected = false;
+    std::string verdict;                ///< the diagnosis's verdict: its first added effect, "none" or "unexplained"
+    std::vector<std::string> added;     ///< every effect added stepwise, in order
+    std::vector<std::string> close_calls;  ///< per added effect, its declared close call ("" for none)
+    double heldout_before = 1.0, heldout_after = 1.0;  ///< held-out gap score of the base and of the final model
+};
+
 /// The decision thresholds gap-eval tunes; the defaults are the ones `driftlab gap` ships (ExplainOptions).
 struct Thresholds {
     double penalty_per_param = ExplainOptions{}.penalty_per_param;
@@ -98,6 +120,10 @@ bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok);
 
 /// Runs every case (tuning and scoring seeds), planting each generator at level x its a_50 from `sizes`.
 std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
+
+/// The two-effect logs of `options.pairs` (scoring seeds; their seeds are apart from run_cases()', so adding pairs
+/// to a run changes none of its other logs).
+std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
 
 /// Thresholds (penalty per parameter, minimum held-out shrink, level of the level-step test, information criterion)
 /// maximising top-1 accuracy on the tuning cases with a false-positive rate <= 5 %; the shipped ones (Thresholds{})

@@ -16,6 +16,12 @@ const std::vector<TruthInfo>& truth_list() {
     return list;
 }
 
+const TruthInfo& truth_info(const std::string& generator) {
+    for (const auto& t : truth_list())
+        if (t.generator == generator) return t;
+    throw std::invalid_argument("unknown truth generator: " + generator);
+}
+
 std::vector<double> make_truth(const std::string& generator, const std::vector<double>& t_s, double size_counts,
                                std::uint64_t seed, std::uint64_t noise_seed) {
     if (generator == "thermal_rc") return truth_thermal_rc(t_s, size_counts, seed);

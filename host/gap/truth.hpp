@@ -41,6 +41,9 @@ struct TruthInfo {
 /// Every generator, in the order gap-eval lists them.
 const std::vector<TruthInfo>& truth_list();
 
+/// The entry of truth_list() for `generator`. Throws std::invalid_argument on a bad name.
+const TruthInfo& truth_info(const std::string& generator);
+
 /// The signal of `generator` at the output instants `t_s` [counts]. `seed` draws the generator's shape (time
 /// constants, period, step instants); `noise_seed` draws the random path of the random generators, so that
 /// fresh realisations of one truth share its shape (gap-eval's oracle). Throws std::invalid_argument on a bad name.

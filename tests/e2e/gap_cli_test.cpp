@@ -149,5 +149,22 @@ TEST(GapEvalCli, RawCleanLogsAreReportedAsRawMode) {
     EXPECT_NE(md.output.find("False-positive rate on clean raw-mode logs: "), std::string::npos) << md.output;
 }
 
+// --pairs names two generators of library effects that act at the converter input; anything else is a usage error
+// naming the pair, before any log is made.
+TEST(GapEvalCli, ABadPairIsRefusedNamingIt) {
+    TempDir dir("gapevalpairs");
+    auto refused = [&](const std::string& pair, const std::string& message) {
+        const RunResult r = run_driftlab({"gap-eval", "--quick", "--effects", "thermostat", "--pairs", pair}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << pair << ": " << r.output;
+        EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("| generator"), std::string::npos) << "no benchmark output before the refusal";
+    };
+    refused("thermostat", "--pairs: expected A+B, got 'thermostat'");
+    refused("thermostat+ambient_cycle", "names one generator twice");
+    refused("thermostat+mode_hop", "--pairs: mode_hop stands for no library effect");
+    refused("sar_mismatch+flicker", "--pairs: sar_mismatch replaces the converter");
+    refused("thermostat+wobble", "--pairs: unknown generator or effect 'wobble'");
+}
+
 }  // namespace
 }  // namespace driftlab::e2e
