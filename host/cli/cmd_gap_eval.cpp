@@ -64,9 +64,13 @@ std::vector<std::pair<std::string, std::string>> parse_pairs(const std::vector<s
     for (const std::string& p : list) {
         const auto plus = p.find('+');
         if (plus == std::string::npos) throw UsageError("--pairs: expected A+B, got '" + p + "'");
-        const std::string a = generator_named("--pairs", p.substr(0, plus)), b = generator_named("--pairs", p.substr(plus + 1));
+        // A+none plants A alone, diagnosed as `driftlab gap` runs: what its later steps add beside the right effect.
+        const std::string second = p.substr(plus + 1);
+        const std::string a = generator_named("--pairs", p.substr(0, plus));
+        const std::string b = second == "none" ? second : generator_named("--pairs", second);
         if (a == b) throw UsageError("--pairs: '" + p + "' names one generator twice");
         for (const std::string& g : {a, b}) {
+            if (g == "none") continue;
             const gap::TruthInfo& t = gap::truth_info(g);
             if (t.kind == gap::TruthInfo::Kind::converter)
                 throw UsageError("--pairs: " + g + " replaces the converter; pairs act at its input");
@@ -163,7 +167,8 @@ void register_gap_eval(CLI::App& app) {
     CLI::Option* pairs =
         cmd->add_option("--pairs", o->pairs,
                         "Two-effect logs: pairs A+B of generators (or effects) planted together, diagnosed as `driftlab gap` "
-                        "runs; 'none' for none (default: " + default_pairs_text() + " in a run of all effects, none with --effects)")
+                        "runs (A+none: A alone, so run); 'none' for none (default: " + default_pairs_text() +
+                            " in a run of all effects, none with --effects)")
             ->delimiter(',');
     cmd->add_option("--pair-level", o->pair_level, "Each of a pair at this multiple of its own a_50 (default 2)")
         ->check(positive_number());

@@ -69,7 +69,7 @@ std::vector<TargetScore> read_targets(const EvalScores& s) {
 
 std::string percent(double v) { return fixed(100.0 * v, 1) + " %"; }
 
-// Each log's added effects as a set against the pair's two truth effects, pooled over the logs of each pair.
+// Each log's added effects as a set against its truth effects (one or two), pooled over the logs of each pair.
 std::vector<PairScore> score_pairs(const std::vector<PairCase>& cases) {
     std::vector<PairScore> out;
     std::vector<std::vector<double>> shrinks;
@@ -80,7 +80,8 @@ std::vector<PairScore> score_pairs(const std::vector<PairCase>& cases) {
         if (it == out.end()) {
             PairScore z;
             z.first = c.first, z.second = c.second, z.level = c.level;
-            z.first_effect = truth_info(c.first).effect, z.second_effect = truth_info(c.second).effect;
+            z.first_effect = truth_info(c.first).effect;
+            z.second_effect = c.second == "none" ? "" : truth_info(c.second).effect;
             out.push_back(z);
             shrinks.emplace_back();
             it = out.end() - 1;
@@ -88,31 +89,34 @@ std::vector<PairScore> score_pairs(const std::vector<PairCase>& cases) {
         const auto in = [&](const std::vector<std::string>& list, const std::string& e) {
             return std::find(list.begin(), list.end(), e) != list.end();
         };
-        const auto is_truth = [&](const std::string& e) { return e == it->first_effect || e == it->second_effect; };
+        std::vector<std::string> truths{it->first_effect};
+        if (!it->second_effect.empty()) truths.push_back(it->second_effect);
+        const auto is_truth = [&](const std::string& e) { return in(truths, e); };
         ++it->logs;
         it->detected += c.detected;
         it->verdict_one += is_truth(c.verdict);
         it->unexplained += c.verdict == "unexplained";
         it->added += static_cast<int>(c.added.size());
+        it->truths += static_cast<int>(truths.size());
         int found = 0, found_or_pair = 0;
-        for (const std::string& e : {it->first_effect, it->second_effect}) {
+        for (const std::string& e : truths) {
             found += in(c.added, e);
             found_or_pair += in(c.added, e) || in(c.close_calls, e);
         }
         it->found += found;
         it->found_or_pair += found_or_pair;
-        it->both += found == 2;
+        const bool all = found == static_cast<int>(truths.size());
+        it->all += all;
         it->wrong += !std::all_of(c.added.begin(), c.added.end(), is_truth);
-        if (found == 2 && c.heldout_before > 1.0)
+        if (all && c.heldout_before > 1.0)
             shrinks[static_cast<std::size_t>(it - out.begin())].push_back((c.heldout_before - c.heldout_after) /
                                                                           (c.heldout_before - 1.0));
     }
     for (std::size_t k = 0; k < out.size(); ++k) {
         PairScore& z = out[k];
-        const double truths = 2.0 * z.logs;
         z.precision = z.added > 0 ? static_cast<double>(z.found) / z.added : 0.0;
-        z.recall = static_cast<double>(z.found) / truths;
-        z.recall_or_pair = static_cast<double>(z.found_or_pair) / truths;
+        z.recall = static_cast<double>(z.found) / z.truths;
+        z.recall_or_pair = static_cast<double>(z.found_or_pair) / z.truths;
         z.f1 = z.precision + z.recall > 0.0 ? 2.0 * z.precision * z.recall / (z.precision + z.recall) : 0.0;
         z.shrink = median(shrinks[k]);
     }
@@ -236,20 +240,26 @@ std::string scores_markdown(const EvalScores& s) {
                << (t.met ? "yes" : "no") << " | " << (t.settled ? "yes" : "no") << " |\n";
     }
     if (!s.pairs.empty()) {
-        md << "\n### Two effects planted together (scoring seeds; each at " << o.pair_level
+        md << "\n### Two effects planted together, or one alone (scoring seeds; each at " << o.pair_level
            << " x its own a_50; diagnosed as `driftlab gap` runs, up to three effects added stepwise)\n\n"
-              "Each log's added effects are a set scored against the two truth effects, pooled over the logs: "
-              "`precision`, added effects that are true; `recall`, true effects added (`or pair`: or declared as an "
-              "added effect's close call); `F1`, their harmonic mean. `one`: verdicts (the first effect added) naming "
-              "either; `both`: logs given both; `wrong`: logs given an effect neither stands for. Held-out shrink: "
-              "median (before - after) / (before - 1) of the final model on the logs given both.\n\n"
-              "| generators (effects) | n | detected | one | both | wrong | unexplained | precision | recall | or pair | F1 | held-out shrink |\n"
+              "Each log's added effects are a set scored against its truth effects (two, or one where the generator is "
+              "planted alone), pooled over the logs: `precision`, added effects that are true; `recall`, true effects "
+              "added (`or pair`: or declared as an added effect's close call); `F1`, their harmonic mean. `one`: "
+              "verdicts (the first effect added) naming a truth effect; `all`: logs given every truth effect; `wrong`: "
+              "logs given an effect no truth stands for. Held-out shrink: median (before - after) / (before - 1) of "
+              "the final model on the logs given every truth effect.\n\n"
+              "| generators (effects) | n | detected | one | all | wrong | unexplained | precision | recall | or pair | F1 | held-out shrink |\n"
               "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-        for (const auto& z : s.pairs)
-            md << "| " << z.first << " + " << z.second << " (" << z.first_effect << " + " << z.second_effect << ") | " << z.logs
-               << " | " << z.detected << " | " << z.verdict_one << " | " << z.both << " | " << z.wrong << " | "
+        for (const auto& z : s.pairs) {
+            md << "| " << z.first;
+            if (z.second == "none")
+                md << " alone (" << z.first_effect << ")";
+            else
+                md << " + " << z.second << " (" << z.first_effect << " + " << z.second_effect << ")";
+            md << " | " << z.logs << " | " << z.detected << " | " << z.verdict_one << " | " << z.all << " | " << z.wrong << " | "
                << z.unexplained << " | " << fixed(z.precision, 2) << " | " << fixed(z.recall, 2) << " | "
                << fixed(z.recall_or_pair, 2) << " | " << fixed(z.f1, 2) << " | " << fixed(z.shrink) << " |\n";
+        }
     }
     return md.str();
 }
@@ -309,24 +319,28 @@ nlohmann::json scores_json(const EvalScores& s) {
                            {"settled", t.settled}});
     j["targets"] = targets;
     json pairs = json::array();
-    for (const auto& z : s.pairs)
+    for (const auto& z : s.pairs) {
+        json effects = json::array({z.first_effect});
+        if (!z.second_effect.empty()) effects.push_back(z.second_effect);
         pairs.push_back({{"generators", {z.first, z.second}},
-                         {"effects", {z.first_effect, z.second_effect}},
+                         {"effects", effects},
                          {"level", z.level},
                          {"logs", z.logs},
                          {"detected", z.detected},
                          {"verdict_one", z.verdict_one},
-                         {"both", z.both},
+                         {"all", z.all},
                          {"wrong", z.wrong},
                          {"unexplained", z.unexplained},
                          {"added", z.added},
                          {"found", z.found},
+                         {"truths", z.truths},
                          {"found_or_pair", z.found_or_pair},
                          {"precision", report::json_number(z.precision)},
                          {"recall", report::json_number(z.recall)},
                          {"recall_or_pair", report::json_number(z.recall_or_pair)},
                          {"f1", report::json_number(z.f1)},
                          {"shrink", number(z.shrink)}});
+    }
     j["pairs"] = pairs;
     return j;
 }

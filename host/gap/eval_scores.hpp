@@ -26,23 +26,24 @@ struct SizeScore {
     std::optional<double> predicted, remeasured, oracle, abs_error;
 };
 
-/// Two truth generators planted together (EvalOptions::pairs), over the scoring seeds. The set scores treat each
-/// log's added effects as a set against the two truth effects (precision: added effects that are true; recall: true
-/// effects added; F1: their harmonic mean), pooled over the logs.
+/// Two truth generators planted together (EvalOptions::pairs; or one alone, second "none"), over the scoring seeds.
+/// The set scores treat each log's added effects as a set against its truth effects (precision: added effects that
+/// are true; recall: true effects added; F1: their harmonic mean), pooled over the logs.
 struct PairScore {
-    std::string first, second;                ///< truth generators
-    std::string first_effect, second_effect;  ///< the library effects they stand for
+    std::string first, second;                ///< truth generators (second "none": the first alone)
+    std::string first_effect, second_effect;  ///< the library effects they stand for ("" for none)
     double level = 0.0;                       ///< each at this multiple of its own a_50
     int logs = 0, detected = 0;
-    int verdict_one = 0;   ///< the verdict (the first effect added) is one of the two
-    int both = 0;          ///< both effects added
+    int verdict_one = 0;   ///< the verdict (the first effect added) is a truth effect
+    int all = 0;           ///< every truth effect added
     int wrong = 0;         ///< an effect added that neither generator stands for
     int unexplained = 0;   ///< verdict `unexplained`
     int added = 0;         ///< effects added, over the logs
     int found = 0;         ///< true effects added, over the logs (at most 2 per log)
+    int truths = 0;        ///< truth effects planted, over the logs
     int found_or_pair = 0; ///< true effects added or declared as an added effect's close call
     double precision = 0.0, recall = 0.0, f1 = 0.0, recall_or_pair = 0.0;
-    /// Median held-out shrink, (before - after) / (before - 1), of the final model on the logs given both effects.
+    /// Median held-out shrink, (before - after) / (before - 1), of the final model on the logs given every truth effect.
     std::optional<double> shrink;
 };
 
@@ -88,7 +89,7 @@ std::string scores_markdown(const EvalScores& s);
 /// `interval`}, `confusion` {generator: {verdict: count}}, `by_size[]` (`generator`, `truth`, `level`, `logs`,
 /// `detected`, `top1`, `or_pair`, `shrink` {`predicted`, `remeasured`, `oracle`, `abs_error`}), `targets[]` (`target`,
 /// `count`, `logs`, `rate`, `interval`, `bound`, `at_most`, `met`, `settled`), `pairs[]` (`generators`, `effects`,
-/// `level`, `logs`, `detected`, `verdict_one`, `both`, `wrong`, `unexplained`, `added`, `found`, `found_or_pair`,
+/// `level`, `logs`, `detected`, `verdict_one`, `all`, `wrong`, `unexplained`, `added`, `found`, `truths`, `found_or_pair`,
 /// `precision`, `recall`, `recall_or_pair`, `f1`, `shrink`).
 nlohmann::json scores_json(const EvalScores& s);
 

@@ -249,9 +249,11 @@ PairCase run_pair_case(const std::string& first, const std::string& second, doub
     c.first = first, c.second = second, c.level = level, c.seed = seed;
     const GapModel model = randomised_truth(seed);
     std::vector<double> added = input_signal(first, level * size_of(sizes, first), model, seed, options.samples).added;
-    const std::vector<double> more =
-        input_signal(second, level * size_of(sizes, second), model, seed ^ kSecondGeneratorSeed, options.samples).added;
-    for (std::size_t k = 0; k < added.size(); ++k) added[k] += more[k];
+    if (second != "none") {
+        const std::vector<double> more =
+            input_signal(second, level * size_of(sizes, second), model, seed ^ kSecondGeneratorSeed, options.samples).added;
+        for (std::size_t k = 0; k < added.size(); ++k) added[k] += more[k];
+    }
     // As `driftlab gap` runs: its shipped thresholds and stepwise limit.
     GapOptions go = gap_options(seed, options);
     go.explain_options.max_effects = ExplainOptions{}.max_effects;
@@ -345,7 +347,7 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
     auto gens = generators_of(options);
     for (const auto& [first, second] : options.pairs)
         for (const std::string& g : {first, second})
-            if (std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
+            if (g != "none" && std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
     std::vector<DetectionSize> out;
     for (std::size_t g = 0; g < gens.size(); ++g) {
         DetectionSize d{gens[g], first_guess(gens[g]), {}};
@@ -441,8 +443,9 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
 std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
     for (const auto& [first, second] : options.pairs)
         for (const std::string& g : {first, second})
-            if (raw_mode(g) || truth_info(g).effect.empty())
-                throw std::invalid_argument(g + ": pairs hold generators of library effects that act at the converter input");
+            if ((g != "none" || g == first) && (g == "none" || raw_mode(g) || truth_info(g).effect.empty()))
+                throw std::invalid_argument(g + ": pairs hold generators of library effects that act at the converter input "
+                                                "(the second may be none)");
     struct Job {
         std::size_t pair;
         std::uint64_t seed;

@@ -33,7 +33,8 @@ struct EvalOptions {
     /// Two-effect logs: each pair of truth generators planted together, each at `pair_level` x its own a_50, on the
     /// scoring seeds, diagnosed as `driftlab gap` runs (its shipped thresholds, effects added stepwise). Converter
     /// generators (sar_mismatch) replace the quantiser and out-of-library ones (mode_hop) have no effect to find:
-    /// neither is paired.
+    /// neither is paired. A second generator "none" plants the first alone: a single-effect log diagnosed as `driftlab
+    /// gap` runs, which shows the effects its later steps add beside the right one.
     std::vector<std::pair<std::string, std::string>> pairs;
     double pair_level = 2.0;
     int threads = 2;              ///< logs diagnosed at once, one thread each (the verdicts do not depend on it)
@@ -87,7 +88,7 @@ struct EvalCase {
 
 /// A log with two truth generators planted together, and what the diagnosis made of it.
 struct PairCase {
-    std::string first, second;          ///< truth generators
+    std::string first, second;          ///< truth generators (second "none": the first alone)
     double level = 0.0;                 ///< each at this multiple of its own a_50
     std::uint64_t seed = 0;
     bool detected = false;

@@ -164,6 +164,7 @@ TEST(GapEvalCli, ABadPairIsRefusedNamingIt) {
     refused("thermostat+mode_hop", "--pairs: mode_hop stands for no library effect");
     refused("sar_mismatch+flicker", "--pairs: sar_mismatch replaces the converter");
     refused("thermostat+wobble", "--pairs: unknown generator or effect 'wobble'");
+    refused("none+thermostat", "--pairs: unknown generator or effect 'none'");
 }
 
 }  // namespace

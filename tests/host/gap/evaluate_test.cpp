@@ -486,7 +486,8 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     EXPECT_EQ(z.second_effect, "flicker");
     EXPECT_EQ(z.logs, 5);
     EXPECT_EQ(z.verdict_one, 3);
-    EXPECT_EQ(z.both, 2);
+    EXPECT_EQ(z.all, 2);
+    EXPECT_EQ(z.truths, 10);
     EXPECT_EQ(z.wrong, 2);  // gauss_markov, spikes
     EXPECT_EQ(z.unexplained, 1);
     EXPECT_EQ(z.added, 8);
@@ -501,10 +502,28 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     const auto j = scores_json(s);
     ASSERT_EQ(j["pairs"].size(), 1u);
     EXPECT_EQ(j["pairs"][0]["found_or_pair"], 7);
+    EXPECT_EQ(j["pairs"][0]["effects"].size(), 2u);
     EXPECT_NEAR(j["pairs"][0]["f1"].get<double>(), z.f1, 1e-12);
     EXPECT_NE(scores_markdown(s).find("| thermostat + kasdin_flicker (ambient_cycle + flicker) | 5 | 5 | 3 | 2 | 2 | 1 | 0.75 | 0.60 | 0.70 | 0.67 | 0.90 |"),
               std::string::npos)
         << scores_markdown(s);
+
+    // A generator planted alone ("none" second) has one truth effect: an extra effect beside it costs precision only.
+    std::vector<PairCase> alone(2, make({"flicker", "gauss_markov"}, {"", ""}, "flicker", 5.0, 1.0));
+    for (auto& c : alone) c.first = "kasdin_flicker", c.second = "none";
+    alone[1].added = {"flicker"}, alone[1].close_calls = {""};
+    const PairScore a = score({}, Thresholds{}, EvalOptions{}, {}, alone).pairs.at(0);
+    EXPECT_EQ(a.second_effect, "");
+    EXPECT_EQ(a.truths, 2);
+    EXPECT_EQ(a.all, 2);
+    EXPECT_EQ(a.wrong, 1);
+    EXPECT_DOUBLE_EQ(a.recall, 1.0);
+    EXPECT_DOUBLE_EQ(a.precision, 2.0 / 3.0);
+    const EvalScores sa = score({}, Thresholds{}, EvalOptions{}, {}, alone);
+    EXPECT_EQ(scores_json(sa)["pairs"][0]["effects"], nlohmann::json::array({"flicker"}));
+    EXPECT_NE(scores_markdown(sa).find("| kasdin_flicker alone (flicker) | 2 | 2 | 2 | 2 | 1 | 0 | 0.67 | 1.00 | 1.00 | 0.80 |"),
+              std::string::npos)
+        << scores_markdown(sa);
 }
 
 // Two strong effects planted together are diagnosed as `driftlab gap` runs (up to three effects, stepwise): every
@@ -531,6 +550,9 @@ TEST(GapEval, TwoStrongEffectsPlantedTogetherAreBothFoundInMostLogs) {
         return b;
     }();
     EXPECT_THROW(run_pairs(bad, kSizes), std::invalid_argument);
+    EvalOptions none_first = o;
+    none_first.pairs = {{"none", "thermal_rc"}};
+    EXPECT_THROW(run_pairs(none_first, kSizes), std::invalid_argument);
 }
 
 }  // namespace
