@@ -68,15 +68,7 @@ std::vector<std::pair<std::string, std::string>> parse_pairs(const std::vector<s
         const std::string second = p.substr(plus + 1);
         const std::string a = generator_named("--pairs", p.substr(0, plus));
         const std::string b = second == "none" ? second : generator_named("--pairs", second);
-        if (a == b) throw UsageError("--pairs: '" + p + "' names one generator twice");
-        for (const std::string& g : {a, b}) {
-            if (g == "none") continue;
-            const gap::TruthInfo& t = gap::truth_info(g);
-            if (t.kind == gap::TruthInfo::Kind::converter)
-                throw UsageError("--pairs: " + g + " replaces the converter; pairs act at its input");
-            // A pair is scored by the library effects it holds; an out-of-library one has none to find.
-            if (t.effect.empty()) throw UsageError("--pairs: " + g + " stands for no library effect");
-        }
+        if (const std::string why = gap::pair_refusal(a, b); !why.empty()) throw UsageError("--pairs: " + why);
         pairs.emplace_back(a, b);
     }
     return pairs;

@@ -240,6 +240,20 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     return c;
 }
 
+// body(n) for every n < count, options.threads logs at a time, telling options.progress after each (one call at a
+// time, as EvalOptions promises).
+template <class Body>
+void run_logs(std::size_t count, const EvalOptions& options, Body body) {
+    std::size_t done = 0;
+    std::mutex progress_mutex;
+    parallel_for(count, options.threads, [&](std::size_t n) {
+        body(n);
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        ++done;
+        if (options.progress) options.progress(done, count);
+    });
+}
+
 // A second generator's noise is drawn apart from the first's (their generators' streams could otherwise coincide).
 constexpr std::uint64_t kSecondGeneratorSeed = 0x5EC0D5EEDull;
 
@@ -271,6 +285,19 @@ PairCase run_pair_case(const std::string& first, const std::string& second, doub
 }
 
 }  // namespace
+
+std::string pair_refusal(const std::string& first, const std::string& second) {
+    if (first == second) return first + "+" + second + " names one generator twice";
+    for (const std::string& g : {first, second}) {
+        if (g == "none" && g == second) continue;  // the first alone
+        if (g == "none") return "none+" + second + ": the first of a pair is a generator";
+        const TruthInfo& t = truth_info(g);
+        if (t.kind == TruthInfo::Kind::converter) return g + " replaces the converter; pairs act at its input";
+        // A pair is scored by the library effects it holds; an out-of-library one has none to find.
+        if (t.effect.empty()) return g + " stands for no library effect";
+    }
+    return "";
+}
 
 std::vector<std::pair<std::string, std::string>> default_pairs() {
     return {{"thermostat", "thermal_rc"}, {"thermostat", "kasdin_flicker"}, {"thermal_rc", "student_walk"},
@@ -427,25 +454,17 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
     for (std::size_t i = 0; i < jobs.size(); ++i)
         if (runs(jobs[i])) places.push_back(i);
     std::vector<EvalCase> out(places.size());
-    std::size_t done = 0;
-    std::mutex progress_mutex;
-    parallel_for(places.size(), options.threads, [&](std::size_t n) {
+    run_logs(places.size(), options, [&](std::size_t n) {
         const std::size_t i = places[n];
         const Job& j = jobs[i];
         out[n] = run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options, sizes);
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        ++done;
-        if (options.progress) options.progress(done, places.size());
     });
     return out;
 }
 
 std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
     for (const auto& [first, second] : options.pairs)
-        for (const std::string& g : {first, second})
-            if ((g != "none" || g == first) && (g == "none" || raw_mode(g) || truth_info(g).effect.empty()))
-                throw std::invalid_argument(g + ": pairs hold generators of library effects that act at the converter input "
-                                                "(the second may be none)");
+        if (const std::string why = pair_refusal(first, second); !why.empty()) throw std::invalid_argument(why);
     struct Job {
         std::size_t pair;
         std::uint64_t seed;
@@ -455,14 +474,9 @@ std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<De
     for (std::uint64_t s = options.score_first; s <= options.score_last; ++s)
         for (std::size_t k = 0; k < options.pairs.size(); ++k) jobs.push_back({k, (s << 32) + 0x9A1Bull + k});
     std::vector<PairCase> out(jobs.size());
-    std::size_t done = 0;
-    std::mutex progress_mutex;
-    parallel_for(jobs.size(), options.threads, [&](std::size_t n) {
+    run_logs(jobs.size(), options, [&](std::size_t n) {
         const auto& [first, second] = options.pairs[jobs[n].pair];
         out[n] = run_pair_case(first, second, options.pair_level, jobs[n].seed, options, sizes);
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        ++done;
-        if (options.progress) options.progress(done, jobs.size());
     });
     return out;
 }

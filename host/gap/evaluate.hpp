@@ -41,6 +41,11 @@ struct EvalOptions {
     std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional; called from those threads, one at a time
 };
 
+/// Why `first`+`second` cannot be planted as a pair (EvalOptions::pairs), or "" when it can: two distinct generators of
+/// library effects acting at the converter input, or the first alone (second "none"). Throws std::invalid_argument on
+/// an unknown generator.
+std::string pair_refusal(const std::string& first, const std::string& second);
+
 /// The pairs a full run plants together (no --effects): two mean shapes (a thermostat's cycle over a board's slow
 /// warm-up), a mean shape on a noise process, a mean shape on a heavy-tailed walk, and a process with events.
 std::vector<std::pair<std::string, std::string>> default_pairs();
