@@ -86,6 +86,11 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
         std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());
     }
+    for (const auto& p : r.paths)
+        std::printf("  step %d on %s: %s first and %s first both followed; criterion at the end %.1f and %.1f (kept: %s first, "
+                    "a shape path needs %.0f less)\n", p.step, p.channel.c_str(), p.process.c_str(), p.shape.c_str(),
+                    p.criterion_process, p.criterion_shape, (p.shape_kept ? p.shape : p.process).c_str(),
+                    options.explain_options.shape_path_margin);
     if (!r.tried.empty()) std::printf("candidates (fitted on the fitting part, judged on the held-out part):\n");
     for (const auto& e : r.tried) {
         std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.step,
@@ -184,7 +189,7 @@ void register_gap(CLI::App& app) {
                   "Also fit candidates when no cell is located but the held-out gap score exceeds its bound (a diffuse "
                   "gap); off by default, as gap-eval scores it");
     cmd->add_flag("--json", o->json,
-                  "Print JSON (keys: verdict, explanations, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
+                  "Print JSON (keys: verdict, explanations, paths, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
                   "not_identifiable, not_tried, calibration, timing)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->callback([o] { run(*o); });

@@ -159,6 +159,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo, raw);
         result.tried = std::move(ex.tried);
         result.accepted = std::move(ex.accepted);
+        result.paths = std::move(ex.paths);
         result.final_model = std::move(ex.model);
         // Only located cells make a gap no effect explains; a diffuse gap's search can name an effect or nothing.
         const char* nothing = result.located.empty() ? "none" : "unexplained";

@@ -61,6 +61,7 @@ struct GapResult {
     double gap_bound_before = 1.0, gap_bound_after = 1.0;  ///< level-alpha bounds of the held-out scores (closed gap)
     std::vector<Explanation> tried;      ///< every candidate fit, accepted first
     std::vector<Explanation> accepted;   ///< added stepwise, in order
+    std::vector<PathChoice> paths;       ///< where a process and a mean shape were each followed as the next effect
     std::vector<LevelStep> level_steps;  ///< per channel with accepted effects: a step the model leaves unexplained?
     /// No cell located, yet the held-out gap score exceeds its bound: many cells a little off, none alone beyond
     /// the family-wise threshold. The verdict stays "none" unless search_diffuse accepts an effect.

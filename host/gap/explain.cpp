@@ -378,30 +378,43 @@ Choice choose(const std::vector<const Explanation*>& passing, InformationCriteri
     return {g1, g2 ? g2 : other};
 }
 
-ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
-                      const std::array<const std::vector<double>*, kChannelCount>& y,
-                      const std::array<bool, kChannelCount>& channels, const BatteryOptions& battery,
-                      const ExplainOptions& options, const RawCodes& raw) {
-    ExplainResult result;
-    result.model = base;
-    std::vector<std::string> names = options.candidates;
-    if (names.empty())
-        for (const auto& info : candidate_list()) names.push_back(info.effect);
-    std::array<std::vector<std::string>, kChannelCount> used;
-    const std::size_t first_added = base.effects.size();  // effects[first_added + k] is accepted[k]
-    std::array<bool, kChannelCount> open = channels;
-    const std::vector<bool> fitting = fitting_mask(t_s, battery);
-    const std::vector<bool> everywhere(t_s.size(), true);
+namespace {
 
-    for (int step = 1; step <= options.max_effects; ++step) {
-        struct Option {
-            Explanation ex;
-            GapModel model;
-            std::vector<std::pair<std::size_t, std::vector<double>>> refits;
-        };
-        std::vector<Option> accepted;
+struct Option {
+    Explanation ex;
+    GapModel model;
+    std::vector<std::pair<std::size_t, std::vector<double>>> refits;
+};
+
+// The stepwise search's state after some steps.
+struct Path {
+    ExplainResult result;
+    std::array<std::vector<std::string>, kChannelCount> used;  ///< effects added per channel
+    std::array<bool, kChannelCount> open;                       ///< channels still searched
+};
+
+// A channel's choice at one step and, when that is a Gaussian process, the best accepted mean shape beside it.
+struct Chosen {
+    Option best;
+    std::optional<Option> shape;
+};
+
+struct Search {
+    const std::vector<double>& t_s;
+    const std::array<const std::vector<double>*, kChannelCount>& y;
+    const BatteryOptions& battery;
+    const ExplainOptions& options;
+    const RawCodes& raw;
+    std::vector<std::string> names;
+    std::size_t first_added;  // effects[first_added + k] is accepted[k]
+    std::vector<bool> fitting;
+    std::vector<bool> everywhere;
+
+    // Every open channel's candidates fitted and judged beside the path's model; tried fits are added to the path.
+    std::vector<Chosen> step(Path& path, int step) const {
+        std::vector<Chosen> chosen;
         for (std::size_t i = 0; i < kChannelCount; ++i) {
-            if (!open[i]) continue;
+            if (!path.open[i]) continue;
             const Channel c = static_cast<Channel>(i);
             Judge judge{t_s, *y[i], c, battery, {}, {}, {}, 0.0, fitting, options.seed, options.threads, battery.raw_codes[i] ? raw[i] : nullptr};
             judge.battery.channels = {};
@@ -416,7 +429,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
             judge.real = real.values;
             judge.residual = real.residual[i];
             judge.target_spread = short_lag_spread(judge.residual);
-            const Comparison base_cmp = judge.evaluate(result.model, options.eval_replicates);
+            const Comparison base_cmp = judge.evaluate(path.result.model, options.eval_replicates);
             // A channel stays open while cells are located or, after an accepted effect, a held-out excess remains
             // for another effect to shrink (one broad process may cover a line that is still there).
             const double heldout = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout));
@@ -424,29 +437,29 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                                  heldout > gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), options.diffuse_alpha);
             if (locate(judge.real, base_cmp, judge.layout).empty() && !diffuse &&
                 (step == 1 || heldout - 1.0 <= kMinHeldoutExcess)) {
-                open[i] = false;
+                path.open[i] = false;
                 continue;
             }
             // Gaussian processes accepted earlier on this channel are fitted again beside each new candidate:
             // one sized alone may have swallowed what the candidate explains (a broad flicker covers a sinusoid).
             std::vector<Earlier> earlier;
-            for (std::size_t k = 0; k < result.accepted.size(); ++k) {
-                const Explanation& prev = result.accepted[k];
+            for (std::size_t k = 0; k < path.result.accepted.size(); ++k) {
+                const Explanation& prev = path.result.accepted[k];
                 if (prev.channel != kChannelNames[i] || candidate(prev.effect).route != FitRoute::spectral) continue;
                 std::vector<double> p;
                 for (const auto& kv : prev.params) p.push_back(kv.second);
                 earlier.push_back({k, first_added + k, prev.effect, p});
             }
-            const bool shaped = std::any_of(result.accepted.begin(), result.accepted.end(), [&](const Explanation& e) {
+            const bool shaped = std::any_of(path.result.accepted.begin(), path.result.accepted.end(), [&](const Explanation& e) {
                 return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
             });
             const SpectralFit base_fit = [&] {
-                GapModel m = result.model;
+                GapModel m = path.result.model;
                 return fit_noise(m, judge, residual_periodogram(m, judge, everywhere), earlier, "", nullptr);
             }();
             std::vector<std::string> to_try;
             for (const std::string& effect : names) {
-                if (std::find(used[i].begin(), used[i].end(), effect) != used[i].end()) continue;
+                if (std::find(path.used[i].begin(), path.used[i].end(), effect) != path.used[i].end()) continue;
                 if (effect == "spikes" && !tails_differ(judge, base_cmp)) continue;
                 if (candidate(effect).route == FitRoute::code_density && !judge.raw) continue;  // needs raw codes
                 to_try.push_back(effect);
@@ -464,19 +477,19 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 const FitRoute route = candidate(effect).route;
                 Fitted fitted;
                 if (route == FitRoute::deterministic) {
-                    fitted = fit_deterministic(effect, result.model, judge, fitting);
+                    fitted = fit_deterministic(effect, path.result.model, judge, fitting);
                     if (!earlier.empty())
                         fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier, "", &fitted.refits);
                 } else if (route == FitRoute::spectral) {
-                    fitted.model = result.model;
+                    fitted.model = path.result.model;
                     const SpectralFit f = fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
                                                     effect, &fitted.refits);
                     fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()), f.params.end());
                 } else if (route == FitRoute::code_density) {
-                    fitted = fit_code_density(result.model, judge);
+                    fitted = fit_code_density(path.result.model, judge);
                     if (fitted.params.empty()) return;  // no transition crossed often enough to place
                 } else {
-                    fitted = fit_spikes(result.model, judge, options);
+                    fitted = fit_spikes(path.result.model, judge, options);
                 }
                 // The candidate takes part of the short-lag spread: match the white noise again with it in place.
                 std::array<bool, kChannelCount> only{};
@@ -490,7 +503,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 // step: a mean shape's misfit is judged by the cells it leaves located, and spikes cannot hold a
                 // level (a burst longer than one conversion, which the library's spikes do not make, would read as
                 // a short step).
-                if (ex.accepted && ex.gaussian) spectral_evidence(ex, result.model, judge, earlier, base_fit.nll, base_fit.free_parameters);
+                if (ex.accepted && ex.gaussian) spectral_evidence(ex, path.result.model, judge, earlier, base_fit.nll, base_fit.free_parameters);
                 if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
@@ -512,23 +525,91 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                 b.ambiguous_with = choice.runner_up->effect;
                 b.settle += "; vs " + choice.runner_up->effect + ": " + choice.runner_up->settle;
             }
-            for (const auto& o : here) result.tried.push_back(o.ex);
-            if (best_index < here.size())
-                accepted.push_back(here[best_index]);
-            else
-                open[i] = false;  // nothing passed, and the later steps change other channels only: the same fits again
+            for (const auto& o : here) path.result.tried.push_back(o.ex);
+            if (best_index == here.size()) {
+                path.open[i] = false;  // nothing passed, and the later steps change other channels only: the same fits again
+                continue;
+            }
+            // A process chosen over an accepted mean shape may have taken the shape's signal with the rest: the shape's
+            // path is followed too (run()). A shape that two level steps beat is no explanation to follow.
+            const Option* shape = nullptr;
+            if (candidate(here[best_index].ex.effect).route == FitRoute::spectral)
+                for (const auto& o : here)
+                    if (o.ex.accepted && candidate(o.ex.effect).route == FitRoute::deterministic && !o.ex.shape_steps.steps_win &&
+                        (!shape || delta_ic(o.ex, options.information_criterion) > delta_ic(shape->ex, options.information_criterion)))
+                        shape = &o;
+            chosen.push_back({here[best_index], shape ? std::optional<Option>(*shape) : std::nullopt});
         }
-        if (accepted.empty()) break;
-        const auto best = std::max_element(accepted.begin(), accepted.end(), [](const Option& a, const Option& b) {
-            return a.ex.heldout_loss_gain < b.ex.heldout_loss_gain;
-        });
-        result.model = best->model;
-        for (const auto& [k, params] : best->refits)
-            for (std::size_t p = 0; p < params.size(); ++p) result.accepted[k].params[p].second = params[p];
-        result.accepted.push_back(best->ex);
-        for (std::size_t i = 0; i < kChannelCount; ++i)
-            if (kChannelNames[i] == best->ex.channel) used[i].push_back(best->ex.effect);
+        return chosen;
     }
+
+    static Path with(Path path, const Option& o) {
+        path.result.model = o.model;
+        for (const auto& [k, params] : o.refits)
+            for (std::size_t p = 0; p < params.size(); ++p) path.result.accepted[k].params[p].second = params[p];
+        path.result.accepted.push_back(o.ex);
+        for (std::size_t i = 0; i < kChannelCount; ++i)
+            if (kChannelNames[i] == o.ex.channel) path.used[i].push_back(o.ex.effect);
+        return path;
+    }
+
+    // The full-log spectral information criterion of channel `i` under `r`'s model: its Gaussian processes fitted
+    // again on the whole log beside its mean shapes, charged for those and for the shapes' parameters.
+    double criterion(const ExplainResult& r, std::size_t i) const {
+        const Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, everywhere, options.seed, options.threads, nullptr};
+        std::vector<Earlier> earlier;
+        int shape_parameters = 0;
+        for (std::size_t k = 0; k < r.accepted.size(); ++k) {
+            const Explanation& e = r.accepted[k];
+            if (e.channel != kChannelNames[i]) continue;
+            std::vector<double> p;
+            for (const auto& kv : e.params) p.push_back(kv.second);
+            if (candidate(e.effect).route == FitRoute::spectral) earlier.push_back({k, first_added + k, e.effect, p});
+            if (candidate(e.effect).route == FitRoute::deterministic) shape_parameters += static_cast<int>(p.size());
+        }
+        GapModel m = r.model;
+        const PartPeriodogram p = residual_periodogram(m, judge, everywhere);
+        const SpectralFit fit = fit_noise(m, judge, p, earlier, "", nullptr);
+        return 2.0 * fit.nll + parameter_price(options.information_criterion, p.count) * (fit.free_parameters + shape_parameters);
+    }
+
+    // Steps from `step` on. Across channels the choice with the largest held-out likelihood gain is added; where a
+    // process was chosen over an accepted mean shape of its channel, the path with the shape instead is searched
+    // as well and the one whose final model has the lower criterion on that channel is kept.
+    ExplainResult run(Path path, int step) const {
+        if (step > options.max_effects) return std::move(path.result);
+        std::vector<Chosen> chosen = this->step(path, step);
+        if (chosen.empty()) return std::move(path.result);
+        const auto best = std::max_element(chosen.begin(), chosen.end(), [](const Chosen& a, const Chosen& b) {
+            return a.best.ex.heldout_loss_gain < b.best.ex.heldout_loss_gain;
+        });
+        ExplainResult process_first = run(with(path, best->best), step + 1);
+        if (!best->shape) return process_first;
+        ExplainResult shape_first = run(with(path, *best->shape), step + 1);
+        std::size_t i = 0;
+        while (kChannelNames[i] != best->best.ex.channel) ++i;
+        PathChoice choice{step, best->best.ex.channel, best->best.ex.effect, best->shape->ex.effect,
+                          criterion(process_first, i), criterion(shape_first, i), false};
+        choice.shape_kept = choice.criterion_shape + options.shape_path_margin < choice.criterion_process;
+        ExplainResult kept = choice.shape_kept ? std::move(shape_first) : std::move(process_first);
+        kept.paths.insert(kept.paths.begin(), choice);
+        return kept;
+    }
+};
+
+}  // namespace
+
+ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
+                      const std::array<const std::vector<double>*, kChannelCount>& y,
+                      const std::array<bool, kChannelCount>& channels, const BatteryOptions& battery,
+                      const ExplainOptions& options, const RawCodes& raw) {
+    Search search{t_s, y, battery, options, raw, options.candidates, base.effects.size(), fitting_mask(t_s, battery),
+                  std::vector<bool>(t_s.size(), true)};
+    if (search.names.empty())
+        for (const auto& info : candidate_list()) search.names.push_back(info.effect);
+    Path start{{}, {}, channels};
+    start.result.model = base;
+    ExplainResult result = search.run(std::move(start), 1);
     std::stable_sort(result.tried.begin(), result.tried.end(), [](const Explanation& a, const Explanation& b) {
         if (a.accepted != b.accepted) return a.accepted;
         return a.heldout_shrink > b.heldout_shrink;

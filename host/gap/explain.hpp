@@ -3,7 +3,8 @@
 // more than a BIC-like penalty per parameter AND the held-out gap shrinks by a clear margin. Among accepted
 // candidates whose signal is Gaussian (mean shapes and Gaussian processes), the full-log spectral BIC chooses;
 // spikes (non-Gaussian) compete with that choice on the held-out synthetic likelihood. Effects are added
-// stepwise (up to max_effects). docs/gap.md §Explain.
+// stepwise (up to max_effects); where a Gaussian process is chosen over an accepted mean shape, the path that takes
+// the shape first is searched too (a process can swallow a shape with the rest). docs/gap.md §Candidates.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +30,10 @@ struct ExplainOptions {
     double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
     double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
     InformationCriterion information_criterion = InformationCriterion::aic;  ///< choice among Gaussian candidates (tuned)
+    /// Where a Gaussian process is chosen over an accepted mean shape, the path that takes the shape instead is
+    /// searched too, and kept when its final model's spectral criterion is lower by more than this (2 x nll units).
+    /// On single-process logs of tuning seeds it won by more in 2 of 240 (docs/gap.md §Choice).
+    double shape_path_margin = 5.0;
     int step_replicates = 40;      ///< at least this many replicates for the level-step test's null
     /// Level-step test every accepted Gaussian-process candidate (gap-eval, whose tuned thresholds may choose any of
     /// them). driftlab gap tests its final model instead (diagnose()), which the choice does not depend on.
@@ -72,10 +77,21 @@ struct Explanation {
     std::string settle;             ///< the experiment that would separate them
 };
 
+/// A step where a Gaussian process was chosen over an accepted mean shape, and both paths were searched on.
+struct PathChoice {
+    int step = 0;
+    std::string channel;
+    std::string process, shape;              ///< the first effect of each path
+    double criterion_process = 0.0;          ///< the channel's full-log spectral criterion at the path's end
+    double criterion_shape = 0.0;
+    bool shape_kept = false;                 ///< criterion_shape + shape_path_margin < criterion_process
+};
+
 struct ExplainResult {
     GapModel model;                         ///< base plus the accepted effects
-    std::vector<Explanation> tried;         ///< every fit, accepted first, then by held-out gap
+    std::vector<Explanation> tried;         ///< every fit on the kept path, accepted first, then by held-out gap
     std::vector<Explanation> accepted;      ///< in the order they were added
+    std::vector<PathChoice> paths;          ///< the kept path's branch points, in step order
 };
 
 /// The acceptance rule: likelihood gain on all cells above penalty_per_param x penalty, a held-out gap to shrink,

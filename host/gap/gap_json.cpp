@@ -72,6 +72,16 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     for (const auto& e : r.tried)
         if (!was_added(r, e)) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
     j["explanations"] = ex;
+    json paths = json::array();
+    for (const auto& p : r.paths)
+        paths.push_back({{"step", p.step},
+                         {"channel", p.channel},
+                         {"process_first", p.process},
+                         {"shape_first", p.shape},
+                         {"criterion_process_first", report::json_number(p.criterion_process)},
+                         {"criterion_shape_first", report::json_number(p.criterion_shape)},
+                         {"kept", p.shape_kept ? p.shape : p.process}});
+    j["paths"] = paths;
     j["located"] = located_json(r.located, r.layout);
     j["located_after"] = located_json(r.located_after, r.layout);
     j["gap_before"] = {{"fit", report::json_number(r.gap_before_fit)},

@@ -188,6 +188,18 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
                << " % | " << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
         md << "\n";
     }
+    if (!r.paths.empty()) {
+        md << "A Gaussian process chosen over an accepted mean shape may have taken the shape's signal with the rest, so "
+              "the path that adds the shape first was followed too; the path whose final model has the lower full-log "
+              "spectral criterion on the channel is kept (a shape path by more than "
+           << fixed(options.explain_options.shape_path_margin, 0) << ").\n\n"
+           << "| step | channel | process first | shape first | criterion at the end | kept |\n|---|---|---|---|---|---|\n";
+        for (const auto& p : r.paths)
+            md << "| " << p.step << " | " << p.channel << " | " << p.process << " | " << p.shape << " | "
+               << fixed(p.criterion_process, 1) << " / " << fixed(p.criterion_shape, 1) << " | "
+               << (p.shape_kept ? p.shape : p.process) << " first |\n";
+        md << "\n";
+    }
     md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << ", beyond the practical margin)\n\n";
     md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < r.located.size() && i < 30; ++i) {

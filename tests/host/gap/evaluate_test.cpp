@@ -555,5 +555,25 @@ TEST(GapEval, TwoStrongEffectsPlantedTogetherAreBothFoundInMostLogs) {
     EXPECT_THROW(run_pairs(none_first, kSizes), std::invalid_argument);
 }
 
+// A thermostat's cycle over a board's slow warm-up: a random walk takes both shapes for one parameter and, chosen
+// first, closes the battery's gap before either shape is tried beside it (1 in 20 such logs named a shape before
+// the shape's path was searched as well).
+TEST(GapEval, TwoMeanShapesTogetherAreNotSwallowedByARandomWalk) {
+    EvalOptions o = quick_options();
+    o.score_first = 11;
+    o.score_last = 22;
+    o.pairs = {{"thermostat", "thermal_rc"}};
+    const auto cases = run_pairs(o, {{"thermostat", 0.23, {}}, {"thermal_rc", 0.19, {}}});  // docs/gap.md's a_50
+    ASSERT_EQ(cases.size(), 12u);
+    int shape_first = 0, cycle_added = 0;
+    for (const auto& c : cases) {
+        shape_first += c.verdict == "ambient_cycle" || c.verdict == "thermal_second_tc";
+        cycle_added += std::count(c.added.begin(), c.added.end(), "ambient_cycle") > 0;
+    }
+    // 6 and 6 of 12 when written; 1 and 1 with the process-first path alone (shape_path_margin infinite).
+    EXPECT_GE(shape_first, 4);
+    EXPECT_GE(cycle_added, 4);
+}
+
 }  // namespace
 }  // namespace driftlab::host::gap
