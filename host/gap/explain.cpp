@@ -410,6 +410,19 @@ struct Search {
     std::vector<bool> fitting;
     std::vector<bool> everywhere;
 
+    // The Gaussian processes accepted on channel `i`, with their parameters and model slots.
+    std::vector<Earlier> processes(const ExplainResult& r, std::size_t i) const {
+        std::vector<Earlier> out;
+        for (std::size_t k = 0; k < r.accepted.size(); ++k) {
+            const Explanation& e = r.accepted[k];
+            if (e.channel != kChannelNames[i] || candidate(e.effect).route != FitRoute::spectral) continue;
+            std::vector<double> p;
+            for (const auto& kv : e.params) p.push_back(kv.second);
+            out.push_back({k, first_added + k, e.effect, p});
+        }
+        return out;
+    }
+
     // Every open channel's candidates fitted and judged beside the path's model; tried fits are added to the path.
     std::vector<Chosen> step(Path& path, int step) const {
         std::vector<Chosen> chosen;
@@ -442,14 +455,7 @@ struct Search {
             }
             // Gaussian processes accepted earlier on this channel are fitted again beside each new candidate:
             // one sized alone may have swallowed what the candidate explains (a broad flicker covers a sinusoid).
-            std::vector<Earlier> earlier;
-            for (std::size_t k = 0; k < path.result.accepted.size(); ++k) {
-                const Explanation& prev = path.result.accepted[k];
-                if (prev.channel != kChannelNames[i] || candidate(prev.effect).route != FitRoute::spectral) continue;
-                std::vector<double> p;
-                for (const auto& kv : prev.params) p.push_back(kv.second);
-                earlier.push_back({k, first_added + k, prev.effect, p});
-            }
+            const std::vector<Earlier> earlier = processes(path.result, i);
             const bool shaped = std::any_of(path.result.accepted.begin(), path.result.accepted.end(), [&](const Explanation& e) {
                 return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
             });
@@ -557,16 +563,11 @@ struct Search {
     // again on the whole log beside its mean shapes, charged for those and for the shapes' parameters.
     double criterion(const ExplainResult& r, std::size_t i) const {
         const Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, everywhere, options.seed, options.threads, nullptr};
-        std::vector<Earlier> earlier;
+        const std::vector<Earlier> earlier = processes(r, i);
         int shape_parameters = 0;
-        for (std::size_t k = 0; k < r.accepted.size(); ++k) {
-            const Explanation& e = r.accepted[k];
-            if (e.channel != kChannelNames[i]) continue;
-            std::vector<double> p;
-            for (const auto& kv : e.params) p.push_back(kv.second);
-            if (candidate(e.effect).route == FitRoute::spectral) earlier.push_back({k, first_added + k, e.effect, p});
-            if (candidate(e.effect).route == FitRoute::deterministic) shape_parameters += static_cast<int>(p.size());
-        }
+        for (const Explanation& e : r.accepted)
+            if (e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic)
+                shape_parameters += static_cast<int>(e.params.size());
         GapModel m = r.model;
         const PartPeriodogram p = residual_periodogram(m, judge, everywhere);
         const SpectralFit fit = fit_noise(m, judge, p, earlier, "", nullptr);
