@@ -132,15 +132,16 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
 // A thermostat's cycle over a board's slow warm-up (gap-eval's generators, not the library's forms), diagnosed as
 // `driftlab gap` runs it. Where a process beats an accepted mean shape both paths are followed: the result is the
 // kept path (its effect added at the branch step, the verdict its first), kept by the criterion rule, and listed in
-// the JSON.
+// the JSON. Of these seeds 12 and 13 branch and keep the process's path; 18 keeps the shape's, whose criterion ends
+// 84 below that of a random walk added first.
 TEST(Diagnose, WhereAProcessBeatsAShapeBothPathsAreFollowedAndTheLowerCriterionKept) {
     const GapModel m = testing::paper_gyro_model(8);
     GapOptions o = small_options();
     o.explain_options.max_effects = 3;
     std::vector<double> t_s(1500);
     for (std::size_t k = 0; k < t_s.size(); ++k) t_s[k] = static_cast<double>(k + 1);
-    int branched = 0;
-    for (std::uint64_t seed : {11, 12, 13, 14}) {
+    int process_kept = 0, shape_kept = 0;
+    for (std::uint64_t seed : {12, 13, 18}) {
         std::vector<double> added = truth_thermostat(t_s, 1.0, seed);
         const std::vector<double> rise = truth_thermal_rc(t_s, 3.0, seed);
         for (std::size_t k = 0; k < added.size(); ++k) added[k] += rise[k];
@@ -149,8 +150,8 @@ TEST(Diagnose, WhereAProcessBeatsAShapeBothPathsAreFollowedAndTheLowerCriterionK
         ASSERT_EQ(j["paths"].size(), r.paths.size());
         for (std::size_t n = 0; n < r.paths.size(); ++n) {
             const PathChoice& p = r.paths[n];
-            ++branched;
             EXPECT_EQ(p.shape_kept, p.criterion_shape + o.explain_options.shape_path_margin < p.criterion_process);
+            ++(p.shape_kept ? shape_kept : process_kept);
             const std::string& kept = p.shape_kept ? p.shape : p.process;
             ASSERT_GE(r.accepted.size(), static_cast<std::size_t>(p.step));
             EXPECT_EQ(r.accepted[static_cast<std::size_t>(p.step - 1)].effect, kept) << "seed " << seed;
@@ -160,7 +161,8 @@ TEST(Diagnose, WhereAProcessBeatsAShapeBothPathsAreFollowedAndTheLowerCriterionK
             EXPECT_EQ(j["paths"][n]["kept"], kept);
         }
     }
-    EXPECT_GE(branched, 1);  // a kept shape path: GapEval.TwoMeanShapesTogetherAreNotSwallowedByARandomWalk
+    EXPECT_GE(process_kept, 1);
+    EXPECT_GE(shape_kept, 1);
 }
 
 // A step's candidates are fitted side by side and the replicates on a pool: on one thread the JSON is the same.
