@@ -111,12 +111,22 @@ struct StepsBesideColumns {
         const double det = g.determinant();
         return det > 0.0 ? rr - u.dot(g.inverse() * u) : rss(c1);
     }
+    // Whether the least-squares sizes of steps at c1 and c2 have opposite signs.
+    bool opposite(std::size_t c1, std::size_t c2) const {
+        Eigen::Vector2d u;
+        const Eigen::Matrix2d g = gram(c1, c2, u);
+        const double det = g.determinant();
+        if (det <= 0.0) return false;
+        const Eigen::Vector2d size = g.inverse() * u;
+        return size(0) * size(1) < 0.0;
+    }
 };
 
 // The best two change points (c1 < c2, each piece at least two outputs, `edge` clear of the ends) by alternating
 // scans, exact for either cut given the other (O(n) each): from the best single cut, the best second cut, then each
-// again given the other until neither moves.
-std::pair<std::size_t, std::size_t> best_two_cuts(const StepsBesideColumns& cost, std::size_t edge) {
+// again given the other until neither moves. With `hop_and_return` only steps of opposite signs count: two steps
+// the same way are a staircase, which a warm-up's unmodelled curvature draws, not a hop and its return.
+std::pair<std::size_t, std::size_t> best_two_cuts(const StepsBesideColumns& cost, std::size_t edge, bool hop_and_return = false) {
     const std::size_t n = cost.size();
     std::size_t c1 = edge;
     double best_cost = 1e300;
@@ -124,15 +134,18 @@ std::pair<std::size_t, std::size_t> best_two_cuts(const StepsBesideColumns& cost
         const double v = cost.rss(c);
         if (v < best_cost) best_cost = v, c1 = c;
     }
+    // Given one cut, the best other; under `hop_and_return` the best of opposite sign, unless there is none.
     auto best_other = [&](std::size_t fixed) {
-        std::size_t arg = 0;
-        double v_best = 1e300;
+        std::size_t arg = 0, any = 0;
+        double v_best = 1e300, v_any = 1e300;
         for (std::size_t c = edge; c + edge < n; ++c) {
             if (c + 1 >= fixed && c <= fixed + 1) continue;  // pieces of at least two outputs
             const double v = cost.rss(std::min(c, fixed), std::max(c, fixed));
-            if (v < v_best) v_best = v, arg = c;
+            if (v < v_any) v_any = v, any = c;
+            if (v < v_best && (!hop_and_return || cost.opposite(std::min(c, fixed), std::max(c, fixed))))
+                v_best = v, arg = c;
         }
-        return arg;
+        return v_best < 1e300 ? arg : any;
     };
     std::size_t c2 = best_other(c1);
     for (int round = 0; round < 8; ++round) {
@@ -278,7 +291,7 @@ StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vecto
     for (double r : shape_residual) shape_rss += r * r;
     const StepsBesideColumns cost(off_span(beside, Eigen::Map<const Eigen::VectorXd>(base_residual.data(), static_cast<Eigen::Index>(n))),
                                   beside);
-    const auto [c1, c2] = best_two_cuts(cost, edge);
+    const auto [c1, c2] = best_two_cuts(cost, edge, true);
     Eigen::Vector2d u;
     const Eigen::Vector2d size = cost.gram(c1, c2, u).ldlt().solve(u);
     const double outputs = static_cast<double>(n) / std::max(1.0, long_run_factor);

@@ -84,7 +84,8 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
 /// or a sine closes the battery's gap, as a random walk does around one; but two steps describe it better than the
 /// shape, while a thermostat's cycles or an RC network's rise are no steps. Both are fitted to the whole log over the
 /// current model (eq. 1 and the shapes accepted before): the shape jointly with eq. 1 (`shape_residual`), the steps
-/// by least squares on the current model's residual (`base_residual`; the best two change points), jointly with the
+/// by least squares on the current model's residual (`base_residual`; the best two change points whose steps have
+/// opposite signs: two the same way are a staircase, as a warm-up's unmodelled curvature draws), jointly with the
 /// orthonormal columns `beside` (eq. 1's tangent: eq. 1 refitted beside the steps, linearised, as it is beside the
 /// shape; without it eq. 1 stays bent toward a hop and the steps lose what the bend took). Their
 /// Gaussian likelihoods of a white floor are compared, each output counting 1 / `long_run_factor` (the smoother's
