@@ -105,21 +105,20 @@ struct StepsBesideColumns {
         u = {tail_r[c1], tail_r[c2]};
         return Eigen::Matrix2d{{gram(c1, c1), gram(c1, c2)}, {gram(c1, c2), gram(c2, c2)}};
     }
-    double rss(std::size_t c1, std::size_t c2) const {
+    // Two steps at c1 and c2 fitted by least squares: the residual sum of squares and whether their sizes have
+    // opposite signs (a hop and its return; false where the two columns are dependent and the fit is the first's).
+    struct TwoSteps {
+        double rss;
+        bool opposite;
+    };
+    TwoSteps fit(std::size_t c1, std::size_t c2) const {
         Eigen::Vector2d u;
         const Eigen::Matrix2d g = gram(c1, c2, u);
-        const double det = g.determinant();
-        return det > 0.0 ? rr - u.dot(g.inverse() * u) : rss(c1);
-    }
-    // Whether the least-squares sizes of steps at c1 and c2 have opposite signs.
-    bool opposite(std::size_t c1, std::size_t c2) const {
-        Eigen::Vector2d u;
-        const Eigen::Matrix2d g = gram(c1, c2, u);
-        const double det = g.determinant();
-        if (det <= 0.0) return false;
+        if (g.determinant() <= 0.0) return {rss(c1), false};
         const Eigen::Vector2d size = g.inverse() * u;
-        return size(0) * size(1) < 0.0;
+        return {rr - u.dot(size), size(0) * size(1) < 0.0};
     }
+    double rss(std::size_t c1, std::size_t c2) const { return fit(c1, c2).rss; }
 };
 
 // The best two change points (c1 < c2, each piece at least two outputs, `edge` clear of the ends) by alternating
@@ -140,10 +139,9 @@ std::pair<std::size_t, std::size_t> best_two_cuts(const StepsBesideColumns& cost
         double v_best = 1e300, v_any = 1e300;
         for (std::size_t c = edge; c + edge < n; ++c) {
             if (c + 1 >= fixed && c <= fixed + 1) continue;  // pieces of at least two outputs
-            const double v = cost.rss(std::min(c, fixed), std::max(c, fixed));
-            if (v < v_any) v_any = v, any = c;
-            if (v < v_best && (!hop_and_return || cost.opposite(std::min(c, fixed), std::max(c, fixed))))
-                v_best = v, arg = c;
+            const StepsBesideColumns::TwoSteps f = cost.fit(std::min(c, fixed), std::max(c, fixed));
+            if (f.rss < v_any) v_any = f.rss, any = c;
+            if (f.rss < v_best && (!hop_and_return || f.opposite)) v_best = f.rss, arg = c;
         }
         return v_best < 1e300 ? arg : any;
     };
