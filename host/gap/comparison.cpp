@@ -59,13 +59,6 @@ Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& repli
     return cmp;
 }
 
-double sum_z2(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep) {
-    double sum = 0.0;
-    for (std::size_t j = 0; j < layout.size(); ++j)
-        if (keep(layout[j])) sum += cmp.z[j] * cmp.z[j];
-    return sum;
-}
-
 double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep) {
     double real = 0.0, null = 0.0;
     std::size_t count = 0;

@@ -34,9 +34,6 @@ double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const C
 /// each left-out replicate (a Monte Carlo test, as for the cell threshold). A score at or below it is a closed gap.
 double gap_score_threshold(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep, double alpha);
 
-/// Sum of z^2 of the real log over the accepted cells (the candidate fits' objective).
-double sum_z2(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep);
-
 /// A cell that is both significant (|z| above the threshold) and beyond its practical margin.
 struct LocatedCell {
     std::size_t index = 0;     ///< into the layout

@@ -42,13 +42,6 @@ std::string describe_config_difference(const proto::ConfigPayload& want, const p
 
 }  // namespace
 
-const char* msg_type_name(std::uint8_t type_id) {
-    for (const proto::MsgInfo& info : proto::kMsgTable) {
-        if (proto::type_id(info.type) == type_id) return info.name;
-    }
-    return "unknown type";
-}
-
 const char* status_name(std::uint8_t status) {
     constexpr const char* kNames[] = {"ok", "bad_length", "unknown_type", "out_of_range",
                                       "bad_version", "not_allowed", "busy"};

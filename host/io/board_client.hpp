@@ -114,8 +114,6 @@ private:
     std::optional<std::uint8_t> foreign_version_;
 };
 
-/// "CONFIG_SET" and friends, for messages.
-const char* msg_type_name(std::uint8_t type_id);
 /// "out_of_range" and friends, for messages.
 const char* status_name(std::uint8_t status);
 

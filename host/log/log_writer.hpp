@@ -54,8 +54,6 @@ public:
     /// Flushes and closes; later calls do nothing.
     void close();
 
-    std::uint64_t rows_written() const { return rows_; }
-
 private:
     void append_line_end();
 

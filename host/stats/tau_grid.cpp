@@ -15,16 +15,6 @@ TauGrid parse_tau_grid(std::string_view name) {
     throw std::invalid_argument("unknown tau grid '" + std::string(name) + "' (expected octave, log, all, stable32)");
 }
 
-std::string_view tau_grid_name(TauGrid grid) {
-    switch (grid) {
-        case TauGrid::octave: return "octave";
-        case TauGrid::log: return "log";
-        case TauGrid::all: return "all";
-        case TauGrid::stable32_all: return "stable32";
-    }
-    return "?";
-}
-
 std::vector<std::int64_t> averaging_factors(const TauGridOptions& options, std::int64_t max_m) {
     std::vector<std::int64_t> ms;
     if (max_m < 1) return ms;

@@ -18,7 +18,6 @@ enum class TauGrid : std::uint8_t {
 
 /// Parses "octave", "log", "all", "stable32"; throws std::invalid_argument otherwise.
 TauGrid parse_tau_grid(std::string_view name);
-std::string_view tau_grid_name(TauGrid grid);
 
 struct TauGridOptions {
     TauGrid grid = TauGrid::octave;

@@ -102,8 +102,6 @@ public:
     std::size_t transmit(std::uint8_t* out, std::size_t capacity);
     /// Like transmit(), with the cycle each byte was written to UDR0.
     std::vector<UartTxByte> transmit_timed();
-    /// Host bytes still waiting to enter UART0.
-    std::size_t rx_pending() const { return rx_queue_.size(); }
 
     // ---- Figures ----
     /// Cycles the CPU slept (idle mode) since power-on; load = 1 - sleep / cycle.

@@ -25,8 +25,6 @@ public:
 
     /// Input voltage [V] expressed in (fractional, unquantised) counts.
     double counts_from_volts(double input_v) const { return input_v / lsb_v_; }
-    /// Counts [counts] expressed as an input voltage [V].
-    double volts_from_counts(double counts) const { return counts * lsb_v_; }
 
     double lsb_v() const { return lsb_v_; }         ///< one count [V]
     std::uint16_t max_code() const { return max_code_; }  ///< 2^bits - 1 [counts]

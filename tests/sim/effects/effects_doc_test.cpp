@@ -1,5 +1,5 @@
-// docs/effects.md stays true: every TOML example in it builds its effect, every effect has an example, and every
-// parameter key the registry knows appears in the document.
+// docs/effects.md stays true: every TOML example in it builds its effect, every effect has an example, the table
+// gives each effect the stage it is applied at, and every parameter key the registry knows appears in the document.
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -40,6 +40,18 @@ TEST(EffectsDoc, EveryExampleParsesAndEveryEffectHasOne) {
     for (const EffectInfo& info : list_effects()) {
         EXPECT_TRUE(covered.count(info.name)) << "no example for " << info.name;
         EXPECT_NE(doc.find("### " + info.name + "\n"), std::string::npos) << "no section for " << info.name;
+    }
+}
+
+// The table's Stage cell starts with the effect's default stage (saturation and spikes name a second one after it).
+TEST(EffectsDoc, TheTableNamesEachEffectsStage) {
+    const std::string doc = read_doc();
+    for (const EffectInfo& info : list_effects()) {
+        const std::string cell = "| `" + info.name + "` | ";
+        const std::size_t at = doc.find(cell);
+        ASSERT_NE(at, std::string::npos) << "no table row for " << info.name;
+        EXPECT_EQ(doc.compare(at + cell.size(), std::string(stage_name(info.stage)).size(), stage_name(info.stage)), 0)
+            << info.name << ": " << doc.substr(at + cell.size(), 24);
     }
 }
 

@@ -56,7 +56,6 @@ class Decoder {
   size_t frame_size() const { return proto::frame_size(buf_[kOffsetLen]); }
 
   const DecoderCounters& counters() const { return counters_; }
-  void clear_counters() { counters_ = DecoderCounters{}; }
 
   /// Bytes held that belong to no delivered frame yet (a candidate being received, or bytes still to re-scan).
   size_t bytes_held() const { return static_cast<size_t>(fill_ - ready_len_); }
