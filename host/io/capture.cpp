@@ -22,7 +22,7 @@ bool known_kind(std::uint8_t kind) {
            kind == static_cast<std::uint8_t>(CaptureKind::event);
 }
 
-constexpr char kMagic[] = "driftlab-capture: 1";
+constexpr char kMagic[] = "driftlab-capture: 1";  // the format version is the magic line's number
 
 void put_le(std::string& out, std::uint64_t v, int bytes) {
     for (int i = 0; i < bytes; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));

@@ -25,8 +25,6 @@
 
 namespace driftlab::host::io {
 
-inline constexpr int kCaptureFormatVersion = 1;
-
 enum class CaptureKind : std::uint8_t { rx = 'R', tx = 'T', event = 'E' };
 
 struct CaptureRecord {
