@@ -22,6 +22,7 @@ void register_flash(CLI::App& app);
 void register_record(CLI::App& app);
 void register_decode(CLI::App& app);
 void register_hil(CLI::App& app);
+void register_effects(CLI::App& app);
 void register_fit(CLI::App& app);
 void register_whiteness(CLI::App& app);
 void register_report(CLI::App& app);

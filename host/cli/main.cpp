@@ -14,6 +14,7 @@ constexpr driftlab::host::cli::RegisterFn kCommands[] = {
     driftlab::host::cli::register_record,
     driftlab::host::cli::register_decode,
     driftlab::host::cli::register_hil,
+    driftlab::host::cli::register_effects,
     driftlab::host::cli::register_fit,
     driftlab::host::cli::register_whiteness,
     driftlab::host::cli::register_report,

@@ -1,0 +1,78 @@
+// `driftlab effects [NAME]`: the simulator's effect library as the registry knows it (sim/effects), so a model file's
+// keys and a gap verdict's effect can be looked up without the source; docs/effects.md says more of each.
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "host/cli/commands.hpp"
+#include "host/util/error.hpp"
+#include "sim/effects/effect.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct EffectsOptions {
+    std::string name;
+    bool json = false;
+};
+
+nlohmann::json to_json(const sim::EffectInfo& e) {
+    nlohmann::json params = nlohmann::json::array();
+    for (const sim::ParamInfo& p : e.params)
+        params.push_back({{"key", p.key}, {"unit", p.unit}, {"default", p.default_text}, {"doc", p.doc}});
+    return {{"name", e.name}, {"stage", sim::stage_name(e.stage)}, {"equation", e.equation}, {"summary", e.summary},
+            {"params", params}};
+}
+
+// The effect's parameters as a model file's table at their defaults (an effect at its defaults changes nothing),
+// each with its unit and meaning, ready to edit.
+void print_one(const sim::EffectInfo& e) {
+    std::cout << e.name << " (" << sim::stage_name(e.stage) << " stage): " << e.summary << "\n  " << e.equation
+              << "\n\n[effects." << e.name << "]\n";
+    std::size_t width = 0;
+    for (const sim::ParamInfo& p : e.params) width = std::max(width, p.key.size() + 3 + p.default_text.size());
+    for (const sim::ParamInfo& p : e.params) {
+        const std::string line = p.key + " = " + p.default_text;
+        std::cout << line << std::string(width - line.size(), ' ') << "  # " << (p.unit.empty() ? "" : "[" + p.unit + "] ")
+                  << p.doc << "\n";
+    }
+}
+
+}  // namespace
+
+void register_effects(CLI::App& app) {
+    auto opts = std::make_shared<EffectsOptions>();
+    CLI::App* cmd = app.add_subcommand("effects", "List the simulator's effect library, or show one effect's model-file table");
+    cmd->add_option("name", opts->name, "An effect: its equation and its parameters at their defaults, as TOML");
+    cmd->add_flag("--json", opts->json, "Print JSON (an array of: name, stage, equation, summary, params[])");
+    cmd->callback([opts] {
+        const auto& all = sim::list_effects();
+        std::vector<const sim::EffectInfo*> shown;
+        for (const sim::EffectInfo& e : all)
+            if (opts->name.empty() || e.name == opts->name) shown.push_back(&e);
+        if (shown.empty()) {
+            std::string names;
+            for (const sim::EffectInfo& e : all) names += (names.empty() ? "" : ", ") + e.name;
+            throw UsageError("effects: no effect '" + opts->name + "' (the library has " + names + ")");
+        }
+        if (opts->json) {
+            nlohmann::json out = nlohmann::json::array();
+            for (const sim::EffectInfo* e : shown) out.push_back(to_json(*e));
+            std::cout << out.dump(2) << "\n";
+        } else if (!opts->name.empty()) {
+            print_one(*shown.front());
+        } else {
+            std::size_t width = 0;
+            for (const sim::EffectInfo* e : shown) width = std::max(width, e->name.size());
+            for (const sim::EffectInfo* e : shown)
+                std::cout << e->name << std::string(width - e->name.size(), ' ') << "  " << sim::stage_name(e->stage)
+                          << std::string(10 - std::string(sim::stage_name(e->stage)).size(), ' ') << "  " << e->summary << "\n";
+            std::cout << "(in application order within each stage; `driftlab effects NAME` gives an effect's model-file table)\n";
+        }
+    });
+}
+
+}  // namespace driftlab::host::cli
