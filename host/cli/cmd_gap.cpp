@@ -1,5 +1,6 @@
 // `driftlab gap REAL.csv`: where the calibrated simulator differs from a real log, which effect explains it and
 // how far the gap shrinks once that effect is added (host/gap, docs/gap.md).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -11,15 +12,18 @@
 #include <unistd.h>
 
 #include "host/cli/commands.hpp"
+#include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
+#include "host/gap/model_out.hpp"
 #include "host/gap/plain_recording.hpp"
 #include "host/fit/series.hpp"
 #include "host/log/numeric_table.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 #include "sim/model/model_file.hpp"
 
@@ -32,6 +36,7 @@ struct GapCommandOptions {
     std::vector<std::string> channels;
     bool json = false;
     std::string report_dir;
+    std::string model_out;
     int replicates = 40;
     std::uint64_t seed = 1;
     double fit_fraction = 0.6;
@@ -117,6 +122,10 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
 void run(const GapCommandOptions& o) {
     const LogData log = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
+    if (!o.model_out.empty()) {
+        check_output_file(o.model_out, "model file");
+        gap::firmware_config(gap::smoothing_from_log(log), false, o.path);  // refused now, not after the diagnosis
+    }
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     gap::GapOptions options;
     options.replicates = o.replicates;
@@ -141,11 +150,25 @@ void run(const GapCommandOptions& o) {
     const gap::GapResult r = gap::diagnose(log, unit, options);
     if (tty) std::fprintf(stderr, "\r\033[K");
     if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options);
+    std::vector<std::string> model_notes;
+    if (!o.model_out.empty()) {
+        const bool raw = std::any_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; });
+        const gap::ModelOut m = gap::model_out(r.final_model, r.channels, raw, o.path);
+        std::string effects;
+        for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
+        std::string comment = "driftlab gap " + o.path + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
+                              "channels, the log's smoothing, effects added:" + (effects.empty() ? " none" : effects);
+        for (const std::string& n : m.notes) comment += "\nnote: " + n;
+        write_output_file(o.model_out, sim::write_model(m.model, comment), "model file");
+        model_notes = m.notes;
+    }
     if (o.json) {
         std::cout << gap::gap_to_json(r, options).dump(2) << "\n";
     } else {
         print_text(r, options);
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
+        if (!o.model_out.empty()) std::printf("model file: %s (driftlab hil --model %s simulates this unit)\n", o.model_out.c_str(), o.model_out.c_str());
+        for (const std::string& n : model_notes) std::printf("model file note: %s\n", n.c_str());
     }
 }
 
@@ -192,6 +215,8 @@ void register_gap(CLI::App& app) {
                   "Print JSON (keys: verdict, explanations, paths, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
                   "not_identifiable, not_tried, calibration, timing)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
+    cmd->add_option("--model-out", o->model_out,
+                    "Write the final model (calibrated base and the effects added) as a model file for driftlab hil --model");
     cmd->callback([o] { run(*o); });
 }
 

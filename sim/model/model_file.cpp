@@ -1,6 +1,9 @@
 // Model-file reader; see model_file.hpp and docs/sim.md §Model file.
 #include "sim/model/model_file.hpp"
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -201,12 +204,22 @@ void read_link(TableReader& r, LinkParams& link) {
     r.finish();
 }
 
+// An effect is a table, or an array of tables for several instances (one per channel, say); each is validated now,
+// so a bad effect fails at load time.
 void read_effects(const toml::table& effects, std::vector<EffectSpec>& out) {
     for (const auto& [k, n] : effects) {
         const std::string name(k.str());
         const std::string path = "effects." + name;
-        if (!n.is_table()) throw ConfigError(path, line_of(n), "expected a table of the effect's parameters");
-        make_effect(name, *n.as_table(), path);  // validates now, so a bad effect fails at load time
+        if (const toml::array* instances = n.as_array(); instances && instances->is_array_of_tables()) {
+            for (std::size_t j = 0; j < instances->size(); ++j) {
+                const toml::table& t = *instances->get(j)->as_table();
+                make_effect(name, t, path + "[" + std::to_string(j) + "]");
+                out.push_back({name, t});
+            }
+            continue;
+        }
+        if (!n.is_table()) throw ConfigError(path, line_of(n), "expected a table of the effect's parameters (or an array of them)");
+        make_effect(name, *n.as_table(), path);
         out.push_back({name, *n.as_table()});
     }
 }
@@ -269,7 +282,77 @@ SimModel parse_over(std::string_view text, const std::string& source_name, const
     }
 }
 
+// The shortest text that reads back as `v` exactly, always a TOML float.
+std::string number_text(double v) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    std::string text(buf, end);
+    if (text.find_first_of(".en") == std::string::npos) text += ".0";
+    return text;
+}
+
+// An effect parameter's value: a number, a flag, a string or an array of them (effects' tables are flat).
+std::string value_text(const toml::node& n) {
+    if (const auto* v = n.as_floating_point()) return number_text(v->get());
+    if (const auto* v = n.as_integer()) return std::to_string(v->get());
+    if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
+    std::ostringstream out;
+    if (const auto* v = n.as_string()) {
+        out << *v;  // toml++ quotes and escapes it
+    } else if (const auto* a = n.as_array()) {
+        out << "[";
+        for (std::size_t k = 0; k < a->size(); ++k) out << (k ? ", " : "") << value_text(*a->get(k));
+        out << "]";
+    } else {
+        throw std::invalid_argument("an effect parameter that is neither a value nor an array");
+    }
+    return out.str();
+}
+
+void write_direction(std::ostream& out, const std::string& path, const DirectionParams& d) {
+    const PacketLossParams& pl = d.packet_loss;
+    out << "\n[" << path << "]\nlatency_s = " << number_text(d.latency_s) << "\nbyte_error_rate = " << number_text(d.byte_error_rate)
+        << "\nbyte_drop_rate = " << number_text(d.byte_drop_rate) << "\n\n[" << path << ".packet_loss]\nunit = \""
+        << (pl.unit == LossUnit::frame ? "frame" : "byte") << "\"\np_good_to_bad = " << number_text(pl.p_good_to_bad)
+        << "\np_bad_to_good = " << number_text(pl.p_bad_to_good) << "\nloss_in_good = " << number_text(pl.loss_in_good)
+        << "\nloss_in_bad = " << number_text(pl.loss_in_bad) << "\n";
+}
+
 }  // namespace
+
+std::string write_model(const SimModel& m, std::string_view comment) {
+    std::ostringstream out;
+    std::size_t start = 0;
+    while (start < comment.size()) {
+        const std::size_t end = std::min(comment.find('\n', start), comment.size());
+        out << "# " << comment.substr(start, end - start) << "\n";
+        start = end + 1;
+    }
+    out << "name = " << value_text(toml::value<std::string>(m.name)) << "\n\n[adc]\nbits = " << m.adc.bits << "\nvref_v = " << number_text(m.adc.vref_v)
+        << "\n";
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        const std::string u = channel_unit(static_cast<Channel>(i));
+        const ChannelModel& ch = m.channels[i];
+        out << "\n[channels." << kChannelNames[i] << "]\nsensitivity_v_per_" << u << " = " << number_text(ch.front_end.sensitivity_v_per_unit)
+            << "\nnull_v = " << number_text(ch.front_end.null_v) << "\nspan_" << u << " = " << number_text(ch.front_end.span_unit)
+            << "\ncenter_" << u << " = " << number_text(ch.front_end.center_unit) << "\ninput_" << u << " = " << number_text(ch.input_unit)
+            << "\nraw_noise_std_" << u << " = " << number_text(ch.raw_noise_std_unit) << "\ndrift_c1_counts = " << number_text(ch.drift.c1_counts)
+            << "\ndrift_c2_counts = " << number_text(ch.drift.c2_counts) << "\ndrift_tau_s = " << number_text(ch.drift.tau_s) << "\n";
+    }
+    for (const EffectSpec& e : m.effects) {
+        const auto same = std::count_if(m.effects.begin(), m.effects.end(), [&](const EffectSpec& o) { return o.name == e.name; });
+        out << (same == 1 ? "\n[effects." : "\n[[effects.") << e.name << (same == 1 ? "]\n" : "]]\n");
+        for (const auto& [key, value] : e.table) out << key.str() << " = " << value_text(value) << "\n";
+    }
+    const proto::ConfigPayload& fw = m.firmware;
+    out << "\n[firmware]\noutput_period_ms = " << fw.output_period_ms << "\nconversions_per_output = " << int{fw.conversions_per_output}
+        << "\nwindow = " << int{fw.window} << "\nfit_order = " << int{fw.fit_order} << "\nmode = \"" << (fw.mode == 0 ? "poll" : "stream")
+        << "\"\nraw = " << (fw.raw ? "true" : "false") << "\n\n[link]\nbaud = " << number_text(m.link.baud) << "\n";
+    write_direction(out, "link.to_host", m.link.to_host);
+    write_direction(out, "link.to_firmware", m.link.to_firmware);
+    return out.str();
+}
 
 std::string_view paper_model_text() { return kPaperModelToml; }
 

@@ -1,4 +1,4 @@
-// Model files: TOML -> SimModel. A file overlays the paper's unit (paper_model()), so it names only what
+// Model files: TOML <-> SimModel. A file overlays the paper's unit (paper_model()), so it names only what
 // differs; every key carries its unit in its name (_v, _s, _dps, _g, _counts, _ms) or is documented in
 // docs/sim.md §Model file. Unknown keys, wrong types and out-of-range values are errors naming file, line and
 // key. Effects are parsed by the effect registry (sim/effects/effect.hpp).
@@ -17,6 +17,11 @@ SimModel load_model_file(const std::string& path);
 
 /// Parses model-file text; `source_name` names it in errors.
 SimModel parse_model(std::string_view toml_text, const std::string& source_name);
+
+/// Model-file text that parse_model() reads back to `model`: every key (so the file does not depend on the built-in
+/// model it would overlay), numbers in their shortest exact form, and an effect named more than once (one instance
+/// per channel, as the gap diagnosis fits them) as an array of tables. `comment` opens the file, each line after "# ".
+std::string write_model(const SimModel& model, std::string_view comment = {});
 
 /// The model file text compiled into the program (sim/models/paper.toml).
 std::string_view paper_model_text();

@@ -16,6 +16,9 @@ inline constexpr double kMinCalibratedRawStdCounts = 0.5;
 /// 0 gives 0; values in (0, kMinCalibratedRawStdCounts) are a caller error (the model file rejects them).
 double analog_sigma_for_raw_std_counts(double raw_std_counts);
 
+/// The inverse: the standard deviation [counts] of the quantised codes of analog noise `sigma_counts`.
+double raw_std_counts_for_analog_sigma(double sigma_counts);
+
 /// Independent Gaussian samples of a fixed sigma from the channel's own substream.
 class WhiteNoise {
 public:

@@ -3,6 +3,7 @@
 // come out with no gap. A plain recording (another logger's table) runs through its column mapping. And bad input
 // is refused with a message naming the file.
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <random>
 
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "e2e_support.hpp"
+#include "sim/model/model_file.hpp"
 
 namespace driftlab::e2e {
 namespace {
@@ -34,6 +36,45 @@ TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
     ASSERT_EQ(text.exit_code, 0) << text.output;
     EXPECT_NE(text.output.find("verdict: none (no cell located and the held-out score within its bound"), std::string::npos)
         << text.output;
+}
+
+// The loop a user closes: a unit with a thermal cycle the simulator's base lacks (on the gyro: 0.05 deg/s per K of a
+// 2 K, 400 s sine), its log diagnosed with --model-out, and that file simulated by hil. The file holds the cycle
+// and the calibrated base near the unit's own values, and a log simulated from it reads as the unit's did.
+TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
+    TempDir dir("gapmodelout");
+    {
+        std::ofstream(dir.file("unit.toml")) << "[effects.ambient_cycle]\nwaveform = \"sine\"\namplitude_k_pp = 2.0\nperiod_s = 400.0\n"
+                                                "lag_s = 0.0\ncoupling_dps_per_k = 0.05\n";
+    }
+    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("unit.toml"), "--duration", "1500", "--seed", "3", "-o", dir.file("unit.csv")},
+                           dir.path()).exit_code, 0);
+    const RunResult gap = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "16", "--model-out", dir.file("fitted.toml")},
+                                       dir.path());
+    ASSERT_EQ(gap.exit_code, 0) << gap.output;
+    EXPECT_NE(gap.output.find("verdict: ambient_cycle"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("model file: " + dir.file("fitted.toml")), std::string::npos) << gap.output;
+    const sim::SimModel fitted = sim::load_model_file(dir.file("fitted.toml"));
+    const sim::SimModel paper = sim::paper_model();
+    ASSERT_FALSE(fitted.effects.empty());
+    EXPECT_EQ(fitted.effects[0].name, "ambient_cycle");
+    EXPECT_NEAR(fitted.effects[0].table["period_s"].value_or(0.0), 400.0, 20.0);
+    // Amplitude in deg/s: coupling times half the peak-to-peak swing, 0.05 for the unit.
+    EXPECT_NEAR(fitted.effects[0].table["coupling_dps_per_k"].value_or(0.0) * fitted.effects[0].table["amplitude_k_pp"].value_or(0.0) / 2.0,
+                0.05, 0.005);
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        EXPECT_NEAR(fitted.channels[i].drift.c2_counts, paper.channels[i].drift.c2_counts, 1.0) << kChannelNames[i];
+        EXPECT_NEAR(fitted.channels[i].raw_noise_std_unit / paper.channels[i].raw_noise_std_unit, 1.0, 0.1) << kChannelNames[i];
+    }
+    EXPECT_EQ(std::memcmp(&fitted.firmware, &paper.firmware, sizeof paper.firmware), 0) << "the log's own smoothing";
+
+    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("fitted.toml"), "--duration", "1500", "--seed", "4", "-o", dir.file("again.csv")},
+                           dir.path()).exit_code, 0);
+    const RunResult again = run_driftlab({"gap", dir.file("again.csv"), "--replicates", "16", "--json"}, dir.path());
+    ASSERT_EQ(again.exit_code, 0) << again.output;
+    const auto j = nlohmann::json::parse(again.output);
+    EXPECT_EQ(j["verdict"], "ambient_cycle");
+    EXPECT_NEAR(j["explanations"][0]["params"]["period_s"].get<double>(), 400.0, 20.0) << j["explanations"].dump();
 }
 
 // Fig. 2's log: raw mode (a RAW frame per SAMPLE), 100 s of an already warm unit. Its raw codes give the code
@@ -74,6 +115,13 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
     EXPECT_EQ(j["calibration"]["window"], 40);
     EXPECT_DOUBLE_EQ(j["calibration"]["sample_period_s"].get<double>(), 0.4);
 
+    // A model file of this unit needs a firmware that smooths as the log did: 12.5 ms is no whole millisecond.
+    const RunResult odd = run_driftlab({"gap", table, "--tau0", "0.0125", "--as", "gyro=col1:0.00875", "--model-out", dir.file("m.toml")},
+                                       dir.path());
+    EXPECT_EQ(odd.exit_code, 3) << odd.output;
+    EXPECT_NE(odd.output.find("rate.txt: --model-out: the log's smoothing (output period 12.5 ms"), std::string::npos) << odd.output;
+    EXPECT_EQ(odd.output.find("verdict"), std::string::npos) << "refused before the diagnosis";
+
     const RunResult unmapped = run_driftlab({"gap", table}, dir.path());
     EXPECT_EQ(unmapped.exit_code, 2);
     EXPECT_NE(unmapped.output.find("--as CHANNEL=COLUMN:LSB"), std::string::npos) << unmapped.output;
@@ -112,6 +160,10 @@ TEST(GapCli, AnUnusableReportFolderIsRefusedBeforeTheDiagnosis) {
     EXPECT_EQ(gap.exit_code, 4) << gap.output;
     EXPECT_NE(gap.output.find("hil.csv/report: cannot create the report folder"), std::string::npos) << gap.output;
     EXPECT_EQ(gap.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
+    const RunResult model = run_driftlab({"gap", log, "--replicates", "10", "--model-out", dir.file("absent/m.toml")}, dir.path());
+    EXPECT_EQ(model.exit_code, 4) << model.output;
+    EXPECT_NE(model.output.find("absent/m.toml: cannot write the model file"), std::string::npos) << model.output;
+    EXPECT_EQ(model.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
     const RunResult hil = run_driftlab({"hil", "--duration", "10", "-o", log + "/x.csv"}, dir.path());
     EXPECT_EQ(hil.exit_code, 4) << hil.output;
     EXPECT_NE(hil.output.find("cannot create the log folder"), std::string::npos) << hil.output;

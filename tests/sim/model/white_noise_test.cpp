@@ -27,6 +27,9 @@ double raw_code_std(double mean_counts, double sigma_counts, std::uint64_t seed,
 TEST(WhiteNoise, AnalogSigmaRemovesTheQuantisationVariance) {
     EXPECT_NEAR(analog_sigma_for_raw_std_counts(1.0), std::sqrt(1.0 - 1.0 / 12.0), 1e-15);
     EXPECT_EQ(analog_sigma_for_raw_std_counts(0.0), 0.0);
+    // The inverse, for a model file written from a calibrated sigma: back and forth lands where it started.
+    for (double raw : {0.5, 1.0, 1.0625, 7.3}) EXPECT_NEAR(raw_std_counts_for_analog_sigma(analog_sigma_for_raw_std_counts(raw)), raw, 1e-14);
+    EXPECT_EQ(raw_std_counts_for_analog_sigma(0.0), 0.0);
 }
 
 // Paper targets: gyro 0.187 deg/s at 512/90 counts per deg/s, accel X 0.0141 g at 512 counts per g.

@@ -1,0 +1,39 @@
+// check_output_file(), write_output_file(); see output_file.hpp.
+#include "host/util/output_file.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "host/util/error.hpp"
+
+namespace driftlab::host {
+
+void check_output_file(const std::string& path, const std::string& what) {
+    std::error_code ec;
+    const bool existed = std::filesystem::exists(path, ec);
+    errno = 0;
+    const bool ok = static_cast<bool>(std::ofstream(path, std::ios::app));
+    const int error = errno;
+    if (!existed) std::filesystem::remove(path, ec);
+    if (!ok) throw DeviceError(path, "cannot write the " + what + ": " + (error ? std::strerror(error) : "unknown reason"));
+}
+
+void write_output_file(const std::string& path, const std::string& text, const std::string& what) {
+    const std::string temporary = path + ".part";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!(out << text) || !out.flush())
+            throw DeviceError(temporary, "cannot write the " + what + ": " + std::strerror(errno));
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        throw DeviceError(path, "cannot write the " + what + ": " + ec.message());
+    }
+}
+
+}  // namespace driftlab::host
