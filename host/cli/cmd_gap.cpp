@@ -48,12 +48,19 @@ struct GapCommandOptions {
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
 };
 
-// A canonical log as it is; a plain table through its column mappings (never guessed).
-LogData load(const GapCommandOptions& o) {
+struct Loaded {
+    LogData log;
+    sim::SimModel unit;
+};
+
+// A canonical log as it is, with the unit of --model or the paper's; a plain table through its column mappings
+// (never guessed), with a unit whose codes are the columns' LSBs.
+Loaded load(const GapCommandOptions& o) {
+    const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     if (fit::is_canonical_log(o.path)) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        return read_log(o.path);
+        return {read_log(o.path), unit};
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -62,7 +69,9 @@ LogData load(const GapCommandOptions& o) {
     for (const auto& m : o.mappings) how.columns.push_back(gap::parse_column_mapping(m));
     how.sample_period_s = o.tau0_s;
     how.block = o.block;
-    return gap::log_from_table(read_numeric_table(o.path), how);
+    LogData log = gap::log_from_table(read_numeric_table(o.path), how);
+    sim::SimModel scaled = gap::unit_of_recording(unit, how, log);
+    return {std::move(log), std::move(scaled)};
 }
 
 void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
@@ -120,13 +129,12 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
 }
 
 void run(const GapCommandOptions& o) {
-    const LogData log = load(o);
+    const auto [log, unit] = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {
         check_output_file(o.model_out, "model file");
         gap::firmware_config(gap::smoothing_from_log(log), false, o.path);  // refused now, not after the diagnosis
     }
-    const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     gap::GapOptions options;
     options.replicates = o.replicates;
     options.seed = o.seed;

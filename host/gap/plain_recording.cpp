@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "host/fit/series.hpp"
 #include "host/util/error.hpp"
@@ -76,6 +77,7 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
         std::nth_element(sorted.begin(), middle, sorted.end());
         const double offset = kMidScale - std::round(*middle / m.lsb);
+        log.metadata.set(std::string("mid_scale_value_") + kChannelNames[c], std::round(*middle / m.lsb) * m.lsb);
         for (std::size_t b = 0; b < outputs; ++b) {
             double sum = 0.0;
             for (std::size_t i = b * how.block; i < (b + 1) * how.block; ++i) {
@@ -96,6 +98,20 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
     log.metadata.set("window", static_cast<std::int64_t>(how.block));
     log.metadata.set("fit_order", static_cast<std::int64_t>(0));
     return log;
+}
+
+sim::SimModel unit_of_recording(sim::SimModel unit, const PlainRecording& how, const LogData& log) {
+    unit.adc.bits = 10;  // the codes log_from_table() made
+    for (const auto& m : how.columns) {
+        const std::size_t c = channel_index(m.channel);
+        const auto mid = log.metadata.get_double(std::string("mid_scale_value_") + kChannelNames[c]);
+        if (!mid) throw std::invalid_argument("unit_of_recording: the log was not made by log_from_table() with this mapping");
+        sim::ChannelModel& ch = unit.channels[c];
+        ch.front_end.span_unit = kMidScale * m.lsb;  // counts_per_unit = levels / 2 / span = 1 / lsb
+        ch.front_end.center_unit = *mid;
+        ch.input_unit = *mid;
+    }
+    return unit;
 }
 
 }  // namespace driftlab::host::gap

@@ -11,6 +11,7 @@
 #include "driftlab/channels.hpp"
 #include "host/log/log_data.hpp"
 #include "host/log/numeric_table.hpp"
+#include "sim/model/sim_model.hpp"
 
 namespace driftlab::host::gap {
 
@@ -34,5 +35,11 @@ struct PlainRecording {
 /// UsageError for a bad mapping, DataError (file) for a table too short for one block or a column whose codes leave
 /// the 10-bit range around mid-scale (a coarser LSB is needed).
 LogData log_from_table(const NumericTable& table, const PlainRecording& how);
+
+/// The unit that `log` (made by log_from_table() under `how`) reads as: on each mapped channel one code is one LSB
+/// of the column's unit and mid-scale is the column's median (metadata `mid_scale_value_<channel>`), so that the
+/// diagnosis's physical parameters (deg/s, g) are the recording's own and a model file written from it describes
+/// the recorded sensor. The other channels and everything else are `unit`'s; the converter is 10-bit, as the codes.
+sim::SimModel unit_of_recording(sim::SimModel unit, const PlainRecording& how, const LogData& log);
 
 }  // namespace driftlab::host::gap

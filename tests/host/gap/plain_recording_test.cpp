@@ -7,6 +7,8 @@
 
 #include "host/gap/plain_recording.hpp"
 #include "host/util/error.hpp"
+#include "sim/model/adc.hpp"
+#include "sim/model/sensor.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -54,6 +56,34 @@ TEST(PlainRecording, ATimeColumnGivesTheInstantsAndColumnsMapToTheirChannels) {
     EXPECT_EQ(log.t_s, (std::vector<double>{0.013, 0.041}));
     EXPECT_EQ(log.counts[channel_index(Channel::gyro)], (std::vector<double>{510.5, 512.5}));  // median 3
     EXPECT_EQ(log.counts[channel_index(Channel::accel_z)], (std::vector<double>{511.0, 512.0}));  // median 9
+}
+
+// The simulator's own front end and converter, given the recording's unit, turn each recorded value into the code
+// log_from_table() made of it: one code per LSB, the column's median code at mid-scale; other channels are the
+// unit's. So a physical parameter the diagnosis reports (deg/s, g) is the recording's own.
+TEST(PlainRecording, ItsUnitConvertsEachValueToTheCodeTheLogHolds) {
+    // Values as a sensor gives them: whole LSBs (8.75 mdps; 1/4096 g).
+    const NumericTable t = table({"gx", "az"}, {{-34 * 0.00875, 2 * 0.00875, 46 * 0.00875, 14 * 0.00875, -6 * 0.00875},
+                                                {4014 / 4096.0, 4137 / 4096.0, 4055 / 4096.0, 4178 / 4096.0, 1.0}});
+    PlainRecording how;
+    how.columns = {parse_column_mapping("gyro=gx:0.00875"), parse_column_mapping("accel_z=az:0.000244140625")};
+    how.sample_period_s = 0.01;
+    const LogData log = log_from_table(t, how);
+    sim::SimModel paper = sim::paper_model();
+    paper.adc.bits = 12;  // the codes are 10-bit whatever the unit's converter
+    const sim::SimModel unit = unit_of_recording(paper, how, log);
+    EXPECT_EQ(unit.adc.bits, 10);
+    const sim::Adc adc(unit.adc);
+    for (const auto& [c, column] : {std::pair{Channel::gyro, 0}, std::pair{Channel::accel_z, 1}}) {
+        const sim::FrontEnd fe(unit.channels[channel_index(c)].front_end, unit.adc.vref_v);
+        for (std::size_t k = 0; k < log.size(); ++k)
+            EXPECT_NEAR(adc.counts_from_volts(fe.amplifier_v(fe.sensor_v(t.columns[column][k]))), log.counts[channel_index(c)][k], 1e-6)
+                << kChannelNames[channel_index(c)] << " row " << k;
+        // At rest the unit reads its input, the column's median: mid-scale.
+        EXPECT_NEAR(adc.counts_from_volts(fe.amplifier_v(fe.sensor_v(unit.channels[channel_index(c)].input_unit))), 512.0, 1e-9);
+    }
+    EXPECT_EQ(unit.channels[1].front_end.span_unit, paper.channels[1].front_end.span_unit);  // accel_x: not mapped
+    EXPECT_THROW(unit_of_recording(paper, how, LogData{}), std::invalid_argument);
 }
 
 TEST(PlainRecording, BadMappingsAndTablesAreRefusedSayingWhy) {

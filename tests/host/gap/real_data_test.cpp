@@ -17,7 +17,8 @@
 namespace driftlab::host::gap {
 namespace {
 
-bool load(LogData& log) {
+// The log, and the unit it reads as (one count is 8.75 mdps: the parameters come out in the gyro's own deg/s).
+bool load(LogData& log, sim::SimModel& unit) {
     const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt";
     if (!std::filesystem::exists(path)) return false;
     PlainRecording how;
@@ -25,6 +26,7 @@ bool load(LogData& log) {
     how.sample_period_s = 0.01;
     how.block = 40;
     log = log_from_table(read_numeric_table(path), how);
+    unit = unit_of_recording(sim::paper_model(), how, log);
     return true;
 }
 
@@ -40,8 +42,9 @@ GapOptions options() {
 
 TEST(RealData, Gyro2xRunsAndReportsItsGap) {
     LogData log;
-    if (!load(log)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
-    const GapResult r = diagnose(log, sim::paper_model(), options());
+    sim::SimModel unit;
+    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
+    const GapResult r = diagnose(log, unit, options());
     std::printf("gyro2_x: verdict %s, gap fit %.2f heldout %.2f -> fit %.2f heldout %.2f, %zu located\n", r.verdict.c_str(),
                 r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout, r.located.size());
     for (const auto& e : r.accepted) {
@@ -84,16 +87,17 @@ TEST(RealData, Gyro2xRunsAndReportsItsGap) {
 // six times stronger, a 4-count line is not separable from it (docs/gap.md, real recordings).
 TEST(RealData, InjectedSinusoidIsRecoveredAtItsSize) {
     LogData log;
-    if (!load(log)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
+    sim::SimModel unit;
+    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
     const double amplitude = 8.0, period_s = 120.0, phase = 0.5;
     for (std::size_t k = 0; k < log.size(); ++k)
         log.counts[0][k] += amplitude * std::sin(2.0 * std::numbers::pi * log.t_s[k] / period_s + phase);
-    const GapResult r = diagnose(log, sim::paper_model(), options());
+    const GapResult r = diagnose(log, unit, options());
     const Explanation* found = nullptr;
     for (const auto& e : r.accepted)
         if (e.effect == "ambient_cycle") found = &e;
     ASSERT_NE(found, nullptr) << "verdict " << r.verdict;
-    const double counts_per_dps = 512.0 / 90.0;  // the paper unit's gyro scale the parameters are expressed in
+    const double counts_per_dps = 1.0 / 0.00875;  // the recording's own scale
     std::printf("injected 8 counts at 120 s: recovered %.2f counts at %.1f s (step %d)\n",
                 found->params[0].second * counts_per_dps, found->params[1].second, found->step);
     EXPECT_NEAR(found->params[0].second * counts_per_dps / amplitude, 1.0, 0.2);

@@ -18,7 +18,7 @@
 namespace driftlab::host::gap {
 namespace {
 
-bool load(LogData& log) {
+bool load(LogData& log, sim::SimModel& unit) {
     const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/mpu6050_unmoved-with-x-pointing-forward-10min.csv";
     if (!std::filesystem::exists(path)) return false;
     PlainRecording how;
@@ -28,6 +28,7 @@ bool load(LogData& log) {
     how.sample_period_s = 0.01;
     how.block = 10;
     log = log_from_table(read_numeric_table(path), how);
+    unit = unit_of_recording(sim::paper_model(), how, log);
     return true;
 }
 
@@ -44,9 +45,10 @@ GapOptions test_options() {
 
 TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     LogData log;
-    if (!load(log)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
+    sim::SimModel unit;
+    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
     const GapOptions o = test_options();
-    const GapResult r = diagnose(log, sim::paper_model(), o);
+    const GapResult r = diagnose(log, unit, o);
     std::printf("mpu6050: verdict %s, gap fit %.2f heldout %.2f -> fit %.2f heldout %.2f, %zu located, dt jitter %.2f\n",
                 r.verdict.c_str(), r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout,
                 r.located.size(), r.timing.dt_jitter_rel);
@@ -73,10 +75,11 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
 // must shrink the held-out gap, and the still accelerometers (no cell, no excess of their own) take nothing.
 TEST(RealData, Mpu6050sDiffuseGapIsSearchedOnRequest) {
     LogData log;
-    if (!load(log)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
+    sim::SimModel unit;
+    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
     GapOptions o = test_options();
     o.search_diffuse = true;
-    const GapResult r = diagnose(log, sim::paper_model(), o);
+    const GapResult r = diagnose(log, unit, o);
     std::printf("mpu6050 --search-diffuse: verdict %s, diffuse %d, heldout %.2f (bound %.2f) -> %.2f, %zu tried\n",
                 r.verdict.c_str(), r.diffuse_gap, r.gap_before_heldout, r.gap_bound_before, r.gap_after_heldout,
                 r.tried.size());
