@@ -135,6 +135,13 @@ void run(const GapCommandOptions& o) {
         check_output_file(o.model_out, "model file");
         gap::firmware_config(gap::smoothing_from_log(log), false, o.path);  // refused now, not after the diagnosis
     }
+    if (!unit.effects.empty()) {
+        std::string names;
+        for (const auto& e : unit.effects) names += (names.empty() ? "" : ", ") + e.name;
+        std::fprintf(stderr, "driftlab gap: note: %s's effects (%s) are not part of the base: the diagnosis calibrates eq. 1 and "
+                             "the white noise on the model's unit and asks which effects the log needs (docs/gap.md, Model file out)\n",
+                     o.model_path.c_str(), names.c_str());
+    }
     gap::GapOptions options;
     options.replicates = o.replicates;
     options.seed = o.seed;

@@ -68,6 +68,12 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     }
     EXPECT_EQ(std::memcmp(&fitted.firmware, &paper.firmware, sizeof paper.firmware), 0) << "the log's own smoothing";
 
+    // Given back to gap as the unit, the file's effects are said not to be part of the base.
+    const RunResult as_unit = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "10", "--locate-only", "--model", dir.file("fitted.toml")},
+                                           dir.path());
+    ASSERT_EQ(as_unit.exit_code, 0) << as_unit.output;
+    EXPECT_NE(as_unit.output.find("effects (ambient_cycle) are not part of the base"), std::string::npos) << as_unit.output;
+
     ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("fitted.toml"), "--duration", "1500", "--seed", "4", "-o", dir.file("again.csv")},
                            dir.path()).exit_code, 0);
     const RunResult again = run_driftlab({"gap", dir.file("again.csv"), "--replicates", "16", "--json"}, dir.path());
