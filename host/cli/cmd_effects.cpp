@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/cli/commands.hpp"
+#include "host/gap/candidates.hpp"
 #include "host/util/error.hpp"
 #include "sim/effects/effect.hpp"
 
@@ -19,19 +20,38 @@ struct EffectsOptions {
     bool json = false;
 };
 
+// What the gap diagnosis does with the effect: how it fits a candidate, or why a static log cannot identify it.
+struct GapUse {
+    bool candidate = false;
+    std::string text;
+};
+
+GapUse gap_use(const std::string& name) {
+    if (const gap::CandidateInfo* c = gap::find_candidate(name)) {
+        constexpr const char* kHow[] = {"a mean shape, by variable projection beside eq. 1", "a Gaussian process, by its spectral likelihood",
+                                        "by simulation against the statistics battery", "from a raw-mode log's raw codes"};
+        return {true, kHow[static_cast<int>(c->route)]};
+    }
+    for (const gap::NotIdentifiable& n : gap::not_identifiable_list())
+        if (n.effect == name) return {false, n.reason};
+    return {false, "not tried"};
+}
+
 nlohmann::json to_json(const sim::EffectInfo& e) {
     nlohmann::json params = nlohmann::json::array();
     for (const sim::ParamInfo& p : e.params)
         params.push_back({{"key", p.key}, {"unit", p.unit}, {"default", p.default_text}, {"doc", p.doc}});
+    const GapUse use = gap_use(e.name);
     return {{"name", e.name}, {"stage", sim::stage_name(e.stage)}, {"equation", e.equation}, {"summary", e.summary},
-            {"params", params}};
+            {"params", params}, {"gap", {{"candidate", use.candidate}, {use.candidate ? "fitted" : "reason", use.text}}}};
 }
 
 // The effect's parameters as a model file's table at their defaults (an effect at its defaults changes nothing),
 // each with its unit and meaning, ready to edit.
 void print_one(const sim::EffectInfo& e) {
-    std::cout << e.name << " (" << sim::stage_name(e.stage) << " stage): " << e.summary << "\n  " << e.equation
-              << "\n\n[effects." << e.name << "]\n";
+    const GapUse use = gap_use(e.name);
+    std::cout << e.name << " (" << sim::stage_name(e.stage) << " stage): " << e.summary << "\n  " << e.equation << "\n  gap diagnosis: "
+              << (use.candidate ? "a candidate, fitted as " : "not a candidate: ") << use.text << "\n\n[effects." << e.name << "]\n";
     std::size_t width = 0;
     for (const sim::ParamInfo& p : e.params) width = std::max(width, p.key.size() + 3 + p.default_text.size());
     for (const sim::ParamInfo& p : e.params) {
@@ -47,7 +67,7 @@ void register_effects(CLI::App& app) {
     auto opts = std::make_shared<EffectsOptions>();
     CLI::App* cmd = app.add_subcommand("effects", "List the simulator's effect library, or show one effect's model-file table");
     cmd->add_option("name", opts->name, "An effect: its equation and its parameters at their defaults, as TOML");
-    cmd->add_flag("--json", opts->json, "Print JSON (an array of: name, stage, equation, summary, params[])");
+    cmd->add_flag("--json", opts->json, "Print JSON (an array of: name, stage, equation, summary, params[], gap{candidate, fitted|reason})");
     cmd->callback([opts] {
         const auto& all = sim::list_effects();
         std::vector<const sim::EffectInfo*> shown;
@@ -69,8 +89,10 @@ void register_effects(CLI::App& app) {
             for (const sim::EffectInfo* e : shown) width = std::max(width, e->name.size());
             for (const sim::EffectInfo* e : shown)
                 std::cout << e->name << std::string(width - e->name.size(), ' ') << "  " << sim::stage_name(e->stage)
-                          << std::string(10 - std::string(sim::stage_name(e->stage)).size(), ' ') << "  " << e->summary << "\n";
-            std::cout << "(in application order within each stage; `driftlab effects NAME` gives an effect's model-file table)\n";
+                          << std::string(10 - std::string(sim::stage_name(e->stage)).size(), ' ') << "  "
+                          << (gap_use(e->name).candidate ? "gap  " : "     ") << e->summary << "\n";
+            std::cout << "(in application order within each stage; gap: a candidate of the gap diagnosis, the others a static "
+                         "log cannot identify; `driftlab effects NAME` gives an effect's model-file table and why)\n";
         }
     });
 }

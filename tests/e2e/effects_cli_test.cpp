@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "e2e_support.hpp"
+#include "host/gap/candidates.hpp"
 #include "sim/effects/effect.hpp"
 
 namespace driftlab::e2e {
@@ -47,6 +48,10 @@ TEST(EffectsCli, TheListAndTheJsonHoldTheWholeLibraryAndAnUnknownNameIsRefused) 
         EXPECT_EQ(j[k]["name"], library[k].name);
         EXPECT_EQ(j[k]["stage"], sim::stage_name(library[k].stage));
         EXPECT_EQ(j[k]["params"].size(), library[k].params.size()) << library[k].name;
+        // What the gap diagnosis does with it: a candidate it fits, or the reason a static log cannot identify it.
+        const bool candidate = host::gap::find_candidate(library[k].name) != nullptr;
+        EXPECT_EQ(j[k]["gap"]["candidate"], candidate) << library[k].name;
+        EXPECT_FALSE(j[k]["gap"][candidate ? "fitted" : "reason"].get<std::string>().empty()) << library[k].name;
         const auto lines = lines_of(list.output);
         EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.rfind(library[k].name + " ", 0) == 0; }))
             << library[k].name << "\n" << list.output;
