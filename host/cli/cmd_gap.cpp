@@ -179,6 +179,7 @@ void run(const GapCommandOptions& o) {
     }
     if (o.json) {
         std::cout << gap::gap_to_json(r, options).dump(2) << "\n";
+        for (const std::string& n : model_notes) std::fprintf(stderr, "driftlab gap: model file note: %s\n", n.c_str());
     } else {
         print_text(r, options);
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
