@@ -28,9 +28,12 @@ struct GapUse {
 
 GapUse gap_use(const std::string& name) {
     if (const gap::CandidateInfo* c = gap::find_candidate(name)) {
-        constexpr const char* kHow[] = {"a mean shape, by variable projection beside eq. 1", "a Gaussian process, by its spectral likelihood",
-                                        "by simulation against the statistics battery", "from a raw-mode log's raw codes"};
-        return {true, kHow[static_cast<int>(c->route)]};
+        switch (c->route) {
+            case gap::FitRoute::deterministic: return {true, "as a mean shape, by variable projection beside eq. 1"};
+            case gap::FitRoute::spectral: return {true, "as a Gaussian process, by its spectral likelihood"};
+            case gap::FitRoute::simulated: return {true, "by simulation against the statistics battery"};
+            case gap::FitRoute::code_density: return {true, "to a raw-mode log's raw codes"};
+        }
     }
     for (const gap::NotIdentifiable& n : gap::not_identifiable_list())
         if (n.effect == name) return {false, n.reason};
@@ -51,7 +54,7 @@ nlohmann::json to_json(const sim::EffectInfo& e) {
 void print_one(const sim::EffectInfo& e) {
     const GapUse use = gap_use(e.name);
     std::cout << e.name << " (" << sim::stage_name(e.stage) << " stage): " << e.summary << "\n  " << e.equation << "\n  gap diagnosis: "
-              << (use.candidate ? "a candidate, fitted as " : "not a candidate: ") << use.text << "\n\n[effects." << e.name << "]\n";
+              << (use.candidate ? "a candidate, fitted " : "not a candidate: ") << use.text << "\n\n[effects." << e.name << "]\n";
     std::size_t width = 0;
     for (const sim::ParamInfo& p : e.params) width = std::max(width, p.key.size() + 3 + p.default_text.size());
     for (const sim::ParamInfo& p : e.params) {
