@@ -11,6 +11,8 @@
 
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "host/cli/commands.hpp"
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
@@ -18,6 +20,7 @@
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
 #include "host/gap/model_out.hpp"
+#include "host/gap/verdict_stability.hpp"
 #include "host/gap/plain_recording.hpp"
 #include "host/fit/series.hpp"
 #include "host/log/numeric_table.hpp"
@@ -37,6 +40,7 @@ struct GapCommandOptions {
     bool json = false;
     std::string report_dir;
     std::string model_out;
+    std::size_t stability = 0;
     int replicates = 40;
     std::uint64_t seed = 1;
     double fit_fraction = 0.6;
@@ -163,6 +167,7 @@ void run(const GapCommandOptions& o) {
         if (!found) throw UsageError("--channel: unknown channel '" + name + "' (gyro, accel_x, accel_y, accel_z)");
     }
     const gap::GapResult r = gap::diagnose(log, unit, options);
+    const gap::VerdictStability stability = gap::verdict_stability(r, log, unit, options, o.stability);
     if (tty) std::fprintf(stderr, "\r\033[K");
     if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options);
     std::vector<std::string> model_notes;
@@ -178,10 +183,21 @@ void run(const GapCommandOptions& o) {
         model_notes = m.notes;
     }
     if (o.json) {
-        std::cout << gap::gap_to_json(r, options).dump(2) << "\n";
+        nlohmann::json j = gap::gap_to_json(r, options);
+        if (stability.logs > 0)
+            j["stability"] = {{"logs", stability.logs}, {"verdicts", stability.verdicts},
+                              {"same", static_cast<double>(stability.same) / static_cast<double>(stability.logs)}};
+        std::cout << j.dump(2) << "\n";
         for (const std::string& n : model_notes) std::fprintf(stderr, "driftlab gap: model file note: %s\n", n.c_str());
     } else {
         print_text(r, options);
+        if (stability.logs > 0) {
+            std::printf("verdict stability: of %zu logs simulated from the final model and diagnosed alike, %zu (%.0f %%) are called %s;",
+                        stability.logs, stability.same, 100.0 * static_cast<double>(stability.same) / static_cast<double>(stability.logs),
+                        r.verdict.c_str());
+            for (const auto& [verdict, n] : stability.verdicts) std::printf(" %s %zu", verdict.c_str(), n);
+            std::printf("\n");
+        }
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
         if (!o.model_out.empty()) std::printf("model file: %s (driftlab hil --model %s simulates this unit)\n", o.model_out.c_str(), o.model_out.c_str());
         for (const std::string& n : model_notes) std::printf("model file note: %s\n", n.c_str());
@@ -229,8 +245,12 @@ void register_gap(CLI::App& app) {
                   "gap); off by default, as gap-eval scores it");
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: verdict, explanations, paths, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
-                  "not_identifiable, not_tried, calibration, timing)");
+                  "not_identifiable, not_tried, calibration, timing; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
+    cmd->add_option("--stability", o->stability,
+                    "Diagnose N logs simulated from the final model, as the log was, and say how many get its verdict "
+                    "(N times the diagnosis's time)")
+        ->check(CLI::Range(0, 1000));
     cmd->add_option("--model-out", o->model_out,
                     "Write the final model (calibrated base and the effects added) as a model file for driftlab hil --model");
     cmd->callback([o] { run(*o); });
