@@ -169,7 +169,7 @@ void run(const GapCommandOptions& o) {
     const gap::GapResult r = gap::diagnose(log, unit, options);
     const gap::VerdictStability stability = gap::verdict_stability(r, log, unit, options, o.stability);
     if (tty) std::fprintf(stderr, "\r\033[K");
-    if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options);
+    if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options, stability.logs > 0 ? &stability : nullptr);
     std::vector<std::string> model_notes;
     if (!o.model_out.empty()) {
         const bool raw = std::any_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; });
@@ -191,13 +191,7 @@ void run(const GapCommandOptions& o) {
         for (const std::string& n : model_notes) std::fprintf(stderr, "driftlab gap: model file note: %s\n", n.c_str());
     } else {
         print_text(r, options);
-        if (stability.logs > 0) {
-            std::printf("verdict stability: of %zu logs simulated from the final model and diagnosed alike, %zu (%.0f %%) are called %s;",
-                        stability.logs, stability.same, 100.0 * static_cast<double>(stability.same) / static_cast<double>(stability.logs),
-                        r.verdict.c_str());
-            for (const auto& [verdict, n] : stability.verdicts) std::printf(" %s %zu", verdict.c_str(), n);
-            std::printf("\n");
-        }
+        if (stability.logs > 0) std::printf("verdict stability: %s\n", gap::stability_sentence(stability, r.verdict).c_str());
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
         if (!o.model_out.empty()) std::printf("model file: %s (driftlab hil --model %s simulates this unit)\n", o.model_out.c_str(), o.model_out.c_str());
         for (const std::string& n : model_notes) std::printf("model file note: %s\n", n.c_str());

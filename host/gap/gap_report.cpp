@@ -164,11 +164,13 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     return located + " and no candidate passes (held-out shrink, held-out likelihood and penalised gain)";
 }
 
-void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options) {
+void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,
+                      const VerdictStability* stability) {
     make_output_folder(dir, "report");
     std::ostringstream md;
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
+    if (stability) md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)
        << ". A held-out score within its bound (level " << options.alpha << ") is a closed gap."

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "host/gap/diagnose.hpp"
+#include "host/gap/verdict_stability.hpp"
 #include "host/log/log_data.hpp"
 
 namespace driftlab::host::gap {
@@ -16,7 +17,8 @@ namespace driftlab::host::gap {
 std::string verdict_reason(const GapResult& result, const GapOptions& options);
 
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
-/// gnuplot is missing).
-void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options);
+/// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.
+void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options,
+                      const VerdictStability* stability = nullptr);
 
 }  // namespace driftlab::host::gap

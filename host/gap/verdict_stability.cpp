@@ -2,6 +2,7 @@
 #include "host/gap/verdict_stability.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "host/gap/sim_chain.hpp"
 
@@ -34,6 +35,15 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
         ++out.logs;
     }
     return out;
+}
+
+std::string stability_sentence(const VerdictStability& s, const std::string& verdict) {
+    char head[200];
+    std::snprintf(head, sizeof head, "of %zu logs simulated from the final model and diagnosed alike, %zu (%.0f %%) are called %s;", s.logs,
+                  s.same, s.logs ? 100.0 * static_cast<double>(s.same) / static_cast<double>(s.logs) : 0.0, verdict.c_str());
+    std::string text = head;
+    for (const auto& [v, n] : s.verdicts) text += " " + v + " " + std::to_string(n);
+    return text;
 }
 
 }  // namespace driftlab::host::gap

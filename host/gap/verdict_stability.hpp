@@ -24,4 +24,7 @@ struct VerdictStability {
 VerdictStability verdict_stability(const GapResult& result, const LogData& log, const sim::SimModel& unit, const GapOptions& options,
                                    std::size_t logs);
 
+/// The result in words the terminal and the report share: "of N logs ... k (p %) are called V; v1 n1 v2 n2".
+std::string stability_sentence(const VerdictStability& stability, const std::string& verdict);
+
 }  // namespace driftlab::host::gap
