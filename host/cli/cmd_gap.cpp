@@ -242,8 +242,8 @@ void register_gap(CLI::App& app) {
                   "not_identifiable, not_tried, calibration, timing; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->add_option("--stability", o->stability,
-                    "Diagnose N logs simulated from the final model, as the log was, and say how many get its verdict "
-                    "(N times the diagnosis's time)")
+                    "Diagnose N logs simulated from the final model, as the log was, and say how many get its verdict (repeatability, not correctness; "
+                    "N times the diagnosis's time)")
         ->check(CLI::Range(0, 1000));
     cmd->add_option("--model-out", o->model_out,
                     "Write the final model (calibrated base and the effects added) as a model file for driftlab hil --model");

@@ -1,7 +1,9 @@
-// How sure is a verdict? A parametric bootstrap of the diagnosis: logs simulated from the final model on the real
-// log's instants (the same channels, smoothing and raw codes), each diagnosed exactly as the log was. The share of
-// them that gets the log's verdict says how often the model the log was read as would be read the same way again:
-// near 1 for a clear shape, about a half where two noise processes are a close call. docs/gap.md §Verdict stability.
+// How repeatable is a verdict? A parametric bootstrap of the diagnosis: logs simulated from the final model on the
+// real log's instants (the same channels, smoothing and raw codes), each diagnosed exactly as the log was. The share
+// of them that gets the log's verdict says how often the model the log was read as would be read the same way again:
+// near 1 for a clear shape, lower where noise processes are a close call. It is repeatability under the fitted
+// model, not the chance of being right (a wrong flicker reading of a Gauss-Markov log repeats well: flicker's own
+// logs read as flicker). docs/gap.md §Verdict stability.
 #pragma once
 
 #include <cstddef>
