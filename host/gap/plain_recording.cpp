@@ -76,8 +76,9 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         std::vector<double> sorted = s->values;
         const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
         std::nth_element(sorted.begin(), middle, sorted.end());
-        const double offset = kMidScale - std::round(*middle / m.lsb);
-        log.metadata.set(std::string("mid_scale_value_") + kChannelNames[c], std::round(*middle / m.lsb) * m.lsb);
+        const double median_code = std::round(*middle / m.lsb);
+        const double offset = kMidScale - median_code;
+        log.metadata.set(std::string("mid_scale_value_") + kChannelNames[c], median_code * m.lsb);
         for (std::size_t b = 0; b < outputs; ++b) {
             double sum = 0.0;
             for (std::size_t i = b * how.block; i < (b + 1) * how.block; ++i) {

@@ -13,13 +13,13 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
     VerdictStability out;
     GapOptions quiet = options;
     quiet.progress = nullptr;
+    const bool any_raw = std::any_of(result.raw_codes.begin(), result.raw_codes.end(), [](bool r) { return r; });
     for (std::size_t b = 0; b < logs; ++b) {
         if (options.progress) options.progress("verdict stability: log " + std::to_string(b + 1) + " of " + std::to_string(logs));
         SimRequest request;
         request.t_s = &log.t_s;
         request.channels = result.channels;
         std::array<std::vector<double>, kChannelCount> raw;
-        const bool any_raw = std::any_of(result.raw_codes.begin(), result.raw_codes.end(), [](bool r) { return r; });
         if (any_raw) request.raw_codes = &raw;
         // Seeds apart from the replicates' (which follow options.seed upward), one per log.
         const SimOutput sim = simulate(result.final_model, request, options.seed ^ (0x9e3779b97f4a7c15ULL * (b + 1)));

@@ -25,8 +25,12 @@ void write_output_file(const std::string& path, const std::string& text, const s
     const std::string temporary = path + ".part";
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!(out << text) || !out.flush())
-            throw DeviceError(temporary, "cannot write the " + what + ": " + std::strerror(errno));
+        if (!(out << text) || !out.flush()) {
+            const int error = errno;
+            std::error_code ignored;
+            std::filesystem::remove(temporary, ignored);  // no part of the file left behind
+            throw DeviceError(temporary, "cannot write the " + what + ": " + std::strerror(error));
+        }
     }
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
