@@ -1,8 +1,10 @@
 // Parameter visitors: TOML reading with key/unit-naming errors, writing, documentation (params.hpp).
 #include "sim/effects/params.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace driftlab::sim {
 namespace {
@@ -196,15 +198,30 @@ toml::array TomlWriter::to_node(const std::array<std::array<double, 3>, 3>& m) {
     return rows;
 }
 
-template <class N>
-std::string ParamDescriber::text_of(const N& node) {
-    std::ostringstream os;
-    if constexpr (std::is_same_v<N, toml::array>) {
-        os << toml::toml_formatter(node, toml::format_flags::none);
+std::string toml_number_text(double v) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    std::string text(buf, end);
+    if (text.find_first_of(".en") == std::string::npos) text += ".0";
+    return text;
+}
+
+std::string toml_value_text(const toml::node& n) {
+    if (const auto* v = n.as_floating_point()) return toml_number_text(v->get());
+    if (const auto* v = n.as_integer()) return std::to_string(v->get());
+    if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
+    std::ostringstream out;
+    if (const auto* v = n.as_string()) {
+        out << *v;  // toml++ quotes and escapes it
+    } else if (const auto* a = n.as_array()) {
+        out << "[";
+        for (std::size_t k = 0; k < a->size(); ++k) out << (k ? ", " : "") << toml_value_text(*a->get(k));
+        out << "]";
     } else {
-        os << toml::toml_formatter(toml::value<N>(node), toml::format_flags::none);
+        throw std::invalid_argument("an effect parameter that is neither a value nor an array");
     }
-    return os.str();
+    return out.str();
 }
 
 void ParamDescriber::add(std::string_view key, std::string_view unit, std::string text, std::string_view doc) {
@@ -219,10 +236,5 @@ void ParamDescriber::choice(std::string_view key, const std::string& value,
     d += ")";
     add(key, "", "\"" + value + "\"", d);
 }
-
-template std::string ParamDescriber::text_of<toml::array>(const toml::array&);
-template std::string ParamDescriber::text_of<double>(const double&);
-template std::string ParamDescriber::text_of<bool>(const bool&);
-template std::string ParamDescriber::text_of<std::int64_t>(const std::int64_t&);
 
 }  // namespace driftlab::sim

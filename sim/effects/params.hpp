@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -95,6 +96,13 @@ private:
     toml::table table_;
 };
 
+/// The shortest TOML text that reads back as `v` exactly, always a float (model files, `driftlab effects`).
+std::string toml_number_text(double v);
+
+/// A parameter's value as TOML text: a number as toml_number_text() writes it, a flag, a string or an array of
+/// them (effect tables are flat). Throws std::invalid_argument on a table.
+std::string toml_value_text(const toml::node& n);
+
 /// Collects ParamInfo (key, unit, default as TOML text, doc) from a default-constructed struct.
 class ParamDescriber {
 public:
@@ -113,7 +121,13 @@ public:
 
 private:
     template <class N>
-    static std::string text_of(const N& node);
+    static std::string text_of(const N& node) {
+        if constexpr (std::is_base_of_v<toml::node, N>) {
+            return toml_value_text(node);
+        } else {
+            return toml_value_text(toml::value<N>(node));
+        }
+    }
     void add(std::string_view key, std::string_view unit, std::string text, std::string_view doc);
     std::vector<ParamInfo> params_;
 };

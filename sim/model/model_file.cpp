@@ -2,7 +2,6 @@
 #include "sim/model/model_file.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -10,6 +9,7 @@
 
 #include "host/util/error.hpp"
 #include "sim/effects/effect.hpp"
+#include "sim/effects/params.hpp"
 #include "sim/model/paper_model_text.hpp"
 #include "sim/model/white_noise.hpp"
 
@@ -282,40 +282,12 @@ SimModel parse_over(std::string_view text, const std::string& source_name, const
     }
 }
 
-// The shortest text that reads back as `v` exactly, always a TOML float.
-std::string number_text(double v) {
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    char buf[32];
-    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
-    std::string text(buf, end);
-    if (text.find_first_of(".en") == std::string::npos) text += ".0";
-    return text;
-}
-
-// An effect parameter's value: a number, a flag, a string or an array of them (effects' tables are flat).
-std::string value_text(const toml::node& n) {
-    if (const auto* v = n.as_floating_point()) return number_text(v->get());
-    if (const auto* v = n.as_integer()) return std::to_string(v->get());
-    if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
-    std::ostringstream out;
-    if (const auto* v = n.as_string()) {
-        out << *v;  // toml++ quotes and escapes it
-    } else if (const auto* a = n.as_array()) {
-        out << "[";
-        for (std::size_t k = 0; k < a->size(); ++k) out << (k ? ", " : "") << value_text(*a->get(k));
-        out << "]";
-    } else {
-        throw std::invalid_argument("an effect parameter that is neither a value nor an array");
-    }
-    return out.str();
-}
-
 // Model-file text, a table header and its keys at a time.
 class TextWriter {
 public:
     void table(const std::string& header) { out_ << "\n[" << header << "]\n"; }
     void key(std::string_view key, const std::string& value) { out_ << key << " = " << value << "\n"; }
-    void number(std::string_view key, double value) { this->key(key, number_text(value)); }
+    void number(std::string_view key, double value) { this->key(key, toml_number_text(value)); }
     std::ostringstream& stream() { return out_; }
 
 private:
@@ -345,7 +317,7 @@ std::string write_model(const SimModel& m, std::string_view comment) {
         w.stream() << "# " << comment.substr(start, end - start) << "\n";
         start = end + 1;
     }
-    w.key("name", value_text(toml::value<std::string>(m.name)));
+    w.key("name", toml_value_text(toml::value<std::string>(m.name)));
     w.table("adc");
     w.key("bits", std::to_string(m.adc.bits));
     w.number("vref_v", m.adc.vref_v);
@@ -372,7 +344,7 @@ std::string write_model(const SimModel& m, std::string_view comment) {
         for (const EffectSpec& e : m.effects) {
             if (e.name != name) continue;
             w.stream() << (same == 1 ? "\n[effects." + name + "]\n" : "\n[[effects." + name + "]]\n");
-            for (const auto& [key, value] : e.table) w.key(key.str(), value_text(value));
+            for (const auto& [key, value] : e.table) w.key(key.str(), toml_value_text(value));
         }
     }
     const proto::ConfigPayload& fw = m.firmware;
