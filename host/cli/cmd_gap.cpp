@@ -172,8 +172,7 @@ void run(const GapCommandOptions& o) {
     if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options, stability.logs > 0 ? &stability : nullptr);
     std::vector<std::string> model_notes;
     if (!o.model_out.empty()) {
-        const bool raw = std::any_of(r.raw_codes.begin(), r.raw_codes.end(), [](bool b) { return b; });
-        const gap::ModelOut m = gap::model_out(r.final_model, r.channels, raw, o.path);
+        const gap::ModelOut m = gap::model_out(r.final_model, r.channels, gap::any_raw_codes(r), o.path);
         std::string effects;
         for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
         std::string comment = "driftlab gap " + o.path + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "

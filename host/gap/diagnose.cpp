@@ -73,6 +73,10 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
 
 }  // namespace
 
+bool any_raw_codes(const GapResult& result) {
+    return std::any_of(result.raw_codes.begin(), result.raw_codes.end(), [](bool r) { return r; });
+}
+
 bool was_added(const GapResult& r, const Explanation& e) {
     return std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
         return a.step == e.step && a.effect == e.effect && a.channel == e.channel;
@@ -123,8 +127,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         battery.raw_codes[c] = true;
     }
     result.raw_codes = battery.raw_codes;
-    if (std::none_of(battery.raw_codes.begin(), battery.raw_codes.end(), [](bool b) { return b; }))
-        result.not_tried = not_tried_without_raw_codes();
+    if (!any_raw_codes(result)) result.not_tried = not_tried_without_raw_codes();
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
     auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held,

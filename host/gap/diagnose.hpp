@@ -74,6 +74,9 @@ struct GapResult {
 /// is too short (< 200 samples) or no channel varies, UsageError on bad options.
 GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options);
 
+/// True when some analysed channel of the log had raw codes (a raw-mode log): its simulations need them too.
+bool any_raw_codes(const GapResult& result);
+
 /// True when candidate fit `e` (of result.tried) is one of the effects added to the model, not only one that passed.
 bool was_added(const GapResult& result, const Explanation& e);
 

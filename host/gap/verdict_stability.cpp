@@ -13,7 +13,7 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
     VerdictStability out;
     GapOptions quiet = options;
     quiet.progress = nullptr;
-    const bool any_raw = std::any_of(result.raw_codes.begin(), result.raw_codes.end(), [](bool r) { return r; });
+    const bool any_raw = any_raw_codes(result);
     for (std::size_t b = 0; b < logs; ++b) {
         if (options.progress) options.progress("verdict stability: log " + std::to_string(b + 1) + " of " + std::to_string(logs));
         SimRequest request;
