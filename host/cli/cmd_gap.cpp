@@ -96,6 +96,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                     gap::segment_name(c.segment), l.z, std::isnan(l.ratio) ? "diff" : "ratio",
                     std::isnan(l.ratio) ? l.difference : l.ratio);
     }
+    if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) std::printf("base: %s\n", given.c_str());
     if (!r.accepted.empty()) std::printf("explanation (effects added in order; parameters refitted beside the later ones):\n");
     for (const auto& e : r.accepted) {
         std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %.0f%%) ", e.step, e.effect.c_str(), e.channel.c_str(),
@@ -139,13 +140,6 @@ void run(const GapCommandOptions& o) {
         check_output_file(o.model_out, "model file");
         gap::firmware_config(gap::smoothing_from_log(log), false, o.path);  // refused now, not after the diagnosis
     }
-    if (!unit.effects.empty()) {
-        std::string names;
-        for (const auto& e : unit.effects) names += (names.empty() ? "" : ", ") + e.name;
-        std::fprintf(stderr, "driftlab gap: note: %s's effects (%s) are not part of the base: the diagnosis calibrates eq. 1 and "
-                             "the white noise on the model's unit and asks which effects the log needs (docs/gap.md, Model file out)\n",
-                     o.model_path.c_str(), names.c_str());
-    }
     gap::GapOptions options;
     options.replicates = o.replicates;
     options.seed = o.seed;
@@ -177,6 +171,7 @@ void run(const GapCommandOptions& o) {
         for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
         std::string comment = "driftlab gap " + o.path + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
                               "channels, the log's smoothing, effects added:" + (effects.empty() ? " none" : effects);
+        if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) comment += "\n" + given;
         for (const std::string& n : m.notes) comment += "\nnote: " + n;
         write_output_file(o.model_out, sim::write_model(m.model, comment), "model file");
         model_notes = m.notes;
@@ -225,7 +220,8 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--block", o->block, "Plain recordings: samples averaged per output (an order-0 smoother of that "
                                          "window; default 1)")
         ->check(CLI::Range(1, 100000));
-    cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter); default: the paper's unit");
+    cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
+                    "the file's values, mean shapes refitted to the log; default: the paper's unit");
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)");

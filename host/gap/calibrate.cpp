@@ -153,7 +153,7 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
 }
 
 GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std::array<bool, kChannelCount>& channels,
-                        std::uint64_t seed) {
+                        std::uint64_t seed, std::array<double, kChannelCount>* spread) {
     GapModel model;
     model.unit = unit;
     model.unit.effects.clear();
@@ -172,6 +172,7 @@ GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std
         target[c] = short_lag_spread(f.residual);
     }
     match_noise(model, log.t_s, channels, target, seed);
+    if (spread) *spread = target;
     return model;
 }
 

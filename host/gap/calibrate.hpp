@@ -29,8 +29,10 @@ double short_lag_spread(const std::vector<double>& residual);
 void match_noise(GapModel& model, const std::vector<double>& t_s, const std::array<bool, kChannelCount>& channels,
                  const std::array<double, kChannelCount>& target_spread, std::uint64_t seed);
 
-/// The calibrated base model of `log` on `unit` (front ends and converter), for the selected channels.
+/// The calibrated base model of `log` on `unit` (front ends and converter; not its effects), for the selected
+/// channels. `spread` (optional) receives each channel's short-lag spread of the eq. 1 residual, the white noise's
+/// target.
 GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std::array<bool, kChannelCount>& channels,
-                        std::uint64_t seed);
+                        std::uint64_t seed, std::array<double, kChannelCount>* spread = nullptr);
 
 }  // namespace driftlab::host::gap

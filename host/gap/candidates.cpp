@@ -5,21 +5,56 @@
 #include <stdexcept>
 
 #include "sim/effects/effect.hpp"
+#include "sim/effects/flicker.hpp"
 #include "sim/model/drift.hpp"
 
 namespace driftlab::host::gap {
 
 namespace {
 
-// Physical-stage effects take a gyro field in deg/s and an accel field as [x, y, z] in g.
-void set_channel_value(toml::table& t, const std::string& gyro_key, const std::string& accel_key, Channel c, double v) {
+// The key of a mean shape's or Gaussian process's size in its library table: the gyro's, and the accel axes' array.
+struct SizeKeys {
+    const char* effect;
+    const char* gyro;
+    const char* accel;
+};
+constexpr SizeKeys kSizeKeys[] = {
+    {"thermal_second_tc", "c3_dps", "c3_g"},
+    {"ambient_cycle", "coupling_dps_per_k", "coupling_g_per_k"},
+    {"gauss_markov", "sigma_dps", "sigma_g"},
+    {"flicker", "b_dps", "b_g"},
+    {"rate_random_walk", "k_dps_per_sqrt_s", "k_g_per_sqrt_s"},
+};
+
+const SizeKeys* size_keys(const std::string& effect) {
+    for (const SizeKeys& k : kSizeKeys)
+        if (effect == k.effect) return &k;
+    return nullptr;
+}
+
+// Channel c's size in a library table as the library writes it (accel sizes an array of three), or null.
+toml::value<double>* size_value(toml::table& t, const SizeKeys& k, Channel c) {
+    toml::node* n = t.get(c == Channel::gyro ? k.gyro : k.accel);
+    if (n && c != Channel::gyro) n = n->is_array() ? n->as_array()->get(channel_index(c) - 1) : nullptr;
+    return n ? n->as_floating_point() : nullptr;
+}
+
+// A candidate's size on channel c alone: physical-stage effects take a gyro field in deg/s and an accel field as
+// [x, y, z] in g.
+void set_size(toml::table& t, const std::string& effect, Channel c, double v) {
+    const SizeKeys& k = *size_keys(effect);
     if (c == Channel::gyro) {
-        t.insert_or_assign(gyro_key, v);
+        t.insert_or_assign(k.gyro, v);
     } else {
         toml::array a{0.0, 0.0, 0.0};
         a.get(channel_index(c) - 1)->as_floating_point()->get() = v;
-        t.insert_or_assign(accel_key, a);
+        t.insert_or_assign(k.accel, a);
     }
+}
+
+// The library's full table of `spec`: every key, scalars broadcast as the effect reads them.
+toml::table full_table(const sim::EffectSpec& spec) {
+    return sim::make_effect(spec.name, spec.table, "effects." + spec.name)->parameters();
 }
 
 // Per-channel arrays (scalar or 4 values): the other channels keep a harmless default.
@@ -125,13 +160,60 @@ std::vector<double> model_mean_counts(const GapModel& model, Channel c, const st
     return mean;
 }
 
+double candidate_size_in(const sim::EffectSpec& spec, Channel c) {
+    const SizeKeys* k = size_keys(spec.name);
+    if (!k) return 0.0;
+    toml::table t = full_table(spec);
+    const toml::value<double>* v = size_value(t, *k, c);
+    const double size = v ? v->get() : 0.0;
+    // A cycle's size is its coupling times the temperature swing.
+    return spec.name == "ambient_cycle" ? size * t["amplitude_k_pp"].value_or(0.0) : size;
+}
+
+sim::EffectSpec without_channel(const sim::EffectSpec& spec, Channel c) {
+    const SizeKeys* k = size_keys(spec.name);
+    if (!k) throw std::invalid_argument("not a mean shape or Gaussian process: " + spec.name);
+    sim::EffectSpec out{spec.name, full_table(spec)};
+    if (toml::value<double>* v = size_value(out.table, *k, c)) v->get() = 0.0;
+    return out;
+}
+
+std::vector<double> file_process_params(const sim::EffectSpec& spec, Channel c) {
+    const double size = candidate_size_in(spec, c);
+    if (spec.name == "gauss_markov") {
+        const toml::table t = full_table(spec);
+        return {size, t["tau_s"][channel_index(c)].value_or(0.0)};
+    }
+    if (spec.name == "flicker" || spec.name == "rate_random_walk") return {size};
+    throw std::invalid_argument("not a Gaussian process: " + spec.name);
+}
+
+void hold_noise(HeldNoise& held, const sim::EffectSpec& spec, Channel c, const GapModel& model) {
+    const double cpu = counts_per_unit(model, c);
+    const std::vector<double> p = file_process_params(spec, c);
+    if (spec.name == "gauss_markov") {
+        held.gauss_markov.push_back({std::pow(p[0] * cpu, 2), p[1]});
+    } else if (spec.name == "flicker") {
+        // The file's own band, which need not be the candidate's.
+        const toml::table t = full_table(spec);
+        sim::FlickerParams fp;
+        fp.f_low_hz = t["f_low_hz"].value_or(fp.f_low_hz);
+        fp.f_high_hz = t["f_high_hz"].value_or(fp.f_high_hz);
+        const double v = std::pow(p[0] * cpu * sim::Flicker::component_sigma_per_b(), 2);
+        const sim::Flicker flicker(fp);
+        for (double tau : flicker.component_tau_s()) held.gauss_markov.push_back({v, tau});
+    } else {
+        held.walk_counts2_per_s += std::pow(p[0] * cpu, 2);
+    }
+}
+
 sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, const std::vector<double>& p,
                                       const GapModel& model) {
     sim::EffectSpec spec;
     spec.name = effect;
     toml::table& t = spec.table;
     if (effect == "thermal_second_tc") {
-        set_channel_value(t, "c3_dps", "c3_g", c, p.at(0));
+        set_size(t, effect, c, p.at(0));
         t.insert_or_assign("t2_s", per_channel(c, p.at(1), 1800.0));
     } else if (effect == "ambient_cycle") {
         // A sine of 2 K peak to peak with no lag: the coupling is then the amplitude per kelvin.
@@ -140,18 +222,18 @@ sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, cons
         t.insert_or_assign("period_s", p.at(1));
         t.insert_or_assign("phase_rad", p.at(2));
         t.insert_or_assign("lag_s", 0.0);
-        set_channel_value(t, "coupling_dps_per_k", "coupling_g_per_k", c, p.at(0));
+        set_size(t, effect, c, p.at(0));
     } else if (effect == "gauss_markov") {
-        set_channel_value(t, "sigma_dps", "sigma_g", c, p.at(0));
+        set_size(t, effect, c, p.at(0));
         t.insert_or_assign("tau_s", per_channel(c, p.at(1), 100.0));
     } else if (effect == "flicker") {
         // The 1/f band spans the log: from below its length to a tenth of the sampling rate (flicker.hpp).
-        set_channel_value(t, "b_dps", "b_g", c, p.at(0));
+        set_size(t, effect, c, p.at(0));
         const double fs = 1.0 / model.smoothing.sample_period_s;
         t.insert_or_assign("f_high_hz", fs / 10.0);
         t.insert_or_assign("f_low_hz", fs * 1e-5);
     } else if (effect == "rate_random_walk") {
-        set_channel_value(t, "k_dps_per_sqrt_s", "k_g_per_sqrt_s", c, p.at(0));
+        set_size(t, effect, c, p.at(0));
     } else if (effect == "spikes") {
         t.insert_or_assign("stage", "converter");
         t.insert_or_assign("rate_hz", per_channel(c, p.at(0), 0.0));

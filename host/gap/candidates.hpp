@@ -55,6 +55,24 @@ sim::EffectSpec make_candidate_effect(const std::string& effect, Channel c, cons
 /// deterministic candidates among `model.effects`, evaluated by the library's own effects.
 std::vector<double> model_mean_counts(const GapModel& model, Channel c, const std::vector<double>& t_s);
 
+/// The size on channel `c` of a model file's effect `spec` that a mean-shape or Gaussian-process candidate of the
+/// same name would fit (C3, the cycle's coupling times its swing, sigma, B or K) [physical units]; 0 where it has
+/// none, and for every other effect.
+double candidate_size_in(const sim::EffectSpec& spec, Channel c);
+
+/// `spec` (a mean shape or Gaussian process) with its size on channel `c` set to zero and every other key as the
+/// library reads it: what the file gives the other channels. Throws std::invalid_argument for other effects.
+sim::EffectSpec without_channel(const sim::EffectSpec& spec, Channel c);
+
+/// A model file's Gaussian process (gauss_markov, flicker, rate_random_walk) on channel `c` as the candidate of the
+/// same name states it (candidate_param_names() order, physical units); flicker's band is not among them. Throws
+/// std::invalid_argument for other effects.
+std::vector<double> file_process_params(const sim::EffectSpec& spec, Channel c);
+
+/// Adds the spectrum of the model file's Gaussian process `spec` on channel `c` (flicker with the file's own band)
+/// to `held`.
+void hold_noise(HeldNoise& held, const sim::EffectSpec& spec, Channel c, const GapModel& model);
+
 /// Parameter keys with the channel's unit spelled out (e.g. "c3_dps" for the gyro, "c3_g" for an accel axis).
 std::vector<std::string> candidate_param_names(const std::string& effect, Channel c);
 

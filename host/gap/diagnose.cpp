@@ -39,18 +39,20 @@ CellFilter in_segment(Segment s) {
     return [s](const Cell& c) { return c.segment == s; };
 }
 
-// The level-step test of the final model on each channel with an accepted Gaussian process and no accepted mean
-// shape (whose misfit is judged by the cells it leaves located), at alpha / channels (Bonferroni; the test itself
-// takes enough replicates for its level to be reachable).
+// The level-step test of the final model on each channel with an accepted Gaussian process and no mean shape
+// (whose misfit is judged by the cells it leaves located), at alpha / channels (Bonferroni; the test itself
+// takes enough replicates for its level to be reachable). The model file's refitted processes whiten beside them.
 std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData& log, const GapOptions& options) {
+    std::vector<const Explanation*> in_model;
+    for (const auto& e : result.given.refitted) in_model.push_back(&e);
+    for (const auto& e : result.accepted) in_model.push_back(&e);
     std::vector<std::size_t> tested;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         bool random = false, shaped = false;
-        for (const auto& e : result.accepted) {
-            if (e.channel != kChannelNames[c]) continue;
-            random = random || candidate(e.effect).route == FitRoute::spectral;
-            shaped = shaped || candidate(e.effect).route == FitRoute::deterministic;
-        }
+        for (const auto& e : result.accepted)
+            random = random || (e.channel == kChannelNames[c] && candidate(e.effect).route == FitRoute::spectral);
+        for (const Explanation* e : in_model)
+            shaped = shaped || (e->channel == kChannelNames[c] && candidate(e->effect).route == FitRoute::deterministic);
         if (random && !shaped) tested.push_back(c);
     }
     std::vector<LevelStep> out;
@@ -60,10 +62,10 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
     for (std::size_t c : tested) {
         std::vector<std::string> effects;
         std::vector<double> params;
-        for (const auto& e : result.accepted) {
-            if (e.channel != kChannelNames[c] || candidate(e.effect).route != FitRoute::spectral) continue;
-            effects.push_back(e.effect);
-            for (const auto& kv : e.params) params.push_back(kv.second);
+        for (const Explanation* e : in_model) {
+            if (e->channel != kChannelNames[c] || candidate(e->effect).route != FitRoute::spectral) continue;
+            effects.push_back(e->effect);
+            for (const auto& kv : e->params) params.push_back(kv.second);
         }
         out.push_back(test_level_step(result.final_model, static_cast<Channel>(c), log.t_s, log.counts[c], effects, params,
                                       replicates, options.seed + 17, options.threads, alpha));
@@ -106,7 +108,14 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         if (options.progress) options.progress(stage);
     };
     tell("calibrating the base simulator");
-    result.base = calibrate_base(log, unit, result.channels, options.seed);
+    std::array<const std::vector<double>*, kChannelCount> y{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &log.counts[c];
+    std::array<double, kChannelCount> spread{};
+    result.base = calibrate_base(log, unit, result.channels, options.seed, &spread);
+    if (!unit.effects.empty()) {
+        tell("fitting the model's own effects");
+        result.given = add_given_effects(result.base, unit.effects, log.t_s, y, result.channels, spread, options.seed);
+    }
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
 
     BatteryOptions battery;
@@ -114,8 +123,6 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     battery.holdout = options.holdout;
     battery.fit_fraction = options.fit_fraction;
     battery.sample_period_s = result.base.smoothing.sample_period_s;
-    std::array<const std::vector<double>*, kChannelCount> y{};
-    for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &log.counts[c];
     // A raw-mode log's raw column (integral codes, one per row) gives the channel its code-histogram cells.
     RawCodes raw{};
     for (std::size_t c = 0; c < kChannelCount; ++c) {
@@ -159,9 +166,11 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         eo.threads = options.threads;
         eo.eval_replicates = options.replicates;
         eo.progress = options.progress;
+        eo.given = &result.given;
         ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo, raw);
         result.tried = std::move(ex.tried);
         result.accepted = std::move(ex.accepted);
+        result.given.refitted = std::move(ex.given);
         result.paths = std::move(ex.paths);
         result.final_model = std::move(ex.model);
         // Only located cells make a gap no effect explains; a diffuse gap's search can name an effect or nothing.

@@ -50,7 +50,8 @@ struct GapResult {
     std::array<bool, kChannelCount> channels{};
     std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
     std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
-    GapModel base;                   ///< the calibrated base
+    GapModel base;                   ///< the calibrated base (with the model file's effects: `given`)
+    GivenEffects given;              ///< the model file's effects: refitted to this log (final parameters) or kept
     GapModel final_model;            ///< base plus the accepted effects
     std::vector<Cell> layout;
     std::vector<double> real_values;

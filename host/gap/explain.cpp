@@ -600,17 +600,90 @@ struct Search {
 
 }  // namespace
 
+GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec>& effects, const std::vector<double>& t_s,
+                               const std::array<const std::vector<double>*, kChannelCount>& y,
+                               const std::array<bool, kChannelCount>& channels,
+                               const std::array<double, kChannelCount>& target_spread, std::uint64_t seed) {
+    GivenEffects given;
+    const auto named = [](const std::string& effect, Channel c, const std::vector<double>& params) {
+        Explanation e;
+        e.effect = effect;
+        e.channel = kChannelNames[channel_index(c)];
+        const auto names = candidate_param_names(effect, c);
+        for (std::size_t k = 0; k < names.size(); ++k) e.params.emplace_back(names[k], params[k]);
+        return e;
+    };
+    std::array<std::vector<std::string>, kChannelCount> shapes;
+    for (const sim::EffectSpec& spec : effects) {
+        const CandidateInfo* info = find_candidate(spec.name);
+        const FitRoute route = info ? info->route : FitRoute::simulated;
+        const bool shape_or_process = route == FitRoute::deterministic || route == FitRoute::spectral;
+        bool elsewhere = !shape_or_process;  // a size the diagnosis does not take on: kept as the file gives it
+        sim::EffectSpec rest = spec;
+        for (std::size_t i = 0; i < kChannelCount && shape_or_process; ++i) {
+            const Channel c = static_cast<Channel>(i);
+            if (candidate_size_in(spec, c) == 0.0) continue;
+            if (route == FitRoute::spectral && channels[i]) {
+                hold_noise(base.held[i], spec, c, base);
+                given.held.push_back(named(spec.name, c, file_process_params(spec, c)));
+            } else if (channels[i] && std::find(shapes[i].begin(), shapes[i].end(), spec.name) == shapes[i].end()) {
+                shapes[i].push_back(spec.name);  // one such shape per channel
+                rest = without_channel(rest, c);
+            } else {
+                elsewhere = true;
+            }
+        }
+        if (route == FitRoute::spectral) {
+            base.effects.push_back(spec);  // simulated as the file gives it, on every channel
+            if (elsewhere) given.kept.push_back(spec.name);
+        } else if (elsewhere) {
+            base.effects.push_back(rest);
+            given.kept.push_back(spec.name);
+        }
+    }
+    // The mean shapes after everything kept, in the order of `refitted` (explain() finds them there).
+    const std::vector<bool> everywhere(t_s.size(), true);
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        const Judge judge{t_s, *y[i], static_cast<Channel>(i), {}, {}, {}, {}, 0.0, everywhere, seed, 1, nullptr};
+        for (const std::string& effect : shapes[i]) {
+            Fitted f = fit_deterministic(effect, base, judge, everywhere);
+            base = std::move(f.model);
+            given.refitted.push_back(named(effect, judge.channel, f.params));
+        }
+    }
+    match_noise(base, t_s, channels, target_spread, seed);
+    return given;
+}
+
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                       const std::array<const std::vector<double>*, kChannelCount>& y,
                       const std::array<bool, kChannelCount>& channels, const BatteryOptions& battery,
                       const ExplainOptions& options, const RawCodes& raw) {
-    Search search{t_s, y, battery, options, raw, options.candidates, base.effects.size(), fitting_mask(t_s, battery),
+    // The base's refitted effects are the first accepted ones of every path, at the end of the base's effects.
+    const std::size_t given = options.given ? options.given->refitted.size() : 0;
+    Search search{t_s, y, battery, options, raw, options.candidates, base.effects.size() - given, fitting_mask(t_s, battery),
                   std::vector<bool>(t_s.size(), true)};
     if (search.names.empty())
         for (const auto& info : candidate_list()) search.names.push_back(info.effect);
     Path start{{}, {}, channels};
     start.result.model = base;
+    if (options.given) {
+        start.result.accepted = options.given->refitted;
+        for (const auto* list : {&options.given->refitted, &options.given->held})
+            for (const Explanation& e : *list)
+                for (std::size_t i = 0; i < kChannelCount; ++i)
+                    if (e.channel == kChannelNames[i]) start.used[i].push_back(e.effect);
+        // A kept spikes or adc_dnl is not tried again on any channel: both would draw the same numbers (spikes) or
+        // hold one converter's table twice. (What a refitted effect keeps gives the channels not analysed only.)
+        for (const std::string& name : options.given->kept) {
+            const CandidateInfo* info = find_candidate(name);
+            if (info && info->route != FitRoute::deterministic && info->route != FitRoute::spectral)
+                for (auto& used : start.used) used.push_back(name);
+        }
+    }
     ExplainResult result = search.run(std::move(start), 1);
+    result.given.assign(result.accepted.begin(), result.accepted.begin() + static_cast<std::ptrdiff_t>(given));
+    result.accepted.erase(result.accepted.begin(), result.accepted.begin() + static_cast<std::ptrdiff_t>(given));
     std::stable_sort(result.tried.begin(), result.tried.end(), [](const Explanation& a, const Explanation& b) {
         if (a.accepted != b.accepted) return a.accepted;
         return a.heldout_shrink > b.heldout_shrink;

@@ -20,6 +20,8 @@
 
 namespace driftlab::host::gap {
 
+struct GivenEffects;
+
 struct ExplainOptions {
     int fit_replicates = 8;        ///< replicates per objective evaluation of a simulated-route fit (spikes)
     int eval_replicates = 40;      ///< replicates when judging a fitted candidate
@@ -43,6 +45,9 @@ struct ExplainOptions {
     /// 0 (the default, and what gap-eval scores): only channels with located cells are searched.
     double diffuse_alpha = 0.0;
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
+    /// The base's own effects (add_given_effects()): no candidate is tried where the base holds the same effect (both
+    /// would draw the same random numbers).
+    const GivenEffects* given = nullptr;
     std::function<void(const std::string& stage)> progress;  ///< optional: told what is being fitted
     std::uint64_t seed = 1;
     int threads = 2;
@@ -77,6 +82,15 @@ struct Explanation {
     std::string settle;             ///< the experiment that would separate them
 };
 
+/// The effects of the model the log is diagnosed on (`gap --model FILE`), in the base before anything is located:
+/// see add_given_effects().
+struct GivenEffects {
+    std::vector<Explanation> refitted;  ///< mean shapes fitted to this log, one channel each (effect, channel, params)
+    std::vector<Explanation> held;      ///< Gaussian processes at the file's values, one channel each
+    std::vector<std::string> kept;      ///< kept as the file gives them: effects the diagnosis does not fit, and
+                                        ///< shapes or processes the file gives channels not analysed
+};
+
 /// A step where a Gaussian process was chosen over an accepted mean shape, and both paths were searched on.
 struct PathChoice {
     int step = 0;
@@ -89,6 +103,7 @@ struct PathChoice {
 
 struct ExplainResult {
     GapModel model;                         ///< base plus the accepted effects
+    std::vector<Explanation> given;         ///< the base's refitted mean shapes
     std::vector<Explanation> tried;         ///< every fit on the kept path, accepted first, then by held-out gap
     std::vector<Explanation> accepted;      ///< in the order they were added
     std::vector<PathChoice> paths;          ///< the kept path's branch points, in step order
@@ -128,6 +143,18 @@ Choice choose(const std::vector<const Explanation*>& passing, InformationCriteri
 /// stay located: the library's forms are not the truth's, e.g. bursts of spikes are not single-conversion spikes;
 /// cells_left and the gap after report how much remains.)
 bool closes_gap(const Explanation& e, double step_alpha);
+
+/// Puts the model file's `effects` into the calibrated `base`. A model states the unit's noise, which the log is to
+/// test, while a mean shape's timing and size belong to the power-on and the room, as eq. 1's do: so on each
+/// analysed channel where the file gives it a size, a Gaussian process of the candidates is held at the file's
+/// values (simulated as the file gives it, and part of every spectrum fitted on the channel: `base.held`), and a mean
+/// shape is fitted to the whole log with eq. 1 in the candidate's form (what the file gives other channels is kept).
+/// Every other effect is kept as the file gives it. The white noise is then matched again to the log's short-lag
+/// spread `target_spread`. base.effects ends with the refitted shapes, in the order returned.
+GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec>& effects, const std::vector<double>& t_s,
+                               const std::array<const std::vector<double>*, kChannelCount>& y,
+                               const std::array<bool, kChannelCount>& channels,
+                               const std::array<double, kChannelCount>& target_spread, std::uint64_t seed);
 
 /// Explains the gap of the channels in `channels` (those with located cells) on `log_t_s`/`log_y`.
 ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,

@@ -32,9 +32,14 @@ json steps_json(const std::array<StepEstimate, 2>& steps) {
     return out;
 }
 
-json explanation_json(const Explanation& e, InformationCriterion ic) {
+json params_json(const Explanation& e) {
     json params = json::object();
     for (const auto& [k, v] : e.params) params[k] = report::json_number(v);
+    return params;
+}
+
+json explanation_json(const Explanation& e, InformationCriterion ic) {
+    const json params = params_json(e);
     const StepsOverShape& s = e.shape_steps;
     const json shape_steps = s.tested ? json{{"statistic", report::json_number(s.statistic)},
                                              {"margin", report::json_number(s.margin)},
@@ -72,6 +77,12 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     for (const auto& e : r.tried)
         if (!was_added(r, e)) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
     j["explanations"] = ex;
+    const auto given_json = [](const std::vector<Explanation>& list) {
+        json out = json::array();
+        for (const auto& e : list) out.push_back({{"effect", e.effect}, {"channel", e.channel}, {"params", params_json(e)}});
+        return out;
+    };
+    j["given"] = {{"refitted", given_json(r.given.refitted)}, {"held", given_json(r.given.held)}, {"kept", r.given.kept}};
     json paths = json::array();
     for (const auto& p : r.paths)
         paths.push_back({{"step", p.step},

@@ -27,12 +27,25 @@ struct ChannelBase {
     double sigma_n_counts = 0.0;     ///< white noise before the quantiser [counts]
 };
 
+/// Gaussian processes of the model file that the diagnosis holds at the file's values on one channel (`gap --model`;
+/// add_given_effects()): part of every spectrum fitted on the channel, never refitted. (They are simulated as
+/// `effects` holds them.)
+struct HeldNoise {
+    struct Component {
+        double variance_counts2 = 0.0;  ///< stationary variance [counts^2]
+        double tau_s = 0.0;             ///< correlation time [s]
+    };
+    std::vector<Component> gauss_markov;  ///< Gauss-Markov components (flicker is a sum of them)
+    double walk_counts2_per_s = 0.0;      ///< random walk: step variance per second [counts^2 / s]
+};
+
 /// Everything a replicate is simulated from.
 struct GapModel {
     sim::SimModel unit;                              ///< front ends and converter (model file or the paper's)
     Smoothing smoothing;
     std::array<ChannelBase, kChannelCount> base{};
-    std::vector<sim::EffectSpec> effects;            ///< effects added to the base (candidates)
+    std::vector<sim::EffectSpec> effects;            ///< the model file's effects, then those added (candidates)
+    std::array<HeldNoise, kChannelCount> held{};     ///< the model file's Gaussian processes, per channel
 };
 
 /// Converter counts per physical unit of a channel [counts per deg/s or per g].

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "host/fit/lm_fit.hpp"
@@ -104,7 +105,11 @@ std::string fixed(double v, int digits = 2) {
 
 std::string parameter_list(const Explanation& e) {
     std::string out;
-    for (const auto& [k, v] : e.params) out += (out.empty() ? "" : " ") + k + "=" + fixed(v, 4);
+    for (const auto& [k, v] : e.params) {
+        std::ostringstream value;
+        value << std::setprecision(4) << v;  // sizes in g are 1e-5 and below
+        out += (out.empty() ? "" : " ") + k + "=" + value.str();
+    }
     return out;
 }
 
@@ -156,12 +161,27 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
         return out;
     }
     if (r.located.empty()) {
-        if (!r.diffuse_gap) return "no cell located and the held-out score within its bound: the calibrated base simulator explains the log";
+        if (!r.diffuse_gap)
+            return std::string("no cell located and the held-out score within its bound: the calibrated base simulator") +
+                   (given_effects_sentence(r.given).empty() ? "" : ", with the model's own effects,") + " explains the log";
         return options.search_diffuse ? "no cell located; the diffuse gap was searched and no candidate passed"
                                       : "no cell located, but the held-out score exceeds its bound (a diffuse gap); --search-diffuse tries the candidates on it";
     }
     if (!options.explain) return located + "; no candidate tried (--locate-only)";
     return located + " and no candidate passes (held-out shrink, held-out likelihood and penalised gain)";
+}
+
+std::string given_effects_sentence(const GivenEffects& given) {
+    std::string out;
+    const auto part = [&](const std::string& what, const std::vector<Explanation>& list) {
+        for (std::size_t k = 0; k < list.size(); ++k)
+            out += (k ? "; " : (out.empty() ? "" : "; ") + what) + list[k].effect + " on " + list[k].channel + " " + parameter_list(list[k]);
+    };
+    part("the model's own effects refitted to this log: ", given.refitted);
+    part("held at the model's values: ", given.held);
+    for (std::size_t k = 0; k < given.kept.size(); ++k)
+        out += (k ? ", " : (out.empty() ? "" : "; ") + std::string("kept as the model gives them: ")) + given.kept[k];
+    return out;
 }
 
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,
@@ -171,6 +191,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
     if (stability) md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
+    if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)
        << ". A held-out score within its bound (level " << options.alpha << ") is a closed gap."

@@ -16,6 +16,10 @@ namespace driftlab::host::gap {
 /// One sentence on why the verdict is what it is (the rule that decided it).
 std::string verdict_reason(const GapResult& result, const GapOptions& options);
 
+/// The model file's own effects in the base (`gap --model` with effects), one sentence: those refitted to the log
+/// with their parameters, and those kept as the file gives them; "" when the model has none.
+std::string given_effects_sentence(const GivenEffects& given);
+
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.
 void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options,

@@ -70,20 +70,36 @@ OutputSpectrum model_spectrum(const std::vector<std::string>& effects, Channel c
         }
         k += param_count(effect);
     }
+    const HeldNoise& held = model.held[channel_index(c)];
+    for (const auto& g : held.gauss_markov) s.ar1.push_back({g.variance_counts2, std::exp(-dt / g.tau_s)});
+    s.walk_increment_variance += held.walk_counts2_per_s * dt;
     return s;
 }
 
 SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, const GapModel& model,
                          const PartPeriodogram& p, const std::vector<double>& known) {
     const std::vector<double> floor_acov = white_floor_autocovariance(model.smoothing);
-    const std::vector<double> unit_floor = expected_periodogram(model_spectrum({}, c, {}, model, 1.0), floor_acov, p);
+    OutputSpectrum floor_alone;
+    floor_alone.white = 1.0;
+    const std::vector<double> unit_floor = expected_periodogram(floor_alone, floor_acov, p);
     SpectralFit out;
     out.effects = effects;
-    if (effects.empty()) {
+    const HeldNoise& held = model.held[channel_index(c)];
+    if (effects.empty() && held.gauss_markov.empty() && held.walk_counts2_per_s == 0.0) {
         out.white = floor_only_white(p, unit_floor, 0);
         std::vector<double> e = unit_floor;
         for (double& v : e) v *= out.white;
         out.nll = whittle_nll(p, e);
+        return out;
+    }
+    if (effects.empty()) {  // the floor beside the model file's processes
+        const auto nll_at = [&](const std::vector<double>& ln_white) {
+            return whittle_nll(p, expected_periodogram(model_spectrum({}, c, {}, model, std::exp(ln_white[0])), floor_acov, p));
+        };
+        const auto nm = nelder_mead(nll_at, {std::log(floor_only_white(p, unit_floor, p.power.size() / 2))}, {0.5},
+                                    kRefineEvaluationsPerParameter);
+        out.white = std::exp(nm.x[0]);
+        out.nll = nm.value;
         return out;
     }
     const double cpu = counts_per_unit(model, c);

@@ -15,7 +15,7 @@ namespace driftlab::host::gap {
 
 /// The output noise of a white floor of variance `white` [counts^2 per conversion] plus the spectral candidates
 /// `effects` on channel `c`, whose parameters (candidate_param_names() order, physical units) are concatenated in
-/// `params`.
+/// `params`, plus the model file's processes the model holds on the channel (`model.held`).
 OutputSpectrum model_spectrum(const std::vector<std::string>& effects, Channel c, const std::vector<double>& params,
                               const GapModel& model, double white);
 
@@ -27,7 +27,8 @@ struct SpectralFit {
     int free_parameters = 1;     ///< the white floor plus the effects' parameters
 };
 
-/// Whittle ML of the white floor plus `effects` (none: the floor alone, in closed form) on periodogram `p` of
+/// Whittle ML of the white floor plus `effects` (none: the floor alone, in closed form unless the model holds a
+/// process on the channel) beside the held processes, on periodogram `p` of
 /// channel `c`. `known` (optional) starts all effects but the last from these parameters (a stepwise refit);
 /// the last starts from a grid over its plausible range.
 SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, const GapModel& model,

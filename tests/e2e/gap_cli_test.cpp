@@ -74,11 +74,23 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     }
     EXPECT_EQ(std::memcmp(&fitted.firmware, &paper.firmware, sizeof paper.firmware), 0) << "the log's own smoothing";
 
-    // Given back to gap as the unit, the file's effects are said not to be part of the base.
-    const RunResult as_unit = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "10", "--locate-only", "--model", dir.file("fitted.toml")},
+    // Given back to gap as the unit, on a log of the same unit whose cycle has another phase (another power-on), the
+    // file's cycle is refitted to that log and nothing is missing.
+    {
+        std::ofstream(dir.file("later.toml")) << "[effects.ambient_cycle]\nwaveform = \"sine\"\namplitude_k_pp = 2.0\nperiod_s = 400.0\n"
+                                                 "lag_s = 0.0\nphase_rad = 2.0\ncoupling_dps_per_k = 0.05\n";
+    }
+    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("later.toml"), "--duration", "1500", "--seed", "5", "-o", dir.file("later.csv")},
+                           dir.path()).exit_code, 0);
+    const RunResult as_unit = run_driftlab({"gap", dir.file("later.csv"), "--replicates", "16", "--model", dir.file("fitted.toml"), "--json"},
                                            dir.path());
     ASSERT_EQ(as_unit.exit_code, 0) << as_unit.output;
-    EXPECT_NE(as_unit.output.find("effects (ambient_cycle) are not part of the base"), std::string::npos) << as_unit.output;
+    const auto u = nlohmann::json::parse(as_unit.output);
+    EXPECT_EQ(u["verdict"], "none") << u["located"].dump();
+    ASSERT_EQ(u["given"]["refitted"].size(), 1u) << u["given"].dump();
+    EXPECT_EQ(u["given"]["refitted"][0]["effect"], "ambient_cycle");
+    EXPECT_NEAR(u["given"]["refitted"][0]["params"]["period_s"].get<double>(), 400.0, 20.0);
+    EXPECT_NEAR(u["given"]["refitted"][0]["params"]["phase_rad"].get<double>(), 2.0, 0.3);
 
     ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("fitted.toml"), "--duration", "1500", "--seed", "4", "-o", dir.file("again.csv")},
                            dir.path()).exit_code, 0);

@@ -79,5 +79,33 @@ TEST(SpectralFit, JointFitStartsEarlierEffectsFromTheirParameters) {
     EXPECT_GT(bic(f, p), bic(alone, p));
 }
 
+// A process the model file states is held: it is in the spectrum as the candidate of the same name would put it, and
+// beside it only the white floor is fitted. Held at the values that made the log, it describes the log about as
+// well as the same process fitted freely (the likelihood-ratio statistic of two parameters), and far better than
+// the floor alone.
+TEST(SpectralFit, AHeldProcessIsInTheSpectrumAndOnlyTheFloorIsFittedBesideIt) {
+    const GapModel m = testing::paper_gyro_model(8);
+    GapModel held = m;
+    hold_noise(held.held[0], make_candidate_effect("gauss_markov", Channel::gyro, {0.05, 30.0}, m), Channel::gyro, m);
+    const OutputSpectrum a = model_spectrum({}, Channel::gyro, {}, held, 1.3);
+    const OutputSpectrum b = model_spectrum({"gauss_markov"}, Channel::gyro, {0.05, 30.0}, m, 1.3);
+    ASSERT_EQ(a.ar1.size(), 1u);
+    ASSERT_EQ(b.ar1.size(), 1u);
+    EXPECT_DOUBLE_EQ(a.ar1[0].variance, b.ar1[0].variance);
+    EXPECT_DOUBLE_EQ(a.ar1[0].phi, b.ar1[0].phi);
+    EXPECT_EQ(a.white, b.white);
+
+    const auto p = residual_of(m, "gauss_markov", {0.05, 30.0}, 21);
+    const SpectralFit with_held = fit_spectral({}, Channel::gyro, held, p);
+    const SpectralFit free = fit_spectral({"gauss_markov"}, Channel::gyro, m, p);
+    const SpectralFit floor_alone = fit_spectral({}, Channel::gyro, m, p);
+    EXPECT_EQ(with_held.free_parameters, 1);
+    EXPECT_TRUE(with_held.params.empty());
+    EXPECT_NEAR(with_held.white, 1.05 * 1.05 + 1.0 / 12.0, 0.15);
+    EXPECT_GT(with_held.nll, free.nll - 0.5);
+    EXPECT_LT(2.0 * (with_held.nll - free.nll), 10.0);
+    EXPECT_GT(2.0 * (floor_alone.nll - with_held.nll), 50.0);
+}
+
 }  // namespace
 }  // namespace driftlab::host::gap
