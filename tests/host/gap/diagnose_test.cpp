@@ -26,15 +26,7 @@
 namespace driftlab::host::gap {
 namespace {
 
-GapOptions small_options() {
-    GapOptions o;
-    o.replicates = 20;
-    o.seed = 5;
-    o.explain_options.fit_replicates = 6;
-    o.explain_options.max_evaluations = 12;
-    o.explain_options.max_effects = 1;
-    return o;
-}
+using testing::small_options;
 
 // Each clean log is flagged with family-wise probability alpha = 5 %, so of five at most one may be (probability of
 // two or more: 2.3 %); those not flagged get the verdict none and a gap score near 1. The score is a mean of

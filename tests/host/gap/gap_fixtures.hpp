@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "host/gap/diagnose.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/log/log_data.hpp"
 
@@ -19,6 +20,17 @@ inline std::vector<double> white(std::size_t n, double sigma, unsigned seed) {
     std::vector<double> v(n);
     for (double& x : v) x = d(rng);
     return v;
+}
+
+/// Diagnosis options for small test logs: 20 replicates, seed 5, one effect added, a short spikes fit.
+inline GapOptions small_options() {
+    GapOptions o;
+    o.replicates = 20;
+    o.seed = 5;
+    o.explain_options.fit_replicates = 6;
+    o.explain_options.max_evaluations = 12;
+    o.explain_options.max_effects = 1;
+    return o;
 }
 
 inline GapModel paper_gyro_model(int window) {

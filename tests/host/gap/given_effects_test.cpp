@@ -17,13 +17,7 @@
 namespace driftlab::host::gap {
 namespace {
 
-GapOptions options() {
-    GapOptions o;
-    o.replicates = 20;
-    o.seed = 5;
-    o.explain_options.max_effects = 1;
-    return o;
-}
+GapOptions options() { return testing::small_options(); }
 
 // A Gauss-Markov process of 0.15 deg/s (about 0.8 counts, twice the output's white deviation) and 30 s on the gyro.
 constexpr double kSigma = 0.15, kTau = 30.0;
