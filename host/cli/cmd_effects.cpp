@@ -24,20 +24,27 @@ struct EffectsOptions {
 struct GapUse {
     bool candidate = false;
     std::string text;
+    std::string in_model;  ///< what gap does with it when `gap --model FILE` holds it (docs/gap.md, the model's own effects)
 };
 
 GapUse gap_use(const std::string& name) {
+    const std::string kept = "kept as the file gives it";
     if (const gap::CandidateInfo* c = gap::find_candidate(name)) {
+        const std::string not_tried = kept + "; not tried again on any channel";
         switch (c->route) {
-            case gap::FitRoute::deterministic: return {true, "as a mean shape, by variable projection beside eq. 1"};
-            case gap::FitRoute::spectral: return {true, "as a Gaussian process, by its spectral likelihood"};
-            case gap::FitRoute::simulated: return {true, "by simulation against the statistics battery"};
-            case gap::FitRoute::code_density: return {true, "to a raw-mode log's raw codes"};
+            case gap::FitRoute::deterministic:
+                return {true, "as a mean shape, by variable projection beside eq. 1",
+                        "refitted to the log with eq. 1 on each analysed channel where the file gives it a size (its timing is the power-on's)"};
+            case gap::FitRoute::spectral:
+                return {true, "as a Gaussian process, by its spectral likelihood",
+                        "held at the file's values (the unit's stated noise), in every spectrum fitted on the channel; not tried again there"};
+            case gap::FitRoute::simulated: return {true, "by simulation against the statistics battery", not_tried};
+            case gap::FitRoute::code_density: return {true, "to a raw-mode log's raw codes", not_tried};
         }
     }
     for (const gap::NotIdentifiable& n : gap::not_identifiable_list())
-        if (n.effect == name) return {false, n.reason};
-    return {false, "not tried"};
+        if (n.effect == name) return {false, n.reason, kept};
+    return {false, "not tried", kept};
 }
 
 nlohmann::json to_json(const sim::EffectInfo& e) {
@@ -46,7 +53,8 @@ nlohmann::json to_json(const sim::EffectInfo& e) {
         params.push_back({{"key", p.key}, {"unit", p.unit}, {"default", p.default_text}, {"doc", p.doc}});
     const GapUse use = gap_use(e.name);
     return {{"name", e.name}, {"stage", sim::stage_name(e.stage)}, {"equation", e.equation}, {"summary", e.summary},
-            {"params", params}, {"gap", {{"candidate", use.candidate}, {use.candidate ? "fitted" : "reason", use.text}}}};
+            {"params", params},
+            {"gap", {{"candidate", use.candidate}, {use.candidate ? "fitted" : "reason", use.text}, {"in_model", use.in_model}}}};
 }
 
 // The effect's parameters as a model file's table at their defaults (an effect at its defaults changes nothing),
@@ -54,7 +62,8 @@ nlohmann::json to_json(const sim::EffectInfo& e) {
 void print_one(const sim::EffectInfo& e) {
     const GapUse use = gap_use(e.name);
     std::cout << e.name << " (" << sim::stage_name(e.stage) << " stage): " << e.summary << "\n  " << e.equation << "\n  gap diagnosis: "
-              << (use.candidate ? "a candidate, fitted " : "not a candidate: ") << use.text << "\n\n[effects." << e.name << "]\n";
+              << (use.candidate ? "a candidate, fitted " : "not a candidate: ") << use.text << "\n  in a gap --model file: " << use.in_model
+              << "\n\n[effects." << e.name << "]\n";
     std::size_t width = 0;
     for (const sim::ParamInfo& p : e.params) width = std::max(width, p.key.size() + 3 + p.default_text.size());
     for (const sim::ParamInfo& p : e.params) {
@@ -70,7 +79,7 @@ void register_effects(CLI::App& app) {
     auto opts = std::make_shared<EffectsOptions>();
     CLI::App* cmd = app.add_subcommand("effects", "List the simulator's effect library, or show one effect's model-file table");
     cmd->add_option("name", opts->name, "An effect: its equation and its parameters at their defaults, as TOML");
-    cmd->add_flag("--json", opts->json, "Print JSON (an array of: name, stage, equation, summary, params[], gap{candidate, fitted|reason})");
+    cmd->add_flag("--json", opts->json, "Print JSON (an array of: name, stage, equation, summary, params[], gap{candidate, fitted|reason, in_model})");
     cmd->callback([opts] {
         const auto& all = sim::list_effects();
         std::vector<const sim::EffectInfo*> shown;

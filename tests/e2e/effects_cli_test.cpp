@@ -52,6 +52,12 @@ TEST(EffectsCli, TheListAndTheJsonHoldTheWholeLibraryAndAnUnknownNameIsRefused) 
         const bool candidate = host::gap::find_candidate(library[k].name) != nullptr;
         EXPECT_EQ(j[k]["gap"]["candidate"], candidate) << library[k].name;
         EXPECT_FALSE(j[k]["gap"][candidate ? "fitted" : "reason"].get<std::string>().empty()) << library[k].name;
+        // And in a gap --model file: a Gaussian process held, a mean shape refitted, anything else kept.
+        const auto* c = host::gap::find_candidate(library[k].name);
+        const std::string in_model = j[k]["gap"]["in_model"];
+        const std::string expected = !c ? "kept" : c->route == host::gap::FitRoute::spectral ? "held"
+                                     : c->route == host::gap::FitRoute::deterministic ? "refitted" : "kept";
+        EXPECT_EQ(in_model.rfind(expected, 0), 0u) << library[k].name << ": " << in_model;
         const auto lines = lines_of(list.output);
         EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.rfind(library[k].name + " ", 0) == 0; }))
             << library[k].name << "\n" << list.output;
