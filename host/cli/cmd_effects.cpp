@@ -37,7 +37,8 @@ GapUse gap_use(const std::string& name) {
                         "refitted to the log with eq. 1 on each analysed channel where the file gives it a size (its timing is the power-on's)"};
             case gap::FitRoute::spectral:
                 return {true, "as a Gaussian process, by its spectral likelihood",
-                        "held at the file's values (the unit's stated noise), in every spectrum fitted on the channel; not tried again there"};
+                        "held at the file's values (the unit's stated noise), in every spectrum fitted on the channel; its candidate "
+                        "is fitted in place of it, not beside it"};
             case gap::FitRoute::simulated: return {true, "by simulation against the statistics battery", not_tried};
             case gap::FitRoute::code_density: return {true, "to a raw-mode log's raw codes", not_tried};
         }

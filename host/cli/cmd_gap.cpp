@@ -102,6 +102,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
         std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %.0f%%) ", e.step, e.effect.c_str(), e.channel.c_str(),
                     e.heldout_before, e.heldout_after, 100 * e.heldout_shrink);
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
+        if (e.replaces_given) std::printf("  in place of the model's");
         std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());
     }

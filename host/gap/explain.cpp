@@ -164,6 +164,30 @@ SpectralFit fit_noise(GapModel& m, const Judge& judge, const PartPeriodogram& p,
     return fit;
 }
 
+// `m` with the model file's process `effect` taken off channel `c` (its spec zeroed there, the channel's held
+// spectrum rebuilt from the others), for the candidate of that name to be fitted in its place; `m` unchanged when
+// the base holds no such process there.
+GapModel without_held(const GapModel& m, const GivenEffects* given, const std::string& effect, Channel c) {
+    GapModel out = m;
+    if (!given) return out;
+    const std::string channel = kChannelNames[channel_index(c)];
+    HeldNoise& held = out.held[channel_index(c)];
+    held = {};
+    for (std::size_t k = 0; k < given->held.size(); ++k) {
+        if (given->held[k].channel != channel) continue;
+        sim::EffectSpec& spec = out.effects[given->held_slot[k]];
+        if (given->held[k].effect == effect) spec = without_channel(spec, c);
+        if (candidate_size_in(spec, c) != 0.0) hold_noise(held, spec, c, out);
+    }
+    return out;
+}
+
+bool holds(const GivenEffects* given, const std::string& effect, Channel c) {
+    return given && std::any_of(given->held.begin(), given->held.end(), [&](const Explanation& e) {
+        return e.effect == effect && e.channel == kChannelNames[channel_index(c)];
+    });
+}
+
 // Spikes: Nelder-Mead on log (rate, scale) minimising the synthetic loss of the fitting cells, started from a
 // robust outlier count (a spike of s counts in one conversion leaves about s/N in the output).
 Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOptions& options) {
@@ -487,7 +511,9 @@ struct Search {
                     if (!earlier.empty())
                         fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier, "", &fitted.refits);
                 } else if (route == FitRoute::spectral) {
-                    fitted.model = path.result.model;
+                    // In place of the model file's process of this name, where the base holds one (not yet replaced on
+                    // this path: the name is then in `used`).
+                    fitted.model = without_held(path.result.model, options.given, effect, c);
                     const SpectralFit f = fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
                                                     effect, &fitted.refits);
                     fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()), f.params.end());
@@ -509,7 +535,10 @@ struct Search {
                 // step: a mean shape's misfit is judged by the cells it leaves located, and spikes cannot hold a
                 // level (a burst longer than one conversion, which the library's spikes do not make, would read as
                 // a short step).
-                if (ex.accepted && ex.gaussian) spectral_evidence(ex, path.result.model, judge, earlier, base_fit.nll, base_fit.free_parameters);
+                ex.replaces_given = route == FitRoute::spectral && holds(options.given, effect, c);
+                if (ex.accepted && ex.gaussian)
+                    spectral_evidence(ex, ex.replaces_given ? without_held(path.result.model, options.given, effect, c) : path.result.model,
+                                      judge, earlier, base_fit.nll, base_fit.free_parameters);
                 if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
@@ -626,6 +655,7 @@ GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec
             if (route == FitRoute::spectral && channels[i]) {
                 hold_noise(base.held[i], spec, c, base);
                 given.held.push_back(named(spec.name, c, file_process_params(spec, c)));
+                given.held_slot.push_back(base.effects.size());  // pushed below
             } else if (channels[i] && std::find(shapes[i].begin(), shapes[i].end(), spec.name) == shapes[i].end()) {
                 shapes[i].push_back(spec.name);  // one such shape per channel
                 rest = without_channel(rest, c);
@@ -669,10 +699,9 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
     start.result.model = base;
     if (options.given) {
         start.result.accepted = options.given->refitted;
-        for (const auto* list : {&options.given->refitted, &options.given->held})
-            for (const Explanation& e : *list)
-                for (std::size_t i = 0; i < kChannelCount; ++i)
-                    if (e.channel == kChannelNames[i]) start.used[i].push_back(e.effect);
+        for (const Explanation& e : options.given->refitted)
+            for (std::size_t i = 0; i < kChannelCount; ++i)
+                if (e.channel == kChannelNames[i]) start.used[i].push_back(e.effect);
         // A kept spikes or adc_dnl is not tried again on any channel: both would draw the same numbers (spikes) or
         // hold one converter's table twice. (What a refitted effect keeps gives the channels not analysed only.)
         for (const std::string& name : options.given->kept) {

@@ -45,8 +45,9 @@ struct ExplainOptions {
     /// 0 (the default, and what gap-eval scores): only channels with located cells are searched.
     double diffuse_alpha = 0.0;
     std::vector<std::string> candidates;  ///< empty = all of candidate_list()
-    /// The base's own effects (add_given_effects()): no candidate is tried where the base holds the same effect (both
-    /// would draw the same random numbers).
+    /// The base's own effects (add_given_effects()). Where the base holds a process, the candidate of the same name
+    /// is fitted in place of it (its values may be what the log disagrees with), never beside it (both would draw
+    /// the same random numbers); a refitted shape's name is not tried again on its channel.
     const GivenEffects* given = nullptr;
     std::function<void(const std::string& stage)> progress;  ///< optional: told what is being fitted
     std::uint64_t seed = 1;
@@ -78,6 +79,7 @@ struct Explanation {
     StepsOverShape shape_steps;     ///< a mean shape against two level steps (accepted shapes on a white floor)
     bool accepted = false;
     int step = 0;                   ///< stepwise round in which it was tried (1-based)
+    bool replaces_given = false;    ///< fitted in place of the model file's process of the same name on the channel
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
     std::string settle;             ///< the experiment that would separate them
 };
@@ -87,6 +89,7 @@ struct Explanation {
 struct GivenEffects {
     std::vector<Explanation> refitted;  ///< mean shapes fitted to this log, one channel each (effect, channel, params)
     std::vector<Explanation> held;      ///< Gaussian processes at the file's values, one channel each
+    std::vector<std::size_t> held_slot; ///< per `held` entry: its spec in GapModel::effects
     std::vector<std::string> kept;      ///< kept as the file gives them: effects the diagnosis does not fit, and
                                         ///< shapes or processes the file gives channels not analysed
 };

@@ -62,6 +62,7 @@ json explanation_json(const Explanation& e, InformationCriterion ic) {
             {"steps_over_shape", shape_steps},
             {"accepted", e.accepted},
             {"step", e.step},
+            {"replaces_model", e.replaces_given},
             {"ambiguous_with", e.ambiguous_with.empty() ? json(nullptr) : json(e.ambiguous_with)},
             {"settle", e.settle}};
 }

@@ -206,9 +206,9 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
               "| step | effect | channel | parameters | held-out gap | shrink | close call | what would confirm it |\n"
               "|---|---|---|---|---|---|---|---|\n";
         for (const auto& e : r.accepted)
-            md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e) << " | "
-               << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0)
-               << " % | " << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
+            md << "| " << e.step << " | " << e.effect << (e.replaces_given ? " (in place of the model's)" : "") << " | " << e.channel
+               << " | " << parameter_list(e) << " | " << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | "
+               << fixed(100 * e.heldout_shrink, 0) << " % | " << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
         md << "\n";
     }
     if (!r.paths.empty()) {

@@ -61,8 +61,9 @@ TEST(GivenEffects, AModelsProcessIsHeldAtItsValuesAndExplainsTheLogItMade) {
 }
 
 // A thermal cycle beside the process: the model that states both refits the cycle to this log (its phase is the
-// power-on's, not the file's) and explains the log; the model that states only the process has the cycle found,
-// and never tries a second Gauss-Markov process on the gyro (both would draw the same numbers).
+// power-on's, not the file's) and explains the log; the model that states only the process has the cycle found.
+// A Gauss-Markov candidate on the gyro is only ever fitted in place of the model's, never beside it (both would
+// draw the same numbers).
 TEST(GivenEffects, AModelsCycleIsRefittedToTheLogAndAMissingOneIsFoundBesideAHeldProcess) {
     const GapModel m = testing::paper_gyro_model(8);
     const double amplitude = 0.4, period = 250.0, phase = 1.0;
@@ -99,10 +100,42 @@ TEST(GivenEffects, AModelsCycleIsRefittedToTheLogAndAMissingOneIsFoundBesideAHel
     const GapResult found = diagnose(log, process_only, options());
     EXPECT_EQ(found.verdict, "ambient_cycle");
     ASSERT_FALSE(found.tried.empty());
-    EXPECT_TRUE(std::none_of(found.tried.begin(), found.tried.end(), [](const Explanation& e) {
-        return e.effect == "gauss_markov" && e.channel == "gyro";
-    }));
+    for (const Explanation& e : found.tried) EXPECT_EQ(e.replaces_given, e.effect == "gauss_markov" && e.channel == "gyro") << e.effect;
+    EXPECT_FALSE(found.accepted.front().replaces_given);
     EXPECT_NEAR(found.accepted.front().params[1].second / period, 1.0, 0.05);
+}
+
+// Where the log's process is not the model's, the gap names it: the candidate of its name is fitted in place of
+// the model's (three times stronger than the file states, and a third as strong) and comes back near the log's own
+// (within a factor 1.5: 0.11 deg/s for 0.15), the held-out gap falling at least fivefold;
+// the file's process is then zeroed on the gyro and kept for accel_x, the fitted one added.
+TEST(GivenEffects, AHeldProcessTheLogDisagreesWithIsRefittedInItsPlaceAndNamed) {
+    const GapModel m = testing::paper_gyro_model(8);
+    std::vector<std::vector<std::pair<std::string, double>>> after;
+    for (const double stated : {kSigma / 3.0, kSigma * 3.0}) {
+        GapModel truth = m;
+        truth.effects.push_back(make_candidate_effect("gauss_markov", Channel::gyro, {kSigma, kTau}, m));
+        sim::SimModel unit = sim::paper_model();
+        unit.effects.push_back(make_candidate_effect("gauss_markov", Channel::gyro, {stated, kTau}, m));
+        unit.effects[0].table.insert_or_assign("sigma_g", toml::array{0.001, 0.0, 0.0});
+        const GapResult r = diagnose(testing::gyro_log(truth, 1500, {}, 51), unit, options());
+        EXPECT_EQ(r.verdict, "gauss_markov") << "stated " << stated;
+        ASSERT_FALSE(r.accepted.empty());
+        const Explanation& e = r.accepted.front();
+        EXPECT_TRUE(e.replaces_given);
+        EXPECT_NEAR(std::log(e.params[0].second / kSigma), 0.0, std::log(1.5)) << "stated " << stated;
+        EXPECT_TRUE(r.final_model.held[0].gauss_markov.empty()) << "the model's process is off the gyro";
+        ASSERT_EQ(r.final_model.effects.size(), 2u);
+        EXPECT_EQ(r.final_model.effects[0].table["sigma_dps"].value_or(-1.0), 0.0);
+        EXPECT_EQ(r.final_model.effects[0].table["sigma_g"][0].value_or(0.0), 0.001);
+        EXPECT_EQ(r.final_model.effects[1].name, "gauss_markov");
+        EXPECT_LT(r.gap_after_heldout, r.gap_before_heldout / 5.0) << "stated " << stated;
+        after.push_back(e.params);
+        EXPECT_TRUE(gap_to_json(r, options())["explanations"][0]["replaces_model"].get<bool>());
+    }
+    // What replaces the model's process is fitted to the log alone: whatever the file stated, the same.
+    ASSERT_EQ(after.size(), 2u);
+    EXPECT_EQ(after[0], after[1]);
 }
 
 // Effects the diagnosis does not fit are kept as the file gives them, and a kept spikes is not tried again.
