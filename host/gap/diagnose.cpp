@@ -41,7 +41,8 @@ CellFilter in_segment(Segment s) {
 
 // The level-step test of the final model on each channel with an accepted Gaussian process and no mean shape
 // (whose misfit is judged by the cells it leaves located), at alpha / channels (Bonferroni; the test itself
-// takes enough replicates for its level to be reachable). The model file's refitted processes whiten beside them.
+// takes enough replicates for its level to be reachable). A shape the model file holds (refitted) counts as one;
+// its held processes whiten beside the accepted ones through the model's spectrum (GapModel::held).
 std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData& log, const GapOptions& options) {
     std::vector<const Explanation*> in_model;
     for (const auto& e : result.given.refitted) in_model.push_back(&e);
