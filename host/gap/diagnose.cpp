@@ -44,17 +44,15 @@ CellFilter in_segment(Segment s) {
 // takes enough replicates for its level to be reachable). A shape the model file holds (refitted) counts as one;
 // its held processes whiten beside the accepted ones through the model's spectrum (GapModel::held).
 std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData& log, const GapOptions& options) {
-    std::vector<const Explanation*> in_model;
-    for (const auto& e : result.given.refitted) in_model.push_back(&e);
-    for (const auto& e : result.accepted) in_model.push_back(&e);
     std::vector<std::size_t> tested;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
-        bool random = false, shaped = false;
-        for (const auto& e : result.accepted)
-            random = random || (e.channel == kChannelNames[c] && candidate(e.effect).route == FitRoute::spectral);
-        for (const Explanation* e : in_model)
-            shaped = shaped || (e->channel == kChannelNames[c] && candidate(e->effect).route == FitRoute::deterministic);
-        if (random && !shaped) tested.push_back(c);
+        const auto on_channel = [&](const std::vector<Explanation>& list, FitRoute route) {
+            return std::any_of(list.begin(), list.end(), [&](const Explanation& e) {
+                return e.channel == kChannelNames[c] && candidate(e.effect).route == route;
+            });
+        };
+        const bool shaped = on_channel(result.accepted, FitRoute::deterministic) || on_channel(result.given.refitted, FitRoute::deterministic);
+        if (on_channel(result.accepted, FitRoute::spectral) && !shaped) tested.push_back(c);
     }
     std::vector<LevelStep> out;
     if (tested.empty()) return out;
@@ -63,10 +61,10 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
     for (std::size_t c : tested) {
         std::vector<std::string> effects;
         std::vector<double> params;
-        for (const Explanation* e : in_model) {
-            if (e->channel != kChannelNames[c] || candidate(e->effect).route != FitRoute::spectral) continue;
-            effects.push_back(e->effect);
-            for (const auto& kv : e->params) params.push_back(kv.second);
+        for (const auto& e : result.accepted) {
+            if (e.channel != kChannelNames[c] || candidate(e.effect).route != FitRoute::spectral) continue;
+            effects.push_back(e.effect);
+            for (const auto& kv : e.params) params.push_back(kv.second);
         }
         out.push_back(test_level_step(result.final_model, static_cast<Channel>(c), log.t_s, log.counts[c], effects, params,
                                       replicates, options.seed + 17, options.threads, alpha));
@@ -171,7 +169,6 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo, raw);
         result.tried = std::move(ex.tried);
         result.accepted = std::move(ex.accepted);
-        result.given.refitted = std::move(ex.given);
         result.paths = std::move(ex.paths);
         result.final_model = std::move(ex.model);
         // Only located cells make a gap no effect explains; a diffuse gap's search can name an effect or nothing.

@@ -164,28 +164,27 @@ SpectralFit fit_noise(GapModel& m, const Judge& judge, const PartPeriodogram& p,
     return fit;
 }
 
-// `m` with the model file's process `effect` taken off channel `c` (its spec zeroed there, the channel's held
-// spectrum rebuilt from the others), for the candidate of that name to be fitted in its place; `m` unchanged when
-// the base holds no such process there.
-GapModel without_held(const GapModel& m, const GivenEffects* given, const std::string& effect, Channel c) {
-    GapModel out = m;
-    if (!given) return out;
-    const std::string channel = kChannelNames[channel_index(c)];
-    HeldNoise& held = out.held[channel_index(c)];
-    held = {};
-    for (std::size_t k = 0; k < given->held.size(); ++k) {
-        if (given->held[k].channel != channel) continue;
-        sim::EffectSpec& spec = out.effects[given->held_slot[k]];
-        if (given->held[k].effect == effect) spec = without_channel(spec, c);
-        if (candidate_size_in(spec, c) != 0.0) hold_noise(held, spec, c, out);
-    }
-    return out;
-}
-
+// Whether the base holds the model file's process `effect` on channel `c` (add_given_effects()).
 bool holds(const GivenEffects* given, const std::string& effect, Channel c) {
     return given && std::any_of(given->held.begin(), given->held.end(), [&](const Explanation& e) {
         return e.effect == effect && e.channel == kChannelNames[channel_index(c)];
     });
+}
+
+// `m` with the model file's process `effect` taken off channel `c` (its spec zeroed there, the channel's held
+// spectrum rebuilt from the others), for the candidate of that name to be fitted in its place.
+GapModel without_held(const GapModel& m, const GivenEffects& given, const std::string& effect, Channel c) {
+    GapModel out = m;
+    const std::string channel = kChannelNames[channel_index(c)];
+    HeldNoise& held = out.held[channel_index(c)];
+    held = {};
+    for (std::size_t k = 0; k < given.held.size(); ++k) {
+        if (given.held[k].channel != channel) continue;
+        sim::EffectSpec& spec = out.effects[given.held_slot[k]];
+        if (given.held[k].effect == effect) spec = without_channel(spec, c);
+        if (candidate_size_in(spec, c) != 0.0) hold_noise(held, spec, c, out);
+    }
+    return out;
 }
 
 // Spikes: Nelder-Mead on log (rate, scale) minimising the synthetic loss of the fitting cells, started from a
@@ -505,15 +504,19 @@ struct Search {
                     options.progress("step " + std::to_string(step) + ", " + kChannelNames[i] + ": " + effect);
                 }
                 const FitRoute route = candidate(effect).route;
+                // A process the base holds on this channel (not yet replaced on this path: the name is then in `used`)
+                // is fitted in place of the model file's: the model it is judged against lacks that one here.
+                const bool replaces = route == FitRoute::spectral && holds(options.given, effect, c);
+                const std::optional<GapModel> replaced =
+                    replaces ? std::optional<GapModel>(without_held(path.result.model, *options.given, effect, c)) : std::nullopt;
+                const GapModel& current = replaced ? *replaced : path.result.model;
                 Fitted fitted;
                 if (route == FitRoute::deterministic) {
                     fitted = fit_deterministic(effect, path.result.model, judge, fitting);
                     if (!earlier.empty())
                         fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier, "", &fitted.refits);
                 } else if (route == FitRoute::spectral) {
-                    // In place of the model file's process of this name, where the base holds one (not yet replaced on
-                    // this path: the name is then in `used`).
-                    fitted.model = without_held(path.result.model, options.given, effect, c);
+                    fitted.model = current;
                     const SpectralFit f = fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
                                                     effect, &fitted.refits);
                     fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()), f.params.end());
@@ -535,10 +538,8 @@ struct Search {
                 // step: a mean shape's misfit is judged by the cells it leaves located, and spikes cannot hold a
                 // level (a burst longer than one conversion, which the library's spikes do not make, would read as
                 // a short step).
-                ex.replaces_given = route == FitRoute::spectral && holds(options.given, effect, c);
-                if (ex.accepted && ex.gaussian)
-                    spectral_evidence(ex, ex.replaces_given ? without_held(path.result.model, options.given, effect, c) : path.result.model,
-                                      judge, earlier, base_fit.nll, base_fit.free_parameters);
+                ex.replaces_given = replaces;
+                if (ex.accepted && ex.gaussian) spectral_evidence(ex, current, judge, earlier, base_fit.nll, base_fit.free_parameters);
                 if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
@@ -711,7 +712,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
         }
     }
     ExplainResult result = search.run(std::move(start), 1);
-    result.given.assign(result.accepted.begin(), result.accepted.begin() + static_cast<std::ptrdiff_t>(given));
+    // The refitted shapes are the model file's, not added (their parameters are not refitted during the search).
     result.accepted.erase(result.accepted.begin(), result.accepted.begin() + static_cast<std::ptrdiff_t>(given));
     std::stable_sort(result.tried.begin(), result.tried.end(), [](const Explanation& a, const Explanation& b) {
         if (a.accepted != b.accepted) return a.accepted;

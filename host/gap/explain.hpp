@@ -106,7 +106,6 @@ struct PathChoice {
 
 struct ExplainResult {
     GapModel model;                         ///< base plus the accepted effects
-    std::vector<Explanation> given;         ///< the base's refitted mean shapes
     std::vector<Explanation> tried;         ///< every fit on the kept path, accepted first, then by held-out gap
     std::vector<Explanation> accepted;      ///< in the order they were added
     std::vector<PathChoice> paths;          ///< the kept path's branch points, in step order
