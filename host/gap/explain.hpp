@@ -92,6 +92,8 @@ struct GivenEffects {
     std::vector<std::size_t> held_slot; ///< per `held` entry: its spec in GapModel::effects
     std::vector<std::string> kept;      ///< kept as the file gives them: effects the diagnosis does not fit, and
                                         ///< shapes or processes the file gives channels not analysed
+
+    bool empty() const { return refitted.empty() && held.empty() && kept.empty(); }
 };
 
 /// A step where a Gaussian process was chosen over an accepted mean shape, and both paths were searched on.

@@ -163,7 +163,7 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     if (r.located.empty()) {
         if (!r.diffuse_gap)
             return std::string("no cell located and the held-out score within its bound: the calibrated base simulator") +
-                   (given_effects_sentence(r.given).empty() ? "" : ", with the model's own effects,") + " explains the log";
+                   (r.given.empty() ? "" : ", with the model's own effects,") + " explains the log";
         return options.search_diffuse ? "no cell located; the diffuse gap was searched and no candidate passed"
                                       : "no cell located, but the held-out score exceeds its bound (a diffuse gap); --search-diffuse tries the candidates on it";
     }
