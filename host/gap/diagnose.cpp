@@ -8,6 +8,7 @@
 #include "host/gap/candidates.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
 
@@ -72,6 +73,12 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
     return out;
 }
 
+// Whether channel `c` is among those the options select (none named: all).
+bool selected(const GapOptions& options, std::size_t c) {
+    const bool any = std::any_of(options.channels.begin(), options.channels.end(), [](bool b) { return b; });
+    return !any || options.channels[c];
+}
+
 }  // namespace
 
 bool any_raw_codes(const GapResult& result) {
@@ -85,10 +92,26 @@ bool was_added(const GapResult& r, const Explanation& e) {
 }
 
 std::array<bool, kChannelCount> analysed_channels(const LogData& log, const GapOptions& options) {
-    const bool any = std::any_of(options.channels.begin(), options.channels.end(), [](bool b) { return b; });
     const auto varying = varying_channels(log);
     std::array<bool, kChannelCount> out{};
-    for (std::size_t c = 0; c < kChannelCount; ++c) out[c] = varying[c] && (!any || options.channels[c]);
+    for (std::size_t c = 0; c < kChannelCount; ++c) out[c] = varying[c] && selected(options, c);
+    return out;
+}
+
+std::vector<ConstantChannel> constant_channels(const LogData& log, const GapOptions& options) {
+    const auto varying = varying_channels(log);
+    std::vector<ConstantChannel> out;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (log.recorded[c] && selected(options, c) && !log.counts[c].empty() && !varying[c])
+            out.push_back({static_cast<Channel>(c), log.counts[c].front()});
+    return out;
+}
+
+std::string constant_channels_text(const std::vector<ConstantChannel>& channels) {
+    std::string out;
+    for (const auto& k : channels)
+        out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(k.channel)]) + " at " +
+               format_double(k.counts) + " counts in every row";
     return out;
 }
 
@@ -100,8 +123,12 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
                                                 std::to_string(log.size()));
     GapResult result;
     result.channels = analysed_channels(log, options);
-    if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; }))
-        throw DataError(log.source_name, 0, "no selected channel varies: nothing to compare");
+    result.constant_channels = constant_channels(log, options);
+    if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; })) {
+        const std::string constant = constant_channels_text(result.constant_channels);
+        throw DataError(log.source_name, 0,
+                        "no selected channel varies" + (constant.empty() ? "" : " (" + constant + ")") + ": nothing to compare");
+    }
 
     const auto tell = [&](const std::string& stage) {
         if (options.progress) options.progress(stage);

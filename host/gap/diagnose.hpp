@@ -46,8 +46,16 @@ struct TimingCheck {
     double dt_jitter_rel = 0.0;      ///< standard deviation of the spacing over the nominal period [-]
 };
 
+/// A channel the log recorded whose value never changes: a stuck or unconnected sensor has no noise to compare, so
+/// it is not analysed, and the result says so.
+struct ConstantChannel {
+    Channel channel = Channel::gyro;
+    double counts = 0.0;  ///< its one value
+};
+
 struct GapResult {
     std::array<bool, kChannelCount> channels{};
+    std::vector<ConstantChannel> constant_channels;  ///< recorded (and, with GapOptions::channels, selected) ones
     std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
     std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
     GapModel base;                   ///< the calibrated base (with the model file's effects: `given`)
@@ -83,5 +91,11 @@ bool was_added(const GapResult& result, const Explanation& e);
 
 /// The channels diagnose() analyses for these options.
 std::array<bool, kChannelCount> analysed_channels(const LogData& log, const GapOptions& options);
+
+/// The recorded channels these options select that never change (LogData::recorded; not analysed).
+std::vector<ConstantChannel> constant_channels(const LogData& log, const GapOptions& options);
+
+/// "accel_x at 512 counts in every row, ..." ("" for none).
+std::string constant_channels_text(const std::vector<ConstantChannel>& channels);
 
 }  // namespace driftlab::host::gap

@@ -77,6 +77,7 @@ LogData make_log(const GapModel& truth, const std::vector<double>& added, const 
     const SimOutput sim = simulate(truth, req, seed ^ 0xA5A5A5A5ull);
     log.counts[0] = sim[0];
     for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
+    log.recorded = {true, false, false, false};
     if (raw_mode) log.optional_columns["raw_gyro"] = raw[0];
     log.seq.resize(samples);
     for (std::size_t k = 0; k < samples; ++k) log.seq[k] = raw_mode ? 2 * k : k;

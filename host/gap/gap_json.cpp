@@ -103,6 +103,10 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
                       {"heldout", report::json_number(r.gap_after_heldout)},
                       {"heldout_bound", report::json_number(r.gap_bound_after)}};
     j["diffuse_gap"] = r.diffuse_gap;
+    json constant = json::array();
+    for (const auto& k : r.constant_channels)
+        constant.push_back({{"channel", kChannelNames[channel_index(k.channel)]}, {"counts", report::json_number(k.counts)}});
+    j["constant_channels"] = constant;
     json steps = json::array();
     for (const auto& s : r.level_steps) {
         steps.push_back({{"channel", kChannelNames[channel_index(s.channel)]},

@@ -184,6 +184,12 @@ std::string given_effects_sentence(const GivenEffects& given) {
     return out;
 }
 
+std::string constant_channels_sentence(const GapResult& r) {
+    if (r.constant_channels.empty()) return "";
+    return constant_channels_text(r.constant_channels) +
+           ": a channel that never changes has no noise to compare with the simulator's (a stuck or unconnected sensor?)";
+}
+
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,
                       const VerdictStability* stability) {
     make_output_folder(dir, "report");
@@ -191,6 +197,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
     if (stability) md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
+    if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)

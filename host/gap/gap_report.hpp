@@ -20,6 +20,9 @@ std::string verdict_reason(const GapResult& result, const GapOptions& options);
 /// with their parameters, and those kept as the file gives them; "" when the model has none.
 std::string given_effects_sentence(const GivenEffects& given);
 
+/// The recorded channels left out because they never change, and why that matters; "" when there are none.
+std::string constant_channels_sentence(const GapResult& result);
+
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.
 void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options,

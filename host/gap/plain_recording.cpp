@@ -66,8 +66,10 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         log.seq.push_back(b);
     }
     for (std::size_t c = 0; c < kChannelCount; ++c) log.counts[c].assign(outputs, kMidScale);
+    log.recorded.fill(false);
     for (const auto& m : how.columns) {
         const std::size_t c = channel_index(m.channel);
+        log.recorded[c] = true;
         const fit::Series* s = nullptr;
         for (const auto& candidate : series)
             if (candidate.name == m.column) s = &candidate;

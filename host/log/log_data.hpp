@@ -66,6 +66,9 @@ struct LogData {
     std::vector<double> t_s;                                 ///< [s] since power-on, strictly increasing
     std::vector<std::uint64_t> seq;                          ///< unwrapped frame sequence number
     std::array<std::vector<double>, kChannelCount> counts;   ///< [counts] per Channel
+    /// Channels the source really has. A canonical log has all four; a log made from another logger's table
+    /// (gap::log_from_table) fills the channels it has no column for at mid-scale, and these are false.
+    std::array<bool, kChannelCount> recorded{true, true, true, true};
     std::map<std::string, std::vector<double>> optional_columns;  ///< e.g. "raw_gyro" -> [counts]
     std::vector<LogGap> gaps;
     bool truncated_tail_dropped = false;  ///< the unterminated last line was dropped (ReadOptions)

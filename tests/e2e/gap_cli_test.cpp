@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -136,8 +137,10 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
     const auto j = nlohmann::json::parse(gap.output);
     EXPECT_EQ(j["verdict"], "none");  // --locate-only: nothing is explained
     EXPECT_TRUE(j["located"].empty()) << j["located"].dump();  // white noise on eq. 1's own shape: no gap
-    // Only the mapped channel varies and is analysed; the blocks are the smoother.
+    // Only the mapped channel varies and is analysed; the blocks are the smoother. The others are not in the
+    // recording, so they are not reported as stuck.
     EXPECT_EQ(j["calibration"]["channels"].size(), 1u) << j["calibration"].dump();
+    EXPECT_TRUE(j["constant_channels"].empty()) << j["constant_channels"].dump();
     EXPECT_EQ(j["calibration"]["window"], 40);
     EXPECT_DOUBLE_EQ(j["calibration"]["sample_period_s"].get<double>(), 0.4);
 
@@ -154,6 +157,52 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
     const RunResult wrong = run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=gx:0.00875"}, dir.path());
     EXPECT_EQ(wrong.exit_code, 2);
     EXPECT_NE(wrong.output.find("col1"), std::string::npos) << wrong.output;  // names the columns there are
+}
+
+// A recorded channel that never changes (a stuck or unconnected sensor) has no noise to compare: it is left out of
+// the diagnosis and named, rather than silently dropped; selected alone, it is refused with its value.
+TEST(GapCli, AStuckChannelIsNamedAndLeftOut) {
+    TempDir dir("gapstuck");
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "--seed", "4", "-o", log}, dir.path()).exit_code, 0);
+    const std::string stuck = dir.file("stuck.csv");
+    {
+        std::ifstream in(log);
+        std::ofstream out(stuck);
+        std::string line;
+        while (std::getline(in, line)) {
+            if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0) {
+                // Columns t_s, seq, gyro, accel_x, ...: accel_x is the fourth.
+                std::size_t at = 0;
+                for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;
+                line.replace(at, line.find(',', at) - at, "512");
+            }
+            out << line << "\n";
+        }
+    }
+    const RunResult text = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--report", dir.file("report")}, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.output;
+    EXPECT_NE(text.output.find("not analysed: accel_x at 512 counts in every row: a channel that never changes"), std::string::npos)
+        << text.output;
+    std::ifstream report(dir.file("report/gap.md"));
+    const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    EXPECT_NE(md.find("Not analysed: accel_x at 512 counts in every row"), std::string::npos) << md.substr(0, 600);
+    const RunResult json = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json"}, dir.path());
+    ASSERT_EQ(json.exit_code, 0) << json.output;
+    const auto j = nlohmann::json::parse(json.output);
+    ASSERT_EQ(j["constant_channels"].size(), 1u) << j["constant_channels"].dump();
+    EXPECT_EQ(j["constant_channels"][0]["channel"], "accel_x");
+    EXPECT_DOUBLE_EQ(j["constant_channels"][0]["counts"].get<double>(), 512.0);
+    EXPECT_FALSE(j["calibration"]["channels"].contains("accel_x")) << j["calibration"].dump();
+    EXPECT_EQ(j["calibration"]["channels"].size(), 3u) << j["calibration"].dump();
+    // Channels not selected are not reported; the stuck one selected alone leaves nothing to compare.
+    const RunResult gyro = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--channel", "gyro"}, dir.path());
+    ASSERT_EQ(gyro.exit_code, 0) << gyro.output;
+    EXPECT_TRUE(nlohmann::json::parse(gyro.output)["constant_channels"].empty());
+    const RunResult alone = run_driftlab({"gap", stuck, "--channel", "accel_x"}, dir.path());
+    EXPECT_EQ(alone.exit_code, 3) << alone.output;
+    EXPECT_NE(alone.output.find("stuck.csv: no selected channel varies (accel_x at 512 counts in every row)"), std::string::npos)
+        << alone.output;
 }
 
 TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {
