@@ -121,6 +121,10 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     if (log.size() < kMinSamples)
         throw DataError(log.source_name, 0, "gap needs at least " + std::to_string(kMinSamples) + " samples, got " +
                                                 std::to_string(log.size()));
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (options.channels[c] && !log.recorded[c])
+            throw UsageError(std::string("--channel ") + kChannelNames[c] + ": " + log.source_name +
+                             " does not record it (a plain recording has the channels its --as options map)");
     GapResult result;
     result.channels = analysed_channels(log, options);
     result.constant_channels = constant_channels(log, options);

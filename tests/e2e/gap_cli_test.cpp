@@ -151,6 +151,11 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
     EXPECT_NE(odd.output.find("rate.txt: --model-out: the log's smoothing (output period 12.5 ms"), std::string::npos) << odd.output;
     EXPECT_EQ(odd.output.find("verdict"), std::string::npos) << "refused before the diagnosis";
 
+    const RunResult unrecorded = run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--channel", "accel_x"},
+                                              dir.path());
+    EXPECT_EQ(unrecorded.exit_code, 2) << unrecorded.output;
+    EXPECT_NE(unrecorded.output.find("--channel accel_x: " + table + " does not record it"), std::string::npos) << unrecorded.output;
+
     const RunResult unmapped = run_driftlab({"gap", table}, dir.path());
     EXPECT_EQ(unmapped.exit_code, 2);
     EXPECT_NE(unmapped.output.find("--as CHANNEL=COLUMN:LSB"), std::string::npos) << unmapped.output;
