@@ -99,11 +99,10 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                     std::isnan(l.ratio) ? l.difference : l.ratio);
     }
     if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) std::printf("base: %s\n", given.c_str());
-    if (!r.accepted.empty()) std::printf("explanation (effects added in order; parameters refitted beside the later ones):\n");
+    if (!r.accepted.empty()) std::printf("explanation (effects added in order; parameters estimated on the whole log beside them all):\n");
     for (const auto& e : r.accepted) {
-        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %.0f%%) ", e.step, e.effect.c_str(), e.channel.c_str(),
-                    e.heldout_before, e.heldout_after, 100 * e.heldout_shrink);
-        for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
+        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %.0f%%)  %s", e.step, e.effect.c_str(), e.channel.c_str(),
+                    e.heldout_before, e.heldout_after, 100 * e.heldout_shrink, gap::estimate_text(e).c_str());
         if (e.replaces_given) std::printf("  in place of the model's");
         std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());
@@ -169,7 +168,7 @@ void run(const GapCommandOptions& o) {
     if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options, stability.logs > 0 ? &stability : nullptr);
     std::vector<std::string> model_notes;
     if (!o.model_out.empty()) {
-        const gap::ModelOut m = gap::model_out(r.final_model, r.channels, gap::any_raw_codes(r), o.path);
+        const gap::ModelOut m = gap::model_out(r.whole_log_model, r.channels, gap::any_raw_codes(r), o.path);
         std::string effects;
         for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
         std::string comment = "driftlab gap " + o.path + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "

@@ -179,7 +179,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     tell("comparing with " + std::to_string(options.replicates) + " replicates");
     judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout, result.gap_bound_before);
 
-    result.final_model = result.base;
+    result.final_model = result.whole_log_model = result.base;
     result.diffuse_gap = result.located.empty() && result.gap_before_heldout > result.gap_bound_before;
     if (result.located.empty() && !(result.diffuse_gap && options.search_diffuse)) {
         result.verdict = "none";
@@ -202,6 +202,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         result.accepted = std::move(ex.accepted);
         result.paths = std::move(ex.paths);
         result.final_model = std::move(ex.model);
+        result.whole_log_model = std::move(ex.whole_log_model);
         // Only located cells make a gap no effect explains; a diffuse gap's search can name an effect or nothing.
         const char* nothing = result.located.empty() ? "none" : "unexplained";
         result.verdict = result.accepted.empty() ? nothing : result.accepted.front().effect;

@@ -60,7 +60,10 @@ struct GapResult {
     std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
     GapModel base;                   ///< the calibrated base (with the model file's effects: `given`)
     GivenEffects given;              ///< the model file's effects: refitted to this log (final parameters) or kept
-    GapModel final_model;            ///< base plus the accepted effects
+    GapModel final_model;            ///< base plus the accepted effects (parameters of the fitting part)
+    /// The same with the added shapes' and processes' parameters estimated again on the whole log
+    /// (Explanation::whole_log_params): the unit's estimate, which --model-out writes.
+    GapModel whole_log_model;
     std::vector<Cell> layout;
     std::vector<double> real_values;
     Comparison before, after;

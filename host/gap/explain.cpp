@@ -446,25 +446,33 @@ struct Search {
         return out;
     }
 
+    // Channel `i`'s judge with candidates fitted on `part`: the channel's own battery of the log, its eq. 1 residual
+    // and short-lag spread.
+    Judge judge_for(std::size_t i, const std::vector<bool>& part) const {
+        Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, part, options.seed, options.threads,
+                    battery.raw_codes[i] ? raw[i] : nullptr};
+        judge.battery.channels = {};
+        judge.battery.channels[i] = true;
+        judge.battery.raw_codes = {};
+        judge.battery.raw_codes[i] = battery.raw_codes[i];
+        std::array<const std::vector<double>*, kChannelCount> yc{};
+        yc[i] = y[i];
+        RawCodes raw_c{};
+        raw_c[i] = raw[i];
+        const BatteryResult real = compute_battery(t_s, yc, judge.battery, &judge.layout, raw_c);
+        judge.real = real.values;
+        judge.residual = real.residual[i];
+        judge.target_spread = short_lag_spread(judge.residual);
+        return judge;
+    }
+
     // Every open channel's candidates fitted and judged beside the path's model; tried fits are added to the path.
     std::vector<Chosen> step(Path& path, int step) const {
         std::vector<Chosen> chosen;
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             if (!path.open[i]) continue;
             const Channel c = static_cast<Channel>(i);
-            Judge judge{t_s, *y[i], c, battery, {}, {}, {}, 0.0, fitting, options.seed, options.threads, battery.raw_codes[i] ? raw[i] : nullptr};
-            judge.battery.channels = {};
-            judge.battery.channels[i] = true;
-            judge.battery.raw_codes = {};
-            judge.battery.raw_codes[i] = battery.raw_codes[i];
-            std::array<const std::vector<double>*, kChannelCount> yc{};
-            yc[i] = y[i];
-            RawCodes raw_c{};
-            raw_c[i] = raw[i];
-            const BatteryResult real = compute_battery(t_s, yc, judge.battery, &judge.layout, raw_c);
-            judge.real = real.values;
-            judge.residual = real.residual[i];
-            judge.target_spread = short_lag_spread(judge.residual);
+            const Judge judge = judge_for(i, fitting);
             const Comparison base_cmp = judge.evaluate(path.result.model, options.eval_replicates);
             // A channel stays open while cells are located or, after an accepted effect, a held-out excess remains
             // for another effect to shrink (one broad process may cover a line that is still there).
@@ -604,6 +612,52 @@ struct Search {
         return 2.0 * fit.nll + parameter_price(options.information_criterion, p.count) * (fit.free_parameters + shape_parameters);
     }
 
+    // The added effects (accepted[from...]) estimated again on the whole log once the held-out part has judged them:
+    // on each channel its mean shapes one by one with eq. 1 beside the others, then its Gaussian processes together
+    // on what the shapes leave, and the white noise matched again. The interleaved fitting part sees a slow
+    // process only inside its blocks of 150-300 outputs; the whole log has about twice the data and its lowest
+    // frequencies. Spikes and a DNL table keep the fitting part's values.
+    void estimate_on_whole_log(ExplainResult& r, std::size_t from) const {
+        r.whole_log_model = r.model;
+        GapModel& m = r.whole_log_model;
+        for (std::size_t i = 0; i < kChannelCount; ++i) {
+            const Channel c = static_cast<Channel>(i);
+            bool here = false, noise = false;
+            for (std::size_t k = from; k < r.accepted.size(); ++k)
+                if (r.accepted[k].channel == kChannelNames[i]) {
+                    here = true;
+                    noise = noise || candidate(r.accepted[k].effect).route == FitRoute::spectral;
+                }
+            if (!here) continue;
+            const Judge judge = judge_for(i, everywhere);
+            const auto record = [&](Explanation& e, const std::vector<double>& q) {
+                e.whole_log_params = e.params;
+                for (std::size_t p = 0; p < q.size(); ++p) e.whole_log_params[p].second = q[p];
+            };
+            for (std::size_t k = from; k < r.accepted.size(); ++k) {
+                Explanation& e = r.accepted[k];
+                if (e.channel != kChannelNames[i] || candidate(e.effect).route != FitRoute::deterministic) continue;
+                const std::size_t slot = first_added + k;
+                GapModel others = m;
+                others.effects[slot] = without_channel(others.effects[slot], c);
+                const Fitted f = fit_deterministic(e.effect, others, judge, everywhere);
+                m.base[i].drift = f.model.base[i].drift;
+                m.effects[slot] = make_candidate_effect(e.effect, c, f.params, m);
+                record(e, f.params);
+            }
+            if (noise) {
+                std::vector<std::pair<std::size_t, std::vector<double>>> refits;
+                fit_noise(m, judge, residual_periodogram(m, judge, everywhere), processes(r, i), "", &refits);
+                for (const auto& [k, q] : refits) record(r.accepted[k], q);
+            }
+            std::array<bool, kChannelCount> only{};
+            only[i] = true;
+            std::array<double, kChannelCount> target{};
+            target[i] = judge.target_spread;
+            match_noise(m, t_s, only, target, options.seed);
+        }
+    }
+
     // Steps from `step` on. Across channels the choice with the largest held-out likelihood gain is added; where a
     // process was chosen over an accepted mean shape of its channel, the path with the shape instead is searched
     // as well and the one whose final model has the lower criterion on that channel is kept.
@@ -712,6 +766,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
         }
     }
     ExplainResult result = search.run(std::move(start), 1);
+    search.estimate_on_whole_log(result, given);
     // The refitted shapes are the model file's, not added (their parameters are not refitted during the search).
     result.accepted.erase(result.accepted.begin(), result.accepted.begin() + static_cast<std::ptrdiff_t>(given));
     std::stable_sort(result.tried.begin(), result.tried.end(), [](const Explanation& a, const Explanation& b) {

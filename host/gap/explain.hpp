@@ -80,6 +80,9 @@ struct Explanation {
     bool accepted = false;
     int step = 0;                   ///< stepwise round in which it was tried (1-based)
     bool replaces_given = false;    ///< fitted in place of the model file's process of the same name on the channel
+    /// An added mean shape or Gaussian process: its parameters estimated again on the whole log once chosen
+    /// (ExplainResult::whole_log_model); empty otherwise. `params` are the fitting part's, which the held-out part judged.
+    std::vector<std::pair<std::string, double>> whole_log_params;
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
     std::string settle;             ///< the experiment that would separate them
 };
@@ -108,6 +111,7 @@ struct PathChoice {
 
 struct ExplainResult {
     GapModel model;                         ///< base plus the accepted effects
+    GapModel whole_log_model;               ///< the same with their parameters estimated again on the whole log
     std::vector<Explanation> tried;         ///< every fit on the kept path, accepted first, then by held-out gap
     std::vector<Explanation> accepted;      ///< in the order they were added
     std::vector<PathChoice> paths;          ///< the kept path's branch points, in step order

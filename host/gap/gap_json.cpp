@@ -32,14 +32,14 @@ json steps_json(const std::array<StepEstimate, 2>& steps) {
     return out;
 }
 
-json params_json(const Explanation& e) {
+json params_json(const std::vector<std::pair<std::string, double>>& list) {
     json params = json::object();
-    for (const auto& [k, v] : e.params) params[k] = report::json_number(v);
+    for (const auto& [k, v] : list) params[k] = report::json_number(v);
     return params;
 }
 
 json explanation_json(const Explanation& e, InformationCriterion ic) {
-    const json params = params_json(e);
+    const json params = params_json(e.params);
     const StepsOverShape& s = e.shape_steps;
     const json shape_steps = s.tested ? json{{"statistic", report::json_number(s.statistic)},
                                              {"margin", report::json_number(s.margin)},
@@ -49,6 +49,7 @@ json explanation_json(const Explanation& e, InformationCriterion ic) {
     return {{"effect", e.effect},
             {"channel", e.channel},
             {"params", params},
+            {"params_whole_log", e.whole_log_params.empty() ? json(nullptr) : params_json(e.whole_log_params)},
             {"gap_before", report::json_number(e.gap_before)},
             {"gap_after", report::json_number(e.gap_after)},
             {"heldout_before", report::json_number(e.heldout_before)},
@@ -80,7 +81,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["explanations"] = ex;
     const auto given_json = [](const std::vector<Explanation>& list) {
         json out = json::array();
-        for (const auto& e : list) out.push_back({{"effect", e.effect}, {"channel", e.channel}, {"params", params_json(e)}});
+        for (const auto& e : list) out.push_back({{"effect", e.effect}, {"channel", e.channel}, {"params", params_json(e.params)}});
         return out;
     };
     j["given"] = {{"refitted", given_json(r.given.refitted)}, {"held", given_json(r.given.held)}, {"kept", r.given.kept}};

@@ -103,9 +103,9 @@ std::string fixed(double v, int digits = 2) {
     return s.str();
 }
 
-std::string parameter_list(const Explanation& e) {
+std::string parameter_list(const std::vector<std::pair<std::string, double>>& params) {
     std::string out;
-    for (const auto& [k, v] : e.params) {
+    for (const auto& [k, v] : params) {
         std::ostringstream value;
         value << std::setprecision(4) << v;  // sizes in g are 1e-5 and below
         out += (out.empty() ? "" : " ") + k + "=" + value.str();
@@ -175,13 +175,18 @@ std::string given_effects_sentence(const GivenEffects& given) {
     std::string out;
     const auto part = [&](const std::string& what, const std::vector<Explanation>& list) {
         for (std::size_t k = 0; k < list.size(); ++k)
-            out += (k ? "; " : (out.empty() ? "" : "; ") + what) + list[k].effect + " on " + list[k].channel + " " + parameter_list(list[k]);
+            out += (k ? "; " : (out.empty() ? "" : "; ") + what) + list[k].effect + " on " + list[k].channel + " " + parameter_list(list[k].params);
     };
     part("the model's own effects refitted to this log: ", given.refitted);
     part("held at the model's values: ", given.held);
     for (std::size_t k = 0; k < given.kept.size(); ++k)
         out += (k ? ", " : (out.empty() ? "" : "; ") + std::string("kept as the model gives them: ")) + given.kept[k];
     return out;
+}
+
+std::string estimate_text(const Explanation& e) {
+    if (e.whole_log_params.empty()) return parameter_list(e.params);
+    return parameter_list(e.whole_log_params) + " (whole log; fitting part: " + parameter_list(e.params) + ")";
 }
 
 std::string constant_channels_sentence(const GapResult& r) {
@@ -208,13 +213,14 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md << "| with the added effects | " << fixed(r.gap_after_fit) << " | " << fixed(r.gap_after_heldout) << " | "
        << fixed(r.gap_bound_after) << " |\n\n";
     if (!r.accepted.empty()) {
-        md << "## Explanation: the effects added, in order\n\nParameters as refitted beside the later effects; the "
-              "held-out gap is the channel's, before and after each step.\n\n"
+        md << "## Explanation: the effects added, in order\n\nParameters as estimated on the whole log beside all the "
+              "added effects, and (for a mean shape or a Gaussian process) the fitting part's, which the held-out part "
+              "judged; the held-out gap is the channel's, before and after each step.\n\n"
               "| step | effect | channel | parameters | held-out gap | shrink | close call | what would confirm it |\n"
               "|---|---|---|---|---|---|---|---|\n";
         for (const auto& e : r.accepted)
             md << "| " << e.step << " | " << e.effect << (e.replaces_given ? " (in place of the model's)" : "") << " | " << e.channel
-               << " | " << parameter_list(e) << " | " << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | "
+               << " | " << estimate_text(e) << " | " << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | "
                << fixed(100 * e.heldout_shrink, 0) << " % | " << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
         md << "\n";
     }
@@ -252,7 +258,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
           "| step | effect | channel | parameters | held-out gap | shrink | gain / penalty | delta IC | decision |\n"
           "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& e : r.tried) {
-        md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e) << " | " << fixed(e.heldout_before)
+        md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e.params) << " | " << fixed(e.heldout_before)
            << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0) << " % | " << fixed(e.loss_gain, 1)
            << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
            << (was_added(r, e) ? "**added**" : e.accepted ? "passed, not chosen" : "rejected")

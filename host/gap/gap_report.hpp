@@ -20,6 +20,10 @@ std::string verdict_reason(const GapResult& result, const GapOptions& options);
 /// with their parameters, and those kept as the file gives them; "" when the model has none.
 std::string given_effects_sentence(const GivenEffects& given);
 
+/// An added effect's parameters: "k=v ..." as estimated on the whole log, then "(whole log; fitting part: k=v ...)"
+/// with those the held-out part judged; the fitting part's alone where nothing was estimated again.
+std::string estimate_text(const Explanation& e);
+
 /// The recorded channels left out because they never change, and why that matters; "" when there are none.
 std::string constant_channels_sentence(const GapResult& result);
 

@@ -55,6 +55,7 @@ inline LogData gyro_log(const GapModel& m, std::size_t samples, const std::vecto
     req.added_counts[0] = added;
     log.counts[0] = simulate(m, req, seed)[0];
     for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
+    log.recorded = {true, false, false, false};
     log.metadata.set("sample_period_s", m.smoothing.sample_period_s);
     log.metadata.set("conversions_per_output", static_cast<std::int64_t>(m.smoothing.conversions_per_output));
     log.metadata.set("window", static_cast<std::int64_t>(m.smoothing.window));
