@@ -67,6 +67,16 @@ struct Judge {
     }
 };
 
+// The judge's channel's white noise matched again to the log's short-lag spread, with `m`'s effects in place.
+void match_channel_noise(GapModel& m, const Judge& judge, std::uint64_t seed) {
+    const std::size_t i = channel_index(judge.channel);
+    std::array<bool, kChannelCount> only{};
+    only[i] = true;
+    std::array<double, kChannelCount> target{};
+    target[i] = judge.target_spread;
+    match_noise(m, judge.t_s, only, target, seed);
+}
+
 // An accepted effect of this channel that is fitted again beside each new candidate.
 struct Earlier {
     std::size_t accepted_index;  ///< into ExplainResult::accepted
@@ -535,11 +545,7 @@ struct Search {
                     fitted = fit_spikes(path.result.model, judge, options);
                 }
                 // The candidate takes part of the short-lag spread: match the white noise again with it in place.
-                std::array<bool, kChannelCount> only{};
-                only[i] = true;
-                std::array<double, kChannelCount> target{};
-                target[i] = judge.target_spread;
-                match_noise(fitted.model, t_s, only, target, options.seed);
+                match_channel_noise(fitted.model, judge, options.seed);
                 Explanation ex = judge_candidate(effect, fitted, judge, base_cmp, options);
                 // The choice among accepted candidates and the level-step test concern accepted ones only. The
                 // level-step test is for Gaussian-process explanations, which can close the battery's gap around a
@@ -650,11 +656,7 @@ struct Search {
                 fit_noise(m, judge, residual_periodogram(m, judge, everywhere), processes(r, i), "", &refits);
                 for (const auto& [k, q] : refits) record(r.accepted[k], q);
             }
-            std::array<bool, kChannelCount> only{};
-            only[i] = true;
-            std::array<double, kChannelCount> target{};
-            target[i] = judge.target_spread;
-            match_noise(m, t_s, only, target, options.seed);
+            match_channel_noise(m, judge, options.seed);
         }
     }
 
