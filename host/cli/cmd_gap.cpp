@@ -239,7 +239,7 @@ void register_gap(CLI::App& app) {
                   "not_identifiable, not_tried, calibration, timing; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->add_option("--stability", o->stability,
-                    "Diagnose N logs simulated from the final model, as the log was, and say how many get its verdict (repeatability, not correctness; "
+                    "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness; "
                     "N times the diagnosis's time)")
         ->check(CLI::Range(0, 1000));
     cmd->add_option("--model-out", o->model_out,

@@ -22,7 +22,7 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
         std::array<std::vector<double>, kChannelCount> raw;
         if (any_raw) request.raw_codes = &raw;
         // Seeds apart from the replicates' (which follow options.seed upward), one per log.
-        const SimOutput sim = simulate(result.final_model, request, options.seed ^ (0x9e3779b97f4a7c15ULL * (b + 1)));
+        const SimOutput sim = simulate(result.whole_log_model, request, options.seed ^ (0x9e3779b97f4a7c15ULL * (b + 1)));
         LogData copy = log;
         for (std::size_t c = 0; c < kChannelCount; ++c) {
             if (!result.channels[c]) continue;
@@ -39,7 +39,7 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
 
 std::string stability_sentence(const VerdictStability& s, const std::string& verdict) {
     char head[200];
-    std::snprintf(head, sizeof head, "of %zu logs simulated from the final model and diagnosed alike, %zu (%.0f %%) are called %s;", s.logs,
+    std::snprintf(head, sizeof head, "of %zu logs simulated from the estimated model and diagnosed alike, %zu (%.0f %%) are called %s;", s.logs,
                   s.same, s.logs ? 100.0 * static_cast<double>(s.same) / static_cast<double>(s.logs) : 0.0, verdict.c_str());
     std::string text = head;
     for (const auto& [v, n] : s.verdicts) text += " " + v + " " + std::to_string(n);

@@ -58,7 +58,7 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     ASSERT_EQ(gap.exit_code, 0) << gap.output;
     EXPECT_NE(gap.output.find("verdict: ambient_cycle"), std::string::npos) << gap.output;
     // A cycle this clear is read again in every log the fitted model makes.
-    EXPECT_NE(gap.output.find("of 3 logs simulated from the final model and diagnosed alike, 3 (100 %) are called ambient_cycle"),
+    EXPECT_NE(gap.output.find("of 3 logs simulated from the estimated model and diagnosed alike, 3 (100 %) are called ambient_cycle"),
               std::string::npos) << gap.output;
     EXPECT_NE(gap.output.find("model file: " + dir.file("fitted.toml")), std::string::npos) << gap.output;
     const sim::SimModel fitted = sim::load_model_file(dir.file("fitted.toml"));
