@@ -86,6 +86,8 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                 r.gap_after_heldout <= r.gap_bound_after ? "closed" : "not closed");
     if (const std::string constant = gap::constant_channels_sentence(r); !constant.empty())
         std::printf("not analysed: %s\n", constant.c_str());
+    if (const std::string saturated = gap::saturated_channels_sentence(r); !saturated.empty())
+        std::printf("saturated: %s\n", saturated.c_str());
     std::printf("located cells (|z| > %.2f and beyond the margin): %zu\n", r.before.threshold, r.located.size());
     if (r.diffuse_gap)
         std::printf("diffuse gap: the held-out score %.2f exceeds its bound %.2f with no cell located (many cells a little "

@@ -73,6 +73,24 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
     return out;
 }
 
+// The analysed channels whose rows the log's sat_flags column flags, with how many and the first.
+std::vector<SaturatedChannel> saturated_channels(const LogData& log, const std::array<bool, kChannelCount>& channels) {
+    std::vector<SaturatedChannel> out;
+    const auto column = log.optional_columns.find("sat_flags");
+    if (column == log.optional_columns.end()) return out;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!channels[c]) continue;
+        SaturatedChannel s{static_cast<Channel>(c), 0, 0.0};
+        for (std::size_t k = 0; k < column->second.size() && k < log.size(); ++k) {
+            const double flags = column->second[k];
+            if (!(flags >= 0.0) || ((static_cast<unsigned>(flags) >> c) & 1u) == 0) continue;
+            if (s.rows++ == 0) s.first_t_s = log.t_s[k];
+        }
+        if (s.rows > 0) out.push_back(s);
+    }
+    return out;
+}
+
 // Whether channel `c` is among those the options select (none named: all).
 bool selected(const GapOptions& options, std::size_t c) {
     const bool any = std::any_of(options.channels.begin(), options.channels.end(), [](bool b) { return b; });
@@ -147,6 +165,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         result.given = add_given_effects(result.base, unit.effects, log.t_s, y, result.channels, spread, options.seed);
     }
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
+    result.saturated = saturated_channels(log, result.channels);
 
     BatteryOptions battery;
     battery.channels = result.channels;

@@ -53,9 +53,19 @@ struct ConstantChannel {
     double counts = 0.0;  ///< its one value
 };
 
+/// An analysed channel whose firmware flagged saturation in some rows (the log's `sat_flags`, bit c: a conversion
+/// of the row's window at code 0 or the top code). The replicates clip only where their own noise reaches a rail,
+/// so a shock, or a rail the unit sits near, can read as a gap there.
+struct SaturatedChannel {
+    Channel channel = Channel::gyro;
+    std::size_t rows = 0;
+    double first_t_s = 0.0;  ///< the first such row's time
+};
+
 struct GapResult {
     std::array<bool, kChannelCount> channels{};
     std::vector<ConstantChannel> constant_channels;  ///< recorded (and, with GapOptions::channels, selected) ones
+    std::vector<SaturatedChannel> saturated;         ///< analysed channels with rows flagged saturated
     std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
     std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
     GapModel base;                   ///< the calibrated base (with the model file's effects: `given`)

@@ -108,6 +108,11 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     for (const auto& k : r.constant_channels)
         constant.push_back({{"channel", kChannelNames[channel_index(k.channel)]}, {"counts", report::json_number(k.counts)}});
     j["constant_channels"] = constant;
+    json saturated = json::array();
+    for (const auto& s : r.saturated)
+        saturated.push_back({{"channel", kChannelNames[channel_index(s.channel)]}, {"rows", s.rows},
+                             {"first_t_s", report::json_number(s.first_t_s)}});
+    j["saturated"] = saturated;
     json steps = json::array();
     for (const auto& s : r.level_steps) {
         steps.push_back({{"channel", kChannelNames[channel_index(s.channel)]},

@@ -195,6 +195,16 @@ std::string constant_channels_sentence(const GapResult& r) {
            ": a channel that never changes has no noise to compare with the simulator's (a stuck or unconnected sensor?)";
 }
 
+std::string saturated_channels_sentence(const GapResult& r) {
+    std::string out;
+    for (const auto& s : r.saturated)
+        out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(s.channel)]) + " in " + std::to_string(s.rows) +
+               (s.rows == 1 ? " row" : " rows") + " from t = " + fixed(s.first_t_s, 1) + " s";
+    if (out.empty()) return "";
+    return out + ": a conversion reached code 0 or the top code there (the firmware's sat_flags); the simulator clips only "
+                 "where its own noise reaches a rail, so a shock, or a rail the unit sits near, can read as a gap";
+}
+
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,
                       const VerdictStability* stability) {
     make_output_folder(dir, "report");
@@ -203,6 +213,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
     if (stability) md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
     if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
+    if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)

@@ -27,6 +27,9 @@ std::string estimate_text(const Explanation& e);
 /// The recorded channels left out because they never change, and why that matters; "" when there are none.
 std::string constant_channels_sentence(const GapResult& result);
 
+/// The analysed channels with rows flagged saturated, and what that can do to the comparison; "" when none.
+std::string saturated_channels_sentence(const GapResult& result);
+
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.
 void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options,

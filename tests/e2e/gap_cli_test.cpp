@@ -165,8 +165,9 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
 }
 
 // A recorded channel that never changes (a stuck or unconnected sensor) has no noise to compare: it is left out of
-// the diagnosis and named, rather than silently dropped; selected alone, it is refused with its value.
-TEST(GapCli, AStuckChannelIsNamedAndLeftOut) {
+// the diagnosis and named, rather than silently dropped; selected alone, it is refused with its value. Rows the
+// firmware flagged saturated (sat_flags) are counted for the analysed channels.
+TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     TempDir dir("gapstuck");
     const std::string log = dir.file("hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "--seed", "4", "-o", log}, dir.path()).exit_code, 0);
@@ -175,12 +176,18 @@ TEST(GapCli, AStuckChannelIsNamedAndLeftOut) {
         std::ifstream in(log);
         std::ofstream out(stuck);
         std::string line;
+        int row = 0;
+        const auto field = [](std::string& l, int index, const std::string& value) {
+            std::size_t at = 0;
+            for (int comma = 0; comma < index; ++comma) at = l.find(',', at) + 1;
+            l.replace(at, l.find(',', at) - at, value);
+        };
         while (std::getline(in, line)) {
             if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0) {
-                // Columns t_s, seq, gyro, accel_x, ...: accel_x is the fourth.
-                std::size_t at = 0;
-                for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;
-                line.replace(at, line.find(',', at) - at, "512");
+                // Columns t_s, seq, gyro, accel_x, accel_y, accel_z, tick, sat_flags, ...
+                field(line, 3, "512");
+                ++row;
+                if (row >= 100 && row < 105) field(line, 7, "10");  // accel_x (not analysed) and accel_z saturated
             }
             out << line << "\n";
         }
@@ -189,9 +196,11 @@ TEST(GapCli, AStuckChannelIsNamedAndLeftOut) {
     ASSERT_EQ(text.exit_code, 0) << text.output;
     EXPECT_NE(text.output.find("not analysed: accel_x at 512 counts in every row: a channel that never changes"), std::string::npos)
         << text.output;
+    EXPECT_NE(text.output.find("saturated: accel_z in 5 rows from t = "), std::string::npos) << text.output;
     std::ifstream report(dir.file("report/gap.md"));
     const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
     EXPECT_NE(md.find("Not analysed: accel_x at 512 counts in every row"), std::string::npos) << md.substr(0, 600);
+    EXPECT_NE(md.find("Saturated: accel_z in 5 rows"), std::string::npos) << md.substr(0, 900);
     const RunResult json = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json"}, dir.path());
     ASSERT_EQ(json.exit_code, 0) << json.output;
     const auto j = nlohmann::json::parse(json.output);
@@ -200,6 +209,10 @@ TEST(GapCli, AStuckChannelIsNamedAndLeftOut) {
     EXPECT_DOUBLE_EQ(j["constant_channels"][0]["counts"].get<double>(), 512.0);
     EXPECT_FALSE(j["calibration"]["channels"].contains("accel_x")) << j["calibration"].dump();
     EXPECT_EQ(j["calibration"]["channels"].size(), 3u) << j["calibration"].dump();
+    ASSERT_EQ(j["saturated"].size(), 1u) << j["saturated"].dump();
+    EXPECT_EQ(j["saturated"][0]["channel"], "accel_z");
+    EXPECT_EQ(j["saturated"][0]["rows"], 5);
+    EXPECT_NEAR(j["saturated"][0]["first_t_s"].get<double>(), 100.1, 0.5);  // the 100th row, at 1 s per row
     // Channels not selected are not reported; the stuck one selected alone leaves nothing to compare.
     const RunResult gyro = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--channel", "gyro"}, dir.path());
     ASSERT_EQ(gyro.exit_code, 0) << gyro.output;
