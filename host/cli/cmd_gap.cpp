@@ -238,14 +238,15 @@ void register_gap(CLI::App& app) {
                   "gap); off by default, as gap-eval scores it");
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: verdict, explanations, paths, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
-                  "not_identifiable, not_tried, calibration, timing; stability with --stability)");
+                  "not_identifiable, not_tried, constant_channels, saturated, given, calibration, timing; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->add_option("--stability", o->stability,
                     "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness; "
                     "N times the diagnosis's time)")
         ->check(CLI::Range(0, 1000));
     cmd->add_option("--model-out", o->model_out,
-                    "Write the final model (calibrated base and the effects added) as a model file for driftlab hil --model");
+                    "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as a model file "
+                    "for driftlab hil --model and gap --model");
     cmd->callback([o] { run(*o); });
 }
 
