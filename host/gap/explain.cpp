@@ -621,8 +621,8 @@ struct Search {
     // The added effects (accepted[from...]) estimated again on the whole log once the held-out part has judged them:
     // on each channel its mean shapes one by one with eq. 1 beside the others, then its Gaussian processes together
     // on what the shapes leave, and the white noise matched again. The interleaved fitting part sees a slow
-    // process only inside its blocks of 150-300 outputs; the whole log has about twice the data and its lowest
-    // frequencies. Spikes and a DNL table keep the fitting part's values.
+    // process only inside its blocks of one or two tenths of the log (the forecast part only before its end); the
+    // whole log has all the data and its lowest frequencies. Spikes and a DNL table keep the fitting part's values.
     void estimate_on_whole_log(ExplainResult& r, std::size_t from) const {
         r.whole_log_model = r.model;
         GapModel& m = r.whole_log_model;
