@@ -6,13 +6,13 @@
 #include <complex>
 
 #include <Eigen/Dense>
-#include <unsupported/Eigen/FFT>
 
 #include "host/gap/candidates.hpp"
 #include "host/gap/mean_shapes.hpp"
 #include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
+#include "host/util/thread_fft.hpp"
 
 namespace driftlab::host::gap {
 
@@ -51,7 +51,7 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
         d[t] = r[t + 1] - r[t];
         d[m - 1 - t] = -d[t];
     }
-    Eigen::FFT<double> fft;
+    Eigen::FFT<double>& fft = thread_fft();
     std::vector<std::complex<double>> spec;
     fft.fwd(spec, d);
     double kappa = 0.0;

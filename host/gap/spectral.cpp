@@ -6,9 +6,8 @@
 #include <limits>
 #include <numbers>
 
-#include <unsupported/Eigen/FFT>
-
 #include "host/stats/autocorrelation.hpp"
+#include "host/util/thread_fft.hpp"
 
 namespace driftlab::host::gap {
 
@@ -64,7 +63,7 @@ BandSpectrum band_spectrum(const std::vector<double>& y) {
         w[i] = e[i] * (0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / n));
     BandSpectrum s;
     s.length = e.size();
-    Eigen::FFT<double> fft;
+    Eigen::FFT<double>& fft = thread_fft();
     fft.fwd(s.bins, w);
     for_each_octave_band(s.bins.size(), 2, [&](std::size_t, std::size_t lo, std::size_t hi) {
         double sum = 0.0;

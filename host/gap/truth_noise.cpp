@@ -2,9 +2,8 @@
 #include <cmath>
 #include <complex>
 
-#include <unsupported/Eigen/FFT>
-
 #include "host/gap/truth.hpp"
+#include "host/util/thread_fft.hpp"
 #include "sim/model/rng.hpp"
 
 namespace driftlab::host::gap {
@@ -31,7 +30,7 @@ std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double 
     while (nfft < 2 * n) nfft <<= 1;
     std::vector<double> white(nfft);
     for (double& w : white) w = rng.normal();
-    Eigen::FFT<double> fft;
+    Eigen::FFT<double>& fft = thread_fft();
     std::vector<std::complex<double>> spec;
     fft.fwd(spec, white);
     spec[0] = 0.0;

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include <unsupported/Eigen/FFT>
+#include "host/util/thread_fft.hpp"
 
 namespace driftlab::host::gap {
 
@@ -54,7 +54,7 @@ AbsorbedColumns absorbed_columns(const Eigen::MatrixXd& x, const PartPeriodogram
     const Eigen::MatrixXd q = orthonormal_basis(x);
     AbsorbedColumns a;
     a.differences = static_cast<std::size_t>(samples - 1);
-    Eigen::FFT<double> fft;
+    Eigen::FFT<double>& fft = thread_fft();
     for (Eigen::Index k = 0; k < q.cols(); ++k) {
         std::vector<double> dq(p.length);
         for (std::size_t t = 0; t < p.length; ++t) {
@@ -100,7 +100,7 @@ PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector
     if (p.count < kMinDifferences) throw std::invalid_argument("part_periodogram: too few differences in the part");
     double h2 = 0.0;
     for (double v : h) h2 += v * v;
-    Eigen::FFT<double> fft;
+    Eigen::FFT<double>& fft = thread_fft();
     std::vector<std::complex<double>> spec;
     fft.fwd(spec, d);
     for (std::size_t j = 1; 2 * j < p.length; ++j) p.power.push_back(std::norm(spec[j]) / h2);
@@ -208,7 +208,7 @@ std::vector<double> expected_periodogram(const OutputSpectrum& model, const std:
     std::vector<double> b = differenced_autocovariance(model, floor_acov, p.length);
     for (std::size_t tau = 0; tau < p.length; ++tau) b[tau] *= p.mask_overlap[tau];
     // sum over tau = -(n-1)..n-1 of b(|tau|) e^{-i w tau} = 2 Re FFT(b)_j - b(0).
-    Eigen::FFT<double> fft;
+    Eigen::FFT<double>& fft = thread_fft();
     std::vector<std::complex<double>> spec;
     fft.fwd(spec, b);
     std::vector<double> out(p.power.size());

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <complex>
 
-#include <unsupported/Eigen/FFT>
+#include "host/util/thread_fft.hpp"
 
 namespace driftlab::host::stats {
 
@@ -17,7 +17,7 @@ std::vector<double> biased_autocovariance(const std::vector<double>& w, std::siz
     while (size < 2 * n) size <<= 1;
     std::vector<double> padded(size, 0.0);
     std::copy(w.begin(), w.end(), padded.begin());
-    Eigen::FFT<double> fft;
+    Eigen::FFT<double>& fft = thread_fft();
     std::vector<std::complex<double>> spectrum;
     fft.fwd(spectrum, padded);
     for (auto& x : spectrum) x = std::norm(x);
