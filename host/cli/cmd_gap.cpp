@@ -93,13 +93,16 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
         std::printf("diffuse gap: the held-out score %.2f exceeds its bound %.2f with no cell located (many cells a little "
                     "off)%s\n", r.gap_before_heldout, r.gap_bound_before,
                     options.search_diffuse ? "; candidates searched on it" : "; --search-diffuse tries the candidates on it");
-    for (std::size_t i = 0; i < r.located.size() && i < 15; ++i) {
+    constexpr std::size_t kCellsShown = 15;  // the largest |z| first; a terminal, not a table
+    for (std::size_t i = 0; i < r.located.size() && i < kCellsShown; ++i) {
         const auto& l = r.located[i];
         const auto& c = r.layout[l.index];
         std::printf("  %-5s %-16s %-28s %-7s z %7.1f  %s %.3g\n", c.statistic.c_str(), c.channel.c_str(), c.cell.c_str(),
                     gap::segment_name(c.segment), l.z, std::isnan(l.ratio) ? "diff" : "ratio",
                     std::isnan(l.ratio) ? l.difference : l.ratio);
     }
+    if (r.located.size() > kCellsShown)
+        std::printf("  ... and %zu more with smaller |z| (--json and --report list them)\n", r.located.size() - kCellsShown);
     if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) std::printf("base: %s\n", given.c_str());
     if (!r.accepted.empty()) std::printf("explanation (effects added in order; parameters estimated on the whole log beside them all):\n");
     for (const auto& e : r.accepted) {

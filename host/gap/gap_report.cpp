@@ -249,8 +249,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << ", beyond the practical margin)\n\n";
     md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
-    for (std::size_t i = 0; i < r.located.size() && i < 30; ++i) {
-        const auto& l = r.located[i];
+    for (const auto& l : r.located) {
         const auto& c = r.layout[l.index];
         md << "| " << c.statistic << " | " << c.channel << " | " << c.cell << " | " << segment_name(c.segment) << " | "
            << fixed(l.z, 1) << " | " << (std::isnan(l.ratio) ? "diff " + fixed(l.difference, 3) : "ratio " + fixed(l.ratio, 3))

@@ -54,9 +54,25 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("unit.toml"), "--duration", "1500", "--seed", "3", "-o", dir.file("unit.csv")},
                            dir.path()).exit_code, 0);
     const RunResult gap = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "16", "--model-out", dir.file("fitted.toml"),
-                                        "--stability", "3"}, dir.path());
+                                        "--stability", "3", "--report", dir.file("report")}, dir.path());
     ASSERT_EQ(gap.exit_code, 0) << gap.output;
     EXPECT_NE(gap.output.find("verdict: ambient_cycle"), std::string::npos) << gap.output;
+    // The cycle locates more cells than the terminal lists: it shows the 15 largest and counts the rest; the report
+    // lists every one.
+    const std::size_t at = gap.output.find("located cells (|z| > ");
+    ASSERT_NE(at, std::string::npos) << gap.output;
+    const std::size_t located = std::stoul(gap.output.substr(gap.output.find("): ", at) + 3));
+    ASSERT_GT(located, 15u) << gap.output;
+    EXPECT_NE(gap.output.find("  ... and " + std::to_string(located - 15) + " more with smaller |z|"), std::string::npos) << gap.output;
+    {
+        std::ifstream report(dir.file("report/gap.md"));
+        const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+        const std::size_t table = md.find("## Where: located cells");
+        ASSERT_NE(table, std::string::npos) << md.substr(0, 600);
+        std::size_t rows = 0;
+        for (std::size_t line = md.find("\n| ", table); line < md.find("cells located before", table); line = md.find("\n| ", line + 1)) ++rows;
+        EXPECT_EQ(rows, located + 1) << md.substr(table, 3000);  // and the header row
+    }
     // A cycle this clear is read again in every log the fitted model makes.
     EXPECT_NE(gap.output.find("of 3 logs simulated from the estimated model and diagnosed alike, 3 (100 %) are called ambient_cycle"),
               std::string::npos) << gap.output;
