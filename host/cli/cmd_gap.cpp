@@ -186,13 +186,17 @@ void run(const GapCommandOptions& o) {
     if (o.json) {
         nlohmann::json j = gap::gap_to_json(r, options);
         if (stability.logs > 0)
-            j["stability"] = {{"logs", stability.logs}, {"verdicts", stability.verdicts},
-                              {"same", static_cast<double>(stability.same) / static_cast<double>(stability.logs)}};
+            j["stability"] = gap::stability_to_json(stability);
         std::cout << j.dump(2) << "\n";
         for (const std::string& n : model_notes) std::fprintf(stderr, "driftlab gap: model file note: %s\n", n.c_str());
     } else {
         print_text(r, options);
-        if (stability.logs > 0) std::printf("verdict stability: %s\n", gap::stability_sentence(stability, r.verdict).c_str());
+        if (stability.logs > 0) {
+            std::printf("verdict stability: %s\n", gap::stability_sentence(stability, r.verdict).c_str());
+            const std::vector<std::string> spread = gap::spread_lines(stability);
+            if (!spread.empty()) std::printf("estimates on those logs (middle 68 %%, where each added the effect again):\n");
+            for (const std::string& line : spread) std::printf("  %s\n", line.c_str());
+        }
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
         if (!o.model_out.empty()) std::printf("model file: %s (driftlab hil --model %s simulates this unit)\n", o.model_out.c_str(), o.model_out.c_str());
         for (const std::string& n : model_notes) std::printf("model file note: %s\n", n.c_str());
@@ -244,8 +248,8 @@ void register_gap(CLI::App& app) {
                   "not_identifiable, not_tried, constant_channels, saturated, given, calibration, timing; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->add_option("--stability", o->stability,
-                    "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness; "
-                    "N times the diagnosis's time)")
+                    "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness) "
+                    "and how the added effects' estimates scatter over them (N times the diagnosis's time)")
         ->check(CLI::Range(0, 1000));
     cmd->add_option("--model-out", o->model_out,
                     "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as a model file "

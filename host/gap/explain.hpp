@@ -85,6 +85,9 @@ struct Explanation {
     std::vector<std::pair<std::string, double>> whole_log_params;
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
     std::string settle;             ///< the experiment that would separate them
+
+    /// The parameters the diagnosis reports: the whole log's where there are, else the fitting part's.
+    const std::vector<std::pair<std::string, double>>& estimate() const { return whole_log_params.empty() ? params : whole_log_params; }
 };
 
 /// The effects of the model the log is diagnosed on (`gap --model FILE`), in the base before anything is located:

@@ -161,4 +161,16 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     return j;
 }
 
+nlohmann::json stability_to_json(const VerdictStability& s) {
+    using nlohmann::json;
+    json params = json::array();
+    for (const ParameterSpread& p : s.params) {
+        params.push_back({{"effect", p.effect}, {"channel", p.channel}, {"param", p.param}, {"estimate", report::json_number(p.estimate)},
+                          {"values", report::json_array(p.values)}, {"median", report::json_number(p.quantile(0.5))}, {"p16", report::json_number(p.quantile(0.16))},
+                          {"p84", report::json_number(p.quantile(0.84))}});
+    }
+    return {{"logs", s.logs}, {"verdicts", s.verdicts}, {"same", s.logs ? static_cast<double>(s.same) / static_cast<double>(s.logs) : 0.0},
+            {"params", params}};
+}
+
 }  // namespace driftlab::host::gap

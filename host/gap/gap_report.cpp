@@ -211,7 +211,13 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     std::ostringstream md;
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
-    if (stability) md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
+    if (stability) {
+        md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
+        const std::vector<std::string> spread = spread_lines(*stability);
+        if (!spread.empty()) md << "Estimates on those logs (the middle 68 %, where each added the effect again):\n\n";
+        for (const std::string& line : spread) md << "- " << line << "\n";
+        if (!spread.empty()) md << "\n";
+    }
     if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
     if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 
 #include "host/gap/sim_chain.hpp"
 
@@ -11,6 +12,8 @@ namespace driftlab::host::gap {
 VerdictStability verdict_stability(const GapResult& result, const LogData& log, const sim::SimModel& unit, const GapOptions& options,
                                    std::size_t logs) {
     VerdictStability out;
+    for (const Explanation& e : result.accepted)
+        for (const auto& [key, value] : e.estimate()) out.params.push_back({e.effect, e.channel, key, value, {}});
     GapOptions quiet = options;
     quiet.progress = nullptr;
     const bool any_raw = any_raw_codes(result);
@@ -30,11 +33,57 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
             if (result.raw_codes[c]) copy.optional_columns[std::string("raw_") + kChannelNames[c]] = raw[c];
         }
         const GapResult r = diagnose(copy, unit, quiet);
+        for (ParameterSpread& spread : out.params)
+            for (const Explanation& e : r.accepted)
+                if (e.effect == spread.effect && e.channel == spread.channel)
+                    for (const auto& [key, value] : e.estimate())
+                        if (key == spread.param) spread.values.push_back(value);
         ++out.verdicts[r.verdict];
         out.same += r.verdict == result.verdict;
         ++out.logs;
     }
+    for (ParameterSpread& spread : out.params) std::sort(spread.values.begin(), spread.values.end());
     return out;
+}
+
+double ParameterSpread::quantile(double q) const {
+    if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+    const double pos = q * static_cast<double>(values.size() - 1);
+    const auto lo = static_cast<std::size_t>(pos);
+    const std::size_t hi = std::min(lo + 1, values.size() - 1);
+    return values[lo] + (pos - static_cast<double>(lo)) * (values[hi] - values[lo]);
+}
+
+std::vector<std::string> spread_lines(const VerdictStability& s) {
+    std::vector<std::string> lines;
+    for (std::size_t k = 0; k < s.params.size();) {
+        // One line per added effect: its parameters are consecutive and were found again in the same logs.
+        std::size_t end = k;
+        while (end < s.params.size() && s.params[end].effect == s.params[k].effect && s.params[end].channel == s.params[k].channel) ++end;
+        const ParameterSpread& first = s.params[k];
+        std::string line = first.effect + " on " + first.channel;
+        if (first.values.empty()) {
+            line += ": added again in none of the " + std::to_string(s.logs) + " logs (";
+            for (std::size_t i = k; i < end; ++i) {
+                char text[120];
+                std::snprintf(text, sizeof text, "%s%s %.4g", i > k ? ", " : "", s.params[i].param.c_str(), s.params[i].estimate);
+                line += text;
+            }
+            lines.push_back(line + ")");
+        } else {
+            line += " (" + std::to_string(first.values.size()) + " of " + std::to_string(s.logs) + " logs):";
+            for (std::size_t i = k; i < end; ++i) {
+                const ParameterSpread& p = s.params[i];
+                char text[200];
+                std::snprintf(text, sizeof text, "%s %s %.4g -> %.3g to %.3g (median %.3g)", i > k ? ";" : "", p.param.c_str(), p.estimate,
+                              p.quantile(0.16), p.quantile(0.84), p.quantile(0.5));
+                line += text;
+            }
+            lines.push_back(line);
+        }
+        k = end;
+    }
+    return lines;
 }
 
 std::string stability_sentence(const VerdictStability& s, const std::string& verdict) {

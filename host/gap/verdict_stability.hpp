@@ -10,15 +10,27 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "host/gap/diagnose.hpp"
 
 namespace driftlab::host::gap {
 
+/// One estimated parameter of an added effect against its estimates on the simulated logs that added the same effect
+/// on the same channel: where the estimator scatters, and where it centres, when the estimated model is the truth
+/// (a parametric bootstrap of the estimate, conditional on the effect being found again).
+struct ParameterSpread {
+    std::string effect, channel, param;
+    double estimate = 0.0;        ///< the log's own value (estimated on the whole log)
+    std::vector<double> values;   ///< the simulated logs' values, sorted
+    double quantile(double q) const;  ///< linear between order statistics; NaN without values
+};
+
 struct VerdictStability {
     std::size_t logs = 0;                           ///< simulated logs diagnosed
     std::map<std::string, std::size_t> verdicts;    ///< their verdicts, counted
     std::size_t same = 0;                           ///< how many got the log's own verdict
+    std::vector<ParameterSpread> params;            ///< per parameter of each added effect, in the explanation's order
 };
 
 /// Diagnoses `logs` logs simulated from `result.whole_log_model` (the unit as the diagnosis of `log` on `unit` under
@@ -30,5 +42,9 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
 
 /// The result in words the terminal and the report share: "of N logs ... k (p %) are called V; v1 n1 v2 n2".
 std::string stability_sentence(const VerdictStability& stability, const std::string& verdict);
+
+/// The middle 68 % of the simulated logs' estimates (about one standard deviation either side), one line per added
+/// effect: "gauss_markov on gyro (19 of 20 logs): sigma_dps 0.02525 -> 0.0213 to 0.0291 (median 0.0248); ...".
+std::vector<std::string> spread_lines(const VerdictStability& stability);
 
 }  // namespace driftlab::host::gap

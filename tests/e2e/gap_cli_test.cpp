@@ -3,6 +3,7 @@
 // come out with no gap. A plain recording (another logger's table) runs through its column mapping. And bad input
 // is refused with a message naming the file.
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -76,6 +77,17 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     // A cycle this clear is read again in every log the fitted model makes.
     EXPECT_NE(gap.output.find("of 3 logs simulated from the estimated model and diagnosed alike, 3 (100 %) are called ambient_cycle"),
               std::string::npos) << gap.output;
+    // Each of them estimates the cycle's period again near the model's, the unit's 400 s.
+    const std::size_t spread = gap.output.find("ambient_cycle on gyro (3 of 3 logs): amplitude_dps ");
+    ASSERT_NE(spread, std::string::npos) << gap.output;
+    double estimate = 0.0, low = 0.0, high = 0.0, median = 0.0;
+    ASSERT_EQ(std::sscanf(gap.output.c_str() + gap.output.find("period_s ", spread), "period_s %lf -> %lf to %lf (median %lf)", &estimate, &low,
+                          &high, &median), 4) << gap.output;
+    EXPECT_NEAR(estimate, 400.0, 20.0);
+    EXPECT_LE(low, median);
+    EXPECT_LE(median, high);
+    EXPECT_NEAR(low, 400.0, 20.0);
+    EXPECT_NEAR(high, 400.0, 20.0);
     EXPECT_NE(gap.output.find("model file: " + dir.file("fitted.toml")), std::string::npos) << gap.output;
     const sim::SimModel fitted = sim::load_model_file(dir.file("fitted.toml"));
     const sim::SimModel paper = sim::paper_model();
