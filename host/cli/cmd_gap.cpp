@@ -180,6 +180,11 @@ void run(const GapCommandOptions& o) {
                               "channels, the log's smoothing, effects added:" + (effects.empty() ? " none" : effects);
         if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) comment += "\n" + given;
         for (const std::string& n : m.notes) comment += "\nnote: " + n;
+        if (stability.logs > 0) {
+            comment += "\nverdict stability: " + gap::stability_sentence(stability, r.verdict) +
+                       "\nestimates on those logs (middle 68 %, where each added the effect again):";
+            for (const std::string& line : gap::spread_lines(stability)) comment += "\n  " + line;
+        }
         write_output_file(o.model_out, sim::write_model(m.model, comment), "model file");
         model_notes = m.notes;
     }

@@ -89,6 +89,12 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     EXPECT_NEAR(low, 400.0, 20.0);
     EXPECT_NEAR(high, 400.0, 20.0);
     EXPECT_NE(gap.output.find("model file: " + dir.file("fitted.toml")), std::string::npos) << gap.output;
+    {
+        // The file says how sure its estimates are, when --stability ran.
+        std::ifstream file(dir.file("fitted.toml"));
+        const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        EXPECT_NE(text.find("#   ambient_cycle on gyro (3 of 3 logs): amplitude_dps "), std::string::npos) << text.substr(0, 1200);
+    }
     const sim::SimModel fitted = sim::load_model_file(dir.file("fitted.toml"));
     const sim::SimModel paper = sim::paper_model();
     ASSERT_FALSE(fitted.effects.empty());
