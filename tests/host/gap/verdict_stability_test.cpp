@@ -1,0 +1,36 @@
+// The estimates' spread over the stability logs: sample quantiles (linear between order statistics, the
+// "type 7" definition) and the lines the terminal, the report and the model file share.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "host/gap/verdict_stability.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+TEST(ParameterSpread, QuantilesInterpolateBetweenOrderStatistics) {
+    ParameterSpread p{"gauss_markov", "gyro", "tau_s", 20.0, {10.0, 20.0, 30.0, 40.0, 50.0}};
+    EXPECT_DOUBLE_EQ(p.quantile(0.0), 10.0);
+    EXPECT_DOUBLE_EQ(p.quantile(1.0), 50.0);
+    EXPECT_DOUBLE_EQ(p.quantile(0.5), 30.0);
+    EXPECT_DOUBLE_EQ(p.quantile(0.16), 16.4);  // position 0.64 between 10 and 20
+    EXPECT_DOUBLE_EQ(p.quantile(0.84), 43.6);  // position 3.36 between 40 and 50
+    EXPECT_TRUE(std::isnan(ParameterSpread{}.quantile(0.5)));
+}
+
+TEST(ParameterSpread, EachAddedEffectGetsOneLineAndOneNotFoundAgainSaysSo) {
+    VerdictStability s;
+    s.logs = 4;
+    s.params = {{"gauss_markov", "gyro", "sigma_dps", 0.02, {0.01, 0.02, 0.03}},
+                {"gauss_markov", "gyro", "tau_s", 20.0, {10.0, 20.0, 30.0}},
+                {"thermal_second_tc", "gyro", "c3_dps", -0.3, {}},
+                {"thermal_second_tc", "gyro", "t2_s", 12000.0, {}}};
+    const std::vector<std::string> lines = spread_lines(s);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0], "gauss_markov on gyro (3 of 4 logs): sigma_dps 0.02 -> 0.0132 to 0.0268 (median 0.02); tau_s 20 -> 13.2 to 26.8 (median 20)");
+    EXPECT_EQ(lines[1], "thermal_second_tc on gyro: added again in none of the 4 logs (c3_dps -0.3, t2_s 1.2e+04)");
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap
