@@ -25,6 +25,7 @@
 #include "host/fit/series.hpp"
 #include "host/log/numeric_table.hpp"
 #include "host/log/log_reader.hpp"
+#include "host/log/log_window.hpp"
 #include "host/util/error.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
@@ -50,6 +51,8 @@ struct GapCommandOptions {
     std::vector<std::string> mappings;  ///< plain recordings: CHANNEL=COLUMN:LSB
     double tau0_s = 0.0;                ///< plain recordings: the raw sample period
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
+    double from_s = -INFINITY;          ///< rows kept: from_s <= t_s <= to_s
+    double to_s = INFINITY;
 };
 
 struct Loaded {
@@ -57,14 +60,21 @@ struct Loaded {
     sim::SimModel unit;
 };
 
+// The rows --from/--to keep (all without them).
+LogData in_window(const GapCommandOptions& o, LogData log) {
+    if (o.from_s == -INFINITY && o.to_s == INFINITY) return log;
+    if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
+    return rows_between(log, o.from_s, o.to_s);
+}
+
 // A canonical log as it is, with the unit of --model or the paper's; a plain table through its column mappings
-// (never guessed), with a unit whose codes are the columns' LSBs.
+// (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to.
 Loaded load(const GapCommandOptions& o) {
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     if (fit::is_canonical_log(o.path)) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        return {read_log(o.path), unit};
+        return {in_window(o, read_log(o.path)), unit};
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -75,7 +85,7 @@ Loaded load(const GapCommandOptions& o) {
     how.block = o.block;
     LogData log = gap::log_from_table(read_numeric_table(o.path), how);
     sim::SimModel scaled = gap::unit_of_recording(unit, how, log);
-    return {std::move(log), std::move(scaled)};
+    return {in_window(o, std::move(log)), std::move(scaled)};
 }
 
 void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
@@ -238,6 +248,8 @@ void register_gap(CLI::App& app) {
         ->check(CLI::Range(1, 100000));
     cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
                     "the file's values, mean shapes refitted to the log; default: the paper's unit");
+    cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start");
+    cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end");
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)");

@@ -73,18 +73,19 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
     return out;
 }
 
-// The analysed channels whose rows the log's sat_flags column flags, with how many and the first.
+// The analysed channels whose rows the log's sat_flags column flags, with how many, the first and the last.
 std::vector<SaturatedChannel> saturated_channels(const LogData& log, const std::array<bool, kChannelCount>& channels) {
     std::vector<SaturatedChannel> out;
     const auto column = log.optional_columns.find("sat_flags");
     if (column == log.optional_columns.end()) return out;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!channels[c]) continue;
-        SaturatedChannel s{static_cast<Channel>(c), 0, 0.0};
+        SaturatedChannel s{static_cast<Channel>(c), 0, 0.0, 0.0};
         for (std::size_t k = 0; k < column->second.size() && k < log.size(); ++k) {
             const double flags = column->second[k];
             if (!(flags >= 0.0) || ((static_cast<unsigned>(flags) >> c) & 1u) == 0) continue;
             if (s.rows++ == 0) s.first_t_s = log.t_s[k];
+            s.last_t_s = log.t_s[k];
         }
         if (s.rows > 0) out.push_back(s);
     }

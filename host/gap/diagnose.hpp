@@ -60,6 +60,7 @@ struct SaturatedChannel {
     Channel channel = Channel::gyro;
     std::size_t rows = 0;
     double first_t_s = 0.0;  ///< the first such row's time
+    double last_t_s = 0.0;   ///< the last one's
 };
 
 struct GapResult {

@@ -111,7 +111,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     json saturated = json::array();
     for (const auto& s : r.saturated)
         saturated.push_back({{"channel", kChannelNames[channel_index(s.channel)]}, {"rows", s.rows},
-                             {"first_t_s", report::json_number(s.first_t_s)}});
+                             {"first_t_s", report::json_number(s.first_t_s)}, {"last_t_s", report::json_number(s.last_t_s)}});
     j["saturated"] = saturated;
     json steps = json::array();
     for (const auto& s : r.level_steps) {

@@ -199,10 +199,11 @@ std::string saturated_channels_sentence(const GapResult& r) {
     std::string out;
     for (const auto& s : r.saturated)
         out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(s.channel)]) + " in " + std::to_string(s.rows) +
-               (s.rows == 1 ? " row" : " rows") + " from t = " + fixed(s.first_t_s, 1) + " s";
+               (s.rows == 1 ? " row at t = " + fixed(s.first_t_s, 1) + " s" : " rows from t = " + fixed(s.first_t_s, 1) + " s to " + fixed(s.last_t_s, 1) + " s");
     if (out.empty()) return "";
     return out + ": a conversion reached code 0 or the top code there (the firmware's sat_flags); the simulator clips only "
-                 "where its own noise reaches a rail, so a shock, or a rail the unit sits near, can read as a gap";
+                 "where its own noise reaches a rail, so a shock, or a rail the unit sits near, can read as a gap (--from and --to "
+                 "leave a disturbed start or end out)";
 }
 
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,

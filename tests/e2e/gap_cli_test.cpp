@@ -230,7 +230,7 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     ASSERT_EQ(text.exit_code, 0) << text.output;
     EXPECT_NE(text.output.find("not analysed: accel_x at 512 counts in every row: a channel that never changes"), std::string::npos)
         << text.output;
-    EXPECT_NE(text.output.find("saturated: accel_z in 5 rows from t = "), std::string::npos) << text.output;
+    EXPECT_NE(text.output.find("saturated: accel_z in 5 rows from t = 100.1 s to 104.1 s"), std::string::npos) << text.output;
     std::ifstream report(dir.file("report/gap.md"));
     const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
     EXPECT_NE(md.find("Not analysed: accel_x at 512 counts in every row"), std::string::npos) << md.substr(0, 600);
@@ -247,6 +247,15 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     EXPECT_EQ(j["saturated"][0]["channel"], "accel_z");
     EXPECT_EQ(j["saturated"][0]["rows"], 5);
     EXPECT_NEAR(j["saturated"][0]["first_t_s"].get<double>(), 100.1, 0.5);  // the 100th row, at 1 s per row
+    EXPECT_NEAR(j["saturated"][0]["last_t_s"].get<double>(), 104.1, 0.5);
+    // The user leaves the disturbed start out: from 110 s on nothing is flagged.
+    const RunResult later = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--from", "110"}, dir.path());
+    ASSERT_EQ(later.exit_code, 0) << later.output;
+    EXPECT_TRUE(nlohmann::json::parse(later.output)["saturated"].empty()) << later.output;
+    const RunResult outside = run_driftlab({"gap", stuck, "--from", "500", "--to", "600"}, dir.path());
+    EXPECT_EQ(outside.exit_code, 3) << outside.output;
+    EXPECT_NE(outside.output.find("stuck.csv: no row lies between 500 s and 600 s (its rows run from "), std::string::npos) << outside.output;
+    EXPECT_EQ(run_driftlab({"gap", stuck, "--from", "300", "--to", "200"}, dir.path()).exit_code, 2);
     // Channels not selected are not reported; the stuck one selected alone leaves nothing to compare.
     const RunResult gyro = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--channel", "gyro"}, dir.path());
     ASSERT_EQ(gyro.exit_code, 0) << gyro.output;
