@@ -186,7 +186,10 @@ void run(const GapCommandOptions& o) {
         const gap::ModelOut m = gap::model_out(r.whole_log_model, r.channels, gap::any_raw_codes(r), o.path);
         std::string effects;
         for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
-        std::string comment = "driftlab gap " + o.path + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
+        char window[80] = "";
+        if (log.size() > 0 && (o.from_s != -INFINITY || o.to_s != INFINITY))
+            std::snprintf(window, sizeof window, " (rows from %g s to %g s)", log.t_s.front(), log.t_s.back());
+        std::string comment = "driftlab gap " + o.path + window + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
                               "channels, the log's smoothing, effects added:" + (effects.empty() ? " none" : effects);
         if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) comment += "\n" + given;
         for (const std::string& n : m.notes) comment += "\nnote: " + n;

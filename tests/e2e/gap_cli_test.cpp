@@ -249,9 +249,16 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     EXPECT_NEAR(j["saturated"][0]["first_t_s"].get<double>(), 100.1, 0.5);  // the 100th row, at 1 s per row
     EXPECT_NEAR(j["saturated"][0]["last_t_s"].get<double>(), 104.1, 0.5);
     // The user leaves the disturbed start out: from 110 s on nothing is flagged.
-    const RunResult later = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--from", "110"}, dir.path());
+    const RunResult later = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--from", "110", "--model-out",
+                                          dir.file("later.toml")}, dir.path());
     ASSERT_EQ(later.exit_code, 0) << later.output;
     EXPECT_TRUE(nlohmann::json::parse(later.output)["saturated"].empty()) << later.output;
+    {
+        std::ifstream file(dir.file("later.toml"));
+        std::string first;
+        std::getline(file, first);
+        EXPECT_EQ(first.rfind("# driftlab gap " + stuck + " (rows from 110.098 s to 400.098 s): verdict ", 0), 0u) << first;  // the rows it came from
+    }
     const RunResult outside = run_driftlab({"gap", stuck, "--from", "500", "--to", "600"}, dir.path());
     EXPECT_EQ(outside.exit_code, 3) << outside.output;
     EXPECT_NE(outside.output.find("stuck.csv: no row lies between 500 s and 600 s (its rows run from "), std::string::npos) << outside.output;
