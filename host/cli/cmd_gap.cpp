@@ -53,6 +53,8 @@ struct GapCommandOptions {
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
     double from_s = -INFINITY;          ///< rows kept: from_s <= t_s <= to_s
     double to_s = INFINITY;
+
+    bool windowed() const { return from_s != -INFINITY || to_s != INFINITY; }
 };
 
 struct Loaded {
@@ -62,7 +64,7 @@ struct Loaded {
 
 // The rows --from/--to keep (all without them).
 LogData in_window(const GapCommandOptions& o, LogData log) {
-    if (o.from_s == -INFINITY && o.to_s == INFINITY) return log;
+    if (!o.windowed()) return log;
     if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
     return rows_between(log, o.from_s, o.to_s);
 }
@@ -187,17 +189,14 @@ void run(const GapCommandOptions& o) {
         std::string effects;
         for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
         char window[80] = "";
-        if (log.size() > 0 && (o.from_s != -INFINITY || o.to_s != INFINITY))
+        if (o.windowed())  // the window holds rows, or the log was refused
             std::snprintf(window, sizeof window, " (rows from %g s to %g s)", log.t_s.front(), log.t_s.back());
         std::string comment = "driftlab gap " + o.path + window + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
                               "channels, the log's smoothing, effects added:" + (effects.empty() ? " none" : effects);
         if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) comment += "\n" + given;
         for (const std::string& n : m.notes) comment += "\nnote: " + n;
-        if (stability.logs > 0) {
-            comment += "\nverdict stability: " + gap::stability_sentence(stability, r.verdict) +
-                       "\nestimates on those logs (middle 68 %, where each added the effect again):";
-            for (const std::string& line : gap::spread_lines(stability)) comment += "\n  " + line;
-        }
+        if (stability.logs > 0)
+            for (const std::string& line : gap::stability_text(stability, r.verdict)) comment += "\n" + line;
         write_output_file(o.model_out, sim::write_model(m.model, comment), "model file");
         model_notes = m.notes;
     }
@@ -209,12 +208,8 @@ void run(const GapCommandOptions& o) {
         for (const std::string& n : model_notes) std::fprintf(stderr, "driftlab gap: model file note: %s\n", n.c_str());
     } else {
         print_text(r, options);
-        if (stability.logs > 0) {
-            std::printf("verdict stability: %s\n", gap::stability_sentence(stability, r.verdict).c_str());
-            const std::vector<std::string> spread = gap::spread_lines(stability);
-            if (!spread.empty()) std::printf("estimates on those logs (middle 68 %%, where each added the effect again):\n");
-            for (const std::string& line : spread) std::printf("  %s\n", line.c_str());
-        }
+        if (stability.logs > 0)
+            for (const std::string& line : gap::stability_text(stability, r.verdict)) std::printf("%s\n", line.c_str());
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
         if (!o.model_out.empty()) std::printf("model file: %s (driftlab hil --model %s simulates this unit)\n", o.model_out.c_str(), o.model_out.c_str());
         for (const std::string& n : model_notes) std::printf("model file note: %s\n", n.c_str());

@@ -86,6 +86,14 @@ std::vector<std::string> spread_lines(const VerdictStability& s) {
     return lines;
 }
 
+std::vector<std::string> stability_text(const VerdictStability& s, const std::string& verdict) {
+    std::vector<std::string> text{"verdict stability: " + stability_sentence(s, verdict)};
+    const std::vector<std::string> spread = spread_lines(s);
+    if (!spread.empty()) text.emplace_back(kSpreadHeading);
+    for (const std::string& line : spread) text.push_back("  " + line);
+    return text;
+}
+
 std::string stability_sentence(const VerdictStability& s, const std::string& verdict) {
     char head[200];
     std::snprintf(head, sizeof head, "of %zu logs simulated from the estimated model and diagnosed alike, %zu (%.0f %%) are called %s;", s.logs,

@@ -43,8 +43,15 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
 /// The result in words the terminal and the report share: "of N logs ... k (p %) are called V; v1 n1 v2 n2".
 std::string stability_sentence(const VerdictStability& stability, const std::string& verdict);
 
+/// What introduces spread_lines() wherever they are shown.
+inline constexpr const char* kSpreadHeading = "estimates on those logs (middle 68 %, where each added the effect again):";
+
 /// The middle 68 % of the simulated logs' estimates (about one standard deviation either side), one line per added
 /// effect: "gauss_markov on gyro (19 of 20 logs): sigma_dps 0.02525 -> 0.0213 to 0.0291 (median 0.0248); ...".
 std::vector<std::string> spread_lines(const VerdictStability& stability);
+
+/// The plain-text block the terminal and a model file's comments share: "verdict stability: " and the sentence, then
+/// kSpreadHeading and the spread lines indented by two spaces when there are any.
+std::vector<std::string> stability_text(const VerdictStability& stability, const std::string& verdict);
 
 }  // namespace driftlab::host::gap
