@@ -53,6 +53,7 @@ struct GapCommandOptions {
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
     double from_s = -INFINITY;          ///< rows kept: from_s <= t_s <= to_s
     double to_s = INFINITY;
+    std::vector<std::string> excluded;  ///< FROM:TO stretches left out
 
     bool windowed() const { return from_s != -INFINITY || to_s != INFINITY; }
 };
@@ -62,15 +63,34 @@ struct Loaded {
     sim::SimModel unit;
 };
 
-// The rows --from/--to keep (all without them).
+// --exclude FROM:TO [s since power-on].
+TimeWindow parse_exclude(const std::string& text) {
+    const auto number = [&](const std::string& part) {
+        const std::optional<double> v = finite_number(part);
+        if (!v) throw UsageError("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '" + text + "'");
+        return *v;
+    };
+    const auto colon = text.find(':');
+    if (colon == std::string::npos) number("");  // refused, naming the text
+    const TimeWindow w{number(text.substr(0, colon)), number(text.substr(colon + 1))};
+    if (!(w.from_s < w.to_s)) throw UsageError("--exclude " + text + ": FROM must be before TO");
+    return w;
+}
+
+// The rows --from/--to keep (all without them), less those --exclude leaves out.
 LogData in_window(const GapCommandOptions& o, LogData log) {
-    if (!o.windowed()) return log;
-    if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
-    return rows_between(log, o.from_s, o.to_s);
+    if (o.windowed()) {
+        if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
+        log = rows_between(log, o.from_s, o.to_s);
+    }
+    if (o.excluded.empty()) return log;
+    std::vector<TimeWindow> windows;
+    for (const std::string& text : o.excluded) windows.push_back(parse_exclude(text));
+    return rows_outside(log, windows);
 }
 
 // A canonical log as it is, with the unit of --model or the paper's; a plain table through its column mappings
-// (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to.
+// (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to and --exclude.
 Loaded load(const GapCommandOptions& o) {
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     if (fit::is_canonical_log(o.path)) {
@@ -100,6 +120,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
         std::printf("not analysed: %s\n", constant.c_str());
     if (const std::string saturated = gap::saturated_channels_sentence(r); !saturated.empty())
         std::printf("saturated: %s\n", saturated.c_str());
+    if (const std::string left_out = gap::left_out_sentence(r); !left_out.empty()) std::printf("left out: %s\n", left_out.c_str());
     std::printf("located cells (|z| > %.2f and beyond the margin): %zu\n", r.before.threshold, r.located.size());
     if (r.diffuse_gap)
         std::printf("diffuse gap: the held-out score %.2f exceeds its bound %.2f with no cell located (many cells a little "
@@ -152,6 +173,19 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                     static_cast<unsigned long long>(r.timing.lost_frames), r.timing.gap_events);
 }
 
+// " (rows from X s to Y s, without A s to B s)" where --from/--to or --exclude chose them, else "".
+std::string rows_used(const GapCommandOptions& o, const LogData& log) {
+    if (!o.windowed() && log.cuts.empty()) return "";
+    char text[80];
+    std::snprintf(text, sizeof text, " (rows from %g s to %g s", log.t_s.front(), log.t_s.back());  // rows remain, or it was refused
+    std::string out = text;
+    for (std::size_t i = 0; i < log.cuts.size(); ++i) {
+        std::snprintf(text, sizeof text, "%s%g s to %g s", i == 0 ? ", without " : " and ", log.cuts[i].from_s, log.cuts[i].to_s);
+        out += text;
+    }
+    return out + ")";
+}
+
 void run(const GapCommandOptions& o) {
     const auto [log, unit] = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
@@ -188,10 +222,7 @@ void run(const GapCommandOptions& o) {
         const gap::ModelOut m = gap::model_out(r.whole_log_model, r.channels, gap::any_raw_codes(r), o.path);
         std::string effects;
         for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
-        char window[80] = "";
-        if (o.windowed())  // the window holds rows, or the log was refused
-            std::snprintf(window, sizeof window, " (rows from %g s to %g s)", log.t_s.front(), log.t_s.back());
-        std::string comment = "driftlab gap " + o.path + window + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
+        std::string comment = "driftlab gap " + o.path + rows_used(o, log) + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
                               "channels, the log's smoothing, effects added:" + (effects.empty() ? " none" : effects);
         if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) comment += "\n" + given;
         for (const std::string& n : m.notes) comment += "\nnote: " + n;
@@ -248,6 +279,9 @@ void register_gap(CLI::App& app) {
                     "the file's values, mean shapes refitted to the log; default: the paper's unit");
     cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start");
     cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end");
+    cmd->add_option("--exclude", o->excluded,
+                    "Leave out the rows from FROM to TO [s since power-on], e.g. 600:640: a shock or a bump in the middle of "
+                    "the log; the rows either side are joined (repeat for more)");
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)");
@@ -260,7 +294,7 @@ void register_gap(CLI::App& app) {
                   "gap); off by default, as gap-eval scores it");
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: verdict, explanations, paths, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
-                  "not_identifiable, not_tried, constant_channels, saturated, given, calibration, timing; stability with --stability)");
+                  "not_identifiable, not_tried, constant_channels, saturated, left_out, given, calibration, timing; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->add_option("--stability", o->stability,
                     "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness) "

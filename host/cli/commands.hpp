@@ -2,6 +2,9 @@
 // Help is generated from this table by CLI11, so listed and existing commands cannot disagree.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace driftlab::host::fit {
@@ -37,6 +40,9 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request
 /// double written out in full; these say what is wanted and what was given (number_checks.cpp).
 const CLI::Validator& positive_number();
 const CLI::Validator& non_negative_number();
+
+/// The whole of `text` as a finite number; none for anything else (trailing text, "nan", "inf").
+std::optional<double> finite_number(const std::string& text);
 
 /// --holdout interleaved|forecast, which gap and gap-eval share (defined in cmd_gap.cpp).
 void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout);

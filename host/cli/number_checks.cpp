@@ -10,20 +10,26 @@ namespace {
 CLI::Validator number_check(const char* name, bool zero_allowed) {
     return CLI::Validator(
         [zero_allowed](std::string& text) -> std::string {
-            std::size_t used = 0;
-            double v = NAN;
-            try {
-                v = std::stod(text, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            const bool ok = used == text.size() && std::isfinite(v) && (zero_allowed ? v >= 0.0 : v > 0.0);
+            const std::optional<double> v = finite_number(text);
+            const bool ok = v && (zero_allowed ? *v >= 0.0 : *v > 0.0);
             return ok ? std::string() : std::string("expected a number ") + (zero_allowed ? ">= 0" : "> 0") + ", got '" + text + "'";
         },
         name);
 }
 
 }  // namespace
+
+std::optional<double> finite_number(const std::string& text) {
+    std::size_t used = 0;
+    double v = NAN;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (used != text.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
 
 const CLI::Validator& positive_number() {
     static const CLI::Validator check = number_check("POSITIVE", false);

@@ -22,7 +22,12 @@ TimingCheck check_timing(const LogData& log, double period_s) {
     // Each row is one SAMPLE frame, plus one RAW frame when the log has raw columns: seq steps by that much.
     const std::uint64_t frames_per_row = log.has_column("raw_gyro") ? 2 : 1;
     double sum = 0.0, sum2 = 0.0;
+    std::size_t steps = 0;
+    auto cut = log.cuts.begin();
     for (std::size_t i = 1; i < log.size(); ++i) {
+        while (cut != log.cuts.end() && cut->before_row < i) ++cut;
+        if (cut != log.cuts.end() && cut->before_row == i) continue;  // rows the user left out, not lost
+        ++steps;
         if (log.seq[i] > log.seq[i - 1] + frames_per_row) {
             ++t.sequence_jumps;
             t.lost_frames += log.seq[i] - log.seq[i - 1] - frames_per_row;
@@ -31,7 +36,7 @@ TimingCheck check_timing(const LogData& log, double period_s) {
         sum += d;
         sum2 += d * d;
     }
-    const double n = static_cast<double>(std::max<std::size_t>(1, log.size() - 1));
+    const double n = static_cast<double>(std::max<std::size_t>(1, steps));
     t.dt_jitter_rel = std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
     return t;
 }
@@ -166,6 +171,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         result.given = add_given_effects(result.base, unit.effects, log.t_s, y, result.channels, spread, options.seed);
     }
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
+    result.left_out = log.cuts;
     result.saturated = saturated_channels(log, result.channels);
 
     BatteryOptions battery;

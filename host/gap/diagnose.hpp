@@ -90,7 +90,8 @@ struct GapResult {
     /// the family-wise threshold. The verdict stays "none" unless search_diffuse accepts an effect.
     bool diffuse_gap = false;
     std::string verdict;                 ///< an effect name, "none" or "unexplained" (also when a level step remains)
-    TimingCheck timing;
+    TimingCheck timing;                  ///< without the joins of left_out
+    std::vector<LogCut> left_out;        ///< stretches the user left out of the log (LogData::cuts)
 };
 
 /// Diagnoses `log` against the unit `unit` (front ends and converter). Throws DataError (naming the log) when it

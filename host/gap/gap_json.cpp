@@ -113,6 +113,10 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
         saturated.push_back({{"channel", kChannelNames[channel_index(s.channel)]}, {"rows", s.rows},
                              {"first_t_s", report::json_number(s.first_t_s)}, {"last_t_s", report::json_number(s.last_t_s)}});
     j["saturated"] = saturated;
+    json left_out = json::array();
+    for (const auto& c : r.left_out)
+        left_out.push_back({{"from_s", report::json_number(c.from_s)}, {"to_s", report::json_number(c.to_s)}, {"rows", c.rows}});
+    j["left_out"] = left_out;
     json steps = json::array();
     for (const auto& s : r.level_steps) {
         steps.push_back({{"channel", kChannelNames[channel_index(s.channel)]},

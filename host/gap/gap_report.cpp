@@ -15,6 +15,7 @@
 #include "host/gap/spectral.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
 
 namespace driftlab::host::gap {
@@ -203,7 +204,17 @@ std::string saturated_channels_sentence(const GapResult& r) {
     if (out.empty()) return "";
     return out + ": a conversion reached code 0 or the top code there (the firmware's sat_flags); the simulator clips only "
                  "where its own noise reaches a rail, so a shock, or a rail the unit sits near, can read as a gap (--from and --to "
-                 "leave a disturbed start or end out)";
+                 "leave a disturbed start or end out, --exclude a stretch in the middle)";
+}
+
+std::string left_out_sentence(const GapResult& r) {
+    std::string out;
+    for (const auto& c : r.left_out)
+        out += (out.empty() ? "" : ", ") + std::to_string(c.rows) + (c.rows == 1 ? " row" : " rows") + " from t = " + format_double(c.from_s) +
+               " s to " + format_double(c.to_s) + " s";
+    if (out.empty()) return "";
+    return out + " (--exclude): the rows either side are joined, and the replicates, simulated on the same instants, "
+                 "live through the same time";
 }
 
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,
@@ -221,6 +232,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
     if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
+    if (const std::string left_out = left_out_sentence(r); !left_out.empty()) md << "Left out: " << left_out << ".\n\n";
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)

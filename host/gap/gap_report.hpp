@@ -30,6 +30,9 @@ std::string constant_channels_sentence(const GapResult& result);
 /// The analysed channels with rows flagged saturated, and what that can do to the comparison; "" when none.
 std::string saturated_channels_sentence(const GapResult& result);
 
+/// The stretches --exclude left out, with their rows and why the join is fair; "" when none.
+std::string left_out_sentence(const GapResult& result);
+
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.
 void write_gap_report(const GapResult& result, const LogData& log, const std::string& dir, const GapOptions& options,

@@ -59,6 +59,15 @@ struct LogGap {
     std::string text;
 };
 
+/// Rows a user left out of the middle of a log (`driftlab gap --exclude`): the rows either side are adjacent in
+/// LogData, while the time between them still passes (t_s is unchanged), so the step there is no lost frame.
+struct LogCut {
+    std::size_t before_row = 0;  ///< the index of the first row after the cut
+    double from_s = 0.0;         ///< the window asked for [s since power-on]
+    double to_s = 0.0;
+    std::size_t rows = 0;        ///< rows it held
+};
+
 /// The whole log, column-major so the analysis can take a channel as one vector.
 struct LogData {
     std::string source_name;  ///< file name, for messages
@@ -71,6 +80,7 @@ struct LogData {
     std::array<bool, kChannelCount> recorded{true, true, true, true};
     std::map<std::string, std::vector<double>> optional_columns;  ///< e.g. "raw_gyro" -> [counts]
     std::vector<LogGap> gaps;
+    std::vector<LogCut> cuts;  ///< in row order; none in a log as read
     bool truncated_tail_dropped = false;  ///< the unterminated last line was dropped (ReadOptions)
 
     std::size_t size() const { return t_s.size(); }

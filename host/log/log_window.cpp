@@ -1,4 +1,4 @@
-// A stretch of a log by time; see log_window.hpp.
+// Stretches of a log by time; see log_window.hpp.
 #include "host/log/log_window.hpp"
 
 #include <algorithm>
@@ -8,36 +8,84 @@
 #include "host/util/error.hpp"
 
 namespace driftlab::host {
+namespace {
 
-LogData rows_between(const LogData& log, double from_s, double to_s) {
-    const auto first = static_cast<std::size_t>(std::lower_bound(log.t_s.begin(), log.t_s.end(), from_s) - log.t_s.begin());
-    const auto last = static_cast<std::size_t>(std::upper_bound(log.t_s.begin(), log.t_s.end(), to_s) - log.t_s.begin());
-    if (first >= last) {
-        char text[200];
-        if (log.t_s.empty())
-            std::snprintf(text, sizeof text, "no row lies between %g s and %g s (the log has no rows)", from_s, to_s);
-        else
-            std::snprintf(text, sizeof text, "no row lies between %g s and %g s (its rows run from %g s to %g s)", from_s, to_s,
-                          log.t_s.front(), log.t_s.back());
-        throw DataError(log.source_name, 0, text);
-    }
+struct RowRun {
+    std::size_t first = 0, last = 0;  ///< rows [first, last)
+};
+
+// The rows of `runs` (in order, disjoint) in every column. Gap events and cuts are kept where both rows around
+// them are in one run, renumbered; new cuts are the caller's.
+LogData keep_runs(const LogData& log, const std::vector<RowRun>& runs) {
     const auto cut = [&](const auto& column) {
-        using Column = std::decay_t<decltype(column)>;
-        const std::size_t end = std::min(last, column.size());
-        return first < end ? Column(column.begin() + static_cast<std::ptrdiff_t>(first), column.begin() + static_cast<std::ptrdiff_t>(end))
-                           : Column{};
+        std::decay_t<decltype(column)> out;
+        for (const RowRun& r : runs)
+            for (std::size_t i = r.first; i < std::min(r.last, column.size()); ++i) out.push_back(column[i]);
+        return out;
     };
     LogData out;
     out.source_name = log.source_name;
     out.metadata = log.metadata;
     out.recorded = log.recorded;
-    out.truncated_tail_dropped = log.truncated_tail_dropped && last == log.size();
+    out.truncated_tail_dropped = log.truncated_tail_dropped && !runs.empty() && runs.back().last == log.size();
     out.t_s = cut(log.t_s);
     out.seq = cut(log.seq);
     for (std::size_t c = 0; c < kChannelCount; ++c) out.counts[c] = cut(log.counts[c]);
     for (const auto& [name, column] : log.optional_columns) out.optional_columns[name] = cut(column);
-    for (const LogGap& g : log.gaps)
-        if (g.before_row > first && g.before_row < last) out.gaps.push_back({g.before_row - first, g.line, g.text});
+    std::size_t offset = 0;  // rows kept before the run
+    for (const RowRun& r : runs) {
+        const auto inside = [&](std::size_t before_row) { return before_row > r.first && before_row < r.last; };
+        for (const LogGap& g : log.gaps)
+            if (inside(g.before_row)) out.gaps.push_back({offset + g.before_row - r.first, g.line, g.text});
+        for (const LogCut& c : log.cuts)
+            if (inside(c.before_row)) out.cuts.push_back({offset + c.before_row - r.first, c.from_s, c.to_s, c.rows});
+        offset += r.last - r.first;
+    }
+    return out;
+}
+
+std::string span_of(const LogData& log) {
+    char text[120];
+    if (log.t_s.empty()) return "the log has no rows";
+    std::snprintf(text, sizeof text, "its rows run from %g s to %g s", log.t_s.front(), log.t_s.back());
+    return text;
+}
+
+// The rows with from_s <= t_s <= to_s.
+RowRun rows_of(const LogData& log, double from_s, double to_s) {
+    const auto first = static_cast<std::size_t>(std::lower_bound(log.t_s.begin(), log.t_s.end(), from_s) - log.t_s.begin());
+    const auto last = static_cast<std::size_t>(std::upper_bound(log.t_s.begin(), log.t_s.end(), to_s) - log.t_s.begin());
+    if (first >= last) {
+        char text[200];
+        std::snprintf(text, sizeof text, "no row lies between %g s and %g s (%s)", from_s, to_s, span_of(log).c_str());
+        throw DataError(log.source_name, 0, text);
+    }
+    return {first, last};
+}
+
+}  // namespace
+
+LogData rows_between(const LogData& log, double from_s, double to_s) { return keep_runs(log, {rows_of(log, from_s, to_s)}); }
+
+LogData rows_outside(const LogData& log, std::vector<TimeWindow> windows) {
+    std::sort(windows.begin(), windows.end(), [](const TimeWindow& a, const TimeWindow& b) { return a.from_s < b.from_s; });
+    std::vector<RowRun> kept;
+    std::vector<LogCut> cuts;
+    std::size_t next = 0, offset = 0;  // the first row not yet placed; rows kept so far
+    for (std::size_t w = 0; w < windows.size();) {
+        TimeWindow merged = windows[w];
+        for (++w; w < windows.size() && windows[w].from_s <= merged.to_s; ++w) merged.to_s = std::max(merged.to_s, windows[w].to_s);
+        const RowRun out = rows_of(log, merged.from_s, merged.to_s);
+        if (out.first > next) kept.push_back({next, out.first});
+        offset += out.first - next;
+        cuts.push_back({offset, merged.from_s, merged.to_s, out.last - out.first});
+        next = out.last;
+    }
+    if (next < log.size()) kept.push_back({next, log.size()});
+    if (kept.empty()) throw DataError(log.source_name, 0, "no row is left once the windows are left out (" + span_of(log) + ")");
+    LogData out = keep_runs(log, kept);
+    out.cuts.insert(out.cuts.end(), cuts.begin(), cuts.end());
+    std::sort(out.cuts.begin(), out.cuts.end(), [](const LogCut& a, const LogCut& b) { return a.before_row < b.before_row; });
     return out;
 }
 

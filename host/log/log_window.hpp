@@ -1,6 +1,8 @@
-// A stretch of a log by time: the rows a user keeps when a disturbance (a shock, the board picked up, a disturbed
+// Stretches of a log by time: the rows a user keeps when a disturbance (a shock, the board picked up, a disturbed
 // start) would otherwise be read as part of the sensor's behaviour.
 #pragma once
+
+#include <vector>
 
 #include "host/log/log_data.hpp"
 
@@ -9,5 +11,16 @@ namespace driftlab::host {
 /// The rows of `log` with from_s <= t_s <= to_s, every column and the gap events among them (their rows renumbered);
 /// times stay since power-on. Throws DataError naming the log when no row lies in the window.
 LogData rows_between(const LogData& log, double from_s, double to_s);
+
+/// A stretch of time to leave out [s since power-on], both ends included.
+struct TimeWindow {
+    double from_s = 0.0;
+    double to_s = 0.0;
+};
+
+/// The rows of `log` outside every window, with a LogCut where each (overlapping ones merged) took rows out, so that
+/// the join is not read as lost frames; gap events and earlier cuts between kept rows stay. Throws DataError naming
+/// the log when a window holds no row (a window that misses is a mistaken time, not nothing to do) or no row is left.
+LogData rows_outside(const LogData& log, std::vector<TimeWindow> windows);
 
 }  // namespace driftlab::host

@@ -8,6 +8,9 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -271,6 +274,79 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     EXPECT_EQ(alone.exit_code, 3) << alone.output;
     EXPECT_NE(alone.output.find("stuck.csv: no selected channel varies (accel_x at 512 counts in every row)"), std::string::npos)
         << alone.output;
+}
+
+// A shock in the middle of a log (ten rows thrown off and flagged saturated) is a gap the simulator cannot make;
+// --exclude leaves it out, the rows either side are joined, and the join is not read as lost frames.
+TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
+    TempDir dir("gapshock");
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "600", "--seed", "4", "-o", log}, dir.path()).exit_code, 0);
+    const std::string shock = dir.file("shock.csv");
+    double shock_from = 0.0, shock_to = 0.0;
+    {
+        std::ifstream in(log);
+        std::ofstream out(shock);
+        std::string line;
+        int row = 0;
+        while (std::getline(in, line)) {
+            if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0) {
+                if (row >= 300 && row < 310) {
+                    // Columns t_s, seq, gyro, accel_x, accel_y, accel_z, tick, sat_flags, ...
+                    std::vector<std::string> f;
+                    std::stringstream fields(line);
+                    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+                    f[2] = std::to_string(std::stod(f[2]) + 150.0);
+                    f[7] = "1";
+                    if (row == 300) shock_from = std::stod(f[0]);
+                    shock_to = std::stod(f[0]);
+                    line.clear();
+                    for (const auto& x : f) line += (line.empty() ? "" : ",") + x;
+                }
+                ++row;
+            }
+            out << line << "\n";
+        }
+    }
+    const RunResult with = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--json"}, dir.path());
+    ASSERT_EQ(with.exit_code, 0) << with.output;
+    const auto j = nlohmann::json::parse(with.output);
+    EXPECT_FALSE(j["located"].empty());
+    ASSERT_EQ(j["saturated"].size(), 1u) << j["saturated"].dump();
+    EXPECT_EQ(j["saturated"][0]["rows"], 10);
+    EXPECT_TRUE(j["left_out"].empty());
+    // Left out (with a second left at the log's start): nothing located, nothing saturated, no frame lost.
+    const std::string window = std::to_string(shock_from - 0.5) + ":" + std::to_string(shock_to + 0.5);
+    const RunResult without = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--json", "--exclude", window,
+                                            "--exclude", "0:1.5", "--model-out", dir.file("m.toml")}, dir.path());
+    ASSERT_EQ(without.exit_code, 0) << without.output;
+    const auto k = nlohmann::json::parse(without.output);
+    EXPECT_TRUE(k["located"].empty()) << k["located"].dump();
+    EXPECT_TRUE(k["saturated"].empty());
+    EXPECT_EQ(k["timing"]["sequence_jumps"], 0);
+    EXPECT_LT(k["timing"]["dt_jitter_rel"].get<double>(), 0.01);  // the 10 s join is no irregular spacing
+    ASSERT_EQ(k["left_out"].size(), 2u) << k["left_out"].dump();
+    EXPECT_EQ(k["left_out"][0]["rows"], 1);
+    EXPECT_EQ(k["left_out"][1]["rows"], 10);
+    EXPECT_NEAR(k["left_out"][1]["from_s"].get<double>(), shock_from - 0.5, 1e-6);
+    {
+        std::ifstream file(dir.file("m.toml"));
+        std::string first;
+        std::getline(file, first);
+        EXPECT_NE(first.find(", without 0 s to 1.5 s and "), std::string::npos) << first;
+    }
+    const RunResult text = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--exclude", window}, dir.path());
+    EXPECT_NE(text.output.find("left out: 10 rows from t = "), std::string::npos) << text.output;
+    EXPECT_EQ(text.output.find("saturated:"), std::string::npos) << text.output;
+    // Mistakes are refused: a window with no row, a reversed one, text that is not FROM:TO.
+    const RunResult empty = run_driftlab({"gap", shock, "--exclude", "300.2:300.3"}, dir.path());
+    EXPECT_EQ(empty.exit_code, 3) << empty.output;
+    EXPECT_NE(empty.output.find("shock.csv: no row lies between 300.2 s and 300.3 s"), std::string::npos) << empty.output;
+    EXPECT_EQ(run_driftlab({"gap", shock, "--exclude", "400:300"}, dir.path()).exit_code, 2);
+    const RunResult bad = run_driftlab({"gap", shock, "--exclude", "300-310"}, dir.path());
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '300-310'"), std::string::npos)
+        << bad.output;
 }
 
 TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {

@@ -1,4 +1,5 @@
-// rows_between(): the rows of a time window, every column cut alike and the gap events among them renumbered.
+// rows_between() and rows_outside(): the rows of a time window, or of the log less some windows, every column cut
+// alike, the gap events among the rows kept renumbered, and each window left out recorded where the rows join.
 #include <gtest/gtest.h>
 
 #include "host/log/log_window.hpp"
@@ -47,6 +48,56 @@ TEST(LogWindow, AWindowWithoutRowsIsRefusedNamingTheLogAndItsSpan) {
         FAIL() << "no error";
     } catch (const DataError& e) {
         EXPECT_STREQ(e.what(), "ten.csv: no row lies between 20 s and 30 s (its rows run from 1 s to 10 s)");
+    }
+}
+
+TEST(LogWindow, AStretchLeftOutJoinsTheRowsEitherSideAndIsRecordedThere) {
+    const LogData w = rows_outside(ten_rows(), {{3.5, 5.0}});  // t = 4, 5: rows 3 and 4
+    ASSERT_EQ(w.size(), 8u);
+    EXPECT_EQ(w.t_s, (std::vector<double>{1, 2, 3, 6, 7, 8, 9, 10}));
+    EXPECT_EQ(w.seq[3], 5u);
+    for (const auto& column : w.counts) EXPECT_DOUBLE_EQ(column[3], 505.0);
+    EXPECT_DOUBLE_EQ(w.optional_columns.at("sat_flags")[4], 1.0);  // row 6
+    ASSERT_EQ(w.cuts.size(), 1u);
+    EXPECT_EQ(w.cuts[0].before_row, 3u);  // between t = 3 and t = 6
+    EXPECT_EQ(w.cuts[0].rows, 2u);
+    EXPECT_DOUBLE_EQ(w.cuts[0].from_s, 3.5);
+    EXPECT_DOUBLE_EQ(w.cuts[0].to_s, 5.0);
+    // Both gap events lie between kept rows: before row 2 stays, before row 7 is now before row 5.
+    ASSERT_EQ(w.gaps.size(), 2u);
+    EXPECT_EQ(w.gaps[0].before_row, 2u);
+    EXPECT_EQ(w.gaps[1].before_row, 5u);
+}
+
+TEST(LogWindow, OverlappingStretchesAreOneCutAndAnEarlierWindowKeepsItsCut) {
+    const LogData w = rows_outside(ten_rows(), {{7.5, 9.0}, {2.0, 2.5}, {6.5, 8.0}});  // rows 1; rows 6, 7, 8
+    EXPECT_EQ(w.t_s, (std::vector<double>{1, 3, 4, 5, 6, 10}));
+    ASSERT_EQ(w.cuts.size(), 2u);
+    EXPECT_EQ(w.cuts[0].before_row, 1u);
+    EXPECT_EQ(w.cuts[0].rows, 1u);
+    EXPECT_EQ(w.cuts[1].before_row, 5u);
+    EXPECT_EQ(w.cuts[1].rows, 3u);
+    EXPECT_DOUBLE_EQ(w.cuts[1].from_s, 6.5);
+    EXPECT_DOUBLE_EQ(w.cuts[1].to_s, 9.0);
+    EXPECT_TRUE(w.gaps.empty());  // before row 2 and row 7: each next to a row left out
+    // A window of the rows kept then keeps the cut inside it, renumbered.
+    const LogData later = rows_between(w, 2.5, 10.0);
+    ASSERT_EQ(later.cuts.size(), 1u);
+    EXPECT_EQ(later.cuts[0].before_row, 4u);
+}
+
+TEST(LogWindow, AStretchWithoutRowsOrOneThatLeavesNoneIsRefused) {
+    try {
+        rows_outside(ten_rows(), {{4.2, 4.8}});
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_STREQ(e.what(), "ten.csv: no row lies between 4.2 s and 4.8 s (its rows run from 1 s to 10 s)");
+    }
+    try {
+        rows_outside(ten_rows(), {{0.0, 5.0}, {5.0, 11.0}});
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_STREQ(e.what(), "ten.csv: no row is left once the windows are left out (its rows run from 1 s to 10 s)");
     }
 }
 
