@@ -118,6 +118,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                 r.gap_after_heldout <= r.gap_bound_after ? "closed" : "not closed");
     if (const std::string constant = gap::constant_channels_sentence(r); !constant.empty())
         std::printf("not analysed: %s\n", constant.c_str());
+    if (const std::string quiet = gap::noise_free_sentence(r); !quiet.empty()) std::printf("not analysed: %s\n", quiet.c_str());
     if (const std::string saturated = gap::saturated_channels_sentence(r); !saturated.empty())
         std::printf("saturated: %s\n", saturated.c_str());
     if (const std::string left_out = gap::left_out_sentence(r); !left_out.empty()) std::printf("left out: %s\n", left_out.c_str());
@@ -294,7 +295,7 @@ void register_gap(CLI::App& app) {
                   "gap); off by default, as gap-eval scores it");
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: verdict, explanations, paths, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
-                  "not_identifiable, not_tried, constant_channels, saturated, left_out, given, calibration, timing; stability with --stability)");
+                  "not_identifiable, not_tried, constant_channels, noise_free_channels, saturated, left_out, given, calibration, timing; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->add_option("--stability", o->stability,
                     "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness) "

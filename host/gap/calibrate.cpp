@@ -152,6 +152,18 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
         if (channels[c]) model.base[c].sigma_n_counts = std::max(0.0, sigma[c]);
 }
 
+std::array<bool, kChannelCount> deterministic_channels(const GapModel& model, const std::vector<double>& t_s,
+                                                       const std::array<bool, kChannelCount>& channels, std::uint64_t seed) {
+    std::array<bool, kChannelCount> out{};
+    SimRequest req;
+    req.t_s = &t_s;
+    for (std::size_t c = 0; c < kChannelCount; ++c) req.channels[c] = channels[c] && model.base[c].sigma_n_counts == 0.0;
+    if (std::none_of(req.channels.begin(), req.channels.end(), [](bool b) { return b; })) return out;
+    const SimOutput a = simulate(model, req, seed), b = simulate(model, req, seed + 1);
+    for (std::size_t c = 0; c < kChannelCount; ++c) out[c] = req.channels[c] && a[c] == b[c];
+    return out;
+}
+
 GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std::array<bool, kChannelCount>& channels,
                         std::uint64_t seed, std::array<double, kChannelCount>* spread) {
     GapModel model;

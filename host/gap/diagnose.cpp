@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
@@ -139,6 +140,17 @@ std::string constant_channels_text(const std::vector<ConstantChannel>& channels)
     return out;
 }
 
+std::string noise_free_text(const std::vector<NoiseFreeChannel>& channels) {
+    std::string out;
+    for (const auto& k : channels) {
+        char spread[32];
+        std::snprintf(spread, sizeof spread, "%.2g", k.spread_counts);
+        out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(k.channel)]) + " with a short-lag spread of " +
+               spread + " counts";
+    }
+    return out;
+}
+
 GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options) {
     if (options.replicates < 10) throw UsageError("--replicates: need at least 10");
     if (!(options.fit_fraction > 0.2 && options.fit_fraction < 0.9)) throw UsageError("fit fraction must be in (0.2, 0.9)");
@@ -170,6 +182,15 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         tell("fitting the model's own effects");
         result.given = add_given_effects(result.base, unit.effects, log.t_s, y, result.channels, spread, options.seed);
     }
+    // Replicates of a channel that cannot spread make every z a division by the floor: leave it out and say so.
+    const auto fixed = deterministic_channels(result.base, log.t_s, result.channels, options.seed);
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (fixed[c]) {
+            result.channels[c] = false;
+            result.noise_free.push_back({static_cast<Channel>(c), spread[c]});
+        }
+    if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; }))
+        throw DataError(log.source_name, 0, "no selected channel has noise to compare (" + noise_free_text(result.noise_free) + ")");
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
     result.left_out = log.cuts;
     result.saturated = saturated_channels(log, result.channels);

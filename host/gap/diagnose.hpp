@@ -53,6 +53,14 @@ struct ConstantChannel {
     double counts = 0.0;  ///< its one value
 };
 
+/// A channel that varies but has no noise the simulator could match: its short-lag spread needs no white noise
+/// beyond the converter's, and the calibrated model then simulates it alike for every seed (a generated or
+/// heavily filtered signal, or a sensor far quieter than one count). Its replicates give no null: not analysed.
+struct NoiseFreeChannel {
+    Channel channel = Channel::gyro;
+    double spread_counts = 0.0;  ///< the log's short-lag spread of the eq. 1 residual
+};
+
 /// An analysed channel whose firmware flagged saturation in some rows (the log's `sat_flags`, bit c: a conversion
 /// of the row's window at code 0 or the top code). The replicates clip only where their own noise reaches a rail,
 /// so a shock, or a rail the unit sits near, can read as a gap there.
@@ -66,6 +74,7 @@ struct SaturatedChannel {
 struct GapResult {
     std::array<bool, kChannelCount> channels{};
     std::vector<ConstantChannel> constant_channels;  ///< recorded (and, with GapOptions::channels, selected) ones
+    std::vector<NoiseFreeChannel> noise_free;        ///< varying channels left out for want of noise to compare
     std::vector<SaturatedChannel> saturated;         ///< analysed channels with rows flagged saturated
     std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
     std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
@@ -109,6 +118,9 @@ std::array<bool, kChannelCount> analysed_channels(const LogData& log, const GapO
 
 /// The recorded channels these options select that never change (LogData::recorded; not analysed).
 std::vector<ConstantChannel> constant_channels(const LogData& log, const GapOptions& options);
+
+/// "gyro with a short-lag spread of 0.0012 counts, ..." ("" for none).
+std::string noise_free_text(const std::vector<NoiseFreeChannel>& channels);
 
 /// "accel_x at 512 counts in every row, ..." ("" for none).
 std::string constant_channels_text(const std::vector<ConstantChannel>& channels);

@@ -108,6 +108,10 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     for (const auto& k : r.constant_channels)
         constant.push_back({{"channel", kChannelNames[channel_index(k.channel)]}, {"counts", report::json_number(k.counts)}});
     j["constant_channels"] = constant;
+    json quiet = json::array();
+    for (const auto& k : r.noise_free)
+        quiet.push_back({{"channel", kChannelNames[channel_index(k.channel)]}, {"spread_counts", report::json_number(k.spread_counts)}});
+    j["noise_free_channels"] = quiet;
     json saturated = json::array();
     for (const auto& s : r.saturated)
         saturated.push_back({{"channel", kChannelNames[channel_index(s.channel)]}, {"rows", s.rows},

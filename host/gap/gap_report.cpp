@@ -196,6 +196,13 @@ std::string constant_channels_sentence(const GapResult& r) {
            ": a channel that never changes has no noise to compare with the simulator's (a stuck or unconnected sensor?)";
 }
 
+std::string noise_free_sentence(const GapResult& r) {
+    if (r.noise_free.empty()) return "";
+    return noise_free_text(r.noise_free) + ": no white noise beyond the converter's is needed for that, and the simulator then makes the "
+                                           "same output for every seed, so its replicates give nothing to compare with (a generated or "
+                                           "filtered signal, or a sensor far quieter than one count?)";
+}
+
 std::string saturated_channels_sentence(const GapResult& r) {
     std::string out;
     for (const auto& s : r.saturated)
@@ -231,6 +238,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         if (!spread.empty()) md << "\n";
     }
     if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
+    if (const std::string quiet = noise_free_sentence(r); !quiet.empty()) md << "Not analysed: " << quiet << ".\n\n";
     if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
     if (const std::string left_out = left_out_sentence(r); !left_out.empty()) md << "Left out: " << left_out << ".\n\n";
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";

@@ -27,6 +27,9 @@ std::string estimate_text(const Explanation& e);
 /// The recorded channels left out because they never change, and why that matters; "" when there are none.
 std::string constant_channels_sentence(const GapResult& result);
 
+/// The varying channels left out because the simulator cannot spread them (NoiseFreeChannel); "" when none.
+std::string noise_free_sentence(const GapResult& result);
+
 /// The analysed channels with rows flagged saturated, and what that can do to the comparison; "" when none.
 std::string saturated_channels_sentence(const GapResult& result);
 

@@ -58,6 +58,43 @@ TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
     EXPECT_LT(gap_sum / (5 - flagged), 1.8);
 }
 
+// A channel that varies without noise (here a straight ramp of a twentieth of a count per output) needs no white noise
+// beyond the converter's, so its replicates are the same for every seed and every z would divide by the floor: it is
+// left out and named, and the noisy gyro beside it is diagnosed as without it.
+TEST(Diagnose, AChannelWithoutNoiseIsLeftOutAndNamed) {
+    const GapModel m = testing::paper_gyro_model(8);
+    GapOptions o = small_options();
+    o.explain = false;
+    LogData log = testing::gyro_log(m, 600, {}, 77);
+    for (std::size_t k = 0; k < log.size(); ++k) log.counts[1][k] = 400.0 + 0.05 * static_cast<double>(k);
+    log.recorded[1] = true;
+    const GapResult r = diagnose(log, sim::paper_model(), o);
+    EXPECT_TRUE(r.channels[0]);
+    EXPECT_FALSE(r.channels[1]);
+    ASSERT_EQ(r.noise_free.size(), 1u);
+    EXPECT_EQ(r.noise_free[0].channel, Channel::accel_x);
+    EXPECT_LT(r.noise_free[0].spread_counts, 1e-3);
+    EXPECT_EQ(r.verdict, "none");
+    for (const Cell& c : r.layout) EXPECT_EQ(c.channel.find("accel_x"), std::string::npos) << c.channel;
+    EXPECT_NE(noise_free_sentence(r).find("accel_x with a short-lag spread of "), std::string::npos) << noise_free_sentence(r);
+    // A noisy channel is never taken for one: the gyro with its noise at a tenth of a count is still analysed.
+    GapModel quiet = m;
+    quiet.base[0].sigma_n_counts = 0.1;
+    const GapResult q = diagnose(testing::gyro_log(quiet, 600, {}, 78), sim::paper_model(), o);
+    EXPECT_TRUE(q.channels[0]);
+    EXPECT_TRUE(q.noise_free.empty());
+    // Alone, it leaves nothing to compare: refused naming the log.
+    GapOptions accel = o;
+    accel.channels = {false, true, false, false};
+    try {
+        diagnose(log, sim::paper_model(), accel);
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("test.csv: no selected channel has noise to compare (accel_x with a short-lag spread of "),
+                  std::string::npos) << e.what();
+    }
+}
+
 // A raw-mode log sends a SAMPLE and a RAW frame per row, so seq steps by 2 without any loss.
 TEST(Diagnose, LostFramesCountTheFramesPerRow) {
     GapOptions o = small_options();
