@@ -293,9 +293,9 @@ void register_gap(CLI::App& app) {
     cmd->add_flag("--search-diffuse", o->search_diffuse,
                   "Also fit candidates when no cell is located but the held-out gap score exceeds its bound (a diffuse "
                   "gap); off by default, as gap-eval scores it");
-    cmd->add_flag("--json", o->json,
-                  "Print JSON (keys: verdict, explanations, paths, located, located_after, diffuse_gap, gap_before, gap_after, level_steps, "
-                  "not_identifiable, not_tried, constant_channels, noise_free_channels, saturated, left_out, given, calibration, timing; stability with --stability)");
+    std::string keys;
+    for (const char* k : gap::kGapJsonKeys) keys += (keys.empty() ? "" : ", ") + std::string(k);
+    cmd->add_flag("--json", o->json, "Print JSON (keys: " + keys + "; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
     cmd->add_option("--stability", o->stability,
                     "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness) "

@@ -1,6 +1,8 @@
 // The stable JSON of `driftlab gap --json`; keys documented in docs/gap.md §JSON.
 #pragma once
 
+#include <array>
+
 #include <nlohmann/json.hpp>
 
 #include "host/gap/diagnose.hpp"
@@ -8,8 +10,13 @@
 
 namespace driftlab::host::gap {
 
-/// verdict, explanations, located, located_after, gap_before, gap_after, not_identifiable, not_tried,
-/// calibration, timing, replicates, holdout, fit_fraction, threshold_z, cells, of a diagnosis run with `options`.
+/// The top-level keys of gap_to_json(), in the order --help lists them (a test holds the two together).
+inline constexpr std::array<const char*, 24> kGapJsonKeys = {
+    "verdict", "explanations", "paths", "located", "located_after", "diffuse_gap", "gap_before", "gap_after",
+    "information_criterion", "level_steps", "not_identifiable", "not_tried", "constant_channels", "noise_free_channels",
+    "saturated", "left_out", "given", "calibration", "timing", "replicates", "holdout", "fit_fraction", "threshold_z", "cells"};
+
+/// The diagnosis run with `options` under the keys kGapJsonKeys (docs/gap.md §JSON).
 nlohmann::json gap_to_json(const GapResult& result, const GapOptions& options);
 
 /// --stability's result: logs, verdicts, same (a share), params[] {effect, channel, param, estimate, values (sorted),

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -145,6 +146,11 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     EXPECT_FALSE(r.accepted[0].shape_steps.steps_win);
 
     const auto j = gap_to_json(r, small_options());
+    // The keys --help lists are the JSON's, no more and no fewer (the issue's own among them).
+    std::set<std::string> listed(kGapJsonKeys.begin(), kGapJsonKeys.end()), present;
+    for (const auto& [key, value] : j.items()) present.insert(key);
+    EXPECT_EQ(present, listed);
+    EXPECT_EQ(listed.size(), kGapJsonKeys.size()) << "a key listed twice";
     for (const char* key : {"verdict", "explanations", "located", "gap_before", "gap_after", "not_identifiable"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["holdout"], "interleaved");
