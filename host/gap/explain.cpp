@@ -407,7 +407,8 @@ Choice choose(const std::vector<const Explanation*>& passing, InformationCriteri
         }
     }
     if (other && (!g1 || other->heldout_loss_gain > g1->heldout_loss_gain)) return {other, g1};
-    if (g1 && g1->long_memory && simpler) return {simpler, g1};
+    if (g1 && g1->long_memory && simpler && delta_ic(*g1, ic) - delta_ic(*simpler, ic) <= parameter_price(ic, g1->spectral_observations))
+        return {simpler, g1};
     return {g1, g2 ? g2 : other};
 }
 

@@ -315,7 +315,8 @@ TEST(GapEval, CloseCallBetweenGaussianCandidatesIsVuongOverFrequencies) {
     EXPECT_FALSE(close_call(best, runner, 1.96, aic));  // AIC: 10 - 3 = 7 > 5.5
 }
 
-// The spectral choice: the largest delta IC; a long-memory Gauss-Markov fit gives way to an accepted random walk.
+// The spectral choice: the largest delta IC; a long-memory Gauss-Markov fit gives way to an accepted random walk
+// unless the criterion prefers it by more than one parameter's price (2 under AIC), and stays the close call.
 TEST(GapEval, ALongMemoryGaussMarkovGivesWayToARandomWalk) {
     Explanation gm, walk;
     gm.effect = "gauss_markov", walk.effect = "rate_random_walk";
@@ -328,9 +329,18 @@ TEST(GapEval, ALongMemoryGaussMarkovGivesWayToARandomWalk) {
     EXPECT_NEAR(delta_ic(gm, InformationCriterion::bic), 120.0 - 2.0 * std::log(1500.0), 1e-12);
     EXPECT_EQ(choose({&walk, &gm}, InformationCriterion::aic).best, &gm);
     gm.long_memory = true;
+    const Choice decisive = choose({&walk, &gm}, InformationCriterion::aic);  // 116 against 110: beyond the price of 2
+    EXPECT_EQ(decisive.best, &gm);
+    EXPECT_EQ(decisive.runner_up, &walk);
+    EXPECT_TRUE(close_call(*decisive.best, *decisive.runner_up, 1.96, InformationCriterion::aic));
+    walk.spectral_gain = 116.0;  // 114: two apart, no more than the price
     const Choice c = choose({&walk, &gm}, InformationCriterion::aic);
     EXPECT_EQ(c.best, &walk);
     EXPECT_EQ(c.runner_up, &gm);
+    // Under BIC the price is ln 1500 = 7.3: a Gauss-Markov process 5 ahead (113.7 against 108.7) gives way.
+    gm.spectral_gain = 120.0 + std::log(1500.0) + 1.0;
+    EXPECT_NEAR(delta_ic(gm, InformationCriterion::bic) - delta_ic(walk, InformationCriterion::bic), 5.0, 1e-9);
+    EXPECT_EQ(choose({&walk, &gm}, InformationCriterion::bic).best, &walk);
 }
 
 // The scores count the decisions of the scoring cases only, and the JSON carries the documented keys.
