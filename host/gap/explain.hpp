@@ -141,7 +141,8 @@ bool close_call(const Explanation& best, const Explanation& runner_up, double z,
 /// The verdict among one channel's passing candidates: the Gaussian one with the largest delta_ic, unless spikes
 /// beat it on the held-out synthetic likelihood; the runner-up is the next Gaussian candidate, else spikes. A
 /// long-memory Gauss-Markov fit gives way to an accepted random walk or flicker (within the log it is one of them,
-/// with a parameter more), and becomes the runner-up.
+/// with a parameter more), and becomes the runner-up, unless it beats the better of them by more than that
+/// parameter's price: a walk fitted as one gains about the price, a process whose fit ran past L/20 can gain more.
 struct Choice {
     const Explanation* best = nullptr;
     const Explanation* runner_up = nullptr;
