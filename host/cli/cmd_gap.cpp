@@ -65,13 +65,14 @@ struct Loaded {
 
 // --exclude FROM:TO [s since power-on].
 TimeWindow parse_exclude(const std::string& text) {
+    const auto refused = [&] { return UsageError("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '" + text + "'"); };
     const auto number = [&](const std::string& part) {
         const std::optional<double> v = finite_number(part);
-        if (!v) throw UsageError("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '" + text + "'");
+        if (!v) throw refused();
         return *v;
     };
     const auto colon = text.find(':');
-    if (colon == std::string::npos) number("");  // refused, naming the text
+    if (colon == std::string::npos) throw refused();
     const TimeWindow w{number(text.substr(0, colon)), number(text.substr(colon + 1))};
     if (!(w.from_s < w.to_s)) throw UsageError("--exclude " + text + ": FROM must be before TO");
     return w;
