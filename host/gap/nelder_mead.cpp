@@ -1,63 +1,60 @@
-// Nelder-Mead; see nelder_mead.hpp.
+// Nelder-Mead through NLopt; see nelder_mead.hpp.
 #include "host/gap/nelder_mead.hpp"
 
-#include <algorithm>
-#include <numeric>
+#include <nlopt.h>
+
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace driftlab::host::gap {
 
+namespace {
+
+struct Search {
+    const std::function<double(const std::vector<double>&)>* f;
+    nlopt_opt opt;
+    std::vector<double> x;
+    int evaluations = 0;
+    std::exception_ptr failure;
+};
+
+double objective(unsigned n, const double* x, double* /*gradient: derivative-free*/, void* data) {
+    auto& s = *static_cast<Search*>(data);
+    ++s.evaluations;
+    s.x.assign(x, x + n);
+    try {
+        const double v = (*s.f)(s.x);
+        return std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
+    } catch (...) {
+        // An exception must not cross NLopt's C frames: keep it, stop, and rethrow once NLopt has returned.
+        s.failure = std::current_exception();
+        nlopt_force_stop(s.opt);
+        return std::numeric_limits<double>::infinity();
+    }
+}
+
+}  // namespace
+
 NelderMeadResult nelder_mead(const std::function<double(const std::vector<double>&)>& f, const std::vector<double>& start,
                              const std::vector<double>& step, int max_evaluations) {
-    const std::size_t n = start.size();
-    std::vector<std::vector<double>> simplex(n + 1, start);
-    std::vector<double> values(n + 1);
-    int evaluations = 0;
-    auto eval = [&](const std::vector<double>& x) {
-        ++evaluations;
-        return f(x);
-    };
-    for (std::size_t i = 0; i < n; ++i) simplex[i + 1][i] += step[i];
-    for (std::size_t i = 0; i <= n; ++i) values[i] = eval(simplex[i]);
-    std::vector<std::size_t> order(n + 1);
-    while (evaluations < max_evaluations) {
-        std::iota(order.begin(), order.end(), 0);
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
-        const std::size_t best = order.front(), worst = order.back(), second = order[n - 1];
-        std::vector<double> centroid(n, 0.0);
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t k = 0; k <= n; ++k)
-                if (k != worst) centroid[i] += simplex[k][i] / static_cast<double>(n);
-        auto along = [&](double t) {
-            std::vector<double> x(n);
-            for (std::size_t i = 0; i < n; ++i) x[i] = centroid[i] + t * (simplex[worst][i] - centroid[i]);
-            return x;
-        };
-        const auto xr = along(-1.0);
-        const double fr = eval(xr);
-        if (fr < values[best]) {
-            const auto xe = along(-2.0);
-            const double fe = eval(xe);
-            if (fe < fr) simplex[worst] = xe, values[worst] = fe;
-            else simplex[worst] = xr, values[worst] = fr;
-        } else if (fr < values[second]) {
-            simplex[worst] = xr, values[worst] = fr;
-        } else {
-            const bool outside = fr < values[worst];
-            const auto xc = along(outside ? -0.5 : 0.5);
-            const double fc = eval(xc);
-            if (fc < (outside ? fr : values[worst])) {
-                simplex[worst] = xc, values[worst] = fc;
-            } else {
-                for (std::size_t k = 0; k <= n; ++k) {
-                    if (k == best) continue;
-                    for (std::size_t i = 0; i < n; ++i) simplex[k][i] = simplex[best][i] + 0.5 * (simplex[k][i] - simplex[best][i]);
-                    values[k] = eval(simplex[k]);
-                }
-            }
-        }
-    }
-    const auto it = std::min_element(values.begin(), values.end());
-    return {simplex[static_cast<std::size_t>(it - values.begin())], *it, evaluations};
+    const auto n = static_cast<unsigned>(start.size());
+    const std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(nlopt_create(NLOPT_LN_NELDERMEAD, n), nlopt_destroy);
+    if (!opt || step.size() != start.size()) throw std::invalid_argument("nelder_mead: one step per coordinate");
+    Search search{&f, opt.get(), {}, 0, nullptr};
+    nlopt_set_min_objective(opt.get(), objective, &search);
+    nlopt_set_maxeval(opt.get(), max_evaluations);
+    nlopt_set_initial_step(opt.get(), step.data());
+    NelderMeadResult result{start, std::numeric_limits<double>::infinity(), 0};
+    const nlopt_result status = nlopt_optimize(opt.get(), result.x.data(), &result.value);
+    if (search.failure) std::rethrow_exception(search.failure);
+    if (status == NLOPT_INVALID_ARGS || status == NLOPT_OUT_OF_MEMORY)
+        throw std::runtime_error("nelder_mead: NLopt refused the search (" + std::string(nlopt_result_to_string(status)) + ")");
+    result.evaluations = search.evaluations;
+    return result;
 }
 
 }  // namespace driftlab::host::gap

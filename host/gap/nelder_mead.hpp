@@ -1,6 +1,6 @@
-// Nelder-Mead simplex minimisation (Lagarias et al., SIAM J. Optim. 9(1), 1998: reflection 1, expansion 2,
-// contraction 1/2, shrink 1/2) for the candidate fits, which have <= 3 parameters and noisy objectives.
-// docs/gap.md §Candidate fits.
+// Nelder-Mead simplex minimisation for the candidate fits, which have <= 3 parameters and noisy objectives:
+// NLopt's LN_NELDERMEAD (the Debian package libnlopt-dev) with a fixed evaluation budget and no tolerance, since a
+// simulated objective's noise would stop a tolerance test at random. docs/gap.md §Candidate fits.
 #pragma once
 
 #include <functional>
@@ -14,7 +14,8 @@ struct NelderMeadResult {
     int evaluations = 0;
 };
 
-/// Minimises `f` from `start` with initial steps `step` (one per coordinate), within `max_evaluations`.
+/// Minimises `f` from `start` with initial steps `step` (one per coordinate), within `max_evaluations`. A non-finite
+/// value counts as worse than any finite one; an exception thrown by `f` stops the search and is rethrown.
 NelderMeadResult nelder_mead(const std::function<double(const std::vector<double>&)>& f, const std::vector<double>& start,
                              const std::vector<double>& step, int max_evaluations);
 
