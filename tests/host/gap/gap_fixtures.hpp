@@ -4,12 +4,17 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <initializer_list>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "host/gap/diagnose.hpp"
+#include "host/gap/plain_recording.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/log/log_data.hpp"
+#include "host/log/numeric_table.hpp"
 
 namespace driftlab::host::gap::testing {
 
@@ -61,6 +66,34 @@ inline LogData gyro_log(const GapModel& m, std::size_t samples, const std::vecto
     log.metadata.set("window", static_cast<std::int64_t>(m.smoothing.window));
     log.metadata.set("fit_order", static_cast<std::int64_t>(m.smoothing.fit_order));
     return log;
+}
+
+/// A recording of the shared folder's data/real/`file` read as a plain recording (`mappings` as --as gives them, one
+/// row every `sample_period_s`, blocks of `block` rows) into `log`, and the unit it reads as into `unit`; false when
+/// the file is absent, for the test to skip.
+inline bool load_shared_recording(const std::string& file, std::initializer_list<const char*> mappings, double sample_period_s,
+                                  int block, LogData& log, sim::SimModel& unit) {
+    const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/" + file;
+    if (!std::filesystem::exists(path)) return false;
+    PlainRecording how;
+    for (const char* m : mappings) how.columns.push_back(parse_column_mapping(m));
+    how.sample_period_s = sample_period_s;
+    how.block = block;
+    log = log_from_table(read_numeric_table(path), how);
+    unit = unit_of_recording(sim::paper_model(), how, log);
+    return true;
+}
+
+/// Diagnosis options for the real recordings: R = 16, seed 3, smaller fit budgets than the command line's, and at
+/// most `max_effects` effects: a test's wall time.
+inline GapOptions real_data_options(int max_effects) {
+    GapOptions o;
+    o.replicates = 16;
+    o.seed = 3;
+    o.explain_options.fit_replicates = 6;
+    o.explain_options.max_evaluations = 12;
+    o.explain_options.max_effects = max_effects;
+    return o;
 }
 
 }  // namespace driftlab::host::gap::testing

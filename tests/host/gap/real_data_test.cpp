@@ -4,7 +4,6 @@
 // smoother of the log (window = conversions per output = 40), at an assumed 100 Hz raw rate.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <numbers>
 #include <string>
 
@@ -12,34 +11,17 @@
 
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
-#include "host/gap/plain_recording.hpp"
 #include "host/log/log_window.hpp"
+
+#include "gap_fixtures.hpp"
 
 namespace driftlab::host::gap {
 namespace {
 
 // The log, and the unit it reads as (one count is 8.75 mdps: the parameters come out in the gyro's own deg/s).
-bool load(LogData& log, sim::SimModel& unit) {
-    const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt";
-    if (!std::filesystem::exists(path)) return false;
-    PlainRecording how;
-    how.columns = {parse_column_mapping("gyro=col1:0.00875")};
-    how.sample_period_s = 0.01;
-    how.block = 40;
-    log = log_from_table(read_numeric_table(path), how);
-    unit = unit_of_recording(sim::paper_model(), how, log);
-    return true;
-}
+bool load(LogData& log, sim::SimModel& unit) { return testing::load_shared_recording("gyro2_x.txt", {"gyro=col1:0.00875"}, 0.01, 40, log, unit); }
 
-GapOptions options() {
-    GapOptions o;
-    o.replicates = 16;
-    o.seed = 3;
-    o.explain_options.fit_replicates = 6;
-    o.explain_options.max_evaluations = 12;
-    o.explain_options.max_effects = 2;
-    return o;
-}
+GapOptions options() { return testing::real_data_options(2); }
 
 TEST(RealData, Gyro2xRunsAndReportsItsGap) {
     LogData log;

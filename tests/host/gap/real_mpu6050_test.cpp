@@ -6,42 +6,25 @@
 // diffuse gap.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "host/gap/diagnose.hpp"
-#include "host/gap/plain_recording.hpp"
-#include "host/log/numeric_table.hpp"
+
+#include "gap_fixtures.hpp"
 
 namespace driftlab::host::gap {
 namespace {
 
 bool load(LogData& log, sim::SimModel& unit) {
-    const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/mpu6050_unmoved-with-x-pointing-forward-10min.csv";
-    if (!std::filesystem::exists(path)) return false;
-    PlainRecording how;
-    for (const char* m : {"gyro=gx_dps:0.0076335877862595417", "accel_x=ax_g:0.000244140625", "accel_y=ay_g:0.000244140625",
-                          "accel_z=az_g:0.000244140625"})
-        how.columns.push_back(parse_column_mapping(m));
-    how.sample_period_s = 0.01;
-    how.block = 10;
-    log = log_from_table(read_numeric_table(path), how);
-    unit = unit_of_recording(sim::paper_model(), how, log);
-    return true;
+    return testing::load_shared_recording("mpu6050_unmoved-with-x-pointing-forward-10min.csv",
+                                          {"gyro=gx_dps:0.0076335877862595417", "accel_x=ax_g:0.000244140625",
+                                           "accel_y=ay_g:0.000244140625", "accel_z=az_g:0.000244140625"},
+                                          0.01, 10, log, unit);
 }
 
-// R = 16, smaller fit budgets than the command line's and one effect: a test's wall time.
-GapOptions test_options() {
-    GapOptions o;
-    o.replicates = 16;
-    o.seed = 3;
-    o.explain_options.fit_replicates = 6;
-    o.explain_options.max_evaluations = 12;
-    o.explain_options.max_effects = 1;
-    return o;
-}
+GapOptions test_options() { return testing::real_data_options(1); }
 
 TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     LogData log;
