@@ -2,6 +2,7 @@
 #include "host/gap/gap_report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -233,7 +234,11 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     if (stability) {
         md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
         const std::vector<std::string> spread = spread_lines(*stability);
-        if (!spread.empty()) md << "Estimates on those logs (the middle 68 %, where each added the effect again):\n\n";
+        if (!spread.empty()) {
+            std::string heading = kSpreadHeading;  // the terminal's words, opening a sentence here
+            heading.front() = static_cast<char>(std::toupper(static_cast<unsigned char>(heading.front())));
+            md << heading << "\n\n";
+        }
         for (const std::string& line : spread) md << "- " << line << "\n";
         if (!spread.empty()) md << "\n";
     }

@@ -76,6 +76,9 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
         std::size_t rows = 0;
         for (std::size_t line = md.find("\n| ", table); line < md.find("cells located before", table); line = md.find("\n| ", line + 1)) ++rows;
         EXPECT_EQ(rows, located + 1) << md.substr(table, 3000);  // and the header row
+        // The report shows the stability logs' estimates under the terminal's heading, as a list.
+        const std::size_t heading = md.find("Estimates on those logs (middle 68 %, where each added the effect again):\n\n- ambient_cycle on gyro (3 of 3 logs)");
+        EXPECT_NE(heading, std::string::npos) << md.substr(0, 1500);
     }
     // A cycle this clear is read again in every log the fitted model makes.
     EXPECT_NE(gap.output.find("of 3 logs simulated from the estimated model and diagnosed alike, 3 (100 %) are called ambient_cycle"),
