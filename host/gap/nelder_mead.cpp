@@ -28,7 +28,7 @@ double objective(unsigned n, const double* x, double* /*gradient: derivative-fre
     s.x.assign(x, x + n);
     try {
         const double v = (*s.f)(s.x);
-        return std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
+        return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();  // -inf too: NLopt would keep it as the best
     } catch (...) {
         // An exception must not cross NLopt's C frames: keep it, stop, and rethrow once NLopt has returned.
         s.failure = std::current_exception();

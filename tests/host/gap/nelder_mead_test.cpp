@@ -55,6 +55,11 @@ TEST(NelderMead, NonFiniteValuesAreWorseThanAnyFiniteOne) {
     const auto r = nelder_mead(f, {3.0}, {-4.0}, 200);
     EXPECT_NEAR(r.x[0], 1.0, 1e-3);
     EXPECT_TRUE(std::isfinite(r.value));
+    // -inf as well (a log-likelihood term of a zero spread): a failed evaluation, not the best point.
+    auto g = [](const std::vector<double>& p) { return p[0] > 0.0 ? p[0] - std::log(p[0]) : -std::numeric_limits<double>::infinity(); };
+    const auto s = nelder_mead(g, {3.0}, {-4.0}, 200);
+    EXPECT_NEAR(s.x[0], 1.0, 1e-3);
+    EXPECT_TRUE(std::isfinite(s.value));
 }
 
 TEST(NelderMead, AnExceptionFromTheObjectiveReachesTheCaller) {
