@@ -68,6 +68,8 @@ RowRun rows_of(const LogData& log, double from_s, double to_s) {
 LogData rows_between(const LogData& log, double from_s, double to_s) { return keep_runs(log, {rows_of(log, from_s, to_s)}); }
 
 LogData rows_outside(const LogData& log, std::vector<TimeWindow> windows) {
+    // Each window on its own: one that misses (or is reversed) is a mistake even where another overlaps it.
+    for (const TimeWindow& w : windows) rows_of(log, w.from_s, w.to_s);
     std::sort(windows.begin(), windows.end(), [](const TimeWindow& a, const TimeWindow& b) { return a.from_s < b.from_s; });
     std::vector<RowRun> kept;
     std::vector<LogCut> cuts;

@@ -93,6 +93,19 @@ TEST(LogWindow, AStretchWithoutRowsOrOneThatLeavesNoneIsRefused) {
     } catch (const DataError& e) {
         EXPECT_STREQ(e.what(), "ten.csv: no row lies between 4.2 s and 4.8 s (its rows run from 1 s to 10 s)");
     }
+    // A window that misses is refused even inside another one, and so is a reversed one.
+    try {
+        rows_outside(ten_rows(), {{3.0, 6.0}, {4.2, 4.8}});
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_STREQ(e.what(), "ten.csv: no row lies between 4.2 s and 4.8 s (its rows run from 1 s to 10 s)");
+    }
+    try {
+        rows_outside(ten_rows(), {{3.0, 8.0}, {6.0, 5.0}});
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_STREQ(e.what(), "ten.csv: no row lies between 6 s and 5 s (its rows run from 1 s to 10 s)");
+    }
     try {
         rows_outside(ten_rows(), {{0.0, 5.0}, {5.0, 11.0}});
         FAIL() << "no error";
