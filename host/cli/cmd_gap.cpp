@@ -54,6 +54,7 @@ struct GapCommandOptions {
     double from_s = -INFINITY;          ///< rows kept: from_s <= t_s <= to_s
     double to_s = INFINITY;
     std::vector<std::string> excluded;  ///< FROM:TO stretches left out
+    double saturated_margin_s = -1.0;   ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
 
     bool windowed() const { return from_s != -INFINITY || to_s != INFINITY; }
 };
@@ -78,15 +79,34 @@ TimeWindow parse_exclude(const std::string& text) {
     return w;
 }
 
-// The rows --from/--to keep (all without them), less those --exclude leaves out.
+// --channel: the channels named (none named: all false, which selects every one).
+std::array<bool, kChannelCount> channels_named(const GapCommandOptions& o) {
+    std::array<bool, kChannelCount> out{};
+    for (const std::string& name : o.channels) {
+        bool found = false;
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            if (name == kChannelNames[c]) out[c] = found = true;
+        if (!found) throw UsageError("--channel: unknown channel '" + name + "' (gyro, accel_x, accel_y, accel_z)");
+    }
+    return out;
+}
+
+// The rows --from/--to keep (all without them), less those --exclude and --exclude-saturated leave out. Only the
+// channels the diagnosis analyses count as saturated: a channel stuck at a rail is left out of it, not its rows.
 LogData in_window(const GapCommandOptions& o, LogData log) {
     if (o.windowed()) {
         if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
         log = rows_between(log, o.from_s, o.to_s);
     }
-    if (o.excluded.empty()) return log;
     std::vector<TimeWindow> windows;
     for (const std::string& text : o.excluded) windows.push_back(parse_exclude(text));
+    if (o.saturated_margin_s >= 0.0) {
+        gap::GapOptions selection;
+        selection.channels = channels_named(o);
+        const auto saturated = saturated_stretches(log, gap::analysed_channels(log, selection), o.saturated_margin_s);
+        windows.insert(windows.end(), saturated.begin(), saturated.end());
+    }
+    if (windows.empty()) return log;
     return rows_outside(log, windows);
 }
 
@@ -175,7 +195,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                     static_cast<unsigned long long>(r.timing.lost_frames), r.timing.gap_events);
 }
 
-// " (rows from X s to Y s, without A s to B s)" where --from/--to or --exclude chose them, else "".
+// " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else "".
 std::string rows_used(const GapCommandOptions& o, const LogData& log) {
     if (!o.windowed() && log.cuts.empty()) return "";
     char text[80];
@@ -209,12 +229,7 @@ void run(const GapCommandOptions& o) {
             const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             std::fprintf(stderr, "\r\033[Kgap: %.0f s, %s", s, stage.c_str());
         };
-    for (const std::string& name : o.channels) {
-        bool found = false;
-        for (std::size_t c = 0; c < kChannelCount; ++c)
-            if (name == kChannelNames[c]) options.channels[c] = found = true;
-        if (!found) throw UsageError("--channel: unknown channel '" + name + "' (gyro, accel_x, accel_y, accel_z)");
-    }
+    options.channels = channels_named(o);
     const gap::GapResult r = gap::diagnose(log, unit, options);
     const gap::VerdictStability stability = gap::verdict_stability(r, log, unit, options, o.stability);
     if (tty) std::fprintf(stderr, "\r\033[K");
@@ -284,6 +299,10 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--exclude", o->excluded,
                     "Leave out the rows from FROM to TO [s since power-on], e.g. 600:640: a shock or a bump in the middle of "
                     "the log; the rows either side are joined (repeat for more)");
+    cmd->add_option("--exclude-saturated", o->saturated_margin_s,
+                    "Leave out every stretch of rows whose sat_flags flag an analysed channel, with SECONDS more on either side "
+                    "(e.g. 0.5 for what a shock leaves after the rail), joined as with --exclude")
+        ->check(non_negative_number());
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)");

@@ -88,8 +88,7 @@ std::vector<SaturatedChannel> saturated_channels(const LogData& log, const std::
         if (!channels[c]) continue;
         SaturatedChannel s{static_cast<Channel>(c), 0, 0.0, 0.0};
         for (std::size_t k = 0; k < column->second.size() && k < log.size(); ++k) {
-            const double flags = column->second[k];
-            if (!(flags >= 0.0) || ((static_cast<unsigned>(flags) >> c) & 1u) == 0) continue;
+            if (!flags_saturation(column->second[k], c)) continue;
             if (s.rows++ == 0) s.first_t_s = log.t_s[k];
             s.last_t_s = log.t_s[k];
         }

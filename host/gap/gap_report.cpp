@@ -212,7 +212,8 @@ std::string saturated_channels_sentence(const GapResult& r) {
     if (out.empty()) return "";
     return out + ": a conversion reached code 0 or the top code there (the firmware's sat_flags); the simulator clips only "
                  "where its own noise reaches a rail, so a shock, or a rail the unit sits near, can read as a gap (--from and --to "
-                 "leave a disturbed start or end out, --exclude a stretch in the middle)";
+                 "leave a disturbed start or end out, --exclude a stretch in the middle, --exclude-saturated S every saturated stretch "
+                 "and S seconds either side)";
 }
 
 std::string left_out_sentence(const GapResult& r) {
@@ -221,7 +222,7 @@ std::string left_out_sentence(const GapResult& r) {
         out += (out.empty() ? "" : ", ") + std::to_string(c.rows) + (c.rows == 1 ? " row" : " rows") + " from t = " + format_double(c.from_s) +
                " s to " + format_double(c.to_s) + " s";
     if (out.empty()) return "";
-    return out + " (--exclude): the rows either side are joined, and the replicates, simulated on the same instants, "
+    return out + " (--exclude, --exclude-saturated): the rows either side are joined, and the replicates, simulated on the same instants, "
                  "live through the same time";
 }
 

@@ -88,4 +88,9 @@ struct LogData {
     bool has_column(const std::string& name) const { return optional_columns.count(name) != 0; }
 };
 
+/// Whether a `sat_flags` value flags channel `c` (bit c: a conversion of the output's window at code 0 or the top code).
+inline bool flags_saturation(double sat_flags, std::size_t c) {
+    return sat_flags >= 0.0 && ((static_cast<unsigned>(sat_flags) >> c) & 1u) != 0;
+}
+
 }  // namespace driftlab::host

@@ -91,4 +91,27 @@ LogData rows_outside(const LogData& log, std::vector<TimeWindow> windows) {
     return out;
 }
 
+std::vector<TimeWindow> saturated_stretches(const LogData& log, const std::array<bool, kChannelCount>& channels, double margin_s) {
+    const auto column = log.optional_columns.find("sat_flags");
+    if (column == log.optional_columns.end())
+        throw DataError(log.source_name, 0, "no sat_flags column, so no row is known to be saturated (record and hil write it)");
+    const auto flagged = [&](std::size_t k) {
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            if (channels[c] && flags_saturation(column->second[k], c)) return true;
+        return false;
+    };
+    std::vector<TimeWindow> out;
+    const std::size_t rows = std::min(log.size(), column->second.size());
+    for (std::size_t k = 0; k < rows;) {
+        if (!flagged(k)) {
+            ++k;
+            continue;
+        }
+        const std::size_t first = k;
+        while (k < rows && flagged(k)) ++k;
+        out.push_back({log.t_s[first] - margin_s, log.t_s[k - 1] + margin_s});
+    }
+    return out;
+}
+
 }  // namespace driftlab::host

@@ -338,6 +338,16 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
         std::getline(file, first);
         EXPECT_NE(first.find(", without 0 s to 1.5 s and "), std::string::npos) << first;
     }
+    // --exclude-saturated finds the same ten rows from their sat_flags, with its margin either side.
+    const RunResult flagged = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--json", "--exclude-saturated", "0.25"}, dir.path());
+    ASSERT_EQ(flagged.exit_code, 0) << flagged.output;
+    const auto s = nlohmann::json::parse(flagged.output);
+    EXPECT_TRUE(s["located"].empty()) << s["located"].dump();
+    EXPECT_TRUE(s["saturated"].empty());
+    ASSERT_EQ(s["left_out"].size(), 1u) << s["left_out"].dump();
+    EXPECT_EQ(s["left_out"][0]["rows"], 10);
+    EXPECT_NEAR(s["left_out"][0]["from_s"].get<double>(), shock_from - 0.25, 1e-6);
+    EXPECT_NEAR(s["left_out"][0]["to_s"].get<double>(), shock_to + 0.25, 1e-6);
     const RunResult text = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--exclude", window}, dir.path());
     EXPECT_NE(text.output.find("left out: 10 rows from t = "), std::string::npos) << text.output;
     EXPECT_EQ(text.output.find("saturated:"), std::string::npos) << text.output;
@@ -346,6 +356,9 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
     EXPECT_EQ(empty.exit_code, 3) << empty.output;
     EXPECT_NE(empty.output.find("shock.csv: no row lies between 300.2 s and 300.3 s"), std::string::npos) << empty.output;
     EXPECT_EQ(run_driftlab({"gap", shock, "--exclude", "400:300"}, dir.path()).exit_code, 2);
+    const RunResult margin = run_driftlab({"gap", shock, "--exclude-saturated", "-1"}, dir.path());
+    EXPECT_NE(margin.exit_code, 0);
+    EXPECT_NE(margin.output.find("--exclude-saturated: expected a number >= 0, got '-1'"), std::string::npos) << margin.output;
     const RunResult bad = run_driftlab({"gap", shock, "--exclude", "300-310"}, dir.path());
     EXPECT_EQ(bad.exit_code, 2) << bad.output;
     EXPECT_NE(bad.output.find("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '300-310'"), std::string::npos)

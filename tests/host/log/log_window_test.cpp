@@ -114,5 +114,34 @@ TEST(LogWindow, AStretchWithoutRowsOrOneThatLeavesNoneIsRefused) {
     }
 }
 
+TEST(LogWindow, SaturatedStretchesAreTheFlaggedRunsOfTheChannelsAskedWidenedByTheMargin) {
+    LogData log = ten_rows();  // t = 1..10; sat_flags: gyro (bit 0) in row 6
+    auto& flags = log.optional_columns["sat_flags"];
+    flags[1] = 8.0;                // accel_z in row 1
+    flags[7] = flags[8] = 3.0;     // gyro and accel_x in rows 7, 8: one run with row 6
+    const std::array<bool, kChannelCount> gyro{true, false, false, false};
+    const auto g = saturated_stretches(log, gyro, 0.5);
+    ASSERT_EQ(g.size(), 1u);
+    EXPECT_DOUBLE_EQ(g[0].from_s, 6.5);  // row 6 is t = 7
+    EXPECT_DOUBLE_EQ(g[0].to_s, 9.5);
+    const std::array<bool, kChannelCount> all{true, true, true, true};
+    const auto a = saturated_stretches(log, all, 0.0);
+    ASSERT_EQ(a.size(), 2u);
+    EXPECT_DOUBLE_EQ(a[0].from_s, 2.0);
+    EXPECT_DOUBLE_EQ(a[0].to_s, 2.0);
+    const LogData kept = rows_outside(log, a);
+    EXPECT_EQ(kept.size(), 6u);  // rows 0, 2..5, 9
+    EXPECT_EQ(kept.cuts.size(), 2u);
+    const std::array<bool, kChannelCount> accel_y{false, false, true, false};
+    EXPECT_TRUE(saturated_stretches(log, accel_y, 1.0).empty());
+    log.optional_columns.erase("sat_flags");
+    try {
+        saturated_stretches(log, all, 0.0);
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("ten.csv: no sat_flags column"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace driftlab::host
