@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // CLI11 prints the message (or the help); its own codes (105, 106, ...) would break the documented exit 2.
+        return app.exit(e) == 0 ? 0 : driftlab::host::kUsageExitCode;
     } catch (const driftlab::host::Error& e) {
         std::fprintf(stderr, "driftlab: error: %s\n", e.what());
         return e.exit_code();

@@ -16,11 +16,14 @@ public:
     virtual int exit_code() const { return 1; }
 };
 
+/// What `driftlab` returns for wrong flags or arguments, its own checks' and the command-line parser's alike.
+inline constexpr int kUsageExitCode = 2;
+
 /// Wrong flags or arguments on the command line.
 class UsageError : public Error {
 public:
     using Error::Error;
-    int exit_code() const override { return 2; }
+    int exit_code() const override { return kUsageExitCode; }
 };
 
 /// Malformed or unusable input data. Carries file and line (1-based; 0 when not line-oriented).

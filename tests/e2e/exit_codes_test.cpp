@@ -1,0 +1,31 @@
+// The exit codes README.md promises, for mistakes the command-line parser catches before any command runs: 2 for
+// usage like the commands' own checks, 0 for help and the version, never the parser library's private codes.
+#include <gtest/gtest.h>
+
+#include "e2e_support.hpp"
+
+namespace driftlab::e2e {
+namespace {
+
+TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
+    TempDir dir("exitcodes");
+    const RunResult unknown = run_driftlab({"gap", "x.csv", "--no-such-flag"}, dir.path());
+    EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+    EXPECT_NE(unknown.output.find("--no-such-flag"), std::string::npos) << unknown.output;
+    const RunResult invalid = run_driftlab({"gap", "x.csv", "--tau0", "-1"}, dir.path());  // a validator's refusal
+    EXPECT_EQ(invalid.exit_code, 2) << invalid.output;
+    EXPECT_NE(invalid.output.find("--tau0: expected a number > 0, got '-1'"), std::string::npos) << invalid.output;
+    EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
+    EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
+}
+
+TEST(ExitCodes, HelpAndVersionSucceed) {
+    TempDir dir("exithelp");
+    const RunResult help = run_driftlab({"gap", "--help"}, dir.path());
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.output.find("--exclude-saturated"), std::string::npos) << help.output;
+    EXPECT_EQ(run_driftlab({"--version"}, dir.path()).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace driftlab::e2e
