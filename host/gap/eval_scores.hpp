@@ -21,8 +21,10 @@ struct SizeScore {
     int logs = 0, detected = 0;
     int top1 = 0;                 ///< right verdicts
     int or_pair = 0;              ///< right verdicts or declared close calls holding the truth
-    /// Medians of the held-out shrink when the verdict is right: predicted by the diagnosis, re-measured on fresh
-    /// replicates, of the oracle (true model), and of |predicted - oracle|.
+    /// Medians (the upper middle value of an even count) of the held-out shrink: predicted by the diagnosis and
+    /// |predicted - oracle| where the verdict is right under the scored thresholds; re-measured on fresh replicates
+    /// where the permissive run-time diagnosis (EvalCase::has_shrink_check) put the truth first; of the oracle (true
+    /// model) on every detected log, since it does not depend on the verdict.
     std::optional<double> predicted, remeasured, oracle, abs_error;
 };
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 
 #include <Eigen/Dense>
@@ -454,13 +455,39 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
     std::vector<std::size_t> places;
     for (std::size_t i = 0; i < jobs.size(); ++i)
         if (runs(jobs[i])) places.push_back(i);
+    std::vector<std::uint64_t> run_seeds(jobs.size());
+    for (std::size_t i = 0; i < jobs.size(); ++i) run_seeds[i] = jobs[i].seed;
+    const std::vector<std::uint64_t> log_seeds = case_seeds(run_seeds);
     std::vector<EvalCase> out(places.size());
     run_logs(places.size(), options, [&](std::size_t n) {
         const std::size_t i = places[n];
         const Job& j = jobs[i];
-        out[n] = run_case(j.generator, j.truth, j.level, j.seed * 1009 + i, j.tune, options, sizes);
+        out[n] = run_case(j.generator, j.truth, j.level, log_seeds[i], j.tune, options, sizes);
     });
     return out;
+}
+
+std::vector<std::uint64_t> case_seeds(const std::vector<std::uint64_t>& run_seeds) {
+    std::vector<std::uint64_t> out(run_seeds.size());
+    std::set<std::uint64_t> taken;
+    for (std::size_t i = 0; i < run_seeds.size(); ++i) {
+        out[i] = run_seeds[i] * 1009 + i;
+        // A long run's later places can land on an earlier seed's (the raw-mode logs come last): such a log moves
+        // to a seed of its own above every other, so no two logs of a run share a noise path.
+        if (!taken.insert(out[i]).second) taken.insert(out[i] = kMovedCaseSeed + i);
+    }
+    return out;
+}
+
+bool significantly_better(std::size_t only_best, std::size_t only_shipped) {
+    // Exact one-sided sign test (McNemar's, conditioned on the discordant logs): P(X >= only_best), X ~ Bin(n, 1/2).
+    const std::size_t n = only_best + only_shipped;
+    if (n == 0) return false;
+    double tail = 0.0;
+    for (std::size_t k = only_best; k <= n; ++k)
+        tail += std::exp(std::lgamma(static_cast<double>(n) + 1.0) - std::lgamma(static_cast<double>(k) + 1.0) -
+                         std::lgamma(static_cast<double>(n - k) + 1.0) - static_cast<double>(n) * std::log(2.0));
+    return tail < 0.05;
 }
 
 std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
@@ -471,7 +498,8 @@ std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<De
         std::uint64_t seed;
     };
     std::vector<Job> jobs;
-    // Seeds above any of run_cases() (seed * 1009 + place stays below 2^32 for any seed range a run can hold).
+    // Seeds apart from run_cases()': seed * 1009 + place stays below 2^32 for the seeds a run takes (kMaxEvalSeed),
+    // and its moved seeds lie above 2^62.
     for (std::uint64_t s = options.score_first; s <= options.score_last; ++s)
         for (std::size_t k = 0; k < options.pairs.size(); ++k) jobs.push_back({k, (s << 32) + 0x9A1Bull + k});
     std::vector<PairCase> out(jobs.size());
@@ -527,10 +555,9 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
     // log or two by chance alone, and such a choice does not carry over to other seeds.
     if (shipped_score < 0.0 && best_score >= 0.0) return best;
     const std::vector<bool> a = right_of(shipped), b = right_of(best);
-    double only_best = 0.0, only_shipped = 0.0;
+    std::size_t only_best = 0, only_shipped = 0;
     for (std::size_t k = 0; k < a.size(); ++k) only_best += b[k] && !a[k], only_shipped += a[k] && !b[k];
-    constexpr double kZ = 1.645;
-    return only_best - only_shipped > kZ * std::sqrt(only_best + only_shipped) ? best : shipped;
+    return significantly_better(only_best, only_shipped) ? best : shipped;
 }
 
 }  // namespace driftlab::host::gap

@@ -86,7 +86,7 @@ struct EvalCase {
     bool detected = false;        ///< located cells were found
     std::vector<Explanation> tried;  ///< every candidate with its metrics (thresholds applied later)
     double shrink_check = 0.0;    ///< held-out shrink of the truth's candidate re-measured on fresh replicates
-    bool has_shrink_check = false;
+    bool has_shrink_check = false;  ///< only where the run-time diagnosis, every candidate kept, put the truth first
     double oracle_shrink = 0.0;   ///< held-out shrink with the TRUE model: the truth base plus fresh realisations
     bool has_oracle = false;      ///< of the truth generator at its planted size (planted, detected cases)
 };
@@ -131,9 +131,25 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
 /// to a run changes none of its other logs).
 std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
 
+/// The largest seed a run takes (gap-eval refuses larger ones): its logs' seeds, seed * 1009 + place, then stay
+/// below 2^32, under the two-effect logs' (seed << 32).
+inline constexpr std::uint64_t kMaxEvalSeed = 1000000;
+
+/// Where a log whose seed * 1009 + place an earlier log of the run already took is moved (case_seeds()).
+inline constexpr std::uint64_t kMovedCaseSeed = std::uint64_t{1} << 62;
+
+/// The seed of each log of a run from its seed in the run's order: seed * 1009 + its place, so that a log is the same
+/// in every run that puts it in the same place; a log whose value an earlier one took gets kMovedCaseSeed + place
+/// instead, so that no two logs share one.
+std::vector<std::uint64_t> case_seeds(const std::vector<std::uint64_t>& run_seeds);
+
+/// Whether the best thresholds beat the shipped ones on the tuning logs: `only_best` logs right under the best only,
+/// `only_shipped` under the shipped only; an exact one-sided McNemar (sign) test at 5 %.
+bool significantly_better(std::size_t only_best, std::size_t only_shipped);
+
 /// Thresholds (penalty per parameter, minimum held-out shrink, level of the level-step test, information criterion)
 /// maximising top-1 accuracy on the tuning cases with a false-positive rate <= 5 %; the shipped ones (Thresholds{})
-/// are kept unless the best is significantly better on the same cases (one-sided McNemar test at 5 %) or they
+/// are kept unless the best is significantly better on the same cases (significantly_better()) or they
 /// break the false-positive bound.
 Thresholds tune(const std::vector<EvalCase>& cases);
 

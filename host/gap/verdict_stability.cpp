@@ -35,9 +35,11 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
         const GapResult r = diagnose(copy, unit, quiet);
         for (ParameterSpread& spread : out.params)
             for (const Explanation& e : r.accepted)
-                if (e.effect == spread.effect && e.channel == spread.channel)
+                if (e.effect == spread.effect && e.channel == spread.channel) {
+                    ++spread.logs_added;
                     for (const auto& [key, value] : e.estimate())
                         if (key == spread.param) spread.values.push_back(value);
+                }
         ++out.verdicts[r.verdict];
         out.same += r.verdict == result.verdict;
         ++out.logs;
@@ -57,12 +59,12 @@ double ParameterSpread::quantile(double q) const {
 std::vector<std::string> spread_lines(const VerdictStability& s) {
     std::vector<std::string> lines;
     for (std::size_t k = 0; k < s.params.size();) {
-        // One line per added effect: its parameters are consecutive and were found again in the same logs.
+        // One line per added effect: its parameters are consecutive.
         std::size_t end = k;
         while (end < s.params.size() && s.params[end].effect == s.params[k].effect && s.params[end].channel == s.params[k].channel) ++end;
         const ParameterSpread& first = s.params[k];
         std::string line = first.effect + " on " + first.channel;
-        if (first.values.empty()) {
+        if (first.logs_added == 0) {
             line += ": added again in none of the " + std::to_string(s.logs) + " logs (";
             for (std::size_t i = k; i < end; ++i) {
                 char text[120];
@@ -71,13 +73,17 @@ std::vector<std::string> spread_lines(const VerdictStability& s) {
             }
             lines.push_back(line + ")");
         } else {
-            line += " (" + std::to_string(first.values.size()) + " of " + std::to_string(s.logs) + " logs):";
+            line += " (" + std::to_string(first.logs_added) + " of " + std::to_string(s.logs) + " logs):";
             for (std::size_t i = k; i < end; ++i) {
                 const ParameterSpread& p = s.params[i];
                 char text[200];
-                std::snprintf(text, sizeof text, "%s %s %.4g -> %.3g to %.3g (median %.3g)", i > k ? ";" : "", p.param.c_str(), p.estimate,
-                              p.quantile(0.16), p.quantile(0.84), p.quantile(0.5));
+                if (p.values.empty())
+                    std::snprintf(text, sizeof text, "%s %s %.4g -> not found again", i > k ? ";" : "", p.param.c_str(), p.estimate);
+                else
+                    std::snprintf(text, sizeof text, "%s %s %.4g -> %.3g to %.3g (median %.3g)", i > k ? ";" : "", p.param.c_str(),
+                                  p.estimate, p.quantile(0.16), p.quantile(0.84), p.quantile(0.5));
                 line += text;
+                if (!p.values.empty() && p.values.size() < p.logs_added) line += " in " + std::to_string(p.values.size());
             }
             lines.push_back(line);
         }

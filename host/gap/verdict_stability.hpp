@@ -23,6 +23,8 @@ struct ParameterSpread {
     std::string effect, channel, param;
     double estimate = 0.0;        ///< the log's own value (estimated on the whole log)
     std::vector<double> values;   ///< the simulated logs' values, sorted
+    std::size_t logs_added = 0;   ///< simulated logs that added the effect on the channel again (a DNL table's codes
+                                  ///< can differ from log to log, so a parameter may have fewer values)
     double quantile(double q) const;  ///< linear between order statistics; NaN without values
 };
 

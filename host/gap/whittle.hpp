@@ -32,7 +32,7 @@ struct AbsorbedColumns {
 /// The differences of one part of a residual, ready for the likelihood.
 struct PartPeriodogram {
     std::size_t length = 0;              ///< n: differences in the series, masked ones included (a 2-3-5 length)
-    double count = 0.0;                  ///< differences inside the part
+    double count = 0.0;                  ///< differences inside the part within the n kept (the trimmed tail is not used)
     std::vector<double> power;           ///< |sum_t m_t d_t e^{-i w_j t}|^2 / taper_energy at w_j = 2 pi j / n, j = 1..(n-1)/2
     std::vector<double> mask_overlap;    ///< sum_t m_t m_{t+tau} / taper_energy, tau = 0..n-1
     std::vector<double> taper;           ///< m_t, t = 0..n-1 (the part's mask times its taper)

@@ -436,6 +436,25 @@ TEST(GapEvalCli, RawCleanLogsAreReportedAsRawMode) {
     EXPECT_NE(md.output.find("False-positive rate on clean raw-mode logs: "), std::string::npos) << md.output;
 }
 
+// --clean-only without --clean-per-seed takes as many clean logs per seed as the run has sizes (--quick: one), not none.
+TEST(GapEvalCli, CleanOnlyWithoutACountStillDiagnosesCleanLogs) {
+    TempDir dir("gapevalclean");
+    const RunResult r = run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "11..13", "--json"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(nlohmann::json::parse(r.output.substr(r.output.find('{')))["false_positive"]["clean"], 3);  // 3 seeds x 1 size
+}
+
+// A seed range is two whole numbers in order, at most kMaxEvalSeed: "-1" is no number (not 2^64 - 1, which ran forever).
+TEST(GapEvalCli, ASeedRangeOfNegativeOrHugeNumbersIsRefused) {
+    TempDir dir("gapevalrange");
+    for (const std::string range : {"101..-1", "-3..4", "1..2000000", "5..4", "1..2x", "..4"}) {
+        const RunResult r = run_driftlab({"gap-eval", "--quick", "--seeds-score", range}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << range << ": " << r.output;
+        EXPECT_NE(r.output.find("--seeds-score: expected A..B with whole numbers 0 <= A <= B <= 1000000, got '" + range + "'"),
+                  std::string::npos) << r.output;
+    }
+}
+
 // --pairs names two generators of library effects that act at the converter input; anything else is a usage error
 // naming the pair, before any log is made.
 TEST(GapEvalCli, ABadPairIsRefusedNamingIt) {

@@ -288,12 +288,54 @@ TEST(GapEval, TuningKeepsTheShippedThresholdsUnlessTheTuningSeedsSignificantlyPr
     spurious.spectral_gain = 400.0, spurious.spectral_extra_parameters = 2;  // the best under AIC and BIC
     planted.tried = {right, spurious};
     ASSERT_EQ(decide(planted, defaults).verdict, "gauss_markov");
-    // One log is chance: of 280 threshold sets one gets it right. Three against none pass a one-sided McNemar test
-    // (3 > 1.645 sqrt(3)); two do not (2 < 1.645 sqrt(2)).
-    EXPECT_EQ(tune({clean, planted, planted}).penalty_per_param, defaults.penalty_per_param);
-    const Thresholds moved = tune({clean, planted, planted, planted});
+    // One log is chance: of 280 threshold sets one gets it right. Five against none pass the exact one-sided test
+    // (p = 2^-5 = 0.031); four do not (p = 2^-4 = 0.0625).
+    EXPECT_EQ(tune({clean, planted, planted, planted, planted}).penalty_per_param, defaults.penalty_per_param);
+    const Thresholds moved = tune({clean, planted, planted, planted, planted, planted});
     EXPECT_GE(moved.penalty_per_param, 0.5);
     EXPECT_EQ(decide(planted, moved).verdict, "flicker");
+}
+
+// The tuning's test against the shipped thresholds is the exact binomial tail of the discordant logs, P(X >= b),
+// X ~ Bin(b + c, 1/2), below 5 %: by hand, 5-0 0.031, 4-0 0.0625, 6-1 0.0625, 7-1 0.035, 8-1 0.0195, 7-2 0.090,
+// 15-5 0.0207, 14-6 0.0577. The normal approximation it replaced took 3-0 (p = 0.125) as significant.
+TEST(GapEval, TheTuningsMcNemarTestIsExact) {
+    EXPECT_FALSE(significantly_better(0, 0));
+    EXPECT_FALSE(significantly_better(3, 0));
+    EXPECT_FALSE(significantly_better(4, 0));
+    EXPECT_TRUE(significantly_better(5, 0));
+    EXPECT_FALSE(significantly_better(6, 1));
+    EXPECT_TRUE(significantly_better(7, 1));
+    EXPECT_TRUE(significantly_better(8, 1));
+    EXPECT_FALSE(significantly_better(7, 2));
+    EXPECT_TRUE(significantly_better(15, 5));
+    EXPECT_FALSE(significantly_better(14, 6));
+    EXPECT_FALSE(significantly_better(1, 9));
+}
+
+// A log's seed is its run seed * 1009 + its place; where that is taken by an earlier log (a run of 2304 logs whose
+// raw-mode logs come last: seeds 300..359 with every generator, 4 sizes and 4 clean logs per seed), the later log
+// moves to a seed of its own. Every seed of the run is then distinct, and the others are as before.
+TEST(GapEval, NoTwoLogsOfARunShareASeed) {
+    std::vector<std::uint64_t> run;
+    const std::size_t per_seed_plain = 4 + 7 * 4, per_seed_raw = 4;  // clean logs and 7 generators x 4 sizes; sar x 4
+    for (int raw = 0; raw < 2; ++raw)
+        for (const auto& [first, last] : {std::pair<std::uint64_t, std::uint64_t>{1, 4}, {300, 359}})
+            for (std::uint64_t s = first; s <= last; ++s)
+                for (std::size_t k = 0; k < (raw ? per_seed_raw : per_seed_plain); ++k) run.push_back(s);
+    ASSERT_EQ(run.size(), 2304u);
+    const std::vector<std::uint64_t> seeds = case_seeds(run);
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < run.size(); ++i) {
+        if (seeds[i] == run[i] * 1009 + i) continue;
+        ++moved;
+        EXPECT_EQ(seeds[i], kMovedCaseSeed + i);
+    }
+    EXPECT_EQ(moved, 7u);  // sar_mismatch logs of seeds 331 and 332 had landed on those of seeds 332 and 333
+    std::vector<std::uint64_t> sorted = seeds;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
+    EXPECT_EQ(case_seeds({5, 5, 5}), (std::vector<std::uint64_t>{5045, 5046, 5047}));  // a short run: as before
 }
 
 // Between two Gaussian candidates, Vuong's test runs over the Fourier frequencies of the spectral likelihood,

@@ -22,14 +22,19 @@ TEST(ParameterSpread, QuantilesInterpolateBetweenOrderStatistics) {
 TEST(ParameterSpread, EachAddedEffectGetsOneLineAndOneNotFoundAgainSaysSo) {
     VerdictStability s;
     s.logs = 4;
-    s.params = {{"gauss_markov", "gyro", "sigma_dps", 0.02, {0.01, 0.02, 0.03}},
-                {"gauss_markov", "gyro", "tau_s", 20.0, {10.0, 20.0, 30.0}},
-                {"thermal_second_tc", "gyro", "c3_dps", -0.3, {}},
-                {"thermal_second_tc", "gyro", "t2_s", 12000.0, {}}};
+    s.params = {{"gauss_markov", "gyro", "sigma_dps", 0.02, {0.01, 0.02, 0.03}, 3},
+                {"gauss_markov", "gyro", "tau_s", 20.0, {10.0, 20.0, 30.0}, 3},
+                {"thermal_second_tc", "gyro", "c3_dps", -0.3, {}, 0},
+                {"thermal_second_tc", "gyro", "t2_s", 12000.0, {}, 0},
+                // A DNL table's transitions differ from log to log: 507 is not found again, 508 in 2 of the 3 logs.
+                {"adc_dnl", "gyro", "t507_counts", 507.4, {}, 3},
+                {"adc_dnl", "gyro", "t508_counts", 508.6, {508.5, 508.7}, 3}};
     const std::vector<std::string> lines = spread_lines(s);
-    ASSERT_EQ(lines.size(), 2u);
+    ASSERT_EQ(lines.size(), 3u);
     EXPECT_EQ(lines[0], "gauss_markov on gyro (3 of 4 logs): sigma_dps 0.02 -> 0.0132 to 0.0268 (median 0.02); tau_s 20 -> 13.2 to 26.8 (median 20)");
     EXPECT_EQ(lines[1], "thermal_second_tc on gyro: added again in none of the 4 logs (c3_dps -0.3, t2_s 1.2e+04)");
+    EXPECT_EQ(lines[2], "adc_dnl on gyro (3 of 4 logs): t507_counts 507.4 -> not found again; t508_counts 508.6 -> 509 to 509 "
+                        "(median 509) in 2");
 }
 
 }  // namespace
