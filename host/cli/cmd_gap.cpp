@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "driftlab/proto/messages.hpp"
 #include "host/cli/commands.hpp"
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
@@ -147,7 +148,9 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     if (r.diffuse_gap)
         std::printf("diffuse gap: the held-out score %.2f exceeds its bound %.2f with no cell located (many cells a little "
                     "off)%s\n", r.gap_before_heldout, r.gap_bound_before,
-                    options.search_diffuse ? "; candidates searched on it" : "; --search-diffuse tries the candidates on it");
+                    r.diffuse_searched ? "; candidates searched on it"
+                    : options.explain  ? "; --search-diffuse tries the candidates on it"
+                                       : "; no candidate tried (--locate-only)");
     constexpr std::size_t kCellsShown = 15;  // the largest |z| first; a terminal, not a table
     for (std::size_t i = 0; i < r.located.size() && i < kCellsShown; ++i) {
         const auto& l = r.located[i];
@@ -191,8 +194,8 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     std::printf("\n");
     for (const auto& n : r.not_tried) std::printf("not tried: %s (%s)\n", n.effect.c_str(), n.reason.c_str());
     if (r.timing.sequence_jumps || r.timing.gap_events)
-        std::printf("timing: %zu sequence jumps (%llu frames lost), %zu gap events\n", r.timing.sequence_jumps,
-                    static_cast<unsigned long long>(r.timing.lost_frames), r.timing.gap_events);
+        std::printf("timing: %s (%s lost), %s\n", gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
+                    gap::counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(), gap::counted(r.timing.gap_events, "gap event").c_str());
 }
 
 // " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else "".
@@ -291,7 +294,7 @@ void register_gap(CLI::App& app) {
         ->check(positive_number());
     cmd->add_option("--block", o->block, "Plain recordings: samples averaged per output (an order-0 smoother of that "
                                          "window; default 1)")
-        ->check(CLI::Range(1, 100000));
+        ->check(CLI::Range(1, static_cast<int>(proto::kConversionsPerOutputMax)));
     cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
                     "the file's values, mean shapes refitted to the log; default: the paper's unit");
     cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start");

@@ -227,7 +227,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
 
     result.final_model = result.whole_log_model = result.base;
     result.diffuse_gap = result.located.empty() && result.gap_before_heldout > result.gap_bound_before;
-    if (result.located.empty() && !(result.diffuse_gap && options.search_diffuse)) {
+    result.diffuse_searched = result.diffuse_gap && options.search_diffuse && options.explain;
+    if (result.located.empty() && !result.diffuse_searched) {
         result.verdict = "none";
     } else if (options.explain) {
         // The channels with located cells; for a diffuse gap, every channel (each is judged on its own bound).

@@ -38,7 +38,7 @@ json params_json(const std::vector<std::pair<std::string, double>>& list) {
     return params;
 }
 
-json explanation_json(const Explanation& e, InformationCriterion ic) {
+json explanation_json(const Explanation& e, InformationCriterion ic, bool added) {
     const json params = params_json(e.params);
     const StepsOverShape& s = e.shape_steps;
     const json shape_steps = s.tested ? json{{"statistic", report::json_number(s.statistic)},
@@ -62,6 +62,7 @@ json explanation_json(const Explanation& e, InformationCriterion ic) {
             {"level_step_p", e.residual_step.tested ? report::json_number(e.residual_step.p_value) : json(nullptr)},
             {"steps_over_shape", shape_steps},
             {"accepted", e.accepted},
+            {"added", added},
             {"step", e.step},
             {"replaces_model", e.replaces_given},
             {"ambiguous_with", e.ambiguous_with.empty() ? json(nullptr) : json(e.ambiguous_with)},
@@ -75,9 +76,9 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["verdict"] = r.verdict;
     j["information_criterion"] = criterion_name(options.explain_options.information_criterion);
     json ex = json::array();
-    for (const auto& e : r.accepted) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
+    for (const auto& e : r.accepted) ex.push_back(explanation_json(e, options.explain_options.information_criterion, true));
     for (const auto& e : r.tried)
-        if (!was_added(r, e)) ex.push_back(explanation_json(e, options.explain_options.information_criterion));
+        if (!was_added(r, e)) ex.push_back(explanation_json(e, options.explain_options.information_criterion, false));
     j["explanations"] = ex;
     const auto given_json = [](const std::vector<Explanation>& list) {
         json out = json::array();
@@ -104,6 +105,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
                       {"heldout", report::json_number(r.gap_after_heldout)},
                       {"heldout_bound", report::json_number(r.gap_bound_after)}};
     j["diffuse_gap"] = r.diffuse_gap;
+    j["diffuse_searched"] = r.diffuse_searched;
     json constant = json::array();
     for (const auto& k : r.constant_channels)
         constant.push_back({{"channel", kChannelNames[channel_index(k.channel)]}, {"counts", report::json_number(k.counts)}});

@@ -146,7 +146,7 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
                    fixed(e.shape_steps.steps[1].t_s, 1) + " s) describe its mean better than " + e.effect +
                    " (likelihood " + fixed(e.shape_steps.statistic, 1) + " over the price " + fixed(e.shape_steps.margin, 1) +
                    "): a level step no library effect makes; the added effects stay as partial explanations";
-    const std::string located = std::to_string(r.located.size()) + " cells located";
+    const std::string located = counted(r.located.size(), "cell") + " located";
     if (!r.accepted.empty()) {
         const Explanation& e = r.accepted.front();
         std::string out = "on " + e.channel + " it removes " + fixed(100 * e.heldout_shrink, 0) + " % of the held-out gap excess (" +
@@ -166,8 +166,9 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
         if (!r.diffuse_gap)
             return std::string("no cell located and the held-out score within its bound: the calibrated base simulator") +
                    (r.given.empty() ? "" : ", with the model's own effects,") + " explains the log";
-        return options.search_diffuse ? "no cell located; the diffuse gap was searched and no candidate passed"
-                                      : "no cell located, but the held-out score exceeds its bound (a diffuse gap); --search-diffuse tries the candidates on it";
+        if (r.diffuse_searched) return "no cell located; the diffuse gap was searched and no candidate passed";
+        return std::string("no cell located, but the held-out score exceeds its bound (a diffuse gap); ") +
+               (options.explain ? "--search-diffuse tries the candidates on it" : "no candidate tried (--locate-only)");
     }
     if (!options.explain) return located + "; no candidate tried (--locate-only)";
     return located + " and no candidate passes (held-out shrink, held-out likelihood and penalised gain)";
@@ -204,11 +205,13 @@ std::string noise_free_sentence(const GapResult& r) {
                                            "filtered signal, or a sensor far quieter than one count?)";
 }
 
+std::string counted(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
+
 std::string saturated_channels_sentence(const GapResult& r) {
     std::string out;
     for (const auto& s : r.saturated)
-        out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(s.channel)]) + " in " + std::to_string(s.rows) +
-               (s.rows == 1 ? " row at t = " + fixed(s.first_t_s, 1) + " s" : " rows from t = " + fixed(s.first_t_s, 1) + " s to " + fixed(s.last_t_s, 1) + " s");
+        out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(s.channel)]) + " in " + counted(s.rows, "row") +
+               (s.rows == 1 ? " at t = " + fixed(s.first_t_s, 1) + " s" : " from t = " + fixed(s.first_t_s, 1) + " s to " + fixed(s.last_t_s, 1) + " s");
     if (out.empty()) return "";
     return out + ": a conversion reached code 0 or the top code there (the firmware's sat_flags); the simulator clips only "
                  "where its own noise reaches a rail, so a shock, or a rail the unit sits near, can read as a gap (--from and --to "
@@ -219,7 +222,7 @@ std::string saturated_channels_sentence(const GapResult& r) {
 std::string left_out_sentence(const GapResult& r) {
     std::string out;
     for (const auto& c : r.left_out)
-        out += (out.empty() ? "" : ", ") + std::to_string(c.rows) + (c.rows == 1 ? " row" : " rows") + " from t = " + format_double(c.from_s) +
+        out += (out.empty() ? "" : ", ") + counted(c.rows, "row") + " from t = " + format_double(c.from_s) +
                " s to " + format_double(c.to_s) + " s";
     if (out.empty()) return "";
     return out + " (--exclude, --exclude-saturated): the rows either side are joined, and the replicates, simulated on the same instants, "
@@ -288,12 +291,13 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
            << fixed(l.z, 1) << " | " << (std::isnan(l.ratio) ? "diff " + fixed(l.difference, 3) : "ratio " + fixed(l.ratio, 3))
            << " [" << fixed(l.interval_low, 3) << ", " << fixed(l.interval_high, 3) << "] |\n";
     }
-    md << "\n" << r.located.size() << " cells located before, " << r.located_after.size() << " after.\n\n";
+    md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     if (r.diffuse_gap)
         md << "Diffuse gap: the held-out score exceeds its bound with no cell located (many cells a little off, none "
               "alone beyond the threshold). "
-           << (options.search_diffuse ? "The candidates were searched on it (--search-diffuse).\n\n"
-                                      : "The candidates were not searched (--search-diffuse searches them).\n\n");
+           << (r.diffuse_searched  ? "The candidates were searched on it (--search-diffuse).\n\n"
+               : options.explain   ? "The candidates were not searched (--search-diffuse searches them).\n\n"
+                                   : "No candidate was tried (--locate-only).\n\n");
     md << "## Which: candidate effects\n\nFitted on the fitting part, judged on the held-out part; among accepted "
           "Gaussian candidates the full-log spectral information criterion ("
        << criterion_name(options.explain_options.information_criterion)

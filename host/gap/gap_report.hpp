@@ -13,6 +13,9 @@
 
 namespace driftlab::host::gap {
 
+/// "1 cell", "2 cells": a count and its noun, plural by "s".
+std::string counted(std::size_t n, const std::string& noun);
+
 /// One sentence on why the verdict is what it is (the rule that decided it).
 std::string verdict_reason(const GapResult& result, const GapOptions& options);
 

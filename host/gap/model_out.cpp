@@ -51,7 +51,11 @@ ModelOut model_out(const GapModel& model, const std::array<bool, kChannelCount>&
             out.notes.emplace_back(note);
             raw_counts = sim::kMinCalibratedRawStdCounts;
         }
-        m.channels[i].raw_noise_std_unit = raw_counts / counts_per_unit(model, c);
+        // The loader multiplies back by counts_per_unit; a quotient rounded down would read as just below the floor.
+        const double cpu = counts_per_unit(model, c);
+        double unit_std = raw_counts / cpu;
+        while (unit_std * cpu < raw_counts) unit_std = std::nextafter(unit_std, INFINITY);
+        m.channels[i].raw_noise_std_unit = unit_std;
     }
     const std::uint8_t mode = m.firmware.mode;
     m.firmware = firmware_config(model.smoothing, raw, source);

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "driftlab/proto/messages.hpp"
 #include "host/fit/series.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -42,7 +43,9 @@ ColumnMapping parse_column_mapping(const std::string& text) {
 LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
     if (how.columns.empty()) throw UsageError("a plain recording needs at least one --as CHANNEL=COLUMN:LSB");
     if (!(how.sample_period_s > 0.0)) throw UsageError("a plain recording needs its sample period (--tau0 SECONDS > 0)");
-    if (how.block < 1) throw UsageError("--block: at least 1 sample per output");
+    if (how.block < 1 || how.block > proto::kConversionsPerOutputMax)
+        throw UsageError("--block: 1 to " + std::to_string(proto::kConversionsPerOutputMax) +
+                         " samples per output (the most conversions per output a log's smoothing can hold)");
     std::vector<std::string> names;
     std::vector<bool> mapped(kChannelCount, false);
     for (const auto& m : how.columns) {
@@ -54,6 +57,10 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         mapped[c] = true;
     }
     const std::vector<fit::Series> series = fit::series_from_table(table, names, "", how.sample_period_s);
+    // series_from_table() finds a time column by name and gives no series of it.
+    for (const auto& m : how.columns)
+        if (std::none_of(series.begin(), series.end(), [&](const fit::Series& s) { return s.name == m.column; }))
+            throw UsageError("--as: column '" + m.column + "' is the table's time column, which times the rows; it cannot also be a channel");
     const std::size_t outputs = table.rows() / how.block;
     if (outputs < 2)
         throw DataError(table.source_name, 0, std::to_string(table.rows()) + " rows make fewer than two blocks of " +

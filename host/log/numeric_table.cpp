@@ -51,6 +51,8 @@ NumericTable read_numeric_table(const std::string& path) {
     while (std::getline(in, text)) {
         ++number;
         any_line = true;
+        // A byte-order mark (editors on Windows write one) would make the first name unrecognisable.
+        if (number == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
         std::string_view line = trim_blanks(text);
         if (line.empty()) continue;
         if (line.front() == '#') {
@@ -76,10 +78,14 @@ NumericTable read_numeric_table(const std::string& path) {
             throw DataError(path, number,
                             "expected " + std::to_string(rows_by_line.front().size()) + " fields (as line " +
                                 std::to_string(line_numbers.front()) + "), got " + std::to_string(values.size()));
-        if (!table.names.empty() && values.size() != table.names.size())
-            throw DataError(path, number,
-                            "expected " + std::to_string(table.names.size()) + " fields (as the name line), got " +
-                                std::to_string(values.size()));
+        // One name over one data line names a series written on one line; a second line shows whether it was one.
+        if (!table.names.empty() && !(table.names.size() == 1 && rows_by_line.empty())) {
+            const bool first_unchecked = table.names.size() == 1 && rows_by_line.size() == 1;
+            const std::size_t got = first_unchecked ? rows_by_line.front().size() : values.size();
+            if (got != table.names.size())
+                throw DataError(path, first_unchecked ? line_numbers.front() : number,
+                                "expected " + std::to_string(table.names.size()) + " fields (as the name line), got " + std::to_string(got));
+        }
         rows_by_line.push_back(std::move(values));
         line_numbers.push_back(number);
     }

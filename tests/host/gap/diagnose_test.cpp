@@ -157,6 +157,18 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     EXPECT_EQ(j["replicates"], small_options().replicates);
     const auto& e = j["explanations"][0];
     for (const char* key : {"effect", "params", "gap_before", "gap_after", "heldout_shrink"}) EXPECT_TRUE(e.contains(key)) << key;
+    // `added` says which candidates are in the model: the added ones first, then every other tried, whether it
+    // passed (`accepted`) or not.
+    std::size_t added = 0;
+    for (std::size_t k = 0; k < j["explanations"].size(); ++k) {
+        const bool in_model = j["explanations"][k]["added"].get<bool>();
+        EXPECT_EQ(in_model, k < r.accepted.size()) << k;
+        if (in_model) {
+            EXPECT_TRUE(j["explanations"][k]["accepted"].get<bool>()) << k;
+        }
+        added += in_model;
+    }
+    EXPECT_EQ(added, r.accepted.size());
     const auto& cell = j["located"][0];
     for (const char* key : {"statistic", "channel", "cell", "ratio", "z"}) EXPECT_TRUE(cell.contains(key)) << key;
     bool static_listed = false;
@@ -314,6 +326,24 @@ TEST(Diagnose, TheVerdictReasonReadsALevelStepAsOutsizedIncrementsOrAsNoLibraryE
     EXPECT_EQ(unexplained.find("outsized"), std::string::npos) << unexplained;
 }
 
+// Counts in sentences take their noun's number: one cell, one row; two rows.
+TEST(Diagnose, SentencesSayOneCellAndTwoRows) {
+    EXPECT_EQ(counted(1, "cell"), "1 cell");
+    EXPECT_EQ(counted(0, "cell"), "0 cells");
+    EXPECT_EQ(counted(2, "gap event"), "2 gap events");
+    GapResult r;
+    r.located.resize(1);
+    GapOptions o = small_options();
+    o.explain = false;
+    EXPECT_EQ(verdict_reason(r, o).rfind("1 cell located", 0), 0u) << verdict_reason(r, o);
+    r.saturated = {{Channel::gyro, 1, 100.0, 100.0}, {Channel::accel_z, 2, 3.0, 4.0}};
+    EXPECT_EQ(saturated_channels_sentence(r).rfind("gyro in 1 row at t = 100.0 s, accel_z in 2 rows from t = 3.0 s to 4.0 s:", 0), 0u)
+        << saturated_channels_sentence(r);
+    r.left_out = {{5, 10.0, 10.5, 1}, {9, 20.0, 22.0, 2}};
+    EXPECT_EQ(left_out_sentence(r).rfind("1 row from t = 10 s to 10.5 s, 2 rows from t = 20 s to 22 s (--exclude", 0), 0u)
+        << left_out_sentence(r);
+}
+
 TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLinearity) {
     GapOptions o = small_options();
     o.explain = false;
@@ -432,9 +462,20 @@ TEST(Diagnose, ADiffuseGapIsReportedAndSearchedOnRequest) {
         EXPECT_EQ(plain.verdict, "none");
         EXPECT_TRUE(plain.tried.empty());
         EXPECT_TRUE(gap_to_json(plain, o)["diffuse_gap"].get<bool>());
+        EXPECT_FALSE(plain.diffuse_searched);
         o.search_diffuse = true;
+        if (seed == 78) {  // with --locate-only nothing is searched, and nothing says it was
+            GapOptions locate = o;
+            locate.explain = false;
+            const GapResult only = diagnose(log, sim::paper_model(), locate);
+            EXPECT_FALSE(only.diffuse_searched);
+            EXPECT_EQ(only.verdict, "none");
+            EXPECT_EQ(verdict_reason(only, locate), "no cell located, but the held-out score exceeds its bound (a diffuse gap); "
+                                                    "no candidate tried (--locate-only)");
+        }
         const GapResult searched = diagnose(log, sim::paper_model(), o);
         EXPECT_FALSE(searched.tried.empty()) << "seed " << seed;
+        EXPECT_TRUE(searched.diffuse_searched);
         named += searched.verdict == "thermal_second_tc";
         if (searched.verdict == "thermal_second_tc") {
             EXPECT_LT(searched.gap_after_heldout, searched.gap_before_heldout) << "seed " << seed;

@@ -8,6 +8,7 @@
 #include "host/gap/candidates.hpp"
 #include "host/gap/model_out.hpp"
 #include "host/util/error.hpp"
+#include "sim/model/model_file.hpp"
 #include "sim/model/white_noise.hpp"
 
 namespace driftlab::host::gap {
@@ -46,6 +47,19 @@ TEST(ModelOut, TheAnalysedChannelsTheSmoothingAndTheEffectsAreWritten) {
     ASSERT_EQ(s.effects.size(), 1u);
     EXPECT_EQ(s.effects[0].name, "gauss_markov");
     EXPECT_EQ(s.effects[0].table, m.effects[0].table);
+}
+
+// A noise raised to the floor is written so that the loader, multiplying back, reads the floor and not a hair
+// below it (LSB 0.0027 deg/s had written 0.5 counts as 0.49999999999999994, which the loader refused).
+TEST(ModelOut, ANoiseRaisedToTheFloorReadsBackAtTheFloor) {
+    for (const double lsb : {0.0027, 0.0043, 0.0099, 0.00875, 0.001, 0.0031, 0.0057, 0.0071}) {
+        GapModel m = calibrated();
+        m.unit.channels[0].front_end.span_unit = 512.0 * lsb;  // one code per LSB, as a plain recording's unit
+        m.base[0].sigma_n_counts = 0.05;                        // a quiet sensor: raised to the floor
+        const ModelOut out = model_out(m, {true, false, false, false}, false, "quiet.txt");
+        EXPECT_GE(out.model.channels[0].raw_noise_std_unit * counts_per_unit(m, Channel::gyro), sim::kMinCalibratedRawStdCounts) << lsb;
+        EXPECT_NO_THROW(sim::parse_model(sim::write_model(out.model, "test"), "quiet.toml")) << lsb;
+    }
 }
 
 TEST(ModelOut, ASmoothingNoFirmwareConfigExpressesIsRefusedNamingTheLog) {

@@ -114,6 +114,23 @@ TEST(PlainRecording, BadMappingsAndTablesAreRefusedSayingWhy) {
     EXPECT_THROW(log_from_table(t, how), UsageError);  // column mapped twice
     how.columns = {parse_column_mapping("gyro=col2:1")};
     EXPECT_THROW(log_from_table(t, how), UsageError);  // no such column
+    how.columns = {parse_column_mapping("gyro=col1:1")};
+    how.block = 65;  // more conversions per output than a log's smoothing holds: the option, not the metadata, is named
+    try {
+        log_from_table(t, how);
+        ADD_FAILURE() << "a block of 65 was accepted";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("--block: 1 to 64 samples per output"), std::string::npos) << e.what();
+    }
+    how.block = 1;
+    // The time column times the rows; mapped as a channel it was looked up among the channels' and crashed.
+    how.columns = {parse_column_mapping("gyro=t_s:0.01")};
+    try {
+        log_from_table(table({"t_s", "gx"}, {{0.0, 0.01, 0.02, 0.03}, {1.0, 2.0, 3.0, 4.0}}), how);
+        ADD_FAILURE() << "the time column was taken as a channel";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("--as: column 't_s' is the table's time column"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

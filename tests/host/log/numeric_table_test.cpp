@@ -42,6 +42,18 @@ TEST(NumericTable, OneLineFileIsOneSeries) {
     ASSERT_EQ(t.columns.size(), 1u);
     EXPECT_EQ(t.columns[0], (std::vector<double>{1.5, 2.5, 3.5, 4.5}));
     EXPECT_EQ(t.names[0], "col1");
+    // With a name: the one line is still one named series.
+    const auto named = read_numeric_table(write_temp("o.txt", "gx\n1 2 3 4 5 6\n"));
+    ASSERT_EQ(named.columns.size(), 1u);
+    EXPECT_EQ(named.names[0], "gx");
+    EXPECT_EQ(named.rows(), 6u);
+}
+
+// A byte-order mark before the name line is not part of the first name: the time column is still found by name.
+TEST(NumericTable, AByteOrderMarkIsNotPartOfTheFirstName) {
+    const auto t = read_numeric_table(write_temp("bom.csv", "\xEF\xBB\xBFt_s,gx\n0,1\n0.01,2\n"));
+    EXPECT_EQ(t.names, (std::vector<std::string>{"t_s", "gx"}));
+    EXPECT_EQ(t.columns[0], (std::vector<double>{0.0, 0.01}));
 }
 
 TEST(NumericTable, RejectionsNameTheLine) {
@@ -50,6 +62,9 @@ TEST(NumericTable, RejectionsNameTheLine) {
     EXPECT_NE(rejection("r.txt", "1 2\n3 4\n5\n").find(":3: expected 2 fields (as line 1), got 1"), std::string::npos);
     EXPECT_NE(rejection("n.txt", "1 2\n3 nan\n").find(":2: field 2 'nan': not finite"), std::string::npos);
     EXPECT_NE(rejection("m.txt", "1,2\n3,,4\n").find(":2: field 2 '': empty field"), std::string::npos);
+    // One name over lines of several fields: the first data line is named, as with several names.
+    EXPECT_NE(rejection("w.txt", "gx\n1 2\n3 4\n").find(":2: expected 1 fields (as the name line), got 2"), std::string::npos);
+    EXPECT_NE(rejection("x.txt", "a b\n1 2 3\n").find(":2: expected 2 fields (as the name line), got 3"), std::string::npos);
 }
 
 TEST(NumericTable, ReadsTheRealRecordings) {
