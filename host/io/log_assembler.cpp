@@ -192,6 +192,11 @@ void LogAssembler::start_log() {
 }
 
 void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, const proto::RawPayload* raw) {
+    // No conversion behind it (a POLL right after CONFIG restarted the windows): its zeros are no reading.
+    if (sample.n_window == 0) {
+        ++stats_.empty_samples;
+        return;
+    }
     const std::uint64_t tick = ticks_.unwrap(sample.tick);
     const double t_s = static_cast<double>(tick) / static_cast<double>(version_->tick_hz);
     if (stats_.last_t_s && t_s <= *stats_.last_t_s) {

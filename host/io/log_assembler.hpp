@@ -43,6 +43,7 @@ struct AssemblyStats {
     std::uint64_t reordered_frames = 0;
     std::uint64_t stale_samples = 0;   ///< SAMPLEs whose time was not after the previous row (repeated answers)
     std::uint64_t unreachable_samples = 0;  ///< SAMPLEs (CRC intact) with a value the converter cannot produce
+    std::uint64_t empty_samples = 0;   ///< SAMPLEs of an empty window (n_window 0: answered before a conversion)
     std::uint64_t raw_missing = 0;
     std::uint64_t gaps = 0;
     std::uint64_t firmware_restarts = 0;

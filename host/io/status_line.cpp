@@ -34,10 +34,11 @@ std::string format_status_line(const AssemblyStats& s, double wall_s, bool conne
 }
 
 std::string skipped_samples(const AssemblyStats& stats) {
-    if (stats.stale_samples + stats.unreachable_samples == 0) return "";
-    return "skipped " + std::to_string(stats.stale_samples + stats.unreachable_samples) + " samples: " +
-           std::to_string(stats.stale_samples) + " repeated (time not after the previous row), " +
-           std::to_string(stats.unreachable_samples) + " beyond the converter's reach";
+    const std::uint64_t skipped = stats.stale_samples + stats.unreachable_samples + stats.empty_samples;
+    if (skipped == 0) return "";
+    return "skipped " + std::to_string(skipped) + (skipped == 1 ? " sample: " : " samples: ") + std::to_string(stats.stale_samples) +
+           " repeated (time not after the previous row), " + std::to_string(stats.unreachable_samples) + " beyond the converter's reach, " +
+           std::to_string(stats.empty_samples) + " of an empty window (just after a CONFIG restarted the windows)";
 }
 
 }  // namespace driftlab::host::io

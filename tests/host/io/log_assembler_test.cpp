@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "driftlab/proto/encoder.hpp"
+#include "host/io/status_line.hpp"
 #include "host/log/log_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -56,12 +57,12 @@ public:
         st.uptime_ticks = uptime;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_status(st, s, o, n); });
     }
-    void sample(std::uint32_t tick, std::int32_t gyro_q8 = 500 * 256) {
+    void sample(std::uint32_t tick, std::int32_t gyro_q8 = 500 * 256, std::uint8_t n_window = 8) {
         proto::SamplePayload p{};
         p.tick = tick;
-        for (auto& v : p.value_q8) v = 500 * 256;
-        p.value_q8[0] = gyro_q8;
-        p.n_window = 8;
+        for (auto& v : p.value_q8) v = n_window ? 500 * 256 : 0;
+        p.value_q8[0] = n_window ? gyro_q8 : 0;
+        p.n_window = n_window;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_sample(p, s, o, n); });
     }
     void raw(std::uint32_t tick, std::uint16_t gyro_code) {
@@ -183,6 +184,23 @@ TEST(LogAssembler, ASampleBeyondTheConvertersReachIsSkippedAndCounted) {
     ASSERT_EQ(log.size(), 2u);
     EXPECT_DOUBLE_EQ(log.t_s[1], 0.3);
     EXPECT_EQ(log.channel(Channel::gyro)[1], -341.0);
+}
+
+TEST(LogAssembler, ASampleOfAnEmptyWindowIsSkippedAndCounted) {
+    // A POLL answered just after a CONFIG restarted the windows holds no conversion: every value 0, inside the
+    // converter's range, so only n_window tells it from a reading (it had put a row of zeros first in a log).
+    AssemblyStats stats;
+    const LogData log = recorded("empty.csv", 0, [](Board& b) {
+        b.sample(1 * kTicksPerOutput, 0, 0);
+        b.sample(2 * kTicksPerOutput, 500 * 256, 1);  // one conversion: a reading
+        b.sample(3 * kTicksPerOutput);
+    }, stats);
+    EXPECT_EQ(stats.empty_samples, 1u);
+    EXPECT_EQ(stats.rows, 2u);
+    ASSERT_EQ(log.size(), 2u);
+    EXPECT_DOUBLE_EQ(log.t_s[0], 0.2);
+    EXPECT_EQ(skipped_samples(stats), "skipped 1 sample: 0 repeated (time not after the previous row), 0 beyond the converter's reach, "
+                                      "1 of an empty window (just after a CONFIG restarted the windows)");
 }
 
 TEST(LogAssembler, ARawFrameWithACodeTheConverterCannotMakeIsKeptOutLikeALostOne) {
