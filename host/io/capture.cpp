@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "host/log/log_metadata.hpp"
 #include "host/util/error.hpp"
 
 namespace driftlab::host::io {
@@ -105,6 +106,9 @@ CaptureReader::CaptureReader(const std::string& path) : path_(path) {
         }
         const std::size_t colon = text.find(": ");
         if (colon == std::string::npos) throw DataError(path, line, "header line without 'key: value'");
+        // Its keys become the log's metadata keys: a damaged one is the capture's fault, named here.
+        if (!LogMetadata::is_valid_key(text.substr(0, colon)))
+            throw DataError(path, line, "header key '" + text.substr(0, colon) + "' is not lower_snake_case");
         header_.emplace_back(text.substr(0, colon), text.substr(colon + 2));
     }
     if (line == 0) throw DataError(path, 1, "not a driftlab capture (empty or no magic line)");

@@ -82,6 +82,14 @@ TEST(Capture, NotACaptureIsADataErrorAndATailOfNoRecordIsDamage) {
     ASSERT_EQ(r.damaged().size(), 1u);
     EXPECT_EQ(r.damaged()[0].offset, 21u);
     EXPECT_EQ(r.damaged()[0].bytes, 15u);
+    // A damaged header key is the capture's fault, named by its line (it had surfaced as a usage error of the log).
+    std::ofstream(path, std::ios::binary) << "driftlab-capture: 1\nport: /dev/ttyUSB0\nbAud: 9600\n\n";
+    try {
+        CaptureReader{path};
+        ADD_FAILURE() << "a key that is no metadata key was accepted";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find(":3: header key 'bAud' is not lower_snake_case"), std::string::npos) << e.what();
+    }
     fs::remove(path);
 }
 
