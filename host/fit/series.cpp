@@ -81,9 +81,7 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 bool is_canonical_log(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-    std::string first;
-    std::getline(in, first);
-    return first.rfind("# driftlab-log:", 0) == 0;
+    return starts_as_log(in);
 }
 
 std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names,

@@ -33,6 +33,13 @@ std::optional<std::pair<std::string, std::string>> split_comment_key_value(std::
     return std::make_pair(key, std::string(trim_blanks(body.substr(colon + 1))));
 }
 
+// The key and value of a magic line (text without its line end, not blank); none for another line.
+std::optional<std::pair<std::string, std::string>> magic_key_value(std::string_view text) {
+    auto kv = text.front() == '#' ? split_comment_key_value(text.substr(1)) : std::nullopt;
+    if (!kv || kv->first != kMagicKey) return std::nullopt;
+    return kv;
+}
+
 ColumnPlan plan_columns(const std::vector<std::string_view>& names, LogData& log, std::uint64_t line) {
     ColumnPlan plan;
     plan.field_count = names.size();
@@ -129,8 +136,8 @@ public:
 private:
     void magic(std::string_view text, std::uint64_t number) {
         seen_magic_ = true;
-        const auto kv = text.front() == '#' ? split_comment_key_value(text.substr(1)) : std::nullopt;
-        if (!kv || kv->first != kMagicKey)
+        const auto kv = magic_key_value(text);
+        if (!kv)
             throw DataError(log_.source_name, number,
                             "not a driftlab log: the first line must be '# driftlab-log: 1', got '" +
                                 std::string(text.substr(0, 60)) + "'");
@@ -250,6 +257,15 @@ LogData read_log(const std::string& path, const ReadOptions& options) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
     return parse_log(in, path, options);
+}
+
+bool starts_as_log(std::istream& in) {
+    for (std::string text; std::getline(in, text);) {
+        if (!text.empty() && text.back() == '\r') text.pop_back();
+        if (trim_blanks(text).empty()) continue;  // the reader skips blank lines before the magic too
+        return magic_key_value(text).has_value();
+    }
+    return false;
 }
 
 }  // namespace driftlab::host

@@ -21,6 +21,8 @@ LogWriter::LogWriter(const std::string& path, const LogMetadata& metadata, std::
         const bool known = std::any_of(kOptionalLogColumns.begin(), kOptionalLogColumns.end(),
                                        [&](const char* k) { return name == k; });
         if (!known) throw UsageError("log column '" + name + "' is not an optional column of log format v1");
+        if (std::count(optional_columns_.begin(), optional_columns_.end(), name) > 1)
+            throw UsageError("log column '" + name + "' named twice");
     }
     if (path_ == "-") {
         fd_ = STDOUT_FILENO;

@@ -118,6 +118,7 @@ TEST(LogIo, WriterRefusesRowsItsReaderWouldReject) {
     r.optional_values = {1.0};
     EXPECT_THROW(w.write_row(r), UsageError);  // no optional columns declared
     EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"colour"}), UsageError);
+    EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"tick", "tick"}), UsageError);  // the reader refuses a repeat
     {
         LogMetadata m;
         m.set("adc_bits", std::int64_t{10});
@@ -241,6 +242,23 @@ TEST(LogIo, CommentsBlankLinesAndCrLfAreAccepted) {
     EXPECT_EQ(log.gaps[0].before_row, 1u);
     EXPECT_EQ(log.gaps[0].line, 8u);
     EXPECT_EQ(log.seq[1], 9u);
+}
+
+// What tells a canonical log from a plain table (fit, allan, gap) is the magic line as the reader takes it: after
+// blank lines, with blanks around the key; a table's name line or a comment is not one.
+TEST(LogIo, ALogIsKnownByItsMagicLineAsTheReaderTakesIt) {
+    const auto starts = [](const std::string& text) {
+        std::istringstream in(text);
+        return starts_as_log(in);
+    };
+    EXPECT_TRUE(starts("# driftlab-log: 1\nt_s,seq\n"));
+    EXPECT_TRUE(starts("\n  \r\n# driftlab-log: 1\n"));
+    EXPECT_TRUE(starts("#driftlab-log : 2\n"));  // another version is still a log, which the reader then refuses
+    EXPECT_FALSE(starts("# a comment\n# driftlab-log: 1\n"));
+    EXPECT_FALSE(starts("t_s,gx\n0,1\n"));
+    EXPECT_FALSE(starts(""));
+    const LogData log = parse("\n# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n");
+    EXPECT_EQ(log.size(), 1u);
 }
 
 TEST(LogIo, MissingFileIsADataError) {
