@@ -146,9 +146,25 @@ bool CaptureReader::records_resume_at(std::size_t offset) const {
     return end == data_.size() || record_at(end, first->t_us).has_value();
 }
 
+// A record of a known kind that runs past the end of the file: the recorder was killed while writing it.
+bool CaptureReader::cut_record_at(std::size_t offset) const {
+    if (!known_kind(data_[offset])) return false;
+    const std::size_t left = data_.size() - offset;
+    return left < kRecordHeaderSize || left - kRecordHeaderSize < get_le(data_.data() + offset + 9, 4);
+}
+
 std::optional<CaptureRecord> CaptureReader::next() {
     if (pos_ >= data_.size() || truncated_at_) return std::nullopt;
-    if (auto rec = record_at(pos_, last_t_us_)) {
+    auto rec = record_at(pos_, last_t_us_);
+    if (rec) {
+        // A damaged length swallows the records after it: its end then falls among bytes that are no record, while
+        // whole records start inside what it claims. (A whole record followed by damage has none inside.)
+        const std::size_t end = pos_ + kRecordHeaderSize + rec->payload.size();
+        if (end != data_.size() && !record_at(end, rec->t_us) && !cut_record_at(end))
+            for (std::size_t k = pos_ + kRecordHeaderSize; k < end && rec; ++k)
+                if (records_resume_at(k)) rec.reset();
+    }
+    if (rec) {
         pos_ += kRecordHeaderSize + rec->payload.size();
         last_t_us_ = rec->t_us;
         return rec;

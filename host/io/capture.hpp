@@ -70,8 +70,10 @@ public:
     };
 
     /// The next whole record, or nullopt at the end. A record is whole when its kind is known, its payload lies in
-    /// the file and its time neither goes back nor jumps a day ahead; where none is, the reader skips to the next
-    /// offset where two whole records follow one another (or one ends the file) and notes the damage.
+    /// the file, its time neither goes back nor jumps a day ahead, and it does not end among bytes that are no
+    /// record while whole records start inside it (a damaged length, which would swallow them); where none is, the
+    /// reader skips to the next offset where two whole records follow one another (or one ends the file) and notes
+    /// the damage.
     std::optional<CaptureRecord> next();
     /// Byte offset of a cut last record (the recorder was killed mid-write), once next() reached it.
     std::optional<std::uint64_t> truncated_at() const { return truncated_at_; }
@@ -81,6 +83,7 @@ public:
 private:
     std::optional<CaptureRecord> record_at(std::size_t offset, std::uint64_t after_us) const;
     bool records_resume_at(std::size_t offset) const;
+    bool cut_record_at(std::size_t offset) const;
 
     std::string path_;
     std::vector<std::uint8_t> data_;

@@ -126,3 +126,32 @@ TEST(Capture, ADamagedStretchIsSkippedToTheNextWholeRecords) {
     EXPECT_FALSE(r.truncated_at());
     fs::remove(path);
 }
+
+// A damaged length field (here the third of six records claims 40 bytes, not 7) would swallow the records after it
+// and hand them to the decoder as its payload: it is damage, and the records inside it are read.
+TEST(Capture, ADamagedLengthDoesNotSwallowTheRecordsAfterIt) {
+    const std::string path = temp_file("badlen.cap");
+    std::vector<std::uint64_t> offsets;
+    {
+        CaptureWriter w(path, {{"port", "/dev/pts/3"}});
+        for (std::uint8_t k = 0; k < 6; ++k) {
+            offsets.push_back(fs::file_size(path));
+            const std::uint8_t bytes[7] = {0x7e, k, 0x11, 0x22, 0x33, 0x44, k};
+            w.write(k % 2 ? CaptureKind::tx : CaptureKind::rx, bytes, sizeof bytes);
+        }
+    }
+    {
+        std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
+        f.seekp(static_cast<std::streamoff>(offsets[2] + 9));  // kind u8, t_us u64, then len u32
+        const char len[4] = {40, 0, 0, 0};
+        f.write(len, sizeof len);
+    }
+    CaptureReader r(path);
+    std::vector<std::uint64_t> read;
+    while (auto rec = r.next()) read.push_back(rec->offset);
+    EXPECT_EQ(read, (std::vector<std::uint64_t>{offsets[0], offsets[1], offsets[3], offsets[4], offsets[5]}));
+    ASSERT_EQ(r.damaged().size(), 1u);
+    EXPECT_EQ(r.damaged()[0].offset, offsets[2]);
+    EXPECT_EQ(r.damaged()[0].bytes, offsets[3] - offsets[2]);
+    fs::remove(path);
+}
