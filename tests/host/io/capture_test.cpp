@@ -21,6 +21,19 @@ std::string temp_file(const std::string& name) {
     return (fs::temp_directory_path() / ("driftlab_cap_" + std::to_string(::getpid()) + "_" + name)).string();
 }
 
+// Six records of 7 frame-like bytes (a kind letter among them; the second is k), received and sent in turn; their
+// offsets.
+std::vector<std::uint64_t> six_records(const std::string& path) {
+    std::vector<std::uint64_t> offsets;
+    CaptureWriter w(path, {{"port", "/dev/pts/3"}});
+    for (std::uint8_t k = 0; k < 6; ++k) {
+        offsets.push_back(fs::file_size(path));
+        const std::uint8_t bytes[7] = {0x7e, k, 'R', 0, 0, 0, k};
+        w.write(k % 2 ? CaptureKind::tx : CaptureKind::rx, bytes, sizeof bytes);
+    }
+    return offsets;
+}
+
 }  // namespace
 
 TEST(Capture, RecordsAndHeaderRoundTrip) {
@@ -97,15 +110,7 @@ TEST(Capture, NotACaptureIsADataErrorAndATailOfNoRecordIsDamage) {
 // that record only: the reader resumes where whole records follow one another again and says where it skipped.
 TEST(Capture, ADamagedStretchIsSkippedToTheNextWholeRecords) {
     const std::string path = temp_file("damaged.cap");
-    std::vector<std::uint64_t> offsets;
-    {
-        CaptureWriter w(path, {{"port", "/dev/pts/3"}});
-        for (std::uint8_t k = 0; k < 6; ++k) {
-            offsets.push_back(fs::file_size(path));
-            const std::uint8_t bytes[7] = {0x7e, k, 'R', 0, 0, 0, k};  // frame-like bytes, a kind letter among them
-            w.write(k % 2 ? CaptureKind::tx : CaptureKind::rx, bytes, sizeof bytes);
-        }
-    }
+    const std::vector<std::uint64_t> offsets = six_records(path);
     {
         std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
         f.seekp(static_cast<std::streamoff>(offsets[2]));
@@ -131,15 +136,7 @@ TEST(Capture, ADamagedStretchIsSkippedToTheNextWholeRecords) {
 // and hand them to the decoder as its payload: it is damage, and the records inside it are read.
 TEST(Capture, ADamagedLengthDoesNotSwallowTheRecordsAfterIt) {
     const std::string path = temp_file("badlen.cap");
-    std::vector<std::uint64_t> offsets;
-    {
-        CaptureWriter w(path, {{"port", "/dev/pts/3"}});
-        for (std::uint8_t k = 0; k < 6; ++k) {
-            offsets.push_back(fs::file_size(path));
-            const std::uint8_t bytes[7] = {0x7e, k, 0x11, 0x22, 0x33, 0x44, k};
-            w.write(k % 2 ? CaptureKind::tx : CaptureKind::rx, bytes, sizeof bytes);
-        }
-    }
+    const std::vector<std::uint64_t> offsets = six_records(path);
     {
         std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
         f.seekp(static_cast<std::streamoff>(offsets[2] + 9));  // kind u8, t_us u64, then len u32
