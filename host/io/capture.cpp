@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include "host/log/log_metadata.hpp"
 #include "host/util/error.hpp"
@@ -122,15 +123,13 @@ std::optional<std::string> CaptureReader::header_value(const std::string& key) c
     return std::nullopt;
 }
 
-std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::uint64_t after_us) const {
-    // A day: the longest wait between two records the reader believes (a recorder writes at least a status per poll).
-    constexpr std::uint64_t kMaxStepUs = 86'400'000'000ULL;
+std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::uint64_t after_us, std::uint64_t max_step_us) const {
     if (data_.size() - offset < kRecordHeaderSize) return std::nullopt;
     const std::uint8_t* p = data_.data() + offset;
     if (!known_kind(p[0])) return std::nullopt;
     const std::uint64_t t_us = get_le(p + 1, 8);
     const std::uint64_t len = get_le(p + 9, 4);
-    if (t_us < after_us || t_us - after_us > kMaxStepUs || data_.size() - offset - kRecordHeaderSize < len) return std::nullopt;
+    if (t_us < after_us || t_us - after_us > max_step_us || data_.size() - offset - kRecordHeaderSize < len) return std::nullopt;
     CaptureRecord rec;
     rec.kind = static_cast<CaptureKind>(p[0]);
     rec.t_us = t_us;
@@ -156,6 +155,13 @@ bool CaptureReader::cut_record_at(std::size_t offset) const {
 std::optional<CaptureRecord> CaptureReader::next() {
     if (pos_ >= data_.size() || truncated_at_) return std::nullopt;
     auto rec = record_at(pos_, last_t_us_);
+    if (!rec) {
+        // A stream-mode recorder writes nothing while the board is silent: a record more than a day after the last is
+        // believed where a whole record follows it within a day (a damaged time is followed by none).
+        rec = record_at(pos_, last_t_us_, std::numeric_limits<std::uint64_t>::max());
+        const std::size_t end = rec ? pos_ + kRecordHeaderSize + rec->payload.size() : 0;
+        if (rec && (end == data_.size() || !record_at(end, rec->t_us))) rec.reset();
+    }
     if (rec) {
         // A damaged length swallows the records after it: its end then falls among bytes that are no record, while
         // whole records start inside what it claims. (A whole record followed by damage has none inside.)

@@ -70,7 +70,8 @@ public:
     };
 
     /// The next whole record, or nullopt at the end. A record is whole when its kind is known, its payload lies in
-    /// the file, its time neither goes back nor jumps a day ahead, and it does not end among bytes that are no
+    /// the file, its time neither goes back nor jumps a day ahead (unless a whole record follows it within a day: a
+    /// board silent that long in stream mode), and it does not end among bytes that are no
     /// record while whole records start inside it (a damaged length, which would swallow them); where none is, the
     /// reader skips to the next offset where two whole records follow one another (or one ends the file) and notes
     /// the damage.
@@ -81,7 +82,9 @@ public:
     const std::vector<Damage>& damaged() const { return damaged_; }
 
 private:
-    std::optional<CaptureRecord> record_at(std::size_t offset, std::uint64_t after_us) const;
+    /// A day: the longest wait between two records believed on their own (a recorder polling writes every period).
+    static constexpr std::uint64_t kMaxStepUs = 86'400'000'000ULL;
+    std::optional<CaptureRecord> record_at(std::size_t offset, std::uint64_t after_us, std::uint64_t max_step_us = kMaxStepUs) const;
     bool records_resume_at(std::size_t offset) const;
     bool cut_record_at(std::size_t offset) const;
 

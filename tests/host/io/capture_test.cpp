@@ -132,6 +132,34 @@ TEST(Capture, ADamagedStretchIsSkippedToTheNextWholeRecords) {
     fs::remove(path);
 }
 
+// A stream-mode recorder writes nothing while the board is silent: records more than a day after the last are read
+// where whole records follow them (here the last three, 25 h later); they had been dropped as a killed recorder's tail.
+TEST(Capture, RecordsAfterASilenceOfMoreThanADayAreRead) {
+    const std::string path = temp_file("silent.cap");
+    const std::vector<std::uint64_t> offsets = six_records(path);
+    {
+        std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
+        for (std::size_t k = 3; k < 6; ++k) {
+            f.seekg(static_cast<std::streamoff>(offsets[k] + 1));  // after the kind byte: t_us, u64 little-endian
+            std::uint8_t b[8];
+            f.read(reinterpret_cast<char*>(b), 8);
+            std::uint64_t t = 0;
+            for (int i = 7; i >= 0; --i) t = (t << 8) | b[i];
+            t += 25ULL * 3600 * 1'000'000;
+            for (int i = 0; i < 8; ++i) b[i] = static_cast<std::uint8_t>(t >> (8 * i));
+            f.seekp(static_cast<std::streamoff>(offsets[k] + 1));
+            f.write(reinterpret_cast<const char*>(b), 8);
+        }
+    }
+    CaptureReader r(path);
+    std::vector<std::uint64_t> read;
+    while (auto rec = r.next()) read.push_back(rec->offset);
+    EXPECT_EQ(read, offsets);
+    EXPECT_TRUE(r.damaged().empty());
+    EXPECT_FALSE(r.truncated_at());
+    fs::remove(path);
+}
+
 // A damaged length field (here the third of six records claims 40 bytes, not 7) would swallow the records after it
 // and hand them to the decoder as its payload: it is damage, and the records inside it are read.
 TEST(Capture, ADamagedLengthDoesNotSwallowTheRecordsAfterIt) {
