@@ -282,7 +282,7 @@ void register_hil(CLI::App& app) {
     cmd->add_option("--preset", opts->preset, "fig3 (4000 s from power-on at the model's output period) or fig2 (1000 outputs 0.1 s "
                                               "apart, raw and least-squares)")
         ->capture_default_str();
-    cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s]");
+    cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s]")->check(positive_number());
     cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds");
     cmd->add_option("--window", opts->window, "Least-squares window N [conversions]")->check(CLI::Range(1, 64));
     cmd->add_option("--conversions", opts->conversions,

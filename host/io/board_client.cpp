@@ -23,9 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kConfigFieldNames[] = {"output_period_ms", "conversions_per_output", "window",
-                                             "fit_order", "mode", "raw"};
-
 std::string describe_config_difference(const proto::ConfigPayload& want, const proto::ConfigPayload& got) {
     const int w[] = {want.output_period_ms, want.conversions_per_output, want.window, want.fit_order, want.mode,
                      want.raw};
@@ -33,7 +30,7 @@ std::string describe_config_difference(const proto::ConfigPayload& want, const p
     std::string text;
     for (int i = 0; i < 6; ++i) {
         if (w[i] != g[i]) {
-            text += std::string(text.empty() ? "" : ", ") + kConfigFieldNames[i] + " is " + std::to_string(g[i]) +
+            text += std::string(text.empty() ? "" : ", ") + proto::config_field_name(static_cast<std::uint8_t>(i)) + " is " + std::to_string(g[i]) +
                     " instead of " + std::to_string(w[i]);
         }
     }
@@ -197,7 +194,7 @@ ConfigResult BoardClient::configure(const proto::ConfigPayload& wanted) {
             proto::NakPayload nak{};
             if (!proto::parse(answer->payload.data(), answer->payload_len, &nak)) continue;
             result.problem = std::string("the board refused CONFIG_SET: ") + status_name(nak.status) +
-                             (nak.field < 6 ? std::string(" in field ") + kConfigFieldNames[nak.field] : "");
+                             (proto::config_field_name(nak.field) ? std::string(" in field ") + proto::config_field_name(nak.field) : "");
             return result;
         }
         acked = true;

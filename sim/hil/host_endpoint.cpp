@@ -28,8 +28,6 @@ bool same_config(const proto::ConfigPayload& a, const proto::ConfigPayload& b) {
            a.window == b.window && a.fit_order == b.fit_order && a.mode == b.mode && a.raw == b.raw;
 }
 
-const char* kConfigFieldNames[] = {"output_period_ms", "conversions_per_output", "window", "fit_order", "mode", "raw"};
-
 }  // namespace
 
 HostEndpoint::HostEndpoint(const HostPlan& plan, RecordSink sink, ReadyFn on_ready)
@@ -159,7 +157,7 @@ void HostEndpoint::handle_frame(double t_s) {
         proto::NakPayload nak{};
         if (!proto::parse(p, len, &nak) || (phase_ != Phase::config_set && phase_ != Phase::stop_stream)) break;
         const std::string field =
-            nak.field < 6 ? kConfigFieldNames[nak.field] : std::string("field ") + std::to_string(nak.field);
+            proto::config_field_name(nak.field) ? proto::config_field_name(nak.field) : std::string("field ") + std::to_string(nak.field);
         throw host::UsageError("the firmware refused the configuration: status " + std::to_string(nak.status) +
                                " (" + proto::status_name(static_cast<proto::Status>(nak.status)) + ") on " + field);
     }

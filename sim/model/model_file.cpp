@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "driftlab/proto/status.hpp"
+#include "firmware/core/config.hpp"
 #include "host/util/error.hpp"
 #include "sim/effects/effect.hpp"
 #include "sim/effects/params.hpp"
@@ -113,6 +115,12 @@ public:
         return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
     }
 
+    /// The line of `key` in this table, or the table's own where the file does not set the key.
+    std::uint32_t line(std::string_view key) const {
+        const toml::node* n = table_.get(key);
+        return line_of(n ? *n : static_cast<const toml::node&>(table_));
+    }
+
 private:
     const toml::node* find(std::string_view key) {
         seen_.insert(std::string(key));
@@ -130,12 +138,14 @@ private:
 };
 
 void read_adc(TableReader& r, AdcParams& adc) {
-    r.integer("bits", adc.bits, 1, 16);
+    // The firmware's windows, the DNL, INL and bit-flip effects and the converter range checks are all 10-bit
+    // (ATmega328P): another resolution would abort the run or stick a channel at the top code.
+    r.integer("bits", adc.bits, 10, 10);
     r.number("vref_v", adc.vref_v, Range::positive);
     r.finish();
 }
 
-void read_channel(TableReader& r, Channel c, const AdcParams& adc, ChannelModel& ch) {
+void read_channel(TableReader& r, Channel c, ChannelModel& ch) {
     const std::string u = channel_unit(c);
     FrontEndParams& fe = ch.front_end;
     r.number("sensitivity_v_per_" + u, fe.sensitivity_v_per_unit, Range::positive);
@@ -148,11 +158,24 @@ void read_channel(TableReader& r, Channel c, const AdcParams& adc, ChannelModel&
     r.number("drift_c2_counts", ch.drift.c2_counts, Range::any);
     r.number("drift_tau_s", ch.drift.tau_s, Range::positive);
     r.finish();
-    const double raw_counts = ch.raw_noise_std_unit * FrontEnd(fe, adc.vref_v).counts_per_unit(std::ldexp(1.0, adc.bits));
-    if (raw_counts > 0.0 && raw_counts < kMinCalibratedRawStdCounts)
-        throw ConfigError(r.full("raw_noise_std_" + u), 0,
+}
+
+// The raw noise in counts depends on [adc] and the channel's front end, either of which the file may set: checked
+// for every channel once both are read, at the noise key's line, else the channel table's, else the [adc] table's.
+void check_raw_noise(const toml::table& root, const SimModel& m) {
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        const ChannelModel& ch = m.channels[i];
+        const std::string key = std::string("raw_noise_std_") + channel_unit(static_cast<Channel>(i));
+        const double raw_counts = ch.raw_noise_std_unit * FrontEnd(ch.front_end, m.adc.vref_v).counts_per_unit(std::ldexp(1.0, m.adc.bits));
+        if (!(raw_counts > 0.0 && raw_counts < kMinCalibratedRawStdCounts)) continue;
+        const std::string table = std::string("channels.") + kChannelNames[i];
+        const toml::node* here = root.at_path(table + "." + key).node();
+        if (here == nullptr) here = root.at_path(table).node();
+        if (here == nullptr) here = root.get("adc");
+        throw ConfigError(table + "." + key, here ? line_of(*here) : 0,
                           "is " + std::to_string(raw_counts) + " counts; the calibration through the quantiser needs 0 or >= " +
                               std::to_string(kMinCalibratedRawStdCounts) + " counts");
+    }
 }
 
 void read_firmware(TableReader& r, proto::ConfigPayload& fw) {
@@ -166,6 +189,18 @@ void read_firmware(TableReader& r, proto::ConfigPayload& fw) {
     r.boolean("raw", raw);
     fw.raw = raw ? 1 : 0;
     r.finish();
+    // The firmware's own check too, whose limits join fields (a conversion rate too fast for the output period):
+    // refused here, not by the board after the handshake.
+    const fw::ConfigCheck check = fw::validate(fw);
+    if (check.status != proto::Status::ok) {
+        const char* name = proto::config_field_name(check.field);
+        const std::string field = name ? name : "conversions_per_output";
+        throw ConfigError(r.full(field), r.line(field),
+                          std::string("the firmware refuses this configuration (") + proto::status_name(check.status) +
+                              "): output_period_ms / (4 x conversions_per_output) must give a conversion period of " +
+                              std::to_string(fw::kMinConversionPeriodTicks) + " to " + std::to_string(fw::kMaxConversionPeriodTicks) +
+                              " ticks of 4 us");
+    }
 }
 
 void read_packet_loss(TableReader& r, PacketLossParams& pl) {
@@ -177,7 +212,7 @@ void read_packet_loss(TableReader& r, PacketLossParams& pl) {
     r.number("loss_in_bad", pl.loss_in_bad, Range::unit_interval);
     r.finish();
     if (pl.p_good_to_bad > 0.0 && pl.p_bad_to_good == 0.0)
-        throw ConfigError(r.full("p_bad_to_good"), 0, "must be > 0 when p_good_to_bad > 0 (the link would never recover)");
+        throw ConfigError(r.full("p_bad_to_good"), r.line("p_bad_to_good"), "must be > 0 when p_good_to_bad > 0 (the link would never recover)");
 }
 
 void read_direction(TableReader& r, DirectionParams& d) {
@@ -236,11 +271,12 @@ SimModel read_model(const toml::table& root, SimModel m) {
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             if (const toml::table* ct = chans.table(kChannelNames[i])) {
                 TableReader sub(*ct, chans.full(kChannelNames[i]));
-                read_channel(sub, static_cast<Channel>(i), m.adc, m.channels[i]);
+                read_channel(sub, static_cast<Channel>(i), m.channels[i]);
             }
         }
         chans.finish();
     }
+    check_raw_noise(root, m);
     if (const toml::table* t = r.table("effects")) read_effects(*t, m.effects);
     if (const toml::table* t = r.table("firmware")) {
         TableReader sub(*t, "firmware");

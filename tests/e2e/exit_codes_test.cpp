@@ -15,6 +15,12 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     const RunResult invalid = run_driftlab({"gap", "x.csv", "--tau0", "-1"}, dir.path());  // a validator's refusal
     EXPECT_EQ(invalid.exit_code, 2) << invalid.output;
     EXPECT_NE(invalid.output.find("--tau0: expected a number > 0, got '-1'"), std::string::npos) << invalid.output;
+    // hil --duration nan had run until the disk filled, inf wrote no row.
+    for (const std::string bad : {"nan", "inf", "0"}) {
+        const RunResult duration = run_driftlab({"hil", "--duration", bad, "-o", dir.file("h.csv")}, dir.path());
+        EXPECT_EQ(duration.exit_code, 2) << bad << ": " << duration.output;
+        EXPECT_NE(duration.output.find("--duration: expected a number > 0, got '" + bad + "'"), std::string::npos) << duration.output;
+    }
     EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
 }

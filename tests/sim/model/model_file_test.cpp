@@ -102,15 +102,25 @@ TEST(ModelFile, OutOfRangeValuesNameTheKeyAndTheRange) {
     EXPECT_NE(error_of("[firmware]\nmode = \"burst\"\n").find("expected one of \"poll\", \"stream\""),
               std::string::npos);
     EXPECT_NE(error_of("[adc]\nbits = 2.5\n").find("adc.bits: expected an integer"), std::string::npos);
+    // Checks that join keys name a line too.
     EXPECT_NE(error_of("[link.to_host.packet_loss]\np_good_to_bad = 0.1\np_bad_to_good = 0\n")
-                  .find("never recover"),
+                  .find("m.toml:3: link.to_host.packet_loss.p_bad_to_good: must be > 0 when p_good_to_bad > 0 (the link would never recover)"),
               std::string::npos);
+    // The firmware, 10-bit, is all a model can run on: 12 bits had aborted the run at its first 4-digit code.
+    EXPECT_NE(error_of("[adc]\nbits = 12\n").find("m.toml:2: adc.bits: must be in [10, 10], got 12"), std::string::npos);
+    // The firmware's own check, fields joined: 64 conversions per 10 ms output is a conversion every 39 us.
+    const std::string fast = error_of("[firmware]\noutput_period_ms = 10\nconversions_per_output = 64\n");
+    EXPECT_NE(fast.find("m.toml:3: firmware.conversions_per_output: the firmware refuses this configuration"), std::string::npos) << fast;
 }
 
 TEST(ModelFile, RawNoiseTooSmallToCalibrateIsRejected) {
     // 0.01 deg/s = 0.057 counts: below what white noise through the quantiser can reproduce.
     const std::string e = error_of("[channels.gyro]\nraw_noise_std_dps = 0.01\n");
-    EXPECT_NE(e.find("channels.gyro.raw_noise_std_dps"), std::string::npos) << e;
+    EXPECT_NE(e.find("m.toml:2: channels.gyro.raw_noise_std_dps"), std::string::npos) << e;
+    // The counts follow from the front end as well: a file that only widens the gyro's span shrinks its noise in
+    // counts below the floor (it had been checked only where the file set the noise, and read NaN, then code 0).
+    const std::string span = error_of("[channels.gyro]\nspan_dps = 2000\n");
+    EXPECT_NE(span.find("m.toml:1: channels.gyro.raw_noise_std_dps: is "), std::string::npos) << span;
 }
 
 TEST(ModelFile, SyntaxErrorNamesTheLine) {
@@ -180,7 +190,7 @@ scale_counts = 40.0
 )", "two.toml");
     ASSERT_EQ(m.effects.size(), 3u);
     m.name = "odd \"quoted\" name";
-    m.adc = {12, 3.3};
+    m.adc = {10, 3.3};  // the only resolution a model takes; the reference is odd
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         ChannelModel& ch = m.channels[i];
         ch.front_end = {0.1 + 0.2 * static_cast<double>(i), 1.0 / 3.0, 7.0 / 9.0, -1e-7, };

@@ -99,6 +99,10 @@ enum class ConfigField : uint8_t {
 
 constexpr uint8_t kNakFieldNone = 0xFF;
 
+/// A ConfigField's name as docs/protocol.md and model files spell it ("output_period_ms"...); nullptr for a value
+/// that names no field (kNakFieldNone, or a corrupt NAK).
+const char* config_field_name(uint8_t field);
+
 /// Ranges of ConfigPayload (docs/protocol.md §3.4).
 constexpr uint16_t kOutputPeriodMinMs = 10;
 constexpr uint16_t kOutputPeriodMaxMs = 60000;
