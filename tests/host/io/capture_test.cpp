@@ -34,6 +34,13 @@ std::vector<std::uint64_t> six_records(const std::string& path) {
     return offsets;
 }
 
+// The offsets of the records `r` reads, to its end.
+std::vector<std::uint64_t> offsets_read(CaptureReader& r) {
+    std::vector<std::uint64_t> out;
+    while (auto rec = r.next()) out.push_back(rec->offset);
+    return out;
+}
+
 }  // namespace
 
 TEST(Capture, RecordsAndHeaderRoundTrip) {
@@ -152,8 +159,7 @@ TEST(Capture, RecordsAfterASilenceOfMoreThanADayAreRead) {
         }
     }
     CaptureReader r(path);
-    std::vector<std::uint64_t> read;
-    while (auto rec = r.next()) read.push_back(rec->offset);
+    const std::vector<std::uint64_t> read = offsets_read(r);
     EXPECT_EQ(read, offsets);
     EXPECT_TRUE(r.damaged().empty());
     EXPECT_FALSE(r.truncated_at());
@@ -172,8 +178,7 @@ TEST(Capture, ADamagedLengthDoesNotSwallowTheRecordsAfterIt) {
         f.write(len, sizeof len);
     }
     CaptureReader r(path);
-    std::vector<std::uint64_t> read;
-    while (auto rec = r.next()) read.push_back(rec->offset);
+    const std::vector<std::uint64_t> read = offsets_read(r);
     EXPECT_EQ(read, (std::vector<std::uint64_t>{offsets[0], offsets[1], offsets[3], offsets[4], offsets[5]}));
     ASSERT_EQ(r.damaged().size(), 1u);
     EXPECT_EQ(r.damaged()[0].offset, offsets[2]);
