@@ -56,7 +56,7 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
         t_s = table.columns[*time_index];
         for (std::size_t k = 1; k < t_s.size(); ++k)
             if (!(t_s[k] > t_s[k - 1]))
-                throw DataError(table.source_name, 0,
+                throw DataError(table.source_name, table.line_of_row(k),
                                 "time column '" + table.names[*time_index] + "' does not increase at row " +
                                     std::to_string(k + 1) + " (" + format_double(t_s[k - 1]) + " then " +
                                     format_double(t_s[k]) + ")");

@@ -93,7 +93,7 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
             for (std::size_t i = b * how.block; i < (b + 1) * how.block; ++i) {
                 const double code = std::round(s->values[i] / m.lsb) + offset;
                 if (!(code >= 0.0 && code <= kFullScale))
-                    throw DataError(table.source_name, 0,
+                    throw DataError(table.source_name, table.line_of_row(i),
                                     "column '" + m.column + "' row " + std::to_string(i + 1) + " (" + format_double(s->values[i]) +
                                         ") lies beyond the 10-bit range around the column's median (" +
                                         format_double(kMidScale) + " codes of LSB " + format_double(m.lsb) +

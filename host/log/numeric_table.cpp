@@ -93,8 +93,10 @@ NumericTable read_numeric_table(const std::string& path) {
     if (rows_by_line.empty()) throw DataError(path, number, "no numeric data lines");
 
     if (rows_by_line.size() == 1 && table.names.size() <= 1) {
+        table.row_lines.assign(rows_by_line.front().size(), line_numbers.front());
         table.columns.push_back(std::move(rows_by_line.front()));
     } else {
+        table.row_lines = line_numbers;
         const std::size_t width = rows_by_line.front().size();
         table.columns.assign(width, {});
         for (auto& col : table.columns) col.reserve(rows_by_line.size());

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <cstdint>
 #include <vector>
 
 namespace driftlab::host {
@@ -15,8 +16,11 @@ struct NumericTable {
     std::vector<std::string> names;
     std::vector<std::vector<double>> columns;
     std::vector<std::string> comments;  ///< text of the `#` lines, without the '#'
+    std::vector<std::uint64_t> row_lines;  ///< the file line (1-based) of each row; all one line for a one-line series
 
     std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+    /// The file line of `row` for messages; 0 (no line) for a table not read from a file.
+    std::uint64_t line_of_row(std::size_t row) const { return row < row_lines.size() ? row_lines[row] : 0; }
     /// Index of the column called `name`; throws UsageError listing the names when there is none.
     std::size_t column_index(const std::string& name) const;
 };

@@ -100,6 +100,16 @@ TEST(PlainRecording, BadMappingsAndTablesAreRefusedSayingWhy) {
     } catch (const DataError& e) {
         EXPECT_NE(std::string(e.what()).find("col1' row 4"), std::string::npos) << e.what();
     }
+    // Read from a file, the row's file line is named too (after a comment and a name line, row 4 is line 6).
+    NumericTable read = t;
+    read.source_name = "gyro.txt";
+    read.row_lines = {3, 4, 5, 6};
+    try {
+        log_from_table(read, how);
+        ADD_FAILURE() << "a column beyond the 10-bit range was accepted";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("gyro.txt:6: column 'col1' row 4"), std::string::npos) << e.what();
+    }
     // One wild value among ordinary ones is named at its own row: the median it cannot move sets the scale.
     try {
         log_from_table(table({"col1"}, {{0.0, 1.0, 2.0, 1e308, 3.0, 4.0, 5.0}}), how);

@@ -33,6 +33,10 @@ TEST(NumericTable, ColumnsSplitByBlanksOrCommasWithNamesAndComments) {
     EXPECT_EQ(t.names, (std::vector<std::string>{"t", "x", "y"}));
     EXPECT_EQ(t.columns[2], (std::vector<double>{2, 4, 6}));
     EXPECT_EQ(t.column_index("x"), 1u);
+    // Each row's file line, for messages: comments, the name line and a blank line come between.
+    EXPECT_EQ(t.row_lines, (std::vector<std::uint64_t>{3, 4, 6}));
+    EXPECT_EQ(t.line_of_row(2), 6u);
+    EXPECT_EQ(t.line_of_row(3), 0u);
     EXPECT_THROW(t.column_index("z"), UsageError);
     ASSERT_EQ(t.comments.size(), 1u);
 }
@@ -47,6 +51,7 @@ TEST(NumericTable, OneLineFileIsOneSeries) {
     ASSERT_EQ(named.columns.size(), 1u);
     EXPECT_EQ(named.names[0], "gx");
     EXPECT_EQ(named.rows(), 6u);
+    EXPECT_EQ(named.line_of_row(5), 2u);  // a one-line series: every value on that line
 }
 
 // A byte-order mark before the name line is not part of the first name: the time column is still found by name.
