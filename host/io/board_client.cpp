@@ -193,8 +193,9 @@ ConfigResult BoardClient::configure(const proto::ConfigPayload& wanted) {
         if (answer->type == proto::MsgType::nak) {
             proto::NakPayload nak{};
             if (!proto::parse(answer->payload.data(), answer->payload_len, &nak)) continue;
+            const char* field = proto::config_field_name(nak.field);
             result.problem = std::string("the board refused CONFIG_SET: ") + status_name(nak.status) +
-                             (proto::config_field_name(nak.field) ? std::string(" in field ") + proto::config_field_name(nak.field) : "");
+                             (field ? std::string(" in field ") + field : "");
             return result;
         }
         acked = true;

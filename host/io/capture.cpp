@@ -154,19 +154,19 @@ bool CaptureReader::cut_record_at(std::size_t offset) const {
 
 std::optional<CaptureRecord> CaptureReader::next() {
     if (pos_ >= data_.size() || truncated_at_) return std::nullopt;
+    // A stream-mode recorder writes nothing while the board is silent: a record more than a day after the last is
+    // believed where a whole record follows it within a day (a damaged time is followed by none).
     auto rec = record_at(pos_, last_t_us_);
-    if (!rec) {
-        // A stream-mode recorder writes nothing while the board is silent: a record more than a day after the last is
-        // believed where a whole record follows it within a day (a damaged time is followed by none).
-        rec = record_at(pos_, last_t_us_, std::numeric_limits<std::uint64_t>::max());
-        const std::size_t end = rec ? pos_ + kRecordHeaderSize + rec->payload.size() : 0;
-        if (rec && (end == data_.size() || !record_at(end, rec->t_us))) rec.reset();
-    }
+    const bool in_a_day = rec.has_value();
+    if (!in_a_day) rec = record_at(pos_, last_t_us_, std::numeric_limits<std::uint64_t>::max());
     if (rec) {
+        const std::size_t end = pos_ + kRecordHeaderSize + rec->payload.size();
+        const bool at_end = end == data_.size();
+        const bool followed = !at_end && record_at(end, rec->t_us).has_value();
+        if (!in_a_day && !followed) rec.reset();
         // A damaged length swallows the records after it: its end then falls among bytes that are no record, while
         // whole records start inside what it claims. (A whole record followed by damage has none inside.)
-        const std::size_t end = pos_ + kRecordHeaderSize + rec->payload.size();
-        if (end != data_.size() && !record_at(end, rec->t_us) && !cut_record_at(end))
+        if (in_a_day && !at_end && !followed && !cut_record_at(end))
             for (std::size_t k = pos_ + kRecordHeaderSize; k < end && rec; ++k)
                 if (records_resume_at(k)) rec.reset();
     }

@@ -156,8 +156,8 @@ void HostEndpoint::handle_frame(double t_s) {
     case proto::MsgType::nak: {
         proto::NakPayload nak{};
         if (!proto::parse(p, len, &nak) || (phase_ != Phase::config_set && phase_ != Phase::stop_stream)) break;
-        const std::string field =
-            proto::config_field_name(nak.field) ? proto::config_field_name(nak.field) : std::string("field ") + std::to_string(nak.field);
+        const char* name = proto::config_field_name(nak.field);
+        const std::string field = name ? name : "field " + std::to_string(nak.field);
         throw host::UsageError("the firmware refused the configuration: status " + std::to_string(nak.status) +
                                " (" + proto::status_name(static_cast<proto::Status>(nak.status)) + ") on " + field);
     }
