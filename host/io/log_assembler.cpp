@@ -68,7 +68,7 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
     } else if (text == "lost") {
         decoder_.reset();
         if (pending_sample_) {
-            emit(pending_sample_->first, pending_sample_->second, nullptr);
+            emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, nullptr);
             pending_sample_.reset();
         }
         if (!holding_) {
@@ -78,7 +78,7 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
             held_status_.reset();
         }
     } else if (text == "resumed") {
-        if (holding_) release_held(held_status_);
+        if (holding_) release_held();
     } else if (text.rfind("gap: ", 0) == 0) {
         ++stats_.gaps;
         if (writer_) writer_->write_gap(text.substr(5));
@@ -88,46 +88,81 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
 
 void LogAssembler::handle_frame(std::uint64_t t_us, const Frame& frame) {
     if (!holding_) {
-        process_frame(frame);
+        process_frame(t_us, frame);
         return;
     }
     if (!first_held_t_us_) first_held_t_us_ = t_us;
-    held_.push_back(frame);
+    held_.emplace_back(t_us, frame);
     // The handshake's STATUS tells whether the firmware restarted; the frames stay held until "resumed", which
     // follows the gap line: an output streamed during the handshake is a row after the gap, not before it.
     proto::StatusPayload status{};
     if (frame.type == proto::MsgType::status && proto::parse(frame.payload.data(), frame.payload_len, &status))
-        held_status_ = status;
+        held_status_ = Stamped{t_us, status.uptime_ticks};
 }
 
-void LogAssembler::release_held(std::optional<proto::StatusPayload> status) {
+std::optional<std::pair<double, double>> LogAssembler::board_ticks_since_newest(std::uint64_t t_us) const {
+    if (!version_ || !config_ || !newest_sample_ || t_us < newest_sample_->t_us) return std::nullopt;
+    // The rate of the board's clock against the host's, measured over this firmware run's rows, takes in the
+    // resonator's error (0.5 % on an Arduino) and a simulated board's speed. Each row's arrival lags its tick by
+    // up to an output period (a POLL answers the newest output) plus the link's latency; that is the rate's
+    // error over the span, used where it is below 2 %, else the nominal tick_hz within 1 %.
+    const double period_us = config_->output_period_ms * 1000.0;
+    const double jitter_us = period_us + 100000.0;
+    double rate = version_->tick_hz / 1e6;
+    double rate_error = 0.01;
+    const double span_us = static_cast<double>(newest_sample_->t_us - epoch_first_sample_->t_us);
+    if (span_us > 0.0 && 0.005 + jitter_us / span_us <= 0.02) {
+        rate = static_cast<double>(newest_sample_->tick - epoch_first_sample_->tick) / span_us;
+        rate_error = 0.005 + jitter_us / span_us;
+    }
+    const double ticks = static_cast<double>(t_us - newest_sample_->t_us) * rate;
+    return std::make_pair(ticks, ticks * rate_error + jitter_us * rate);
+}
+
+void LogAssembler::release_held() {
     holding_ = false;
-    if (status && ticks_.started() && status->uptime_ticks < last_epoch_tick_) {
+    // Did the firmware run on through the gap? Its STATUS uptime must then be the newest row's tick plus what the
+    // host's clock says the board's clock ran meanwhile, whole wraps of the 32-bit tick included; a restarted
+    // firmware's uptime is anything short of that.
+    std::optional<std::uint64_t> ran_on;
+    if (held_status_) {
+        if (const auto elapsed = board_ticks_since_newest(held_status_->t_us)) {
+            ran_on = ticks_run_on(last_epoch_tick_, static_cast<std::uint32_t>(held_status_->tick), elapsed->first,
+                                  elapsed->second);
+        }
+    }
+    if (held_status_ && ticks_.started() && held_status_->tick < last_epoch_tick_ && !ran_on) {
         ++stats_.firmware_restarts;
         seq_.restart_epoch();
         ticks_.restart_epoch(ticks_.last() + 1);
         last_epoch_tick_ = 0;
+        epoch_first_sample_.reset();
+        newest_sample_.reset();
         if (writer_) {
             writer_->write_gap("firmware restarted during the gap (uptime " +
-                               std::to_string(version_ ? status->uptime_ticks / static_cast<double>(version_->tick_hz)
+                               std::to_string(version_ ? static_cast<double>(held_status_->tick) / version_->tick_hz
                                                        : 0.0) +
                                " s); tick and seq continue after the last row");
         }
-    } else if (config_ && seq_.started() && first_held_t_us_ &&
-               config_->mode == static_cast<std::uint8_t>(proto::OutputMode::stream)) {
-        // A streaming board kept sending while unplugged: unwrap near where its count should be now.
-        const double gap_us = static_cast<double>(*first_held_t_us_ - lost_t_us_);
-        const double frames_per_output = config_->raw ? 2.0 : 1.0;
-        const auto advance =
-            static_cast<std::uint64_t>(gap_us / (config_->output_period_ms * 1000.0) * frames_per_output);
-        seq_.expect_near(seq_.newest() + advance);
+    } else {
+        if (ran_on) ticks_.expect_near(newest_sample_->tick + *ran_on);
+        if (config_ && seq_.started() && first_held_t_us_ &&
+            config_->mode == static_cast<std::uint8_t>(proto::OutputMode::stream)) {
+            // A streaming board kept sending while unplugged: unwrap near where its count should be now.
+            const auto elapsed = board_ticks_since_newest(*first_held_t_us_);
+            const double gap_outputs =
+                elapsed ? elapsed->first / (config_->output_period_ms / 1000.0 * version_->tick_hz)
+                        : static_cast<double>(*first_held_t_us_ - lost_t_us_) / (config_->output_period_ms * 1000.0);
+            const double frames_per_output = config_->raw ? 2.0 : 1.0;
+            seq_.expect_near(seq_.newest() + static_cast<std::uint64_t>(gap_outputs * frames_per_output));
+        }
     }
-    std::vector<Frame> frames;
+    std::vector<std::pair<std::uint64_t, Frame>> frames;
     frames.swap(held_);
-    for (const Frame& f : frames) process_frame(f);
+    for (const auto& [t_us, f] : frames) process_frame(t_us, f);
 }
 
-void LogAssembler::process_frame(const Frame& frame) {
+void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
     ++stats_.frames;
     const SeqResult seq = seq_.accept(frame.seq);
     stats_.lost_frames = seq_.lost();
@@ -151,21 +186,24 @@ void LogAssembler::process_frame(const Frame& frame) {
             proto::SamplePayload s{};
             if (!proto::parse(p, frame.payload_len, &s)) break;
             last_epoch_tick_ = s.tick;
+            const std::uint64_t tick = ticks_.unwrap(s.tick);
+            newest_sample_ = Stamped{t_us, tick};
+            if (!epoch_first_sample_) epoch_first_sample_ = newest_sample_;
             if (!writer_) break;
-            if (pending_sample_) emit(pending_sample_->first, pending_sample_->second, nullptr);
+            if (pending_sample_) emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, nullptr);
             pending_sample_.reset();
             if (config_ && config_->raw) {
-                pending_sample_ = std::make_pair(s, seq.unwrapped);
+                pending_sample_ = PendingSample{s, seq.unwrapped, tick};
             } else {
-                emit(s, seq.unwrapped, nullptr);
+                emit(s, seq.unwrapped, tick, nullptr);
             }
             break;
         }
         case proto::MsgType::raw: {
             proto::RawPayload r{};
             if (!proto::parse(p, frame.payload_len, &r)) break;
-            if (pending_sample_ && pending_sample_->first.tick == r.tick) {
-                emit(pending_sample_->first, pending_sample_->second, &r);
+            if (pending_sample_ && pending_sample_->sample.tick == r.tick) {
+                emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, &r);
                 pending_sample_.reset();
             }
             break;
@@ -191,13 +229,13 @@ void LogAssembler::start_log() {
                                           columns);
 }
 
-void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, const proto::RawPayload* raw) {
+void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, std::uint64_t tick,
+                        const proto::RawPayload* raw) {
     // No conversion behind it (a POLL right after CONFIG restarted the windows): its zeros are no reading.
     if (sample.n_window == 0) {
         ++stats_.empty_samples;
         return;
     }
-    const std::uint64_t tick = ticks_.unwrap(sample.tick);
     const double t_s = static_cast<double>(tick) / static_cast<double>(version_->tick_hz);
     if (stats_.last_t_s && t_s <= *stats_.last_t_s) {
         ++stats_.stale_samples;
@@ -241,8 +279,8 @@ void LogAssembler::flush() {
 }
 
 void LogAssembler::finish() {
-    if (holding_) release_held(held_status_);
-    if (pending_sample_ && writer_) emit(pending_sample_->first, pending_sample_->second, nullptr);
+    if (holding_) release_held();
+    if (pending_sample_ && writer_) emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, nullptr);
     pending_sample_.reset();
     if (writer_) writer_->close();
 }

@@ -5,8 +5,9 @@
 // Events it understands (text of 'E' records):
 //   "start"          handshake and configuration are done: write the log's metadata and header
 //   "lost"           the link went away: forget a cut frame; frames after it wait for "resumed", which follows
-//                    the gap line, and the newest STATUS among them (its uptime tells whether the firmware
-//                    restarted) decides how tick and seq continue
+//                    the gap line, and the newest STATUS among them decides how tick and seq continue: its
+//                    uptime, against how far the board's clock ran by the host's clock, tells whether the
+//                    firmware restarted or ran on (across a wrap of its tick, or several)
 //   "gap: <text>"    write `# gap: <text>` into the log
 //   "resumed"        the recorder finished the handshake after a reconnect
 // Rows: one per SAMPLE (joined with the RAW of the same tick in raw mode; a lost RAW leaves raw_* = -1 and
@@ -71,9 +72,11 @@ public:
 
 private:
     void handle_frame(std::uint64_t t_us, const Frame& frame);
-    void process_frame(const Frame& frame);
-    void release_held(std::optional<proto::StatusPayload> status);
-    void emit(const proto::SamplePayload& sample, std::uint64_t seq, const proto::RawPayload* raw);
+    void process_frame(std::uint64_t t_us, const Frame& frame);
+    void release_held();
+    /// Board ticks elapsed from the newest SAMPLE to host time `t_us`, and how far off that may be.
+    std::optional<std::pair<double, double>> board_ticks_since_newest(std::uint64_t t_us) const;
+    void emit(const proto::SamplePayload& sample, std::uint64_t seq, std::uint64_t tick, const proto::RawPayload* raw);
     void start_log();
 
     std::string log_path_;
@@ -84,13 +87,24 @@ private:
     TickUnwrapper ticks_;
     std::optional<proto::VersionPayload> version_;
     std::optional<proto::ConfigPayload> config_;
-    std::optional<std::pair<proto::SamplePayload, std::uint64_t>> pending_sample_;
+    struct PendingSample {
+        proto::SamplePayload sample;
+        std::uint64_t seq;
+        std::uint64_t tick;
+    };
+    std::optional<PendingSample> pending_sample_;  ///< a raw-mode SAMPLE waiting for its RAW
+    struct Stamped {  // host time [us] of something the board sent
+        std::uint64_t t_us;
+        std::uint64_t tick;  // the board's unwrapped tick (a SAMPLE) or 32-bit uptime (a STATUS)
+    };
     bool holding_ = false;
     std::uint64_t lost_t_us_ = 0;
     std::optional<std::uint64_t> first_held_t_us_;
-    std::vector<Frame> held_;
-    std::optional<proto::StatusPayload> held_status_;  ///< the newest STATUS among the held frames
-    std::uint64_t last_epoch_tick_ = 0;  // newest SAMPLE tick since the last firmware start [ticks]
+    std::vector<std::pair<std::uint64_t, Frame>> held_;  ///< frames received since the loss, with their host time
+    std::optional<Stamped> held_status_;  ///< the newest STATUS among the held frames (its uptime)
+    std::uint32_t last_epoch_tick_ = 0;  // newest SAMPLE tick since the last firmware start [ticks]
+    std::optional<Stamped> epoch_first_sample_;  ///< the first SAMPLE since the firmware's start (its clock's rate)
+    std::optional<Stamped> newest_sample_;
     AssemblyStats stats_;
 };
 

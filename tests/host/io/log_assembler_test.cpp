@@ -1,12 +1,14 @@
 // LogAssembler across a reconnect, fed as the recorder feeds it: an output the streaming board sends while the
 // recorder repeats its handshake is a row after the `# gap:` line, wherever it falls among the handshake's replies;
-// and a STATUS uptime below the last tick marks a firmware restart after that line.
+// and a STATUS uptime below the last tick marks a firmware restart after that line, unless the host's clock says the
+// board's count ran on to it across the wrap of its 32-bit tick.
 #include "host/io/log_assembler.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <unistd.h>
 
@@ -72,7 +74,7 @@ public:
         r.code[0] = gyro_code;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_raw(r, s, o, n); });
     }
-    void skip(std::uint16_t frames) { seq_ = static_cast<std::uint16_t>(seq_ + frames); }
+    void skip(std::uint64_t frames) { seq_ = static_cast<std::uint16_t>(seq_ + frames); }
     void event(const std::string& text) { a_.on_event(t_us_ += 1000, text); }
     void wait_us(std::uint64_t us) { t_us_ += us; }
 
@@ -125,6 +127,48 @@ LogData recorded_across_a_reconnect(const std::string& name, std::uint32_t tick)
     return log;
 }
 
+// A board whose clock runs `speed` times the host's (a simulated board's --speed; 1.0 for a real one) streams `rows`
+// outputs from tick `first`, is unplugged for `gap_s` of host time while streaming on, and is found after the
+// reconnect with its count run on (or restarted, when `uptime_after` is set to the restarted firmware's uptime).
+struct Unplugged {
+    double speed = 1.0;
+    std::uint32_t first = kTicksPerOutput;
+    std::uint32_t rows = 3;
+    double gap_s = 6.0;
+    std::optional<std::uint32_t> uptime_after;
+};
+
+LogData recorded_across_an_unplug(const std::string& name, const Unplugged& u, AssemblyStats& stats) {
+    const std::string path = temp_log(name);
+    const auto output_us = static_cast<std::uint64_t>(100000 / u.speed);
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", name + ".cap"}});
+        Board b(a);
+        b.version();
+        b.config();
+        b.event("start");
+        std::uint32_t tick = u.first;
+        for (std::uint32_t k = 0; k < u.rows; ++k, tick += kTicksPerOutput) {
+            b.wait_us(output_us - 1000);  // sample() adds the frame's own 1 ms
+            b.sample(tick);
+        }
+        tick -= kTicksPerOutput;  // the newest row's
+        b.event("lost");
+        const double gap_ticks = u.gap_s * u.speed * kTickHz;
+        b.skip(static_cast<std::uint64_t>(gap_ticks / kTicksPerOutput));
+        b.wait_us(static_cast<std::uint64_t>(u.gap_s * 1e6));
+        // The handshake's replies arrive 1 ms apart; the output inside it is the first one after the gap.
+        const auto ran_on = static_cast<std::uint32_t>(tick + static_cast<std::uint64_t>(gap_ticks));
+        const std::uint32_t next = u.uptime_after ? *u.uptime_after : ran_on + kTicksPerOutput;
+        reconnect_with_an_output_inside(b, next, next + 100);
+        a.finish();
+        stats = a.stats();
+    }
+    LogData log = read_log(path);
+    fs::remove(path);
+    return log;
+}
+
 // A recording of the frames `send` makes after the handshake (VERSION, CONFIG with `raw`, start), read back.
 LogData recorded(const std::string& name, std::uint8_t raw, const std::function<void(Board&)>& send, AssemblyStats& stats) {
     const std::string path = temp_log(name);
@@ -168,6 +212,56 @@ TEST(LogAssembler, AFirmwareRestartDuringTheGapIsMarkedAfterTheLinkLoss) {
     EXPECT_GT(log.t_s[3], log.t_s[2]);
     EXPECT_GT(log.seq[3], log.seq[2]);
     EXPECT_GT(log.t_s[4], log.t_s[3]);
+}
+
+TEST(LogAssembler, ACountRunOnAcrossTheTickWrapIsNoFirmwareRestart) {
+    // A simulated board at 4x the host's clock, its 32-bit tick 20 s short of the wrap when unplugged for 6 s of
+    // host time (24 s of its own): the STATUS uptime is below the last tick, but it is where the board's count,
+    // at the rate measured over the rows, has got to; t_s runs on across the wrap.
+    Unplugged u;
+    u.speed = 4.0;
+    u.rows = 600;
+    u.first = static_cast<std::uint32_t>((std::uint64_t{1} << 32) - 20 * kTickHz - 599 * kTicksPerOutput);
+    AssemblyStats stats;
+    const LogData log = recorded_across_an_unplug("runon.csv", u, stats);
+    EXPECT_EQ(stats.firmware_restarts, 0u);
+    ASSERT_EQ(log.gaps.size(), 1u);
+    const std::size_t k = log.gaps[0].before_row;
+    ASSERT_EQ(k, 600u);
+    ASSERT_EQ(log.size(), 602u);
+    EXPECT_NEAR(log.t_s[k] - log.t_s[k - 1], 24.1, 1e-9);  // the gap's 24 s of board time, and one output
+    EXPECT_NEAR(log.t_s[k + 1] - log.t_s[k], 0.1, 1e-9);
+    EXPECT_GT(log.t_s[k], 4294967296.0 / kTickHz);  // past the wrap, unwrapped
+}
+
+TEST(LogAssembler, AGapLongerThanHalfTheTickRangeKeepsTheRowsAfterIt) {
+    // 3 h unplugged: the count runs on by more than 2^31 ticks, which the nearest-after rule alone would read as
+    // a step back (and drop every later row as not after the previous one).
+    Unplugged u;
+    u.gap_s = 3 * 3600.0;
+    AssemblyStats stats;
+    const LogData log = recorded_across_an_unplug("long.csv", u, stats);
+    EXPECT_EQ(stats.firmware_restarts, 0u);
+    EXPECT_EQ(stats.stale_samples, 0u);
+    ASSERT_EQ(log.size(), 5u);
+    EXPECT_NEAR(log.t_s[3] - log.t_s[2], 3 * 3600.0 + 0.1, 1e-9);
+    // Streamed on meanwhile: 108000 outputs never received, then VERSION and ACK before the row.
+    EXPECT_EQ(log.seq[3] - log.seq[2], 108000u + 3u);
+}
+
+TEST(LogAssembler, AFirmwareRestartedWhereTheOldCountWouldHaveWrappedIsARestart) {
+    // The old count would have crossed its wrap during the 6 s gap, but the uptime (1 s since a reboot) is not
+    // where it would have got to.
+    Unplugged u;
+    u.first = static_cast<std::uint32_t>((std::uint64_t{1} << 32) - 2 * kTickHz);
+    u.uptime_after = kTickHz;
+    AssemblyStats stats;
+    const LogData log = recorded_across_an_unplug("rebooted.csv", u, stats);
+    EXPECT_EQ(stats.firmware_restarts, 1u);
+    ASSERT_EQ(log.gaps.size(), 2u);
+    EXPECT_NE(log.gaps[1].text.find("firmware restarted"), std::string::npos) << log.gaps[1].text;
+    ASSERT_EQ(log.size(), 5u);
+    EXPECT_GT(log.t_s[3], log.t_s[2]);
 }
 
 TEST(LogAssembler, ASampleBeyondTheConvertersReachIsSkippedAndCounted) {
