@@ -67,14 +67,13 @@ std::atomic<bool> g_pty_stop{false};
 void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
     if (o.target != "native") throw UsageError("--pty: only the native target is served on a pseudo-terminal");
     if (!(o.speed > 0.0)) throw UsageError("--speed: expected a positive factor");
-    sim::SensorModel sensor(h.model, o.seed);
+    sim::SensorModel sensor(h.model, o.seed, h.warm_up_s);
     io::PtyBoardOptions p;
     p.speed = o.speed;
     p.duration_s = o.duration_s.value_or(0.0);
     p.link_path = o.pty_link;
-    const double warm_s = h.warm_up_s;
-    const auto code = [&sensor, warm_s](Channel c, std::uint64_t tick) {
-        return sensor.convert(c, static_cast<double>(tick) / fw::kTickHz + warm_s).code;
+    const auto code = [&sensor](Channel c, std::uint64_t tick) {
+        return sensor.convert(c, static_cast<double>(tick) / fw::kTickHz).code;
     };
     std::signal(SIGINT, [](int) { g_pty_stop.store(true); });
     std::signal(SIGTERM, [](int) { g_pty_stop.store(true); });

@@ -17,13 +17,11 @@ namespace {
 // The sensor model seen from the board: eq. 1 runs on the sensor's own power-on time.
 class SensorSource final : public ConversionSource {
 public:
-    SensorSource(const SimModel& model, std::uint64_t seed, double warm_up_s)
-        : sensor_(model, seed), warm_up_s_(warm_up_s) {}
-    std::uint16_t code(Channel c, double t_s) override { return sensor_.convert(c, t_s + warm_up_s_).code; }
+    SensorSource(const SimModel& model, std::uint64_t seed, double warm_up_s) : sensor_(model, seed, warm_up_s) {}
+    std::uint16_t code(Channel c, double t_s) override { return sensor_.convert(c, t_s).code; }
 
 private:
     SensorModel sensor_;
-    double warm_up_s_;
 };
 
 std::unique_ptr<EmulatedBoard> make_target(TargetKind kind) {

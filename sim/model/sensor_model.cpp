@@ -14,8 +14,8 @@ std::size_t stage_index(Stage s) { return static_cast<std::size_t>(s); }
 
 }  // namespace
 
-SensorModel::SensorModel(const SimModel& model, std::uint64_t seed)
-    : adc_(model.adc), mid_counts_(std::ldexp(1.0, model.adc.bits - 1)) {
+SensorModel::SensorModel(const SimModel& model, std::uint64_t seed, double powered_before_boot_s)
+    : adc_(model.adc), powered_before_boot_s_(powered_before_boot_s), mid_counts_(std::ldexp(1.0, model.adc.bits - 1)) {
     const double levels = std::ldexp(1.0, model.adc.bits);
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         const ChannelModel& ch = model.channels[i];
@@ -43,13 +43,14 @@ double SensorModel::counts_per_unit(Channel c) const {
     return front_ends_[channel_index(c)].counts_per_unit(std::ldexp(1.0, adc_.params().bits));
 }
 
-Conversion SensorModel::convert(Channel c, double t_s) {
+Conversion SensorModel::convert(Channel c, double board_t_s) {
     const std::size_t i = channel_index(c);
     EffectContext ctx;
     ctx.channel = c;
-    ctx.t_s = t_s;
-    ctx.dt_s = started_[i] ? t_s - last_t_s_[i] : 0.0;
+    ctx.t_s = board_t_s;
+    ctx.dt_s = started_[i] ? powered_before_boot_s_ + board_t_s - last_t_s_[i] : 0.0;
     for (auto& e : by_stage_[stage_index(Stage::timing)]) ctx.t_s = e->actual_instant_s(ctx.t_s, ctx);
+    ctx.t_s += powered_before_boot_s_;
     if (started_[i]) ctx.dt_s = ctx.t_s - last_t_s_[i];
     started_[i] = true;
     last_t_s_[i] = ctx.t_s;

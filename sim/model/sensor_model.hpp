@@ -27,11 +27,14 @@ struct Conversion {
 
 class SensorModel {
 public:
-    /// Builds the chain for `model` with every random component seeded from `seed` (own substreams).
-    SensorModel(const SimModel& model, std::uint64_t seed);
+    /// Builds the chain for `model` with every random component seeded from `seed` (own substreams). The sensor
+    /// was powered `powered_before_boot_s` before the board's clock started (`--warm`).
+    SensorModel(const SimModel& model, std::uint64_t seed, double powered_before_boot_s = 0.0);
 
-    /// Converts channel `c` at nominal instant `t_s` [s since the sensor's power-on].
-    Conversion convert(Channel c, double t_s);
+    /// Converts channel `c` at nominal instant `board_t_s` of the board's clock [s since its start]. Timing
+    /// effects move that instant by the board's clock error, which runs from the board's start, not the sensor's
+    /// power-on; eq. 1 and the other effects then see the sensor's time.
+    Conversion convert(Channel c, double board_t_s);
 
     /// Analog noise sigma of a channel [counts], as calibrated from its raw standard deviation.
     double analog_sigma_counts(Channel c) const { return noise_[channel_index(c)].sigma_counts(); }
@@ -41,6 +44,7 @@ public:
 
 private:
     Adc adc_;
+    double powered_before_boot_s_;
     double mid_counts_;
     std::vector<FrontEnd> front_ends_;
     std::vector<Drift> drifts_;

@@ -54,5 +54,20 @@ TEST(SensorModelEffects, MissingCodeStaysMissingWithABowedConverter) {
     EXPECT_GT(near_missing, 1000) << "the test must exercise codes around the missing one";
 }
 
+// A board clock 100 ppm slow moves the instants it times by 100 ppm of the time since the board started, not since the
+// sensor was powered: with the sensor powered 3600 s before the board (hil --warm 3600), the conversion the board
+// times at 10 s happens at 3600 + 10 (1 + 1e-4) s of sensor time, not (3600 + 10)(1 + 1e-4) (0.36 s later, on the
+// steep part of a short warm-up's curve).
+TEST(SensorModelEffects, ClockDriftRunsFromTheBoardsStartNotTheSensorsPowerOn) {
+    const double warm_s = 3600.0;
+    SensorModel sensor(model_with("[effects.clock_jitter]\ndrift_ppm = 100.0\n"), kSeed, warm_s);
+    for (const double board_s : {0.0, 10.0, 1000.0}) {
+        EXPECT_DOUBLE_EQ(sensor.convert(Channel::gyro, board_s).t_s, warm_s + board_s * (1.0 + 1e-4)) << board_s;
+    }
+    // Without the effect, the board's instant is the sensor's plus the warm-up, exactly.
+    SensorModel plain(model_with(""), kSeed, warm_s);
+    EXPECT_EQ(plain.convert(Channel::gyro, 12.5).t_s, warm_s + 12.5);
+}
+
 }  // namespace
 }  // namespace driftlab::sim
