@@ -49,10 +49,23 @@ void PtyBridge::open_pty() {
     ::tcsetattr(slave_keep_fd_, TCSANOW, &tio);
     if (!link_path_.empty()) {
         std::error_code ec;
-        std::filesystem::remove(link_path_, ec);
+        // Only a link is replaced (this board's from an earlier plug or run): a file or folder there is the
+        // user's, and a mistyped --pty-link must not delete it.
+        const auto type = std::filesystem::symlink_status(link_path_, ec).type();
+        if (type != std::filesystem::file_type::not_found && type != std::filesystem::file_type::symlink) {
+            close_pty();
+            throw UsageError("--pty-link " + link_path_ + ": something other than a symbolic link is there; refusing to replace it");
+        }
+        remove_link();
         std::filesystem::create_symlink(slave_path_, link_path_, ec);
         if (ec) throw DeviceError(link_path_, "cannot create the link to " + slave_path_ + ": " + ec.message());
     }
+}
+
+void PtyBridge::remove_link() {
+    std::error_code ec;
+    if (!link_path_.empty() && std::filesystem::is_symlink(std::filesystem::symlink_status(link_path_, ec)))
+        std::filesystem::remove(link_path_, ec);
 }
 
 void PtyBridge::close_pty() {
@@ -64,10 +77,7 @@ void PtyBridge::close_pty() {
 }
 
 void PtyBridge::unplug() {
-    if (!link_path_.empty()) {
-        std::error_code ec;
-        std::filesystem::remove(link_path_, ec);
-    }
+    remove_link();
     close_pty();
 }
 

@@ -18,8 +18,9 @@ namespace driftlab::host::io {
 
 class PtyBridge {
 public:
-    /// Creates the pseudo-terminal. `link_path` (optional) becomes a symlink to its slave path.
-    /// Throws DeviceError when the system has no pseudo-terminals left.
+    /// Creates the pseudo-terminal. `link_path` (optional) becomes a symlink to its slave path; only a symlink
+    /// already there is replaced (UsageError for a file or folder). Throws DeviceError when the system has no
+    /// pseudo-terminals left.
     explicit PtyBridge(std::string link_path = {});
     ~PtyBridge();
     PtyBridge(const PtyBridge&) = delete;
@@ -35,7 +36,7 @@ public:
     /// Host -> board: what the client wrote, up to `capacity` bytes, waiting at most `timeout_ms` [ms].
     std::size_t read(std::uint8_t* out, std::size_t capacity, int timeout_ms);
 
-    /// Simulated unplug: closes the pseudo-terminal and removes the link.
+    /// Simulated unplug: closes the pseudo-terminal and removes the link (if still a symlink).
     void unplug();
     /// Simulated replug: a new pseudo-terminal (a new /dev/pts/N), the link re-pointed at it.
     void plug();
@@ -46,6 +47,7 @@ public:
 private:
     void open_pty();
     void close_pty();
+    void remove_link();  // the stable link, if a symbolic link is what is there
 
     std::string link_path_;
     std::string slave_path_;
