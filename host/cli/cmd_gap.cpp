@@ -308,7 +308,7 @@ void register_gap(CLI::App& app) {
         ->check(non_negative_number());
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
-    cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)");
+    cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)")->check(seed_number());
     cmd->add_option("--fit-fraction", o->fit_fraction, "First part of the log (by time) used to fit candidates")
         ->check(CLI::Range(0.3, 0.85));
     add_holdout_option(cmd, o->holdout);

@@ -55,7 +55,7 @@ struct HilCliOptions {
     int gdb_port = 0;                // > 0: simavr's gdb stub on this port, CPU stopped until avr-gdb continues
     bool cycles = false;             // AVR: also print the firmware's cycle budget at this configuration
     bool pty = false;                // serve the board on a pseudo-terminal instead of running a host
-    double speed = 1.0;              // --pty: virtual seconds per wall second
+    std::optional<double> speed;     // --pty: virtual seconds per wall second (1 when not given)
     std::string pty_link;            // --pty: stable symlink to the pseudo-terminal
 };
 
@@ -66,10 +66,9 @@ std::atomic<bool> g_pty_stop{false};
 // (docs/recording.md "Recording a simulated board").
 void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
     if (o.target != "native") throw UsageError("--pty: only the native target is served on a pseudo-terminal");
-    if (!(o.speed > 0.0)) throw UsageError("--speed: expected a positive factor");
     sim::SensorModel sensor(h.model, o.seed, h.warm_up_s);
     io::PtyBoardOptions p;
-    p.speed = o.speed;
+    p.speed = o.speed.value_or(1.0);
     p.duration_s = o.duration_s.value_or(0.0);
     p.link_path = o.pty_link;
     const auto code = [&sensor](Channel c, std::uint64_t tick) {
@@ -141,7 +140,20 @@ void progress_bar(double fraction) {
     if (fraction >= 1.0) std::fprintf(stderr, "\n");
 }
 
+// Options that belong to another way of running are refused rather than silently ignored.
+void check_option_combinations(const HilCliOptions& o) {
+    if (!o.pty && (o.speed || !o.pty_link.empty()))
+        throw UsageError(std::string(o.speed ? "--speed" : "--pty-link") + ": only with --pty");
+    if (o.pty && (!o.output.empty() || o.json))
+        throw UsageError(std::string(o.json ? "--json" : "-o") +
+                         ": --pty serves the board and writes no log; the recorder does (driftlab record -o LOG)");
+    if (o.target != "avr" && (!o.elf.empty() || o.gdb_port > 0 || o.cycles))
+        throw UsageError(std::string(!o.elf.empty() ? "--elf" : o.gdb_port > 0 ? "--gdb" : "--cycles") +
+                         ": only with --target avr");
+}
+
 sim::HilOptions build_options(const HilCliOptions& o) {
+    check_option_combinations(o);
     sim::HilOptions h;
     h.model = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file);
     h.seed = o.seed;
@@ -163,6 +175,12 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     if (o.stream) fw.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
     if (o.duration_s) h.duration_s = *o.duration_s;
     if (o.warm_s) h.warm_up_s = *o.warm_s;
+    // A billion seconds (32 years of board time) is far beyond any run, and keeps the output count exact.
+    if (h.duration_s > 1e9) {
+        char given[32];
+        std::snprintf(given, sizeof given, "%g", h.duration_s);
+        throw UsageError(std::string("--duration: at most 1e9 s, got ") + given);
+    }
     if (h.duration_s < fw.output_period_ms / 1000.0)
         throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
     if (o.target == "avr") {
@@ -182,10 +200,24 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     return h;
 }
 
+// The run; an emulated AVR that fails (the firmware crashed or stopped converting) is a device's failure.
+sim::HilSummary run_board(const sim::HilOptions& h, const sim::RecordSink& on_record) {
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+    try {
+        return sim::run_hil(h, on_record);
+    } catch (const sim::avr::AvrError& e) {
+        throw DeviceError("--target avr", e.what());
+    }
+#else
+    return sim::run_hil(h, on_record);
+#endif
+}
+
 void run_hil_command(const HilCliOptions& o) {
     sim::HilOptions h = build_options(o);
     if (o.pty) return serve_pty_command(o, h);
     const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;
+    if (path == "-" && o.json) throw UsageError("--json: the log goes to standard output (-o -); write it to a file");
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (path != "-" && !parent.empty()) make_output_folder(parent.string(), "log");
 
@@ -201,7 +233,7 @@ void run_hil_command(const HilCliOptions& o) {
     if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar;
 
     const auto wall0 = std::chrono::steady_clock::now();
-    const sim::HilSummary s = sim::run_hil(h, [&log](const sim::HilRecord& r) { log.write(r); });
+    const sim::HilSummary s = run_board(h, [&log](const sim::HilRecord& r) { log.write(r); });
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     log.close();
 
@@ -257,7 +289,9 @@ void run_hil_command(const HilCliOptions& o) {
         report::write_json(std::cout, j);
         return;
     }
-    std::cout << "wrote " << s.host.rows << " rows to " << path << "\n"
+    // With the log on standard output (-o -), the summary goes beside it, not into it.
+    std::ostream& out = path == "-" ? std::cerr : std::cout;
+    out << "wrote " << s.host.rows << " rows to " << path << "\n"
               << "frames: sent " << s.to_host.packets_sent << ", received " << s.host.frames_received << ", lost "
               << s.host.frames_lost << " (crc errors " << s.decoder.bad_crc << ")\n"
               << "link to host: " << s.to_host.packets_damaged << " frames damaged, " << s.to_host.bytes_dropped
@@ -267,7 +301,7 @@ void run_hil_command(const HilCliOptions& o) {
               << "x real time)\n";
 #ifdef DRIFTLAB_HAVE_SIM_AVR
     if (o.cycles && o.target == "avr")
-        std::cout << sim::avr::format_cycle_budget(sim::avr::measure_cycle_budget(
+        out << sim::avr::format_cycle_budget(sim::avr::measure_cycle_budget(
             o.elf.empty() ? sim::avr::default_elf_path() : o.elf, h.model.firmware, 0.5, 5.0, true));
 #endif
 }
@@ -291,14 +325,15 @@ void register_hil(CLI::App& app) {
     cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s]")
         ->check(non_negative_number());
     cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)");
-    cmd->add_option("--seed", opts->seed, "Seed of every random component")->capture_default_str();
+    cmd->add_option("--seed", opts->seed, "Seed of every random component")->capture_default_str()->check(seed_number());
     cmd->add_flag("--raw", opts->raw, "Also log the raw codes (RAW frames)");
     cmd->add_flag("--stream", opts->stream, "Stream mode: the firmware sends without being polled");
     cmd->add_option("-o,--output", opts->output, "Log file (default out/<preset>.csv; - for standard output)");
     cmd->add_flag("--json", opts->json, "Print the run summary as JSON");
     cmd->add_flag("--pty", opts->pty, "Serve the board's UART on a pseudo-terminal (prints its path) for "
                                       "driftlab record; runs until --duration or Ctrl-C");
-    cmd->add_option("--speed", opts->speed, "--pty: virtual seconds per wall second")->capture_default_str();
+    cmd->add_option("--speed", opts->speed, "--pty: virtual seconds per wall second (default 1)")
+        ->check(positive_number());
     cmd->add_option("--pty-link", opts->pty_link, "--pty: also make this symlink to the pseudo-terminal");
     cmd->add_option("--target", opts->target, "native (firmware core on the host) or avr (the real ELF in simavr)")
         ->capture_default_str();

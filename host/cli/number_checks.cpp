@@ -41,4 +41,17 @@ const CLI::Validator& non_negative_number() {
     return check;
 }
 
+const CLI::Validator& seed_number() {
+    static const CLI::Validator check(
+        [](std::string& text) -> std::string {
+            // Digits only: the unsigned parse would take "-5" as 2^64 - 5 and clamp 2^64 and beyond to 2^64 - 1.
+            const bool digits = !text.empty() && text.size() <= 20 &&
+                                text.find_first_not_of("0123456789") == std::string::npos;
+            if (digits && (text.size() < 20 || text <= "18446744073709551615")) return {};
+            return "expected a whole number from 0 to 18446744073709551615, got '" + text + "'";
+        },
+        "SEED");
+    return check;
+}
+
 }  // namespace driftlab::host::cli

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <cstring>
 
 #include "firmware/core/version.hpp"
@@ -33,6 +35,14 @@ constexpr std::uint8_t kTccr1bClockSelect = 0x07;
 constexpr std::uint8_t kStackPaint = 0xA5;       // untouched-RAM pattern for the stack high-water mark
 
 AvrBoard* board_of(avr_t* avr) { return static_cast<AvrBoard*>(avr->custom.data); }
+
+// simavr's own messages go to stderr, errors only: its default logger prints the loader's "Loaded N .text" on
+// stdout, where a log (-o -) or the JSON summary goes.
+void stderr_logger(avr_t* avr, const int level, const char* format, va_list args) {
+    const int threshold = avr ? static_cast<int>(avr->log) : static_cast<int>(LOG_ERROR);
+    if (level < LOG_ERROR || level > threshold) return;
+    std::vfprintf(stderr, format, args);
+}
 
 // USART0 registers in data space and their bits (ATmega328P datasheet, "USART0").
 constexpr std::uint16_t kUcsr0a = 0xC0, kUcsr0b = 0xC1, kUcsr0c = 0xC2, kUbrr0l = 0xC4, kUbrr0h = 0xC5;
@@ -67,6 +77,7 @@ AvrBoard::AvrBoard(const AvrBoardOptions& options, VoltageSource source)
     isr_shared_address_ = isr_shared.address - kAvrDataOffset;
     data_end_address_ = symbols.require("_end").address - kAvrDataOffset;
 
+    avr_global_logger_set(stderr_logger);
     elf_firmware_t firmware;
     std::memset(&firmware, 0, sizeof firmware);
     if (elf_read_firmware(options.elf_path.c_str(), &firmware) != 0) {

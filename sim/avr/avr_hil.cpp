@@ -6,6 +6,8 @@
 
 #include "sim/avr/avr_error.hpp"
 #include "sim/avr/avr_target.hpp"
+#include "sim/avr/elf_symbols.hpp"
+#include "sim/avr/isr_shared_layout.hpp"
 
 namespace driftlab::sim::avr {
 
@@ -16,6 +18,10 @@ std::function<std::unique_ptr<EmulatedBoard>()> avr_board_factory(const AvrBoard
     if (!std::filesystem::exists(options.elf_path)) {
         throw AvrError(options.elf_path + ": no such file (build it with `cmake --preset avr` or pass --elf FILE)");
     }
+    if (!std::filesystem::is_regular_file(options.elf_path)) throw AvrError(options.elf_path + ": not a file");
+    // Read now, so a file that is not this firmware's ELF is the user's --elf, named before the run starts.
+    const ElfSymbols symbols(options.elf_path);
+    static_cast<void>(symbols.require(kIsrSharedSymbol));
     return [options] { return std::make_unique<AvrTarget>(options); };
 }
 

@@ -58,6 +58,12 @@ void HostEndpoint::enter(Phase next, double t_s) {
         send_at_s_.reset();
     }
     if (next == Phase::done) send_at_s_.reset();
+    // The last output's RAW may still be on the line when a stream run ends; it is awaited until the firmware has
+    // acknowledged the stop (a RAW before that ACK is the stream's), and missing only then.
+    if (next == Phase::status || next == Phase::done) {
+        if (pending_) ++counters_.rows_missing_raw;
+        pending_.reset();
+    }
 }
 
 void HostEndpoint::act(double t_s, std::vector<std::vector<std::uint8_t>>& out) {
@@ -71,8 +77,6 @@ void HostEndpoint::act(double t_s, std::vector<std::vector<std::uint8_t>>& out) 
             ++next_poll_k_;
         }
         if (t_s >= run_end_s_ && (stream || next_poll_k_ > poll_count_)) {
-            if (pending_) ++counters_.rows_missing_raw;
-            pending_.reset();
             enter(stream ? Phase::stop_stream : Phase::status, t_s);
         }
     }
@@ -178,7 +182,7 @@ void HostEndpoint::handle_frame(double t_s) {
     }
     case proto::MsgType::raw: {
         proto::RawPayload r{};
-        if (phase_ == Phase::running && proto::parse(p, len, &r)) handle_raw(r, seq);
+        if ((phase_ == Phase::running || phase_ == Phase::stop_stream) && proto::parse(p, len, &r)) handle_raw(r, seq);
         break;
     }
     case proto::MsgType::status:

@@ -3,6 +3,10 @@
 // faster than the paper's 9600-baud radio (sim/models/hundred_hz.toml).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
 #include "e2e_support.hpp"
 #include "host/log/log_reader.hpp"
 
@@ -31,6 +35,45 @@ TEST(HilCli, TooManyConversionsForThePeriodIsRefusedByField) {
         run_driftlab({"hil", "--duration", "2", "--period", "0.01", "-o", dir.file("h.csv")}, dir.path());
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.output.find("conversions_per_output"), std::string::npos) << r.output;
+}
+
+// `-o -`: the log alone on standard output, so that it reads back; the summary goes to standard error, and --json
+// (a second document on the same stream) is refused.
+TEST(HilCli, ALogOnStandardOutputReadsBack) {
+    TempDir dir("hilstdout");
+    const std::string log = dir.file("piped.csv");
+    const std::string command = std::string("'") + DRIFTLAB_BIN + "' hil --duration 30 -o - > '" + log + "' 2> '" +
+                                dir.file("err.txt") + "'";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const host::LogData read = host::read_log(log);
+    EXPECT_EQ(read.size(), 30u);
+    const RunResult j = run_driftlab({"hil", "--duration", "3", "-o", "-", "--json"}, dir.path());
+    EXPECT_EQ(j.exit_code, 2) << j.output;
+}
+
+// Options of another way of running, or values the unsigned parse would wrap, are refused, not ignored.
+TEST(HilCli, OptionsThatWouldBeIgnoredOrWrappedAreRefused) {
+    TempDir dir("hilopts");
+    const std::string out = dir.file("h.csv");
+    for (const std::vector<std::string>& extra :
+         std::vector<std::vector<std::string>>{{"--speed", "4"},
+                                               {"--pty-link", dir.file("board")},
+                                               {"--cycles"},
+                                               {"--gdb", "1234"},
+                                               {"--elf", out},
+                                               {"--seed", "-5"},
+                                               {"--seed", "18446744073709551616"},
+                                               {"--duration", "1e30"},
+                                               {"--pty", "--json"},
+                                               {"--pty", "--speed", "inf"}}) {
+        std::vector<std::string> args = {"hil", "-o", out};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << extra.front() << ": " << r.output;
+    }
+    EXPECT_FALSE(std::filesystem::exists(out));
+    const RunResult largest = run_driftlab({"hil", "--duration", "2", "--seed", "18446744073709551615", "-o", out}, dir.path());
+    EXPECT_EQ(largest.exit_code, 0) << largest.output;
 }
 
 }  // namespace

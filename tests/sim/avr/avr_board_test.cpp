@@ -67,6 +67,14 @@ TEST_F(AvrTwin, HelloAnswersTheSameVersionFrame) {
     EXPECT_EQ(avr, native);
 }
 
+// simavr's loader messages ("Loaded 9124 .text at address 0x0") are not printed on stdout, where `hil -o -` writes
+// the log and `hil --json` its summary.
+TEST_F(AvrTwin, LoadingTheFirmwarePrintsNothingOnStandardOutput) {
+    ::testing::internal::CaptureStdout();
+    { AvrBoard board(AvrBoardOptions{avr_elf()}, millivolts_from(hashed_code)); }
+    EXPECT_EQ(::testing::internal::GetCapturedStdout(), "");
+}
+
 constexpr double kEndS = 60.0;
 
 proto::ConfigPayload default_config() { return {100, 25, 25, 0, 0, 0}; }

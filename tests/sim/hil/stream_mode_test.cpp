@@ -1,0 +1,41 @@
+// Stream mode on a lossless link: one row per output period, each with its RAW, the last one included (its RAW is
+// still on the line when the run's time is up, and is awaited until the firmware acknowledges the stop).
+#include <gtest/gtest.h>
+
+#include "tests/sim/hil/hil_test_support.hpp"
+
+namespace driftlab::sim {
+namespace {
+
+using testing::run_into_memory;
+
+HilOptions streamed(double period_s, double duration_s, bool raw) {
+    HilOptions o;
+    o.model = paper_model();
+    o.model.firmware.output_period_ms = static_cast<std::uint16_t>(period_s * 1000.0);
+    o.model.firmware.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
+    o.model.firmware.raw = raw ? 1 : 0;
+    o.duration_s = duration_s;
+    return o;
+}
+
+TEST(StreamMode, EveryOutputOfALosslessRunIsARowWithItsRawCodes) {
+    for (const double period_s : {1.0, 0.5}) {
+        const testing::Run r = run_into_memory(streamed(period_s, 10.0, true));
+        const auto outputs = static_cast<std::size_t>(10.0 / period_s);
+        EXPECT_EQ(r.summary.host.frames_lost, 0u) << period_s;
+        EXPECT_EQ(r.summary.host.rows_missing_raw, 0u) << period_s;
+        ASSERT_EQ(r.rows.size(), outputs) << period_s;
+        for (const HilRecord& row : r.rows) EXPECT_TRUE(row.has_raw) << row.t_s;
+        EXPECT_NEAR(r.rows.back().t_s - r.rows.front().t_s, (static_cast<double>(outputs) - 1.0) * period_s, 1e-3);
+    }
+}
+
+TEST(StreamMode, RawModeKeepsAsManyRowsAsSmoothedOnly) {
+    const testing::Run plain = run_into_memory(streamed(1.0, 10.0, false));
+    const testing::Run raw = run_into_memory(streamed(1.0, 10.0, true));
+    EXPECT_EQ(raw.rows.size(), plain.rows.size());
+}
+
+}  // namespace
+}  // namespace driftlab::sim
