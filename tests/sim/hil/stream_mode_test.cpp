@@ -2,6 +2,7 @@
 // still on the line when the run's time is up, and is awaited until the firmware acknowledges the stop).
 #include <gtest/gtest.h>
 
+#include "host/util/error.hpp"
 #include "tests/sim/hil/hil_test_support.hpp"
 
 namespace driftlab::sim {
@@ -35,6 +36,21 @@ TEST(StreamMode, RawModeKeepsAsManyRowsAsSmoothedOnly) {
     const testing::Run plain = run_into_memory(streamed(1.0, 10.0, false));
     const testing::Run raw = run_into_memory(streamed(1.0, 10.0, true));
     EXPECT_EQ(raw.rows.size(), plain.rows.size());
+}
+
+// The paper's 9600-baud link carries 960 bytes/s: a SAMPLE frame (33 bytes) every 35 ms fits (943 bytes/s), every
+// 34 ms does not (971); with RAW (54 bytes) 57 ms fits and 56 ms does not. Beyond it outputs would queue without
+// end and the run's time would end before most arrived.
+TEST(StreamMode, AnOutputRateBeyondTheLinkIsRefused) {
+    const auto rows_of = [](double period_s, bool raw) {
+        HilOptions o = streamed(period_s, 2.0, raw);
+        o.model.firmware.conversions_per_output = 8;
+        return run_into_memory(o).rows.size();
+    };
+    EXPECT_GE(rows_of(0.035, false), 56u);
+    EXPECT_THROW(rows_of(0.034, false), host::UsageError);
+    EXPECT_GE(rows_of(0.057, true), 34u);
+    EXPECT_THROW(rows_of(0.056, true), host::UsageError);
 }
 
 }  // namespace
