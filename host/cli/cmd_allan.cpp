@@ -21,6 +21,8 @@
 namespace driftlab::host::cli {
 namespace {
 
+constexpr double kTau0Tolerance = 0.05;  // --tau0 against the rows' median spacing (jittered host time stamps)
+
 using nlohmann::json;
 
 struct AllanCommandOptions {
@@ -202,8 +204,18 @@ void run(const AllanCommandOptions& o) {
     json out = {{"file", o.path}, {"kind", req.kind == stats::InputKind::rate ? "rate" : "phase"},
                 {"grid", o.grid}, {"confidence", req.confidence}, {"channels", json::object()}};
     for (const fit::Series& s : series) {
-        const double tau0 = o.tau0_s > 0.0 ? o.tau0_s : stats::median_spacing_s(s.t_s);
+        const double spacing = stats::median_spacing_s(s.t_s);
+        const double tau0 = o.tau0_s > 0.0 ? o.tau0_s : spacing;
         if (!(tau0 > 0.0)) throw DataError(o.path, 0, "series '" + s.name + "': fewer than two samples");
+        // The grid places each sample at its time / tau0: rows faster than tau0 would be packed onto consecutive
+        // slots (their time, and a real gap after them, lost), slower ones spread over empty slots.
+        if (std::abs(spacing / tau0 - 1.0) > kTau0Tolerance) {
+            char text[200];
+            std::snprintf(text, sizeof text, "--tau0 %g s, but the time column's rows are %g s apart (median); ",
+                          tau0, spacing);
+            throw UsageError(text + std::string(log ? "leave --tau0 out to use the rows' spacing"
+                                                    : "give their spacing, or a table without a time column"));
+        }
         stats::AllanResult r;
         try {
             r = stats::analyse_allan(s.t_s, s.values, tau0, req);

@@ -63,7 +63,11 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
     } else {
         for (std::size_t k = 0; k < t_s.size(); ++k) t_s[k] = static_cast<double>(k) * sample_period_s;
     }
-    for (const auto& name : names) table.column_index(name);  // throws with the list of columns
+    for (const auto& name : names) {
+        table.column_index(name);  // throws with the list of columns
+        if (time_index && name == table.names[*time_index])
+            throw UsageError("'" + name + "' is the time column of " + table.source_name + ", not a series to analyse");
+    }
     std::vector<Series> out;
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
         if (time_index && c == *time_index) continue;

@@ -26,6 +26,11 @@ AllanCurves analyse_curves(const PhaseRecord& record, const AllanRequest& reques
                                         "(the largest averaging factor is (phase samples - 1) / 4, rounded down; a "
                                         "rate series of n samples has n + 1 phase samples)");
         out.curves.push_back(analyse_deviation(record, d, ms, request.confidence));
+        // Gaps can leave every factor without a term (no stretch between them holds 2m + 1 phase samples).
+        if (d == Deviation::oadev && out.curves.back().curve.tau_s.empty())
+            throw std::invalid_argument("no averaging time has a term between the gaps: the longest gap-free stretch "
+                                        "holds " + std::to_string(record.longest_segment().size()) +
+                                        " phase samples, the shortest averaging time needs 3 (is --tau0 the rows' spacing?)");
     }
     const AnalysedCurve& oadev = out.curves.front();
     out.terms = fit_noise_terms(oadev.curve.tau_s, oadev.curve.dev, oadev.edf);

@@ -1,6 +1,7 @@
 // Lag-1 autocorrelation noise identification (docs/allan.md §5).
 #include "host/stats/noise_id.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -69,7 +70,10 @@ std::optional<NoiseId> identify(std::vector<double> v, InputKind kind, int dmin,
             id.rho = rho;
             id.differences = d;
             id.alpha_estimate = -2.0 * (rho + d) + phase_offset;
-            id.alpha = static_cast<int>(-std::lround(2.0 * rho)) - 2 * d + phase_offset;
+            // Within the types the variance converges for (Allan, dmax 2: -2..2; Hadamard, dmax 3: -4..2): near
+            // r1 = -1/2 (white PM) rho = r1 / (1 + r1) runs off to minus infinity on a short series, and rate input
+            // differenced dmax times goes below the range; both are read as the nearest type in range, as Stable32 does.
+            id.alpha = std::clamp(static_cast<int>(-std::lround(2.0 * rho)) - 2 * d + phase_offset, 2 - 2 * dmax, 2);
             return id;
         }
         for (std::size_t i = 0; i + 1 < v.size(); ++i) v[i] = v[i + 1] - v[i];

@@ -127,5 +127,22 @@ TEST(AllanPipeline, TooShortASeriesForAnyAveragingTimeIsRefused) {
     EXPECT_NEAR(r.raw.curves.front().curve.dev[0], std::sqrt(0.5), 1e-12);
 }
 
+// Gaps that leave no stretch of 2m + 1 phase samples give no term at any averaging time: refused, not answered
+// with an empty table. Rows 2 s apart on a 1 s grid: every other slot empty, each sample alone (2 phase samples).
+TEST(AllanPipeline, GapsThatLeaveNoTermAnywhereAreRefused) {
+    AllanRequest req;
+    req.remove_drift = false;
+    std::vector<double> t(400), y(400);
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = 2.0 * static_cast<double>(k), y[k] = static_cast<double>(k % 3);
+    try {
+        analyse_allan(t, y, 1.0, req);
+        ADD_FAILURE() << "an empty curve was returned";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("no averaging time has a term between the gaps"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(analyse_allan(t, y, 2.0, req).raw.curves.front().curve.m.front(), 1);
+}
+
 }  // namespace
 }  // namespace driftlab::host::stats

@@ -98,6 +98,33 @@ TEST(NoiseId, WhitePhaseIsWhitePm) {
     EXPECT_EQ(id->alpha, 2);
 }
 
+// White PM given as rate (first differences of white phase): lag-1 correlation -1/2, where rho = r1 / (1 + r1) runs
+// off to minus infinity on a short averaged series. The type stays within what the statistic converges for (Allan
+// -2..2, Hadamard -4..2), and is white PM in most logs; a random walk of a random walk (alpha -4) reads at Allan's limit.
+TEST(NoiseId, TypesStayWithinTheStatisticsRange) {
+    int white_pm = 0, runs = 0;
+    for (std::uint64_t seed = 10; seed < 60; ++seed) {
+        const auto w = white(2001, seed);
+        std::vector<double> y(2000);
+        for (std::size_t i = 0; i < y.size(); ++i) y[i] = w[i + 1] - w[i];
+        for (const int dmax : {2, 3}) {
+            const auto id = autocorr_noise_id(y, InputKind::rate, 40, 0, dmax);  // 50 averaged points
+            ASSERT_TRUE(id.has_value());
+            EXPECT_LE(id->alpha, 2) << seed;
+            EXPECT_GE(id->alpha, 2 - 2 * dmax) << seed;
+            white_pm += id->alpha == 2;
+            ++runs;
+        }
+    }
+    EXPECT_GT(white_pm, runs / 2);  // 50 points identify roughly; the rest read as flicker PM
+    auto rrw = white(20000, 5);
+    for (int pass = 0; pass < 2; ++pass)
+        for (std::size_t i = 1; i < rrw.size(); ++i) rrw[i] += rrw[i - 1];
+    const auto id = autocorr_noise_id(rrw, InputKind::rate, 4, 0, 2);
+    ASSERT_TRUE(id.has_value());
+    EXPECT_EQ(id->alpha, -2);
+}
+
 TEST(NoiseId, TooFewPointsGivesNoAnswer) {
     const auto y = white(100, 4);
     EXPECT_FALSE(autocorr_noise_id(y, InputKind::rate, 4, 0, 2).has_value());
