@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -74,7 +75,7 @@ void write_data(const Plot& plot, const fs::path& path) {
     }
     std::ofstream out(path, std::ios::binary);
     out << text;
-    if (!out) throw Error(path.string() + ": cannot write plot data");
+    if (!out) throw DeviceError(path.string(), "cannot write plot data");
 }
 
 std::string style_clause(const PlotSeries& s) {
@@ -171,7 +172,11 @@ std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, c
                                      const std::vector<ImageFormat>& formats) {
     check(plot);
     make_output_folder(dir, "plot");
-    const fs::path base = fs::path(dir) / name;
+    // The name comes from a column header ("gyro(deg/s)", "a/b"): only characters safe in a file name are kept.
+    std::string file_name = name;
+    for (char& c : file_name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.') c = '_';
+    const fs::path base = fs::path(dir) / file_name;
     const fs::path data = base.string() + ".dat";
     write_data(plot, data);
     std::vector<std::string> images;

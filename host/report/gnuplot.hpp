@@ -40,7 +40,8 @@ struct Plot {
 
 enum class ImageFormat { png, svg };
 
-/// Renders `plot` into `dir` (created if needed) as name.<format> for each format; returns the image paths.
+/// Renders `plot` into `dir` (created if needed) as name.<format> for each format, every character of `name` other
+/// than letters, digits, '_', '-' and '.' written as '_'; returns the image paths.
 /// Throws UsageError on an empty or inconsistent plot, Error when gnuplot is missing or fails (with its
 /// message).
 std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, const std::string& name,

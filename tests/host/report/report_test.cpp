@@ -91,6 +91,11 @@ TEST(Report, GnuplotWritesPngAndSvg) {
     std::ifstream script(fs::path(dir) / "t.png.gp");
     const std::string gp((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
     EXPECT_NE(gp.find("index 1 using 1:3:4 with filledcurves"), std::string::npos) << gp;
+    // A series name from a column header ("gyro(deg/s)") names a file in `dir`, not a folder below it.
+    const auto named = render_plot(p, dir, "allan_gyro(deg/s) <b>", {ImageFormat::svg});
+    ASSERT_EQ(named.size(), 1u);
+    EXPECT_EQ(fs::path(named[0]).filename().string(), "allan_gyro_deg_s___b_.svg");
+    EXPECT_EQ(fs::path(named[0]).parent_path(), fs::path(dir));
     Plot empty;
     EXPECT_THROW(render_plot(empty, dir, "e"), UsageError);
     p.series[1].y_high.pop_back();
