@@ -32,7 +32,11 @@ ParameterIntervals parameter_intervals(const FitResult& fit, double tau) {
     Eigen::Matrix3d cov = Eigen::Matrix3d::Constant(inf);
     if (fit.n > 3 && fit.status != FitStatus::singular) {
         const double s2 = fit.rss / (n - 3.0);
-        cov = s2 * fit.jtj.inverse();
+        // (J^T J)^-1 = R^-1 R^-T: a sum of squares on the diagonal, never the negative variance inverting an
+        // ill-conditioned J^T J could give.
+        const Eigen::Matrix3d r_inv =
+            fit.jacobian_r.triangularView<Eigen::Upper>().solve(Eigen::Matrix3d::Identity());
+        cov = s2 * r_inv * r_inv.transpose();
     }
     out.t_quantile = out.dof > 0.0 ? student_t_quantile(0.975, out.dof) : inf;
     const DriftParameters& p = fit.parameters;

@@ -14,6 +14,22 @@ namespace {
 /// (e.g. T far beyond the record, where only the slope C1/T is seen).
 constexpr double kSingularCondition = 1e9;
 
+// Adds row `j` to the upper-triangular R of the growing least-squares problem by Givens rotations: R^T R = J^T J
+// without forming J^T J, whose rounding squares the condition number (so that a computed cond(J) topped out near
+// 1e8 and a singular fit was never seen as one).
+void add_row(Eigen::Matrix3d& r, Eigen::Vector3d j) {
+    for (int i = 0; i < 3; ++i) {
+        if (j[i] == 0.0) continue;
+        const double h = std::sqrt(r(i, i) * r(i, i) + j[i] * j[i]);
+        const double c = r(i, i) / h, s = j[i] / h;
+        for (int k = i; k < 3; ++k) {
+            const double rik = r(i, k);
+            r(i, k) = c * rik + s * j[k];
+            j[k] = c * j[k] - s * rik;
+        }
+    }
+}
+
 const char* stop_reason(Eigen::LevenbergMarquardtSpace::Status s) {
     using namespace Eigen::LevenbergMarquardtSpace;
     switch (s) {
@@ -70,22 +86,21 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
 
     // Residual, and the Jacobian over (C1, C2, T) for the covariance and the rank check.
     out.residual.resize(n);
-    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
     const DriftParameters& p = out.parameters;
     for (std::size_t k = 0; k < n; ++k) {
         const double u = t_s[k] / p.t_s;
         const double e = std::exp(-u);
         out.residual[k] = y[k] - drift_model(p, t_s[k]);
         out.rss += out.residual[k] * out.residual[k];
-        const Eigen::Vector3d j(1.0 - e, 1.0, -p.c1 * e * u / p.t_s);
-        jtj.noalias() += j * j.transpose();
+        add_row(r, Eigen::Vector3d(1.0 - e, 1.0, -p.c1 * e * u / p.t_s));
     }
     out.rms = std::sqrt(out.rss / static_cast<double>(n));
-    out.jtj = jtj;
-    const Eigen::Vector3d scale = jtj.diagonal().cwiseSqrt().cwiseMax(1e-300).cwiseInverse();
-    const Eigen::Matrix3d scaled = scale.asDiagonal() * jtj * scale.asDiagonal();
-    const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(scaled).singularValues();
-    out.condition_number = sv[2] > 0.0 ? std::sqrt(sv[0] / sv[2]) : INFINITY;
+    out.jacobian_r = r;
+    // The columns of R have the norms of J's: scaled to unit columns, its singular values are J's.
+    const Eigen::Vector3d scale = r.colwise().norm().transpose().cwiseMax(1e-300).cwiseInverse();
+    const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(r * scale.asDiagonal()).singularValues();
+    out.condition_number = sv[2] > 0.0 ? sv[0] / sv[2] : INFINITY;
 
     using namespace Eigen::LevenbergMarquardtSpace;
     if (!std::isfinite(out.rss) || !(out.condition_number < kSingularCondition))
@@ -94,7 +109,8 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
         out.status = FitStatus::iteration_limit;
     else
         out.status = FitStatus::converged;
-    if (options.start && out.status != FitStatus::converged) {
+    // A warm start that ran off is tried again cold; an ill-conditioned fit is the data's, and stays.
+    if (options.start && (out.status == FitStatus::iteration_limit || !std::isfinite(out.rss))) {
         FitOptions cold = options;
         cold.start.reset();
         return fit_drift(t_s, y, cold);

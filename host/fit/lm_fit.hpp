@@ -42,7 +42,7 @@ struct FitResult {
     double rss = 0.0;               ///< residual sum of squares [counts^2]
     double rms = 0.0;               ///< sqrt(rss / n) [counts]
     double condition_number = 0.0;  ///< of the column-scaled Jacobian (C1, C2, T)
-    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();  ///< J^T J over (C1, C2, T) at the solution
+    Eigen::Matrix3d jacobian_r = Eigen::Matrix3d::Zero();  ///< R of J = QR over (C1, C2, T) at the solution (R^T R = J^T J)
     std::vector<double> residual;   ///< data - model, per sample
     StartValues start;
 };

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "host/fit/drift_analysis.hpp"
+#include "host/fit/intervals.hpp"
 #include "host/fit/lm_fit.hpp"
 #include "host/util/error.hpp"
 #include "sim/model/rng.hpp"
@@ -128,6 +129,57 @@ TEST(DriftFit, DataWithoutCurvatureIsFlaggedNotMisreported) {
     ASSERT_FALSE(a.warnings.empty());
     EXPECT_NE(a.warnings.front().find("beyond the record"), std::string::npos) << a.warnings.front();
     EXPECT_NEAR(a.fit.parameters.c1 / a.fit.parameters.t_s, 1e-3, 1e-4);
+}
+
+// Time stamps far from power-on (Unix time, or a clock started long before) leave the columns of J dependent to
+// ~1e-12 and below: the fit is singular with unbounded intervals. Computed from J^T J, the condition number had
+// topped out near 1e8: status converged, and standard errors of a few counts (or exactly 0) where the exact ones
+// are 1e9 and more.
+TEST(DriftFit, TimeStampsFarFromPowerOnGiveASingularFitWithUnboundedIntervals) {
+    Series epoch = simulate({3.0, 505.0, 411.0}, 2000, 1.0, 0.25, 0.0, 12);
+    for (double& t : epoch.t_s) t += 1.7e9;
+    Series alternating;
+    for (int k = 0; k < 100; ++k) {
+        alternating.t_s.push_back(1e6 + k);
+        alternating.values.push_back(k % 2);
+    }
+    for (const Series* s : {&epoch, &alternating}) {
+        const FitResult f = fit_drift(s->t_s, s->values);
+        EXPECT_EQ(f.status, FitStatus::singular) << s->t_s.size();
+        EXPECT_GT(f.condition_number, 1e9) << s->t_s.size();
+        const ParameterIntervals i = parameter_intervals(f, 1.0);
+        EXPECT_TRUE(std::isinf(i.c1.stderr_) && std::isinf(i.c2.stderr_) && std::isinf(i.t_s.stderr_)) << s->t_s.size();
+    }
+}
+
+// A well-posed fit's standard errors against an independent computation in long double: J^T J accumulated and
+// inverted by cofactors. They agree, and none is 0 while the residual is not.
+TEST(DriftFit, StandardErrorsMatchALongDoubleInverseOfTheNormalMatrix) {
+    const Series s = simulate({-28.0, 622.0, 1050.0}, 3000, 1.0, 0.5, 0.0, 5);
+    const FitResult f = fit_drift(s.t_s, s.values);
+    ASSERT_EQ(f.status, FitStatus::converged);
+    long double a[3][3] = {};
+    for (double t : s.t_s) {
+        const long double e = std::exp(-static_cast<long double>(t) / f.parameters.t_s);
+        const long double j[3] = {1.0L - e, 1.0L, -f.parameters.c1 * e * t / (static_cast<long double>(f.parameters.t_s) *
+                                                                           f.parameters.t_s)};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) a[r][c] += j[r] * j[c];
+    }
+    const auto cof = [&](int r, int c) {
+        const int r0 = (r + 1) % 3, r1 = (r + 2) % 3, c0 = (c + 1) % 3, c1 = (c + 2) % 3;
+        return a[r0][c0] * a[r1][c1] - a[r0][c1] * a[r1][c0];
+    };
+    const long double det = a[0][0] * cof(0, 0) + a[0][1] * cof(0, 1) + a[0][2] * cof(0, 2);
+    const long double s2 = static_cast<long double>(f.rss) / (static_cast<long double>(s.t_s.size()) - 3.0L);
+    const ParameterIntervals i = parameter_intervals(f, 1.0);
+    const double expected[3] = {static_cast<double>(std::sqrt(s2 * cof(0, 0) / det)),
+                                static_cast<double>(std::sqrt(s2 * cof(1, 1) / det)),
+                                static_cast<double>(std::sqrt(s2 * cof(2, 2) / det))};
+    EXPECT_NEAR(i.c1.stderr_ / expected[0], 1.0, 1e-9);
+    EXPECT_NEAR(i.c2.stderr_ / expected[1], 1.0, 1e-9);
+    EXPECT_NEAR(i.t_s.stderr_ / expected[2], 1.0, 1e-9);
+    EXPECT_GT(i.c1.stderr_, 0.0);
 }
 
 TEST(DriftFit, TooShortOrConstantDataIsADataErrorNamingTheSeries) {
