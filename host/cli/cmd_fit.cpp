@@ -104,8 +104,8 @@ void run(const FitCommandOptions& opts) {
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
     cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required();
     cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
-    cmd->add_option("--t-min", r.options.t_min_s, "Use samples with t_s >= this [s]");
-    cmd->add_option("--t-max", r.options.t_max_s, "Use samples with t_s <= this [s]");
+    cmd->add_option("--t-min", r.options.t_min_s, "Use samples with t_s >= this [s]")->check(finite_value());
+    cmd->add_option("--t-max", r.options.t_max_s, "Use samples with t_s <= this [s]")->check(finite_value());
     cmd->add_option("--time-column", r.time_column, "Plain tables: the time column [s] (default t_s, t or time)");
     cmd->add_option("--sample-period", r.sample_period_s, "Plain tables without time: sample period [s]")
         ->check(positive_number());

@@ -1,5 +1,6 @@
 // `driftlab report LOG -o report.html`: the drift fit, whiteness and Allan analysis of a log in one
 // self-contained HTML file (host/report/html_report; docs/analysis.md §6).
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "host/report/html_report.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_folder.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -22,6 +24,8 @@ struct ReportCommandOptions {
 };
 
 void run(const ReportCommandOptions& opts) {
+    const std::string folder = std::filesystem::path(opts.output).parent_path().string();
+    if (!folder.empty()) make_output_folder(folder, "report");  // before the work, as --plot does
     const fit::FileAnalysis file = fit::analyse_file(opts.request);
     report::ReportOptions ropts;
     ropts.plots = !opts.no_plots;
@@ -29,7 +33,7 @@ void run(const ReportCommandOptions& opts) {
     std::ofstream out(opts.output, std::ios::binary);
     out << html;
     out.close();
-    if (!out) throw UsageError(opts.output + ": cannot write the report");
+    if (!out) throw DeviceError(opts.output, "cannot write the report");
     if (opts.json) {
         nlohmann::json j = {{"file", file.path}, {"report", opts.output}, {"channels", nlohmann::json::object()}};
         for (const auto& s : file.series)

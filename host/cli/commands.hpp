@@ -40,6 +40,8 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request
 /// double written out in full; these say what is wanted and what was given (number_checks.cpp).
 const CLI::Validator& positive_number();
 const CLI::Validator& non_negative_number();
+/// Any finite number (a time bound may be negative; "nan" compared false with every time and cut nothing).
+const CLI::Validator& finite_value();
 /// A seed: digits only, 0 to 2^64 - 1 (CLI11's unsigned parse wraps "-5" and clamps what is beyond).
 const CLI::Validator& seed_number();
 

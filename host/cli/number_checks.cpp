@@ -41,6 +41,15 @@ const CLI::Validator& non_negative_number() {
     return check;
 }
 
+const CLI::Validator& finite_value() {
+    static const CLI::Validator check(
+        [](std::string& text) -> std::string {
+            return finite_number(text) ? std::string() : "expected a finite number, got '" + text + "'";
+        },
+        "NUMBER");
+    return check;
+}
+
 const CLI::Validator& seed_number() {
     static const CLI::Validator check(
         [](std::string& text) -> std::string {

@@ -58,7 +58,12 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
         out.time_gaps += out.data.t_s[k] - out.data.t_s[k - 1] > 1.5 * out.sample_period_s;
 
     out.fit = fit_drift(out.data.t_s, out.data.values, options.fit);
-    out.whiteness = stats::test_whiteness(out.fit.residual, out.sample_period_s, options.whiteness);
+    try {
+        out.whiteness = stats::test_whiteness(out.fit.residual, out.sample_period_s, options.whiteness);
+    } catch (const UsageError& e) {
+        // A residual the test cannot take (constant in every sequence) is this series' data, not the command line.
+        throw DataError(series.source, 0, where + ": " + e.what());
+    }
     out.plain = parameter_intervals(out.fit, 1.0);
     out.widened = out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
 

@@ -1,7 +1,10 @@
 // Paper figures as plots; see analysis_plots.hpp.
 #include "host/report/analysis_plots.hpp"
 
+#include <limits>
+
 #include "host/fit/drift_model.hpp"
+#include "host/log/log_data.hpp"
 
 namespace driftlab::host::report {
 namespace {
@@ -31,7 +34,11 @@ std::optional<Plot> raw_vs_smoothed_plot(const fit::DriftAnalysis& a) {
     p.title = a.data.name + ": raw codes and on-board least-squares output (paper Fig. 2)";
     p.x_label = "t [s]";
     p.y_label = value_label(a);
-    p.series.push_back(thinned("raw", a.data.t_s, a.data.raw_values, SeriesStyle::steps));
+    // A lost RAW frame's code (-1) is no reading: a break in the steps, not a drop to -1 that flattens the rest.
+    std::vector<double> raw = a.data.raw_values;
+    for (double& v : raw)
+        if (v == kLostRawCode) v = std::numeric_limits<double>::quiet_NaN();
+    p.series.push_back(thinned("raw", a.data.t_s, raw, SeriesStyle::steps));
     p.series.back().color = "#9a9a9a";
     p.series.back().line_width = 1.0;
     p.series.push_back(thinned("least squares", a.data.t_s, a.data.values, SeriesStyle::lines));

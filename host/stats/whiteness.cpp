@@ -69,12 +69,22 @@ WhitenessResult test_whiteness(const std::vector<double>& residual, double sampl
         throw UsageError("whiteness: need at least " + std::to_string(kMinSamples) + " residual samples, got " +
                          std::to_string(n));
     if (!(sample_period_s > 0.0)) throw UsageError("whiteness: sample period must be > 0");
+    // Autocorrelations do not depend on scale; a power of two that brings the largest value near 1 changes no bit
+    // of them, and keeps the FFT's squares from underflowing (1e-170) or overflowing (1e200) to a constant series.
+    double largest = 0.0;
+    for (double v : residual) largest = std::max(largest, std::fabs(v));
+    std::vector<double> w = residual;
+    if (largest > 0.0 && std::isfinite(largest)) {
+        int exponent = 0;
+        std::frexp(largest, &exponent);
+        for (double& v : w) v = std::ldexp(v, -exponent);
+    }
     WhitenessResult out;
-    ensemble(residual, sample_period_s, options, out);
+    ensemble(w, sample_period_s, options, out);
 
     const std::size_t h = options.ljung_box_lags ? std::min(options.ljung_box_lags, n - 1)
                                                  : default_ljung_box_lags(n);
-    const std::vector<double> r = biased_autocovariance(residual, std::max(h, n / 4));
+    const std::vector<double> r = biased_autocovariance(w, std::max(h, n / 4));
     if (!(r[0] > 0.0)) throw UsageError("whiteness: the residual is identically zero");
     const std::vector<double> rho = normalised(r);
     out.ljung_box = ljung_box(rho, n, h);

@@ -2,6 +2,8 @@
 // usage like the commands' own checks, 0 for help and the version, never the parser library's private codes.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "e2e_support.hpp"
 
 namespace driftlab::e2e {
@@ -21,6 +23,12 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_EQ(duration.exit_code, 2) << bad << ": " << duration.output;
         EXPECT_NE(duration.output.find("--duration: expected a number > 0, got '" + bad + "'"), std::string::npos) << duration.output;
     }
+    // A time bound of nan compared false with every time and cut nothing.
+    for (const char* bound : {"--t-min", "--t-max"}) {
+        const RunResult nan = run_driftlab({"fit", "x.csv", bound, "nan"}, dir.path());
+        EXPECT_EQ(nan.exit_code, 2) << bound << ": " << nan.output;
+        EXPECT_NE(nan.output.find("expected a finite number, got 'nan'"), std::string::npos) << nan.output;
+    }
     EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
 }
@@ -31,6 +39,19 @@ TEST(ExitCodes, HelpAndVersionSucceed) {
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.output.find("--exclude-saturated"), std::string::npos) << help.output;
     EXPECT_EQ(run_driftlab({"--version"}, dir.path()).exit_code, 0);
+}
+
+// report -o into folders that do not exist yet makes them, as --plot does; one that cannot be made exits 4.
+TEST(ExitCodes, ReportMakesItsFolderOrSaysItCannot) {
+    TempDir dir("exitreport");
+    const std::string log = dir.file("h.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "300", "-o", log}, dir.path()).exit_code, 0);
+    const std::string nested = dir.file("new/sub/r.html");
+    const RunResult made = run_driftlab({"report", log, "-o", nested, "--no-plots"}, dir.path());
+    EXPECT_EQ(made.exit_code, 0) << made.output;
+    EXPECT_TRUE(std::filesystem::is_regular_file(nested));
+    const RunResult blocked = run_driftlab({"report", log, "-o", log + "/r.html", "--no-plots"}, dir.path());
+    EXPECT_EQ(blocked.exit_code, 4) << blocked.output;
 }
 
 }  // namespace

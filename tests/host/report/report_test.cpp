@@ -64,6 +64,21 @@ TEST(Report, FitJsonHasTheStableKeys) {
     EXPECT_TRUE(json_number(std::numeric_limits<double>::infinity()).is_null());
 }
 
+// Fig. 2: a row whose RAW frame was lost (raw code -1) breaks the raw steps; it is not drawn as a code of -1.
+TEST(Report, RawPlotLeavesLostCodesOut) {
+    fit::DriftAnalysis a;
+    a.data.name = "gyro";
+    a.data.t_s = {0.1, 0.2, 0.3, 0.4};
+    a.data.values = {507.2, 507.4, 507.1, 507.3};
+    a.data.raw_values = {507.0, -1.0, 508.0, 507.0};
+    const auto plot = raw_vs_smoothed_plot(a);
+    ASSERT_TRUE(plot.has_value());
+    const PlotSeries& raw = plot->series.front();
+    ASSERT_EQ(raw.y.size(), 4u);
+    EXPECT_TRUE(std::isnan(raw.y[1]));
+    EXPECT_EQ(raw.y[2], 508.0);
+}
+
 TEST(Report, GnuplotWritesPngAndSvg) {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot not on PATH";
     Plot p;

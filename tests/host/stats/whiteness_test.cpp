@@ -66,6 +66,23 @@ TEST(Whiteness, EnsembleUsesTheRequestedSequencesAndTheirBounds) {
     EXPECT_EQ(r.ljung_box.lags, 20u);
 }
 
+// The test does not depend on the residual's scale: 1e-170 and 1e200 times a residual give the same result (the
+// FFT's squares had underflowed to a "constant" residual, or overflowed).
+TEST(Whiteness, IsTheSameAtAnyScale) {
+    const std::vector<double> w = ar1(2000, 0.3, 11);
+    const WhitenessResult base = test_whiteness(w, 1.0, WhitenessOptions{});
+    for (const double scale : {1e-170, 1e200}) {
+        std::vector<double> scaled = w;
+        for (double& v : scaled) v *= scale;
+        const WhitenessResult r = test_whiteness(scaled, 1.0, WhitenessOptions{});
+        EXPECT_NEAR(r.ljung_box.statistic, base.ljung_box.statistic, 1e-9 * base.ljung_box.statistic) << scale;
+        EXPECT_EQ(r.white, base.white) << scale;
+        ASSERT_EQ(r.ensemble_rho.size(), base.ensemble_rho.size());
+        for (std::size_t d = 0; d < r.ensemble_rho.size(); ++d)
+            EXPECT_NEAR(r.ensemble_rho[d], base.ensemble_rho[d], 1e-12) << scale << " lag " << d;
+    }
+}
+
 TEST(Whiteness, ShortResidualAdaptsAndSaysSo) {
     const std::vector<double> w = ar1(230, 0.0, 6);
     const WhitenessResult r = test_whiteness(w, 1.0);
