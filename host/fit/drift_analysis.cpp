@@ -80,7 +80,16 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     if (out.fit.start.t_at_lower_end || out.fit.parameters.t_s < out.sample_period_s)
         out.warnings.push_back("T (" + format_double(out.fit.parameters.t_s) +
                                " s) is shorter than the sampling interval: the transient is not resolved");
-    if (!out.whiteness.white) {
+    if (!out.whiteness.white && out.whiteness.autocorrelation_time.tau <= 1.0) {
+        // Rejected, yet no positive correlation to widen by (negative lag-1 correlation, or a structure the window
+        // stops before): the widened intervals are the plain ones, which cannot be vouched for.
+        const auto& w = out.whiteness;
+        out.warnings.push_back("residual is not white (Ljung-Box p = " + format_double(w.ljung_box.p_value) + ", " +
+                               fixed(100.0 * w.fraction_inside, 1) +
+                               " % of ensemble lags inside +-2 sigma), but its integrated autocorrelation time is not "
+                               "above 1 sample: there is nothing to widen the intervals by, and they may still be too "
+                               "narrow");
+    } else if (!out.whiteness.white) {
         const auto& w = out.whiteness;
         out.warnings.push_back(
             "residual is not white (Ljung-Box p = " + format_double(w.ljung_box.p_value) + ", " +

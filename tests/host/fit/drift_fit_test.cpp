@@ -182,6 +182,31 @@ TEST(DriftFit, StandardErrorsMatchALongDoubleInverseOfTheNormalMatrix) {
     EXPECT_GT(i.c1.stderr_, 0.0);
 }
 
+// Noise with a negative lag-1 correlation (MA(1), theta = -0.8: rho_1 = -0.49) fails the whiteness test, but its
+// integrated autocorrelation time is below 1: the warning says there is nothing to widen by, not "too narrow by
+// about x1.00; use the widened intervals".
+TEST(DriftFit, ANegativelyCorrelatedResidualIsNotWidenedByOne) {
+    Series s;
+    s.name = "ma1";
+    s.source = "simulated";
+    sim::Rng rng(21, 3);
+    double previous = rng.normal();
+    for (int k = 1; k <= 3000; ++k) {
+        const double innovation = rng.normal();
+        s.t_s.push_back(k);
+        s.values.push_back(3.0 * (1.0 - std::exp(-k / 411.0)) + 505.0 + 0.25 * (innovation - 0.8 * previous));
+        previous = innovation;
+    }
+    const DriftAnalysis a = analyse_drift(s);
+    ASSERT_FALSE(a.whiteness.white);
+    bool said = false;
+    for (const std::string& w : a.warnings) {
+        said = said || w.find("nothing to widen the intervals by") != std::string::npos;
+        EXPECT_EQ(w.find("too narrow by about x1.00"), std::string::npos) << w;
+    }
+    EXPECT_TRUE(said);
+}
+
 TEST(DriftFit, TooShortOrConstantDataIsADataErrorNamingTheSeries) {
     Series s = simulate({3, 505, 411}, 100, 1.0, 0.1, 0.0, 9);
     AnalysisOptions only_a_few;
