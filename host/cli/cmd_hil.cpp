@@ -152,15 +152,8 @@ void check_option_combinations(const HilCliOptions& o) {
                          ": only with --target avr");
 }
 
-sim::HilOptions build_options(const HilCliOptions& o) {
-    check_option_combinations(o);
-    sim::HilOptions h;
-    h.model = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file);
-    h.seed = o.seed;
-    const auto preset = sim::preset_from_name(o.preset);
-    if (!preset) throw UsageError("--preset: expected fig3 or fig2, got '" + o.preset + "'");
-    sim::apply_preset(*preset, h);
-    proto::ConfigPayload& fw = h.model.firmware;
+// The command line's CONFIG fields over the model's.
+void apply_firmware_options(const HilCliOptions& o, proto::ConfigPayload& fw) {
     if (o.period_s) {
         const double ms = *o.period_s * 1000.0;
         if (!(ms >= proto::kOutputPeriodMinMs && ms <= proto::kOutputPeriodMaxMs) || std::abs(ms - std::round(ms)) > 1e-6)
@@ -173,6 +166,28 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     if (o.order) fw.fit_order = static_cast<std::uint8_t>(*o.order);
     if (o.raw) fw.raw = 1;
     if (o.stream) fw.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
+}
+
+sim::HilOptions build_options(const HilCliOptions& o) {
+    check_option_combinations(o);
+    const auto preset = sim::preset_from_name(o.preset);
+    if (!preset) throw UsageError("--preset: expected fig3 or fig2, got '" + o.preset + "'");
+    // The preset's and the options' CONFIG fields go over the file's before the firmware's check of the joined
+    // fields, which then sees the configuration that will run.
+    const auto adjust = [&o, &preset](proto::ConfigPayload& fw) {
+        sim::HilOptions with_preset;
+        with_preset.model.firmware = fw;
+        sim::apply_preset(*preset, with_preset);
+        fw = with_preset.model.firmware;
+        apply_firmware_options(o, fw);
+    };
+    sim::HilOptions h;
+    h.model = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file, adjust);
+    h.seed = o.seed;
+    sim::apply_preset(*preset, h);
+    proto::ConfigPayload& fw = h.model.firmware;
+    apply_firmware_options(o, fw);
+    if (const auto refusal = sim::firmware_refusal(fw)) throw UsageError(refusal->field + ": " + refusal->reason);
     if (o.duration_s) h.duration_s = *o.duration_s;
     if (o.warm_s) h.warm_up_s = *o.warm_s;
     // A billion seconds (32 years of board time) is far beyond any run, and keeps the output count exact.

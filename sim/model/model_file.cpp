@@ -178,7 +178,7 @@ void check_raw_noise(const toml::table& root, const SimModel& m) {
     }
 }
 
-void read_firmware(TableReader& r, proto::ConfigPayload& fw) {
+void read_firmware(TableReader& r, proto::ConfigPayload& fw, const FirmwareAdjust& adjust) {
     r.integer("output_period_ms", fw.output_period_ms, proto::kOutputPeriodMinMs, proto::kOutputPeriodMaxMs);
     r.integer("conversions_per_output", fw.conversions_per_output, 1, proto::kConversionsPerOutputMax);
     r.integer("window", fw.window, 1, proto::kWindowMax);
@@ -189,17 +189,13 @@ void read_firmware(TableReader& r, proto::ConfigPayload& fw) {
     r.boolean("raw", raw);
     fw.raw = raw ? 1 : 0;
     r.finish();
+    if (adjust) adjust(fw);
     // The firmware's own check too, whose limits join fields (a conversion rate too fast for the output period):
-    // refused here, not by the board after the handshake.
-    const fw::ConfigCheck check = fw::validate(fw);
-    if (check.status != proto::Status::ok) {
-        const char* name = proto::config_field_name(check.field);
-        const std::string field = name ? name : "conversions_per_output";
-        throw ConfigError(r.full(field), r.line(field),
-                          std::string("the firmware refuses this configuration (") + proto::status_name(check.status) +
-                              "): output_period_ms / (4 x conversions_per_output) must give a conversion period of " +
-                              std::to_string(fw::kMinConversionPeriodTicks) + " to " + std::to_string(fw::kMaxConversionPeriodTicks) +
-                              " ticks of 4 us");
+    // refused here, not by the board after the handshake; on the configuration that will run (the command line's
+    // options over the file's).
+    if (const auto refusal = firmware_refusal(fw)) {
+        throw ConfigError(r.full(refusal->field), r.line(refusal->field),
+                          refusal->reason + (adjust ? " (with the command line's firmware options)" : ""));
     }
 }
 
@@ -259,7 +255,7 @@ void read_effects(const toml::table& effects, std::vector<EffectSpec>& out) {
     }
 }
 
-SimModel read_model(const toml::table& root, SimModel m) {
+SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& adjust) {
     TableReader r(root, "");
     r.string("name", m.name);
     if (const toml::table* t = r.table("adc")) {
@@ -280,7 +276,9 @@ SimModel read_model(const toml::table& root, SimModel m) {
     if (const toml::table* t = r.table("effects")) read_effects(*t, m.effects);
     if (const toml::table* t = r.table("firmware")) {
         TableReader sub(*t, "firmware");
-        read_firmware(sub, m.firmware);
+        read_firmware(sub, m.firmware, adjust);
+    } else if (adjust) {
+        adjust(m.firmware);
     }
     if (const toml::table* t = r.table("link")) {
         TableReader sub(*t, "link");
@@ -297,7 +295,8 @@ SimModel empty_model() {
     return m;
 }
 
-SimModel parse_over(std::string_view text, const std::string& source_name, const SimModel& base) {
+SimModel parse_over(std::string_view text, const std::string& source_name, const SimModel& base,
+                    const FirmwareAdjust& adjust = {}) {
     toml::table root;
     try {
         root = toml::parse(text, source_name);
@@ -306,7 +305,7 @@ SimModel parse_over(std::string_view text, const std::string& source_name, const
                                 std::string(e.description()));
     }
     try {
-        return read_model(root, base);
+        return read_model(root, base, adjust);
     } catch (const ConfigError& e) {
         // e.what() is "line N: key: reason"; the host error puts file:line and key in front itself.
         const std::string where = e.line() > 0 ? source_name + ":" + std::to_string(e.line()) : source_name;
@@ -405,16 +404,27 @@ SimModel paper_model() {
     return m;
 }
 
-SimModel parse_model(std::string_view toml_text, const std::string& source_name) {
-    return parse_over(toml_text, source_name, paper_model());
+SimModel parse_model(std::string_view toml_text, const std::string& source_name, const FirmwareAdjust& adjust) {
+    return parse_over(toml_text, source_name, paper_model(), adjust);
 }
 
-SimModel load_model_file(const std::string& path) {
+SimModel load_model_file(const std::string& path, const FirmwareAdjust& adjust) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw host::ConfigError(path, "file", "cannot open the model file (does it exist and is it readable?)");
     std::ostringstream text;
     text << in.rdbuf();
-    return parse_model(text.str(), path);
+    return parse_model(text.str(), path, adjust);
+}
+
+std::optional<FirmwareRefusal> firmware_refusal(const proto::ConfigPayload& fw) {
+    const fw::ConfigCheck check = fw::validate(fw);
+    if (check.status == proto::Status::ok) return std::nullopt;
+    const char* name = proto::config_field_name(check.field);
+    return FirmwareRefusal{name ? name : "conversions_per_output",
+                           std::string("the firmware refuses this configuration (") + proto::status_name(check.status) +
+                               "): output_period_ms / (4 x conversions_per_output) must give a conversion period of " +
+                               std::to_string(fw::kMinConversionPeriodTicks) + " to " +
+                               std::to_string(fw::kMaxConversionPeriodTicks) + " ticks of 4 us"};
 }
 
 }  // namespace driftlab::sim

@@ -4,6 +4,8 @@
 // key. Effects are parsed by the effect registry (sim/effects/effect.hpp).
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -11,12 +13,24 @@
 
 namespace driftlab::sim {
 
+/// Why the firmware would refuse `fw` (its own CONFIG check, whose limits join fields: a conversion rate too fast
+/// for the output period), naming the field as the firmware's NAK does; none when it accepts it.
+struct FirmwareRefusal {
+    std::string field;
+    std::string reason;
+};
+std::optional<FirmwareRefusal> firmware_refusal(const proto::ConfigPayload& fw);
+
+/// Changes to the file's firmware CONFIG (a command line's --period, --conversions...), made before the firmware's
+/// own check of the joined fields, so that the configuration checked is the one that will run.
+using FirmwareAdjust = std::function<void(proto::ConfigPayload&)>;
+
 /// Reads `path`. Throws host::ConfigError ("file:line: key: what") on any bad content, and when the file cannot
 /// be read.
-SimModel load_model_file(const std::string& path);
+SimModel load_model_file(const std::string& path, const FirmwareAdjust& adjust = {});
 
 /// Parses model-file text; `source_name` names it in errors.
-SimModel parse_model(std::string_view toml_text, const std::string& source_name);
+SimModel parse_model(std::string_view toml_text, const std::string& source_name, const FirmwareAdjust& adjust = {});
 
 /// Model-file text that parse_model() reads back to `model`: every key (so the file does not depend on the built-in
 /// model it would overlay), numbers in their shortest exact form, and an effect named more than once (one instance

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "e2e_support.hpp"
@@ -35,6 +36,26 @@ TEST(HilCli, TooManyConversionsForThePeriodIsRefusedByField) {
         run_driftlab({"hil", "--duration", "2", "--period", "0.01", "-o", dir.file("h.csv")}, dir.path());
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.output.find("conversions_per_output"), std::string::npos) << r.output;
+}
+
+// A model file's firmware CONFIG is checked with the command line's options over it: 10 ms outputs with the paper's
+// 25 conversions are refused by the firmware, with --conversions 12 they run; --conversions 30 is refused again, and
+// the message says the options took part.
+TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
+    TempDir dir("hilmodelopts");
+    const std::string model = dir.file("ten_ms.toml");
+    std::ofstream(model) << "[firmware]\noutput_period_ms = 10\n\n[link]\nbaud = 115200.0\n";
+    const std::string out = dir.file("h.csv");
+    const RunResult alone = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", out}, dir.path());
+    EXPECT_EQ(alone.exit_code, 5) << alone.output;
+    EXPECT_NE(alone.output.find("ten_ms.toml"), std::string::npos) << alone.output;
+    const RunResult fits =
+        run_driftlab({"hil", "--model", model, "--conversions", "12", "--duration", "1", "-o", out}, dir.path());
+    EXPECT_EQ(fits.exit_code, 0) << fits.output;
+    const RunResult too_many =
+        run_driftlab({"hil", "--model", model, "--conversions", "30", "--duration", "1", "-o", out}, dir.path());
+    EXPECT_EQ(too_many.exit_code, 5) << too_many.output;
+    EXPECT_NE(too_many.output.find("with the command line's firmware options"), std::string::npos) << too_many.output;
 }
 
 // `-o -`: the log alone on standard output, so that it reads back; the summary goes to standard error, and --json
