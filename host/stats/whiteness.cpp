@@ -40,6 +40,11 @@ void ensemble(const std::vector<double>& w, double sample_period_s, const Whiten
     out.sequences_used = m;
     out.sequence_samples = len;
     out.sequence_length_s = static_cast<double>(len) * sample_period_s;
+    // A sequence is a whole number of samples (two at least): at a coarse sample period its length moves.
+    if (out.adaptation.empty() && std::fabs(out.sequence_length_s - options.sequence_length_s) > 1e-9 * options.sequence_length_s)
+        out.adaptation = "sequences of " + format_double(out.sequence_length_s) + " s (" + std::to_string(len) +
+                         " samples of " + format_double(sample_period_s) + " s), the nearest whole number of samples to " +
+                         format_double(options.sequence_length_s) + " s";
     out.ensemble_rho.assign(len, 0.0);
     std::size_t used = 0;
     for (std::size_t s = 0; s < m; ++s) {

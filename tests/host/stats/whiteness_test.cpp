@@ -83,6 +83,16 @@ TEST(Whiteness, IsTheSameAtAnyScale) {
     }
 }
 
+// At a 20 s sample period the paper's 50 s sequences are 3 samples (60 s), and the result says so.
+TEST(Whiteness, ASequenceLengthMovedToWholeSamplesIsSaid) {
+    const std::vector<double> w = ar1(400, 0.0, 8);
+    const WhitenessResult coarse = test_whiteness(w, 20.0);
+    EXPECT_EQ(coarse.sequence_samples, 3u);
+    EXPECT_DOUBLE_EQ(coarse.sequence_length_s, 60.0);
+    EXPECT_NE(coarse.adaptation.find("sequences of 60 s (3 samples of 20 s)"), std::string::npos) << coarse.adaptation;
+    EXPECT_TRUE(test_whiteness(ar1(4000, 0.0, 8), 1.0).adaptation.empty());  // 10 x 50 samples fit
+}
+
 TEST(Whiteness, ShortResidualAdaptsAndSaysSo) {
     const std::vector<double> w = ar1(230, 0.0, 6);
     const WhitenessResult r = test_whiteness(w, 1.0);
