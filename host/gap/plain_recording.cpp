@@ -56,11 +56,13 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         if (mapped[c]) throw UsageError(std::string("--as: channel ") + kChannelNames[c] + " mapped twice");
         mapped[c] = true;
     }
-    const std::vector<fit::Series> series = fit::series_from_table(table, names, "", how.sample_period_s);
-    // series_from_table() finds a time column by name and gives no series of it.
-    for (const auto& m : how.columns)
-        if (std::none_of(series.begin(), series.end(), [&](const fit::Series& s) { return s.name == m.column; }))
-            throw UsageError("--as: column '" + m.column + "' is the table's time column, which times the rows; it cannot also be a channel");
+    std::vector<fit::Series> series;
+    try {
+        series = fit::series_from_table(table, names, "", how.sample_period_s);
+    } catch (const UsageError& e) {
+        // Every name came from --as (a column the table lacks, or its time column).
+        throw UsageError(std::string("--as: ") + e.what());
+    }
     const std::size_t outputs = table.rows() / how.block;
     if (outputs < 2)
         throw DataError(table.source_name, 0, std::to_string(table.rows()) + " rows make fewer than two blocks of " +
