@@ -208,11 +208,14 @@ void run(const AllanCommandOptions& o) {
         const double tau0 = o.tau0_s > 0.0 ? o.tau0_s : spacing;
         if (!(tau0 > 0.0)) throw DataError(o.path, 0, "series '" + s.name + "': fewer than two samples");
         // The grid places each sample at its time / tau0: rows faster than tau0 would be packed onto consecutive
-        // slots (their time, and a real gap after them, lost), slower ones spread over empty slots.
-        if (std::abs(spacing / tau0 - 1.0) > kTau0Tolerance) {
-            char text[200];
-            std::snprintf(text, sizeof text, "--tau0 %g s, but the time column's rows are %g s apart (median); ",
-                          tau0, spacing);
+        // slots (their time, and a real gap after them, lost), slower ones spread over empty slots. tau0 must be the
+        // rows' spacing: the median, or the mean where they come in bursts (an MPU6050 read 100 times a second in
+        // bursts 2 ms apart).
+        const double mean = s.t_s.size() > 1 ? (s.t_s.back() - s.t_s.front()) / static_cast<double>(s.t_s.size() - 1) : 0.0;
+        if (std::abs(spacing / tau0 - 1.0) > kTau0Tolerance && std::abs(mean / tau0 - 1.0) > kTau0Tolerance) {
+            char text[240];
+            std::snprintf(text, sizeof text, "--tau0 %g s, but the time column's rows are %g s apart (median; mean %g s); ",
+                          tau0, spacing, mean);
             throw UsageError(text + std::string(log ? "leave --tau0 out to use the rows' spacing"
                                                     : "give their spacing, or a table without a time column"));
         }
@@ -229,6 +232,8 @@ void run(const AllanCommandOptions& o) {
             c["tau0_s"] = tau0;
             c["samples"] = r.samples;
             c["gap_samples"] = r.gap_samples;
+            c["packed_samples"] = r.packed_samples;
+            c["packed_most_slots"] = r.packed_most_slots;
             c["drift_removed"] = r.drift_removed.has_value();
             c["drift_status"] = r.drift_status;
             if (r.drift) c["drift"] = {{"C1", r.drift->c1}, {"C2", r.drift->c2}, {"T_s", r.drift->t_s}};
@@ -237,6 +242,11 @@ void run(const AllanCommandOptions& o) {
         } else {
             std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(), s.name.c_str(),
                         tau0, r.samples, r.gap_samples, r.drift_removed ? "removed (eq. 1)" : r.drift_status.c_str());
+            if (r.packed_samples > 0)
+                std::printf("  warning: %zu samples came faster than tau0 (bursts, or a record that changes its rate) "
+                            "and were placed 2 to %zu slots (%.6g s) after their time; a gap right after such a stretch "
+                            "is closed up\n",
+                            r.packed_samples, r.packed_most_slots, static_cast<double>(r.packed_most_slots) * tau0);
             if (r.drift_removed) print_version("drift removed", *r.drift_removed, u);
             print_version(r.drift_removed ? "raw" : "as given", r.raw, u);
         }

@@ -72,6 +72,8 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
     out.tau0_s = tau0_s;
     out.samples = grid.values.size();
     out.gap_samples = grid.missing;
+    out.packed_samples = grid.packed;
+    out.packed_most_slots = grid.most_late;
     out.raw = analyse_curves(make_record(grid.values, tau0_s, request.kind), request);
 
     if (!request.remove_drift) {

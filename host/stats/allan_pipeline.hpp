@@ -32,6 +32,8 @@ struct AllanResult {
     double tau0_s = 0.0;
     std::size_t samples = 0;      ///< grid slots (input samples plus gap slots)
     std::size_t gap_samples = 0;  ///< slots that are gaps (missing, NaN)
+    std::size_t packed_samples = 0;  ///< samples placed 2 or more slots after their time (see UniformSeries)
+    std::size_t packed_most_slots = 0;  ///< the largest such displacement [slots]
     AllanCurves raw;
     std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
     std::optional<fit::DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]

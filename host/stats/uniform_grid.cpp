@@ -31,6 +31,12 @@ UniformSeries to_uniform_grid(std::span<const double> t_s, std::span<const doubl
             throw std::invalid_argument("uniform grid: the times span far more slots than samples (tau0 too small?)");
         }
         slot[k] = std::max(slot[k - 1] + 1, static_cast<std::size_t>(std::max(nominal, 0.0)));
+        // Jitter moves a sample one slot at most; further, the rows come faster than tau0.
+        const double late = static_cast<double>(slot[k]) - nominal;
+        if (late >= 2.0) {
+            ++out.packed;
+            out.most_late = std::max(out.most_late, static_cast<std::size_t>(late));
+        }
     }
     if (slot.back() > 20 * t_s.size() + 20) {
         throw std::invalid_argument("uniform grid: the times span far more slots than samples (tau0 too small?)");

@@ -13,6 +13,8 @@ struct UniformSeries {
     double t0_s = 0.0;            ///< time of grid index 0 [s]
     std::vector<double> values;   ///< one per grid slot; NaN where no sample fell
     std::size_t missing = 0;      ///< slots without a sample (gaps)
+    std::size_t packed = 0;       ///< samples placed 2 or more slots after their time (rows faster than tau0)
+    std::size_t most_late = 0;    ///< the largest such displacement [slots]
 };
 
 /// Median spacing of strictly increasing times [s]; 0 for fewer than two samples.

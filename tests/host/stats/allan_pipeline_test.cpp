@@ -48,6 +48,21 @@ TEST(UniformGrid, BurstyTimestampsNeverDropASample) {
     EXPECT_EQ(g.values[99], 99.0);
 }
 
+// A record that changes its rate: 200 rows 0.5 s apart, then 1 s rows, on a 1 s grid. The fast rows are packed onto
+// consecutive slots and counted; jitter of less than half a period packs none.
+TEST(UniformGrid, RowsFasterThanTau0AreCountedAsPacked) {
+    std::vector<double> t, y;
+    for (int k = 0; k < 200; ++k) t.push_back(0.5 * k);
+    for (int k = 0; k < 100; ++k) t.push_back(100.0 + k);
+    y.assign(t.size(), 1.0);
+    const UniformSeries packed = to_uniform_grid(t, y, 1.0);
+    EXPECT_EQ(packed.packed, 296u);     // fast rows 4..199 (k - k/2 >= 2), then every 1 s row behind them
+    EXPECT_EQ(packed.most_late, 100u);  // the 1 s rows sit 100 slots late
+    std::vector<double> jittered(300);
+    for (std::size_t k = 0; k < jittered.size(); ++k) jittered[k] = static_cast<double>(k) + ((k % 3) - 1.0) * 0.3;
+    EXPECT_EQ(to_uniform_grid(jittered, std::vector<double>(300, 1.0), 1.0).packed, 0u);
+}
+
 TEST(UniformGrid, RejectsAGridFarFinerThanTheSamples) {
     const std::vector<double> t = {0.0, 1000.0};
     const std::vector<double> v = {0.0, 0.0};
