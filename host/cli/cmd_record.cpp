@@ -110,7 +110,8 @@ void register_record(CLI::App& app) {
     auto* poll = cmd->add_option("--poll", o->poll_s, "Poll mode (the paper's), one POLL every PERIOD [s] (default 0.1)");
     auto* stream = cmd->add_option("--stream", o->stream_s, "Stream mode: the board sends every PERIOD [s] unasked");
     poll->excludes(stream);
-    cmd->add_option("--duration", o->duration_s, "Stop after this much board time [s] (default: until Ctrl-C)");
+    cmd->add_option("--duration", o->duration_s, "Stop after this much board time [s] (default: until Ctrl-C)")
+        ->check(non_negative_number());
     cmd->add_option("--conversions", o->conversions, "ADC conversions per channel per output (1..64)")
         ->capture_default_str();
     cmd->add_option("--window", o->window, "Least-squares window N [conversions] (1..64)")->capture_default_str();

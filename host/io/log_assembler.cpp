@@ -119,43 +119,54 @@ std::optional<std::pair<double, double>> LogAssembler::board_ticks_since_newest(
     return std::make_pair(ticks, ticks * rate_error + jitter_us * rate);
 }
 
+bool LogAssembler::settle_gap(const Stamped& evidence) {
+    awaiting_evidence_ = false;
+    // Did the firmware run on through the gap? Its count must then be the newest row's tick plus what the host's
+    // clock says the board's clock ran meanwhile, whole wraps of the 32-bit tick included. Short of that, beyond
+    // the tolerance, it restarted, whichever side of the last tick it is. Past it proves nothing (the host's clock
+    // stops while the PC sleeps), so there only a count below the last tick is a restart.
+    const auto uptime = static_cast<std::uint32_t>(evidence.tick);
+    std::optional<std::uint64_t> ran_on;
+    bool short_of_run_on = false;
+    if (const auto elapsed = board_ticks_since_newest(evidence.t_us)) {
+        ran_on = ticks_run_on(last_epoch_tick_, uptime, elapsed->first, elapsed->second);
+        short_of_run_on = uptime >= last_epoch_tick_ &&
+                          static_cast<double>(uptime - last_epoch_tick_) < elapsed->first - elapsed->second;
+    }
+    if (ran_on) {
+        ticks_.expect_near(newest_sample_->tick + *ran_on);
+        return false;
+    }
+    if (!ticks_.started() || (uptime >= last_epoch_tick_ && !short_of_run_on)) return false;
+    ++stats_.firmware_restarts;
+    seq_.restart_epoch();
+    ticks_.restart_epoch(ticks_.last() + 1);
+    last_epoch_tick_ = 0;
+    epoch_first_sample_.reset();
+    newest_sample_.reset();
+    if (writer_) {
+        writer_->write_gap("firmware restarted during the gap (uptime " +
+                           std::to_string(version_ ? static_cast<double>(uptime) / version_->tick_hz : 0.0) +
+                           " s); tick and seq continue after the last row");
+    }
+    return true;
+}
+
 void LogAssembler::release_held() {
     holding_ = false;
-    // Did the firmware run on through the gap? Its STATUS uptime must then be the newest row's tick plus what the
-    // host's clock says the board's clock ran meanwhile, whole wraps of the 32-bit tick included; a restarted
-    // firmware's uptime is anything short of that.
-    std::optional<std::uint64_t> ran_on;
-    if (held_status_) {
-        if (const auto elapsed = board_ticks_since_newest(held_status_->t_us)) {
-            ran_on = ticks_run_on(last_epoch_tick_, static_cast<std::uint32_t>(held_status_->tick), elapsed->first,
-                                  elapsed->second);
-        }
-    }
-    if (held_status_ && ticks_.started() && held_status_->tick < last_epoch_tick_ && !ran_on) {
-        ++stats_.firmware_restarts;
-        seq_.restart_epoch();
-        ticks_.restart_epoch(ticks_.last() + 1);
-        last_epoch_tick_ = 0;
-        epoch_first_sample_.reset();
-        newest_sample_.reset();
-        if (writer_) {
-            writer_->write_gap("firmware restarted during the gap (uptime " +
-                               std::to_string(version_ ? static_cast<double>(held_status_->tick) / version_->tick_hz
-                                                       : 0.0) +
-                               " s); tick and seq continue after the last row");
-        }
-    } else {
-        if (ran_on) ticks_.expect_near(newest_sample_->tick + *ran_on);
-        if (config_ && seq_.started() && first_held_t_us_ &&
-            config_->mode == static_cast<std::uint8_t>(proto::OutputMode::stream)) {
-            // A streaming board kept sending while unplugged: unwrap near where its count should be now.
-            const auto elapsed = board_ticks_since_newest(*first_held_t_us_);
-            const double gap_outputs =
-                elapsed ? elapsed->first / (config_->output_period_ms / 1000.0 * version_->tick_hz)
-                        : static_cast<double>(*first_held_t_us_ - lost_t_us_) / (config_->output_period_ms * 1000.0);
-            const double frames_per_output = config_->raw ? 2.0 : 1.0;
-            seq_.expect_near(seq_.newest() + static_cast<std::uint64_t>(gap_outputs * frames_per_output));
-        }
+    // The handshake's STATUS tells how tick and seq continue; without one (its request went unanswered) the first
+    // SAMPLE after the gap does, before its seq is taken (process_frame).
+    awaiting_evidence_ = ticks_.started();
+    const bool restarted = held_status_ && settle_gap(*held_status_);
+    if (!restarted && config_ && seq_.started() && first_held_t_us_ &&
+        config_->mode == static_cast<std::uint8_t>(proto::OutputMode::stream)) {
+        // A streaming board kept sending while unplugged: unwrap near where its count should be now.
+        const auto elapsed = board_ticks_since_newest(*first_held_t_us_);
+        const double gap_outputs =
+            elapsed ? elapsed->first / (config_->output_period_ms / 1000.0 * version_->tick_hz)
+                    : static_cast<double>(*first_held_t_us_ - lost_t_us_) / (config_->output_period_ms * 1000.0);
+        const double frames_per_output = config_->raw ? 2.0 : 1.0;
+        seq_.expect_near(seq_.newest() + static_cast<std::uint64_t>(gap_outputs * frames_per_output));
     }
     std::vector<std::pair<std::uint64_t, Frame>> frames;
     frames.swap(held_);
@@ -163,6 +174,10 @@ void LogAssembler::release_held() {
 }
 
 void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
+    if (awaiting_evidence_ && frame.type == proto::MsgType::sample) {
+        proto::SamplePayload s{};
+        if (proto::parse(frame.payload.data(), frame.payload_len, &s)) settle_gap(Stamped{t_us, s.tick});
+    }
     ++stats_.frames;
     const SeqResult seq = seq_.accept(frame.seq);
     stats_.lost_frames = seq_.lost();

@@ -74,6 +74,10 @@ private:
     void handle_frame(std::uint64_t t_us, const Frame& frame);
     void process_frame(std::uint64_t t_us, const Frame& frame);
     void release_held();
+    struct Stamped;
+    /// How tick and seq continue after a gap, from the board's count at `evidence` (the STATUS uptime, or the first
+    /// SAMPLE's tick); true when the firmware restarted.
+    bool settle_gap(const Stamped& evidence);
     /// Board ticks elapsed from the newest SAMPLE to host time `t_us`, and how far off that may be.
     std::optional<std::pair<double, double>> board_ticks_since_newest(std::uint64_t t_us) const;
     void emit(const proto::SamplePayload& sample, std::uint64_t seq, std::uint64_t tick, const proto::RawPayload* raw);
@@ -102,6 +106,7 @@ private:
     std::optional<std::uint64_t> first_held_t_us_;
     std::vector<std::pair<std::uint64_t, Frame>> held_;  ///< frames received since the loss, with their host time
     std::optional<Stamped> held_status_;  ///< the newest STATUS among the held frames (its uptime)
+    bool awaiting_evidence_ = false;  ///< a gap without a STATUS: the next SAMPLE settles it
     std::uint32_t last_epoch_tick_ = 0;  // newest SAMPLE tick since the last firmware start [ticks]
     std::optional<Stamped> epoch_first_sample_;  ///< the first SAMPLE since the firmware's start (its clock's rate)
     std::optional<Stamped> newest_sample_;

@@ -29,6 +29,10 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_EQ(nan.exit_code, 2) << bound << ": " << nan.output;
         EXPECT_NE(nan.output.find("expected a finite number, got 'nan'"), std::string::npos) << nan.output;
     }
+    // record --duration nan recorded until Ctrl-C.
+    const RunResult record = run_driftlab({"record", "--port", "/dev/null", "--duration", "nan", "-o", dir.file("r.csv")}, dir.path());
+    EXPECT_EQ(record.exit_code, 2) << record.output;
+    EXPECT_NE(record.output.find("--duration: expected a number >= 0, got 'nan'"), std::string::npos) << record.output;
     EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
 }

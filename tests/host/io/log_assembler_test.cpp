@@ -101,12 +101,12 @@ void record_until_unplugged(Board& b) {
 
 // The recorder's handshake after reconnecting (VERSION, CONFIG_SET, CONFIG, STATUS), one streamed output at
 // `tick` arriving between the replies, the gap line, then the next output.
-void reconnect_with_an_output_inside(Board& b, std::uint32_t tick, std::uint32_t uptime) {
+void reconnect_with_an_output_inside(Board& b, std::uint32_t tick, std::uint32_t uptime, bool answer_status = true) {
     b.version();
     b.ack();
     b.sample(tick);
     b.config();
-    b.status(uptime);
+    if (answer_status) b.status(uptime);
     b.event("gap: link lost after t_s=0.3, reconnected after 6 s, 1 attempts");
     b.event("resumed");
     b.sample(tick + kTicksPerOutput);
@@ -136,6 +136,8 @@ struct Unplugged {
     std::uint32_t rows = 3;
     double gap_s = 6.0;
     std::optional<std::uint32_t> uptime_after;
+    bool answer_status = true;  ///< false: the STATUS request went unanswered (a lossy radio link)
+    std::uint32_t rows_after = 1;  ///< outputs after the handshake's
 };
 
 LogData recorded_across_an_unplug(const std::string& name, const Unplugged& u, AssemblyStats& stats) {
@@ -160,7 +162,17 @@ LogData recorded_across_an_unplug(const std::string& name, const Unplugged& u, A
         // The handshake's replies arrive 1 ms apart; the output inside it is the first one after the gap.
         const auto ran_on = static_cast<std::uint32_t>(tick + static_cast<std::uint64_t>(gap_ticks));
         const std::uint32_t next = u.uptime_after ? *u.uptime_after : ran_on + kTicksPerOutput;
-        reconnect_with_an_output_inside(b, next, next + 100);
+        b.version();
+        b.ack();
+        b.sample(next);
+        b.config();
+        if (u.answer_status) b.status(next + 100);
+        b.event("gap: link lost, reconnected");
+        b.event("resumed");
+        for (std::uint32_t k = 1; k <= u.rows_after; ++k) {
+            b.wait_us(output_us - 1000);
+            b.sample(next + k * kTicksPerOutput);
+        }
         a.finish();
         stats = a.stats();
     }
@@ -262,6 +274,44 @@ TEST(LogAssembler, AFirmwareRestartedWhereTheOldCountWouldHaveWrappedIsARestart)
     EXPECT_NE(log.gaps[1].text.find("firmware restarted"), std::string::npos) << log.gaps[1].text;
     ASSERT_EQ(log.size(), 5u);
     EXPECT_GT(log.t_s[3], log.t_s[2]);
+}
+
+// Without a STATUS (its request went unanswered), the first SAMPLE after the gap tells: a restarted firmware's rows
+// are kept and the restart marked (they had been dropped as duplicates), and a count run on for 3 h is placed
+// there (its rows had been dropped as not after the previous one).
+TEST(LogAssembler, WithoutAStatusTheFirstSampleAfterTheGapDecides) {
+    Unplugged restarted;
+    restarted.answer_status = false;
+    restarted.rows = 600;
+    restarted.gap_s = 60.0;
+    restarted.uptime_after = 5 * kTickHz;
+    restarted.rows_after = 50;
+    AssemblyStats stats;
+    const LogData log = recorded_across_an_unplug("nostatus_restart.csv", restarted, stats);
+    EXPECT_EQ(stats.firmware_restarts, 1u);
+    EXPECT_EQ(log.size(), 651u);
+    Unplugged ran_on;
+    ran_on.answer_status = false;
+    ran_on.gap_s = 3 * 3600.0;
+    ran_on.rows_after = 50;
+    const LogData long_gap = recorded_across_an_unplug("nostatus_long.csv", ran_on, stats);
+    EXPECT_EQ(stats.firmware_restarts, 0u);
+    ASSERT_EQ(long_gap.size(), 54u);
+    EXPECT_NEAR(long_gap.t_s[3] - long_gap.t_s[2], 3 * 3600.0 + 0.1, 1e-9);
+}
+
+// A firmware that restarted early in a long gap has an uptime above the last row's tick but far short of where a
+// run-on would be: a restart (its rows had been dropped as duplicates, none marked).
+TEST(LogAssembler, AnUptimeShortOfTheRunOnIsARestartEvenAboveTheLastTick) {
+    Unplugged u;
+    u.rows = 6000;                     // 600 s from power-on
+    u.gap_s = 1200.0;                  // a run-on would be at 1800 s
+    u.uptime_after = 900 * kTickHz;    // rebooted 300 s into the gap
+    u.rows_after = 100;
+    AssemblyStats stats;
+    const LogData log = recorded_across_an_unplug("early_restart.csv", u, stats);
+    EXPECT_EQ(stats.firmware_restarts, 1u);
+    EXPECT_EQ(log.size(), 6101u);
 }
 
 TEST(LogAssembler, ASampleBeyondTheConvertersReachIsSkippedAndCounted) {
