@@ -39,6 +39,10 @@ void run_decode(const DecodeOptions& o) {
                              "records (frames in them count as lost)\n",
                      o.capture.c_str(), static_cast<unsigned long long>(d.offset),
                      static_cast<unsigned long long>(d.offset + d.bytes), static_cast<unsigned long long>(d.bytes));
+    for (const std::uint64_t offset : reader.retimed())
+        std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: a record's time is damaged (it is after the next "
+                             "record's); read at the previous record's time\n",
+                     o.capture.c_str(), static_cast<unsigned long long>(offset));
     if (reader.truncated_at()) {
         std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: last record cut (recorder killed while "
                              "writing); decoded up to it\n",

@@ -164,9 +164,16 @@ std::optional<CaptureRecord> CaptureReader::next() {
         const bool at_end = end == data_.size();
         const bool followed = !at_end && record_at(end, rec->t_us).has_value();
         if (!in_a_day && !followed) rec.reset();
+        // A damaged time that jumps ahead: the next record does not follow it but follows the one before. Read at the
+        // previous record's time, so that its time does not become the reference every later record falls behind.
+        const bool retimed = rec && in_a_day && !at_end && !followed && record_at(end, last_t_us_).has_value();
+        if (retimed) {
+            rec->t_us = last_t_us_;
+            retimed_.push_back(pos_);
+        }
         // A damaged length swallows the records after it: its end then falls among bytes that are no record, while
         // whole records start inside what it claims. (A whole record followed by damage has none inside.)
-        if (in_a_day && !at_end && !followed && !cut_record_at(end))
+        if (in_a_day && !at_end && !followed && !retimed && !cut_record_at(end))
             for (std::size_t k = pos_ + kRecordHeaderSize; k < end && rec; ++k)
                 if (records_resume_at(k)) rec.reset();
     }

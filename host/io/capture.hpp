@@ -80,6 +80,9 @@ public:
     std::optional<std::uint64_t> truncated_at() const { return truncated_at_; }
     /// The damaged stretches skipped so far, in file order.
     const std::vector<Damage>& damaged() const { return damaged_; }
+    /// Byte offsets of records whose time was damaged (it jumped ahead of the next record, which follows the one
+    /// before): read at the previous record's time.
+    const std::vector<std::uint64_t>& retimed() const { return retimed_; }
 
 private:
     /// A day: the longest wait between two records believed on their own (a recorder polling writes every period).
@@ -95,6 +98,7 @@ private:
     CaptureHeader header_;
     std::optional<std::uint64_t> truncated_at_;
     std::vector<Damage> damaged_;
+    std::vector<std::uint64_t> retimed_;
 };
 
 }  // namespace driftlab::host::io

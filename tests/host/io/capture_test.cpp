@@ -185,3 +185,31 @@ TEST(Capture, ADamagedLengthDoesNotSwallowTheRecordsAfterIt) {
     EXPECT_EQ(r.damaged()[0].bytes, offsets[3] - offsets[2]);
     fs::remove(path);
 }
+
+// One flipped bit in a record's time (+4.2 s, well inside a day): the next record does not follow it but follows
+// the one before. The record is read at the previous record's time, and every later record is read too (its time
+// had become the reference they all fell behind, and the rest of the file was reported as cut by a kill).
+TEST(Capture, ARecordWhoseTimeJumpedAheadIsReadAtThePreviousTime) {
+    const std::string path = temp_file("badtime.cap");
+    const std::vector<std::uint64_t> offsets = six_records(path);
+    {
+        std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
+        f.seekg(static_cast<std::streamoff>(offsets[2] + 1 + 2));  // t_us byte 2
+        char byte = 0;
+        f.read(&byte, 1);
+        byte = static_cast<char>(byte ^ 0x40);
+        f.seekp(static_cast<std::streamoff>(offsets[2] + 1 + 2));
+        f.write(&byte, 1);
+    }
+    CaptureReader r(path);
+    std::vector<CaptureRecord> records;
+    while (auto rec = r.next()) records.push_back(*rec);
+    ASSERT_EQ(records.size(), 6u);
+    EXPECT_EQ(records[2].offset, offsets[2]);
+    EXPECT_EQ(records[2].t_us, records[1].t_us);
+    EXPECT_LE(records[5].t_us - records[0].t_us, 1'000'000u);
+    EXPECT_EQ(r.retimed(), (std::vector<std::uint64_t>{offsets[2]}));
+    EXPECT_TRUE(r.damaged().empty());
+    EXPECT_FALSE(r.truncated_at().has_value());
+    fs::remove(path);
+}
