@@ -25,7 +25,16 @@ void run_decode(const DecodeOptions& o) {
         if (rec->kind == io::CaptureKind::rx) {
             assembler.on_rx(rec->t_us, rec->payload.data(), rec->payload.size());
         } else if (rec->kind == io::CaptureKind::event) {
-            assembler.on_event(rec->t_us, rec->text());
+            try {
+                assembler.on_event(rec->t_us, rec->text());
+            } catch (const DataError& e) {
+                // The assembler names the capture its header names; the file decoded here, and where, are what help.
+                const std::string what = e.what();
+                const std::size_t colon = what.find(": ");
+                throw DataError(o.capture, 0,
+                                "byte offset " + std::to_string(rec->offset) + ": " +
+                                    (colon == std::string::npos ? what : what.substr(colon + 2)));
+            }
             started = started || assembler.started();
         }
     }

@@ -69,18 +69,20 @@ std::uint64_t CaptureWriter::now_us() const {
         std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start_).count());
 }
 
-void CaptureWriter::write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count) {
+std::uint64_t CaptureWriter::write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count) {
+    const std::uint64_t t_us = now_us();
     std::string record;
     record.reserve(kRecordHeaderSize + count);
     record.push_back(static_cast<char>(kind));
-    put_le(record, now_us(), 8);
+    put_le(record, t_us, 8);
     put_le(record, count, 4);
     record.append(reinterpret_cast<const char*>(bytes), count);
     write_all(fd_, record, path_);
+    return t_us;
 }
 
-void CaptureWriter::write_event(const std::string& text) {
-    write(CaptureKind::event, reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+std::uint64_t CaptureWriter::write_event(const std::string& text) {
+    return write(CaptureKind::event, reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
 }
 
 CaptureReader::CaptureReader(const std::string& path) : path_(path) {

@@ -45,8 +45,10 @@ public:
     CaptureWriter(const CaptureWriter&) = delete;
     CaptureWriter& operator=(const CaptureWriter&) = delete;
 
-    void write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count);
-    void write_event(const std::string& text);
+    /// Writes one record; returns its t_us, which the live assembler must be given too, so that recording and
+    /// `decode` see the same times.
+    std::uint64_t write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count);
+    std::uint64_t write_event(const std::string& text);
     /// [us] since the capture started (the t_us of a record written now).
     std::uint64_t now_us() const;
     const std::string& path() const { return path_; }

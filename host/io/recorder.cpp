@@ -74,13 +74,10 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
 
     BoardClient client(port);
     client.set_tap([&](CaptureKind kind, const std::uint8_t* bytes, std::size_t n) {
-        capture->write(kind, bytes, n);
-        if (kind == CaptureKind::rx) assembler.on_rx(capture->now_us(), bytes, n);
+        const std::uint64_t t_us = capture->write(kind, bytes, n);
+        if (kind == CaptureKind::rx) assembler.on_rx(t_us, bytes, n);
     });
-    auto event = [&](const std::string& text) {
-        capture->write_event(text);
-        assembler.on_event(capture->now_us(), text);
-    };
+    auto event = [&](const std::string& text) { assembler.on_event(capture->write_event(text), text); };
 
     const std::string problem = bring_up(client, options.config);
     if (!problem.empty()) {

@@ -8,6 +8,7 @@
 
 #include "driftlab/proto/encoder.hpp"
 #include "driftlab/proto/wire.hpp"
+#include "host/io/capture.hpp"
 #include "host/io/pty_bridge.hpp"
 #include "tests/e2e/e2e_support.hpp"
 
@@ -99,3 +100,28 @@ TEST(RecordErrors, ABoardOfAnotherProtocolVersionIsRefusedByNumber) {
     const RunResult r = run_driftlab({"record", "--port", future.path(), "-o", dir.file("rec.csv")}, dir.path());
     expect_refused(r, "protocol version 2", dir);
 }
+
+namespace driftlab::e2e {
+namespace {
+
+// A capture whose start comes before any VERSION or CONFIG (frames lost to damage): decode names the file it was
+// given and the byte offset, not the name the capture's header carries (the recording's, before it was renamed).
+TEST(DecodeErrors, AStartWithoutTheBoardsFramesNamesTheFileAndOffset) {
+    TempDir dir("decodestart");
+    const std::string renamed = dir.file("renamed.cap");
+    std::uint64_t start_offset = 0;
+    {
+        host::io::CaptureWriter w(renamed, {{"port", "/dev/pts/3"}, {"capture", "original.cap"}});
+        start_offset = std::filesystem::file_size(renamed);
+        w.write_event("start");
+    }
+    const RunResult r = run_driftlab({"decode", renamed, "-o", dir.file("x.csv")}, dir.path());
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("renamed.cap: byte offset " + std::to_string(start_offset) + ": recording started before"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("original.cap"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace driftlab::e2e
