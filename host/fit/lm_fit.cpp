@@ -87,7 +87,8 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
     // Residual, and the Jacobian over (C1, C2, T) for the covariance and the rank check.
     out.residual.resize(n);
     Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
-    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();  // only a warm start's retry rule reads it (below)
+    const bool warm = options.start.has_value();
     const DriftParameters& p = out.parameters;
     for (std::size_t k = 0; k < n; ++k) {
         const double u = t_s[k] / p.t_s;
@@ -96,7 +97,7 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
         out.rss += out.residual[k] * out.residual[k];
         const Eigen::Vector3d j(1.0 - e, 1.0, -p.c1 * e * u / p.t_s);
         add_row(r, j);
-        jtj.noalias() += j * j.transpose();
+        if (warm) jtj.noalias() += j * j.transpose();
     }
     out.rms = std::sqrt(out.rss / static_cast<double>(n));
     out.jacobian_r = r;
@@ -115,11 +116,13 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
     // A warm start that ran off is tried again cold: out of evaluations, or degenerate to the precision of its normal
     // equations (T run to 0 or to infinity, C1 to 0: a column of J exactly zero or equal to another); merely
     // ill-conditioned data are the data's, and stay.
-    const Eigen::Vector3d normal_scale = jtj.diagonal().cwiseSqrt().cwiseMax(1e-300).cwiseInverse();
-    const Eigen::Vector3d normal_sv =
-        Eigen::JacobiSVD<Eigen::Matrix3d>(normal_scale.asDiagonal() * jtj * normal_scale.asDiagonal()).singularValues();
-    const bool degenerate = !(normal_sv[2] > 0.0 && std::sqrt(normal_sv[0] / normal_sv[2]) < kSingularCondition);
-    if (options.start && (out.status == FitStatus::iteration_limit || !std::isfinite(out.rss) || degenerate)) {
+    const auto degenerate = [&jtj] {
+        const Eigen::Vector3d normal_scale = jtj.diagonal().cwiseSqrt().cwiseMax(1e-300).cwiseInverse();
+        const Eigen::Vector3d normal_sv =
+            Eigen::JacobiSVD<Eigen::Matrix3d>(normal_scale.asDiagonal() * jtj * normal_scale.asDiagonal()).singularValues();
+        return !(normal_sv[2] > 0.0 && std::sqrt(normal_sv[0] / normal_sv[2]) < kSingularCondition);
+    };
+    if (warm && (out.status == FitStatus::iteration_limit || !std::isfinite(out.rss) || degenerate())) {
         FitOptions cold = options;
         cold.start.reset();
         return fit_drift(t_s, y, cold);
