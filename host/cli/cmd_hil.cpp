@@ -175,10 +175,7 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     // The preset's and the options' CONFIG fields go over the file's before the firmware's check of the joined
     // fields, which then sees the configuration that will run.
     const auto adjust = [&o, &preset](proto::ConfigPayload& fw) {
-        sim::HilOptions with_preset;
-        with_preset.model.firmware = fw;
-        sim::apply_preset(*preset, with_preset);
-        fw = with_preset.model.firmware;
+        sim::apply_preset_firmware(*preset, fw);
         apply_firmware_options(o, fw);
     };
     sim::HilOptions h;
