@@ -20,8 +20,8 @@ constexpr double kSingularCondition = 1e9;
 void add_row(Eigen::Matrix3d& r, Eigen::Vector3d j) {
     for (int i = 0; i < 3; ++i) {
         if (j[i] == 0.0) continue;
-        const double h = std::sqrt(r(i, i) * r(i, i) + j[i] * j[i]);
-        const double c = r(i, i) / h, s = j[i] / h;
+        const double inv_h = 1.0 / std::sqrt(r(i, i) * r(i, i) + j[i] * j[i]);
+        const double c = r(i, i) * inv_h, s = j[i] * inv_h;
         for (int k = i; k < 3; ++k) {
             const double rik = r(i, k);
             r(i, k) = c * rik + s * j[k];
