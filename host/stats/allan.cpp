@@ -31,7 +31,7 @@ TermSum allan_terms(const PhaseRecord& record, std::int64_t m, bool overlapping)
     TermSum out;
     if (m < 1) return out;
     const auto mu = static_cast<std::size_t>(m);
-    const double* x = record.phase().data();
+    const double* x = record.scaled_phase().data();
     for (const Segment& s : record.segments()) {
         if (s.size() < 2 * mu + 1) continue;
         if (overlapping) {
@@ -53,7 +53,7 @@ TermSum modified_allan_terms(const PhaseRecord& record, std::int64_t m) {
     TermSum out;
     if (m < 1) return out;
     const auto mu = static_cast<std::size_t>(m);
-    const double* x = record.phase().data();
+    const double* x = record.scaled_phase().data();
     for (const Segment& s : record.segments()) {
         if (s.size() < 3 * mu) continue;
         // v_j = sum_{i=j}^{j+m-1} (x[i+2m] - 2x[i+m] + x[i]); v_{j+1} - v_j = x[j+3m] - 3x[j+2m] + 3x[j+m] - x[j].

@@ -83,7 +83,8 @@ DeviationCurve compute_deviation(const PhaseRecord& record, Deviation type, std:
         if (t.n < 1) continue;
         curve.m.push_back(m);
         curve.tau_s.push_back(static_cast<double>(mm * tau0));
-        curve.dev.push_back(static_cast<double>(std::sqrt(t.sum_sq / (scale * static_cast<long double>(t.n)))));
+        curve.dev.push_back(static_cast<double>(
+            std::ldexp(std::sqrt(t.sum_sq / (scale * static_cast<long double>(t.n))), record.scale_exponent())));
         curve.n.push_back(t.n);
         curve.n_skipped.push_back(
             std::max<std::int64_t>(terms_without_gaps(type, static_cast<std::int64_t>(record.size()), m) - t.n, 0));

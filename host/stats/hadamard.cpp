@@ -10,7 +10,7 @@ TermSum hadamard_terms(const PhaseRecord& record, std::int64_t m, bool overlappi
     if (m < 1) return out;
     const auto mu = static_cast<std::size_t>(m);
     const std::size_t stride = overlapping ? 1 : mu;
-    const double* x = record.phase().data();
+    const double* x = record.scaled_phase().data();
     for (const Segment& s : record.segments()) {
         if (s.size() < 3 * mu + 1) continue;
         double acc[2] = {0.0, 0.0};

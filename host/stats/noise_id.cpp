@@ -105,7 +105,7 @@ std::optional<NoiseId> autocorr_noise_id(const PhaseRecord& record, std::int64_t
     const Segment s = record.longest_segment();
     if (s.size() < 2 || m < 1) return std::nullopt;
     const auto mu = static_cast<std::size_t>(m);
-    const double* x = record.phase().data() + s.begin;
+    const double* x = record.scaled_phase().data() + s.begin;
     std::vector<double> v;
     v.reserve(s.size() / mu + 1);
     if (record.kind() == InputKind::phase) {

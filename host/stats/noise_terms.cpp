@@ -90,6 +90,14 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
     fit.points = static_cast<int>(use.size());
     fit.model_adev.assign(tau_s.size(), std::nan(""));
     if (use.empty()) return fit;
+    // AVAR squares the deviation: fit the deviation divided by a power of two that brings its largest value
+    // near 1 (no bit changes), so that 1e-170 or 1e200 neither underflows nor overflows; scaled back at the end.
+    double largest = 0.0;
+    for (std::size_t i : use) largest = std::max(largest, adev[i]);
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    std::vector<double> y(adev.size(), 0.0);
+    for (std::size_t i : use) y[i] = std::ldexp(adev[i], -exponent);
 
     unsigned mask = 0;
     for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
@@ -97,7 +105,7 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
     }
     const auto rows = static_cast<Eigen::Index>(use.size());
     Eigen::VectorXd model(rows);
-    for (Eigen::Index r = 0; r < rows; ++r) model(r) = adev[use[static_cast<std::size_t>(r)]] * adev[use[static_cast<std::size_t>(r)]];
+    for (Eigen::Index r = 0; r < rows; ++r) model(r) = y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]];
 
     SubsetSolution sol;
     for (int it = 0; it <= options.reweight_iterations; ++it) {
@@ -108,7 +116,7 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
             const std::size_t i = use[static_cast<std::size_t>(r)];
             const double sw = std::sqrt(edf[i] / 2.0) / model(r);
             for (std::size_t j = 0; j < kNoiseTermCount; ++j) a(r, static_cast<Eigen::Index>(j)) = sw * basis(j, tau_s[i]);
-            b(r) = sw * adev[i] * adev[i];
+            b(r) = sw * y[i] * y[i];
         }
         SubsetSolution next = solve_nnls(a, b, mask);
         if (!std::isfinite(next.cost)) break;
@@ -117,7 +125,7 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
             double v = 0.0;
             for (std::size_t j = 0; j < kNoiseTermCount; ++j) v += sol.c(static_cast<Eigen::Index>(j)) * basis(j, tau_s[use[static_cast<std::size_t>(r)]]);
             // Keep the weights finite where the model vanishes (a term fitted to zero at the curve's end).
-            model(r) = std::max(v, 1e-6 * adev[use[static_cast<std::size_t>(r)]] * adev[use[static_cast<std::size_t>(r)]]);
+            model(r) = std::max(v, 1e-6 * y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]]);
         }
         fit.chi_square = sol.cost;
     }
@@ -131,7 +139,11 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
         fit.std_error[j] = c > 0.0 ? std::sqrt(std::max(sol.cov(jj, jj), 0.0)) / (2.0 * std::sqrt(c * kCoefficientScale[j])) : 0.0;
     }
     for (std::size_t i = 0; i < tau_s.size(); ++i) {
-        if (tau_s[i] > 0.0) fit.model_adev[i] = std::sqrt(noise_term_avar(fit.value, tau_s[i]));
+        if (tau_s[i] > 0.0) fit.model_adev[i] = std::ldexp(std::sqrt(noise_term_avar(fit.value, tau_s[i])), exponent);
+    }
+    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
+        fit.value[j] = std::ldexp(fit.value[j], exponent);
+        fit.std_error[j] = std::ldexp(fit.std_error[j], exponent);
     }
     fit.ok = true;
     return fit;

@@ -1,6 +1,7 @@
 // PhaseRecord: rate or phase samples -> phase plus gap-free segments (docs/allan.md §2).
 #include "host/stats/phase_record.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -36,19 +37,18 @@ PhaseRecord PhaseRecord::from_rate(std::span<const double> rate, double tau0_s,
     r.gap_samples_ = rate.size() - valid;
 
     // A gap sample adds nothing (it stands at the mean); no term that uses it is ever evaluated.
-    r.phase_.resize(rate.size() + 1);
+    std::vector<long double> x(rate.size() + 1, 0.0L);
     std::vector<std::uint8_t> usable(rate.size() + 1, 1);
     std::vector<std::uint8_t> linked(rate.size(), 1);
-    long double x = 0.0L;
-    r.phase_[0] = 0.0;
     for (std::size_t k = 0; k < rate.size(); ++k) {
+        x[k + 1] = x[k];
         if (is_gap(rate, mask, k)) {
             linked[k] = 0;
         } else {
-            x += (static_cast<long double>(rate[k]) - mean) * tau0_s;
+            x[k + 1] += (static_cast<long double>(rate[k]) - mean) * tau0_s;
         }
-        r.phase_[k + 1] = static_cast<double>(x);
     }
+    r.store_scaled(x);
     r.build_segments(usable, linked);
     return r;
 }
@@ -62,7 +62,7 @@ PhaseRecord PhaseRecord::from_phase(std::span<const double> phase, double tau0_s
 
     std::vector<std::uint8_t> usable(phase.size(), 1);
     std::vector<std::uint8_t> linked(phase.empty() ? 0 : phase.size() - 1, 1);
-    double origin = 0.0;
+    long double origin = 0.0L;
     for (std::size_t k = 0; k < phase.size(); ++k) {
         if (!is_gap(phase, mask, k)) {
             origin = phase[k];
@@ -71,19 +71,29 @@ PhaseRecord PhaseRecord::from_phase(std::span<const double> phase, double tau0_s
     }
     // Referencing to the first valid sample keeps magnitudes small; gap samples hold the previous value so
     // that sliding sums stay finite (their terms are skipped).
-    r.phase_.resize(phase.size());
-    double held = 0.0;
+    std::vector<long double> x(phase.size(), 0.0L);
+    long double held = 0.0L;
     for (std::size_t k = 0; k < phase.size(); ++k) {
         if (is_gap(phase, mask, k)) {
             usable[k] = 0;
             ++r.gap_samples_;
         } else {
-            held = phase[k] - origin;
+            held = static_cast<long double>(phase[k]) - origin;
         }
-        r.phase_[k] = held;
+        x[k] = held;
     }
+    r.store_scaled(x);
     r.build_segments(usable, linked);
     return r;
+}
+
+void PhaseRecord::store_scaled(const std::vector<long double>& x) {
+    long double largest = 0.0L;
+    for (long double v : x) largest = std::max(largest, std::fabs(v));
+    scale_exponent_ = 0;
+    if (largest > 0.0L) std::frexp(largest, &scale_exponent_);
+    phase_.resize(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k) phase_[k] = static_cast<double>(std::ldexp(x[k], -scale_exponent_));
 }
 
 void PhaseRecord::build_segments(const std::vector<std::uint8_t>& usable,

@@ -5,6 +5,10 @@
 // phase by x_0 = 0, x_{k+1} = x_k + (y_k - mean(y)) tau0, summed in extended precision: subtracting the mean first
 // keeps a large static offset (a 10-bit ADC at mid-scale) from eating the mantissa, and changes no deviation.
 //
+// Scale: the phase is stored divided by a power of two that brings its largest magnitude near 1, so that squared
+// differences neither underflow (rates of 1e-170, or a tau0 of 1e-300) nor overflow (1e200); a power of two
+// changes no bit of a difference, and compute_deviation multiplies the result back.
+//
 // Gaps: a NaN sample (or one masked by the caller) breaks the record. A rate sample y_k covers the phase
 // interval [k, k+1]; a phase sample x_k covers the intervals on both sides of it. The record keeps the maximal
 // runs of phase samples with no broken interval between them ("segments"); a statistic's term is used only when
@@ -43,8 +47,11 @@ public:
     static PhaseRecord from_phase(std::span<const double> phase, double tau0_s,
                                   std::span<const std::uint8_t> mask = {});
 
-    /// Phase samples [data unit * s]. Samples inside a gap hold a finite placeholder that no term reads.
-    const std::vector<double>& phase() const { return phase_; }
+    /// Phase samples divided by 2^scale_exponent() [data unit * s]. Samples inside a gap hold a finite
+    /// placeholder that no term reads.
+    const std::vector<double>& scaled_phase() const { return phase_; }
+    /// The phase is scaled_phase() * 2^scale_exponent().
+    int scale_exponent() const { return scale_exponent_; }
     std::size_t size() const { return phase_.size(); }
     double tau0_s() const { return tau0_s_; }
     InputKind kind() const { return kind_; }
@@ -60,9 +67,12 @@ private:
     PhaseRecord() = default;
     // usable[k]: phase sample k exists; linked[k]: nothing breaks the interval between samples k and k+1.
     void build_segments(const std::vector<std::uint8_t>& usable, const std::vector<std::uint8_t>& linked);
+    // Stores `x` divided by the power of two that brings its largest magnitude near 1.
+    void store_scaled(const std::vector<long double>& x);
 
     std::vector<double> phase_;
     std::vector<Segment> segments_;
+    int scale_exponent_ = 0;
     double tau0_s_ = 1.0;
     InputKind kind_ = InputKind::rate;
     std::size_t gap_samples_ = 0;

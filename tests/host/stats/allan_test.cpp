@@ -133,6 +133,34 @@ TEST(AllanInvariance, PhaseInputOfTheIntegratedRateGivesTheSameCurve) {
     }
 }
 
+TEST(AllanInvariance, ScalingByAPowerOfTwoScalesEveryDeviationExactlyAtAnyMagnitude) {
+    // Squared phase differences of 1e-169 rates (or of any rate at a tau0 of 1e-301) underflow a double, and of
+    // 1e199 rates overflow it; a power of two changes no bit of a deviation, so the result must follow it exactly.
+    const auto y = white(3000, 1.0, 16);
+    const double tau0 = 0.25;
+    const PhaseRecord base = PhaseRecord::from_rate(y, tau0);
+    for (int k : {-560, 660}) {
+        std::vector<double> scaled(y);
+        for (double& v : scaled) v = std::ldexp(v, k);
+        const PhaseRecord r = PhaseRecord::from_rate(scaled, tau0);
+        for (Deviation d : {Deviation::adev, Deviation::oadev, Deviation::mdev, Deviation::hdev, Deviation::ohdev}) {
+            for (std::int64_t m : {1, 7, 300}) {
+                EXPECT_DOUBLE_EQ(one(r, d, m), std::ldexp(one(base, d, m), k)) << deviation_name(d) << " 2^" << k;
+            }
+        }
+    }
+    // Rate input: the deviation of the rate does not depend on tau0.
+    const PhaseRecord tiny_tau0 = PhaseRecord::from_rate(y, std::ldexp(1.0, -1000));
+    for (std::int64_t m : {1, 7, 300}) EXPECT_DOUBLE_EQ(one(tiny_tau0, Deviation::oadev, m), one(base, Deviation::oadev, m));
+    // Phase input of 1e199: the differences are formed before anything is squared.
+    std::vector<double> x(y.size() + 1, 0.0);
+    for (std::size_t i = 0; i < y.size(); ++i) x[i + 1] = x[i] + std::ldexp(y[i] * tau0, 660);
+    const PhaseRecord from_phase = PhaseRecord::from_phase(x, tau0);
+    for (std::int64_t m : {1, 7, 300}) {
+        EXPECT_NEAR(one(from_phase, Deviation::oadev, m) / std::ldexp(one(base, Deviation::oadev, m), 660), 1.0, 1e-9);
+    }
+}
+
 // ---- gaps ------------------------------------------------------------------------------------------------
 
 // Pooled variance of two independent pieces, as the gap rule specifies: sum of squared terms over all terms.

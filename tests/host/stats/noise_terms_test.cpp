@@ -47,6 +47,33 @@ TEST(NoiseTerms, RecoversAllFiveTerms) {
     for (std::size_t j = 0; j < kNoiseTermCount; ++j) EXPECT_NEAR(fit.value[j] / planted[j], 1.0, 1e-6) << j;
 }
 
+TEST(NoiseTerms, ScalingTheCurveByAPowerOfTwoScalesEveryTermExactly) {
+    // AVAR squares the deviation: 1e-170 underflows and 1e200 overflows a double unless the fit scales first.
+    const std::array<double, kNoiseTermCount> planted = {3e-4, 0.02, 0.004, 2e-4, 3e-6};
+    const auto tau = log_taus(0.005, 10000.0, 6);
+    std::vector<double> adev, edf;
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> jitter(0.0, 0.05);
+    for (double t : tau) {
+        adev.push_back(std::sqrt(noise_term_avar(planted, t)) * (1.0 + jitter(rng)));
+        edf.push_back(1e4 / t + 2.0);
+    }
+    const NoiseTermFit base = fit_noise_terms(tau, adev, edf);
+    ASSERT_TRUE(base.ok);
+    for (int k : {-560, 660}) {
+        std::vector<double> scaled(adev);
+        for (double& v : scaled) v = std::ldexp(v, k);
+        const NoiseTermFit fit = fit_noise_terms(tau, scaled, edf);
+        ASSERT_TRUE(fit.ok) << k;
+        for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
+            EXPECT_DOUBLE_EQ(fit.value[j], std::ldexp(base.value[j], k)) << j << " 2^" << k;
+            EXPECT_DOUBLE_EQ(fit.std_error[j], std::ldexp(base.std_error[j], k)) << j << " 2^" << k;
+        }
+        for (std::size_t i = 0; i < tau.size(); ++i) EXPECT_DOUBLE_EQ(fit.model_adev[i], std::ldexp(base.model_adev[i], k));
+        EXPECT_DOUBLE_EQ(fit.chi_square, base.chi_square);
+    }
+}
+
 TEST(NoiseTerms, DisabledTermStaysZero) {
     const std::array<double, kNoiseTermCount> planted = {0.0, 0.01, 0.0, 1e-4, 0.0};
     const auto tau = log_taus(0.01, 1000.0, 8);
