@@ -21,7 +21,6 @@
 namespace driftlab::host::cli {
 namespace {
 
-constexpr double kTau0Tolerance = 0.05;  // --tau0 against the rows' median spacing (jittered host time stamps)
 
 using nlohmann::json;
 
@@ -211,14 +210,9 @@ void run(const AllanCommandOptions& o) {
         // slots (their time, and a real gap after them, lost), slower ones spread over empty slots. tau0 must be the
         // rows' spacing: the median, or the mean where they come in bursts (an MPU6050 read 100 times a second in
         // bursts 2 ms apart).
-        const double mean = s.t_s.size() > 1 ? (s.t_s.back() - s.t_s.front()) / static_cast<double>(s.t_s.size() - 1) : 0.0;
-        if (std::abs(spacing / tau0 - 1.0) > kTau0Tolerance && std::abs(mean / tau0 - 1.0) > kTau0Tolerance) {
-            char text[240];
-            std::snprintf(text, sizeof text, "--tau0 %g s, but the time column's rows are %g s apart (median; mean %g s); ",
-                          tau0, spacing, mean);
-            throw UsageError(text + std::string(log ? "leave --tau0 out to use the rows' spacing"
-                                                    : "give their spacing, or a table without a time column"));
-        }
+        if (const auto disagreement = stats::tau0_disagreement(s.t_s, tau0))
+            throw UsageError(*disagreement + (log ? "; leave --tau0 out to use the rows' spacing"
+                                                  : "; give their spacing, or a table without a time column"));
         stats::AllanResult r;
         try {
             r = stats::analyse_allan(s.t_s, s.values, tau0, req);

@@ -111,6 +111,26 @@ LogData in_window(const GapCommandOptions& o, LogData log) {
     return rows_outside(log, windows);
 }
 
+// A canonical log the simulator can stand beside: its converter, and the smoothing the replicates must repeat (a
+// window of 1 assumed for a missing one makes every averaged log look broken).
+LogData read_canonical(const std::string& path, const sim::SimModel& unit) {
+    ReadOptions options;
+    options.assumed_adc_bits = unit.adc.bits;
+    LogData log = read_log(path, options);
+    if (const auto bits = log.metadata.get_int("adc_bits"); bits && *bits != unit.adc.bits)
+        throw DataError(path, log.metadata.line_of("adc_bits"),
+                        "adc_bits is " + std::to_string(*bits) + ", but the simulator's converter has " +
+                            std::to_string(unit.adc.bits) + " bits");
+    std::string missing;
+    for (const char* key : {"window", "fit_order", "conversions_per_output"})
+        if (!log.metadata.has(key)) missing += std::string(missing.empty() ? "" : ", ") + "'" + key + "'";
+    if (!missing.empty())
+        throw DataError(path, 0,
+                        "the metadata lacks " + missing + ": gap repeats the firmware's smoothing in every replicate and "
+                        "needs all of 'window', 'fit_order' and 'conversions_per_output' (record, decode and hil write them)");
+    return log;
+}
+
 // A canonical log as it is, with the unit of --model or the paper's; a plain table through its column mappings
 // (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to and --exclude.
 Loaded load(const GapCommandOptions& o) {
@@ -118,7 +138,7 @@ Loaded load(const GapCommandOptions& o) {
     if (fit::is_canonical_log(o.path)) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        return {in_window(o, read_log(o.path)), unit};
+        return {in_window(o, read_canonical(o.path, unit)), unit};
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -297,8 +317,10 @@ void register_gap(CLI::App& app) {
         ->check(CLI::Range(1, static_cast<int>(proto::kConversionsPerOutputMax)));
     cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
                     "the file's values, mean shapes refitted to the log; default: the paper's unit");
-    cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start");
-    cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end");
+    cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start")
+        ->check(finite_value());
+    cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end")
+        ->check(finite_value());
     cmd->add_option("--exclude", o->excluded,
                     "Leave out the rows from FROM to TO [s since power-on], e.g. 600:640: a shock or a bump in the middle of "
                     "the log; the rows either side are joined (repeat for more)");
@@ -310,6 +332,7 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)")->check(seed_number());
     cmd->add_option("--fit-fraction", o->fit_fraction, "First part of the log (by time) used to fit candidates")
+        ->check(finite_value())
         ->check(CLI::Range(0.3, 0.85));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
@@ -319,14 +342,15 @@ void register_gap(CLI::App& app) {
     std::string keys;
     for (const char* k : gap::kGapJsonKeys) keys += (keys.empty() ? "" : ", ") + std::string(k);
     cmd->add_flag("--json", o->json, "Print JSON (keys: " + keys + "; stability with --stability)");
-    cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder");
+    cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder")->check(non_empty_path());
     cmd->add_option("--stability", o->stability,
                     "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness) "
                     "and how the added effects' estimates scatter over them (N times the diagnosis's time)")
         ->check(CLI::Range(0, 1000));
     cmd->add_option("--model-out", o->model_out,
                     "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as a model file "
-                    "for driftlab hil --model and gap --model");
+                    "for driftlab hil --model and gap --model")
+        ->check(non_empty_path());
     cmd->callback([o] { run(*o); });
 }
 

@@ -13,6 +13,7 @@
 #include "host/gap/eval_scores.hpp"
 #include "host/gap/truth.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
 
 namespace driftlab::host::cli {
@@ -78,8 +79,13 @@ void run(const GapEvalCommandOptions& o) {
     gap::EvalOptions options;
     std::tie(options.tune_first, options.tune_last) = parse_range("--seeds-tune", o.tune_seeds);
     std::tie(options.score_first, options.score_last) = parse_range("--seeds-score", o.score_seeds);
-    if (!(options.score_first > options.tune_last || options.score_last < options.tune_first))
+    // --clean-only tunes nothing, so its tuning seeds (the default ones, unless given) are not run.
+    if (!o.clean_only && !(options.score_first > options.tune_last || options.score_last < options.tune_first))
         throw UsageError("--seeds-tune and --seeds-score must not overlap");
+    for (std::size_t i = 0; i < o.levels.size(); ++i)
+        for (std::size_t k = 0; k < i; ++k)
+            if (o.levels[k] == o.levels[i])
+                throw UsageError("--levels: " + format_double(o.levels[i]) + " is given twice (each size is one row)");
     for (const std::string& e : o.effects) options.generators.push_back(generator_named("--effects", e));
     // The full run plants the default pairs too; a run of chosen effects only those asked for.
     options.pairs = o.pairs.empty() ? (o.effects.empty() && !o.quick && !o.clean_only ? gap::default_pairs()
@@ -155,17 +161,21 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_option("--seeds-score", o->score_seeds, "Seeds the results are scored on, C..D (disjoint)");
     CLI::Option* effects = cmd->add_option("--effects", o->effects, "Truth generators or the effects they stand for (default: all)")
         ->delimiter(',');
-    CLI::Option* levels = cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50 (default 0.5,1,2,4)")
+    // Beyond 16 x a_50 an effect swamps the log (a thermal network of 1000 x a_50 leaves the gyro no noise to
+    // compare), and tells nothing about detection.
+    CLI::Option* levels = cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50, at most 16 (default 0.5,1,2,4)")
         ->delimiter(',')
-        ->check(positive_number());
+        ->check(positive_number())
+        ->check(CLI::Range(0.0, 16.0));
     CLI::Option* pairs =
         cmd->add_option("--pairs", o->pairs,
                         "Two-effect logs: pairs A+B of generators (or effects) planted together, diagnosed as `driftlab gap` "
                         "runs (A+none: A alone, so run); 'none' for none (default: " + default_pairs_text() +
                             " in a run of all effects, none with --effects)")
             ->delimiter(',');
-    cmd->add_option("--pair-level", o->pair_level, "Each of a pair at this multiple of its own a_50 (default 2)")
-        ->check(positive_number());
+    cmd->add_option("--pair-level", o->pair_level, "Each of a pair at this multiple of its own a_50, at most 16 (default 2)")
+        ->check(positive_number())
+        ->check(CLI::Range(0.0, 16.0));
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
                     "Clean logs per seed for the false-positive rate (default: as many as sizes)")
         ->check(CLI::Range(1, 1000));

@@ -42,6 +42,8 @@ const CLI::Validator& positive_number();
 const CLI::Validator& non_negative_number();
 /// Any finite number (a time bound may be negative; "nan" compared false with every time and cut nothing).
 const CLI::Validator& finite_value();
+/// A path that is not empty ("--report ''" had been taken for no report at all).
+const CLI::Validator& non_empty_path();
 /// A seed: digits only, 0 to 2^64 - 1 (CLI11's unsigned parse wraps "-5" and clamps what is beyond).
 const CLI::Validator& seed_number();
 

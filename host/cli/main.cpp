@@ -1,6 +1,9 @@
 // driftlab: the host command. Sets up the command table and maps errors to exit codes; nothing else.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <iostream>
 
 #include "host/cli/commands.hpp"
 #include "host/util/error.hpp"
@@ -41,6 +44,16 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
         std::fprintf(stderr, "driftlab: internal error: %s\n", e.what());
         return 70;
+    }
+    // A full disk or a closed pipe must not pass for a written result: a script would go on with a cut JSON.
+    std::cout.flush();
+    const bool flushed = std::fflush(stdout) == 0;
+    const int flush_errno = errno;
+    if (!flushed || std::ferror(stdout) || std::cout.fail()) {
+        // Only a failing final flush leaves its own errno; an earlier failed write left the stream's error flag.
+        std::fprintf(stderr, "driftlab: error: writing the standard output: %s\n",
+                     flushed ? "part of it was not written (a full disk?)" : std::strerror(flush_errno));
+        return 4;  // the documented code for an output that cannot be written
     }
     return 0;
 }

@@ -1,4 +1,4 @@
-// Option checks for numbers; see commands.hpp.
+// Option checks for numbers and paths; see commands.hpp.
 #include <cmath>
 #include <string>
 
@@ -47,6 +47,12 @@ const CLI::Validator& finite_value() {
             return finite_number(text) ? std::string() : "expected a finite number, got '" + text + "'";
         },
         "NUMBER");
+    return check;
+}
+
+const CLI::Validator& non_empty_path() {
+    static const CLI::Validator check(
+        [](std::string& text) -> std::string { return text.empty() ? "expected a path, got ''" : std::string(); }, "PATH");
     return check;
 }
 

@@ -2,12 +2,11 @@
 #include "host/fit/series.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 
 #include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
+#include "host/util/input_file.hpp"
 #include "host/util/format_number.hpp"
 
 namespace driftlab::host::fit {
@@ -83,8 +82,7 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 }
 
 bool is_canonical_log(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    std::ifstream in = open_input_file(path);
     return starts_as_log(in);
 }
 

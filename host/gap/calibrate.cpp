@@ -8,7 +8,9 @@
 #include "host/fit/start_values.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
+#include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
 
@@ -28,10 +30,12 @@ int metadata_int(const LogData& log, const std::string& key, int fallback, int l
     if (!log.metadata.has(key)) return fallback;
     const auto v = log.metadata.get_int(key);
     if (!v || *v < lo || *v > hi)
-        throw DataError(log.source_name, 0,
+        throw DataError(log.source_name, log.metadata.line_of(key),
                         "metadata '" + key + "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return static_cast<int>(*v);
 }
+
+
 
 // Sum of the squared smoother weights (gap-method §1): order 0 -> 1/N; order 1 at the newest sample -> 2(2N-1)/(N(N+1)).
 double kernel_power(const Smoothing& s) {
@@ -43,15 +47,19 @@ double kernel_power(const Smoothing& s) {
 
 Smoothing smoothing_from_log(const LogData& log) {
     Smoothing s;
+    if (log.t_s.size() < 2) throw DataError(log.source_name, 0, "needs at least two samples");
+    s.sample_period_s = stats::median_spacing_s(log.t_s);
     if (log.metadata.has("sample_period_s")) {
         const auto v = log.metadata.get_double("sample_period_s");
-        if (!v || !(*v > 0.0)) throw DataError(log.source_name, 0, "metadata 'sample_period_s' must be a positive number [s]");
+        const std::uint64_t line = log.metadata.line_of("sample_period_s");
+        if (!v || !(*v > 0.0)) throw DataError(log.source_name, line, "metadata 'sample_period_s' must be a positive number [s]");
+        // A wrong period misplaces every lag and band; lost frames leave the median alone, and bursts the mean.
+        if (!stats::period_agrees(log.t_s, *v))
+            throw DataError(log.source_name, line,
+                            "metadata 'sample_period_s' is " + format_double(*v) + " s, but the rows are " +
+                                format_double(stats::median_spacing_s(log.t_s)) + " s apart (median; mean " +
+                                format_double(stats::mean_spacing_s(log.t_s)) + " s)");
         s.sample_period_s = *v;
-    } else {
-        std::vector<double> dt;
-        for (std::size_t i = 1; i < log.t_s.size(); ++i) dt.push_back(log.t_s[i] - log.t_s[i - 1]);
-        if (dt.empty()) throw DataError(log.source_name, 0, "needs at least two samples");
-        s.sample_period_s = median(dt);
     }
     s.conversions_per_output = metadata_int(log, "conversions_per_output", 1, 1, 64);
     s.window = metadata_int(log, "window", 1, 1, 64);

@@ -18,6 +18,7 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/truth.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/parallel_for.hpp"
 #include "sim/model/drift.hpp"
 #include "sim/model/rng.hpp"
@@ -194,8 +195,11 @@ double size_of(const std::vector<DetectionSize>& sizes, const std::string& gener
 EvalCase run_case(const std::string& generator, const std::string& truth, double level, std::uint64_t seed, bool tuning,
                   const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
     EvalCase c{generator, truth, level, 0.0, seed, tuning, false, {}, 0.0, false};
-    const Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples,
-                            options.raw_clean);
+    Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples,
+                      options.raw_clean);
+    // A log the diagnosis refuses names the case, so that one odd size is found in a run of hundreds.
+    p.log.source_name = "gap-eval log of " + generator + (generator == "none" ? "" : " at " + format_double(level) + " x a_50") +
+                        " (log seed " + std::to_string(seed) + ")";
     c.size_counts = p.size_counts;
     const LogData& log = p.log;
     GapOptions go = gap_options(seed, options);

@@ -8,6 +8,7 @@
 
 #include "driftlab/proto/messages.hpp"
 #include "host/fit/series.hpp"
+#include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 
@@ -63,13 +64,20 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
         // Every name came from --as (a column the table lacks, or its time column).
         throw UsageError(std::string("--as: ") + e.what());
     }
+    const std::vector<double>& t = series.front().t_s;
+    if (const auto disagreement = stats::tau0_disagreement(t, how.sample_period_s))
+        throw UsageError(*disagreement + "; give the recording's sample period, or a table without a time column");
+    if (t.front() < 0.0)
+        throw DataError(table.source_name, table.line_of_row(0),
+                        "the time column starts at " + format_double(t.front()) +
+                            " s: eq. 1 counts time from power-on, so give times since power-on (or a table without a "
+                            "time column)");
     const std::size_t outputs = table.rows() / how.block;
     if (outputs < 2)
         throw DataError(table.source_name, 0, std::to_string(table.rows()) + " rows make fewer than two blocks of " +
                                                    std::to_string(how.block));
     LogData log;
     log.source_name = table.source_name;
-    const std::vector<double>& t = series.front().t_s;
     for (std::size_t b = 0; b < outputs; ++b) {
         log.t_s.push_back(t[(b + 1) * how.block - 1]);  // an output is sent after its last conversion
         log.seq.push_back(b);

@@ -13,6 +13,7 @@
 
 #include "host/log/log_metadata.hpp"
 #include "host/util/error.hpp"
+#include "host/util/input_file.hpp"
 
 namespace driftlab::host::io {
 namespace {
@@ -86,8 +87,7 @@ std::uint64_t CaptureWriter::write_event(const std::string& text) {
 }
 
 CaptureReader::CaptureReader(const std::string& path) : path_(path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw DataError(path, 0, "cannot open the capture");
+    std::ifstream in = open_input_file(path);
     data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     std::uint64_t line = 0;
     bool ended = false;

@@ -34,6 +34,14 @@ void LogMetadata::set(const std::string& key, double value) { set(key, format_do
 
 void LogMetadata::set(const std::string& key, std::int64_t value) { set(key, std::to_string(value)); }
 
+std::uint64_t LogMetadata::line_of(const std::string& key) const {
+    for (const auto& [k, line] : lines_)
+        if (k == key) return line;
+    return 0;
+}
+
+void LogMetadata::set_line(const std::string& key, std::uint64_t line) { lines_.emplace_back(key, line); }
+
 bool LogMetadata::has(const std::string& key) const { return get(key).has_value(); }
 
 std::optional<std::string> LogMetadata::get(const std::string& key) const {

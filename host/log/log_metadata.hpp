@@ -28,6 +28,9 @@ public:
     std::optional<std::int64_t> get_int(const std::string& key) const;
 
     const std::vector<std::pair<std::string, std::string>>& entries() const { return entries_; }
+    /// The file line `key` was read from (1-based, set by the reader), for messages; 0 when not read from a file.
+    std::uint64_t line_of(const std::string& key) const;
+    void set_line(const std::string& key, std::uint64_t line);
     bool empty() const { return entries_.empty(); }
 
     /// True when `key` can be written: [a-z0-9_]+ starting with a letter, and not the reserved `gap`.
@@ -35,6 +38,7 @@ public:
 
 private:
     std::vector<std::pair<std::string, std::string>> entries_;
+    std::vector<std::pair<std::string, std::uint64_t>> lines_;
 };
 
 }  // namespace driftlab::host

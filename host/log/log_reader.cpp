@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "host/util/error.hpp"
+#include "host/util/input_file.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/parse_number.hpp"
 #include "host/util/split_fields.hpp"
@@ -158,6 +159,7 @@ private:
         if (log_.metadata.has(kv->first))
             throw DataError(log_.source_name, number, "metadata key '" + kv->first + "' appears twice");
         log_.metadata.set(kv->first, kv->second);
+        log_.metadata.set_line(kv->first, number);
     }
 
     void header(std::string_view text, std::uint64_t number) {
@@ -169,7 +171,12 @@ private:
         plan_ = plan_columns(fields_, log_, number);
         header_line_ = number;
         // Converter resolution from the metadata: what the channel columns can hold (a wild value is a corrupt row).
-        if (const auto bits = log_.metadata.get_int("adc_bits")) range_ = converter_range(*bits);
+        if (const auto bits = log_.metadata.get_int("adc_bits")) {
+            range_ = converter_range(*bits);
+        } else if (options_.assumed_adc_bits) {
+            range_ = converter_range(*options_.assumed_adc_bits);
+            range_assumed_ = true;
+        }
     }
 
     void row(std::string_view text, std::uint64_t number) {
@@ -198,7 +205,8 @@ private:
                                     std::string(trim_blanks(fields_[req[2 + c]])) + "': beyond the " +
                                     std::to_string(range_->bits) + "-bit converter's reach (" +
                                     format_double(range_->estimate_low()) + " to " + format_double(range_->estimate_high()) +
-                                    " counts)");
+                                    " counts" + (range_assumed_ ? "; the metadata names no adc_bits, " + std::to_string(range_->bits) + " assumed" : "") +
+                                    ")");
         }
         optional_scratch_.clear();
         for (std::size_t i = 0; i < plan_->optional_fields.size(); ++i) {
@@ -211,6 +219,9 @@ private:
                                     "': not a code of the " + std::to_string(range_->bits) + "-bit converter (0 to " +
                                     format_double(range_->full) + ", or " + format_double(kLostRawCode) + " for a lost RAW frame)");
         }
+        if (t_s < 0.0)
+            throw DataError(log_.source_name, number,
+                            "t_s " + format_double(t_s) + " is before power-on (t_s counts from power-on, so it is never negative)");
         if (!log_.t_s.empty() && !(t_s > log_.t_s.back()))
             throw DataError(log_.source_name, number,
                             "t_s " + format_double(t_s) + " is not after the previous row's " +
@@ -234,7 +245,8 @@ private:
     bool seen_magic_ = false;
     std::optional<ColumnPlan> plan_;
     std::uint64_t header_line_ = 0;
-    std::optional<ConverterRange> range_;  // from the metadata's adc_bits
+    std::optional<ConverterRange> range_;  // from the metadata's adc_bits, else ReadOptions::assumed_adc_bits
+    bool range_assumed_ = false;
     std::vector<std::string_view> fields_;
     std::vector<double> optional_scratch_;
 };
@@ -254,8 +266,7 @@ LogData parse_log(std::istream& in, const std::string& source_name, const ReadOp
 }
 
 LogData read_log(const std::string& path, const ReadOptions& options) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    std::ifstream in = open_input_file(path);
     return parse_log(in, path, options);
 }
 

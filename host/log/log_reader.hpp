@@ -9,6 +9,7 @@
 #pragma once
 
 #include <istream>
+#include <optional>
 #include <string>
 
 #include "host/log/log_data.hpp"
@@ -18,6 +19,9 @@ namespace driftlab::host {
 struct ReadOptions {
     /// Drop a last line without '\n' (a recorder killed mid-write) instead of rejecting the file.
     bool drop_truncated_tail = false;
+    /// Converter resolution to hold the channel values to when the metadata names no `adc_bits` (a reader that
+    /// goes on to simulate that converter, as `gap` does, cannot take values it never makes).
+    std::optional<int> assumed_adc_bits;
 };
 
 /// Reads the log at `path`. Throws DataError for malformed content, DataError(path, 0, ...) when unreadable.

@@ -1,12 +1,11 @@
 // Plain numeric table reader; see numeric_table.hpp.
 #include "host/log/numeric_table.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <string_view>
 
 #include "host/util/error.hpp"
+#include "host/util/input_file.hpp"
 #include "host/util/parse_number.hpp"
 #include "host/util/split_fields.hpp"
 
@@ -38,8 +37,7 @@ bool is_name_line(const std::vector<std::string_view>& fields) {
 }  // namespace
 
 NumericTable read_numeric_table(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw DataError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    std::ifstream in = open_input_file(path);
     NumericTable table;
     table.source_name = path;
     std::string text;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -15,6 +16,24 @@ double median_spacing_s(std::span<const double> t_s) {
     const auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
     std::nth_element(d.begin(), mid, d.end());
     return *mid;
+}
+
+double mean_spacing_s(std::span<const double> t_s) {
+    return t_s.size() < 2 ? 0.0 : (t_s.back() - t_s.front()) / static_cast<double>(t_s.size() - 1);
+}
+
+bool period_agrees(std::span<const double> t_s, double period_s) {
+    constexpr double kTolerance = 0.05;
+    return t_s.size() < 2 || std::abs(median_spacing_s(t_s) / period_s - 1.0) <= kTolerance ||
+           std::abs(mean_spacing_s(t_s) / period_s - 1.0) <= kTolerance;
+}
+
+std::optional<std::string> tau0_disagreement(std::span<const double> t_s, double tau0_s) {
+    if (period_agrees(t_s, tau0_s)) return std::nullopt;
+    char text[200];
+    std::snprintf(text, sizeof text, "--tau0 %g s, but the time column's rows are %g s apart (median; mean %g s)", tau0_s,
+                  median_spacing_s(t_s), mean_spacing_s(t_s));
+    return std::string(text);
 }
 
 UniformSeries to_uniform_grid(std::span<const double> t_s, std::span<const double> values, double tau0_s) {

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace driftlab::host::stats {
@@ -19,6 +21,17 @@ struct UniformSeries {
 
 /// Median spacing of strictly increasing times [s]; 0 for fewer than two samples.
 double median_spacing_s(std::span<const double> t_s);
+
+/// Mean spacing of increasing times [s]; 0 for fewer than two samples.
+double mean_spacing_s(std::span<const double> t_s);
+
+/// Whether `period_s` agrees within 5 % (jittered host time stamps) with the median or the mean spacing of `t_s`:
+/// the mean for rows that come in bursts (an MPU6050 read 100 times a second in bursts 2 ms apart).
+bool period_agrees(std::span<const double> t_s, double period_s);
+
+/// When `tau0_s` does not agree (period_agrees), a sentence saying so ("--tau0 a s, but the time column's rows are
+/// b s apart (median; mean c s)"); nothing when it does.
+std::optional<std::string> tau0_disagreement(std::span<const double> t_s, double tau0_s);
 
 /// Places sample k at slot max(slot_{k-1} + 1, round((t_k - t_0) / tau0)): samples that come early or in
 /// bursts take the next free slot (none is ever dropped), a sample that comes late leaves the slots it skipped

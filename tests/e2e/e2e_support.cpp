@@ -50,11 +50,11 @@ std::string BoardThread::path() {
     return path_;
 }
 
-pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file) {
+pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file, const std::string& stdout_file) {
     const pid_t pid = ::fork();
     if (pid == 0) {
         const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        ::dup2(fd, 1);
+        ::dup2(stdout_file.empty() ? fd : ::open(stdout_file.c_str(), O_WRONLY), 1);
         ::dup2(fd, 2);
         std::vector<char*> argv;
         argv.push_back(const_cast<char*>(DRIFTLAB_BIN));
@@ -78,6 +78,12 @@ RunResult wait_child(pid_t pid, const std::string& output_file) {
 RunResult run_driftlab(const std::vector<std::string>& args, const std::filesystem::path& dir) {
     const std::string out = (dir / "driftlab.out").string();
     return wait_child(spawn_driftlab(args, out), out);
+}
+
+RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std::string& stdout_file,
+                                 const std::filesystem::path& dir) {
+    const std::string err = (dir / "driftlab.err").string();
+    return wait_child(spawn_driftlab(args, err, stdout_file), err);
 }
 
 TempDir::TempDir(const std::string& name)

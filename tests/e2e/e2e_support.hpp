@@ -45,12 +45,16 @@ struct RunResult {
     std::string output;  ///< stdout and stderr together
 };
 
-/// Starts `driftlab args...` with its output going to `output_file`; returns its pid.
-pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file);
+/// Starts `driftlab args...` with its output going to `output_file` (its standard output to `stdout_file` instead,
+/// when one is given); returns its pid.
+pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file, const std::string& stdout_file = "");
 /// Waits for the child and collects its exit status and output.
 RunResult wait_child(pid_t pid, const std::string& output_file);
 /// spawn + wait.
 RunResult run_driftlab(const std::vector<std::string>& args, const std::filesystem::path& dir);
+/// spawn + wait with the standard output sent to `stdout_file` (e.g. /dev/full); RunResult::output holds stderr.
+RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std::string& stdout_file,
+                                 const std::filesystem::path& dir);
 
 /// A fresh folder under the system temp dir, removed by the destructor.
 class TempDir {

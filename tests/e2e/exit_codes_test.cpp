@@ -33,6 +33,31 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     const RunResult record = run_driftlab({"record", "--port", "/dev/null", "--duration", "nan", "-o", dir.file("r.csv")}, dir.path());
     EXPECT_EQ(record.exit_code, 2) << record.output;
     EXPECT_NE(record.output.find("--duration: expected a number >= 0, got 'nan'"), std::string::npos) << record.output;
+    // gap: "nan" had passed --fit-fraction's range (and --from's order check) to be refused later with the wrong
+    // range; an empty --report had meant no report; sizes beyond 16 x a_50 swamp the log; a size twice was one row.
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "nan"}, {"gap", "x.csv", "--from", "nan"},
+          {"gap", "x.csv", "--to", "inf"}}) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << args[2] << ": " << r.output;
+        EXPECT_NE(r.output.find("expected a finite number, got '" + args[3] + "'"), std::string::npos) << r.output;
+    }
+    for (const char* path : {"--report", "--model-out"}) {
+        const RunResult empty = run_driftlab({"gap", "x.csv", path, ""}, dir.path());
+        EXPECT_EQ(empty.exit_code, 2) << empty.output;
+        EXPECT_NE(empty.output.find("expected a path, got ''"), std::string::npos) << empty.output;
+    }
+    const RunResult huge = run_driftlab({"gap-eval", "--quick", "--levels", "1000"}, dir.path());
+    EXPECT_EQ(huge.exit_code, 2) << huge.output;
+    const RunResult twice = run_driftlab({"gap-eval", "--quick", "--levels", "2,2"}, dir.path());
+    EXPECT_EQ(twice.exit_code, 2) << twice.output;
+    EXPECT_NE(twice.output.find("--levels: 2 is given twice"), std::string::npos) << twice.output;
+    // A folder given as the input had read as an empty file.
+    for (const char* command : {"gap", "fit", "allan"}) {
+        const RunResult folder = run_driftlab({command, dir.path().string()}, dir.path());
+        EXPECT_EQ(folder.exit_code, 3) << command << ": " << folder.output;
+        EXPECT_NE(folder.output.find(dir.path().string() + ": is a folder, not a file"), std::string::npos) << folder.output;
+    }
     EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
 }
@@ -43,6 +68,16 @@ TEST(ExitCodes, HelpAndVersionSucceed) {
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.output.find("--exclude-saturated"), std::string::npos) << help.output;
     EXPECT_EQ(run_driftlab({"--version"}, dir.path()).exit_code, 0);
+}
+
+// A result that could not be written (a full disk) must not pass for written: gap --json > /dev/full had exited 0.
+TEST(ExitCodes, AStandardOutputThatCannotBeWrittenIsADeviceError) {
+    TempDir dir("exitfull");
+    const RunResult full = run_driftlab_stdout_to({"effects"}, "/dev/full", dir.path());
+    EXPECT_EQ(full.exit_code, 4) << full.output;
+    EXPECT_NE(full.output.find("driftlab: error: writing the standard output: "), std::string::npos)
+        << full.output;
+    EXPECT_EQ(run_driftlab_stdout_to({"effects"}, "/dev/null", dir.path()).exit_code, 0);
 }
 
 // report -o into folders that do not exist yet makes them, as --plot does; one that cannot be made exits 4.

@@ -385,6 +385,80 @@ TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {
     EXPECT_NE(tau0.output.find("--tau0: expected a number > 0, got '-1'"), std::string::npos) << tau0.output;
 }
 
+// What the simulator cannot stand beside is refused with the file and line, not diagnosed: a gap found there would be
+// the log's damage (a wild value), a wrong period (every lag and band misplaced), or a smoothing the replicates do not
+// repeat (a window of 1 assumed had read every averaged log as broken).
+TEST(GapCli, ALogTheSimulatorCannotStandBesideIsRefusedNamingTheLine) {
+    TempDir dir("gapmeta");
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "300", "-o", log}, dir.path()).exit_code, 0);
+    std::vector<std::string> lines;
+    {
+        std::istringstream in(read_text(log));
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+    }
+    const auto line_of = [&](const std::string& start) {
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            if (lines[i].rfind(start, 0) == 0) return i;
+        ADD_FAILURE() << "no line starts with " << start;
+        return std::size_t{0};
+    };
+    const auto variant = [&](const std::string& name, auto edit) {
+        std::vector<std::string> v = lines;
+        edit(v);
+        std::ofstream out(dir.file(name));
+        for (const auto& line : v) out << line << "\n";
+        return dir.file(name);
+    };
+    const auto refused = [&](const std::string& file, const std::string& expected) {
+        const RunResult r = run_driftlab({"gap", file, "--replicates", "10"}, dir.path());
+        EXPECT_EQ(r.exit_code, 3) << r.output;
+        EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("verdict"), std::string::npos) << "refused before the diagnosis";
+    };
+    const std::size_t period = line_of("# sample_period_s:");
+    refused(variant("period.csv", [&](auto& v) { v[period] = "# sample_period_s: 10"; }),
+            "period.csv:" + std::to_string(period + 1) + ": metadata 'sample_period_s' is 10 s, but the rows are 1 s apart");
+    const std::size_t bits = line_of("# adc_bits:");
+    refused(variant("bits.csv", [&](auto& v) { v[bits] = "# adc_bits: 12"; }),
+            "bits.csv:" + std::to_string(bits + 1) + ": adc_bits is 12, but the simulator's converter has 10 bits");
+    refused(variant("window.csv", [&](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(line_of("# window:"))); }),
+            "window.csv: the metadata lacks 'window'");
+    // Without adc_bits a value no 10-bit converter makes had calibrated the gyro to a spread of 1e95 counts and
+    // answered "none".
+    const std::size_t row = line_of("t_s,") + 10;
+    refused(variant("wild.csv",
+                    [&](auto& v) {
+                        v.erase(v.begin() + static_cast<std::ptrdiff_t>(bits));
+                        std::string& r = v[row - 1];
+                        const auto a = r.find(',', r.find(',') + 1);  // the gyro is the third field
+                        r = r.substr(0, a + 1) + "1e100" + r.substr(r.find(',', a + 1));
+                    }),
+            "wild.csv:" + std::to_string(row) + ": field 3 (gyro) '1e100': beyond the 10-bit converter's reach");
+}
+
+// A plain recording's time column must agree with --tau0 (it had been diagnosed at the wrong period) and count from
+// power-on, as eq. 1 does.
+TEST(GapCli, APlainRecordingsTimeColumnMustAgreeWithTau0AndStartAtPowerOn) {
+    TempDir dir("gapplaintime");
+    const auto table = [&](const std::string& name, double t0) {
+        std::ofstream out(dir.file(name));
+        out << "t,gx\n";
+        std::mt19937 rng(3);
+        std::normal_distribution<double> noise(0.0, 0.05);
+        for (int k = 0; k < 3000; ++k) out << t0 + k * 0.01 << "," << noise(rng) << "\n";
+        return dir.file(name);
+    };
+    const std::string good = table("good.csv", 0.0);
+    const RunResult slow = run_driftlab({"gap", good, "--as", "gyro=gx:0.00875", "--tau0", "0.02", "--block", "10"}, dir.path());
+    EXPECT_EQ(slow.exit_code, 2) << slow.output;
+    EXPECT_NE(slow.output.find("--tau0 0.02 s, but the time column's rows are 0.01 s apart"), std::string::npos) << slow.output;
+    const RunResult early = run_driftlab({"gap", table("early.csv", -100.0), "--as", "gyro=gx:0.00875", "--tau0", "0.01", "--block", "10"},
+                                         dir.path());
+    EXPECT_EQ(early.exit_code, 3) << early.output;
+    EXPECT_NE(early.output.find("early.csv:2: the time column starts at -100 s"), std::string::npos) << early.output;
+}
+
 // A report folder that cannot be made (a file in the way) is refused before the diagnosis, with the device error's
 // exit code and the folder named; so is a log folder for hil.
 TEST(GapCli, AnUnusableReportFolderIsRefusedBeforeTheDiagnosis) {
@@ -442,6 +516,10 @@ TEST(GapEvalCli, CleanOnlyWithoutACountStillDiagnosesCleanLogs) {
     const RunResult r = run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "11..13", "--json"}, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_EQ(nlohmann::json::parse(r.output.substr(r.output.find('{')))["false_positive"]["clean"], 3);  // 3 seeds x 1 size
+    // It tunes nothing, so scoring seeds among the default tuning ones (1..4) are no overlap.
+    const RunResult low = run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "1..2", "--json"}, dir.path());
+    ASSERT_EQ(low.exit_code, 0) << low.output;
+    EXPECT_EQ(nlohmann::json::parse(low.output.substr(low.output.find('{')))["false_positive"]["clean"], 2);
 }
 
 // A seed range is two whole numbers in order, at most kMaxEvalSeed: "-1" is no number (not 2^64 - 1, which ran forever).

@@ -111,6 +111,12 @@ TEST(LogIo, WriterRefusesRowsItsReaderWouldReject) {
     r.t_s = 1.0;
     w.write_row(r);
     EXPECT_THROW(w.write_row(r), UsageError);  // same t_s
+    {
+        LogWriter early(temp_path("early.csv"), LogMetadata{});
+        LogRow before = r;
+        before.t_s = -1.0;
+        EXPECT_THROW(early.write_row(before), UsageError);  // before power-on
+    }
     r.t_s = 2.0;
     r.counts[1] = std::numeric_limits<double>::quiet_NaN();
     EXPECT_THROW(w.write_row(r), UsageError);
@@ -184,6 +190,8 @@ TEST(LogIo, EachRejectionNamesTheLine) {
               std::string::npos);
     EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n0,1,1,2,3,4\n").find("mem.csv:5: t_s 0 is not after"),
               std::string::npos);
+    // t_s counts from power-on: eq. 1 fitted to negative times had given NaN residuals and a misleading message.
+    EXPECT_NE(rejection(kHead + "-0.5,0,1,2,3,4\n").find("mem.csv:4: t_s -0.5 is before power-on"), std::string::npos);
     EXPECT_NE(rejection(kHead + "0,-1,1,2,3,4\n").find("mem.csv:4: field 2 (seq) '-1': not a non-negative integer"),
               std::string::npos);
     EXPECT_NE(rejection("# driftlab-log: 1\n# a: 1\n# a: 2\n").find("mem.csv:3: metadata key 'a' appears twice"),
@@ -210,8 +218,31 @@ TEST(LogIo, AValueBeyondTheConvertersReachIsRejectedWhenTheLogNamesItsResolution
                   .find("mem.csv:4: field 7 (raw_gyro) '1024': not a code of the 10-bit converter (0 to 1023, or -1 for a lost RAW frame)"),
               std::string::npos);
     EXPECT_NE(rejection(raw_head + "0,0,1,2,3,4,511.5\n").find("field 7 (raw_gyro) '511.5'"), std::string::npos);
-    // Without the resolution no bound is known: the value is kept.
+    // Without the resolution no bound is known: the value is kept, unless the reader is told what to assume.
     EXPECT_EQ(parse(kHead + "0,0,1e9,2,3,4\n").channel(Channel::gyro)[0], 1e9);
+    ReadOptions assume;
+    assume.assumed_adc_bits = 10;
+    try {
+        parse(kHead + "0,0,1e9,2,3,4\n", assume);
+        ADD_FAILURE() << "1e9 accepted with 10 bits assumed";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("mem.csv:4: field 3 (gyro) '1e9': beyond the 10-bit converter's reach (-342 to "
+                                             "1365 counts; the metadata names no adc_bits, 10 assumed)"),
+                  std::string::npos)
+            << e.what();
+    }
+    // The metadata's own resolution wins over the assumption.
+    EXPECT_EQ(parse("# driftlab-log: 1\n# adc_bits: 12\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,4000,2,3,4\n", assume)
+                  .channel(Channel::gyro)[0],
+              4000.0);
+}
+
+TEST(LogIo, MetadataKeysKnowTheirLines) {
+    const LogData log = parse("# driftlab-log: 1\n# a free comment\n# window: 8\n\n# fit_order: 1\n"
+                              "t_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n");
+    EXPECT_EQ(log.metadata.line_of("window"), 3u);
+    EXPECT_EQ(log.metadata.line_of("fit_order"), 5u);
+    EXPECT_EQ(log.metadata.line_of("absent"), 0u);
 }
 
 TEST(LogIo, TruncatedLastLineIsReportedOrDroppedOnRequest) {
