@@ -1,6 +1,6 @@
 // Commands: one decoded host frame -> the reply it deserves, and for CONFIG_SET the validated new Config.
 // Pure decision, no side effects: the Firmware applies a change only on Reply::ack, so a NAK changes nothing.
-// Spec: docs/protocol.md §3 (types, directions) and §4 (Status); docs/firmware.md "Commands".
+// Spec: docs/protocol.md §3 (types, directions) and §4 (Status); docs/firmware.md §1 "Architecture" (check order).
 #pragma once
 
 #include <stdint.h>
@@ -16,7 +16,7 @@ namespace fw {
 enum class Reply : uint8_t {
   version,  ///< HELLO -> VERSION
   config,   ///< CONFIG_GET -> CONFIG
-  sample,   ///< POLL -> SAMPLE (+ RAW in raw mode)
+  sample,   ///< POLL -> SAMPLE (+ RAW in raw mode); in stream mode too, as an extra SAMPLE off the output grid
   status,   ///< STATUS_GET -> STATUS
   ack,      ///< CONFIG_SET accepted: apply `config`, then ACK
   nak,      ///< refused: send `nak`, change nothing

@@ -5,11 +5,16 @@
 // Output cadence is counted in conversions, never read from a clock: in stream mode a SAMPLE (+ RAW in raw
 // mode) follows every 4 x conversions_per_output-th conversion after arming (lost ones included), i.e. after
 // the accel_z conversion that completes a round, stamped with that conversion's tick. So the same conversions
-// give the same frames on every port and in every simulator.
+// give the same frames on every port and in every simulator. Each channel's value is its fit at its own newest
+// conversion, so only accel_z's is at that tick; channel c's is (3 - c) conversion periods older. A POLL is
+// answered in either mode with the windows as they are (in stream mode an extra SAMPLE off the grid, the
+// cadence unchanged); with an empty window it reports n_window 0 and value 0 (docs/protocol.md §3.5, §3.6).
 //
 // A CONFIG_SET that changes the timing is applied at once (ACK, windows emptied) but re-arms the ADC at the
 // next conversion of the old schedule, which it discards: the new grid starts one old period after that
-// conversion's tick, a point both ports compute alike however late their main loop ran.
+// conversion's tick, a point both ports compute alike provided hal_init() runs at most one old period minus
+// kMinArmWaitTicks (2) after it; later, arm_wait_ticks() starts the grid one new period after the call
+// (docs/hal.md §1.1).
 #pragma once
 
 #include <stdint.h>

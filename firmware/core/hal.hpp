@@ -108,6 +108,6 @@ ResetInfo hal_reset_info();
 }  // namespace driftlab
 
 /// Programmer errors only (a port breaking the contract); bad input is a Status or a counter, never an assert.
-/// Only the line travels: the chip has no room for file names (docs/firmware.md "Errors").
+/// Only the line travels: the chip has no room for file names (docs/hal.md §1.3 "Assertions").
 #define DRIFTLAB_ASSERT(cond) \
   ((cond) ? static_cast<void>(0) : ::driftlab::fw::hal_assert_failed(static_cast<uint16_t>(__LINE__)))

@@ -1,5 +1,5 @@
 // SpscRing: fixed-capacity single-producer/single-consumer ring, the one way data crosses from an ISR to the main
-// loop (and back, for UART TX). Style: docs/firmware.md "Interrupts and rings".
+// loop (and back, for UART TX). Capacities and overflow rules: docs/hal.md §1.2 "Rings".
 //
 // Concurrency model: one core, the producer is an interrupt handler (or the main loop for TX), the consumer the
 // other side. Each index is one byte, written by one side only, so loads and stores are atomic on the AVR without

@@ -1,6 +1,6 @@
 // Calibration of the base simulator to a real log: the firmware's smoothing from the log's metadata, eq. 1 per
 // channel by the same Levenberg-Marquardt fit the replicates get, and the white-noise level before the quantiser
-// by a simulated-moment match of the short-lag spread (common random numbers, regula falsi). docs/gap.md §Calibration.
+// by a simulated-moment match of the short-lag spread (common random numbers, regula falsi). docs/gap.md §Model.
 #pragma once
 
 #include <array>

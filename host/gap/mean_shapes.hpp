@@ -1,6 +1,6 @@
 // Variable-projection fits of the deterministic candidates jointly with eq. 1 on the fitting part of a log:
 // for fixed time constants/period the amplitudes are linear least squares; the nonlinear ones come from a log
-// grid refined by Nelder-Mead. docs/gap.md §Candidate fits.
+// grid refined by Nelder-Mead. docs/gap.md §Candidates.
 #pragma once
 
 #include <cstddef>

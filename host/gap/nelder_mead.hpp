@@ -1,6 +1,6 @@
 // Nelder-Mead simplex minimisation for the candidate fits, which have <= 3 parameters and noisy objectives:
 // NLopt's LN_NELDERMEAD (the Debian package libnlopt-dev) with a fixed evaluation budget and no tolerance, since a
-// simulated objective's noise would stop a tolerance test at random. docs/gap.md §Candidate fits.
+// simulated objective's noise would stop a tolerance test at random. docs/gap.md §Candidates.
 #pragma once
 
 #include <functional>

@@ -1,7 +1,7 @@
 // A recording that is not a canonical log (a plain table of sensor values, such as a third-party logger's file)
 // turned into the log the diagnosis reads: each mapped column becomes integer codes of its LSB around mid-scale,
 // and blocks of consecutive samples are averaged, which is the firmware's order-0 least-squares smoother with
-// window = conversions per output = the block. docs/gap.md §Plain recordings.
+// window = conversions per output = the block. docs/gap.md §Usage.
 #pragma once
 
 #include <cstddef>

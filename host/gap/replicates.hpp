@@ -1,7 +1,7 @@
 // The simulate-refit parametric bootstrap: R replicates of the calibrated model on the real log's instants, each
 // refitted and summarised by the same battery as the real log. Replicate r uses the seed replicate_seed(seed, r)
 // whatever the model, so two models compared with the same seed share their random numbers (common random
-// numbers: smooth objectives for the candidate fits). docs/gap.md §Replicates.
+// numbers: smooth objectives for the candidate fits). docs/gap.md §In one paragraph.
 #pragma once
 
 #include <cstdint>

@@ -2,7 +2,7 @@
 // (physical effects, front end, analog effects, eq. 1 drift, white noise, converter effects, 10-bit quantiser),
 // then the firmware's own smoother (fw::LsWindow, bit-exact Q8 output) evaluated at each output instant.
 // The frame/link layer is left out: the log's sequence numbers are compared separately (statistics.hpp).
-// docs/gap.md §Replicates.
+// docs/gap.md §Model.
 #pragma once
 
 #include <array>

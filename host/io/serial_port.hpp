@@ -1,5 +1,5 @@
 // SerialPort: a board's UART seen through LibSerial (a USB adapter, a radio modem, or a pseudo-terminal),
-// as a ByteLink with timeouts and hang-up detection. docs/recording.md "Ports".
+// as a ByteLink with timeouts and hang-up detection. docs/recording.md "Durability".
 #pragma once
 
 #include <memory>

@@ -1,6 +1,6 @@
 // The successive-approximation converter of the board: Vref, round-to-nearest quantisation, clipping at the
 // rails. Transfer function of the ATmega328P ADC (datasheet §24.7, "ADC = Vin·1024/Vref", ideal first
-// transition at 0.5 LSB); docs/sim.md §ADC.
+// transition at 0.5 LSB); docs/sim.md §1 "The chain" (ADC).
 #pragma once
 
 #include <cstdint>

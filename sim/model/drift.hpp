@@ -1,5 +1,5 @@
 // Turn-on drift of a channel's at-rest reading, the paper's eq. 1: eps(t) = C1 (1 - exp(-t/T)) + C2, in A/D
-// counts, t in seconds since the sensor was powered. Defaults are Table 1 of the paper; docs/sim.md §Drift.
+// counts, t in seconds since the sensor was powered. Defaults are Table 1 of the paper; docs/sim.md §3.
 #pragma once
 
 #include <array>

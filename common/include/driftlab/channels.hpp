@@ -1,5 +1,6 @@
 // The four channels of the IMU, in the order every frame, log column and JSON object uses.
-// Nominal scales are the paper's reading (docs/units.md); A/D counts stay the primary data.
+// Nominal scales are the paper's reading (host/util/units.hpp, docs/hardware.md "Sensors and wiring"); A/D counts
+// stay the primary data.
 #pragma once
 
 #include <stdint.h>

@@ -1,5 +1,6 @@
 // ATmega328P entry point: bring the board up, start the firmware, then forever drain the interrupt rings into
-// the core and sleep until the next interrupt (docs/firmware.md "Main loop").
+// the core and sleep until the next interrupt (docs/hal.md §1 "The contract" for the events, §2 "AVR port" for
+// the loop, sleep and watchdog).
 #include <avr/interrupt.h>
 
 #include "firmware/core/firmware.hpp"

@@ -43,11 +43,22 @@ struct ConfigPayload {
 };
 
 /// SAMPLE (0x07, fw->host): the smoothed value of every channel.
+///
+/// One tick for four values that are not all at that tick: the channels are converted round-robin, and each
+/// channel's value is its fit evaluated at *its own* newest conversion, while `tick` is the newest conversion of
+/// any channel. In stream mode the SAMPLE follows accel_z's conversion, so accel_z is at `tick` and channel c's
+/// value is (3 - c) conversion periods older (gyro 3, accel_x 2, accel_y 1); a POLL answers wherever the round
+/// happens to be (docs/protocol.md §3.6).
+/// `n_window` = 0 means some channel's window is empty and its value_q8 is 0, not a reading. A POLL before the
+/// first conversion or right after an ACKed CONFIG_SET emptied the windows gets 0 on every channel with the last
+/// `tick` seen; only n_window tells it from a real estimate (the firmware does not NAK such a POLL).
 struct SamplePayload {
-  uint32_t tick;                   ///< time of the newest conversion [ticks]
-  int32_t value_q8[kChannelCount]; ///< least-squares estimate at `tick` [counts, Q8 = 1/256 count], Channel order
+  uint32_t tick;                   ///< trigger tick of the newest conversion of any channel [ticks]
+  int32_t value_q8[kChannelCount]; ///< least-squares fit of each channel at that channel's own newest conversion,
+                                   ///< not at `tick` (above) [counts, Q8 = 1/256 count], Channel order
   uint8_t sat_flags;               ///< bit c: channel c saw code 0 or 1023 inside its window
-  uint8_t n_window;                ///< conversions in the window now [conversions]; < window at start
+  uint8_t n_window;                ///< conversions in the least filled window now [conversions]; < window at start,
+                                   ///< 0 = a window is empty, its value is 0 and no reading
   uint16_t dropped;                ///< conversions lost since boot, saturating [conversions]
 };
 
@@ -71,7 +82,8 @@ struct NakPayload {
   uint8_t field;       ///< index of the offending field in the payload's field list, kNakFieldNone = n/a
 };
 
-/// STATUS (0x0C, fw->host): firmware health counters, all saturating.
+/// STATUS (0x0C, fw->host): firmware health counters, all saturating. There is no counter for the decoder's
+/// bad_version: a frame of another protocol version shows only in rx_resync_bytes (docs/protocol.md §4).
 struct StatusPayload {
   uint32_t uptime_ticks;     ///< ticks since reset [ticks], wraps
   uint16_t rx_frames;        ///< valid frames received [frames]

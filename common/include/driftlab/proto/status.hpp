@@ -14,7 +14,7 @@ enum class Status : uint8_t {
   out_of_range = 3,  ///< a field outside its documented range (NAK.field names it)
   bad_version = 4,   ///< frame version byte is not kProtocolVersion
   not_allowed = 5,   ///< a firmware-to-host type was sent to the firmware
-  busy = 6,          ///< valid request the firmware cannot serve now
+  busy = 6,          ///< reserved: valid request the firmware cannot serve now; firmware v1 never sends it
 };
 
 constexpr uint8_t kStatusCount = 7;
