@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -255,6 +256,29 @@ void read_effects(const toml::table& effects, std::vector<EffectSpec>& out) {
     }
 }
 
+// Clock jitter comparable to a channel's conversion interval would reorder its conversions (sim/effects/
+// clock_jitter.hpp); only with the firmware's final CONFIG is that interval known, so it is checked here.
+void check_clock_jitter(const SimModel& m, bool adjusted) {
+    const double interval_s = m.firmware.output_period_ms / 1000.0 / m.firmware.conversions_per_output;
+    for (const EffectSpec& e : m.effects) {
+        if (e.name != "clock_jitter") continue;
+        const double rate = 1.0 + e.table["drift_ppm"].value<double>().value_or(0.0) * 1e-6;
+        const double jitter_s = e.table["jitter_s"].value<double>().value_or(0.0);
+        // A tenth: two neighbours' instants then swap with probability Phi(-10/sqrt(2)) < 1e-12.
+        const double limit_s = 0.1 * interval_s * rate;
+        if (jitter_s <= limit_s) continue;
+        const toml::node* here = e.table.get("jitter_s");
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "%g s is not well below a channel's conversion interval (%g s: output_period_ms %u / "
+                      "conversions_per_output %u%s); at most %g s (a tenth), or conversions would be reordered",
+                      jitter_s, interval_s * rate, static_cast<unsigned>(m.firmware.output_period_ms),
+                      static_cast<unsigned>(m.firmware.conversions_per_output),
+                      adjusted ? ", with the command line's firmware options" : "", limit_s);
+        throw ConfigError("effects.clock_jitter.jitter_s", here ? line_of(*here) : 0, text);
+    }
+}
+
 SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& adjust) {
     TableReader r(root, "");
     r.string("name", m.name);
@@ -280,6 +304,7 @@ SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& a
     } else if (adjust) {
         adjust(m.firmware);
     }
+    check_clock_jitter(m, static_cast<bool>(adjust));
     if (const toml::table* t = r.table("link")) {
         TableReader sub(*t, "link");
         read_link(sub, m.link);

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "sim/model/streams.hpp"
 
@@ -50,7 +52,9 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
     ctx.t_s = board_t_s;
     ctx.dt_s = started_[i] ? powered_before_boot_s_ + board_t_s - last_t_s_[i] : 0.0;
     for (auto& e : by_stage_[stage_index(Stage::timing)]) ctx.t_s = e->actual_instant_s(ctx.t_s, ctx);
-    ctx.t_s += powered_before_boot_s_;
+    // However large the jitter, a channel's instant never goes before its previous one (or before power-on), so
+    // dt_s >= 0: the processes' sqrt(dt) stays real. Model files keep jitter far smaller (model_file.cpp).
+    ctx.t_s = std::max(ctx.t_s + powered_before_boot_s_, last_t_s_[i]);
     if (started_[i]) ctx.dt_s = ctx.t_s - last_t_s_[i];
     started_[i] = true;
     last_t_s_[i] = ctx.t_s;
@@ -70,6 +74,10 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
                 noise_[i].sample_counts();
     for (auto& e : by_stage_[stage_index(Stage::converter)]) apply_in_chain(*e, values, ctx);
 
+    // The converter would read NaN as code 0, a plausible reading on the rail: a broken effect must stop the run.
+    if (std::isnan(values[i]))
+        throw std::logic_error(std::string("sensor model: ") + kChannelNames[i] + " is NaN at the converter input at t = " +
+                               std::to_string(ctx.t_s) + " s (an effect produced it)");
     return {adc_.convert_counts(values[i]), ctx.t_s};
 }
 

@@ -33,7 +33,8 @@ public:
 
     /// Converts channel `c` at nominal instant `board_t_s` of the board's clock [s since its start]. Timing
     /// effects move that instant by the board's clock error, which runs from the board's start, not the sensor's
-    /// power-on; eq. 1 and the other effects then see the sensor's time.
+    /// power-on; eq. 1 and the other effects then see the sensor's time. A channel's instant never goes before its
+    /// previous one. Throws std::logic_error when an effect makes the converter input NaN.
     Conversion convert(Channel c, double board_t_s);
 
     /// Analog noise sigma of a channel [counts], as calibrated from its raw standard deviation.

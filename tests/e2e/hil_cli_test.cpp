@@ -58,6 +58,16 @@ TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
     EXPECT_NE(too_many.output.find("with the command line's firmware options"), std::string::npos) << too_many.output;
 }
 
+// 10 ms of jitter on 40 ms per channel reordered conversions: the gyro read code 0 on every row and hil exited 0.
+TEST(HilCli, JitterThatWouldReorderConversionsIsAConfigurationErrorNamingTheFile) {
+    TempDir dir("hiljitter");
+    const std::string model = dir.file("j.toml");
+    std::ofstream(model) << "[effects.gauss_markov]\nsigma_dps = 0.2\n\n[effects.clock_jitter]\njitter_s = 0.01\n";
+    const RunResult r = run_driftlab({"hil", "--model", model, "--duration", "60", "-o", dir.file("h.csv")}, dir.path());
+    EXPECT_EQ(r.exit_code, 5) << r.output;
+    EXPECT_NE(r.output.find("j.toml:5: effects.clock_jitter.jitter_s"), std::string::npos) << r.output;
+}
+
 // `-o -`: the log alone on standard output, so that it reads back; the summary goes to standard error, and --json
 // (a second document on the same stream) is refused.
 TEST(HilCli, ALogOnStandardOutputReadsBack) {

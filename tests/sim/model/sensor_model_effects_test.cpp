@@ -69,5 +69,23 @@ TEST(SensorModelEffects, ClockDriftRunsFromTheBoardsStartNotTheSensorsPowerOn) {
     EXPECT_EQ(plain.convert(Channel::gyro, 12.5).t_s, warm_s + 12.5);
 }
 
+// Jitter as large as the conversion interval (which a model file may not have, but a SimModel built in code may)
+// must not reorder a channel's instants: a negative step made the Gauss-Markov bias NaN for good, which the
+// converter read as code 0 on every later conversion.
+TEST(SensorModelEffects, JitterNeverSendsAChannelsInstantBackwardsAndTheBiasStaysFinite) {
+    SimModel m = paper_model();
+    m.effects.push_back({"gauss_markov", toml::parse("sigma_dps = 0.2")});
+    m.effects.push_back({"clock_jitter", toml::parse("jitter_s = 0.01")});
+    SensorModel sensor(m, kSeed);
+    double last_t = 0.0;
+    for (int k = 0; k < 2000; ++k) {
+        const Conversion c = sensor.convert(Channel::gyro, 0.01 * k);
+        ASSERT_GE(c.t_s, last_t) << "conversion " << k;
+        last_t = c.t_s;
+        // At rest the gyro reads near eq. 1's 505..508 counts; 0.2 deg/s of bias is 1.1 counts.
+        ASSERT_NEAR(c.code, 506.0, 20.0) << "conversion " << k;
+    }
+}
+
 }  // namespace
 }  // namespace driftlab::sim
