@@ -56,6 +56,7 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
     // dt_s >= 0: the processes' sqrt(dt) stays real. Model files keep jitter far smaller (model_file.cpp).
     ctx.t_s = std::max(ctx.t_s + powered_before_boot_s_, last_t_s_[i]);
     if (started_[i]) ctx.dt_s = ctx.t_s - last_t_s_[i];
+    else ctx.since_power_on_s = ctx.t_s;
     started_[i] = true;
     last_t_s_[i] = ctx.t_s;
     ctx.true_physical = inputs_unit_;

@@ -2,6 +2,7 @@
 // every channel's true motion, and the order of a stage does not depend on the model file's order.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "sim/model/model_file.hpp"
@@ -85,6 +86,27 @@ TEST(SensorModelEffects, JitterNeverSendsAChannelsInstantBackwardsAndTheBiasStay
         // At rest the gyro reads near eq. 1's 505..508 counts; 0.2 deg/s of bias is 1.1 counts.
         ASSERT_NEAR(c.code, 506.0, 20.0) << "conversion " << k;
     }
+}
+
+// The walk starts at power-on (docs/effects.md): with the sensor powered W = 100 s before the board, its value at the
+// board's first conversion has spread K sqrt(W) over seeds (it had started from 0 at the board's start). K = 1
+// deg/s/sqrt(s) gives 10 deg/s = 57 counts, against which quantisation (1/12 count^2) is negligible; no white noise.
+TEST(SensorModelEffects, RandomWalkHasRunSincePowerOnAtTheBoardsStart) {
+    const double k = 1.0, warm_s = 100.0;
+    const SimModel m = model_with("[channels.gyro]\nraw_noise_std_dps = 0.0\n\n[effects.rate_random_walk]\nk_dps_per_sqrt_s = 1.0\n");
+    const int seeds = 2000;
+    double sum = 0.0, sum2 = 0.0, per_dps = 0.0;
+    for (int s = 0; s < seeds; ++s) {
+        SensorModel sensor(m, 5000 + s, warm_s);
+        per_dps = sensor.counts_per_unit(Channel::gyro);
+        const double dps = sensor.convert(Channel::gyro, 0.0).code / per_dps;
+        sum += dps;
+        sum2 += dps * dps;
+    }
+    const double mean = sum / seeds;
+    const double spread = std::sqrt((sum2 - seeds * mean * mean) / (seeds - 1));
+    // Relative sd of a Gaussian sample's std: 1/sqrt(2n); 4 of them.
+    EXPECT_NEAR(spread / (k * std::sqrt(warm_s)), 1.0, 4.0 / std::sqrt(2.0 * seeds)) << spread;
 }
 
 }  // namespace
