@@ -279,6 +279,19 @@ void check_clock_jitter(const SimModel& m, bool adjusted) {
     }
 }
 
+// temp_scale_factor needs the chain's temperature, which only ambient_cycle models (sensor_model.cpp): without it
+// the effect would silently do nothing.
+void check_temperature_source(const SimModel& m) {
+    const auto named = [&m](std::string_view name) {
+        return std::find_if(m.effects.begin(), m.effects.end(), [name](const EffectSpec& e) { return e.name == name; });
+    };
+    const auto tempco = named("temp_scale_factor");
+    if (tempco == m.effects.end() || named("ambient_cycle") != m.effects.end()) return;
+    throw ConfigError("effects.temp_scale_factor", line_of(tempco->table),
+                      "needs the unit's temperature, which only [effects.ambient_cycle] models (its 25 degC mean plus "
+                      "the lagged swing); without it the effect would do nothing");
+}
+
 SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& adjust) {
     TableReader r(root, "");
     r.string("name", m.name);
@@ -298,6 +311,7 @@ SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& a
     }
     check_raw_noise(root, m);
     if (const toml::table* t = r.table("effects")) read_effects(*t, m.effects);
+    check_temperature_source(m);
     if (const toml::table* t = r.table("firmware")) {
         TableReader sub(*t, "firmware");
         read_firmware(sub, m.firmware, adjust);

@@ -126,6 +126,14 @@ TEST(ModelFile, ClockJitterThatWouldReorderConversionsOrStopTheClockIsRejected) 
     EXPECT_NE(stopped.find("m.toml:2: effects.clock_jitter.drift_ppm: expected drift_ppm > -1e6"), std::string::npos) << stopped;
 }
 
+// Only ambient_cycle gives the chain a temperature: temp_scale_factor alone had loaded and done nothing.
+TEST(ModelFile, TempScaleFactorWithoutATemperatureIsRejected) {
+    const std::string alone = error_of("[effects.temp_scale_factor]\nscale_pct_per_k = 0.1\n");
+    EXPECT_NE(alone.find("m.toml:1: effects.temp_scale_factor: needs the unit's temperature"), std::string::npos) << alone;
+    EXPECT_EQ(error_of("[effects.temp_scale_factor]\nscale_pct_per_k = 0.1\n[effects.ambient_cycle]\namplitude_k_pp = 2.0\n"),
+              "no error");
+}
+
 TEST(ModelFile, RawNoiseTooSmallToCalibrateIsRejected) {
     // 0.01 deg/s = 0.057 counts: below what white noise through the quantiser can reproduce.
     const std::string e = error_of("[channels.gyro]\nraw_noise_std_dps = 0.01\n");

@@ -109,5 +109,21 @@ TEST(SensorModelEffects, RandomWalkHasRunSincePowerOnAtTheBoardsStart) {
     EXPECT_NEAR(spread / (k * std::sqrt(warm_s)), 1.0, 4.0 / std::sqrt(2.0 * seeds)) << spread;
 }
 
+// ambient_cycle's temperature (25 degC plus its lagged swing) is the chain's: a 20 K square swing without lag puts
+// the unit at 35 degC in the first half of each period and 15 degC in the second, so a tempco of 1 %/K on accel_z
+// (1 g at rest) moves it by +-10 % of 1 g = +-51.2 counts. The temperature had never been set: no change at all.
+TEST(SensorModelEffects, TempScaleFactorFollowsTheAmbientCyclesTemperature) {
+    const std::string quiet = "[channels.accel_z]\nraw_noise_std_g = 0.0\n\n";
+    const std::string cycle = "[effects.ambient_cycle]\namplitude_k_pp = 20.0\nperiod_s = 100.0\nlag_s = 0.0\n";
+    SensorModel plain(model_with(quiet + cycle), kSeed);
+    SensorModel scaled(model_with(quiet + cycle + "[effects.temp_scale_factor]\nscale_pct_per_k = [0.0, 0.0, 0.0, 1.0]\n"), kSeed);
+    const double per_g = plain.counts_per_unit(Channel::accel_z);
+    for (const double t : {10.0, 30.0, 60.0, 80.0}) {
+        const double kelvin_from_reference = t < 50.0 ? 10.0 : -10.0;
+        const double shift = scaled.convert(Channel::accel_z, t).code - plain.convert(Channel::accel_z, t).code;
+        EXPECT_NEAR(shift, 0.01 * kelvin_from_reference * 1.0 * per_g, 1.0) << t;
+    }
+}
+
 }  // namespace
 }  // namespace driftlab::sim
