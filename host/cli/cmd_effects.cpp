@@ -79,9 +79,11 @@ void print_one(const sim::EffectInfo& e) {
 void register_effects(CLI::App& app) {
     auto opts = std::make_shared<EffectsOptions>();
     CLI::App* cmd = app.add_subcommand("effects", "List the simulator's effect library, or show one effect's model-file table");
-    cmd->add_option("name", opts->name, "An effect: its equation and its parameters at their defaults, as TOML");
+    CLI::Option* name = cmd->add_option("name", opts->name, "An effect: its equation and its parameters at their defaults, as TOML");
     cmd->add_flag("--json", opts->json, "Print JSON (an array of: name, stage, equation, summary, params[], gap{candidate, fitted|reason, in_model})");
-    cmd->callback([opts] {
+    cmd->callback([opts, name] {
+        // An empty name given (a variable that expanded to nothing) is a mistake, not a request for the whole list.
+        if (name->count() > 0 && opts->name.empty()) throw UsageError("effects: NAME is empty (omit it to list the library)");
         const auto& all = sim::list_effects();
         std::vector<const sim::EffectInfo*> shown;
         for (const sim::EffectInfo& e : all)

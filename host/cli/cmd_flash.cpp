@@ -23,18 +23,24 @@ std::string pick_port() {
     std::vector<std::string> nodes;
     for (const io::UsbSerialPort& p : scan.ports) nodes.insert(nodes.end(), p.device_nodes.begin(), p.device_nodes.end());
     if (nodes.size() == 1) return nodes.front();
-    if (nodes.empty()) throw UsageError("no --port given and no USB serial adapter found (see `driftlab ports`)");
+    if (nodes.empty()) throw DeviceError("--port", "none given and no USB serial adapter found (is the board plugged in? see `driftlab ports`)");
     std::string list;
     for (const std::string& n : nodes) list += " " + n;
     throw UsageError("no --port given and several adapters present:" + list);
 }
 
 void run_flash(FlashOptions& opts) {
-    if (opts.request.hex_file.empty()) opts.request.hex_file = io::default_hex_file("/proc/self/exe");
+    if (opts.request.hex_file.empty()) {
+        opts.request.hex_file = io::default_hex_file("/proc/self/exe");
+        if (opts.request.hex_file.empty()) throw DataError("driftlab_fw.hex", 0, "no default firmware image (pass --hex FILE)");
+    }
     if (opts.request.port.empty()) opts.request.port = pick_port();
     if (opts.dry_run) {
-        for (const std::string& a : io::avrdude_arguments(opts.request)) std::cout << a << " ";
-        std::cout << "\n";
+        // The same checks as a real run, so the printed command is one that can run (avrdude aside).
+        io::check_image_and_port(opts.request);
+        std::string line;
+        for (const std::string& a : io::avrdude_arguments(opts.request)) line += (line.empty() ? "" : " ") + io::shell_quoted(a);
+        std::cout << line << "\n";
         return;
     }
     const char* path = std::getenv("PATH");

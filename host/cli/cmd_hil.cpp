@@ -174,7 +174,9 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     if (!preset) throw UsageError("--preset: expected fig3 or fig2, got '" + o.preset + "'");
     // The preset's and the options' CONFIG fields go over the file's before the firmware's check of the joined
     // fields, which then sees the configuration that will run.
-    const auto adjust = [&o, &preset](proto::ConfigPayload& fw) {
+    proto::ConfigPayload file_fw{};  // the file's own CONFIG, to tell whose figures a refusal is about
+    const auto adjust = [&o, &preset, &file_fw](proto::ConfigPayload& fw) {
+        file_fw = fw;
         sim::apply_preset_firmware(*preset, fw);
         apply_firmware_options(o, fw);
     };
@@ -185,6 +187,13 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     proto::ConfigPayload& fw = h.model.firmware;
     apply_firmware_options(o, fw);
     if (const auto refusal = sim::firmware_refusal(fw)) throw UsageError(refusal->field + ": " + refusal->reason);
+    // A model file's own period, raw flag and baud that its link cannot carry are its configuration's fault; a
+    // period or raw flag from the command line (or the preset) is the command line's.
+    if (const auto refusal = sim::link_capacity_refusal(h.model)) {
+        const bool options_changed = fw.output_period_ms != file_fw.output_period_ms || fw.raw != file_fw.raw;
+        if (!o.model_file.empty() && !options_changed) throw ConfigError(o.model_file, "link.baud", *refusal);
+        throw UsageError(*refusal);
+    }
     if (o.duration_s) h.duration_s = *o.duration_s;
     if (o.warm_s) h.warm_up_s = *o.warm_s;
     // A billion seconds (32 years of board time) is far beyond any run, and keeps the output count exact.

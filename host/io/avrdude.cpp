@@ -52,33 +52,42 @@ std::string default_hex_file(const std::string& exe_path) {
     const fs::path exe = fs::weakly_canonical(exe_path, ec);
     if (ec) return {};
     // exe = <build>/<preset>/bin/driftlab; the AVR preset builds into <build>/avr, and a native build with avr-gcc
-    // builds the same firmware into <build>/<preset>/avr-fw (the image `hil --target avr` runs).
+    // builds the same firmware into <build>/<preset>/avr-fw (the image `hil --target avr` runs). Each build writes
+    // its image at one known path, so no folder walk picks a stray copy.
     const fs::path tree = exe.parent_path().parent_path();
-    for (const fs::path& dir : {tree.parent_path() / "avr", tree / "avr-fw"}) {
-        if (!fs::is_directory(dir, ec)) continue;
-        for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-            if (it->path().filename() == "driftlab_fw.hex") return it->path().string();
-        }
-    }
-    return {};
+    const fs::path preset_image = tree.parent_path() / "avr" / "firmware" / "driftlab_fw.hex";
+    const fs::path native_image = tree / "avr-fw" / "firmware" / "driftlab_fw.hex";
+    return (fs::is_regular_file(preset_image, ec) || !fs::is_regular_file(native_image, ec) ? preset_image : native_image)
+        .string();
 }
 
-void run_avrdude(const FlashRequest& request, const std::string& path_env) {
-    if (request.hex_file.empty()) {
-        throw UsageError("no firmware image: build it with `cmake --preset avr && cmake --build --preset avr` "
-                         "or pass --hex FILE");
-    }
+void check_image_and_port(const FlashRequest& request) {
+    if (request.hex_file.empty()) throw UsageError("--hex: empty; pass the firmware image (an Intel HEX file)");
     if (!fs::is_regular_file(request.hex_file)) {
-        throw DataError(request.hex_file, 0, "firmware image not found (build the avr preset or pass --hex)");
-    }
-    const std::string avrdude = find_in_path(request.avrdude, path_env);
-    if (avrdude.empty()) {
-        throw DeviceError(request.avrdude, "avrdude not found in PATH; install it (Debian package avrdude, "
-                                           "scripts/setup.sh installs it)");
+        throw DataError(request.hex_file, 0, "firmware image not found (build it with `cmake --preset avr && cmake "
+                                             "--build --preset avr`, or pass --hex FILE)");
     }
     if (request.port.empty()) throw UsageError("no port given: pass --port DEV (see `driftlab ports`)");
     if (::access(request.port.c_str(), F_OK) != 0) {
         throw DeviceError(request.port, "no such port (is the board plugged in? `driftlab ports` lists adapters)");
+    }
+}
+
+std::string shell_quoted(const std::string& word) {
+    const bool plain = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                                "0123456789_-+=.,/:@%") == std::string::npos;
+    if (plain) return word;
+    std::string out = "'";
+    for (const char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+void run_avrdude(const FlashRequest& request, const std::string& path_env) {
+    check_image_and_port(request);
+    const std::string avrdude = find_in_path(request.avrdude, path_env);
+    if (avrdude.empty()) {
+        throw DeviceError(request.avrdude, "avrdude not found in PATH; install it (Debian package avrdude, "
+                                           "scripts/setup.sh installs it)");
     }
 
     FlashRequest resolved = request;

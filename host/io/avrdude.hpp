@@ -27,12 +27,20 @@ std::vector<std::string> avrdude_arguments(const FlashRequest& request);
 std::string find_in_path(const std::string& program, const std::string& path_env);
 
 /// The firmware image of the AVR build next to the native build that holds `exe_path`
-/// (build/native/bin/driftlab -> build/avr/**/driftlab_fw.hex), else the one the native build made itself
-/// (build/native/avr-fw/**/driftlab_fw.hex); empty when there is none.
+/// (build/native/bin/driftlab -> build/avr/firmware/driftlab_fw.hex) when it exists, else the one the native build
+/// made itself (build/native/avr-fw/firmware/driftlab_fw.hex) when that exists, else the AVR build's path (which
+/// the image check then reports missing). Exact paths, no folder walk; empty only when `exe_path` cannot be resolved.
 std::string default_hex_file(const std::string& exe_path);
 
-/// Checks the pieces, runs avrdude with its output on ours and returns when it succeeded.
-/// Throws DeviceError (avrdude missing, port missing, avrdude failed) or DataError (hex missing).
+/// The checks a flash needs before avrdude: the image is a file (DataError), the port exists (DeviceError); an
+/// empty image or port is a UsageError.
+void check_image_and_port(const FlashRequest& request);
+
+/// `word` as a POSIX shell reads it back: as is when it holds only safe characters, else in single quotes.
+std::string shell_quoted(const std::string& word);
+
+/// Checks the pieces (check_image_and_port, then avrdude), runs avrdude with its output on ours and returns when it
+/// succeeded. Throws DeviceError (avrdude missing, port missing, avrdude failed) or DataError (hex missing).
 void run_avrdude(const FlashRequest& request, const std::string& path_env);
 
 }  // namespace driftlab::host::io

@@ -112,6 +112,27 @@ std::map<std::string, std::vector<std::string>> scan_by_id_links(const std::stri
     return links;
 }
 
+std::vector<UsbSerialPort> ports_from_sysfs(const std::vector<TtyUsbNode>& nodes,
+                                            const std::map<std::string, std::vector<std::string>>& by_id,
+                                            const std::string& dev_root) {
+    std::vector<UsbSerialPort> ports;
+    for (const TtyUsbNode& node : nodes) {
+        // One adapter per USB device: a two-port bridge (FT2232: ttyUSB0, ttyUSB1) is one device with two nodes.
+        const bool listed = std::any_of(ports.begin(), ports.end(), [&](const UsbSerialPort& p) {
+            return p.bus == node.bus && p.address == node.address;
+        });
+        if (listed) continue;
+        UsbSerialPort port;
+        port.vendor_id = node.vendor_id;
+        port.product_id = node.product_id;
+        port.bus = node.bus;
+        port.address = node.address;
+        attach_nodes(port, nodes, by_id, dev_root);
+        ports.push_back(std::move(port));
+    }
+    return ports;
+}
+
 bool is_known_serial_vendor(std::uint16_t vendor_id) {
     // FTDI, Silicon Labs CP210x, WCH CH340, Prolific, Arduino, Arduino (clones, SA), Adafruit.
     constexpr std::uint16_t kVendors[] = {0x0403, 0x10c4, 0x1a86, 0x067b, 0x2341, 0x2a03, 0x239a};
@@ -129,15 +150,7 @@ UsbPortScan list_usb_serial_ports(const SystemPaths& paths) {
         scan.usb_available = false;
         scan.usb_note = std::string("libusb cannot open the USB subsystem: ") + libusb_strerror(init);
         // sysfs alone still names the adapters the kernel knows.
-        for (const TtyUsbNode& node : nodes) {
-            UsbSerialPort port;
-            port.vendor_id = node.vendor_id;
-            port.product_id = node.product_id;
-            port.bus = node.bus;
-            port.address = node.address;
-            attach_nodes(port, nodes, by_id, paths.dev_root);
-            scan.ports.push_back(std::move(port));
-        }
+        scan.ports = ports_from_sysfs(nodes, by_id, paths.dev_root);
         return scan;
     }
 

@@ -57,6 +57,12 @@ std::vector<TtyUsbNode> scan_sysfs_usb_ttys(const std::string& sysfs_root);
 /// `<dev_root>/serial/by-id` links grouped by the tty name they resolve to ("ttyUSB0" -> links).
 std::map<std::string, std::vector<std::string>> scan_by_id_links(const std::string& dev_root);
 
+/// The adapters sysfs alone shows (when libusb cannot start): one per USB device (bus and address), with all of
+/// its nodes and their by-id links, in the order of `nodes`.
+std::vector<UsbSerialPort> ports_from_sysfs(const std::vector<TtyUsbNode>& nodes,
+                                            const std::map<std::string, std::vector<std::string>>& by_id,
+                                            const std::string& dev_root);
+
 /// True for vendor ids of common USB-serial bridges and Arduino boards (listed even without a tty node,
 /// e.g. when the kernel driver is missing).
 bool is_known_serial_vendor(std::uint16_t vendor_id);

@@ -8,7 +8,8 @@
 //     square: each half-period relaxes exponentially towards +-A/2 from -+(A/2) tanh(P / (4 tau)).
 //   Cost: one exp per instant; no state.
 // Cannot represent: thermostat hysteresis with a wandering period, a sawtooth/triangle profile, a temperature
-// gradient (rate) coupling. The temperature itself is not output; the chain's temperature input is unaffected.
+// gradient (rate) coupling. The temperature itself is not output; the sensor chain takes kMeanDegc + theta(t) as
+// its temperature (ctx.temperature_degc, which temp_scale_factor reads).
 #pragma once
 
 #include <string>
@@ -54,6 +55,10 @@ public:
 
     /// Lagged temperature deviation theta(t) [K].
     double lagged_temperature_k(double t_s) const;
+    /// The unit's temperature, the ambient mean plus theta(t) [degC]: the chain's temperature (temp_scale_factor).
+    double temperature_degc(double t_s) const { return kMeanDegc + lagged_temperature_k(t_s); }
+    /// The ambient wave's mean [degC]; the couplings see only the swing, temp_scale_factor the whole temperature.
+    static constexpr double kMeanDegc = 25.0;
 
 private:
     bool sine_;

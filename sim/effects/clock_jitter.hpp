@@ -6,7 +6,8 @@
 // apply() is the identity; the chain calls actual_instant_s(). One substream per channel (plus one for whole
 // samples), so jitter draws do not depend on the round-robin order.
 // Cannot represent: correlated (random-walk) phase noise, temperature-dependent drift, jitter large enough to
-// reorder conversions (keep sigma_j well below the conversion interval).
+// reorder conversions (a model file's sigma_j must be at most a tenth of a channel's conversion interval,
+// sim/model/model_file.cpp; the sensor model never lets an instant go before its channel's previous one).
 #pragma once
 
 #include <vector>
@@ -24,6 +25,10 @@ struct ClockJitterParams {
     void visit(V& v) {
         v.field("drift_ppm", drift_ppm, "ppm", "clock rate error rho (signed)");
         v.field("jitter_s", jitter_s, "s", "standard deviation of the white sample-time jitter", Check::nonneg);
+    }
+    // At -1e6 ppm the board's clock stands still, below it time runs backwards.
+    void validate(const TomlReader& r) const {
+        if (!(drift_ppm > -1e6)) r.fail("drift_ppm", "expected drift_ppm > -1e6 [ppm] (at -1e6 the clock stops)");
     }
 };
 

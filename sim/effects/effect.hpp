@@ -66,6 +66,10 @@ inline constexpr double kNotModelled = std::numeric_limits<double>::quiet_NaN();
 struct EffectContext {
     double t_s = 0.0;                      ///< actual instant since power-on [s] (after timing effects)
     double dt_s = 0.0;                     ///< since the previous instant of this channel/sample [s]; 0 at first
+    /// At a channel's first instant, the time since the sensor's power-on that nobody converted [s]; 0 otherwise
+    /// and when the caller does not know it. A process that runs from power-on (rate_random_walk) steps across
+    /// it; the others start at the first instant (a spike would get a spurious chance there).
+    double since_power_on_s = 0.0;
     std::optional<Channel> channel;        ///< set: one conversion of this channel; empty: all four channels
     double temperature_degc = kNotModelled;  ///< ambient/internal temperature if the chain models it [degC]
     double supply_v = kNotModelled;        ///< supply voltage if the chain models it [V]

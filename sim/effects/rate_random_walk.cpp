@@ -14,7 +14,8 @@ void RateRandomWalk::apply(ChannelValues& values, const EffectContext& ctx) {
     const auto [first, last] = channels_of(ctx);
     for (std::size_t c = first; c < last; ++c) {
         if (k[c] <= 0.0) continue;
-        bias_[c] += k[c] * std::sqrt(ctx.dt_s) * rng_[c].normal();
+        // The walk runs from power-on: the first instant's step covers the time before it (--warm included).
+        bias_[c] += k[c] * std::sqrt(ctx.dt_s + ctx.since_power_on_s) * rng_[c].normal();
         values[c] += bias_[c];
     }
 }

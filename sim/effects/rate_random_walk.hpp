@@ -1,6 +1,8 @@
 // E4 rate_random_walk: Brownian bias (IEEE 952 rate random walk K), physical stage; docs/effects.md.
 //
-// Equation (exact for Brownian motion at any dt):  b_k = b_{k-1} + K sqrt(dt) eta_k,  b_0 = 0,  y = u + b.
+// Equation (exact for Brownian motion at any dt):  b_k = b_{k-1} + K sqrt(dt) eta_k,  b = 0 at power-on,  y = u + b;
+//   the first instant's dt is ctx.since_power_on_s (the sensor chain sets it; callers that leave it 0 start the
+//   walk at their first instant).
 //   Var b(t) = K^2 t;  ADEV K sqrt(tau/3) (slope +1/2);  IEEE 952 two-sided PSD (K / 2 pi)^2 / f^2
 //   (gap-method.md section 3, E4).
 // Units: K in [deg/s/sqrt(s)] for the gyro (= deg/s^2/sqrt(Hz), Kalibr's gyroscope_random_walk in degrees) and

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "driftlab/proto/messages.hpp"
 #include "driftlab/proto/wire.hpp"
@@ -53,28 +55,28 @@ double earliest(std::initializer_list<std::optional<double>> times) {
     return t;
 }
 
+}  // namespace
+
 // The firmware's output must fit the link: the model's UART sends 10 bits per byte, so a configuration whose
 // frames per output need more than the baud rate would queue without end, arrive ever later, and end the run's
-// time before most of them arrive (a short log with nothing lost). Refused, with the numbers.
-void check_link_capacity(const SimModel& model) {
+// time before most of them arrive (a short log with nothing lost).
+std::optional<std::string> link_capacity_refusal(const SimModel& model) {
     const proto::ConfigPayload& fw = model.firmware;
     const std::size_t bytes = proto::frame_size(proto::kSamplePayloadSize) +
                               (fw.raw ? proto::frame_size(proto::kRawPayloadSize) : 0);
     const double needed_baud = 10.0 * static_cast<double>(bytes) / (fw.output_period_ms / 1000.0);
-    if (needed_baud <= model.link.baud) return;
+    if (needed_baud <= model.link.baud) return std::nullopt;
     char text[320];
     std::snprintf(text, sizeof text,
                   "the link (link.baud %g, %g bytes/s) cannot carry %zu bytes (SAMPLE%s) every %u ms (%g bytes/s): "
-                  "outputs would queue without end; lengthen the period%s, or raise link.baud in a model file",
+                  "outputs would queue without end; lengthen the output period%s, or raise link.baud",
                   model.link.baud, model.link.baud / 10.0, bytes, fw.raw ? " + RAW" : "", fw.output_period_ms,
-                  needed_baud / 10.0, fw.raw ? ", drop --raw" : "");
-    throw host::UsageError(text);
+                  needed_baud / 10.0, fw.raw ? ", drop raw" : "");
+    return std::string(text);
 }
 
-}  // namespace
-
 HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
-    check_link_capacity(options.model);
+    if (const auto refusal = link_capacity_refusal(options.model)) throw host::UsageError(*refusal);
     SensorSource source(options.model, options.seed, options.warm_up_s);
     Link link(options.model.link, options.seed);
     HostPlan plan;

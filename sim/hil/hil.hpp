@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "driftlab/proto/decoder.hpp"
@@ -51,9 +52,13 @@ struct HilSummary {
     double simulated_s = 0.0;         ///< virtual time at the end [s since power-on]
 };
 
+/// Why the link cannot carry the firmware's output (its frames per output period need more than link.baud), with
+/// the figures; none when it can.
+std::optional<std::string> link_capacity_refusal(const SimModel& model);
+
 /// Runs one host-in-the-loop session; records go to `sink` as the host completes them.
 /// Throws host::DeviceError when the emulated board stops answering, host::UsageError when it refuses the
-/// configuration.
+/// configuration (link_capacity_refusal among others).
 HilSummary run_hil(const HilOptions& options, const RecordSink& sink);
 
 }  // namespace driftlab::sim

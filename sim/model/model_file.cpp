@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -255,6 +256,52 @@ void read_effects(const toml::table& effects, std::vector<EffectSpec>& out) {
     }
 }
 
+// The file's tables of effect `name` (one, or one per instance): they keep their source lines, which the copies in
+// SimModel::effects lose.
+std::vector<const toml::table*> effect_tables(const toml::table& root, std::string_view name) {
+    std::vector<const toml::table*> out;
+    const toml::node_view<const toml::node> n = root["effects"][name];
+    if (const toml::table* t = n.as_table()) out.push_back(t);
+    if (const toml::array* a = n.as_array())
+        for (const toml::node& i : *a)
+            if (const toml::table* t = i.as_table()) out.push_back(t);
+    return out;
+}
+
+// Clock jitter comparable to a channel's conversion interval would reorder its conversions (sim/effects/
+// clock_jitter.hpp); only with the firmware's final CONFIG is that interval known, so it is checked here.
+void check_clock_jitter(const toml::table& root, const proto::ConfigPayload& fw, bool adjusted) {
+    const double interval_s = fw.output_period_ms / 1000.0 / fw.conversions_per_output;
+    for (const toml::table* e : effect_tables(root, "clock_jitter")) {
+        const double rate = 1.0 + (*e)["drift_ppm"].value<double>().value_or(0.0) * 1e-6;
+        const double jitter_s = (*e)["jitter_s"].value<double>().value_or(0.0);
+        // A tenth: two neighbours' instants then swap with probability Phi(-10/sqrt(2)) < 1e-12.
+        const double limit_s = 0.1 * interval_s * rate;
+        if (jitter_s <= limit_s) continue;
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "%g s is not well below a channel's conversion interval (%g s: output_period_ms %u / "
+                      "conversions_per_output %u%s); at most %g s (a tenth), or conversions would be reordered",
+                      jitter_s, interval_s * rate, static_cast<unsigned>(fw.output_period_ms),
+                      static_cast<unsigned>(fw.conversions_per_output),
+                      adjusted ? ", with the command line's firmware options" : "", limit_s);
+        throw ConfigError("effects.clock_jitter.jitter_s", line_of(*e->get("jitter_s")), text);
+    }
+}
+
+// temp_scale_factor needs the chain's temperature, which only ambient_cycle models (sensor_model.cpp): without it
+// the effect would silently do nothing.
+void check_temperature_source(const toml::table& root, const SimModel& m) {
+    const auto has = [&m](std::string_view name) {
+        return std::any_of(m.effects.begin(), m.effects.end(), [name](const EffectSpec& e) { return e.name == name; });
+    };
+    if (!has("temp_scale_factor") || has("ambient_cycle")) return;
+    const auto tables = effect_tables(root, "temp_scale_factor");
+    throw ConfigError("effects.temp_scale_factor", tables.empty() ? 0 : line_of(*tables.front()),
+                      "needs the unit's temperature, which only [effects.ambient_cycle] models (its 25 degC mean plus "
+                      "the lagged swing); without it the effect would do nothing");
+}
+
 SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& adjust) {
     TableReader r(root, "");
     r.string("name", m.name);
@@ -274,12 +321,14 @@ SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& a
     }
     check_raw_noise(root, m);
     if (const toml::table* t = r.table("effects")) read_effects(*t, m.effects);
+    check_temperature_source(root, m);
     if (const toml::table* t = r.table("firmware")) {
         TableReader sub(*t, "firmware");
         read_firmware(sub, m.firmware, adjust);
     } else if (adjust) {
         adjust(m.firmware);
     }
+    check_clock_jitter(root, m.firmware, static_cast<bool>(adjust));
     if (const toml::table* t = r.table("link")) {
         TableReader sub(*t, "link");
         read_link(sub, m.link);

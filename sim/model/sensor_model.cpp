@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "sim/model/streams.hpp"
 
@@ -28,6 +30,7 @@ SensorModel::SensorModel(const SimModel& model, std::uint64_t seed, double power
     for (const EffectSpec& spec : model.effects) {
         auto effect = make_effect(spec.name, spec.table, "effects." + spec.name);
         effect->reset(seed);
+        if (ambient_ == nullptr) ambient_ = dynamic_cast<const AmbientCycle*>(effect.get());
         by_stage_[stage_index(effect->stage())].push_back(std::move(effect));
     }
     // The model file's order is the user's, not the physics': within a stage the effect library fixes it
@@ -50,11 +53,15 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
     ctx.t_s = board_t_s;
     ctx.dt_s = started_[i] ? powered_before_boot_s_ + board_t_s - last_t_s_[i] : 0.0;
     for (auto& e : by_stage_[stage_index(Stage::timing)]) ctx.t_s = e->actual_instant_s(ctx.t_s, ctx);
-    ctx.t_s += powered_before_boot_s_;
+    // However large the jitter, a channel's instant never goes before its previous one (or before power-on), so
+    // dt_s >= 0: the processes' sqrt(dt) stays real. Model files keep jitter far smaller (model_file.cpp).
+    ctx.t_s = std::max(ctx.t_s + powered_before_boot_s_, last_t_s_[i]);
     if (started_[i]) ctx.dt_s = ctx.t_s - last_t_s_[i];
+    else ctx.since_power_on_s = ctx.t_s;
     started_[i] = true;
     last_t_s_[i] = ctx.t_s;
     ctx.true_physical = inputs_unit_;
+    if (ambient_ != nullptr) ctx.temperature_degc = ambient_->temperature_degc(ctx.t_s);
 
     ChannelValues values = inputs_unit_;
     // apply_in_chain gives input effects (vibration) to all four channels' true motion, so cross-couplings
@@ -70,6 +77,10 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
                 noise_[i].sample_counts();
     for (auto& e : by_stage_[stage_index(Stage::converter)]) apply_in_chain(*e, values, ctx);
 
+    // The converter would read NaN as code 0, a plausible reading on the rail: a broken effect must stop the run.
+    if (std::isnan(values[i]))
+        throw std::logic_error(std::string("sensor model: ") + kChannelNames[i] + " is NaN at the converter input at t = " +
+                               std::to_string(ctx.t_s) + " s (an effect produced it)");
     return {adc_.convert_counts(values[i]), ctx.t_s};
 }
 

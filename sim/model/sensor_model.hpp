@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "sim/effects/ambient_cycle.hpp"
 #include "sim/effects/effect.hpp"
 #include "sim/model/adc.hpp"
 #include "sim/model/drift.hpp"
@@ -33,7 +34,8 @@ public:
 
     /// Converts channel `c` at nominal instant `board_t_s` of the board's clock [s since its start]. Timing
     /// effects move that instant by the board's clock error, which runs from the board's start, not the sensor's
-    /// power-on; eq. 1 and the other effects then see the sensor's time.
+    /// power-on; eq. 1 and the other effects then see the sensor's time. A channel's instant never goes before its
+    /// previous one. Throws std::logic_error when an effect makes the converter input NaN.
     Conversion convert(Channel c, double board_t_s);
 
     /// Analog noise sigma of a channel [counts], as calibrated from its raw standard deviation.
@@ -51,6 +53,7 @@ private:
     std::vector<WhiteNoise> noise_;
     ChannelValues inputs_unit_{};
     std::array<std::vector<std::unique_ptr<Effect>>, 4> by_stage_;  // indexed by Stage
+    const AmbientCycle* ambient_ = nullptr;  // the first ambient_cycle: the chain's temperature, when there is one
     std::array<double, kChannelCount> last_t_s_{};
     std::array<bool, kChannelCount> started_{};
 };

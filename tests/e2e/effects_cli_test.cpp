@@ -66,6 +66,10 @@ TEST(EffectsCli, TheListAndTheJsonHoldTheWholeLibraryAndAnUnknownNameIsRefused) 
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.output.find("no effect 'spike'"), std::string::npos) << bad.output;
     EXPECT_NE(bad.output.find("spikes"), std::string::npos) << bad.output;
+    // An empty name (a shell variable that expanded to nothing) had printed the whole list with exit 0.
+    const RunResult empty = run_driftlab({"effects", ""}, dir.path());
+    EXPECT_EQ(empty.exit_code, 2) << empty.output;
+    EXPECT_NE(empty.output.find("NAME is empty"), std::string::npos) << empty.output;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "e2e_support.hpp"
 
@@ -60,6 +61,22 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     }
     EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
+}
+
+// flash --dry-run had skipped every check and printed `-U flash:w::i` with exit 0 when no image existed: it now checks
+// the image (exit 3) and the port (exit 4) first, and quotes a path the shell would split.
+TEST(ExitCodes, FlashDryRunChecksTheImageAndThePortFirst) {
+    TempDir dir("exitflash");
+    const RunResult no_image = run_driftlab({"flash", "--port", "/dev/null", "--hex", dir.file("none.hex"), "--dry-run"}, dir.path());
+    EXPECT_EQ(no_image.exit_code, 3) << no_image.output;
+    EXPECT_NE(no_image.output.find("none.hex: firmware image not found"), std::string::npos) << no_image.output;
+    const std::string hex = dir.file("my fw.hex");
+    std::ofstream(hex) << ":00000001FF\n";
+    const RunResult no_port = run_driftlab({"flash", "--port", dir.file("ttyNONE"), "--hex", hex, "--dry-run"}, dir.path());
+    EXPECT_EQ(no_port.exit_code, 4) << no_port.output;
+    const RunResult dry = run_driftlab({"flash", "--port", "/dev/null", "--hex", hex, "--dry-run"}, dir.path());
+    EXPECT_EQ(dry.exit_code, 0) << dry.output;
+    EXPECT_NE(dry.output.find("-P /dev/null -b 115200 -D -U 'flash:w:" + hex + ":i'"), std::string::npos) << dry.output;
 }
 
 TEST(ExitCodes, HelpAndVersionSucceed) {

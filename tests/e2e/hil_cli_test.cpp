@@ -58,6 +58,35 @@ TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
     EXPECT_NE(too_many.output.find("with the command line's firmware options"), std::string::npos) << too_many.output;
 }
 
+// 10 ms of jitter on 40 ms per channel reordered conversions: the gyro read code 0 on every row and hil exited 0.
+TEST(HilCli, JitterThatWouldReorderConversionsIsAConfigurationErrorNamingTheFile) {
+    TempDir dir("hiljitter");
+    const std::string model = dir.file("j.toml");
+    std::ofstream(model) << "[effects.gauss_markov]\nsigma_dps = 0.2\n\n[effects.clock_jitter]\njitter_s = 0.01\n";
+    const RunResult r = run_driftlab({"hil", "--model", model, "--duration", "60", "-o", dir.file("h.csv")}, dir.path());
+    EXPECT_EQ(r.exit_code, 5) << r.output;
+    EXPECT_NE(r.output.find("j.toml:5: effects.clock_jitter.jitter_s"), std::string::npos) << r.output;
+}
+
+// 20 ms outputs need 1650 bytes/s, more than the paper's 9600 baud carry: from the model file it is the file's
+// configuration (exit 5, naming it; it had been a usage error naming nothing), from --period the command line's.
+TEST(HilCli, AnOutputRateTheLinkCannotCarryIsBlamedOnWhereThePeriodCameFrom) {
+    TempDir dir("hillink");
+    const std::string model = dir.file("fast.toml");
+    std::ofstream(model) << "[firmware]\noutput_period_ms = 20\nconversions_per_output = 5\n";
+    const RunResult file = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
+    EXPECT_EQ(file.exit_code, 5) << file.output;
+    EXPECT_NE(file.output.find("fast.toml: link.baud: the link (link.baud 9600"), std::string::npos) << file.output;
+    const std::string slow = dir.file("slow.toml");
+    std::ofstream(slow) << "[firmware]\nconversions_per_output = 5\n";
+    const RunResult option =
+        run_driftlab({"hil", "--model", slow, "--period", "0.02", "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
+    EXPECT_EQ(option.exit_code, 2) << option.output;
+    const RunResult no_file =
+        run_driftlab({"hil", "--period", "0.02", "--conversions", "5", "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
+    EXPECT_EQ(no_file.exit_code, 2) << no_file.output;
+}
+
 // `-o -`: the log alone on standard output, so that it reads back; the summary goes to standard error, and --json
 // (a second document on the same stream) is refused.
 TEST(HilCli, ALogOnStandardOutputReadsBack) {

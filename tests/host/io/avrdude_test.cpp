@@ -99,19 +99,33 @@ TEST_F(FakeAvrdude, MissingAvrdudeMissingPortAndMissingImageAreClearErrors) {
 }
 
 // The AVR preset's image first; else the one a native build with avr-gcc made in its own tree (avr-fw), which is
-// what a user who ran the README's main command has.
-TEST_F(FakeAvrdude, DefaultImageIsFoundInTheSiblingAvrBuildElseTheNativeTreesOwn) {
+// what a user who ran the README's main command has. Each at the path its build writes: a folder walk had taken
+// whichever copy it met first (here the stray one in a subfolder).
+TEST_F(FakeAvrdude, DefaultImageIsTheSiblingAvrBuildsElseTheNativeTreesOwnAtTheirBuildPaths) {
     fs::create_directories(dir_ / "build/native/bin");
-    fs::create_directories(dir_ / "build/avr/firmware/port/avr");
+    fs::create_directories(dir_ / "build/avr/firmware/a_stray_copy");
     fs::create_directories(dir_ / "build/native/avr-fw/firmware");
     std::ofstream(dir_ / "build/native/bin/driftlab") << "";
-    std::ofstream(dir_ / "build/avr/firmware/port/avr/driftlab_fw.hex") << ":00000001FF\n";
+    std::ofstream(dir_ / "build/avr/firmware/a_stray_copy/driftlab_fw.hex") << ":00000001FF\n";
+    std::ofstream(dir_ / "build/avr/firmware/driftlab_fw.hex") << ":00000001FF\n";
     std::ofstream(dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex") << ":00000001FF\n";
-    EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()),
-              (dir_ / "build/avr/firmware/port/avr/driftlab_fw.hex").string());
-    fs::remove_all(dir_ / "build/avr");
-    EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()),
-              (dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex").string());
+    const std::string exe = (dir_ / "build/native/bin/driftlab").string();
+    const std::string preset_image = (dir_ / "build/avr/firmware/driftlab_fw.hex").string();
+    EXPECT_EQ(default_hex_file(exe), preset_image);
+    fs::remove(preset_image);
+    EXPECT_EQ(default_hex_file(exe), (dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex").string());
     fs::remove_all(dir_ / "build/native/avr-fw");
-    EXPECT_EQ(default_hex_file((dir_ / "build/native/bin/driftlab").string()), "");
+    // Neither: the preset's path, which the image check reports missing by name (exit 3).
+    EXPECT_EQ(default_hex_file(exe), preset_image);
+    FlashRequest r = request();
+    r.hex_file = default_hex_file(exe);
+    EXPECT_THROW(check_image_and_port(r), DataError);
+}
+
+// The dry run prints a command to paste: an argument with a space or a quote must come back as one word.
+TEST(Avrdude, ShellQuotingKeepsEachArgumentOneWord) {
+    EXPECT_EQ(shell_quoted("/dev/ttyACM0"), "/dev/ttyACM0");
+    EXPECT_EQ(shell_quoted("flash:w:my fw.hex:i"), "'flash:w:my fw.hex:i'");
+    EXPECT_EQ(shell_quoted("it's"), "'it'\\''s'");
+    EXPECT_EQ(shell_quoted(""), "''");
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -75,6 +76,35 @@ TEST_F(FakeSystem, ByIdLinksAreGroupedByTheNodeTheyResolveTo) {
     ASSERT_EQ(links.at("ttyACM0").size(), 1u);
     EXPECT_EQ(fs::path(links.at("ttyACM0")[0]).filename(), "usb-Arduino_Uno_7583-if00");
     EXPECT_EQ(fs::path(links.at("ttyUSB0")[0]).filename(), "usb-1a86_USB_Serial-if00-port0");
+}
+
+// Without libusb, sysfs alone lists the adapters: a two-port FT2232 (0403:6010; ttyUSB1 and ttyUSB2 on bus 2,
+// address 4) is one adapter with both nodes (it had been listed twice, each entry with both nodes).
+TEST_F(FakeSystem, SysfsAloneListsATwoPortAdapterOnceWithBothNodes) {
+    const fs::path ft = root_ / "sys/devices/pci0000:00/usb2/2-3";
+    fs::create_directories(ft);
+    write(ft / "busnum", "2");
+    write(ft / "devnum", "4");
+    write(ft / "idVendor", "0403");
+    write(ft / "idProduct", "6010");
+    for (const std::string tty : {"ttyUSB1", "ttyUSB2"}) {
+        const std::string interface = tty == "ttyUSB1" ? "2-3:1.0" : "2-3:1.1";
+        fs::create_directories(ft / interface / tty);
+        fs::create_directories(root_ / "sys/class/tty" / tty);
+        fs::create_directory_symlink(ft / interface / tty, root_ / "sys/class/tty" / tty / "device");
+    }
+    const std::string dev = (root_ / "dev").string();
+    const auto ports = ports_from_sysfs(scan_sysfs_usb_ttys((root_ / "sys").string()), scan_by_id_links(dev), dev);
+    ASSERT_EQ(ports.size(), 3u);
+    const auto ft2232 = std::find_if(ports.begin(), ports.end(), [](const UsbSerialPort& p) { return p.product_id == 0x6010; });
+    ASSERT_NE(ft2232, ports.end());
+    EXPECT_EQ(ft2232->vendor_id, 0x0403);
+    EXPECT_EQ(ft2232->device_nodes, (std::vector<std::string>{dev + "/ttyUSB1", dev + "/ttyUSB2"}));
+    for (const UsbSerialPort& p : ports) {
+        if (&p != &*ft2232) {
+            EXPECT_EQ(p.device_nodes.size(), 1u) << p.device_nodes.front();
+        }
+    }
 }
 
 TEST_F(FakeSystem, MissingTreesGiveEmptyResultsNotErrors) {

@@ -113,6 +113,27 @@ TEST(ModelFile, OutOfRangeValuesNameTheKeyAndTheRange) {
     EXPECT_NE(fast.find("m.toml:3: firmware.conversions_per_output: the firmware refuses this configuration"), std::string::npos) << fast;
 }
 
+// Jitter comparable to a channel's conversion interval reorders conversions (the bias processes then took the
+// square root of a negative step); the paper's 1000 ms / 25 conversions is 40 ms a channel, so 4 ms is the most.
+TEST(ModelFile, ClockJitterThatWouldReorderConversionsOrStopTheClockIsRejected) {
+    EXPECT_EQ(error_of("[effects.clock_jitter]\njitter_s = 0.004\n"), "no error");
+    const std::string jitter = error_of("[effects.gauss_markov]\nsigma_dps = 0.2\n\n[effects.clock_jitter]\njitter_s = 0.01\n");
+    EXPECT_NE(jitter.find("m.toml:5: effects.clock_jitter.jitter_s: 0.01 s is not well below a channel's conversion interval (0.04 s"),
+              std::string::npos) << jitter;
+    // The interval is the configuration that runs: 10 conversions an output leave 100 ms, room for 10 ms of jitter.
+    EXPECT_EQ(error_of("[effects.clock_jitter]\njitter_s = 0.01\n\n[firmware]\nconversions_per_output = 10\n"), "no error");
+    const std::string stopped = error_of("[effects.clock_jitter]\ndrift_ppm = -1e6\n");
+    EXPECT_NE(stopped.find("m.toml:2: effects.clock_jitter.drift_ppm: expected drift_ppm > -1e6"), std::string::npos) << stopped;
+}
+
+// Only ambient_cycle gives the chain a temperature: temp_scale_factor alone had loaded and done nothing.
+TEST(ModelFile, TempScaleFactorWithoutATemperatureIsRejected) {
+    const std::string alone = error_of("[effects.temp_scale_factor]\nscale_pct_per_k = 0.1\n");
+    EXPECT_NE(alone.find("m.toml:1: effects.temp_scale_factor: needs the unit's temperature"), std::string::npos) << alone;
+    EXPECT_EQ(error_of("[effects.temp_scale_factor]\nscale_pct_per_k = 0.1\n[effects.ambient_cycle]\namplitude_k_pp = 2.0\n"),
+              "no error");
+}
+
 TEST(ModelFile, RawNoiseTooSmallToCalibrateIsRejected) {
     // 0.01 deg/s = 0.057 counts: below what white noise through the quantiser can reproduce.
     const std::string e = error_of("[channels.gyro]\nraw_noise_std_dps = 0.01\n");
