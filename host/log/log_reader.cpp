@@ -2,6 +2,7 @@
 #include "host/log/log_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <optional>
@@ -213,7 +214,13 @@ private:
             const std::size_t field = plan_->optional_fields[i].first;
             const std::string& name = plan_->optional_names[i];
             optional_scratch_.push_back(parse_field(log_, number, fields_[field], field, name));
-            if (range_ && is_raw_code_column(name) && !range_->holds_raw_code(optional_scratch_.back()))
+            const double v = optional_scratch_.back();
+            // Four channel bits: anything else (1.5, -3) had been read bit by bit as if it were some set of them.
+            if (name == "sat_flags" && !(v >= 0.0 && v <= 15.0 && v == std::floor(v)))
+                throw DataError(log_.source_name, number,
+                                "field " + std::to_string(field + 1) + " (sat_flags) '" + std::string(trim_blanks(fields_[field])) +
+                                    "': not a set of channel bits (an integer 0 to 15)");
+            if (range_ && is_raw_code_column(name) && !range_->holds_raw_code(v))
                 throw DataError(log_.source_name, number,
                                 "field " + std::to_string(field + 1) + " (" + name + ") '" + std::string(trim_blanks(fields_[field])) +
                                     "': not a code of the " + std::to_string(range_->bits) + "-bit converter (0 to " +

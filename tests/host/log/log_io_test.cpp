@@ -190,6 +190,11 @@ TEST(LogIo, EachRejectionNamesTheLine) {
               std::string::npos);
     EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n0,1,1,2,3,4\n").find("mem.csv:5: t_s 0 is not after"),
               std::string::npos);
+    const std::string flags_head = kHead.substr(0, kHead.size() - 1) + ",sat_flags\n";
+    EXPECT_EQ(parse(flags_head + "0,0,1,2,3,4,15\n").optional_columns.at("sat_flags")[0], 15.0);
+    EXPECT_NE(rejection(flags_head + "0,0,1,2,3,4,1.5\n").find("mem.csv:4: field 7 (sat_flags) '1.5': not a set of channel bits"),
+              std::string::npos);
+    EXPECT_NE(rejection(flags_head + "0,0,1,2,3,4,16\n").find("field 7 (sat_flags) '16'"), std::string::npos);
     // t_s counts from power-on: eq. 1 fitted to negative times had given NaN residuals and a misleading message.
     EXPECT_NE(rejection(kHead + "-0.5,0,1,2,3,4\n").find("mem.csv:4: t_s -0.5 is before power-on"), std::string::npos);
     EXPECT_NE(rejection(kHead + "0,-1,1,2,3,4\n").find("mem.csv:4: field 2 (seq) '-1': not a non-negative integer"),
