@@ -75,7 +75,7 @@ TimeWindow parse_exclude(const std::string& text) {
     };
     const auto colon = text.find(':');
     if (colon == std::string::npos) throw refused();
-    const TimeWindow w{number(text.substr(0, colon)), number(text.substr(colon + 1))};
+    const TimeWindow w{number(text.substr(0, colon)), number(text.substr(colon + 1)), "--exclude"};
     if (!(w.from_s < w.to_s)) throw UsageError("--exclude " + text + ": FROM must be before TO");
     return w;
 }

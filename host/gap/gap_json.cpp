@@ -121,7 +121,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["saturated"] = saturated;
     json left_out = json::array();
     for (const auto& c : r.left_out)
-        left_out.push_back({{"from_s", report::json_number(c.from_s)}, {"to_s", report::json_number(c.to_s)}, {"rows", c.rows}});
+        left_out.push_back({{"from_s", report::json_number(c.from_s)}, {"to_s", report::json_number(c.to_s)}, {"rows", c.rows}, {"by", c.by}});
     j["left_out"] = left_out;
     json steps = json::array();
     for (const auto& s : r.level_steps) {

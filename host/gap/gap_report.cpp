@@ -223,9 +223,9 @@ std::string left_out_sentence(const GapResult& r) {
     std::string out;
     for (const auto& c : r.left_out)
         out += (out.empty() ? "" : ", ") + counted(c.rows, "row") + " from t = " + format_double(c.from_s) +
-               " s to " + format_double(c.to_s) + " s";
+               " s to " + format_double(c.to_s) + " s (" + c.by + ")";
     if (out.empty()) return "";
-    return out + " (--exclude, --exclude-saturated): the rows either side are joined, and the replicates, simulated on the same instants, "
+    return out + ": the rows either side are joined, and the replicates, simulated on the same instants, "
                  "live through the same time";
 }
 

@@ -66,6 +66,7 @@ struct LogCut {
     double from_s = 0.0;         ///< the window asked for [s since power-on]
     double to_s = 0.0;
     std::size_t rows = 0;        ///< rows it held
+    std::string by;              ///< what asked for it (options, ", "-joined where windows merged), for messages
 };
 
 /// The whole log, column-major so the analysis can take a channel as one vector.

@@ -31,7 +31,8 @@ LogData read_log(const std::string& path, const ReadOptions& options = {});
 LogData parse_log(std::istream& in, const std::string& source_name, const ReadOptions& options = {});
 
 /// Whether `in` holds a canonical log: its first line that is not blank is the magic line as read_log() takes it
-/// (`# driftlab-log: N`, any version, blanks around the key allowed). Reads from the stream's position.
+/// (`# driftlab-log: N`, any version, blanks around the key allowed), or a comment naming `driftlab-log` (a damaged
+/// magic line, which read_log() then refuses). Reads from the stream's position.
 bool starts_as_log(std::istream& in);
 
 }  // namespace driftlab::host

@@ -38,7 +38,7 @@ LogData keep_runs(const LogData& log, const std::vector<RowRun>& runs) {
         for (const LogGap& g : log.gaps)
             if (inside(g.before_row)) out.gaps.push_back({offset + g.before_row - r.first, g.line, g.text});
         for (const LogCut& c : log.cuts)
-            if (inside(c.before_row)) out.cuts.push_back({offset + c.before_row - r.first, c.from_s, c.to_s, c.rows});
+            if (inside(c.before_row)) out.cuts.push_back({offset + c.before_row - r.first, c.from_s, c.to_s, c.rows, c.by});
         offset += r.last - r.first;
     }
     return out;
@@ -76,11 +76,15 @@ LogData rows_outside(const LogData& log, std::vector<TimeWindow> windows) {
     std::size_t next = 0, offset = 0;  // the first row not yet placed; rows kept so far
     for (std::size_t w = 0; w < windows.size();) {
         TimeWindow merged = windows[w];
-        for (++w; w < windows.size() && windows[w].from_s <= merged.to_s; ++w) merged.to_s = std::max(merged.to_s, windows[w].to_s);
+        for (++w; w < windows.size() && windows[w].from_s <= merged.to_s; ++w) {
+            merged.to_s = std::max(merged.to_s, windows[w].to_s);
+            // Whole names: "--exclude" is a part of "--exclude-saturated".
+            if ((", " + merged.by + ", ").find(", " + windows[w].by + ", ") == std::string::npos) merged.by += ", " + windows[w].by;
+        }
         const RowRun out = rows_of(log, merged.from_s, merged.to_s);
         if (out.first > next) kept.push_back({next, out.first});
         offset += out.first - next;
-        cuts.push_back({offset, merged.from_s, merged.to_s, out.last - out.first});
+        cuts.push_back({offset, merged.from_s, merged.to_s, out.last - out.first, merged.by});
         next = out.last;
     }
     if (next < log.size()) kept.push_back({next, log.size()});
@@ -109,7 +113,7 @@ std::vector<TimeWindow> saturated_stretches(const LogData& log, const std::array
         }
         const std::size_t first = k;
         while (k < rows && flagged(k)) ++k;
-        out.push_back({log.t_s[first] - margin_s, log.t_s[k - 1] + margin_s});
+        out.push_back({log.t_s[first] - margin_s, log.t_s[k - 1] + margin_s, "--exclude-saturated"});
     }
     return out;
 }

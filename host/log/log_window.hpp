@@ -2,6 +2,7 @@
 // start) would otherwise be read as part of the sensor's behaviour.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "host/log/log_data.hpp"
@@ -16,6 +17,7 @@ LogData rows_between(const LogData& log, double from_s, double to_s);
 struct TimeWindow {
     double from_s = 0.0;
     double to_s = 0.0;
+    std::string by;  ///< what asked for it (an option name), carried into LogCut::by for messages
 };
 
 /// The rows of `log` outside every window, with a LogCut where each (overlapping ones merged) took rows out, so that

@@ -346,10 +346,13 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
     EXPECT_TRUE(s["saturated"].empty());
     ASSERT_EQ(s["left_out"].size(), 1u) << s["left_out"].dump();
     EXPECT_EQ(s["left_out"][0]["rows"], 10);
+    EXPECT_EQ(s["left_out"][0]["by"], "--exclude-saturated");
     EXPECT_NEAR(s["left_out"][0]["from_s"].get<double>(), shock_from - 0.25, 1e-6);
     EXPECT_NEAR(s["left_out"][0]["to_s"].get<double>(), shock_to + 0.25, 1e-6);
     const RunResult text = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--exclude", window}, dir.path());
     EXPECT_NE(text.output.find("left out: 10 rows from t = "), std::string::npos) << text.output;
+    // The option that left them out, not both names whichever it was.
+    EXPECT_NE(text.output.find(" s (--exclude): the rows either side are joined"), std::string::npos) << text.output;
     EXPECT_EQ(text.output.find("saturated:"), std::string::npos) << text.output;
     // Mistakes are refused: a window with no row, a reversed one, text that is not FROM:TO.
     const RunResult empty = run_driftlab({"gap", shock, "--exclude", "300.2:300.3"}, dir.path());

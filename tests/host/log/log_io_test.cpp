@@ -291,6 +291,11 @@ TEST(LogIo, ALogIsKnownByItsMagicLineAsTheReaderTakesIt) {
     EXPECT_TRUE(starts("\n  \r\n# driftlab-log: 1\n"));
     EXPECT_TRUE(starts("#driftlab-log : 2\n"));  // another version is still a log, which the reader then refuses
     EXPECT_FALSE(starts("# a comment\n# driftlab-log: 1\n"));
+    // A damaged magic line is a log the reader refuses with its reason, not a plain table.
+    EXPECT_TRUE(starts("# driftlab-log 1\nt_s,seq\n"));
+    EXPECT_NE(rejection("# driftlab-log 1\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n")
+                  .find("mem.csv:1: not a driftlab log: the first line must be '# driftlab-log: 1', got '# driftlab-log 1'"),
+              std::string::npos);
     EXPECT_FALSE(starts("t_s,gx\n0,1\n"));
     EXPECT_FALSE(starts(""));
     const LogData log = parse("\n# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n");

@@ -52,7 +52,7 @@ TEST(LogWindow, AWindowWithoutRowsIsRefusedNamingTheLogAndItsSpan) {
 }
 
 TEST(LogWindow, AStretchLeftOutJoinsTheRowsEitherSideAndIsRecordedThere) {
-    const LogData w = rows_outside(ten_rows(), {{3.5, 5.0}});  // t = 4, 5: rows 3 and 4
+    const LogData w = rows_outside(ten_rows(), {{3.5, 5.0, "--exclude"}});  // t = 4, 5: rows 3 and 4
     ASSERT_EQ(w.size(), 8u);
     EXPECT_EQ(w.t_s, (std::vector<double>{1, 2, 3, 6, 7, 8, 9, 10}));
     EXPECT_EQ(w.seq[3], 5u);
@@ -70,7 +70,7 @@ TEST(LogWindow, AStretchLeftOutJoinsTheRowsEitherSideAndIsRecordedThere) {
 }
 
 TEST(LogWindow, OverlappingStretchesAreOneCutAndAnEarlierWindowKeepsItsCut) {
-    const LogData w = rows_outside(ten_rows(), {{7.5, 9.0}, {2.0, 2.5}, {6.5, 8.0}});  // rows 1; rows 6, 7, 8
+    const LogData w = rows_outside(ten_rows(), {{7.5, 9.0, "--exclude"}, {2.0, 2.5, "--exclude"}, {6.5, 8.0, "--exclude-saturated"}});  // rows 1; rows 6, 7, 8
     EXPECT_EQ(w.t_s, (std::vector<double>{1, 3, 4, 5, 6, 10}));
     ASSERT_EQ(w.cuts.size(), 2u);
     EXPECT_EQ(w.cuts[0].before_row, 1u);
@@ -79,6 +79,8 @@ TEST(LogWindow, OverlappingStretchesAreOneCutAndAnEarlierWindowKeepsItsCut) {
     EXPECT_EQ(w.cuts[1].rows, 3u);
     EXPECT_DOUBLE_EQ(w.cuts[1].from_s, 6.5);
     EXPECT_DOUBLE_EQ(w.cuts[1].to_s, 9.0);
+    EXPECT_EQ(w.cuts[0].by, "--exclude");
+    EXPECT_EQ(w.cuts[1].by, "--exclude-saturated, --exclude");  // merged: both options that asked for it
     EXPECT_TRUE(w.gaps.empty());  // before row 2 and row 7: each next to a row left out
     // A window of the rows kept then keeps the cut inside it, renumbered.
     const LogData later = rows_between(w, 2.5, 10.0);
@@ -88,26 +90,26 @@ TEST(LogWindow, OverlappingStretchesAreOneCutAndAnEarlierWindowKeepsItsCut) {
 
 TEST(LogWindow, AStretchWithoutRowsOrOneThatLeavesNoneIsRefused) {
     try {
-        rows_outside(ten_rows(), {{4.2, 4.8}});
+        rows_outside(ten_rows(), {{4.2, 4.8, "--exclude"}});
         FAIL() << "no error";
     } catch (const DataError& e) {
         EXPECT_STREQ(e.what(), "ten.csv: no row lies between 4.2 s and 4.8 s (its rows run from 1 s to 10 s)");
     }
     // A window that misses is refused even inside another one, and so is a reversed one.
     try {
-        rows_outside(ten_rows(), {{3.0, 6.0}, {4.2, 4.8}});
+        rows_outside(ten_rows(), {{3.0, 6.0, "--exclude"}, {4.2, 4.8, "--exclude"}});
         FAIL() << "no error";
     } catch (const DataError& e) {
         EXPECT_STREQ(e.what(), "ten.csv: no row lies between 4.2 s and 4.8 s (its rows run from 1 s to 10 s)");
     }
     try {
-        rows_outside(ten_rows(), {{3.0, 8.0}, {6.0, 5.0}});
+        rows_outside(ten_rows(), {{3.0, 8.0, "--exclude"}, {6.0, 5.0, "--exclude"}});
         FAIL() << "no error";
     } catch (const DataError& e) {
         EXPECT_STREQ(e.what(), "ten.csv: no row lies between 6 s and 5 s (its rows run from 1 s to 10 s)");
     }
     try {
-        rows_outside(ten_rows(), {{0.0, 5.0}, {5.0, 11.0}});
+        rows_outside(ten_rows(), {{0.0, 5.0, "--exclude"}, {5.0, 11.0, "--exclude"}});
         FAIL() << "no error";
     } catch (const DataError& e) {
         EXPECT_STREQ(e.what(), "ten.csv: no row is left once the windows are left out (its rows run from 1 s to 10 s)");
