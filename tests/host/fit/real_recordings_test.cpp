@@ -46,6 +46,9 @@ TEST(RealRecordings, Mpu6050WithGapsEitherFitsOrSaysWhyPerColumn) {
     ASSERT_EQ(file.series.size(), 7u);
     for (const SeriesOutcome& s : file.series) {
         if (!s.analysis) {
+            // Only the temperature may be refused (a quantised, nearly constant column); the six sensor axes vary
+            // and hold thousands of rows, so each must fit.
+            EXPECT_EQ(s.name, "temp_C") << s.error;
             EXPECT_FALSE(s.error.empty()) << s.name;
             continue;
         }

@@ -39,5 +39,23 @@ TEST(Calibrate, AStraightLogKeepsItsLevelAndSlopeWhenTheTimeConstantIsBounded) {
     EXPECT_NEAR(model_last - model_first, 0.0005 * 1350.0, 0.15);
 }
 
+// The white noise before the quantiser comes back (the replicates quantise it, adding lsb^2/12): a calibration that
+// matched the codes' spread without that correction would read sqrt(1.05^2 + 1/12) = 1.089 (+3.7 %) and
+// sqrt(0.6^2 + 1/12) = 0.666 (+11 %). Over 40 000 outputs the short-lag spread is known to 1/sqrt(2n) = 0.35 %, and the
+// three replicates it is matched against add a third of that variance: 0.41 %, so 2 % is about 5 sigma (seeds 101..106
+// scattered 0.5 % and 0.6 %). T from the same logs: 4 times their spread (7.5 s) around the planted 411 s.
+TEST(Calibrate, TheWhiteNoiseBeforeTheQuantiserAndTheTimeConstantComeBack) {
+    for (double sigma : {1.05, 0.6}) {
+        GapModel m = testing::paper_gyro_model(8);
+        m.base[0].sigma_n_counts = sigma;
+        for (std::uint64_t seed : {1, 2, 3}) {
+            const LogData log = testing::gyro_log(m, 40000, {}, 100 + seed);
+            const GapModel base = calibrate_base(log, sim::paper_model(), {true, false, false, false}, seed);
+            EXPECT_NEAR(base.base[0].sigma_n_counts / sigma, 1.0, 0.02) << sigma << " seed " << seed;
+            EXPECT_NEAR(base.base[0].drift.tau_s, 411.0, 30.0) << sigma << " seed " << seed;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace driftlab::host::gap

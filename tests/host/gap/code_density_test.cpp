@@ -41,7 +41,8 @@ TEST(CodeDensity, AnIdealConverterGivesADevianceNearItsDegreesOfFreedom) {
         const Rows r = rows(1500, 1.05, seed);
         sum += std::expm1(code_density_excess(r.raw, r.level));
     }
-    // The mean of G2/df over 40 logs: about 1 (0.8-1.3 allows for the sparse end codes and the fitted deviation).
+    // The mean of G2/df over 40 logs: about 1, a little above for the sparse end codes and the fitted deviation (1.12
+    // on these seeds). One log's G2/df scatters by 0.57, so the mean by 0.09: 0.6-1.4 is 4 of that either side of 1.
     EXPECT_GT(sum / 40.0, 0.6);
     EXPECT_LT(sum / 40.0, 1.4);
 }

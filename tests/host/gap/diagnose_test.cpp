@@ -51,9 +51,10 @@ TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
         EXPECT_NE(verdict_reason(r, o).find("explains the log"), std::string::npos) << verdict_reason(r, o);
         EXPECT_LT(r.gap_before_fit, 3.0) << "seed " << seed;
         gap_sum += r.gap_before_fit;
-        // Calibration recovers the planted base: eq. 1 and the white noise before the quantiser.
-        EXPECT_NEAR(r.base.base[0].drift.tau_s, 411.0, 120.0) << "seed " << seed;
-        EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.15) << "seed " << seed;
+        // Calibration recovers the planted base: eq. 1 (T's Fisher standard error on 1200 outputs is about 19 s) and the
+        // white noise before the quantiser (about 0.03 counts here; Calibrate.* checks it sharply on long logs): 4 sigma.
+        EXPECT_NEAR(r.base.base[0].drift.tau_s, 411.0, 75.0) << "seed " << seed;
+        EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.12) << "seed " << seed;
     }
     EXPECT_LE(flagged, 1);
     EXPECT_LT(gap_sum / (5 - flagged), 1.8);

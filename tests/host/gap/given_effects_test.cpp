@@ -54,7 +54,7 @@ TEST(GivenEffects, AModelsProcessIsHeldAtItsValuesAndExplainsTheLogItMade) {
         ASSERT_EQ(r.base.effects.size(), 1u);
         EXPECT_EQ(r.base.effects[0].table, unit.effects[0].table);
         // The white noise is matched with the process in place: near the planted 1.05 counts.
-        EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.15) << "seed " << seed;
+        EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.12) << "seed " << seed;  // 4 x 0.03 on 1200 outputs
     }
     // Each log of the model itself is flagged with family-wise probability about 5 %.
     EXPECT_GE(none, 2);

@@ -39,15 +39,18 @@ TEST(Fig2Preset, ProducesAThousandRawAndSmoothedRowsATenthOfASecondApart) {
     EXPECT_EQ(run.summary.host.frames_lost, 0u);
 }
 
-TEST(Fig2Preset, GyroStdFallsFromThePapersRawToItsSmoothedValueWithin20Percent) {
+TEST(Fig2Preset, GyroStdFallsFromThePapersRawToItsSmoothedValue) {
     const auto run = run_into_memory(preset(Preset::fig2));
     const Columns g = columns(run.rows, Channel::gyro);
     ASSERT_GE(g.raw.size(), 990u);
     const double raw_dps = stddev(g.raw) * kDpsPerCount;
     const double smoothed_dps = stddev(g.smoothed) * kDpsPerCount;
-    EXPECT_NEAR(raw_dps, 0.187, 0.2 * 0.187);
-    EXPECT_NEAR(smoothed_dps, 0.045, 0.2 * 0.045);
-    EXPECT_NEAR(stddev(g.raw) / stddev(g.smoothed), 0.187 / 0.045, 0.2 * 0.187 / 0.045);
+    // 1000 outputs: a sample std has a relative standard error of 1/sqrt(2·1000) = 2.2 %; 4 of it (9 %). The raw std is
+    // the model's input (the paper's 0.187 deg/s), the smoothed one the closed form raw / sqrt(window) (17 conversions:
+    // 0.0454 deg/s, the paper's 0.045 within the same bound).
+    EXPECT_NEAR(raw_dps, 0.187, 0.09 * 0.187);
+    EXPECT_NEAR(stddev(g.smoothed) / (stddev(g.raw) / std::sqrt(double(kFig2Window))), 1.0, 0.09);
+    EXPECT_NEAR(smoothed_dps, 0.045, 0.09 * 0.045);
 }
 
 TEST(Fig2Preset, AccelXSmoothedStdIsRawOverSqrtOfTheWindow) {
