@@ -373,18 +373,18 @@ TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {
     const std::string log = dir.file("short.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "60", "-o", log}, dir.path()).exit_code, 0);
     const RunResult gap = run_driftlab({"gap", log}, dir.path());
-    EXPECT_NE(gap.exit_code, 0);
+    EXPECT_EQ(gap.exit_code, 3) << gap.output;
     EXPECT_NE(gap.output.find("short.csv"), std::string::npos) << gap.output;
     EXPECT_NE(gap.output.find("at least 200 samples"), std::string::npos) << gap.output;
     const RunResult holdout = run_driftlab({"gap", log, "--holdout", "random"}, dir.path());
-    EXPECT_NE(holdout.exit_code, 0);
+    EXPECT_EQ(holdout.exit_code, 2) << holdout.output;
     EXPECT_NE(holdout.output.find("--holdout"), std::string::npos) << holdout.output;
     // A missing file is said to be missing, not taken for a plain table that lacks its options.
     const RunResult missing = run_driftlab({"gap", dir.file("absent.csv")}, dir.path());
-    EXPECT_NE(missing.exit_code, 0);
+    EXPECT_EQ(missing.exit_code, 3) << missing.output;
     EXPECT_NE(missing.output.find("absent.csv: cannot open"), std::string::npos) << missing.output;
     const RunResult tau0 = run_driftlab({"gap", log, "--tau0", "-1"}, dir.path());
-    EXPECT_NE(tau0.exit_code, 0);
+    EXPECT_EQ(tau0.exit_code, 2) << tau0.output;
     EXPECT_NE(tau0.output.find("--tau0: expected a number > 0, got '-1'"), std::string::npos) << tau0.output;
 }
 
@@ -487,7 +487,7 @@ TEST(GapEvalCli, AnUnusablePlotFolderIsRefusedBeforeTheRun) {
     const std::string blocker = dir.file("file");
     std::ofstream(blocker) << "not a folder\n";
     const RunResult r = run_driftlab({"gap-eval", "--quick", "--effects", "thermal_rc", "--plot", blocker + "/plots"}, dir.path());
-    EXPECT_NE(r.exit_code, 0);
+    EXPECT_EQ(r.exit_code, 4) << r.output;
     EXPECT_NE(r.output.find("cannot create the plot folder"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("| generator"), std::string::npos) << "no benchmark output before the refusal";
 }

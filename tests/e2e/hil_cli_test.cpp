@@ -34,7 +34,7 @@ TEST(HilCli, TooManyConversionsForThePeriodIsRefusedByField) {
     TempDir dir("hil100bad");
     const RunResult r =
         run_driftlab({"hil", "--duration", "2", "--period", "0.01", "-o", dir.file("h.csv")}, dir.path());
-    EXPECT_NE(r.exit_code, 0);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("conversions_per_output"), std::string::npos) << r.output;
 }
 

@@ -4,6 +4,7 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -112,8 +113,15 @@ TEST(RecordPty, SigkillLeavesAReadableLogAndTheCaptureRebuildsEveryCompleteLine)
     const std::string log = dir.file("rec.csv");
     const pid_t pid = spawn_driftlab({"record", "--port", board.path(), "--stream", "0.02", "-o", log},
                                      dir.file("record.out"));
-    // Let it record a few flush intervals, then kill it without a chance to clean up.
-    std::this_thread::sleep_for(std::chrono::milliseconds(3500));
+    // Let it record a few flush intervals (until more than 50 rows are on disk, however loaded the machine; at most
+    // a minute), then kill it without a chance to clean up.
+    const auto rows_on_disk = [&] {
+        const auto lines = lines_of(read_text(log));
+        return std::count_if(lines.begin(), lines.end(), [](const std::string& l) { return !l.empty() && l[0] != '#'; }) - 1;
+    };
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (rows_on_disk() <= 50 && std::chrono::steady_clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
     ::kill(pid, SIGKILL);
     const RunResult r = wait_child(pid, dir.file("record.out"));
     ASSERT_EQ(r.exit_code, -1);

@@ -1,6 +1,8 @@
 // Stable JSON keys of `fit`, gnuplot rendering and the self-contained HTML report.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -24,7 +26,8 @@ namespace fs = std::filesystem;
 
 /// A small canonical log with the paper's gyro row on every channel and raw columns.
 std::string write_log() {
-    const auto path = (fs::temp_directory_path() / "driftlab_report_test.csv").string();
+    // Per process: ctest runs each test as its own process, side by side.
+    const auto path = (fs::temp_directory_path() / ("driftlab_report_test_" + std::to_string(::getpid()) + ".csv")).string();
     std::ofstream out(path);
     out << "# driftlab-log: 1\n# source: test\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro,raw_accel_x,raw_accel_y,"
            "raw_accel_z\n";
@@ -97,7 +100,7 @@ TEST(Report, GnuplotWritesPngAndSvg) {
     band.title = "band";
     band.style = SeriesStyle::band;
     p.series = {s, band};
-    const auto dir = (fs::temp_directory_path() / "driftlab_plot_test").string();
+    const auto dir = (fs::temp_directory_path() / ("driftlab_plot_test_" + std::to_string(::getpid()))).string();
     const auto images = render_plot(p, dir, "t");
     ASSERT_EQ(images.size(), 2u);
     for (const auto& image : images) EXPECT_GT(fs::file_size(image), 500u) << image;
