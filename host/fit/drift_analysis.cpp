@@ -49,6 +49,12 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
         throw DataError(series.source, 0,
                         where + ": " + std::to_string(n) + " samples in the selected time range; the fit needs at least " +
                             std::to_string(kMinAnalysisSamples));
+    // Eq. 1's t counts from power-on: before it the exponential grows without bound, and the fit had ended in NaN
+    // residuals reported as "every sequence of the residual is constant".
+    if (out.data.t_s.front() < 0.0)
+        throw DataError(series.source, 0,
+                        where + ": its time starts at " + format_double(out.data.t_s.front()) +
+                            " s, but eq. 1 counts from power-on: give times since power-on (or --t-min 0)");
     const auto [lo, hi] = std::minmax_element(out.data.values.begin(), out.data.values.end());
     if (*lo == *hi)
         throw DataError(series.source, 0, where + " is constant (" + format_double(*lo) + "): nothing to fit");

@@ -220,6 +220,17 @@ TEST(DriftFit, TooShortOrConstantDataIsADataErrorNamingTheSeries) {
     }
     s.values.assign(s.values.size(), 512.0);
     EXPECT_THROW(analyse_drift(s), DataError);
+    // Times before power-on (a plain table's clock): refused, not fitted into NaN residuals.
+    Series early = simulate({3, 505, 411}, 100, 1.0, 0.1, 0.0, 9);
+    for (double& t : early.t_s) t -= 50.0;
+    try {
+        analyse_drift(early);
+        FAIL() << "negative times accepted";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("series 'sim': its time starts at -49 s, but eq. 1 counts from power-on"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace
