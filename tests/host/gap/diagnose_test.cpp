@@ -340,8 +340,11 @@ TEST(Diagnose, SentencesSayOneCellAndTwoRows) {
     r.saturated = {{Channel::gyro, 1, 100.0, 100.0}, {Channel::accel_z, 2, 3.0, 4.0}};
     EXPECT_EQ(saturated_channels_sentence(r).rfind("gyro in 1 row at t = 100.0 s, accel_z in 2 rows from t = 3.0 s to 4.0 s:", 0), 0u)
         << saturated_channels_sentence(r);
-    r.left_out = {{5, 10.0, 10.5, 1}, {9, 20.0, 22.0, 2}};
-    EXPECT_EQ(left_out_sentence(r).rfind("1 row from t = 10 s to 10.5 s, 2 rows from t = 20 s to 22 s (--exclude", 0), 0u)
+    r.left_out = {{5, 10.0, 10.5, 1, "--exclude"}, {9, 20.0, 22.0, 2, "--exclude-saturated"}};
+    EXPECT_EQ(left_out_sentence(r).rfind("1 row from t = 10 s to 10.5 s (--exclude), 2 rows from t = 20 s to 22 s "
+                                         "(--exclude-saturated): ",
+                                         0),
+              0u)
         << left_out_sentence(r);
 }
 
