@@ -11,9 +11,12 @@
 //   sar_mismatch    -> adc_dnl (fits one transition per code, a deterministic table): a successive-approximation
 //                      converter whose binary-weighted DAC has unit-capacitor mismatch, with a noisy comparator;
 //                      it replaces the quantiser and its logs are raw-mode
-// `size_counts` sets the scale: the peak (deterministic) or standard deviation (random) of the signal, the step
-// (mode hop), or the rms code-width error over the codes a log occupies (converter) [counts = LSB]; every signal
-// generator is linear in it.
+// `size_counts` sets the scale [counts = LSB], and every signal generator is linear in it: the level the RC network's
+// rise approaches (thermal_rc: the log holds 80-99 % of it), the thermostat's extremes, the standard deviation of
+// the random signals (kasdin_flicker, wandering_ou; student_walk's end point), the standard deviation of one burst's
+// Laplace amplitude (burst_spikes: the signal's own is sqrt(2/150) of it, bursts being rare), the step (mode hop),
+// or the rms of the converter's DAC step errors over the codes a log occupies (sar_mismatch: its rms DNL while no
+// code goes missing). Tests: tests/host/gap/truth_test.cpp.
 // gap-eval sizes a deterministic generator by the part of it the base's eq. 1 fit cannot absorb (evaluate.cpp).
 // docs/gap.md §Evaluation.
 #pragma once
@@ -30,8 +33,8 @@ namespace driftlab::host::gap {
 struct TruthInfo {
     enum class Kind {
         shape,      ///< a deterministic signal added at the converter input (sized by what eq. 1 cannot absorb)
-        process,    ///< a random signal added there (sized by its standard deviation)
-        converter,  ///< a quantiser replacing the converter (sized by its rms DNL); its logs are raw-mode
+        process,    ///< a random signal added there (sized by a standard deviation; see size_counts above)
+        converter,  ///< a quantiser replacing the converter (sized by its DAC's rms step error); its logs are raw-mode
     };
     std::string generator;
     std::string effect;
