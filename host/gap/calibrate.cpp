@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "host/fit/lm_fit.hpp"
 #include "host/fit/start_values.hpp"
@@ -43,6 +44,22 @@ double kernel_power(const Smoothing& s) {
     return s.fit_order == 0 ? 1.0 / n : 2.0 * (2.0 * n - 1.0) / (n * (n + 1.0));
 }
 
+// The rows' times with lost frames taken out, so that a link that lost most frames keeps its period: a row k usual
+// seq steps after the one before counts its spacing divided by k (the usual step is 1, or 2 in a log with raw
+// columns, a SAMPLE and a RAW frame per row; docs/log-format.md §4).
+std::vector<double> times_without_lost_frames(const LogData& log) {
+    if (log.seq.size() != log.t_s.size()) return log.t_s;
+    const bool raw = std::any_of(log.optional_columns.begin(), log.optional_columns.end(),
+                                 [](const auto& column) { return is_raw_code_column(column.first); });
+    const double usual = raw ? 2.0 : 1.0;
+    std::vector<double> t = {log.t_s.front()};
+    for (std::size_t k = 1; k < log.t_s.size(); ++k) {
+        const double steps = log.seq[k] > log.seq[k - 1] ? static_cast<double>(log.seq[k] - log.seq[k - 1]) : usual;
+        t.push_back(t.back() + (log.t_s[k] - log.t_s[k - 1]) / std::max(steps / usual, 1.0));
+    }
+    return t;
+}
+
 }  // namespace
 
 Smoothing smoothing_from_log(const LogData& log) {
@@ -53,12 +70,13 @@ Smoothing smoothing_from_log(const LogData& log) {
         const auto v = log.metadata.get_double("sample_period_s");
         const std::uint64_t line = log.metadata.line_of("sample_period_s");
         if (!v || !(*v > 0.0)) throw DataError(log.source_name, line, "metadata 'sample_period_s' must be a positive number [s]");
-        // A wrong period misplaces every lag and band; lost frames leave the median alone, and bursts the mean.
-        if (!stats::period_agrees(log.t_s, *v))
+        // A wrong period misplaces every lag and band; bursts leave the mean alone, and lost frames are taken out.
+        const std::vector<double> t = times_without_lost_frames(log);
+        if (!stats::period_agrees(t, *v))
             throw DataError(log.source_name, line,
                             "metadata 'sample_period_s' is " + format_double(*v) + " s, but the rows are " +
-                                format_double(stats::median_spacing_s(log.t_s)) + " s apart (median; mean " +
-                                format_double(stats::mean_spacing_s(log.t_s)) + " s)");
+                                format_double(stats::median_spacing_s(t)) + " s apart (median; mean " +
+                                format_double(stats::mean_spacing_s(t)) + " s; lost frames taken out)");
         s.sample_period_s = *v;
     }
     s.conversions_per_output = metadata_int(log, "conversions_per_output", 1, 1, 64);

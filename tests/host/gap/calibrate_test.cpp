@@ -2,12 +2,14 @@
 // fit's T far beyond the log; the base must still reproduce the log's level and slope, or every replicate drifts
 // away from the real log and the battery locates a gap that is the calibration's.
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "gap_fixtures.hpp"
 #include "host/gap/calibrate.hpp"
+#include "host/util/error.hpp"
 #include "sim/model/drift.hpp"
 
 namespace driftlab::host::gap {
@@ -54,6 +56,35 @@ TEST(Calibrate, TheWhiteNoiseBeforeTheQuantiserAndTheTimeConstantComeBack) {
             EXPECT_NEAR(base.base[0].sigma_n_counts / sigma, 1.0, 0.02) << sigma << " seed " << seed;
             EXPECT_NEAR(base.base[0].drift.tau_s, 411.0, 30.0) << sigma << " seed " << seed;
         }
+    }
+}
+
+// The stated output period is checked against the rows (a wrong one misplaces every lag and band), with lost frames
+// taken out: a radio link that lost every other frame, seq stepping by 2, still has its period; a period ten times
+// the rows' is refused naming its line.
+TEST(Calibrate, TheStatedPeriodMustMatchTheRowsLostFramesTakenOut) {
+    const GapModel m = testing::paper_gyro_model(8);
+    LogData log = testing::gyro_log(m, 400, {}, 5);
+    LogData lossy;
+    lossy.source_name = log.source_name;
+    lossy.metadata = log.metadata;
+    for (std::size_t k = 0; k < log.size(); k += 2) {  // every other frame lost: rows 2 s apart, seq steps by 2
+        lossy.t_s.push_back(log.t_s[k]);
+        lossy.seq.push_back(log.seq[k]);
+    }
+    EXPECT_DOUBLE_EQ(smoothing_from_log(lossy).sample_period_s, 1.0);
+    lossy.seq.assign(lossy.t_s.size(), 0);
+    for (std::size_t k = 0; k < lossy.seq.size(); ++k) lossy.seq[k] = k;  // the same times without the lost frames' seq
+    EXPECT_THROW(smoothing_from_log(lossy), DataError);
+    log.metadata.set("sample_period_s", 10.0);
+    log.metadata.set_line("sample_period_s", 4);
+    try {
+        smoothing_from_log(log);
+        FAIL() << "a period ten times the rows' accepted";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("test.csv:4: metadata 'sample_period_s' is 10 s, but the rows are 1 s apart"),
+                  std::string::npos)
+            << e.what();
     }
 }
 
