@@ -21,7 +21,6 @@
 namespace driftlab::host::cli {
 namespace {
 
-
 using nlohmann::json;
 
 struct AllanCommandOptions {

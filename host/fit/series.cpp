@@ -6,8 +6,8 @@
 
 #include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
-#include "host/util/input_file.hpp"
 #include "host/util/format_number.hpp"
+#include "host/util/input_file.hpp"
 
 namespace driftlab::host::fit {
 

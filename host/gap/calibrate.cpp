@@ -36,8 +36,6 @@ int metadata_int(const LogData& log, const std::string& key, int fallback, int l
     return static_cast<int>(*v);
 }
 
-
-
 // Sum of the squared smoother weights (gap-method §1): order 0 -> 1/N; order 1 at the newest sample -> 2(2N-1)/(N(N+1)).
 double kernel_power(const Smoothing& s) {
     const double n = s.window;
@@ -45,13 +43,10 @@ double kernel_power(const Smoothing& s) {
 }
 
 // The rows' times with lost frames taken out, so that a link that lost most frames keeps its period: a row k usual
-// seq steps after the one before counts its spacing divided by k (the usual step is 1, or 2 in a log with raw
-// columns, a SAMPLE and a RAW frame per row; docs/log-format.md §4).
+// seq steps (LogData::frames_per_row) after the one before counts its spacing divided by k.
 std::vector<double> times_without_lost_frames(const LogData& log) {
     if (log.seq.size() != log.t_s.size()) return log.t_s;
-    const bool raw = std::any_of(log.optional_columns.begin(), log.optional_columns.end(),
-                                 [](const auto& column) { return is_raw_code_column(column.first); });
-    const double usual = raw ? 2.0 : 1.0;
+    const auto usual = static_cast<double>(log.frames_per_row());
     std::vector<double> t = {log.t_s.front()};
     for (std::size_t k = 1; k < log.t_s.size(); ++k) {
         const double steps = log.seq[k] > log.seq[k - 1] ? static_cast<double>(log.seq[k] - log.seq[k - 1]) : usual;

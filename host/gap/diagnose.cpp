@@ -20,8 +20,7 @@ constexpr std::size_t kMinSamples = 200;
 TimingCheck check_timing(const LogData& log, double period_s) {
     TimingCheck t;
     t.gap_events = log.gaps.size();
-    // Each row is one SAMPLE frame, plus one RAW frame when the log has raw columns: seq steps by that much.
-    const std::uint64_t frames_per_row = log.has_column("raw_gyro") ? 2 : 1;
+    const std::uint64_t frames_per_row = log.frames_per_row();
     double sum = 0.0, sum2 = 0.0;
     std::size_t steps = 0;
     auto cut = log.cuts.begin();

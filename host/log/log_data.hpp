@@ -87,6 +87,13 @@ struct LogData {
     std::size_t size() const { return t_s.size(); }
     const std::vector<double>& channel(Channel c) const { return counts[channel_index(c)]; }
     bool has_column(const std::string& name) const { return optional_columns.count(name) != 0; }
+    /// Frames behind each row, so the step of `seq` between rows when none is lost: a SAMPLE, and a RAW frame too in
+    /// a log with raw columns (docs/log-format.md §4).
+    std::uint64_t frames_per_row() const {
+        for (const auto& column : optional_columns)
+            if (is_raw_code_column(column.first)) return 2;
+        return 1;
+    }
 };
 
 /// Whether a `sat_flags` value flags channel `c` (bit c: a conversion of the output's window at code 0 or the top code).

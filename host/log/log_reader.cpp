@@ -3,14 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <optional>
 #include <string_view>
 
 #include "host/util/error.hpp"
-#include "host/util/input_file.hpp"
 #include "host/util/format_number.hpp"
+#include "host/util/input_file.hpp"
 #include "host/util/parse_number.hpp"
 #include "host/util/split_fields.hpp"
 
