@@ -70,8 +70,7 @@ Smoothing smoothing_from_log(const LogData& log) {
         if (!stats::period_agrees(t, *v))
             throw DataError(log.source_name, line,
                             "metadata 'sample_period_s' is " + format_double(*v) + " s, but the rows are " +
-                                format_double(stats::median_spacing_s(t)) + " s apart (median; mean " +
-                                format_double(stats::mean_spacing_s(t)) + " s; lost frames taken out)");
+                                stats::spacing_text(t) + ", lost frames taken out");
         s.sample_period_s = *v;
     }
     s.conversions_per_output = metadata_int(log, "conversions_per_output", 1, 1, 64);

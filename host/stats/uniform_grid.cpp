@@ -28,12 +28,17 @@ bool period_agrees(std::span<const double> t_s, double period_s) {
            std::abs(mean_spacing_s(t_s) / period_s - 1.0) <= kTolerance;
 }
 
+std::string spacing_text(std::span<const double> t_s) {
+    char text[120];
+    std::snprintf(text, sizeof text, "%g s apart (median; mean %g s)", median_spacing_s(t_s), mean_spacing_s(t_s));
+    return text;
+}
+
 std::optional<std::string> tau0_disagreement(std::span<const double> t_s, double tau0_s) {
     if (period_agrees(t_s, tau0_s)) return std::nullopt;
-    char text[200];
-    std::snprintf(text, sizeof text, "--tau0 %g s, but the time column's rows are %g s apart (median; mean %g s)", tau0_s,
-                  median_spacing_s(t_s), mean_spacing_s(t_s));
-    return std::string(text);
+    char text[60];
+    std::snprintf(text, sizeof text, "--tau0 %g s", tau0_s);
+    return std::string(text) + ", but the time column's rows are " + spacing_text(t_s);
 }
 
 UniformSeries to_uniform_grid(std::span<const double> t_s, std::span<const double> values, double tau0_s) {

@@ -29,6 +29,9 @@ double mean_spacing_s(std::span<const double> t_s);
 /// the mean for rows that come in bursts (an MPU6050 read 100 times a second in bursts 2 ms apart).
 bool period_agrees(std::span<const double> t_s, double period_s);
 
+/// The rows' spacing for messages: "b s apart (median; mean c s)".
+std::string spacing_text(std::span<const double> t_s);
+
 /// When `tau0_s` does not agree (period_agrees), a sentence saying so ("--tau0 a s, but the time column's rows are
 /// b s apart (median; mean c s)"); nothing when it does.
 std::optional<std::string> tau0_disagreement(std::span<const double> t_s, double tau0_s);
