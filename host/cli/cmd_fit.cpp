@@ -1,5 +1,7 @@
 // `driftlab fit LOG`: eq. 1 per channel by Levenberg–Marquardt, Table 1 layout, whiteness of the residual
 // (host/fit, host/stats; docs/analysis.md §2–3).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -10,6 +12,7 @@
 #include "host/report/analysis_plots.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/units.hpp"
 
 namespace driftlab::host::cli {
@@ -27,29 +30,41 @@ std::string num(double v, int digits) {
     return buf;
 }
 
-std::string interval(const std::array<double, 2>& ci, int digits) {
-    return "[" + num(ci[0], digits) + ", " + num(ci[1], digits) + "]";
+/// An estimate and its interval written to the precision of its standard error: a table in g or rad/s shows its
+/// digits (C1 = -0.000213), where fixed decimals had printed -0.000.
+std::string at_precision(const fit::Estimate& e, double v) { return to_precision_of(v, e.stderr_); }
+
+std::string interval(const fit::Estimate& e, const std::array<double, 2>& ci) {
+    return "[" + at_precision(e, ci[0]) + ", " + at_precision(e, ci[1]) + "]";
 }
 
 void print_table(const fit::FileAnalysis& file) {
     std::cout << file.path << "\n";
-    std::printf("%-10s %-26s %-26s %-18s %-10s %8s  %s\n", "channel", "C1 [counts] (physical)", "C2 [counts] (physical)",
-                "T [s]", "status", "rms", "residual");
+    // A plain table's values are in its own unit; a log's are A/D counts with the physical value beside them.
+    const bool log_channels =
+        std::any_of(file.series.begin(), file.series.end(), [](const auto& s) { return s.analysis && s.analysis->data.channel; });
+    const char* c1_head = log_channels ? "C1 [counts] (physical)" : "C1 [table unit]";
+    const char* c2_head = log_channels ? "C2 [counts] (physical)" : "C2 [table unit]";
+    std::printf("%-10s %-26s %-26s %-18s %-10s %8s  %s\n", "channel", c1_head, c2_head, "T [s]", "status", "rms",
+                "residual");
     for (const auto& s : file.series) {
         if (!s.analysis) {
             std::printf("%-10s error: %s\n", s.name.c_str(), s.error.c_str());
             continue;
         }
         const fit::DriftAnalysis& a = *s.analysis;
-        std::string c1 = num(a.plain.c1.value, 3), c2 = num(a.plain.c2.value, 3);
+        std::string c1 = at_precision(a.plain.c1, a.plain.c1.value), c2 = at_precision(a.plain.c2, a.plain.c2.value);
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string unit = physical_unit(c).name;
-            c1 += " (" + num(counts_to_physical(c, a.plain.c1.value), 4) + " " + unit + ")";
-            c2 += " (" + num(level_to_physical(c, a.plain.c2.value), 4) + " " + unit + ")";
+            const auto physical = [c](const fit::Estimate& e, double v) {
+                return to_precision_of(v, std::fabs(counts_to_physical(c, e.stderr_)));
+            };
+            c1 += " (" + physical(a.plain.c1, counts_to_physical(c, a.plain.c1.value)) + " " + unit + ")";
+            c2 += " (" + physical(a.plain.c2, level_to_physical(c, a.plain.c2.value)) + " " + unit + ")";
         }
         std::printf("%-10s %-26s %-26s %-18s %-10s %8.4g  %s\n", s.name.c_str(), c1.c_str(), c2.c_str(),
-                    num(a.plain.t_s.value, 1).c_str(), fit::fit_status_name(a.fit.status), a.fit.rms,
+                    at_precision(a.plain.t_s, a.plain.t_s.value).c_str(), fit::fit_status_name(a.fit.status), a.fit.rms,
                     a.whiteness.white ? "white" : "NOT white");
     }
     for (const auto& s : file.series) {
@@ -58,15 +73,15 @@ void print_table(const fit::FileAnalysis& file) {
         std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << num(a.data.t_s.front(), 3) << " .. "
                   << num(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
                   << ")\n";
-        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w, int digits) {
-            std::cout << "  " << name << " = " << num(p.value, digits) << " +- " << num(p.stderr_, digits)
-                      << "  95 % " << interval(p.ci95, digits);
-            if (!a.whiteness.white) std::cout << "  widened " << interval(w.ci95, digits);
+        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w) {
+            std::cout << "  " << name << " = " << at_precision(p, p.value) << " +- " << at_precision(p, p.stderr_)
+                      << "  95 % " << interval(p, p.ci95);
+            if (!a.whiteness.white) std::cout << "  widened " << interval(p, w.ci95);
             std::cout << "\n";
         };
-        row("C1", a.plain.c1, a.widened.c1, 4);
-        row("C2", a.plain.c2, a.widened.c2, 4);
-        row("T ", a.plain.t_s, a.widened.t_s, 2);
+        row("C1", a.plain.c1, a.widened.c1);
+        row("C2", a.plain.c2, a.widened.c2);
+        row("T ", a.plain.t_s, a.widened.t_s);
         const auto& w = a.whiteness;
         std::cout << "  whiteness: " << num(100.0 * w.fraction_inside, 1) << " % of lags inside +-2 sigma ("
                   << w.sequences_used << " sequences of " << num(w.sequence_length_s, 1) << " s), Ljung-Box Q("

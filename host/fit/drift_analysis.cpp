@@ -31,6 +31,13 @@ Series restrict_range(const Series& s, double t_min_s, double t_max_s) {
     return out;
 }
 
+/// Three significant digits: a p-value or a spacing in a sentence, not a number to read back.
+std::string sig3(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
 double median_spacing(const std::vector<double>& t_s) {
     std::vector<double> dt(t_s.size() - 1);
     for (std::size_t k = 1; k < t_s.size(); ++k) dt[k - 1] = t_s[k] - t_s[k - 1];
@@ -82,15 +89,19 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     if (out.fit.start.t_at_upper_end || out.fit.parameters.t_s > 3.0 * out.data.t_s.back())
         out.warnings.push_back("T (" + fixed(out.fit.parameters.t_s, 1) + " s) is beyond the record (ends at t = " +
                                fixed(out.data.t_s.back(), 1) +
-                               " s): the data show no settling, so only the initial slope C1/T is well determined");
+                               " s): the data show no settling, so only the initial slope C1/T is well determined (" +
+                               to_precision_of(out.plain.initial_slope.value, out.plain.initial_slope.stderr_) +
+                               " +- " +
+                               to_precision_of(out.plain.initial_slope.stderr_, out.plain.initial_slope.stderr_) +
+                               " per s)");
     if (out.fit.start.t_at_lower_end || out.fit.parameters.t_s < out.sample_period_s)
-        out.warnings.push_back("T (" + format_double(out.fit.parameters.t_s) +
+        out.warnings.push_back("T (" + sig3(out.fit.parameters.t_s) +
                                " s) is shorter than the sampling interval: the transient is not resolved");
     if (!out.whiteness.white && out.whiteness.autocorrelation_time.tau <= 1.0) {
         // Rejected, yet no positive correlation to widen by (negative lag-1 correlation, or a structure the window
         // stops before): the widened intervals are the plain ones, which cannot be vouched for.
         const auto& w = out.whiteness;
-        out.warnings.push_back("residual is not white (Ljung-Box p = " + format_double(w.ljung_box.p_value) + ", " +
+        out.warnings.push_back("residual is not white (Ljung-Box p = " + sig3(w.ljung_box.p_value) + ", " +
                                fixed(100.0 * w.fraction_inside, 1) +
                                " % of ensemble lags inside +-2 sigma), but its integrated autocorrelation time is not "
                                "above 1 sample: there is nothing to widen the intervals by, and they may still be too "
@@ -98,7 +109,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     } else if (!out.whiteness.white) {
         const auto& w = out.whiteness;
         out.warnings.push_back(
-            "residual is not white (Ljung-Box p = " + format_double(w.ljung_box.p_value) + ", " +
+            "residual is not white (Ljung-Box p = " + sig3(w.ljung_box.p_value) + ", " +
             fixed(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma): the plain intervals are too "
             "narrow by about x" + fixed(out.widened.inflation, 2) + " (autocorrelation time " +
             fixed(w.autocorrelation_time.tau, 2) + " samples, effective n " +
@@ -107,7 +118,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     }
     if (out.time_gaps > 0)
         out.warnings.push_back(std::to_string(out.time_gaps) + " gaps in time (spacing > 1.5x the median " +
-                               format_double(out.sample_period_s) +
+                               sig3(out.sample_period_s) +
                                " s): the fit uses the true times, the autocorrelation counts lags in samples");
     if (!out.whiteness.adaptation.empty()) out.warnings.push_back("whiteness: " + out.whiteness.adaptation);
     return out;

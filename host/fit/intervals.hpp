@@ -23,6 +23,9 @@ struct Estimate {
 
 struct ParameterIntervals {
     Estimate c1, c2, t_s;              ///< in the data's unit; T in seconds
+    /// C1/T, the drift rate at power-on [data unit / s] (delta method over the covariance of C1 and T): what a
+    /// record much shorter than T determines where C1 and T are not separately determined.
+    Estimate initial_slope;
     double dof = 0.0;                  ///< degrees of freedom of the t quantile
     double t_quantile = 0.0;           ///< t_{0.975, dof}
     double inflation = 1.0;            ///< factor applied to the standard errors (sqrt(tau))

@@ -1,6 +1,7 @@
 // Levenberg–Marquardt driver; see lm_fit.hpp.
 #include "host/fit/lm_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/SVD>
@@ -28,6 +29,22 @@ void add_row(Eigen::Matrix3d& r, Eigen::Vector3d j) {
             j[k] = c * j[k] - s * rik;
         }
     }
+}
+
+/// Data whose largest magnitude lies within 2^+-kUnscaledRange fit unscaled: their squares and sums are far from
+/// a double's limits, and scaling would reorder MINPACK's column pivoting (the log T column scales, C1's and C2's do
+/// not), moving an ill-conditioned fit's last digits.
+constexpr int kUnscaledRange = 100;
+
+/// The exponent of the largest finite magnitude in `y` (frexp's: 2^e just above it) when it lies outside the
+/// unscaled range, else 0.
+int scale_exponent(const std::vector<double>& y) {
+    double largest = 0.0;
+    for (double v : y)
+        if (std::isfinite(v)) largest = std::max(largest, std::abs(v));
+    int e = 0;
+    std::frexp(largest, &e);
+    return largest == 0.0 || std::abs(e) <= kUnscaledRange ? 0 : e;
 }
 
 const char* stop_reason(Eigen::LevenbergMarquardtSpace::Status s) {
@@ -60,13 +77,18 @@ const char* fit_status_name(FitStatus s) {
     return "unknown";
 }
 
-FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y, const FitOptions& options) {
+FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& data, const FitOptions& options) {
     const std::size_t n = t_s.size();
-    if (n < 4 || y.size() != n) throw UsageError("fit_drift: need at least 4 samples with one time each");
+    if (n < 4 || data.size() != n) throw UsageError("fit_drift: need at least 4 samples with one time each");
     FitResult out;
     out.n = n;
+    out.scale_exponent = scale_exponent(data);
+    const int e2 = out.scale_exponent;
+    std::vector<double> y(n);
+    for (std::size_t k = 0; k < n; ++k) y[k] = std::ldexp(data[k], -e2);
     if (options.start) {
-        out.start.parameters = *options.start;
+        out.start.parameters = {std::ldexp(options.start->c1, -e2), std::ldexp(options.start->c2, -e2),
+                                options.start->t_s};
     } else {
         out.start = automatic_start(t_s, y);
     }
@@ -82,32 +104,33 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
     out.solver_stop = stop_reason(stop);
     out.iterations = static_cast<int>(lm.iterations());
     out.function_evaluations = static_cast<int>(lm.nfev());
-    out.parameters = {x[0], x[1], std::exp(x[2])};
+    const DriftParameters p{x[0], x[1], std::exp(x[2])};  // of the scaled data
+    out.parameters = {std::ldexp(p.c1, e2), std::ldexp(p.c2, e2), p.t_s};
 
     // Residual, and the Jacobian over (C1, C2, T) for the covariance and the rank check.
     out.residual.resize(n);
     Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
     Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();  // only a warm start's retry rule reads it (below)
     const bool warm = options.start.has_value();
-    const DriftParameters& p = out.parameters;
     for (std::size_t k = 0; k < n; ++k) {
         const double u = t_s[k] / p.t_s;
         const double e = std::exp(-u);
-        out.residual[k] = y[k] - drift_model(p, t_s[k]);
-        out.rss += out.residual[k] * out.residual[k];
+        const double residual = y[k] - drift_model(p, t_s[k]);
+        out.residual[k] = std::ldexp(residual, e2);
+        out.scaled_rss += residual * residual;
         const Eigen::Vector3d j(1.0 - e, 1.0, -p.c1 * e * u / p.t_s);
         add_row(r, j);
         if (warm) jtj.noalias() += j * j.transpose();
     }
-    out.rms = std::sqrt(out.rss / static_cast<double>(n));
-    out.jacobian_r = r;
+    out.rms = std::ldexp(std::sqrt(out.scaled_rss / static_cast<double>(n)), e2);
+    out.scaled_jacobian_r = r;
     // The columns of R have the norms of J's: scaled to unit columns, its singular values are J's.
     const Eigen::Vector3d scale = r.colwise().norm().transpose().cwiseMax(1e-300).cwiseInverse();
     const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(r * scale.asDiagonal()).singularValues();
     out.condition_number = sv[2] > 0.0 ? sv[0] / sv[2] : INFINITY;
 
     using namespace Eigen::LevenbergMarquardtSpace;
-    if (!std::isfinite(out.rss) || !(out.condition_number < kSingularCondition))
+    if (!std::isfinite(out.scaled_rss) || !(out.condition_number < kSingularCondition))
         out.status = FitStatus::singular;
     else if (stop == TooManyFunctionEvaluation)
         out.status = FitStatus::iteration_limit;
@@ -122,10 +145,10 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& y
             Eigen::JacobiSVD<Eigen::Matrix3d>(normal_scale.asDiagonal() * jtj * normal_scale.asDiagonal()).singularValues();
         return !(normal_sv[2] > 0.0 && std::sqrt(normal_sv[0] / normal_sv[2]) < kSingularCondition);
     };
-    if (warm && (out.status == FitStatus::iteration_limit || !std::isfinite(out.rss) || degenerate())) {
+    if (warm && (out.status == FitStatus::iteration_limit || !std::isfinite(out.scaled_rss) || degenerate())) {
         FitOptions cold = options;
         cold.start.reset();
-        return fit_drift(t_s, y, cold);
+        return fit_drift(t_s, data, cold);
     }
     return out;
 }

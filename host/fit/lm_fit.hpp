@@ -2,6 +2,7 @@
 // started by automatic_start(). docs/analysis.md §2.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -32,6 +33,11 @@ struct FitOptions {
     std::optional<DriftParameters> start;
 };
 
+/// Data whose largest magnitude lies beyond 2^+-100 are fitted divided by 2^scale_exponent, a power of two that
+/// brings that magnitude near 1 (eq. 1 is linear in C1 and C2, so the fit scales with them), so that data near
+/// 1e-170 or 1e200 neither underflow nor overflow; other data fit unscaled (scale_exponent 0). The sum of squares
+/// and R are kept in the scaled units, since at 1e200 the sum of squares itself is beyond a double; everything else
+/// is in the data's unit.
 struct FitResult {
     DriftParameters parameters;
     FitStatus status = FitStatus::converged;
@@ -39,12 +45,17 @@ struct FitResult {
     int iterations = 0;
     int function_evaluations = 0;
     std::size_t n = 0;              ///< samples fitted
-    double rss = 0.0;               ///< residual sum of squares [counts^2]
+    int scale_exponent = 0;         ///< the data were divided by 2^scale_exponent for the fit
+    double scaled_rss = 0.0;        ///< residual sum of squares of the scaled data
     double rms = 0.0;               ///< sqrt(rss / n) [counts]
     double condition_number = 0.0;  ///< of the column-scaled Jacobian (C1, C2, T)
-    Eigen::Matrix3d jacobian_r = Eigen::Matrix3d::Zero();  ///< R of J = QR over (C1, C2, T) at the solution (R^T R = J^T J)
+    /// R of J = QR over (C1, C2, T) at the solution for the scaled data (R^T R = J^T J)
+    Eigen::Matrix3d scaled_jacobian_r = Eigen::Matrix3d::Zero();
     std::vector<double> residual;   ///< data - model, per sample
-    StartValues start;
+    StartValues start;              ///< of the scaled data (T and the flags are the data's)
+
+    /// Residual sum of squares [counts^2]; infinite where it is beyond a double.
+    double rss() const { return std::ldexp(scaled_rss, 2 * scale_exponent); }
 };
 
 /// Fits eq. 1 to (t_s, y). Needs at least 4 samples and strictly increasing t_s (the caller checks and

@@ -47,6 +47,7 @@ nlohmann::json fit_json(const fit::DriftAnalysis& a) {
         {"C1", estimate_json(a.plain.c1, a.widened.c1)},
         {"C2", estimate_json(a.plain.c2, a.widened.c2)},
         {"T", estimate_json(a.plain.t_s, a.widened.t_s)},
+        {"initial_slope", estimate_json(a.plain.initial_slope, a.widened.initial_slope)},
         {"unit", a.data.unit},
         {"status", fit::fit_status_name(f.status)},
         {"solver_stop", f.solver_stop},

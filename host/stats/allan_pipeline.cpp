@@ -57,7 +57,7 @@ std::optional<fit::DriftParameters> fit_turn_on_drift(const std::vector<double>&
         status = fit::fit_status_name(r.status);
         // A singular fit (T far beyond the record: only the slope C1/T is seen) still gives the least-squares
         // curve, which is what is removed; only a fit that ran off is not.
-        if (r.status == fit::FitStatus::iteration_limit || !std::isfinite(r.rss)) return std::nullopt;
+        if (r.status == fit::FitStatus::iteration_limit || !std::isfinite(r.scaled_rss)) return std::nullopt;
         return r.parameters;
     } catch (const std::exception& e) {
         status = e.what();

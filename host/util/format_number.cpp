@@ -1,7 +1,10 @@
 // Round-trip number formatting; see format_number.hpp.
 #include "host/util/format_number.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 
 namespace driftlab::host {
 
@@ -15,6 +18,22 @@ std::string format_double(double value) {
     std::string s;
     append_double(s, value);
     return s;
+}
+
+std::string to_precision_of(double value, double uncertainty) {
+    char buf[64];
+    if (!std::isfinite(value) || !std::isfinite(uncertainty) || !(uncertainty > 0.0)) {
+        std::snprintf(buf, sizeof buf, "%.6g", value);
+        return buf;
+    }
+    const int last = static_cast<int>(std::floor(std::log10(uncertainty))) - 1;  // power of ten of the last digit
+    if (last >= -12 && std::fabs(value) < 1e9 && uncertainty < 1e9) {
+        std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -last), value);
+    } else {
+        const int lead = value != 0.0 ? static_cast<int>(std::floor(std::log10(std::fabs(value)))) : last + 1;
+        std::snprintf(buf, sizeof buf, "%.*e", std::clamp(lead - last, 0, 16), value);
+    }
+    return buf;
 }
 
 }  // namespace driftlab::host

@@ -1,4 +1,5 @@
-// Number-to-text for files that are read back: shortest text that parses to the same double.
+// Number-to-text: the shortest text that parses to the same double, for files that are read back; and a value
+// written to the precision of its uncertainty, for people.
 #pragma once
 
 #include <string>
@@ -10,5 +11,10 @@ std::string format_double(double value);
 
 /// Appends format_double(value) to `out` without a temporary string.
 void append_double(std::string& out, double value);
+
+/// `value` with its last digit where `uncertainty`'s second significant digit is (so that to_precision_of(u, u) is
+/// u to two digits): fixed-point for magnitudes below 1e9 down to a last digit of 1e-12, else scientific
+/// (-0.00021, 505.08, 1052485, 3.1e+205). Six significant digits where the uncertainty is zero, infinite or NaN.
+std::string to_precision_of(double value, double uncertainty);
 
 }  // namespace driftlab::host

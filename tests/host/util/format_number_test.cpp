@@ -1,0 +1,45 @@
+// Number-to-text: round trips, and a value written to the precision of its uncertainty.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "host/util/format_number.hpp"
+
+namespace driftlab::host {
+namespace {
+
+TEST(FormatDouble, ParsesBackToTheSameDouble) {
+    for (double v : {0.1, -505.0834, 1e-300, 3.0e205, 2.0 / 3.0, std::nextafter(1.0, 2.0)})
+        EXPECT_EQ(std::stod(format_double(v)), v) << format_double(v);
+}
+
+// The last digit sits at the uncertainty's second significant digit, whatever the magnitude: a table in g shows
+// its digits where fixed decimals had printed -0.000.
+TEST(ToPrecisionOf, TheLastDigitIsTheUncertaintysSecond) {
+    EXPECT_EQ(to_precision_of(-0.00021813, 0.0000482), "-0.000218");
+    EXPECT_EQ(to_precision_of(0.0000482, 0.0000482), "0.000048");
+    EXPECT_EQ(to_precision_of(505.083426, 0.0537), "505.083");
+    EXPECT_EQ(to_precision_of(397.7146, 1.43), "397.7");
+    EXPECT_EQ(to_precision_of(1052485.26, 23553.79), "1052485");
+    EXPECT_EQ(to_precision_of(-30.0514, 0.099), "-30.051");  // 0.099: its second digit is at 1e-3
+}
+
+TEST(ToPrecisionOf, VeryLargeOrSmallMagnitudesAreScientificWithTheSameLastDigit) {
+    EXPECT_EQ(to_precision_of(-3.0051385e201, 5.03e198), "-3.0051e+201");
+    EXPECT_EQ(to_precision_of(5.03e198, 5.03e198), "5.0e+198");
+    EXPECT_EQ(to_precision_of(-7.23e-180, 1.2e-182), "-7.230e-180");
+    EXPECT_EQ(to_precision_of(0.0, 1.2e-182), "0.0e+00");
+}
+
+TEST(ToPrecisionOf, WithoutAFiniteUncertaintySixSignificantDigits) {
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(to_precision_of(-202.806076, inf), "-202.806");
+    EXPECT_EQ(to_precision_of(4.5447311, 0.0), "4.54473");
+    EXPECT_EQ(to_precision_of(4.5447311, std::nan("")), "4.54473");
+    EXPECT_EQ(to_precision_of(inf, 1.0), "inf");
+}
+
+}  // namespace
+}  // namespace driftlab::host
