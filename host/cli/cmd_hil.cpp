@@ -172,8 +172,8 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     check_option_combinations(o);
     const auto preset = sim::preset_from_name(o.preset);
     if (!preset) throw UsageError("--preset: expected fig3 or fig2, got '" + o.preset + "'");
-    // The preset's and the options' CONFIG fields go over the file's before the firmware's check of the joined
-    // fields, which then sees the configuration that will run.
+    // The preset's and the options' CONFIG fields go over the model's, once; a file's get them before the
+    // firmware's check of the joined fields, which then sees the configuration that will run.
     proto::ConfigPayload file_fw{};  // the file's own CONFIG, to tell whose figures a refusal is about
     const auto adjust = [&o, &preset, &file_fw](proto::ConfigPayload& fw) {
         file_fw = fw;
@@ -181,11 +181,15 @@ sim::HilOptions build_options(const HilCliOptions& o) {
         apply_firmware_options(o, fw);
     };
     sim::HilOptions h;
-    h.model = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file, adjust);
+    if (o.model_file.empty()) {
+        h.model = sim::paper_model();
+        adjust(h.model.firmware);
+    } else {
+        h.model = sim::load_model_file(o.model_file, adjust);
+    }
     h.seed = o.seed;
-    sim::apply_preset(*preset, h);
-    proto::ConfigPayload& fw = h.model.firmware;
-    apply_firmware_options(o, fw);
+    sim::apply_preset_run(*preset, h);
+    const proto::ConfigPayload& fw = h.model.firmware;
     if (const auto refusal = sim::firmware_refusal(fw)) throw UsageError(refusal->field + ": " + refusal->reason);
     // A model file's own period, raw flag and baud that its link cannot carry are its configuration's fault; a
     // period or raw flag from the command line (or the preset) is the command line's.

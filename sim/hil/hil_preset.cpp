@@ -23,7 +23,7 @@ void apply_preset_firmware(Preset preset, proto::ConfigPayload& fw) {
     }
 }
 
-void apply_preset(Preset preset, HilOptions& options) {
+void apply_preset_run(Preset preset, HilOptions& options) {
     switch (preset) {
     case Preset::fig3:
         options.duration_s = 4000.0;
@@ -34,6 +34,10 @@ void apply_preset(Preset preset, HilOptions& options) {
         options.warm_up_s = 3600.0;
         break;
     }
+}
+
+void apply_preset(Preset preset, HilOptions& options) {
+    apply_preset_run(preset, options);
     apply_preset_firmware(preset, options.model.firmware);
 }
 

@@ -21,6 +21,9 @@ std::optional<Preset> preset_from_name(std::string_view name);
 /// Sets duration, warm-up and the firmware CONFIG fields the preset fixes, over `options.model`.
 void apply_preset(Preset preset, HilOptions& options);
 
+/// Only the run's duration and warm-up (what apply_preset sets besides the firmware).
+void apply_preset_run(Preset preset, HilOptions& options);
+
 /// Only the firmware CONFIG fields the preset fixes (those apply_preset sets), over `fw`.
 void apply_preset_firmware(Preset preset, proto::ConfigPayload& fw);
 

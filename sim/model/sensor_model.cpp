@@ -51,7 +51,7 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
     EffectContext ctx;
     ctx.channel = c;
     ctx.t_s = board_t_s;
-    ctx.dt_s = started_[i] ? powered_before_boot_s_ + board_t_s - last_t_s_[i] : 0.0;
+    // Timing effects see dt_s = 0: the interval is known only once they have moved the instant.
     for (auto& e : by_stage_[stage_index(Stage::timing)]) ctx.t_s = e->actual_instant_s(ctx.t_s, ctx);
     // However large the jitter, a channel's instant never goes before its previous one (or before power-on), so
     // dt_s >= 0: the processes' sqrt(dt) stays real. Model files keep jitter far smaller (model_file.cpp).

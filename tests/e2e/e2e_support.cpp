@@ -86,14 +86,6 @@ RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std
     return wait_child(spawn_driftlab(args, err, stdout_file), err);
 }
 
-TempDir::TempDir(const std::string& name)
-    : path_(std::filesystem::temp_directory_path() / ("driftlab_e2e_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-}
-
-TempDir::~TempDir() { std::filesystem::remove_all(path_); }
-
 std::string read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::stringstream s;

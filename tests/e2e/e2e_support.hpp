@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "host/io/pty_board.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace driftlab::e2e {
 
@@ -56,17 +57,7 @@ RunResult run_driftlab(const std::vector<std::string>& args, const std::filesyst
 RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std::string& stdout_file,
                                  const std::filesystem::path& dir);
 
-/// A fresh folder under the system temp dir, removed by the destructor.
-class TempDir {
-public:
-    explicit TempDir(const std::string& name);
-    ~TempDir();
-    const std::filesystem::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    std::filesystem::path path_;
-};
+using test_support::TempDir;
 
 std::string read_text(const std::string& path);
 std::vector<std::string> lines_of(const std::string& text);

@@ -1,8 +1,6 @@
 // Stable JSON keys of `fit`, gnuplot rendering and the self-contained HTML report.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,16 +16,17 @@
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
 #include "sim/model/rng.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace driftlab::host::report {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::TempDir;
 
-/// A small canonical log with the paper's gyro row on every channel and raw columns.
-std::string write_log() {
-    // Per process: ctest runs each test as its own process, side by side.
-    const auto path = (fs::temp_directory_path() / ("driftlab_report_test_" + std::to_string(::getpid()) + ".csv")).string();
+/// A small canonical log in `dir` with the paper's gyro row on every channel and raw columns.
+std::string write_log(const TempDir& dir) {
+    const std::string path = dir.file("log.csv");
     std::ofstream out(path);
     out << "# driftlab-log: 1\n# source: test\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro,raw_accel_x,raw_accel_y,"
            "raw_accel_z\n";
@@ -44,8 +43,9 @@ std::string write_log() {
 }
 
 TEST(Report, FitJsonHasTheStableKeys) {
+    const TempDir dir("report_json");
     fit::FileAnalysisRequest request;
-    request.path = write_log();
+    request.path = write_log(dir);
     const fit::FileAnalysis file = fit::analyse_file(request);
     ASSERT_EQ(file.failures(), 0u);
     const nlohmann::json j = fit_json(*file.series[0].analysis);
@@ -100,7 +100,8 @@ TEST(Report, GnuplotWritesPngAndSvg) {
     band.title = "band";
     band.style = SeriesStyle::band;
     p.series = {s, band};
-    const auto dir = (fs::temp_directory_path() / ("driftlab_plot_test_" + std::to_string(::getpid()))).string();
+    const TempDir temp("report_plot");
+    const std::string dir = temp.path().string();
     const auto images = render_plot(p, dir, "t");
     ASSERT_EQ(images.size(), 2u);
     for (const auto& image : images) EXPECT_GT(fs::file_size(image), 500u) << image;
@@ -121,8 +122,9 @@ TEST(Report, GnuplotWritesPngAndSvg) {
 }
 
 TEST(Report, HtmlIsSelfContainedWithTablesVerdictsAllanAndFigures) {
+    const TempDir dir("report_html");
     fit::FileAnalysisRequest request;
-    request.path = write_log();
+    request.path = write_log(dir);
     const fit::FileAnalysis file = fit::analyse_file(request);
     ReportOptions options;
     options.plots = gnuplot_available();
