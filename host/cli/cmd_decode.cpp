@@ -8,6 +8,7 @@
 #include "host/io/log_assembler.hpp"
 #include "host/io/status_line.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_file.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -18,6 +19,7 @@ struct DecodeOptions {
 };
 
 void run_decode(const DecodeOptions& o) {
+    refuse_writing_over_input(o.output, "-o", o.capture, "capture");
     io::CaptureReader reader(o.capture);
     io::LogAssembler assembler(o.output, reader.header());
     bool started = false;

@@ -213,9 +213,11 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
     for (const auto& n : r.not_tried) std::printf("not tried: %s (%s)\n", n.effect.c_str(), n.reason.c_str());
-    if (r.timing.sequence_jumps || r.timing.gap_events)
-        std::printf("timing: %s (%s lost), %s\n", gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
-                    gap::counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(), gap::counted(r.timing.gap_events, "gap event").c_str());
+    // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps.
+    std::printf("timing: %s (%s lost), %s; row spacing varies by %.3g %% of the output period (sd)\n",
+                gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
+                gap::counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
+                gap::counted(r.timing.gap_events, "gap event").c_str(), 100.0 * r.timing.dt_jitter_rel);
 }
 
 // " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else "".
@@ -232,6 +234,7 @@ std::string rows_used(const GapCommandOptions& o, const LogData& log) {
 }
 
 void run(const GapCommandOptions& o) {
+    refuse_writing_over_input(o.model_out, "--model-out", o.path, "log");
     const auto [log, unit] = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {
@@ -308,7 +311,8 @@ void register_gap(CLI::App& app) {
     cmd->add_option("file", o->path, "Real log: a canonical log, or a plain table with --tau0 and --as")->required();
     cmd->add_option("--as", o->mappings,
                     "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
-                    "LSB (its resolution in the column's unit), e.g. gyro=col1:0.00875; repeat per channel");
+                    "LSB (its resolution in the column's unit: deg/s or g unless UNIT is mdps, rad/s, mg or m/s2), "
+                    "e.g. gyro=col1:0.00875 or gyro=gx:1.33e-4:rad/s; repeat per channel");
     cmd->add_option("--tau0", o->tau0_s, "Plain recordings: the raw sample period [s] (timing from a t_s/t/time column "
                                          "if there is one)")
         ->check(positive_number());

@@ -23,6 +23,7 @@
 #include "host/log/log_writer.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/hil/hil_preset.hpp"
@@ -239,6 +240,7 @@ sim::HilSummary run_board(const sim::HilOptions& h, const sim::RecordSink& on_re
 }
 
 void run_hil_command(const HilCliOptions& o) {
+    refuse_writing_over_input(o.output, "-o", o.model_file, "model file");
     sim::HilOptions h = build_options(o);
     if (o.pty) return serve_pty_command(o, h);
     const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;

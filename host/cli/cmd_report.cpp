@@ -11,6 +11,7 @@
 #include "host/report/html_report.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 
 namespace driftlab::host::cli {
@@ -24,6 +25,7 @@ struct ReportCommandOptions {
 };
 
 void run(const ReportCommandOptions& opts) {
+    refuse_writing_over_input(opts.output, "-o", opts.request.path, "log");
     const std::string folder = std::filesystem::path(opts.output).parent_path().string();
     if (!folder.empty()) make_output_folder(folder, "report");  // before the work, as --plot does
     const fit::FileAnalysis file = fit::analyse_file(opts.request);

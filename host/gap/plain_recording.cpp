@@ -2,9 +2,13 @@
 #include "host/gap/plain_recording.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
 
 #include "driftlab/proto/messages.hpp"
 #include "host/fit/series.hpp"
@@ -19,21 +23,41 @@ namespace {
 constexpr double kMidScale = 512.0;
 constexpr double kFullScale = 1023.0;
 
+// A column's unit and its value in the simulator's unit of the channel (deg/s; g).
+constexpr std::array<std::pair<std::string_view, double>, 3> kGyroUnits{
+    {{"deg/s", 1.0}, {"mdps", 1e-3}, {"rad/s", 180.0 / 3.14159265358979323846}}};
+constexpr std::array<std::pair<std::string_view, double>, 3> kAccelUnits{{{"g", 1.0}, {"mg", 1e-3}, {"m/s2", 1.0 / 9.80665}}};
+
 }  // namespace
 
 ColumnMapping parse_column_mapping(const std::string& text) {
-    const auto eq = text.find('='), colon = text.rfind(':');
+    const auto eq = text.find('=');
+    auto colon = text.rfind(':');
     if (eq == std::string::npos || colon == std::string::npos || colon < eq)
-        throw UsageError("--as: expected CHANNEL=COLUMN:LSB (e.g. gyro=col1:0.00875), got '" + text + "'");
+        throw UsageError("--as: expected CHANNEL=COLUMN:LSB[:UNIT] (e.g. gyro=col1:0.00875), got '" + text + "'");
     ColumnMapping m;
     const std::string channel = text.substr(0, eq);
     bool found = false;
     for (std::size_t c = 0; c < kChannelCount; ++c)
         if (channel == kChannelNames[c]) m.channel = static_cast<Channel>(c), found = true;
     if (!found) throw UsageError("--as: unknown channel '" + channel + "' (gyro, accel_x, accel_y, accel_z)");
+    // The last field is a unit when it does not start like a number (a column name may hold neither ':' nor one).
+    const std::string last = text.substr(colon + 1);
+    if (!last.empty() && std::isalpha(static_cast<unsigned char>(last.front()))) {
+        const auto units = m.channel == Channel::gyro ? kGyroUnits : kAccelUnits;
+        const auto unit = std::find_if(units.begin(), units.end(), [&last](const auto& u) { return last == u.first; });
+        if (unit == units.end())
+            throw UsageError("--as: unknown unit '" + last + "' for " + channel + " (" +
+                             (m.channel == Channel::gyro ? "deg/s, mdps, rad/s" : "g, mg, m/s2") + ") in '" + text + "'");
+        m.to_model_unit = unit->second;
+        const auto previous = text.rfind(':', colon - 1);
+        if (previous == std::string::npos || previous < eq)
+            throw UsageError("--as: expected CHANNEL=COLUMN:LSB:UNIT, got '" + text + "'");
+        colon = previous;
+    }
     m.column = text.substr(eq + 1, colon - eq - 1);
     if (m.column.empty()) throw UsageError("--as: no column name in '" + text + "'");
-    const std::string lsb = text.substr(colon + 1);
+    const std::string lsb = text.substr(colon + 1, text.find(':', colon + 1) - colon - 1);
     char* end = nullptr;
     m.lsb = std::strtod(lsb.c_str(), &end);
     if (lsb.empty() || *end != '\0' || !(m.lsb > 0.0) || !std::isfinite(m.lsb))
@@ -127,9 +151,9 @@ sim::SimModel unit_of_recording(sim::SimModel unit, const PlainRecording& how, c
         const auto mid = log.metadata.get_double(std::string("mid_scale_value_") + kChannelNames[c]);
         if (!mid) throw std::invalid_argument("unit_of_recording: the log was not made by log_from_table() with this mapping");
         sim::ChannelModel& ch = unit.channels[c];
-        ch.front_end.span_unit = kMidScale * m.lsb;  // counts_per_unit = levels / 2 / span = 1 / lsb
-        ch.front_end.center_unit = *mid;
-        ch.input_unit = *mid;
+        ch.front_end.span_unit = kMidScale * m.lsb * m.to_model_unit;  // counts_per_unit = levels / 2 / span = 1 / lsb
+        ch.front_end.center_unit = *mid * m.to_model_unit;
+        ch.input_unit = *mid * m.to_model_unit;
     }
     return unit;
 }

@@ -20,9 +20,13 @@ struct ColumnMapping {
     Channel channel = Channel::gyro;
     std::string column;  ///< the table's column name ("col1"... for a table without a name line)
     double lsb = 0.0;    ///< the column's value of one code (its resolution), > 0
+    /// The column's unit in the simulator's (deg/s for the gyro, g for an accelerometer): 180/pi for rad/s.
+    double to_model_unit = 1.0;
 };
 
-/// Parses `CHANNEL=COLUMN:LSB` (e.g. `gyro=col1:0.00875`); throws UsageError naming what is wrong.
+/// Parses `CHANNEL=COLUMN:LSB[:UNIT]` (e.g. `gyro=col1:0.00875`, `gyro=gx:1.33e-4:rad/s`); UNIT is deg/s (the
+/// default), mdps or rad/s for the gyro, g (the default), mg or m/s2 for an accelerometer. Throws UsageError naming
+/// what is wrong.
 ColumnMapping parse_column_mapping(const std::string& text);
 
 struct PlainRecording {
@@ -37,7 +41,7 @@ struct PlainRecording {
 LogData log_from_table(const NumericTable& table, const PlainRecording& how);
 
 /// The unit that `log` (made by log_from_table() under `how`) reads as: on each mapped channel one code is one LSB
-/// of the column's unit and mid-scale is the column's median (metadata `mid_scale_value_<channel>`), so that the
+/// of the column (converted to deg/s or g) and mid-scale is the column's median (metadata `mid_scale_value_<channel>`), so that the
 /// diagnosis's physical parameters (deg/s, g) are the recording's own and a model file written from it describes
 /// the recorded sensor. The other channels and everything else are `unit`'s; the converter is 10-bit, as the codes.
 sim::SimModel unit_of_recording(sim::SimModel unit, const PlainRecording& how, const LogData& log);

@@ -66,10 +66,18 @@ NumericTable read_numeric_table(const std::string& path) {
         values.reserve(fields.size());
         for (std::size_t i = 0; i < fields.size(); ++i) {
             const ParsedNumber p = parse_finite_double(fields[i]);
-            if (p.error != NumberError::ok)
+            if (p.error != NumberError::ok) {
+                // A semicolon-separated or decimal-comma table (a spreadsheet's export in many locales) fails here.
+                const bool locale_export = p.error == NumberError::not_a_number &&
+                                           fields[i].find_first_of(";") != std::string_view::npos;
                 throw DataError(path, number,
                                 "field " + std::to_string(i + 1) + " '" + std::string(trim_blanks(fields[i])) +
-                                    "': " + number_error_text(p.error));
+                                    "': " + number_error_text(p.error) +
+                                    (locale_export ? " (fields are separated by blanks, tabs or commas and use a decimal "
+                                                     "point: export the table with those, not semicolons and decimal "
+                                                     "commas)"
+                                                   : ""));
+            }
             values.push_back(p.value);
         }
         if (!rows_by_line.empty() && values.size() != rows_by_line.front().size())

@@ -21,6 +21,14 @@ void check_output_file(const std::string& path, const std::string& what) {
     if (!ok) throw DeviceError(path, "cannot write the " + what + ": " + (error ? std::strerror(error) : "unknown reason"));
 }
 
+void refuse_writing_over_input(const std::string& output, const std::string& option, const std::string& input,
+                               const std::string& input_what) {
+    std::error_code ec;  // either missing: not the same file
+    if (!output.empty() && !input.empty() && std::filesystem::equivalent(output, input, ec))
+        throw UsageError(option + ": '" + output + "' is the " + input_what + " this command reads ('" + input +
+                         "'); writing there would destroy it");
+}
+
 void write_output_file(const std::string& path, const std::string& text, const std::string& what) {
     const std::string temporary = path + ".part";
     {

@@ -10,6 +10,12 @@ namespace driftlab::host {
 /// there (a missing folder, no permission). Leaves no file behind that was not there before.
 void check_output_file(const std::string& path, const std::string& what);
 
+/// Throws UsageError when `output` is the file `input` (by identity, so another spelling of its path or a link to
+/// it too): a command must not write over what it reads, a capture above all, the only byte-for-byte record.
+/// `option` names the output's option, `input_what` what the input is.
+void refuse_writing_over_input(const std::string& output, const std::string& option, const std::string& input,
+                               const std::string& input_what);
+
 /// Writes `text` to `path` through a temporary file beside it and a rename, so that a reader never sees a part of
 /// it and an earlier file stays as it was when writing fails. Throws DeviceError as above.
 void write_output_file(const std::string& path, const std::string& text, const std::string& what);

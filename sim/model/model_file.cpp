@@ -469,11 +469,33 @@ std::optional<FirmwareRefusal> firmware_refusal(const proto::ConfigPayload& fw) 
     const fw::ConfigCheck check = fw::validate(fw);
     if (check.status == proto::Status::ok) return std::nullopt;
     const char* name = proto::config_field_name(check.field);
-    return FirmwareRefusal{name ? name : "conversions_per_output",
-                           std::string("the firmware refuses this configuration (") + proto::status_name(check.status) +
-                               "): output_period_ms / (4 x conversions_per_output) must give a conversion period of " +
-                               std::to_string(fw::kMinConversionPeriodTicks) + " to " +
-                               std::to_string(fw::kMaxConversionPeriodTicks) + " ticks of 4 us"};
+    const std::string field = name ? name : "conversions_per_output";
+    // The firmware names only the field; the reason, with the values it saw, is what lets a user fix it.
+    const auto range = [](long lo, long hi, long got) {
+        return "must be " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + std::to_string(got);
+    };
+    std::string why;
+    if (field == "output_period_ms")
+        why = range(proto::kOutputPeriodMinMs, proto::kOutputPeriodMaxMs, fw.output_period_ms);
+    else if (field == "window")
+        why = range(1, std::min<long>(proto::kWindowMax, fw::LsWindow::kMaxWindow), fw.window);
+    else if (field == "fit_order")
+        why = range(0, proto::kFitOrderMax, fw.fit_order);
+    else if (field == "mode")
+        why = range(0, 1, fw.mode) + " (0 poll, 1 stream)";
+    else if (field == "raw")
+        why = range(0, 1, fw.raw);
+    else if (fw.conversions_per_output < 1 || fw.conversions_per_output > proto::kConversionsPerOutputMax)
+        why = range(1, proto::kConversionsPerOutputMax, fw.conversions_per_output);
+    else
+        why = "output_period_ms " + std::to_string(fw.output_period_ms) + " / (4 channels x conversions_per_output " +
+              std::to_string(fw.conversions_per_output) + ") gives a conversion period of " +
+              std::to_string(fw::conversion_period_ticks(fw.output_period_ms, fw.conversions_per_output)) +
+              " ticks of 4 us; the firmware needs " + std::to_string(fw::kMinConversionPeriodTicks) + " to " +
+              std::to_string(fw::kMaxConversionPeriodTicks) +
+              " (0.2 to 262 ms): fewer conversions per output or a longer output period";
+    return FirmwareRefusal{field, std::string("the firmware refuses this configuration (") +
+                                      proto::status_name(check.status) + "): " + why};
 }
 
 }  // namespace driftlab::sim

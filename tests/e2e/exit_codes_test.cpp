@@ -63,6 +63,31 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
 }
 
+// `decode cap -o cap` had replaced the capture, the only byte-for-byte record, with its log; `report`, `hil` and
+// `gap` could likewise write over the log or model file they read. Each is refused before anything is written,
+// whatever spelling names the file.
+TEST(ExitCodes, NoCommandWritesOverTheFileItReads) {
+    TempDir dir("overwrite");
+    const std::string input = dir.file("in.csv");
+    {
+        std::ofstream out(input, std::ios::binary);
+        out << "t_s y\n0 1\n1 2\n";
+    }
+    const std::string other_spelling = (dir.path() / "." / "in.csv").string();
+    const std::vector<std::vector<std::string>> runs = {
+        {"decode", input, "-o", other_spelling},
+        {"report", input, "-o", input},
+        {"hil", "--model", input, "-o", other_spelling},
+        {"gap", input, "--tau0", "1", "--model-out", input},
+    };
+    for (const auto& args : runs) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
+        EXPECT_NE(r.output.find("writing there would destroy it"), std::string::npos) << args[0] << ": " << r.output;
+        EXPECT_EQ(read_text(input), "t_s y\n0 1\n1 2\n") << args[0];
+    }
+}
+
 // flash --dry-run had skipped every check and printed `-U flash:w::i` with exit 0 when no image existed: it now checks
 // the image (exit 3) and the port (exit 4) first, and quotes a path the shell would split.
 TEST(ExitCodes, FlashDryRunChecksTheImageAndThePortFirst) {

@@ -2,11 +2,13 @@
 // median sits at mid-scale, averaged over blocks (the order-0 smoother), timed at each block's last sample.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "host/gap/plain_recording.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "sim/model/adc.hpp"
 #include "sim/model/sensor.hpp"
 
@@ -84,6 +86,41 @@ TEST(PlainRecording, ItsUnitConvertsEachValueToTheCodeTheLogHolds) {
     }
     EXPECT_EQ(unit.channels[1].front_end.span_unit, paper.channels[1].front_end.span_unit);  // accel_x: not mapped
     EXPECT_THROW(unit_of_recording(paper, how, LogData{}), std::invalid_argument);
+}
+
+// A column in rad/s (or mdps, mg, m/s2) is the same recording as in deg/s (g): the same codes, and a unit whose
+// front end spans the same deg/s, so that what the diagnosis reports in deg/s is right. Without the unit the
+// recording's numbers were read as deg/s, 57 times too small for rad/s.
+TEST(PlainRecording, AColumnInAnotherUnitReadsAsTheSameRecordingInDegreesPerSecondOrG) {
+    const double rad = 3.14159265358979323846 / 180.0;
+    const std::vector<double> dps = {-0.2975, 0.0175, 0.4025, 0.1225, -0.0525};
+    std::vector<double> rps;
+    for (double v : dps) rps.push_back(v * rad);
+    const ColumnMapping in_rad = parse_column_mapping("gyro=gx:" + format_double(0.00875 * rad) + ":rad/s");
+    EXPECT_EQ(in_rad.column, "gx");
+    EXPECT_EQ(in_rad.lsb, 0.00875 * rad);
+    EXPECT_NEAR(in_rad.to_model_unit * rad, 1.0, 1e-15);
+    EXPECT_EQ(parse_column_mapping("gyro=gx:0.00875:deg/s").to_model_unit, 1.0);
+    EXPECT_EQ(parse_column_mapping("gyro=gx:8.75:mdps").to_model_unit, 1e-3);
+    EXPECT_EQ(parse_column_mapping("accel_z=az:0.244:mg").to_model_unit, 1e-3);
+    EXPECT_NEAR(parse_column_mapping("accel_z=az:0.0024:m/s2").to_model_unit * 9.80665, 1.0, 1e-15);
+    for (const char* bad : {"gyro=gx:1:g", "accel_x=ax:1:rad/s", "gyro=gx:rad/s", "gyro=gx:1:furlongs", "gyro=:1:deg/s"})
+        EXPECT_THROW(parse_column_mapping(bad), UsageError) << bad;
+
+    PlainRecording deg_how, rad_how;
+    deg_how.columns = {parse_column_mapping("gyro=gx:0.00875")};
+    rad_how.columns = {in_rad};
+    deg_how.sample_period_s = rad_how.sample_period_s = 0.01;
+    const LogData deg_log = log_from_table(table({"gx"}, {dps}), deg_how);
+    const LogData rad_log = log_from_table(table({"gx"}, {rps}), rad_how);
+    EXPECT_EQ(rad_log.counts[0], deg_log.counts[0]);
+    const sim::SimModel deg_unit = unit_of_recording(sim::paper_model(), deg_how, deg_log);
+    const sim::SimModel rad_unit = unit_of_recording(sim::paper_model(), rad_how, rad_log);
+    const auto& d = deg_unit.channels[0];
+    const auto& r = rad_unit.channels[0];
+    EXPECT_NEAR(r.front_end.span_unit / d.front_end.span_unit, 1.0, 1e-12);
+    EXPECT_NEAR(r.front_end.center_unit / d.front_end.center_unit, 1.0, 1e-12);
+    EXPECT_NEAR(r.input_unit / d.input_unit, 1.0, 1e-12);
 }
 
 TEST(PlainRecording, BadMappingsAndTablesAreRefusedSayingWhy) {

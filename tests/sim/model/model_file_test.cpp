@@ -111,6 +111,30 @@ TEST(ModelFile, OutOfRangeValuesNameTheKeyAndTheRange) {
     // The firmware's own check, fields joined: 64 conversions per 10 ms output is a conversion every 39 us.
     const std::string fast = error_of("[firmware]\noutput_period_ms = 10\nconversions_per_output = 64\n");
     EXPECT_NE(fast.find("m.toml:3: firmware.conversions_per_output: the firmware refuses this configuration"), std::string::npos) << fast;
+    // With the values it saw (10 000 us / 256 = 39 us, 10 ticks of 4 us), not only the rule.
+    EXPECT_NE(fast.find("output_period_ms 10 / (4 channels x conversions_per_output 64) gives a conversion period of 10 "
+                        "ticks of 4 us; the firmware needs 50 to 65535"),
+              std::string::npos) << fast;
+}
+
+// Each field the firmware refuses is named with its own range and value; the conversion-period rule had been given
+// as the reason whatever the field.
+TEST(ModelFile, TheFirmwaresRefusalSaysWhatTheFieldMustBe) {
+    const proto::ConfigPayload paper = paper_model().firmware;
+    EXPECT_FALSE(firmware_refusal(paper).has_value());
+    const auto reason_for = [&paper](auto change) {
+        proto::ConfigPayload fw = paper;
+        change(fw);
+        const auto r = firmware_refusal(fw);
+        return r ? r->field + ": " + r->reason : std::string("accepted");
+    };
+    EXPECT_NE(reason_for([](auto& fw) { fw.fit_order = 2; }).find("fit_order: the firmware refuses this configuration "
+                                                                  "(out_of_range): must be 0 to 1, got 2"),
+              std::string::npos);
+    EXPECT_NE(reason_for([](auto& fw) { fw.output_period_ms = 5; }).find("output_period_ms: ") , std::string::npos);
+    EXPECT_NE(reason_for([](auto& fw) { fw.output_period_ms = 5; }).find("must be 10 to 60000, got 5"), std::string::npos);
+    EXPECT_NE(reason_for([](auto& fw) { fw.conversions_per_output = 0; }).find("must be 1 to 64, got 0"), std::string::npos);
+    EXPECT_NE(reason_for([](auto& fw) { fw.raw = 3; }).find("raw: "), std::string::npos);
 }
 
 // Jitter comparable to a channel's conversion interval reorders conversions (the bias processes then took the
