@@ -91,9 +91,13 @@ json terms_json(const stats::NoiseTermFit& t, const UnitInfo& u) {
     json j = {{"unit", U}, {"model", "AVAR = 3Q^2/tau^2 + N^2/tau + (2 ln2/pi) B^2 + K^2 tau/3 + R^2 tau^2/2"},
               {"bias_instability_factor", stats::kBiasInstabilityFactor}};
     for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
-        j[stats::kNoiseTermSymbols[k]] = {{"value", report::json_number(t.value[k])},
-                                          {"std_error", report::json_number(t.std_error[k])},
-                                          {"unit", U + units[k]}};
+        // A term pinned at 0 keeps its value 0 for readers of `value`; the null error and the bound say it is
+        // not a measured zero.
+        json term = {{"value", report::json_number(t.value[k])},
+                     {"std_error", t.at_bound[k] ? json(nullptr) : report::json_number(t.std_error[k])},
+                     {"unit", U + units[k]}};
+        if (t.at_bound[k]) term["upper_bound"] = report::json_number(t.upper_bound[k]);
+        j[stats::kNoiseTermSymbols[k]] = term;
     }
     json phys = json::object();
     for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit)) phys[nv.key] = report::json_number(nv.value);
@@ -112,6 +116,14 @@ json version_json(const stats::AllanCurves& v, const UnitInfo& u) {
     return j;
 }
 
+void print_named(const char* prefix, const stats::NamedValue& nv) {
+    const int width = 26 - static_cast<int>(std::string(prefix).size());
+    if (nv.resolved)
+        std::printf("      %s%-*s %.5g\n", prefix, width, nv.key.c_str(), nv.value);
+    else
+        std::printf("      %s%-*s not resolved (<= %.5g)\n", prefix, width, nv.key.c_str(), nv.upper_bound);
+}
+
 void print_version(const char* title, const stats::AllanCurves& v, const UnitInfo& u) {
     std::printf("  %s\n", title);
     for (const auto& c : v.curves) {
@@ -124,17 +136,17 @@ void print_version(const char* title, const stats::AllanCurves& v, const UnitInf
     }
     if (!v.terms.ok) return;
     const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", " (ADEV floor = 0.664 B)", "/sqrt(s)", "/s"};
+    const char* bound_units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", ", the ADEV minimum / 0.664", "/sqrt(s)", "/s"};
     std::printf("    IEEE 952 terms [%s]:", u.name.c_str());
     for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
-        std::printf(" %s = %.4g%s%s", stats::kNoiseTermSymbols[k], v.terms.value[k], units[k],
-                    k + 1 < stats::kNoiseTermCount ? "," : "\n");
+        if (v.terms.at_bound[k])
+            std::printf(" %s not resolved (<= %.4g%s)", stats::kNoiseTermSymbols[k], v.terms.upper_bound[k], bound_units[k]);
+        else
+            std::printf(" %s = %.4g%s", stats::kNoiseTermSymbols[k], v.terms.value[k], units[k]);
+        std::printf("%s", k + 1 < stats::kNoiseTermCount ? "," : "\n");
     }
-    for (const auto& nv : stats::physical_terms(v.terms, u.quantity, u.si_per_unit)) {
-        std::printf("      %-26s %.5g\n", nv.key.c_str(), nv.value);
-    }
-    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) {
-        std::printf("      kalibr %-19s %.5g\n", nv.key.c_str(), nv.value);
-    }
+    for (const auto& nv : stats::physical_terms(v.terms, u.quantity, u.si_per_unit)) print_named("", nv);
+    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) print_named("kalibr ", nv);
 }
 
 report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, const UnitInfo& u) {

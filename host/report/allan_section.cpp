@@ -32,6 +32,12 @@ PlotSeries curve_series(const stats::AnalysedCurve& c, const std::string& title,
     return s;
 }
 
+// A term the fit pinned at 0 is not a measured zero: its bound instead (docs/allan.md §6).
+std::string term_cell(const stats::NoiseTermFit& terms, std::size_t t) {
+    if (!terms.ok) return "-";
+    return terms.at_bound[t] ? "not resolved (&le; " + sig(terms.upper_bound[t], 3) + ")" : sig(terms.value[t], 3);
+}
+
 }  // namespace
 
 AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channels) {
@@ -40,7 +46,8 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
     h += "<p>Overlapping Allan deviation (OADEV, octave tau grid, 68 % intervals from Greenhall EDF with lag-1 "
          "noise identification) of each channel as recorded and after subtracting the fitted eq. 1 drift. "
          "Noise terms: IEEE 952 fit (Q quantisation, N white-noise random walk, B bias instability, K rate random "
-         "walk, R ramp) to the drift-free curve, in the data unit per the tau power.</p>\n";
+         "walk, R ramp) to the drift-free curve, in the data unit per the tau power; a term the fit pins at 0 is not "
+         "resolved, and its bound is the largest value the curve allows (B: the curve's minimum / 0.664).</p>\n";
     h += "<table><tr><th>channel</th><th>tau0 [s]</th><th>OADEV(tau0) raw</th><th>min OADEV residual</th>"
          "<th>at tau [s]</th><th>Q</th><th>N</th><th>B</th><th>K</th><th>R</th></tr>\n";
     for (const fit::DriftAnalysis* a : channels) {
@@ -62,7 +69,7 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         h += "<tr><td>" + name + "</td><td>" + sig(tau0_s) + "</td><td>" +
              (raw.curve.dev.empty() ? "-" : sig(raw.curve.dev.front())) + "</td><td>" + sig(residual.curve.dev[best]) +
              "</td><td>" + sig(residual.curve.tau_s[best]) + "</td>";
-        for (std::size_t t = 0; t < stats::kNoiseTermCount; ++t) h += "<td>" + (terms.ok ? sig(terms.value[t], 3) : "-") + "</td>";
+        for (std::size_t t = 0; t < stats::kNoiseTermCount; ++t) h += "<td>" + term_cell(terms, t) + "</td>";
         h += "</tr>\n";
 
         Plot p;
