@@ -1,6 +1,6 @@
 // `driftlab allan FILE`: overlapping Allan (and modified Allan, overlapping Hadamard) deviations with
-// confidence intervals, noise types and IEEE 952 terms, per channel; raw and drift-removed (host/stats,
-// docs/allan.md §8).
+// confidence intervals, noise types and IEEE 952 terms, per channel; raw and drift-removed (logs, and plain rate
+// files with --remove-drift; host/stats, docs/allan.md §§7-8).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -33,6 +33,7 @@ struct AllanCommandOptions {
     int per_decade = 10;
     std::string deviation = "oadev";
     bool keep_drift = false;
+    bool remove_drift = false;          ///< plain rate files: fit and remove eq. 1 as for logs
     bool json = false;
     std::string plot_dir;
 };
@@ -207,7 +208,13 @@ void run(const AllanCommandOptions& o) {
         }
         if (o.kind != "rate" && o.kind != "phase") throw UsageError("--kind: expected rate or phase, got '" + o.kind + "'");
         req.kind = o.kind == "rate" ? stats::InputKind::rate : stats::InputKind::phase;
-        req.remove_drift = false;  // eq. 1 is fitted to logs only; plain files are analysed as given
+        if (o.remove_drift && req.kind != stats::InputKind::rate)
+            throw UsageError("--remove-drift: eq. 1 is a model of the rate; phase input has no drift to remove");
+        // Plain files are analysed as given unless asked (published references compare against the file as is).
+        req.remove_drift = o.remove_drift;
+        req.kept_drift_status = req.kind == stats::InputKind::rate
+                                    ? "not removed: a plain file is analysed as given; --remove-drift fits eq. 1 first"
+                                    : "not removed: a plain file is analysed as given";
         series = fit::load_series(o.path, names, "", o.tau0_s);
     }
 
@@ -275,7 +282,10 @@ void register_allan(CLI::App& app) {
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32");
     cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->check(positive_number());
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all");
-    cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
+    auto* keep = cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
+    cmd->add_flag("--remove-drift", o->remove_drift,
+                  "Plain --kind rate files: fit and remove the turn-on drift (eq. 1) first, as for logs (the default there)")
+        ->excludes(keep);
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: channels.<name>.{tau,adev,ci_low,ci_high,noise,n,mdev,hdev,terms,kalibr,raw})");
     cmd->add_option("--plot", o->plot_dir, "Write allan_<channel>.png/.svg into this folder");

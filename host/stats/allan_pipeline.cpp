@@ -77,7 +77,7 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
     out.raw = analyse_curves(make_record(grid.values, tau0_s, request.kind), request);
 
     if (!request.remove_drift) {
-        out.drift_status = "not requested";
+        out.drift_status = request.kept_drift_status;
         return out;
     }
     if (request.kind != InputKind::rate) {

@@ -18,6 +18,7 @@ struct AllanRequest {
     TauGridOptions grid;
     std::vector<Deviation> deviations = {Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
     bool remove_drift = true;   ///< fit eq. 1 and also analyse the residual (rate input only)
+    std::string kept_drift_status = "not requested";  ///< drift_status when remove_drift is false: the caller's reason
     double confidence = kOneSigmaConfidence;
 };
 
