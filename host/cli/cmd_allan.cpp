@@ -125,7 +125,26 @@ void print_named(const char* prefix, const stats::NamedValue& nv) {
         std::printf("      %s%-*s not resolved (<= %.5g)\n", prefix, width, nv.key.c_str(), nv.upper_bound);
 }
 
-void print_version(const char* title, const stats::AllanCurves& v, const UnitInfo& u) {
+// The table's n hides what the gaps cost: from the first tau where they skip more than 20 % of the terms, say so
+// and why the curve may end early (JSON has n_skipped per tau).
+void print_skipped_note(const stats::DeviationCurve& c, double longest_gap_free_s) {
+    constexpr double kNotable = 0.2;
+    const auto share = [&](std::size_t i) {
+        const auto all = static_cast<double>(c.n[i] + c.n_skipped[i]);
+        return all > 0.0 ? static_cast<double>(c.n_skipped[i]) / all : 0.0;
+    };
+    std::size_t first = 0;
+    while (first < c.m.size() && share(first) <= kNotable) ++first;
+    if (first == c.m.size()) return;
+    std::size_t most = first;
+    for (std::size_t i = first; i < c.m.size(); ++i)
+        if (share(i) > share(most)) most = i;
+    std::printf("    note: gaps skip more than 20 %% of the terms from tau = %.5g s on (%.0f %% at tau = %.5g s); the longest "
+                "gap-free stretch is %.5g s, and a term spans 2 tau (3 tau for mdev and hdev)\n",
+                c.tau_s[first], 100.0 * share(most), c.tau_s[most], longest_gap_free_s);
+}
+
+void print_version(const char* title, const stats::AllanCurves& v, const UnitInfo& u, double longest_gap_free_s) {
     std::printf("  %s\n", title);
     for (const auto& c : v.curves) {
         std::printf("    %-6s %12s %10s %5s %12s %12s %12s\n", std::string(stats::deviation_name(c.curve.type)).c_str(),
@@ -134,6 +153,7 @@ void print_version(const char* title, const stats::AllanCurves& v, const UnitInf
             std::printf("    %-6s %12.5g %10lld %5d %12.5g %12.5g %12.5g\n", "", c.curve.tau_s[i],
                         static_cast<long long>(c.curve.n[i]), c.alpha[i], c.ci_low[i], c.curve.dev[i], c.ci_high[i]);
         }
+        print_skipped_note(c.curve, longest_gap_free_s);
     }
     if (!v.terms.ok) return;
     const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", " (ADEV floor = 0.664 B)", "/sqrt(s)", "/s"};
@@ -259,8 +279,8 @@ void run(const AllanCommandOptions& o) {
                             "and were placed 2 to %zu slots (%.6g s) after their time; a gap right after such a stretch "
                             "is closed up\n",
                             r.packed_samples, r.packed_most_slots, static_cast<double>(r.packed_most_slots) * tau0);
-            if (r.drift_removed) print_version("drift removed", *r.drift_removed, u);
-            print_version(r.drift_removed ? "raw" : "as given", r.raw, u);
+            if (r.drift_removed) print_version("drift removed", *r.drift_removed, u, r.longest_gap_free_s);
+            print_version(r.drift_removed ? "raw" : "as given", r.raw, u, r.longest_gap_free_s);
         }
         if (!o.plot_dir.empty()) report::render_plot(allan_plot(s.name, r, u), o.plot_dir, "allan_" + s.name);
     }

@@ -35,6 +35,25 @@ TEST(AllanCli, ATau0OtherThanTheRowsSpacingIsRefused) {
     EXPECT_NE(ok.output.find("0 gap samples"), std::string::npos) << ok.output;
 }
 
+// The table's n column hides what gaps cost: runs of 100 rows 0.02 s apart with 5 rows lost between them. Long
+// taus lose most terms (a term spans 2 tau, a run 2 s), which the text says with the longest gap-free stretch.
+TEST(AllanCli, TheTextSaysWhenGapsSkipMostTerms) {
+    TempDir dir("allangaps");
+    const std::string path = dir.file("gappy.txt");
+    {
+        std::ofstream out(path);
+        out << "t_s gx\n";
+        for (int k = 0; k < 4200; ++k)
+            if (k % 105 < 100) out << 0.02 * k << ' ' << std::sin(0.7 * k) + 0.1 * (k % 7) << '\n';
+    }
+    const RunResult r = run_driftlab({"allan", path, "--kind", "rate", "--tau0", "0.02"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("note: gaps skip more than 20 % of the terms from tau = "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the longest gap-free stretch is 2 s"), std::string::npos) << r.output;
+    const RunResult whole = run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02"}, dir.path());
+    EXPECT_EQ(whole.output.find("note: gaps"), std::string::npos) << whole.output;
+}
+
 TEST(AllanCli, TheTimeColumnIsNotASeries) {
     TempDir dir("allantime");
     const RunResult r =

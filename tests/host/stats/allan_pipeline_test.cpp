@@ -123,6 +123,8 @@ TEST(AllanPipeline, TimeGapIsCountedAndNotBridged) {
     // m = 1: a gap of 100 rate samples removes 100 + 2m - 1 = 101 overlapping terms (the 5000-sample record
     // has 5001 - 2 = 4999).
     EXPECT_EQ(c.curve.n[0], 4999 - 101);
+    // Rate samples 2100..4999 are the longest run: 2900 intervals of 1 s.
+    EXPECT_DOUBLE_EQ(r.longest_gap_free_s, 2900.0);
 }
 
 // Stable32's bound m <= (N - 1) / 4 for N phase samples: 4 rate samples (5 phase) give the first averaging time,
