@@ -41,7 +41,8 @@ struct NoiseTermFit {
     /// with a standard error of 0 would misreport as a measured zero.
     std::array<bool, kNoiseTermCount> at_bound{};
     /// For a term at its bound: the largest value whose own ADEV stays at or below the measured curve at every tau
-    /// (B: the curve's minimum / 0.664). An upper bound, since the curve also holds the other terms. NaN otherwise.
+    /// (B: the curve's minimum / 0.664). An upper bound, since the curve also holds the other terms. Read it only
+    /// where at_bound is set.
     std::array<double, kNoiseTermCount> upper_bound{};
     std::vector<double> model_adev;  ///< the fitted ADEV at each input tau [U]
     double chi_square = 0.0;         ///< weighted residual sum of squares at the final weights
