@@ -1,6 +1,6 @@
 // `driftlab allan FILE`: overlapping Allan (and modified Allan, overlapping Hadamard) deviations with
-// confidence intervals, noise types and IEEE 952 terms, per channel; raw and drift-removed (host/stats,
-// docs/allan.md §8).
+// confidence intervals, noise types and IEEE 952 terms, per channel; raw and drift-removed (logs, and plain rate
+// files with --remove-drift; host/stats, docs/allan.md §§7-8).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -33,6 +33,7 @@ struct AllanCommandOptions {
     int per_decade = 10;
     std::string deviation = "oadev";
     bool keep_drift = false;
+    bool remove_drift = false;          ///< plain rate files: fit and remove eq. 1 as for logs
     bool json = false;
     std::string plot_dir;
 };
@@ -91,9 +92,13 @@ json terms_json(const stats::NoiseTermFit& t, const UnitInfo& u) {
     json j = {{"unit", U}, {"model", "AVAR = 3Q^2/tau^2 + N^2/tau + (2 ln2/pi) B^2 + K^2 tau/3 + R^2 tau^2/2"},
               {"bias_instability_factor", stats::kBiasInstabilityFactor}};
     for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
-        j[stats::kNoiseTermSymbols[k]] = {{"value", report::json_number(t.value[k])},
-                                          {"std_error", report::json_number(t.std_error[k])},
-                                          {"unit", U + units[k]}};
+        // A term pinned at 0 keeps its value 0 for readers of `value`; the null error and the bound say it is
+        // not a measured zero.
+        json term = {{"value", report::json_number(t.value[k])},
+                     {"std_error", t.at_bound[k] ? json(nullptr) : report::json_number(t.std_error[k])},
+                     {"unit", U + units[k]}};
+        if (t.at_bound[k]) term["upper_bound"] = report::json_number(t.upper_bound[k]);
+        j[stats::kNoiseTermSymbols[k]] = term;
     }
     json phys = json::object();
     for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit)) phys[nv.key] = report::json_number(nv.value);
@@ -112,7 +117,34 @@ json version_json(const stats::AllanCurves& v, const UnitInfo& u) {
     return j;
 }
 
-void print_version(const char* title, const stats::AllanCurves& v, const UnitInfo& u) {
+void print_named(const char* prefix, const stats::NamedValue& nv) {
+    const int width = 26 - static_cast<int>(std::string(prefix).size());
+    if (nv.resolved)
+        std::printf("      %s%-*s %.5g\n", prefix, width, nv.key.c_str(), nv.value);
+    else
+        std::printf("      %s%-*s not resolved (<= %.5g)\n", prefix, width, nv.key.c_str(), nv.upper_bound);
+}
+
+// The table's n hides what the gaps cost: from the first tau where they skip more than 20 % of the terms, say so
+// and why the curve may end early (JSON has n_skipped per tau).
+void print_skipped_note(const stats::DeviationCurve& c, double longest_gap_free_s) {
+    constexpr double kNotable = 0.2;
+    const auto share = [&](std::size_t i) {
+        const auto all = static_cast<double>(c.n[i] + c.n_skipped[i]);
+        return all > 0.0 ? static_cast<double>(c.n_skipped[i]) / all : 0.0;
+    };
+    std::size_t first = 0;
+    while (first < c.m.size() && share(first) <= kNotable) ++first;
+    if (first == c.m.size()) return;
+    std::size_t most = first;
+    for (std::size_t i = first; i < c.m.size(); ++i)
+        if (share(i) > share(most)) most = i;
+    std::printf("    note: gaps skip more than 20 %% of the terms from tau = %.5g s on (%.0f %% at tau = %.5g s); the longest "
+                "gap-free stretch is %.5g s, and a term spans 2 tau (3 tau for mdev and hdev)\n",
+                c.tau_s[first], 100.0 * share(most), c.tau_s[most], longest_gap_free_s);
+}
+
+void print_version(const char* title, const stats::AllanCurves& v, const UnitInfo& u, double longest_gap_free_s) {
     std::printf("  %s\n", title);
     for (const auto& c : v.curves) {
         std::printf("    %-6s %12s %10s %5s %12s %12s %12s\n", std::string(stats::deviation_name(c.curve.type)).c_str(),
@@ -121,20 +153,21 @@ void print_version(const char* title, const stats::AllanCurves& v, const UnitInf
             std::printf("    %-6s %12.5g %10lld %5d %12.5g %12.5g %12.5g\n", "", c.curve.tau_s[i],
                         static_cast<long long>(c.curve.n[i]), c.alpha[i], c.ci_low[i], c.curve.dev[i], c.ci_high[i]);
         }
+        print_skipped_note(c.curve, longest_gap_free_s);
     }
     if (!v.terms.ok) return;
     const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", " (ADEV floor = 0.664 B)", "/sqrt(s)", "/s"};
+    const char* bound_units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", ", the ADEV minimum / 0.664", "/sqrt(s)", "/s"};
     std::printf("    IEEE 952 terms [%s]:", u.name.c_str());
     for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
-        std::printf(" %s = %.4g%s%s", stats::kNoiseTermSymbols[k], v.terms.value[k], units[k],
-                    k + 1 < stats::kNoiseTermCount ? "," : "\n");
+        if (v.terms.at_bound[k])
+            std::printf(" %s not resolved (<= %.4g%s)", stats::kNoiseTermSymbols[k], v.terms.upper_bound[k], bound_units[k]);
+        else
+            std::printf(" %s = %.4g%s", stats::kNoiseTermSymbols[k], v.terms.value[k], units[k]);
+        std::printf("%s", k + 1 < stats::kNoiseTermCount ? "," : "\n");
     }
-    for (const auto& nv : stats::physical_terms(v.terms, u.quantity, u.si_per_unit)) {
-        std::printf("      %-26s %.5g\n", nv.key.c_str(), nv.value);
-    }
-    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) {
-        std::printf("      kalibr %-19s %.5g\n", nv.key.c_str(), nv.value);
-    }
+    for (const auto& nv : stats::physical_terms(v.terms, u.quantity, u.si_per_unit)) print_named("", nv);
+    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) print_named("kalibr ", nv);
 }
 
 report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, const UnitInfo& u) {
@@ -195,7 +228,13 @@ void run(const AllanCommandOptions& o) {
         }
         if (o.kind != "rate" && o.kind != "phase") throw UsageError("--kind: expected rate or phase, got '" + o.kind + "'");
         req.kind = o.kind == "rate" ? stats::InputKind::rate : stats::InputKind::phase;
-        req.remove_drift = false;  // eq. 1 is fitted to logs only; plain files are analysed as given
+        if (o.remove_drift && req.kind != stats::InputKind::rate)
+            throw UsageError("--remove-drift: eq. 1 is a model of the rate; phase input has no drift to remove");
+        // Plain files are analysed as given unless asked (published references compare against the file as is).
+        req.remove_drift = o.remove_drift;
+        req.kept_drift_status = req.kind == stats::InputKind::rate
+                                    ? "not removed: a plain file is analysed as given; --remove-drift fits eq. 1 first"
+                                    : "not removed: a plain file is analysed as given";
         series = fit::load_series(o.path, names, "", o.tau0_s);
     }
 
@@ -240,8 +279,8 @@ void run(const AllanCommandOptions& o) {
                             "and were placed 2 to %zu slots (%.6g s) after their time; a gap right after such a stretch "
                             "is closed up\n",
                             r.packed_samples, r.packed_most_slots, static_cast<double>(r.packed_most_slots) * tau0);
-            if (r.drift_removed) print_version("drift removed", *r.drift_removed, u);
-            print_version(r.drift_removed ? "raw" : "as given", r.raw, u);
+            if (r.drift_removed) print_version("drift removed", *r.drift_removed, u, r.longest_gap_free_s);
+            print_version(r.drift_removed ? "raw" : "as given", r.raw, u, r.longest_gap_free_s);
         }
         if (!o.plot_dir.empty()) report::render_plot(allan_plot(s.name, r, u), o.plot_dir, "allan_" + s.name);
     }
@@ -263,7 +302,10 @@ void register_allan(CLI::App& app) {
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32");
     cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->check(positive_number());
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all");
-    cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
+    auto* keep = cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
+    cmd->add_flag("--remove-drift", o->remove_drift,
+                  "Plain --kind rate files: fit and remove the turn-on drift (eq. 1) first, as for logs (the default there)")
+        ->excludes(keep);
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: channels.<name>.{tau,adev,ci_low,ci_high,noise,n,mdev,hdev,terms,kalibr,raw})");
     cmd->add_option("--plot", o->plot_dir, "Write allan_<channel>.png/.svg into this folder");

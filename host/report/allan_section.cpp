@@ -5,6 +5,7 @@
 #include "host/stats/allan_analysis.hpp"
 #include "host/stats/allan_pipeline.hpp"
 #include "host/stats/noise_terms.hpp"
+#include "host/stats/uniform_grid.hpp"
 
 namespace driftlab::host::report {
 namespace {
@@ -12,12 +13,15 @@ namespace {
 /// Fewest samples for an Allan curve with at least a few octaves.
 constexpr std::size_t kMinAllanSamples = 32;
 
+/// Gap slots beyond this share of the grid are worth a warning: the terms skip them, and long taus lose most.
+constexpr double kNotableGapShare = 0.2;
+
 // OADEV through the Allan pipeline, so late or missing samples become gaps on the tau0 grid instead of being
 // spliced together. The drift is the report's own eq. 1 fit, removed by the caller.
-stats::AllanCurves oadev(const std::vector<double>& t_s, const std::vector<double>& rate, double tau0_s) {
+stats::AllanResult oadev(const std::vector<double>& t_s, const std::vector<double>& rate, double tau0_s) {
     stats::AllanRequest request;
     request.remove_drift = false;
-    return stats::analyse_allan(t_s, rate, tau0_s, request).raw;
+    return stats::analyse_allan(t_s, rate, tau0_s, request);
 }
 
 PlotSeries curve_series(const stats::AnalysedCurve& c, const std::string& title, const std::string& color) {
@@ -32,26 +36,46 @@ PlotSeries curve_series(const stats::AnalysedCurve& c, const std::string& title,
     return s;
 }
 
+// A term the fit pinned at 0 is not a measured zero: its bound instead (docs/allan.md §6).
+std::string term_cell(const stats::NoiseTermFit& terms, std::size_t t) {
+    if (!terms.ok) return "-";
+    return terms.at_bound[t] ? "not resolved (&le; " + sig(terms.upper_bound[t], 3) + ")" : sig(terms.value[t], 3);
+}
+
 }  // namespace
 
 AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channels) {
     AllanSection out;
     std::string& h = out.html;
     h += "<p>Overlapping Allan deviation (OADEV, octave tau grid, 68 % intervals from Greenhall EDF with lag-1 "
-         "noise identification) of each channel as recorded and after subtracting the fitted eq. 1 drift. "
+         "noise identification) of each channel as recorded and after subtracting the fitted eq. 1 drift, on a grid of "
+         "tau0 = the rows' median spacing, or their mean where they come in bursts (a grid at the median would be "
+         "more than half gaps). "
          "Noise terms: IEEE 952 fit (Q quantisation, N white-noise random walk, B bias instability, K rate random "
-         "walk, R ramp) to the drift-free curve, in the data unit per the tau power.</p>\n";
+         "walk, R ramp) to the drift-free curve, in the data unit per the tau power; a term the fit pins at 0 is not "
+         "resolved, and its bound is the largest value the curve allows (B: the curve's minimum / 0.664).</p>\n";
     h += "<table><tr><th>channel</th><th>tau0 [s]</th><th>OADEV(tau0) raw</th><th>min OADEV residual</th>"
          "<th>at tau [s]</th><th>Q</th><th>N</th><th>B</th><th>K</th><th>R</th></tr>\n";
+    std::string warnings;
     for (const fit::DriftAnalysis* a : channels) {
         const std::string name = html_escape(a->data.name);
         if (a->data.values.size() < kMinAllanSamples) {
             h += "<tr><td>" + name + "</td><td colspan=\"9\">too few samples for an Allan curve</td></tr>\n";
             continue;
         }
-        const double tau0_s = a->sample_period_s;
-        const stats::AllanCurves raw_curves = oadev(a->data.t_s, a->data.values, tau0_s);
-        const stats::AllanCurves residual_curves = oadev(a->data.t_s, a->fit.residual, tau0_s);
+        // Not the fit's median spacing: rows in bursts would leave most of a grid at the median empty.
+        const double tau0_s = stats::grid_period_s(a->data.t_s);
+        const stats::AllanResult raw_result = oadev(a->data.t_s, a->data.values, tau0_s);
+        const stats::AllanCurves& raw_curves = raw_result.raw;
+        const stats::AllanCurves residual_curves = oadev(a->data.t_s, a->fit.residual, tau0_s).raw;
+        const double gap_share = static_cast<double>(raw_result.gap_samples) / static_cast<double>(raw_result.samples);
+        if (gap_share > kNotableGapShare) {
+            warnings += "<div class=\"warn\"><b>" + name + ":</b> " + fixed(100.0 * gap_share, 0) + " % of the " +
+                        std::to_string(raw_result.samples) + " grid slots at tau0 = " + sig(tau0_s) +
+                        " s are gaps (rows " + html_escape(stats::spacing_text(a->data.t_s)) +
+                        "); the Allan terms skip them, and no tau exceeds half the longest gap-free stretch, " +
+                        sig(raw_result.longest_gap_free_s) + " s.</div>\n";
+        }
         const stats::AnalysedCurve& raw = *raw_curves.find(stats::Deviation::oadev);
         const stats::AnalysedCurve& residual = *residual_curves.find(stats::Deviation::oadev);
         if (residual.curve.dev.empty()) continue;
@@ -62,7 +86,7 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         h += "<tr><td>" + name + "</td><td>" + sig(tau0_s) + "</td><td>" +
              (raw.curve.dev.empty() ? "-" : sig(raw.curve.dev.front())) + "</td><td>" + sig(residual.curve.dev[best]) +
              "</td><td>" + sig(residual.curve.tau_s[best]) + "</td>";
-        for (std::size_t t = 0; t < stats::kNoiseTermCount; ++t) h += "<td>" + (terms.ok ? sig(terms.value[t], 3) : "-") + "</td>";
+        for (std::size_t t = 0; t < stats::kNoiseTermCount; ++t) h += "<td>" + term_cell(terms, t) + "</td>";
         h += "</tr>\n";
 
         Plot p;
@@ -83,7 +107,7 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         out.plots.push_back(std::move(p));
         out.plot_names.push_back(a->data.name);
     }
-    h += "</table>\n";
+    h += "</table>\n" + warnings;
     return out;
 }
 

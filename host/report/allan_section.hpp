@@ -18,7 +18,8 @@ struct AllanSection {
     std::vector<std::string> plot_names;
 };
 
-/// Builds the section for the analysed channels. Uses the median sample spacing as tau0.
+/// Builds the section for the analysed channels. tau0 is stats::grid_period_s of each channel's times (the median
+/// spacing, the mean for rows in bursts); a channel whose grid is more than 20 % gaps gets a warning.
 AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channels);
 
 }  // namespace driftlab::host::report

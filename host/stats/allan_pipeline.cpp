@@ -74,10 +74,12 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
     out.gap_samples = grid.missing;
     out.packed_samples = grid.packed;
     out.packed_most_slots = grid.most_late;
-    out.raw = analyse_curves(make_record(grid.values, tau0_s, request.kind), request);
+    const PhaseRecord record = make_record(grid.values, tau0_s, request.kind);
+    out.raw = analyse_curves(record, request);
+    out.longest_gap_free_s = static_cast<double>(record.longest_segment().size() - 1) * tau0_s;
 
     if (!request.remove_drift) {
-        out.drift_status = "not requested";
+        out.drift_status = request.kept_drift_status;
         return out;
     }
     if (request.kind != InputKind::rate) {

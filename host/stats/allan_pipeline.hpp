@@ -18,6 +18,7 @@ struct AllanRequest {
     TauGridOptions grid;
     std::vector<Deviation> deviations = {Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
     bool remove_drift = true;   ///< fit eq. 1 and also analyse the residual (rate input only)
+    std::string kept_drift_status = "not requested";  ///< drift_status when remove_drift is false: the caller's reason
     double confidence = kOneSigmaConfidence;
 };
 
@@ -34,6 +35,7 @@ struct AllanResult {
     std::size_t gap_samples = 0;  ///< slots that are gaps (missing, NaN)
     std::size_t packed_samples = 0;  ///< samples placed 2 or more slots after their time (see UniformSeries)
     std::size_t packed_most_slots = 0;  ///< the largest such displacement [slots]
+    double longest_gap_free_s = 0.0;    ///< time the longest gap-free stretch of the grid spans: no term is longer
     AllanCurves raw;
     std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
     std::optional<fit::DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace driftlab::host::stats {
 namespace {
@@ -137,6 +138,16 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
         fit.value[j] = std::sqrt(c / kCoefficientScale[j]);
         // d value / d c = 1 / (2 sqrt(c * scale)).
         fit.std_error[j] = c > 0.0 ? std::sqrt(std::max(sol.cov(jj, jj), 0.0)) / (2.0 * std::sqrt(c * kCoefficientScale[j])) : 0.0;
+        fit.at_bound[j] = options.enabled[j] && c <= 0.0;
+        fit.upper_bound[j] = std::numeric_limits<double>::quiet_NaN();
+        if (!fit.at_bound[j]) continue;
+        // The term alone may not exceed the curve anywhere: value^2 scale tau^(j-2) <= adev^2 at every tau.
+        double bound = std::numeric_limits<double>::infinity();
+        for (std::size_t i : use) {
+            bound = std::min(bound, y[i] * std::pow(tau_s[i], (2.0 - static_cast<double>(j)) / 2.0) /
+                                        std::sqrt(kCoefficientScale[j]));
+        }
+        fit.upper_bound[j] = bound;
     }
     for (std::size_t i = 0; i < tau_s.size(); ++i) {
         if (tau_s[i] > 0.0) fit.model_adev[i] = std::ldexp(std::sqrt(noise_term_avar(fit.value, tau_s[i])), exponent);
@@ -144,50 +155,59 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
     for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
         fit.value[j] = std::ldexp(fit.value[j], exponent);
         fit.std_error[j] = std::ldexp(fit.std_error[j], exponent);
+        fit.upper_bound[j] = std::ldexp(fit.upper_bound[j], exponent);
     }
     fit.ok = true;
     return fit;
 }
 
+namespace {
+
+// Term `term` in data units times `si_per_unit`, then `convert`ed, with its bound when the fit left it unresolved.
+template <class Convert>
+NamedValue term_value(std::string key, const NoiseTermFit& fit, std::size_t term, double si_per_unit, Convert convert) {
+    return {std::move(key), convert(fit.value[term] * si_per_unit), !fit.at_bound[term],
+            convert(fit.upper_bound[term] * si_per_unit)};
+}
+
+}  // namespace
+
 std::vector<NamedValue> physical_terms(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit) {
-    std::vector<NamedValue> out;
-    if (!fit.ok || quantity == RateQuantity::unknown) return out;
-    const double q = fit.value[0] * si_per_unit;
-    const double n = fit.value[1] * si_per_unit;
-    const double b = fit.value[2] * si_per_unit;
-    const double k = fit.value[3] * si_per_unit;
-    const double r = fit.value[4] * si_per_unit;
+    if (!fit.ok || quantity == RateQuantity::unknown) return {};
     constexpr double kSqrtHourS = 60.0;     // sqrt(3600 s)
     constexpr double kHourS = 3600.0;
+    constexpr std::size_t q = 0, n = 1, b = 2, k = 3, r = 4;
+    const auto si = [](double x) { return x; };
     if (quantity == RateQuantity::angular_rate) {
         constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-        out = {{"Q_deg", q * kDegPerRad},
-               {"N_deg_per_s_per_sqrt_hz", n * kDegPerRad},
-               {"N_deg_per_sqrt_h", n * kDegPerRad * kSqrtHourS},
-               {"B_deg_per_s", b * kDegPerRad},
-               {"B_deg_per_h", b * kDegPerRad * kHourS},
-               {"K_deg_per_s_per_sqrt_s", k * kDegPerRad},
-               {"K_deg_per_h_per_sqrt_h", k * kDegPerRad * kHourS * kSqrtHourS},
-               {"R_deg_per_s2", r * kDegPerRad},
-               {"R_deg_per_h2", r * kDegPerRad * kHourS * kHourS}};
-    } else {
-        constexpr double kStandardGravity = 9.80665;
-        out = {{"Q_m_per_s", q},
-               {"N_m_per_s2_per_sqrt_hz", n},
-               {"N_m_per_s_per_sqrt_h", n * kSqrtHourS},
-               {"B_m_per_s2", b},
-               {"B_mg", b / kStandardGravity * 1000.0},
-               {"K_m_per_s2_per_sqrt_s", k},
-               {"R_m_per_s3", r}};
+        const auto deg = [](double x) { return x * kDegPerRad; };
+        return {term_value("Q_deg", fit, q, si_per_unit, deg),
+                term_value("N_deg_per_s_per_sqrt_hz", fit, n, si_per_unit, deg),
+                term_value("N_deg_per_sqrt_h", fit, n, si_per_unit, [](double x) { return x * kDegPerRad * kSqrtHourS; }),
+                term_value("B_deg_per_s", fit, b, si_per_unit, deg),
+                term_value("B_deg_per_h", fit, b, si_per_unit, [](double x) { return x * kDegPerRad * kHourS; }),
+                term_value("K_deg_per_s_per_sqrt_s", fit, k, si_per_unit, deg),
+                term_value("K_deg_per_h_per_sqrt_h", fit, k, si_per_unit,
+                           [](double x) { return x * kDegPerRad * kHourS * kSqrtHourS; }),
+                term_value("R_deg_per_s2", fit, r, si_per_unit, deg),
+                term_value("R_deg_per_h2", fit, r, si_per_unit, [](double x) { return x * kDegPerRad * kHourS * kHourS; })};
     }
-    return out;
+    constexpr double kStandardGravity = 9.80665;
+    return {term_value("Q_m_per_s", fit, q, si_per_unit, si),
+            term_value("N_m_per_s2_per_sqrt_hz", fit, n, si_per_unit, si),
+            term_value("N_m_per_s_per_sqrt_h", fit, n, si_per_unit, [](double x) { return x * kSqrtHourS; }),
+            term_value("B_m_per_s2", fit, b, si_per_unit, si),
+            term_value("B_mg", fit, b, si_per_unit, [](double x) { return x / kStandardGravity * 1000.0; }),
+            term_value("K_m_per_s2_per_sqrt_s", fit, k, si_per_unit, si),
+            term_value("R_m_per_s3", fit, r, si_per_unit, si)};
 }
 
 std::vector<NamedValue> kalibr_densities(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit) {
     if (!fit.ok || quantity == RateQuantity::unknown) return {};
     const std::string prefix = quantity == RateQuantity::angular_rate ? "gyroscope" : "accelerometer";
-    return {{prefix + "_noise_density", fit.value[1] * si_per_unit},
-            {prefix + "_random_walk", fit.value[3] * si_per_unit}};
+    const auto si = [](double x) { return x; };
+    return {term_value(prefix + "_noise_density", fit, 1, si_per_unit, si),
+            term_value(prefix + "_random_walk", fit, 3, si_per_unit, si)};
 }
 
 }  // namespace driftlab::host::stats

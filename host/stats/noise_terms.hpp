@@ -37,6 +37,13 @@ struct NoiseTermFit {
     std::array<double, kNoiseTermCount> value{};
     /// Standard error of each coefficient from the weighted fit (delta method); 0 for terms fitted to zero.
     std::array<double, kNoiseTermCount> std_error{};
+    /// True for an enabled term the fit pinned at its bound 0: the data do not resolve it, which a value of 0
+    /// with a standard error of 0 would misreport as a measured zero.
+    std::array<bool, kNoiseTermCount> at_bound{};
+    /// For a term at its bound: the largest value whose own ADEV stays at or below the measured curve at every tau
+    /// (B: the curve's minimum / 0.664). An upper bound, since the curve also holds the other terms. Read it only
+    /// where at_bound is set.
+    std::array<double, kNoiseTermCount> upper_bound{};
     std::vector<double> model_adev;  ///< the fitted ADEV at each input tau [U]
     double chi_square = 0.0;         ///< weighted residual sum of squares at the final weights
     int points = 0;                  ///< taus used
@@ -58,12 +65,14 @@ enum class RateQuantity : std::uint8_t { unknown, angular_rate, acceleration };
 struct NamedValue {
     std::string key;
     double value = 0.0;
+    bool resolved = true;      ///< false: the term is at its bound (NoiseTermFit::at_bound), value 0
+    double upper_bound = 0.0;  ///< NoiseTermFit::upper_bound in this key's unit, when not resolved
 };
 
 /// The terms in physical units. `si_per_unit` converts one data unit to rad/s (angular rate) or m/s^2
 /// (acceleration). Angular rate: Q deg, N deg/s/sqrt(Hz) and deg/sqrt(h), B deg/s and deg/h, K deg/s/sqrt(s)
 /// and deg/h/sqrt(h), R deg/s^2 and deg/h^2. Acceleration: Q m/s, N m/s^2/sqrt(Hz) and m/s/sqrt(h), B m/s^2
-/// and mg, K m/s^2/sqrt(s), R m/s^3. Empty for RateQuantity::unknown.
+/// and mg, K m/s^2/sqrt(s), R m/s^3. Empty for RateQuantity::unknown. Unresolved terms carry their bound.
 std::vector<NamedValue> physical_terms(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit);
 
 /// Kalibr imu.yaml continuous-time densities: {gyroscope|accelerometer}_noise_density = N [rad/s/sqrt(Hz) |

@@ -28,6 +28,12 @@ bool period_agrees(std::span<const double> t_s, double period_s) {
            std::abs(mean_spacing_s(t_s) / period_s - 1.0) <= kTolerance;
 }
 
+double grid_period_s(std::span<const double> t_s) {
+    const double median = median_spacing_s(t_s);
+    const double mean = mean_spacing_s(t_s);
+    return mean > 2.0 * median ? mean : median;
+}
+
 std::string spacing_text(std::span<const double> t_s) {
     char text[120];
     std::snprintf(text, sizeof text, "%g s apart (median; mean %g s)", median_spacing_s(t_s), mean_spacing_s(t_s));

@@ -36,6 +36,13 @@ std::string spacing_text(std::span<const double> t_s);
 /// b s apart (median; mean c s)"); nothing when it does.
 std::optional<std::string> tau0_disagreement(std::span<const double> t_s, double tau0_s);
 
+/// The grid period for rows given without one: their median spacing, or the mean where a grid at the median would
+/// be more than half gaps (1 - median / mean > 1/2): rows in bursts, such as the MPU6050 recording's 100 a second
+/// in bursts 2 ms apart (median 2 ms, mean 10 ms), where the median is the burst's spacing, not the rows' rate.
+/// Lost frames raise the mean as well, but leave the median the rows' period; only half the record lost passes for
+/// bursts.
+double grid_period_s(std::span<const double> t_s);
+
 /// Places sample k at slot max(slot_{k-1} + 1, round((t_k - t_0) / tau0)): samples that come early or in
 /// bursts take the next free slot (none is ever dropped), a sample that comes late leaves the slots it skipped
 /// empty (NaN), so a real gap is never closed up. Throws std::invalid_argument when the sizes differ, tau0 <= 0, or the grid

@@ -1,9 +1,12 @@
 // `driftlab allan` options against the file they describe: a --tau0 that is not the time column's spacing would
-// pack or spread the rows on the grid (wrong taus, a real gap closed up), and the time column is not a series.
+// pack or spread the rows on the grid (wrong taus, a real gap closed up), the time column is not a series, and a
+// plain file's turn-on drift is removed only on request.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
 
 #include "e2e_support.hpp"
 
@@ -32,12 +35,79 @@ TEST(AllanCli, ATau0OtherThanTheRowsSpacingIsRefused) {
     EXPECT_NE(ok.output.find("0 gap samples"), std::string::npos) << ok.output;
 }
 
+// The table's n column hides what gaps cost: runs of 100 rows 0.02 s apart with 5 rows lost between them. Long
+// taus lose most terms (a term spans 2 tau, a run 2 s), which the text says with the longest gap-free stretch.
+TEST(AllanCli, TheTextSaysWhenGapsSkipMostTerms) {
+    TempDir dir("allangaps");
+    const std::string path = dir.file("gappy.txt");
+    {
+        std::ofstream out(path);
+        out << "t_s gx\n";
+        for (int k = 0; k < 4200; ++k)
+            if (k % 105 < 100) out << 0.02 * k << ' ' << std::sin(0.7 * k) + 0.1 * (k % 7) << '\n';
+    }
+    const RunResult r = run_driftlab({"allan", path, "--kind", "rate", "--tau0", "0.02"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("note: gaps skip more than 20 % of the terms from tau = "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the longest gap-free stretch is 2 s"), std::string::npos) << r.output;
+    const RunResult whole = run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02"}, dir.path());
+    EXPECT_EQ(whole.output.find("note: gaps"), std::string::npos) << whole.output;
+}
+
 TEST(AllanCli, TheTimeColumnIsNotASeries) {
     TempDir dir("allantime");
     const RunResult r =
         run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02", "--channel", "t_s"}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("'t_s' is the time column"), std::string::npos) << r.output;
+}
+
+// A plain rate table (no time column, tau0 0.1 s) of white noise sigma = 0.5 over an eq. 1 warm-up of 40 units with
+// T = 300 s. Independent expectation: white rate noise has ADEV sigma / sqrt(tau / tau0) at every tau.
+TEST(AllanCli, RemoveDriftFitsEqOneOnAPlainRateFileOnlyWhenAsked) {
+    TempDir dir("allandrift");
+    const std::string table = dir.file("warmup.txt");
+    constexpr double kTau0 = 0.1, kSigma = 0.5;
+    {
+        std::ofstream out(table);
+        std::mt19937_64 rng(31);
+        std::normal_distribution<double> g(0.0, kSigma);
+        for (int k = 0; k < 40000; ++k) out << 500.0 + 40.0 * (1.0 - std::exp(-k * kTau0 / 300.0)) + g(rng) << '\n';
+    }
+    const auto white = [&](double tau) { return kSigma / std::sqrt(tau / kTau0); };
+    const std::vector<std::string> base = {"allan", table, "--kind", "rate", "--tau0", "0.1", "--json"};
+
+    const RunResult given = run_driftlab(base, dir.path());
+    ASSERT_EQ(given.exit_code, 0) << given.output;
+    const auto g_json = nlohmann::json::parse(given.output)["channels"]["col1"];
+    EXPECT_FALSE(g_json["drift_removed"].get<bool>());
+    EXPECT_EQ(g_json["drift_status"], "not removed: a plain file is analysed as given; --remove-drift fits eq. 1 first");
+    const double long_tau = g_json["tau"].back().get<double>();
+    EXPECT_GT(g_json["adev"].back().get<double>(), 3.0 * white(long_tau));  // the transient inflates the long taus
+
+    std::vector<std::string> removing = base;
+    removing.push_back("--remove-drift");
+    const RunResult removed = run_driftlab(removing, dir.path());
+    ASSERT_EQ(removed.exit_code, 0) << removed.output;
+    const auto r_json = nlohmann::json::parse(removed.output)["channels"]["col1"];
+    ASSERT_TRUE(r_json["drift_removed"].get<bool>()) << r_json["drift_status"];
+    EXPECT_NEAR(r_json["drift"]["T_s"].get<double>() / 300.0, 1.0, 0.05);
+    // Every tau within its 68 % interval would fail one in three; the longest (EDF about 3) within a factor 1.5.
+    EXPECT_NEAR(r_json["adev"].back().get<double>() / white(r_json["tau"].back().get<double>()), 1.0, 0.5);
+    EXPECT_NEAR(r_json["adev"][0].get<double>() / white(kTau0), 1.0, 0.02);
+    // No rate random walk or ramp is left: R pinned at 0, or too small to reach the white curve at the longest tau.
+    const double r_term = r_json["terms"]["R"]["value"].get<double>();
+    EXPECT_LT(r_term * long_tau / std::sqrt(2.0), 0.5 * white(long_tau));
+    EXPECT_GT(r_json["raw"]["adev"].back().get<double>(), 3.0 * r_json["adev"].back().get<double>());
+
+    std::vector<std::string> phase = {"allan", table, "--kind", "phase", "--tau0", "0.1", "--remove-drift"};
+    const RunResult refused_phase = run_driftlab(phase, dir.path());
+    EXPECT_EQ(refused_phase.exit_code, 2) << refused_phase.output;
+    EXPECT_NE(refused_phase.output.find("phase input has no drift to remove"), std::string::npos) << refused_phase.output;
+    removing.push_back("--keep-drift");
+    const RunResult refused_both = run_driftlab(removing, dir.path());
+    EXPECT_EQ(refused_both.exit_code, 2) << refused_both.output;
+    EXPECT_NE(refused_both.output.find("excludes"), std::string::npos) << refused_both.output;
 }
 
 }  // namespace

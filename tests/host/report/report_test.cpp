@@ -6,10 +6,13 @@
 #include <fstream>
 #include <limits>
 #include <iterator>
+#include <utility>
+#include <vector>
 
 #include "host/fit/drift_analysis.hpp"
 #include "host/fit/file_analysis.hpp"
 #include "host/report/analysis_json.hpp"
+#include "host/report/allan_section.hpp"
 #include "host/report/analysis_plots.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/report/html_report.hpp"
@@ -141,6 +144,48 @@ TEST(Report, HtmlIsSelfContainedWithTablesVerdictsAllanAndFigures) {
         std::size_t svgs = 0;
         for (std::size_t pos = 0; (pos = html.find("<svg", pos)) != std::string::npos; ++pos) ++svgs;
         EXPECT_EQ(svgs, 4u * 4u);
+    }
+}
+
+/// A plain table `name` in `dir` of white noise at the times `t_s`.
+std::string write_table(const TempDir& dir, const std::string& name, const std::vector<double>& t_s) {
+    const std::string path = dir.file(name);
+    std::ofstream out(path);
+    out << "t_s gx\n";
+    sim::Rng rng(3, 1);
+    for (double t : t_s) out << t << ' ' << 4.5 + 0.1 * rng.normal() << '\n';
+    return path;
+}
+
+// The report's Allan grid: rows in bursts (5 rows 2 ms apart every 50 ms, 100 a second, as the MPU6050 recording)
+// get tau0 = their mean spacing, 10 ms (59.958 s / 5999), and a curve out to seconds; at the median, 2 ms, 80 % of the grid had been
+// gaps and the curve had ended at 16 ms. A 1 s record with a reconnect that lost 30 % keeps tau0 = 1 s and warns.
+TEST(Report, AllanGridOfBurstyRowsIsTheirMeanSpacingAndGapsAreWarned) {
+    const TempDir dir("report_allan_grid");
+    std::vector<double> bursts;
+    for (int k = 0; k < 6000; ++k) bursts.push_back(0.05 * (k / 5) + 0.002 * (k % 5));
+    std::vector<double> reconnect;
+    for (int k = 0; k < 700; ++k) reconnect.push_back(k < 350 ? k : k + 300.0);
+    for (const auto& [name, times] : {std::pair{"bursts.txt", bursts}, std::pair{"reconnect.txt", reconnect}}) {
+        fit::FileAnalysisRequest request;
+        request.path = write_table(dir, name, times);
+        const fit::FileAnalysis file = fit::analyse_file(request);
+        ASSERT_EQ(file.failures(), 0u) << name;
+        const AllanSection section = allan_section({&*file.series[0].analysis});
+        ASSERT_EQ(section.plots.size(), 1u) << name;
+        const std::vector<double>& tau = section.plots[0].series[0].x;
+        ASSERT_FALSE(tau.empty()) << name;
+        if (times == bursts) {
+            EXPECT_NE(section.html.find("<td>gx</td><td>0.009995</td>"), std::string::npos) << section.html;
+            EXPECT_GT(tau.back(), 5.0);
+            EXPECT_EQ(section.html.find("class=\"warn\""), std::string::npos) << section.html;
+        } else {
+            EXPECT_NE(section.html.find("<td>gx</td><td>1</td>"), std::string::npos) << section.html;
+            EXPECT_NE(section.html.find("30 % of the 1000 grid slots at tau0 = 1 s are gaps (rows 1 s apart (median; mean "
+                                        "1.42918 s))"),
+                      std::string::npos)
+                << section.html;
+        }
     }
 }
 

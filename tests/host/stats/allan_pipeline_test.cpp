@@ -63,6 +63,21 @@ TEST(UniformGrid, RowsFasterThanTau0AreCountedAsPacked) {
     EXPECT_EQ(to_uniform_grid(jittered, std::vector<double>(300, 1.0), 1.0).packed, 0u);
 }
 
+// Without a given period: rows in bursts (5 rows 2 ms apart every 50 ms, as the MPU6050 recording's) take the mean,
+// 10 ms, not the median 2 ms that would leave 80 % of the grid empty; rows 1 s apart keep their median through a
+// reconnect that lost 30 % of the record (the mean, 1.43 s, would pack them and close the gap up).
+TEST(UniformGrid, GridPeriodIsTheMeanOnlyForRowsInBursts) {
+    std::vector<double> bursts;
+    for (int k = 0; k < 1000; ++k) bursts.push_back(0.05 * (k / 5) + 0.002 * (k % 5));
+    EXPECT_NEAR(median_spacing_s(bursts), 0.002, 1e-12);
+    EXPECT_NEAR(grid_period_s(bursts), mean_spacing_s(bursts), 1e-15);
+    EXPECT_NEAR(grid_period_s(bursts), 0.01, 1e-4);
+    std::vector<double> reconnect;
+    for (int k = 0; k < 1000; ++k) reconnect.push_back(k < 500 ? k : k + 430.0);
+    EXPECT_NEAR(mean_spacing_s(reconnect), 1.43, 1e-3);
+    EXPECT_EQ(grid_period_s(reconnect), 1.0);
+}
+
 TEST(UniformGrid, RejectsAGridFarFinerThanTheSamples) {
     const std::vector<double> t = {0.0, 1000.0};
     const std::vector<double> v = {0.0, 0.0};
@@ -123,6 +138,8 @@ TEST(AllanPipeline, TimeGapIsCountedAndNotBridged) {
     // m = 1: a gap of 100 rate samples removes 100 + 2m - 1 = 101 overlapping terms (the 5000-sample record
     // has 5001 - 2 = 4999).
     EXPECT_EQ(c.curve.n[0], 4999 - 101);
+    // Rate samples 2100..4999 are the longest run: 2900 intervals of 1 s.
+    EXPECT_DOUBLE_EQ(r.longest_gap_free_s, 2900.0);
 }
 
 // Stable32's bound m <= (N - 1) / 4 for N phase samples: 4 rate samples (5 phase) give the first averaging time,

@@ -116,6 +116,49 @@ TEST(NoiseTerms, RecoversWhiteAndRandomWalkFromSimulatedRate) {
     EXPECT_GT(fit.std_error[1], 0.0);
 }
 
+// White rate noise has no flat floor: the fit pins B at 0, which is "not resolved", not a measured zero. Its bound
+// is the closed form min ADEV / 0.664 (the flicker term alone may not rise above the curve anywhere), and each
+// other pinned term's bound is where its own tau power first touches the curve.
+TEST(NoiseTerms, ATermPinnedAtZeroIsUnresolvedWithTheCurvesBound) {
+    const double tau0 = 0.01;
+    const double sigma = 0.3;
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> g(0.0, sigma);
+    std::vector<double> y(200000);
+    for (double& v : y) v = g(rng);
+    const PhaseRecord r = PhaseRecord::from_rate(y, tau0);
+    const AnalysedCurve a = analyse_deviation(r, Deviation::oadev, analysis_factors(r, Deviation::oadev, {TauGrid::octave}));
+    const NoiseTermFit fit = fit_noise_terms(a.curve.tau_s, a.curve.dev, a.edf);
+    ASSERT_TRUE(fit.ok);
+    ASSERT_TRUE(fit.at_bound[2]) << "B = " << fit.value[2];
+    EXPECT_EQ(fit.value[2], 0.0);
+    double adev_min = 1e300;
+    double k_bound = 1e300;
+    for (std::size_t i = 0; i < a.curve.dev.size(); ++i) {
+        adev_min = std::min(adev_min, a.curve.dev[i]);
+        k_bound = std::min(k_bound, a.curve.dev[i] * std::sqrt(3.0 / a.curve.tau_s[i]));  // K^2 tau / 3 <= AVAR
+    }
+    EXPECT_NEAR(fit.upper_bound[2] / (adev_min / kBiasInstabilityFactor), 1.0, 1e-12);
+    // N is resolved (sigma sqrt(tau0) for white rate noise) and has no bound.
+    EXPECT_FALSE(fit.at_bound[1]);
+    EXPECT_NEAR(fit.value[1] / (sigma * std::sqrt(tau0)), 1.0, 0.02);
+    EXPECT_TRUE(std::isnan(fit.upper_bound[1]));
+    if (fit.at_bound[3]) {
+        EXPECT_NEAR(fit.upper_bound[3] / k_bound, 1.0, 1e-12);
+    }
+    // Converted units carry the bound: B in deg/h for a rate in deg/s.
+    const auto phys = physical_terms(fit, RateQuantity::angular_rate, std::numbers::pi / 180.0);
+    for (const NamedValue& nv : phys) {
+        if (nv.key != "B_deg_per_h") continue;
+        EXPECT_FALSE(nv.resolved);
+        EXPECT_NEAR(nv.upper_bound / (fit.upper_bound[2] * 3600.0), 1.0, 1e-12);
+    }
+    // A disabled term is not fitted, so it is not "pinned" either.
+    NoiseTermOptions o;
+    o.enabled = {false, true, true, true, true};
+    EXPECT_FALSE(fit_noise_terms(a.curve.tau_s, a.curve.dev, a.edf, o).at_bound[0]);
+}
+
 TEST(NoiseTerms, PhysicalUnitsForAGyroInDegPerSecond) {
     NoiseTermFit fit;
     fit.ok = true;
