@@ -1,7 +1,9 @@
 // `driftlab decode`: rebuilds a recording's log from its raw capture, through the same assembler the recorder
 // used, so the result equals the recorded log (host/io/capture, host/io/log_assembler).
+#include <bitset>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "host/cli/commands.hpp"
 #include "host/io/capture.hpp"
@@ -18,8 +20,50 @@ struct DecodeOptions {
     std::string output;
 };
 
+/// True when `text` is "start" with one bit flipped.
+bool one_bit_from_start(const std::string& text) {
+    static const std::string start = "start";
+    if (text.size() != start.size()) return false;
+    int bits = 0;
+    for (std::size_t i = 0; i < text.size(); ++i)
+        bits += std::bitset<8>(static_cast<unsigned char>(text[i] ^ start[i])).count();
+    return bits == 1;
+}
+
+/// `text` with bytes that are not printable ASCII written as \xNN (a flipped high bit makes invalid UTF-8).
+std::string printable(const std::string& text) {
+    std::string out;
+    for (const unsigned char c : text) {
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        }
+    }
+    return out;
+}
+
+/// The offset of the event to read as the recording's start: events carry no checksum, so one flipped bit in the
+/// start's text (a disk or copy fault) had left the whole capture undecodable. Only where the capture holds no
+/// exact start and exactly one event is a bit from it; else nullopt.
+std::optional<std::uint64_t> damaged_start(const std::string& capture) {
+    io::CaptureReader scan(capture);
+    std::optional<std::uint64_t> found;
+    int near = 0;
+    while (const auto rec = scan.next()) {
+        if (rec->kind != io::CaptureKind::event) continue;
+        const std::string text = rec->text();
+        if (text == "start") return std::nullopt;
+        if (one_bit_from_start(text)) found = rec->offset, ++near;
+    }
+    return near == 1 ? found : std::nullopt;
+}
+
 void run_decode(const DecodeOptions& o) {
     refuse_writing_over_input(o.output, "-o", o.capture, "capture");
+    const std::optional<std::uint64_t> rescued_start = damaged_start(o.capture);
     io::CaptureReader reader(o.capture);
     io::LogAssembler assembler(o.output, reader.header());
     bool started = false;
@@ -27,8 +71,13 @@ void run_decode(const DecodeOptions& o) {
         if (rec->kind == io::CaptureKind::rx) {
             assembler.on_rx(rec->t_us, rec->payload.data(), rec->payload.size());
         } else if (rec->kind == io::CaptureKind::event) {
+            const bool rescued = rec->offset == rescued_start;
+            if (rescued)
+                std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: event '%s' read as the recording's start "
+                                     "(one bit from 'start'; the capture holds no other)\n",
+                             o.capture.c_str(), static_cast<unsigned long long>(rec->offset), printable(rec->text()).c_str());
             try {
-                assembler.on_event(rec->t_us, rec->text());
+                assembler.on_event(rec->t_us, rescued ? "start" : rec->text());
             } catch (const DataError& e) {
                 // The assembler names the capture its header names; the file decoded here, and where, are what help.
                 const std::string what = e.what();

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <thread>
 
+#include "host/io/capture.hpp"
 #include "host/log/log_reader.hpp"
 #include "tests/e2e/e2e_support.hpp"
 
@@ -74,6 +76,36 @@ TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog
     const RunResult d = run_driftlab({"decode", log + ".cap", "-o", dir.file("decoded.csv")}, dir.path());
     ASSERT_EQ(d.exit_code, 0) << d.output;
     EXPECT_EQ(read_text(dir.file("decoded.csv")), read_text(log));
+
+    // One flipped bit in the start event's text ("start" -> "stcrt": events carry no checksum) had left the capture
+    // undecodable; it is read as the start, with a warning naming its offset, and rebuilds the same log. Two bits
+    // off is no longer taken for it.
+    std::uint64_t start_offset = 0;
+    {
+        host::io::CaptureReader reader(log + ".cap");
+        while (const auto rec = reader.next())
+            if (rec->kind == host::io::CaptureKind::event && rec->text() == "start") start_offset = rec->offset;
+    }
+    ASSERT_GT(start_offset, 0u);
+    const std::string capture = read_text(log + ".cap");
+    const std::size_t letter_a = start_offset + 1 + 8 + 4 + 2;  // kind, time, length, then "st" of "start"
+    ASSERT_EQ(capture.substr(letter_a - 2, 5), "start");
+    const auto damaged_copy = [&](const std::string& name, char replacement) {
+        std::string bytes = capture;
+        bytes[letter_a] = replacement;
+        std::ofstream(dir.file(name), std::ios::binary) << bytes;
+        return dir.file(name);
+    };
+    const RunResult one_bit = run_driftlab({"decode", damaged_copy("one.cap", 'c'), "-o", dir.file("one.csv")}, dir.path());
+    ASSERT_EQ(one_bit.exit_code, 0) << one_bit.output;
+    EXPECT_NE(one_bit.output.find("one.cap: byte offset " + std::to_string(start_offset) +
+                                  ": event 'stcrt' read as the recording's start"),
+              std::string::npos)
+        << one_bit.output;
+    EXPECT_EQ(read_text(dir.file("one.csv")), read_text(log));
+    const RunResult two_bits = run_driftlab({"decode", damaged_copy("two.cap", 'b'), "-o", dir.file("two.csv")}, dir.path());
+    EXPECT_EQ(two_bits.exit_code, 3) << two_bits.output;  // 'a' ^ 'b' = 3: two bits
+    EXPECT_NE(two_bits.output.find("no recording start"), std::string::npos) << two_bits.output;
 }
 
 TEST(RecordPty, PolledRecordingHoldsExactlyTheAnswersTheBoardSent) {
