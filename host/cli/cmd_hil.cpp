@@ -155,13 +155,7 @@ void check_option_combinations(const HilCliOptions& o) {
 
 // The command line's CONFIG fields over the model's.
 void apply_firmware_options(const HilCliOptions& o, proto::ConfigPayload& fw) {
-    if (o.period_s) {
-        const double ms = *o.period_s * 1000.0;
-        if (!(ms >= proto::kOutputPeriodMinMs && ms <= proto::kOutputPeriodMaxMs) || std::abs(ms - std::round(ms)) > 1e-6)
-            throw UsageError("--period: expected a whole number of milliseconds in [0.01, 60] s, got " +
-                             std::to_string(*o.period_s));
-        fw.output_period_ms = static_cast<std::uint16_t>(std::lround(ms));
-    }
+    if (o.period_s) fw.output_period_ms = output_period_ms(*o.period_s, "--period");
     if (o.window) fw.window = static_cast<std::uint8_t>(*o.window);
     if (o.conversions) fw.conversions_per_output = static_cast<std::uint8_t>(*o.conversions);
     if (o.order) fw.fit_order = static_cast<std::uint8_t>(*o.order);

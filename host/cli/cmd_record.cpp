@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -13,6 +12,7 @@
 #include "host/io/recorder.hpp"
 #include "host/io/status_line.hpp"
 #include "host/util/error.hpp"
+#include "sim/model/model_file.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -36,14 +36,6 @@ struct RecordCliOptions {
     bool quiet = false;
 };
 
-std::uint16_t period_ms(double period_s, const char* flag) {
-    const double ms = std::round(period_s * 1000.0);
-    if (!(ms >= proto::kOutputPeriodMinMs && ms <= proto::kOutputPeriodMaxMs)) {
-        throw UsageError(std::string(flag) + " " + std::to_string(period_s) + ": the period must be between 0.01 and 60 s");
-    }
-    return static_cast<std::uint16_t>(ms);
-}
-
 void run_record(const RecordCliOptions& o) {
     io::RecordOptions r;
     r.port = o.port;
@@ -53,8 +45,8 @@ void run_record(const RecordCliOptions& o) {
     r.capture_path = o.capture;
     r.recorder_name = "driftlab 0.1.0";
     const bool stream = o.stream_s > 0.0;
-    r.config.output_period_ms = period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1),
-                                          stream ? "--stream" : "--poll");
+    r.config.output_period_ms = output_period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1),
+                                                 stream ? "--stream" : "--poll");
     r.config.mode = static_cast<std::uint8_t>(stream ? proto::OutputMode::stream : proto::OutputMode::poll);
     if (o.conversions < 1 || o.conversions > proto::kConversionsPerOutputMax) {
         throw UsageError("--conversions must be 1..64");
@@ -66,6 +58,9 @@ void run_record(const RecordCliOptions& o) {
     r.config.window = static_cast<std::uint8_t>(o.window);
     r.config.fit_order = static_cast<std::uint8_t>(o.order);
     r.config.raw = o.raw ? 1 : 0;
+    // The firmware's own check, before the port: a board's NAK had come back as a device error (exit 4) naming
+    // only the field, e.g. --stream 0.01 with the default 25 conversions.
+    if (const auto refusal = sim::firmware_refusal(r.config)) throw UsageError(refusal->field + ": " + refusal->reason);
 
     struct sigaction sa {};
     sa.sa_handler = on_stop_signal;
@@ -107,8 +102,10 @@ void register_record(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("record", "Record a board over a serial/radio link into a log and a raw capture");
     cmd->add_option("--port", o->port, "Serial device (/dev/ttyUSB0, /dev/serial/by-id/..., /dev/pts/N)")->required();
     cmd->add_option("--baud", o->baud, "Baud rate [bit/s]")->capture_default_str();
-    auto* poll = cmd->add_option("--poll", o->poll_s, "Poll mode (the paper's), one POLL every PERIOD [s] (default 0.1)");
-    auto* stream = cmd->add_option("--stream", o->stream_s, "Stream mode: the board sends every PERIOD [s] unasked");
+    auto* poll = cmd->add_option("--poll", o->poll_s, "Poll mode (the paper's), one POLL every PERIOD [s] (default 0.1)")
+                     ->check(positive_number());
+    auto* stream = cmd->add_option("--stream", o->stream_s, "Stream mode: the board sends every PERIOD [s] unasked")
+                       ->check(positive_number());
     poll->excludes(stream);
     cmd->add_option("--duration", o->duration_s, "Stop after this much board time [s] (default: until Ctrl-C)")
         ->check(non_negative_number());

@@ -2,6 +2,7 @@
 // Help is generated from this table by CLI11, so listed and existing commands cannot disagree.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -46,6 +47,10 @@ const CLI::Validator& finite_value();
 const CLI::Validator& non_empty_path();
 /// A seed: digits only, 0 to 2^64 - 1 (CLI11's unsigned parse wraps "-5" and clamps what is beyond).
 const CLI::Validator& seed_number();
+
+/// An output period [s] as the CONFIG's whole milliseconds in [10, 60000]; throws UsageError naming `option`
+/// otherwise (hil --period and record --poll/--stream: 0.0105 s had been rounded to 10 ms without a word).
+std::uint16_t output_period_ms(double period_s, const std::string& option);
 
 /// The whole of `text` as a finite number; none for anything else (trailing text, "nan", "inf").
 std::optional<double> finite_number(const std::string& text);

@@ -1,8 +1,11 @@
 // Option checks for numbers and paths; see commands.hpp.
 #include <cmath>
+#include <cstdio>
 #include <string>
 
+#include "driftlab/proto/messages.hpp"
 #include "host/cli/commands.hpp"
+#include "host/util/error.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -18,6 +21,16 @@ CLI::Validator number_check(const char* name, bool zero_allowed) {
 }
 
 }  // namespace
+
+std::uint16_t output_period_ms(double period_s, const std::string& option) {
+    const double ms = period_s * 1000.0;
+    if (!(ms >= proto::kOutputPeriodMinMs && ms <= proto::kOutputPeriodMaxMs) || std::abs(ms - std::round(ms)) > 1e-6) {
+        char got[32];
+        std::snprintf(got, sizeof got, "%g", period_s);
+        throw UsageError(option + ": expected a whole number of milliseconds in [0.01, 60] s, got " + got);
+    }
+    return static_cast<std::uint16_t>(std::lround(ms));
+}
 
 std::optional<double> finite_number(const std::string& text) {
     std::size_t used = 0;

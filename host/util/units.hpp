@@ -10,8 +10,6 @@ namespace driftlab::host {
 inline constexpr double kGyroDpsPerCount = 90.0 / 512.0;
 /// Accelerometer: one count = 19.14 cm/s^2 (ADXL05 through its amplifier) [cm/s^2 per count].
 inline constexpr double kAccelCmps2PerCount = 19.14;
-/// The same in g: 19.14 cm/s^2 / 980.665 cm/s^2 [g per count].
-inline constexpr double kAccelGPerCount = kAccelCmps2PerCount / 980.665;
 
 /// A channel's physical unit: the scale per count and the unit's name.
 struct PhysicalUnit {

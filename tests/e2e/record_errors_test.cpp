@@ -61,6 +61,29 @@ TEST(RecordErrors, MissingPortNamesThePath) {
     expect_refused(r, dir.file("ttyNONE") + ": cannot open", dir);
 }
 
+// A configuration the firmware would refuse, or a period that is not one, is the command line's fault and is
+// refused before the port is opened (a missing port here would otherwise give exit 4): --stream -1 had recorded in
+// poll mode at 0.1 s, 0.0105 had been rounded to 10 ms, and 10 ms with 25 conversions had come back from the board
+// as a device error naming only the field.
+TEST(RecordErrors, ABadPeriodOrConfigurationIsAUsageErrorBeforeThePort) {
+    TempDir dir("badconfig");
+    const std::string port = dir.file("ttyNONE");
+    for (const char* bad : {"-1", "0"}) {
+        const RunResult r = run_driftlab({"record", "--port", port, "--stream", bad, "-o", dir.file("rec.csv")}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
+    }
+    const RunResult odd = run_driftlab({"record", "--port", port, "--poll", "0.0105", "-o", dir.file("rec.csv")}, dir.path());
+    EXPECT_EQ(odd.exit_code, 2) << odd.output;
+    EXPECT_NE(odd.output.find("--poll: expected a whole number of milliseconds in [0.01, 60] s, got 0.0105"),
+              std::string::npos) << odd.output;
+    const RunResult fast = run_driftlab({"record", "--port", port, "--stream", "0.01", "-o", dir.file("rec.csv")}, dir.path());
+    EXPECT_EQ(fast.exit_code, 2) << fast.output;
+    EXPECT_NE(fast.output.find("conversions_per_output: the firmware refuses this configuration (out_of_range): "
+                               "output_period_ms 10 / (4 channels x conversions_per_output 25)"),
+              std::string::npos) << fast.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("rec.csv")));
+}
+
 TEST(RecordErrors, AFileThatIsNotATerminalIsRefused) {
     TempDir dir("notatty");
     const RunResult r = run_driftlab({"record", "--port", "/dev/null", "-o", dir.file("rec.csv")}, dir.path());

@@ -1,0 +1,27 @@
+// The recorder's live status line: the newest row as a person watching the recording reads it.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "host/io/status_line.hpp"
+
+namespace driftlab::host::io {
+namespace {
+
+// Table 1's settled codes: the gyro 7 counts below mid-scale is -1.23 deg/s (90/512 deg/s a count); the
+// accelerometer axes are given as their counts (their g per count is the paper's open question), where a g figure
+// from mid-scale had read Z's 622 counts at rest as +2.15 g.
+TEST(StatusLine, TheGyroInDegreesPerSecondTheAccelerometerInCounts) {
+    AssemblyStats s;
+    s.rows = 123;
+    s.last_counts = {505.0, 470.0, 474.0, 622.0};
+    const std::string line = format_status_line(s, 12.3, true);
+    EXPECT_NE(line.find("rows 123"), std::string::npos) << line;
+    EXPECT_NE(line.find("gyro -1.23 deg/s"), std::string::npos) << line;
+    EXPECT_NE(line.find("accel 470.0 474.0 622.0 counts"), std::string::npos) << line;
+    EXPECT_EQ(line.find(" g "), std::string::npos) << line;
+    EXPECT_NE(format_status_line(s, 12.3, false).find("PORT LOST"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace driftlab::host::io
