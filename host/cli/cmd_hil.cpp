@@ -68,6 +68,13 @@ std::atomic<bool> g_pty_stop{false};
 void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
     if (o.target != "native") throw UsageError("--pty: only the native target is served on a pseudo-terminal");
     sim::SensorModel sensor(h.model, o.seed, h.warm_up_s);
+    const auto impaired = [](const sim::DirectionParams& d) {
+        return d.latency_s > 0.0 || d.byte_error_rate > 0.0 || d.byte_drop_rate > 0.0 || d.packet_loss.loss_in_good > 0.0 ||
+               (d.packet_loss.p_good_to_bad > 0.0 && d.packet_loss.loss_in_bad > 0.0);
+    };
+    if (impaired(h.model.link.to_host) || impaired(h.model.link.to_firmware))
+        std::fprintf(stderr, "note: the model's [link] losses, errors and latency are not applied: the pseudo-terminal "
+                             "carries the firmware's bytes as they are (driftlab hil without --pty simulates the link)\n");
     io::PtyBoardOptions p;
     p.speed = o.speed.value_or(1.0);
     p.duration_s = o.duration_s.value_or(0.0);
@@ -148,6 +155,12 @@ void check_option_combinations(const HilCliOptions& o) {
     if (o.pty && (!o.output.empty() || o.json))
         throw UsageError(std::string(o.json ? "--json" : "-o") +
                          ": --pty serves the board and writes no log; the recorder does (driftlab record -o LOG)");
+    // On a pseudo-terminal the recorder configures the board, as it does hardware: these had been ignored.
+    if (o.pty && (o.period_s || o.window || o.conversions || o.order || o.raw || o.stream))
+        throw UsageError(std::string(o.period_s ? "--period" : o.window ? "--window" : o.conversions ? "--conversions"
+                                     : o.order ? "--order" : o.raw ? "--raw" : "--stream") +
+                         ": with --pty the recorder configures the board (driftlab record --poll/--stream, --window, "
+                         "--conversions, --order, --raw)");
     if (o.target != "avr" && (!o.elf.empty() || o.gdb_port > 0 || o.cycles))
         throw UsageError(std::string(!o.elf.empty() ? "--elf" : o.gdb_port > 0 ? "--gdb" : "--cycles") +
                          ": only with --target avr");

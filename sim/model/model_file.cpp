@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -458,6 +459,9 @@ SimModel parse_model(std::string_view toml_text, const std::string& source_name,
 }
 
 SimModel load_model_file(const std::string& path, const FirmwareAdjust& adjust) {
+    // A stream opens a folder and reads it as empty, which had run the paper's model under the folder's name.
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw host::ConfigError(path, "file", "is a folder, not a model file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw host::ConfigError(path, "file", "cannot open the model file (does it exist and is it readable?)");
     std::ostringstream text;

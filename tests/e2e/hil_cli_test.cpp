@@ -122,6 +122,21 @@ TEST(HilCli, OptionsThatWouldBeIgnoredOrWrappedAreRefused) {
         EXPECT_EQ(r.exit_code, 2) << extra.front() << ": " << r.output;
     }
     EXPECT_FALSE(std::filesystem::exists(out));
+    // On a pseudo-terminal the recorder configures the board: the firmware options had been ignored there.
+    for (const std::vector<std::string>& extra : std::vector<std::vector<std::string>>{
+             {"--period", "0.5"}, {"--window", "3"}, {"--conversions", "5"}, {"--order", "1"}, {"--raw"}, {"--stream"}}) {
+        std::vector<std::string> args = {"hil", "--pty", "--duration", "1"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << extra.front() << ": " << r.output;
+        EXPECT_NE(r.output.find(extra.front() + ": with --pty the recorder configures the board"), std::string::npos)
+            << r.output;
+    }
+    // A folder given as the model had run the paper's model under the folder's name, exit 0.
+    const RunResult folder = run_driftlab({"hil", "--model", dir.path().string(), "--duration", "2", "-o", out}, dir.path());
+    EXPECT_EQ(folder.exit_code, 5) << folder.output;
+    EXPECT_NE(folder.output.find("is a folder, not a model file"), std::string::npos) << folder.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
     const RunResult largest = run_driftlab({"hil", "--duration", "2", "--seed", "18446744073709551615", "-o", out}, dir.path());
     EXPECT_EQ(largest.exit_code, 0) << largest.output;
 }

@@ -54,6 +54,16 @@ TEST(ModelFile, EveryShippedModelLoads) {
     EXPECT_GE(n, 3);
 }
 
+// A folder opens as a stream that reads empty: `hil --model FOLDER` had run the paper's model under its name.
+TEST(ModelFile, AFolderIsNotAModelFile) {
+    try {
+        load_model_file(DRIFTLAB_MODELS_DIR);
+        ADD_FAILURE() << "a folder was loaded as a model";
+    } catch (const host::ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find("is a folder, not a model file"), std::string::npos) << e.what();
+    }
+}
+
 TEST(ModelFile, KeysOverrideThePaperDefaults) {
     const SimModel m = parse_model(R"(
 name = "x"
