@@ -101,6 +101,24 @@ TEST(HilCli, ALogOnStandardOutputReadsBack) {
     EXPECT_EQ(j.exit_code, 2) << j.output;
 }
 
+// --cycles profiles a separate short streaming run, not the run the log came from (a polled fig2 run showed its
+// receive interrupt at 0 calls, though every POLL goes through it): the output says so.
+TEST(HilCli, TheCycleBudgetSaysItIsASeparateStreamingRun) {
+#ifdef DRIFTLAB_AVR_ELF
+    const std::string elf = DRIFTLAB_AVR_ELF;  // what `hil --target avr` runs by default
+#else
+    const std::string elf;
+#endif
+    if (elf.empty() || !std::filesystem::exists(elf)) GTEST_SKIP() << "AVR firmware ELF not built: '" << elf << "'";
+    TempDir dir("hilcycles");
+    const RunResult r = run_driftlab(
+        {"hil", "--target", "avr", "--preset", "fig2", "--duration", "2", "--cycles", "-o", dir.file("c.csv")}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("measured in a separate run of this configuration: 5 s of streaming after 0.5 s"),
+              std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("adc_isr               5000 calls"), std::string::npos) << r.output;  // 1000/s for 5 s
+}
+
 // Options of another way of running, or values the unsigned parse would wrap, are refused, not ignored.
 TEST(HilCli, OptionsThatWouldBeIgnoredOrWrappedAreRefused) {
     TempDir dir("hilopts");
