@@ -199,7 +199,16 @@ std::string scores_markdown(const EvalScores& s) {
               "| generator | a_50 | size: detected/logs |\n|---|---|---|\n";
     for (const auto& d : s.sizes) {
         md << "| " << d.generator << " | " << fixed(d.a50, 2) << " |";
-        for (const auto& p : d.curve) md << " " << fixed(p.size, 2) << ": " << p.detected << "/" << p.logs << ";";
+        // The search can reach one size twice (0.4 and 0.4000000000000001): one entry with both batches, where two
+        // entries of the same size had read as two detection rates for it (the fit keeps them apart).
+        for (std::size_t i = 0; i < d.curve.size();) {
+            int detected = 0, logs = 0;
+            std::size_t j = i;
+            for (; j < d.curve.size() && std::abs(d.curve[j].size - d.curve[i].size) <= 1e-9 * d.curve[i].size; ++j)
+                detected += d.curve[j].detected, logs += d.curve[j].logs;
+            md << " " << fixed(d.curve[i].size, 2) << ": " << detected << "/" << logs << ";";
+            i = j;
+        }
         md << " |\n";
     }
     if (s.clean)
