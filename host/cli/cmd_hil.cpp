@@ -5,10 +5,11 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -335,14 +336,18 @@ void run_hil_command(const HilCliOptions& o) {
     }
     // With the log on standard output (-o -), the summary goes beside it, not into it.
     std::ostream& out = path == "-" ? std::cerr : std::cout;
-    out << "wrote " << s.host.rows << " rows to " << path << "\n"
+    // Every count that takes an output away from the log, so that outputs and rows add up from the text alone.
+    out << "wrote " << s.host.rows << " rows to " << path;
+    if (s.host.rows_missing_raw > 0) out << " (" << s.host.rows_missing_raw << " samples not logged: their RAW frame was lost)";
+    out << "\n"
               << "frames: sent " << s.to_host.packets_sent << ", received " << s.host.frames_received << ", lost "
               << s.host.frames_lost << " (crc errors " << s.decoder.bad_crc << ")\n"
-              << "link to host: " << s.to_host.packets_damaged << " frames damaged, " << s.to_host.bytes_dropped
+              << "link to host: " << s.to_host.packets_damaged << " frames damaged (" << s.to_host.packets_lost
+              << " lost whole), " << s.to_host.bytes_dropped
               << " bytes dropped, " << s.to_host.bytes_corrupted << " corrupted; to firmware: "
               << s.to_firmware.packets_damaged << " frames damaged\n"
-              << "simulated " << s.simulated_s << " s in " << wall_s << " s wall (" << std::lround(rtf)
-              << "x real time)\n";
+              << "simulated " << std::setprecision(6) << s.simulated_s << " s in " << std::setprecision(3) << wall_s
+              << " s wall (" << std::lround(rtf) << "x real time)\n";
 #ifdef DRIFTLAB_HAVE_SIM_AVR
     if (o.cycles && o.target == "avr")
         out << "measured in a separate run of this configuration: " << kCycleRun << "\n"

@@ -8,8 +8,11 @@
 #include <fstream>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "e2e_support.hpp"
 #include "host/log/log_reader.hpp"
+
 
 namespace driftlab::e2e {
 namespace {
@@ -99,6 +102,31 @@ TEST(HilCli, ALogOnStandardOutputReadsBack) {
     EXPECT_EQ(read.size(), 30u);
     const RunResult j = run_driftlab({"hil", "--duration", "3", "-o", "-", "--json"}, dir.path());
     EXPECT_EQ(j.exit_code, 2) << j.output;
+}
+
+// The summary accounts for every output the log lacks: frames lost whole on the link and samples dropped because
+// their RAW frame was lost (only the JSON had them, so 600 outputs -> 569 rows did not add up from the text).
+TEST(HilCli, TheSummarySaysWhereTheMissingRowsWent) {
+    TempDir dir("hilsummary");
+    const std::vector<std::string> run = {"hil", "--model", std::string(DRIFTLAB_SOURCE_DIR) + "/sim/models/lossy_radio.toml",
+                                          "--raw", "--stream", "--duration", "600", "--seed", "3", "-o", dir.file("l.csv")};
+    std::vector<std::string> with_json = run;
+    with_json.push_back("--json");
+    const RunResult js = run_driftlab(with_json, dir.path());
+    ASSERT_EQ(js.exit_code, 0) << js.output;
+    const auto j = nlohmann::json::parse(js.output);
+    const auto missing_raw = j["rows_missing_raw"].get<std::uint64_t>();
+    ASSERT_GT(missing_raw, 0u);  // the run exercises both counts
+    ASSERT_GT(j["link"]["to_host"]["packets_lost"].get<std::uint64_t>(), 0u);
+    const RunResult r = run_driftlab(run, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("wrote " + std::to_string(j["rows"].get<std::uint64_t>()) + " rows to " + dir.file("l.csv") +
+                            " (" + std::to_string(missing_raw) + " samples not logged: their RAW frame was lost)"),
+              std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(std::to_string(j["link"]["to_host"]["packets_damaged"].get<std::uint64_t>()) +
+                            " frames damaged (" + std::to_string(j["link"]["to_host"]["packets_lost"].get<std::uint64_t>()) +
+                            " lost whole)"),
+              std::string::npos) << r.output;
 }
 
 // --cycles profiles a separate short streaming run, not the run the log came from (a polled fig2 run showed its
