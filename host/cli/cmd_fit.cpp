@@ -87,7 +87,7 @@ void print_table(const fit::FileAnalysis& file) {
                   << w.sequences_used << " sequences of " << num(w.sequence_length_s, 1) << " s), Ljung-Box Q("
                   << w.ljung_box.lags << ") = " << num(w.ljung_box.statistic, 2) << ", p = " << w.ljung_box.p_value
                   << " -> " << (w.white ? "white" : "not white") << "\n";
-        for (const auto& warning : a.warnings) std::cout << "  warning: " << warning << "\n";
+        print_analysis_warnings(a);
     }
 }
 
@@ -116,12 +116,18 @@ void run(const FitCommandOptions& opts) {
 
 }  // namespace
 
+void print_analysis_warnings(const fit::DriftAnalysis& analysis) {
+    for (const auto& warning : analysis.warnings) std::cout << "  warning: " << warning << "\n";
+}
+
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
     cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required();
     cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
     cmd->add_option("--t-min", r.options.t_min_s, "Use samples with t_s >= this [s]")->check(finite_value());
     cmd->add_option("--t-max", r.options.t_max_s, "Use samples with t_s <= this [s]")->check(finite_value());
-    cmd->add_option("--time-column", r.time_column, "Plain tables: the time column [s] (default t_s, t or time)");
+    cmd->add_option("--time-column", r.time_column,
+                    "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
+                    "time, time_s, timestamp...)");
     cmd->add_option("--sample-period", r.sample_period_s, "Plain tables without time: sample period [s]")
         ->check(positive_number());
     cmd->add_option("--sequences", r.options.whiteness.sequences, "Whiteness: number M of sequences (paper: 10)")

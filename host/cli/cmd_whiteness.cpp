@@ -37,7 +37,7 @@ void print_text(const fit::FileAnalysis& file) {
         std::printf("%-10s %8.1f%% %9.4f %8s %11s %9.3g %11.2f  %s\n", s.name.c_str(), 100.0 * w.fraction_inside,
                     w.bound, mxl, q, w.ljung_box.p_value, w.autocorrelation_time.tau,
                     w.white ? "white" : "NOT white");
-        if (!w.adaptation.empty()) std::cout << "  note: " << w.adaptation << "\n";
+        print_analysis_warnings(*s.analysis);
     }
 }
 
@@ -47,8 +47,8 @@ void run(const WhitenessCommandOptions& opts) {
         nlohmann::json out = {{"file", file.path}, {"channels", nlohmann::json::object()}};
         for (const auto& s : file.series)
             out["channels"][s.name] =
-                s.analysis ? nlohmann::json{{"whiteness", report::whiteness_json(s.analysis->whiteness,
-                                                                                   s.analysis->sample_period_s, true)}}
+                s.analysis ? nlohmann::json{{"whiteness", report::whiteness_json(s.analysis->whiteness, true)},
+                                            {"warnings", s.analysis->warnings}}
                            : nlohmann::json{{"error", s.error}};
         report::write_json(std::cout, out);
     } else {

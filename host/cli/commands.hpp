@@ -10,6 +10,7 @@
 
 namespace driftlab::host::fit {
 struct FileAnalysisRequest;
+struct DriftAnalysis;
 }
 namespace driftlab::host::gap {
 enum class Holdout;
@@ -36,6 +37,9 @@ void register_gap_eval(CLI::App& app);
 
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
+
+/// A series' analysis warnings, one "  warning: ..." line each, as fit and whiteness print them (cmd_fit.cpp).
+void print_analysis_warnings(const fit::DriftAnalysis& analysis);
 
 /// Checks for numeric options. CLI11's PositiveNumber and NonNegativeNumber state their range as 0 to the largest
 /// double written out in full; these say what is wanted and what was given (number_checks.cpp).

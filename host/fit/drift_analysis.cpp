@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 
@@ -31,20 +32,6 @@ Series restrict_range(const Series& s, double t_min_s, double t_max_s) {
     return out;
 }
 
-/// Three significant digits: a p-value or a spacing in a sentence, not a number to read back.
-std::string sig3(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
-double median_spacing(const std::vector<double>& t_s) {
-    std::vector<double> dt(t_s.size() - 1);
-    for (std::size_t k = 1; k < t_s.size(); ++k) dt[k - 1] = t_s[k] - t_s[k - 1];
-    std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
-    return dt[dt.size() / 2];
-}
-
 }  // namespace
 
 DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options) {
@@ -66,13 +53,18 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     if (*lo == *hi)
         throw DataError(series.source, 0, where + " is constant (" + format_double(*lo) + "): nothing to fit");
 
-    out.sample_period_s = median_spacing(out.data.t_s);
+    out.sample_period_s = stats::median_spacing_s(out.data.t_s);
     for (std::size_t k = 1; k < n; ++k)
         out.time_gaps += out.data.t_s[k] - out.data.t_s[k - 1] > 1.5 * out.sample_period_s;
+    // Rows in bursts (an MPU6050 read 100 times a second in bursts 2 ms apart) come far less often than their median
+    // spacing says: 50 s at the median had made sequences of 247 s. L seconds hold L / mean samples.
+    const double mean_spacing_s = stats::mean_spacing_s(out.data.t_s);
+    const bool median_is_rate = stats::spacing_agrees(out.sample_period_s, mean_spacing_s);
 
     out.fit = fit_drift(out.data.t_s, out.data.values, options.fit);
     try {
-        out.whiteness = stats::test_whiteness(out.fit.residual, out.sample_period_s, options.whiteness);
+        out.whiteness = stats::test_whiteness(out.fit.residual, median_is_rate ? out.sample_period_s : mean_spacing_s,
+                                              options.whiteness);
     } catch (const UsageError& e) {
         // A residual the test cannot take (constant in every sequence) is this series' data, not the command line.
         throw DataError(series.source, 0, where + ": " + e.what());
@@ -80,6 +72,17 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     out.plain = parameter_intervals(out.fit, 1.0);
     out.widened = out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
 
+    // A plain table's row index read as seconds had been printed as seconds, unremarked.
+    if (out.data.index_period_s > 0.0)
+        out.warnings.push_back("no time column: t is the row index x " + format_double(out.data.index_period_s) +
+                               " s (--sample-period); name the time column with --time-column if the table has one");
+    // A record that starts 100 spans after power-on (Unix time) holds a transient as short as itself only as
+    // exp(-100) of C1: the fit is singular, or reads a slow drift as T far beyond the record.
+    const double span_s = out.data.t_s.back() - out.data.t_s.front();
+    if (out.data.t_s.front() > 100.0 * span_s)
+        out.warnings.push_back("times start at " + significant(out.data.t_s.front(), 3) + " s, over 100x the record's span of " +
+                               significant(span_s, 3) + " s: eq. 1 counts from power-on; subtract the power-on time (or the "
+                               "first row's) from the time column");
     if (out.fit.status == FitStatus::singular)
         out.warnings.push_back("fit is singular (condition number " + fixed(out.fit.condition_number, 0) +
                                "): C1, C2 and T are not separately determined by these data; no intervals");
@@ -95,31 +98,33 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
                                to_precision_of(out.plain.initial_slope.stderr_, out.plain.initial_slope.stderr_) +
                                " per s)");
     if (out.fit.start.t_at_lower_end || out.fit.parameters.t_s < out.sample_period_s)
-        out.warnings.push_back("T (" + sig3(out.fit.parameters.t_s) +
+        out.warnings.push_back("T (" + significant(out.fit.parameters.t_s, 3) +
                                " s) is shorter than the sampling interval: the transient is not resolved");
-    if (!out.whiteness.white && out.whiteness.autocorrelation_time.tau <= 1.0) {
+    const auto& w = out.whiteness;
+    const std::string not_white = "residual is not white (Ljung-Box p = " + significant(w.ljung_box.p_value, 3) + ", " +
+                                  fixed(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma)";
+    if (!w.white && out.fit.status == FitStatus::singular) {
+        // A singular fit's intervals are infinite, widened or not: there is no interval to advise.
+        out.warnings.push_back(not_white);
+    } else if (!w.white && w.autocorrelation_time.tau <= 1.0) {
         // Rejected, yet no positive correlation to widen by (negative lag-1 correlation, or a structure the window
         // stops before): the widened intervals are the plain ones, which cannot be vouched for.
-        const auto& w = out.whiteness;
-        out.warnings.push_back("residual is not white (Ljung-Box p = " + sig3(w.ljung_box.p_value) + ", " +
-                               fixed(100.0 * w.fraction_inside, 1) +
-                               " % of ensemble lags inside +-2 sigma), but its integrated autocorrelation time is not "
-                               "above 1 sample: there is nothing to widen the intervals by, and they may still be too "
-                               "narrow");
-    } else if (!out.whiteness.white) {
-        const auto& w = out.whiteness;
+        out.warnings.push_back(not_white + ", but its integrated autocorrelation time is not above 1 sample: there is "
+                               "nothing to widen the intervals by, and they may still be too narrow");
+    } else if (!w.white) {
         out.warnings.push_back(
-            "residual is not white (Ljung-Box p = " + sig3(w.ljung_box.p_value) + ", " +
-            fixed(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma): the plain intervals are too "
-            "narrow by about x" + fixed(out.widened.inflation, 2) + " (autocorrelation time " +
-            fixed(w.autocorrelation_time.tau, 2) + " samples, effective n " +
+            not_white + ": the plain intervals are too narrow by about x" + fixed(out.widened.inflation, 2) +
+            " (autocorrelation time " + fixed(w.autocorrelation_time.tau, 2) + " samples, effective n " +
             fixed(static_cast<double>(n) / w.autocorrelation_time.tau, 0) + "); use the widened intervals" +
             (w.autocorrelation_time.window_found ? "" : " (a lower bound: the correlation outlasts the lags examined)"));
     }
     if (out.time_gaps > 0)
         out.warnings.push_back(std::to_string(out.time_gaps) + " gaps in time (spacing > 1.5x the median " +
-                               sig3(out.sample_period_s) +
+                               significant(out.sample_period_s, 3) +
                                " s): the fit uses the true times, the autocorrelation counts lags in samples");
+    if (!median_is_rate)
+        out.warnings.push_back("rows are " + stats::spacing_text(out.data.t_s) +
+                               ": the whiteness sequences and lags count samples at the mean spacing");
     if (!out.whiteness.adaptation.empty()) out.warnings.push_back("whiteness: " + out.whiteness.adaptation);
     return out;
 }

@@ -10,6 +10,17 @@
 #include "host/util/input_file.hpp"
 
 namespace driftlab::host::fit {
+namespace {
+
+/// Time units per second named by a time column's suffix (_ms, _us, _ns); 1 for seconds or no suffix.
+double units_per_second(const std::string& name) {
+    if (name.ends_with("_ms")) return 1e3;
+    if (name.ends_with("_us")) return 1e6;
+    if (name.ends_with("_ns")) return 1e9;
+    return 1.0;
+}
+
+}  // namespace
 
 std::vector<Series> series_from_log(const LogData& log, const std::vector<std::string>& names) {
     for (const auto& name : names) {
@@ -42,7 +53,10 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
     if (!time_column.empty()) {
         time_index = table.column_index(time_column);
     } else {
-        for (const char* candidate : {"t_s", "t", "time"}) {
+        // The first three were the only names once: a table holding several keeps the time it had.
+        for (const char* candidate : {"t_s", "t", "time", "time_s", "timestamp", "timestamp_s", "t_ms", "time_ms",
+                                      "timestamp_ms", "t_us", "time_us", "timestamp_us", "t_ns", "time_ns",
+                                      "timestamp_ns"}) {
             const auto it = std::find(table.names.begin(), table.names.end(), candidate);
             if (it != table.names.end()) {
                 time_index = static_cast<std::size_t>(it - table.names.begin());
@@ -51,6 +65,7 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
         }
     }
     std::vector<double> t_s(table.rows());
+    double index_period_s = 0.0;
     if (time_index) {
         t_s = table.columns[*time_index];
         for (std::size_t k = 1; k < t_s.size(); ++k)
@@ -59,8 +74,12 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
                                 "time column '" + table.names[*time_index] + "' does not increase at row " +
                                     std::to_string(k + 1) + " (" + format_double(t_s[k - 1]) + " then " +
                                     format_double(t_s[k]) + ")");
+        // Milliseconds taken as seconds had stretched every time constant a thousandfold.
+        const double per_second = units_per_second(table.names[*time_index]);
+        for (double& t : t_s) t /= per_second;
     } else {
         for (std::size_t k = 0; k < t_s.size(); ++k) t_s[k] = static_cast<double>(k) * sample_period_s;
+        index_period_s = sample_period_s;
     }
     for (const auto& name : names) {
         table.column_index(name);  // throws with the list of columns
@@ -75,6 +94,7 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
         s.name = table.names[c];
         s.source = table.source_name;
         s.t_s = t_s;
+        s.index_period_s = index_period_s;
         s.values = table.columns[c];
         out.push_back(std::move(s));
     }

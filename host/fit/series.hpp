@@ -18,6 +18,7 @@ struct Series {
     std::string unit;                ///< "counts" for log channels, else "" (the table's own unit)
     std::optional<Channel> channel;  ///< set for log channels: enables physical units
     std::vector<double> t_s;         ///< [s] strictly increasing (for tables without time: sample index x period)
+    double index_period_s = 0.0;     ///< > 0 for a table without a time column: t_s is the row index x this
     std::vector<double> values;
     std::vector<double> raw_values;  ///< raw codes beside a smoothed channel (log column raw_<name>), or empty
 };
@@ -26,9 +27,10 @@ struct Series {
 /// are a UsageError listing the channels).
 std::vector<Series> series_from_log(const LogData& log, const std::vector<std::string>& names = {});
 
-/// Columns of a plain table. Time: the column `time_column` if given, else a column named t_s, t or time
-/// if present, else sample index x `sample_period_s`. Every other column is a series unless `names`
-/// selects some. Time must increase strictly (DataError otherwise).
+/// Columns of a plain table. Time: the column `time_column` if given, else the first of t_s, t, time, then
+/// time_s, timestamp, timestamp_s and t/time/timestamp with _ms, _us or _ns, if present, else sample index x
+/// `sample_period_s`. A time column whose name ends in _ms, _us or _ns is converted to seconds. Every other column
+/// is a series unless `names` selects some. Time must increase strictly (DataError otherwise).
 std::vector<Series> series_from_table(const NumericTable& table, const std::vector<std::string>& names = {},
                                       const std::string& time_column = "", double sample_period_s = 1.0);
 

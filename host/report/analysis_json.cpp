@@ -17,7 +17,7 @@ nlohmann::json estimate_json(const fit::Estimate& plain, const fit::Estimate& wi
 
 }  // namespace
 
-nlohmann::json whiteness_json(const stats::WhitenessResult& w, double sample_period_s, bool arrays) {
+nlohmann::json whiteness_json(const stats::WhitenessResult& w, bool arrays) {
     nlohmann::json out = {
         {"fraction_inside", json_number(w.fraction_inside)},
         {"ljung_box_p", json_number(w.ljung_box.p_value)},
@@ -33,7 +33,7 @@ nlohmann::json whiteness_json(const stats::WhitenessResult& w, double sample_per
     };
     if (arrays) {
         std::vector<double> lag_s(w.ensemble_rho.size());
-        for (std::size_t d = 0; d < lag_s.size(); ++d) lag_s[d] = static_cast<double>(d) * sample_period_s;
+        for (std::size_t d = 0; d < lag_s.size(); ++d) lag_s[d] = static_cast<double>(d) * w.sample_period_s;
         out["ensemble_lag_s"] = json_array(lag_s);
         out["ensemble_autocorrelation"] = json_array(w.ensemble_rho);
         out["autocorrelation"] = json_array(w.rho);
@@ -59,7 +59,7 @@ nlohmann::json fit_json(const fit::DriftAnalysis& a) {
         {"sample_period_s", json_number(a.sample_period_s)},
         {"time_gaps", a.time_gaps},
         {"interval_inflation", json_number(a.widened.inflation)},
-        {"whiteness", whiteness_json(a.whiteness, a.sample_period_s, false)},
+        {"whiteness", whiteness_json(a.whiteness, false)},
         {"warnings", a.warnings},
     };
     if (a.data.channel) {

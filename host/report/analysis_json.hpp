@@ -8,8 +8,8 @@
 
 namespace driftlab::host::report {
 
-/// {fraction_inside, ljung_box_p, white, ...}; with `arrays` also the lags and autocorrelations.
-nlohmann::json whiteness_json(const stats::WhitenessResult& w, double sample_period_s, bool arrays);
+/// {fraction_inside, ljung_box_p, white, ...}; with `arrays` also the lags (at w.sample_period_s) and autocorrelations.
+nlohmann::json whiteness_json(const stats::WhitenessResult& w, bool arrays);
 
 /// One channel of `driftlab fit --json`: C1, C2, T ({value, stderr, ci95, ci95_widened}), physical units,
 /// status, n, rms, whiteness, warnings.

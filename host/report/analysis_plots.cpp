@@ -77,7 +77,7 @@ Plot autocorrelation_plot(const fit::DriftAnalysis& a) {
     upper.dashed = lower.dashed = true;
     upper.color = lower.color = "#555555";
     for (std::size_t d = 0; d < w.ensemble_rho.size(); ++d) {
-        const double lag_s = static_cast<double>(d) * a.sample_period_s;
+        const double lag_s = static_cast<double>(d) * w.sample_period_s;
         rho.x.push_back(lag_s);
         rho.y.push_back(w.ensemble_rho[d]);
         upper.x.push_back(lag_s);

@@ -25,6 +25,9 @@ double median_spacing_s(std::span<const double> t_s);
 /// Mean spacing of increasing times [s]; 0 for fewer than two samples.
 double mean_spacing_s(std::span<const double> t_s);
 
+/// Whether spacing `a_s` lies within 5 % of `b_s` (jittered host time stamps); the test of period_agrees.
+bool spacing_agrees(double a_s, double b_s);
+
 /// Whether `period_s` agrees within 5 % (jittered host time stamps) with the median or the mean spacing of `t_s`:
 /// the mean for rows that come in bursts (an MPU6050 read 100 times a second in bursts 2 ms apart).
 bool period_agrees(std::span<const double> t_s, double period_s);

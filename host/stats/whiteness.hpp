@@ -28,6 +28,7 @@ struct WhitenessOptions {
 };
 
 struct WhitenessResult {
+    double sample_period_s = 0.0;           ///< [s] the spacing the lags count (the caller's sample period)
     // The paper's ensemble test.
     std::size_t sequences_used = 0;         ///< M actually used
     std::size_t sequence_samples = 0;       ///< samples per sequence

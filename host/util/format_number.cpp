@@ -36,4 +36,10 @@ std::string to_precision_of(double value, double uncertainty) {
     return buf;
 }
 
+std::string significant(double value, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    return buf;
+}
+
 }  // namespace driftlab::host

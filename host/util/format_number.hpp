@@ -17,4 +17,7 @@ void append_double(std::string& out, double value);
 /// (-0.00021, 505.08, 1052485, 3.1e+205). Six significant digits where the uncertainty is zero, infinite or NaN.
 std::string to_precision_of(double value, double uncertainty);
 
+/// `value` to `digits` significant digits (printf %g): a spacing or a p-value in a sentence, not a number to read back.
+std::string significant(double value, int digits);
+
 }  // namespace driftlab::host

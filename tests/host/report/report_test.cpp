@@ -17,6 +17,7 @@
 #include "host/report/gnuplot.hpp"
 #include "host/report/html_report.hpp"
 #include "host/report/json_out.hpp"
+#include "host/stats/whiteness.hpp"
 #include "host/util/error.hpp"
 #include "sim/model/rng.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -187,6 +188,47 @@ TEST(Report, AllanGridOfBurstyRowsIsTheirMeanSpacingAndGapsAreWarned) {
                 << section.html;
         }
     }
+}
+
+// The report's expected share of lags inside +-2 sigma for a white residual is what this estimator gives: the
+// biased R(d) has variance (L-d)/L^2 of the bound's 1/L, so P(|Z| < 2 sqrt(L/(L-d))) averaged over d = 1..L-1,
+// 98.87 % for L = 50 (not the 95.45 % of a normal variable at 2 sigma).
+TEST(Report, WhitenessSentenceStatesWhatWhiteNoiseGives) {
+    sim::Rng rng(11, 3);
+    double sum = 0.0;
+    const int runs = 200;
+    for (int r = 0; r < runs; ++r) {
+        std::vector<double> w(4000);
+        for (double& v : w) v = rng.normal();
+        sum += stats::test_whiteness(w, 1.0).fraction_inside;
+    }
+    EXPECT_NEAR(sum / runs, 0.9887, 0.003);
+    const TempDir dir("report_white");
+    fit::FileAnalysisRequest request;
+    request.path = write_log(dir);
+    ReportOptions options;
+    options.plots = false;
+    const std::string html = render_html_report(fit::analyse_file(request), options);
+    EXPECT_NE(html.find("about 98.9 % of the lags"), std::string::npos);
+    EXPECT_EQ(html.find("95.5 %"), std::string::npos);
+}
+
+// Fig. 4's lag axis is in the spacing the sequences count: rows in bursts (5 rows 2 ms apart, 20 bursts a second)
+// count at their mean 10 ms, so a 5 s sequence ends near lag 5 s, not 25 s.
+TEST(Report, Fig4LagAxisFollowsTheWhitenessSpacing) {
+    fit::Series s;
+    s.name = "gx";
+    s.source = "bursts.csv";
+    sim::Rng rng(5, 1);
+    for (int burst = 0; burst < 1200; ++burst)
+        for (int i = 0; i < 5; ++i) {
+            s.t_s.push_back(1.0 + 0.05 * burst + 0.002 * i);
+            s.values.push_back(3.0 * (1.0 - std::exp(-s.t_s.back() / 20.0)) + 0.25 * rng.normal());
+        }
+    fit::AnalysisOptions o;
+    o.whiteness.sequence_length_s = 5.0;
+    const Plot p = autocorrelation_plot(fit::analyse_drift(s, o));
+    EXPECT_NEAR(p.series.front().x.back(), 5.0, 0.05);
 }
 
 }  // namespace
