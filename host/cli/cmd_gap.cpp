@@ -313,7 +313,7 @@ void register_gap(CLI::App& app) {
                     "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
                     "LSB (its resolution in the column's unit: deg/s or g unless UNIT is mdps, rad/s, mg or m/s2), "
                     "e.g. gyro=col1:0.00875 or gyro=gx:1.33e-4:rad/s; repeat per channel");
-    cmd->add_option("--tau0", o->tau0_s, "Plain recordings: the raw sample period [s] (timing from a t_s/t/time column "
+    cmd->add_option("--tau0", o->tau0_s, "Plain recordings: the raw sample period [s] (timing from a time column, as fit finds it, "
                                          "if there is one)")
         ->check(positive_number());
     cmd->add_option("--block", o->block, "Plain recordings: samples averaged per output (an order-0 smoother of that "
