@@ -84,8 +84,12 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& d
     out.n = n;
     out.scale_exponent = scale_exponent(data);
     const int e2 = out.scale_exponent;
-    std::vector<double> y(n);
-    for (std::size_t k = 0; k < n; ++k) y[k] = std::ldexp(data[k], -e2);
+    std::vector<double> scaled;  // only where scaling is needed: the gap diagnosis fits thousands of long series
+    if (e2 != 0) {
+        scaled.resize(n);
+        for (std::size_t k = 0; k < n; ++k) scaled[k] = std::ldexp(data[k], -e2);
+    }
+    const std::vector<double>& y = e2 != 0 ? scaled : data;
     if (options.start) {
         out.start.parameters = {std::ldexp(options.start->c1, -e2), std::ldexp(options.start->c2, -e2),
                                 options.start->t_s};
