@@ -12,6 +12,7 @@
 #include "host/log/numeric_table.hpp"
 #include "host/stats/whiteness.hpp"
 #include "sim/model/rng.hpp"
+#include "tests/support/numeric_table.hpp"
 
 namespace driftlab::host::fit {
 namespace {
@@ -31,11 +32,7 @@ std::vector<double> drift_values(const std::vector<double>& t_since_on, std::uin
 }
 
 NumericTable table_of(std::vector<std::string> names, std::vector<std::vector<double>> columns) {
-    NumericTable t;
-    t.source_name = "table.csv";
-    t.names = std::move(names);
-    t.columns = std::move(columns);
-    return t;
+    return test_support::numeric_table("table.csv", std::move(names), std::move(columns));
 }
 
 TEST(TimeAxis, ARowIndexIsSaidNotPassedOffAsSeconds) {

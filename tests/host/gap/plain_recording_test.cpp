@@ -11,16 +11,13 @@
 #include "host/util/format_number.hpp"
 #include "sim/model/adc.hpp"
 #include "sim/model/sensor.hpp"
+#include "tests/support/numeric_table.hpp"
 
 namespace driftlab::host::gap {
 namespace {
 
 NumericTable table(std::vector<std::string> names, std::vector<std::vector<double>> columns) {
-    NumericTable t;
-    t.source_name = "rec.txt";
-    t.names = std::move(names);
-    t.columns = std::move(columns);
-    return t;
+    return test_support::numeric_table("rec.txt", std::move(names), std::move(columns));
 }
 
 TEST(PlainRecording, BlocksOfCodesAroundMidScaleTimedAtTheirLastSample) {
