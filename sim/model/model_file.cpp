@@ -197,7 +197,9 @@ void read_firmware(TableReader& r, proto::ConfigPayload& fw, const FirmwareAdjus
     // options over the file's).
     if (const auto refusal = firmware_refusal(fw)) {
         throw ConfigError(r.full(refusal->field), r.line(refusal->field),
-                          refusal->reason + (adjust ? " (with the command line's firmware options)" : ""));
+                          refusal->reason + (adjust ? " (on the configuration that would run: the file's firmware "
+                                                      "fields with any the preset or the command line sets over them)"
+                                                    : ""));
     }
 }
 

@@ -58,7 +58,11 @@ TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
     const RunResult too_many =
         run_driftlab({"hil", "--model", model, "--conversions", "30", "--duration", "1", "-o", out}, dir.path());
     EXPECT_EQ(too_many.exit_code, 5) << too_many.output;
-    EXPECT_NE(too_many.output.find("with the command line's firmware options"), std::string::npos) << too_many.output;
+    EXPECT_NE(too_many.output.find("conversions_per_output 30) gives a conversion period of 21 ticks"), std::string::npos)
+        << too_many.output;
+    EXPECT_NE(too_many.output.find("on the configuration that would run: the file's firmware fields with any the preset or "
+                                   "the command line sets over them"),
+              std::string::npos) << too_many.output;
 }
 
 // 10 ms of jitter on 40 ms per channel reordered conversions: the gyro read code 0 on every row and hil exited 0.
