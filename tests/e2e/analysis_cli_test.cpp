@@ -28,7 +28,7 @@ TEST(AnalysisCli, WhitenessPrintsTheWarningsFitPrints) {
     const RunResult fit = run_driftlab({"fit", table}, dir.path());
     const RunResult white = run_driftlab({"whiteness", table}, dir.path());
     ASSERT_EQ(white.exit_code, 0) << white.output;
-    const std::string gap_warning = "warning: 1 gaps in time (spacing > 1.5x the median 1 s)";
+    const std::string gap_warning = "warning: 1 gaps in time (spacing > 1.5x the median 1 s; the longest 31 s)";
     EXPECT_NE(fit.output.find(gap_warning), std::string::npos) << fit.output;
     EXPECT_NE(white.output.find(gap_warning), std::string::npos) << white.output;
     const RunResult json = run_driftlab({"whiteness", table, "--json"}, dir.path());
