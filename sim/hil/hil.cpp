@@ -121,7 +121,8 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
         host.act(t, requests);
         for (const auto& frame : requests) link.to_firmware().send(t, frame);
 
-        if (options.progress && t >= next_report_s) {
+        // The end is reported once, after the loop: a stream run awaiting its last RAW runs past the duration.
+        if (options.progress && t >= next_report_s && t < options.duration_s) {
             options.progress(std::min(t / options.duration_s, 1.0));
             next_report_s = t + report_step_s;
         }

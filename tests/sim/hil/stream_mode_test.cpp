@@ -2,6 +2,9 @@
 // still on the line when the run's time is up, and is awaited until the firmware acknowledges the stop).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "host/util/error.hpp"
 #include "tests/sim/hil/hil_test_support.hpp"
 
@@ -30,6 +33,19 @@ TEST(StreamMode, EveryOutputOfALosslessRunIsARowWithItsRawCodes) {
         for (const HilRecord& row : r.rows) EXPECT_TRUE(row.has_raw) << row.t_s;
         EXPECT_NEAR(r.rows.back().t_s - r.rows.front().t_s, (static_cast<double>(outputs) - 1.0) * period_s, 1e-3);
     }
+}
+
+// Progress rises and reports the end once: a stream run awaiting its last RAW past the duration had reported 1.0
+// inside the loop too, and the terminal's bar printed its 100 % line twice.
+TEST(StreamMode, ProgressReportsTheEndOnce) {
+    HilOptions o = streamed(0.5, 10.0, true);
+    std::vector<double> reports;
+    o.progress = [&reports](double f) { reports.push_back(f); };
+    run_into_memory(o);
+    ASSERT_GE(reports.size(), 2u);
+    EXPECT_EQ(std::count(reports.begin(), reports.end(), 1.0), 1);
+    EXPECT_EQ(reports.back(), 1.0);
+    EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
 }
 
 TEST(StreamMode, RawModeKeepsAsManyRowsAsSmoothedOnly) {
