@@ -24,12 +24,6 @@ struct FitCommandOptions {
     std::string plot_dir;
 };
 
-std::string num(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
 /// An estimate and its interval written to the precision of its standard error: a table in g or rad/s shows its
 /// digits (C1 = -0.000213), where fixed decimals had printed -0.000.
 std::string at_precision(const fit::Estimate& e, double v) { return to_precision_of(v, e.stderr_); }
@@ -70,8 +64,8 @@ void print_table(const fit::FileAnalysis& file) {
     for (const auto& s : file.series) {
         if (!s.analysis) continue;
         const fit::DriftAnalysis& a = *s.analysis;
-        std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << num(a.data.t_s.front(), 3) << " .. "
-                  << num(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
+        std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << fixed_point(a.data.t_s.front(), 3) << " .. "
+                  << fixed_point(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
                   << ")\n";
         const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w) {
             std::cout << "  " << name << " = " << at_precision(p, p.value) << " +- " << at_precision(p, p.stderr_)
@@ -83,9 +77,9 @@ void print_table(const fit::FileAnalysis& file) {
         row("C2", a.plain.c2, a.widened.c2);
         row("T ", a.plain.t_s, a.widened.t_s);
         const auto& w = a.whiteness;
-        std::cout << "  whiteness: " << num(100.0 * w.fraction_inside, 1) << " % of lags inside +-2 sigma ("
-                  << w.sequences_used << " sequences of " << num(w.sequence_length_s, 1) << " s), Ljung-Box Q("
-                  << w.ljung_box.lags << ") = " << num(w.ljung_box.statistic, 2) << ", p = " << w.ljung_box.p_value
+        std::cout << "  whiteness: " << fixed_point(100.0 * w.fraction_inside, 1) << " % of lags inside +-2 sigma ("
+                  << w.sequences_used << " sequences of " << fixed_point(w.sequence_length_s, 1) << " s), Ljung-Box Q("
+                  << w.ljung_box.lags << ") = " << fixed_point(w.ljung_box.statistic, 2) << ", p = " << w.ljung_box.p_value
                   << " -> " << (w.white ? "white" : "not white") << "\n";
         print_analysis_warnings(a);
     }

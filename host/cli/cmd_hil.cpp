@@ -24,6 +24,7 @@
 #include "host/log/log_writer.hpp"
 #include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 #include "sim/hil/hil.hpp"
@@ -211,9 +212,7 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     if (o.warm_s) h.warm_up_s = *o.warm_s;
     // A billion seconds (32 years of board time) is far beyond any run, and keeps the output count exact.
     if (h.duration_s > 1e9) {
-        char given[32];
-        std::snprintf(given, sizeof given, "%g", h.duration_s);
-        throw UsageError(std::string("--duration: at most 1e9 s, got ") + given);
+        throw UsageError("--duration: at most 1e9 s, got " + significant(h.duration_s, 6));
     }
     if (h.duration_s < fw.output_period_ms / 1000.0)
         throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");

@@ -1,11 +1,11 @@
 // Option checks for numbers and paths; see commands.hpp.
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "driftlab/proto/messages.hpp"
 #include "host/cli/commands.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -25,9 +25,8 @@ CLI::Validator number_check(const char* name, bool zero_allowed) {
 std::uint16_t output_period_ms(double period_s, const std::string& option) {
     const double ms = period_s * 1000.0;
     if (!(ms >= proto::kOutputPeriodMinMs && ms <= proto::kOutputPeriodMaxMs) || std::abs(ms - std::round(ms)) > 1e-6) {
-        char got[32];
-        std::snprintf(got, sizeof got, "%g", period_s);
-        throw UsageError(option + ": expected a whole number of milliseconds in [0.01, 60] s, got " + got);
+        throw UsageError(option + ": expected a whole number of milliseconds in [0.01, 60] s, got " +
+                         significant(period_s, 6));
     }
     return static_cast<std::uint16_t>(std::lround(ms));
 }

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
@@ -11,12 +10,6 @@
 
 namespace driftlab::host::fit {
 namespace {
-
-std::string fixed(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
 
 Series restrict_range(const Series& s, double t_min_s, double t_max_s) {
     Series out = s;
@@ -54,8 +47,12 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
         throw DataError(series.source, 0, where + " is constant (" + format_double(*lo) + "): nothing to fit");
 
     out.sample_period_s = stats::median_spacing_s(out.data.t_s);
-    for (std::size_t k = 1; k < n; ++k)
-        out.time_gaps += out.data.t_s[k] - out.data.t_s[k - 1] > 1.5 * out.sample_period_s;
+    double longest_spacing_s = 0.0;
+    for (std::size_t k = 1; k < n; ++k) {
+        const double dt = out.data.t_s[k] - out.data.t_s[k - 1];
+        out.time_gaps += dt > 1.5 * out.sample_period_s;
+        longest_spacing_s = std::max(longest_spacing_s, dt);
+    }
     // Rows in bursts (an MPU6050 read 100 times a second in bursts 2 ms apart) come far less often than their median
     // spacing says: 50 s at the median had made sequences of 247 s. L seconds hold L / mean samples.
     const double mean_spacing_s = stats::mean_spacing_s(out.data.t_s);
@@ -84,14 +81,14 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
                                significant(span_s, 3) + " s: eq. 1 counts from power-on; subtract the power-on time (or the "
                                "first row's) from the time column");
     if (out.fit.status == FitStatus::singular)
-        out.warnings.push_back("fit is singular (condition number " + fixed(out.fit.condition_number, 0) +
+        out.warnings.push_back("fit is singular (condition number " + fixed_point(out.fit.condition_number, 0) +
                                "): C1, C2 and T are not separately determined by these data; no intervals");
     if (out.fit.status == FitStatus::iteration_limit)
         out.warnings.push_back("fit stopped at the evaluation limit (" + std::to_string(out.fit.function_evaluations) +
                                "); parameters are the last iterate");
     if (out.fit.start.t_at_upper_end || out.fit.parameters.t_s > 3.0 * out.data.t_s.back())
-        out.warnings.push_back("T (" + fixed(out.fit.parameters.t_s, 1) + " s) is beyond the record (ends at t = " +
-                               fixed(out.data.t_s.back(), 1) +
+        out.warnings.push_back("T (" + fixed_point(out.fit.parameters.t_s, 1) + " s) is beyond the record (ends at t = " +
+                               fixed_point(out.data.t_s.back(), 1) +
                                " s): the data show no settling, so only the initial slope C1/T is well determined (" +
                                to_precision_of(out.plain.initial_slope.value, out.plain.initial_slope.stderr_) +
                                " +- " +
@@ -102,7 +99,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
                                " s) is shorter than the sampling interval: the transient is not resolved");
     const auto& w = out.whiteness;
     const std::string not_white = "residual is not white (Ljung-Box p = " + significant(w.ljung_box.p_value, 3) + ", " +
-                                  fixed(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma)";
+                                  fixed_point(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma)";
     if (!w.white && out.fit.status == FitStatus::singular) {
         // A singular fit's intervals are infinite, widened or not: there is no interval to advise.
         out.warnings.push_back(not_white);
@@ -113,21 +110,19 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
                                "nothing to widen the intervals by, and they may still be too narrow");
     } else if (!w.white) {
         out.warnings.push_back(
-            not_white + ": the plain intervals are too narrow by about x" + fixed(out.widened.inflation, 2) +
-            " (autocorrelation time " + fixed(w.autocorrelation_time.tau, 2) + " samples, effective n " +
-            fixed(static_cast<double>(n) / w.autocorrelation_time.tau, 0) + "); use the widened intervals" +
+            not_white + ": the plain intervals are too narrow by about x" + fixed_point(out.widened.inflation, 2) +
+            " (autocorrelation time " + fixed_point(w.autocorrelation_time.tau, 2) + " samples, effective n " +
+            fixed_point(static_cast<double>(n) / w.autocorrelation_time.tau, 0) + "); use the widened intervals" +
             (w.autocorrelation_time.window_found ? "" : " (a lower bound: the correlation outlasts the lags examined)"));
     }
-    if (out.time_gaps > 0) {
-        double longest_s = 0.0;
-        for (std::size_t k = 1; k < n; ++k) longest_s = std::max(longest_s, out.data.t_s[k] - out.data.t_s[k - 1]);
-        // In rows that come in bursts every burst's end counts (17270 on the MPU6050 file): the longest says whether
-        // a real gap is among them.
+    // In rows that come in bursts every burst's end counts (17270 on the MPU6050 file): the longest says whether a
+    // real gap is among them.
+    if (out.time_gaps > 0)
         out.warnings.push_back(std::to_string(out.time_gaps) + " gaps in time (spacing > 1.5x the median " +
-                               significant(out.sample_period_s, 3) + " s; the longest " + significant(longest_s, 3) +
-                               " s" + (median_is_rate ? "" : ", most of them the ends of the bursts the rows come in") +
+                               significant(out.sample_period_s, 3) + " s; the longest " +
+                               significant(longest_spacing_s, 3) + " s" +
+                               (median_is_rate ? "" : ", most of them the ends of the bursts the rows come in") +
                                "): the fit uses the true times, the autocorrelation counts lags in samples");
-    }
     if (!median_is_rate)
         out.warnings.push_back("rows are " + stats::spacing_text(out.data.t_s) +
                                ": the whiteness sequences and lags count samples at the mean spacing");

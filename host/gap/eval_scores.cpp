@@ -10,6 +10,7 @@
 #include "host/gap/truth.hpp"
 #include "host/report/json_out.hpp"
 #include "host/stats/binomial_interval.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
 
@@ -21,12 +22,7 @@ std::optional<double> median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-std::string fixed(double v, int digits) {
-    std::ostringstream s;
-    s.precision(digits);
-    s << std::fixed << v;
-    return s.str();
-}
+std::string fixed(double v, int digits) { return fixed_point(v, digits); }
 
 std::string fixed(const std::optional<double>& v) { return v ? fixed(*v, 2) : "-"; }
 

@@ -97,13 +97,7 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
     return bands;
 }
 
-std::string fixed(double v, int digits = 2) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(digits);
-    s << v;
-    return s.str();
-}
+std::string fixed(double v, int digits = 2) { return fixed_point(v, digits); }
 
 std::string parameter_list(const std::vector<std::pair<std::string, double>>& params) {
     std::string out;

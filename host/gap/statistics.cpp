@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +11,7 @@
 #include "host/gap/code_density.hpp"
 #include "host/gap/event_statistics.hpp"
 #include "host/gap/spectral.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
 
@@ -47,11 +47,7 @@ private:
     std::vector<Cell>* layout_;
 };
 
-std::string short_number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
+std::string short_number(double v) { return significant(v, 3); }
 
 std::string seconds_label(double s) { return short_number(s) + "s"; }
 

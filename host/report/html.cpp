@@ -2,7 +2,8 @@
 #include "host/report/html.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::report {
 
@@ -21,18 +22,8 @@ std::string html_escape(const std::string& text) {
     return out;
 }
 
-std::string sig(double value, int digits) {
-    if (!std::isfinite(value)) return "-";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
-    return buf;
-}
+std::string sig(double value, int digits) { return std::isfinite(value) ? significant(value, digits) : "-"; }
 
-std::string fixed(double value, int decimals) {
-    if (!std::isfinite(value)) return "-";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-    return buf;
-}
+std::string fixed(double value, int decimals) { return std::isfinite(value) ? fixed_point(value, decimals) : "-"; }
 
 }  // namespace driftlab::host::report

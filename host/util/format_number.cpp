@@ -42,4 +42,10 @@ std::string significant(double value, int digits) {
     return buf;
 }
 
+std::string fixed_point(double value, int decimals) {
+    char buf[400];  // %f of 1e308 has 309 digits before the point
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+    return buf;
+}
+
 }  // namespace driftlab::host

@@ -20,4 +20,7 @@ std::string to_precision_of(double value, double uncertainty);
 /// `value` to `digits` significant digits (printf %g): a spacing or a p-value in a sentence, not a number to read back.
 std::string significant(double value, int digits);
 
+/// `value` with `decimals` digits after the point (printf %f), for tables and sentences.
+std::string fixed_point(double value, int decimals);
+
 }  // namespace driftlab::host
