@@ -45,27 +45,22 @@ std::string printable(const std::string& text) {
     return out;
 }
 
-/// The offset of the event to read as the recording's start: events carry no checksum, so one flipped bit in the
-/// start's text (a disk or copy fault) had left the whole capture undecodable. Only where the capture holds no
-/// exact start and exactly one event is a bit from it; else nullopt.
+/// In a capture that holds no start, the offset of the event to read as one: events carry no checksum, so one
+/// flipped bit in the start's text (a disk or copy fault) had left the whole capture undecodable. Only where exactly
+/// one event is a bit from it; else nullopt.
 std::optional<std::uint64_t> damaged_start(const std::string& capture) {
     io::CaptureReader scan(capture);
     std::optional<std::uint64_t> found;
     int near = 0;
-    while (const auto rec = scan.next()) {
-        if (rec->kind != io::CaptureKind::event) continue;
-        const std::string text = rec->text();
-        if (text == "start") return std::nullopt;
-        if (one_bit_from_start(text)) found = rec->offset, ++near;
-    }
+    while (const auto rec = scan.next())
+        if (rec->kind == io::CaptureKind::event && one_bit_from_start(rec->text())) found = rec->offset, ++near;
     return near == 1 ? found : std::nullopt;
 }
 
-void run_decode(const DecodeOptions& o) {
-    refuse_writing_over_input(o.output, "-o", o.capture, "capture");
-    const std::optional<std::uint64_t> rescued_start = damaged_start(o.capture);
-    io::CaptureReader reader(o.capture);
-    io::LogAssembler assembler(o.output, reader.header());
+/// Feeds every record of `reader` to `assembler`, the event at `rescued_start` read as the start; true when the
+/// log started.
+bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& assembler,
+          std::optional<std::uint64_t> rescued_start) {
     bool started = false;
     while (auto rec = reader.next()) {
         if (rec->kind == io::CaptureKind::rx) {
@@ -89,26 +84,40 @@ void run_decode(const DecodeOptions& o) {
             started = started || assembler.started();
         }
     }
+    return started;
+}
+
+void run_decode(const DecodeOptions& o) {
+    refuse_writing_over_input(o.output, "-o", o.capture, "capture");
+    auto reader = std::make_unique<io::CaptureReader>(o.capture);
+    auto assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
+    bool started = feed(o, *reader, *assembler, std::nullopt);
+    // Only a capture without a start is read again, for a damaged one (the assembler wrote nothing without it).
+    if (const auto rescued_start = started ? std::nullopt : damaged_start(o.capture)) {
+        reader = std::make_unique<io::CaptureReader>(o.capture);
+        assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
+        started = feed(o, *reader, *assembler, rescued_start);
+    }
     if (!started) {
         throw DataError(o.capture, 0, "the capture holds no recording start (the recorder stopped during the "
                                       "handshake), so there is no log to rebuild");
     }
-    assembler.finish();
-    for (const auto& d : reader.damaged())
+    assembler->finish();
+    for (const auto& d : reader->damaged())
         std::fprintf(stderr, "driftlab: warning: %s: byte offsets %llu..%llu: damaged, %llu bytes skipped to the next whole "
                              "records (frames in them count as lost)\n",
                      o.capture.c_str(), static_cast<unsigned long long>(d.offset),
                      static_cast<unsigned long long>(d.offset + d.bytes), static_cast<unsigned long long>(d.bytes));
-    for (const std::uint64_t offset : reader.retimed())
+    for (const std::uint64_t offset : reader->retimed())
         std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: a record's time is damaged (it is after the next "
                              "record's); read at the previous record's time\n",
                      o.capture.c_str(), static_cast<unsigned long long>(offset));
-    if (reader.truncated_at()) {
+    if (reader->truncated_at()) {
         std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: last record cut (recorder killed while "
                              "writing); decoded up to it\n",
-                     o.capture.c_str(), static_cast<unsigned long long>(*reader.truncated_at()));
+                     o.capture.c_str(), static_cast<unsigned long long>(*reader->truncated_at()));
     }
-    const io::AssemblyStats& s = assembler.stats();
+    const io::AssemblyStats& s = assembler->stats();
     std::printf("decoded %llu rows to %s; frames %llu, lost %llu (%.3f %%), gaps %llu\n",
                 static_cast<unsigned long long>(s.rows), o.output.c_str(), static_cast<unsigned long long>(s.frames),
                 static_cast<unsigned long long>(s.lost_frames), io::loss_percent(s),
