@@ -180,6 +180,11 @@ void check_raw_noise(const toml::table& root, const SimModel& m) {
     }
 }
 
+// Where a FirmwareAdjust runs (hil), the firmware fields checked are not the file's alone: whose figures they are.
+constexpr const char* kAdjustedConfig =
+    "on the configuration that would run: the file's firmware fields with any the preset or the command line sets "
+    "over them";
+
 void read_firmware(TableReader& r, proto::ConfigPayload& fw, const FirmwareAdjust& adjust) {
     r.integer("output_period_ms", fw.output_period_ms, proto::kOutputPeriodMinMs, proto::kOutputPeriodMaxMs);
     r.integer("conversions_per_output", fw.conversions_per_output, 1, proto::kConversionsPerOutputMax);
@@ -197,9 +202,7 @@ void read_firmware(TableReader& r, proto::ConfigPayload& fw, const FirmwareAdjus
     // options over the file's).
     if (const auto refusal = firmware_refusal(fw)) {
         throw ConfigError(r.full(refusal->field), r.line(refusal->field),
-                          refusal->reason + (adjust ? " (on the configuration that would run: the file's firmware "
-                                                      "fields with any the preset or the command line sets over them)"
-                                                    : ""));
+                          refusal->reason + (adjust ? std::string(" (") + kAdjustedConfig + ")" : ""));
     }
 }
 
@@ -281,13 +284,13 @@ void check_clock_jitter(const toml::table& root, const proto::ConfigPayload& fw,
         // A tenth: two neighbours' instants then swap with probability Phi(-10/sqrt(2)) < 1e-12.
         const double limit_s = 0.1 * interval_s * rate;
         if (jitter_s <= limit_s) continue;
-        char text[300];
+        char text[512];
         std::snprintf(text, sizeof text,
                       "%g s is not well below a channel's conversion interval (%g s: output_period_ms %u / "
-                      "conversions_per_output %u%s); at most %g s (a tenth), or conversions would be reordered",
+                      "conversions_per_output %u%s%s); at most %g s (a tenth), or conversions would be reordered",
                       jitter_s, interval_s * rate, static_cast<unsigned>(fw.output_period_ms),
-                      static_cast<unsigned>(fw.conversions_per_output),
-                      adjusted ? ", with the command line's firmware options" : "", limit_s);
+                      static_cast<unsigned>(fw.conversions_per_output), adjusted ? ", " : "",
+                      adjusted ? kAdjustedConfig : "", limit_s);
         throw ConfigError("effects.clock_jitter.jitter_s", line_of(*e->get("jitter_s")), text);
     }
 }
