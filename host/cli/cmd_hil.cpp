@@ -270,8 +270,8 @@ void run_hil_command(const HilCliOptions& o) {
                                {"model_name", h.model.name},
                                {"preset", o.preset},
                                {"target", o.target},
-                               {"warm_up_s", std::to_string(h.warm_up_s)},
-                               {"link_baud", std::to_string(h.model.link.baud)}};
+                               {"warm_up_s", format_double(h.warm_up_s)},
+                               {"link_baud", format_double(h.model.link.baud)}};
     HilLog log(path, extra);
     h.on_ready = [&log](const proto::VersionPayload& v, const proto::ConfigPayload& c) { log.open(v, c); };
     if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar;

@@ -33,6 +33,18 @@ TEST(HilCli, ConversionsPerOutputMakesA100HzLogPossible) {
     EXPECT_NEAR((log.t_s.back() - log.t_s.front()) / static_cast<double>(log.size() - 1), 0.01, 1e-5);
 }
 
+// The run's settings are written as the shortest text that reads back to the same number: a
+// warm-up of 1234.5 s is "1234.5", the paper's 9600-baud radio "9600" (not "9600.000000").
+TEST(HilCli, TheLogsSettingsAreWrittenAsTheNumbersTheyAre) {
+    TempDir dir("hilmeta");
+    const std::string out = dir.file("h.csv");
+    const RunResult r = run_driftlab({"hil", "--duration", "3", "--warm", "1234.5", "-o", out}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const host::LogData log = host::read_log(out);
+    EXPECT_EQ(log.metadata.get("warm_up_s"), "1234.5");
+    EXPECT_EQ(log.metadata.get("link_baud"), "9600");
+}
+
 TEST(HilCli, TooManyConversionsForThePeriodIsRefusedByField) {
     TempDir dir("hil100bad");
     const RunResult r =
