@@ -1,4 +1,5 @@
 // `driftlab gap-eval`: the withheld-effect benchmark of the gap diagnosis (host/gap/evaluate, docs/gap.md §Evaluation).
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -15,6 +16,7 @@
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/time_left.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -110,8 +112,11 @@ void run(const GapEvalCommandOptions& o) {
     const bool tty = isatty(2);
     auto progress_for = [tty](const char* what) -> std::function<void(std::size_t, std::size_t)> {
         if (!tty) return {};
-        return [what](std::size_t done, std::size_t total) {
-            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu", what, done, total);
+        const auto started = std::chrono::steady_clock::now();
+        return [what, started](std::size_t done, std::size_t total) {
+            const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            const double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
+            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu  %s\033[K", what, done, total, time_left(fraction, elapsed_s).c_str());
             if (done == total) std::fprintf(stderr, "\n");
         };
     };

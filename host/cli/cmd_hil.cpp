@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -27,6 +28,7 @@
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/time_left.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/model_file.hpp"
@@ -142,12 +144,18 @@ nlohmann::json link_json(const sim::LinkCounters& c) {
             {"bytes_corrupted", c.bytes_corrupted}, {"bytes_delivered", c.bytes_delivered}};
 }
 
-void progress_bar(double fraction) {
-    const int width = 40;
-    const int filled = static_cast<int>(fraction * width);
-    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(),
-                 static_cast<int>(fraction * 100.0));
-    if (fraction >= 1.0) std::fprintf(stderr, "\n");
+// A bar with the time left, since an AVR run in simavr can take minutes.
+std::function<void(double)> progress_bar() {
+    const auto started = std::chrono::steady_clock::now();
+    return [started](double fraction) {
+        const int width = 40;
+        const int filled = static_cast<int>(fraction * width);
+        const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        std::fprintf(stderr, "\r[%s%s] %3d%%  %s\033[K", std::string(filled, '#').c_str(),
+                     std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100.0),
+                     time_left(fraction, elapsed_s).c_str());
+        if (fraction >= 1.0) std::fprintf(stderr, "\n");
+    };
 }
 
 // Options that belong to another way of running are refused rather than silently ignored.
@@ -274,7 +282,7 @@ void run_hil_command(const HilCliOptions& o) {
                                {"link_baud", format_double(h.model.link.baud)}};
     HilLog log(path, extra);
     h.on_ready = [&log](const proto::VersionPayload& v, const proto::ConfigPayload& c) { log.open(v, c); };
-    if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar;
+    if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar();
 
     const auto wall0 = std::chrono::steady_clock::now();
     const sim::HilSummary s = run_board(h, [&log](const sim::HilRecord& r) { log.write(r); });
