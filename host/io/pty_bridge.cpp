@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <stdlib.h>
 #include <termios.h>
 #include <unistd.h>
@@ -68,7 +69,14 @@ void PtyBridge::remove_link() {
         std::filesystem::remove(link_path_, ec);
 }
 
+std::uint64_t PtyBridge::queued_bytes() const {
+    int n = 0;
+    if (slave_keep_fd_ < 0 || ::ioctl(slave_keep_fd_, FIONREAD, &n) != 0 || n < 0) return 0;
+    return static_cast<std::uint64_t>(n);
+}
+
 void PtyBridge::close_pty() {
+    dropped_bytes_ += queued_bytes();  // closing the terminal discards them
     if (slave_keep_fd_ >= 0) ::close(slave_keep_fd_);
     if (master_fd_ >= 0) ::close(master_fd_);
     slave_keep_fd_ = -1;

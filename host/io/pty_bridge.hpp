@@ -42,12 +42,15 @@ public:
     void plug();
     bool plugged() const { return master_fd_ >= 0; }
 
-    std::uint64_t dropped_bytes() const { return dropped_bytes_; }
+    /// Board output nobody will read: dropped for want of room or while unplugged, discarded unread with a closed
+    /// terminal, and what the terminal still holds now (a client that has left reads it no more).
+    std::uint64_t dropped_bytes() const { return dropped_bytes_ + queued_bytes(); }
 
 private:
     void open_pty();
     void close_pty();
     void remove_link();  // the stable link, if a symbolic link is what is there
+    std::uint64_t queued_bytes() const;  // written to the terminal, not yet read from it
 
     std::string link_path_;
     std::string slave_path_;

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -48,4 +51,37 @@ TEST(PtyBridge, AStaleLinkIsRepointedAndTheLinkGoesWithTheBridge) {
     }
     EXPECT_FALSE(fs::exists(fs::symlink_status(link)));
     fs::remove_all(link.parent_path());
+}
+
+namespace {
+
+// The line discipline hands a write on to the slave side asynchronously: wait (up to 2 s) for it to arrive.
+std::uint64_t dropped_once_arrived(const PtyBridge& bridge, std::uint64_t expected) {
+    for (int i = 0; i < 200 && bridge.dropped_bytes() != expected; ++i) ::usleep(10000);
+    return bridge.dropped_bytes();
+}
+
+}  // namespace
+
+// Bytes the board wrote that no client read count as dropped, whether the terminal still holds them or an unplug
+// discarded them; what a client read does not count.
+TEST(PtyBridge, BoardOutputNobodyReadIsCountedAsDropped) {
+    PtyBridge bridge;
+    const std::uint8_t frame[100] = {};
+    bridge.write(frame, sizeof frame);
+    EXPECT_EQ(dropped_once_arrived(bridge, 100), 100u);  // nobody has read them (yet)
+
+    const int client = ::open(bridge.slave_path().c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    ASSERT_GE(client, 0);
+    std::uint8_t got[64];
+    ASSERT_EQ(::read(client, got, 40), 40);
+    EXPECT_EQ(bridge.dropped_bytes(), 60u);
+    ::close(client);
+
+    bridge.unplug();  // the 60 still queued go with the terminal
+    EXPECT_EQ(bridge.dropped_bytes(), 60u);
+    bridge.write(frame, 10);  // unplugged: nowhere to go
+    EXPECT_EQ(bridge.dropped_bytes(), 70u);
+    bridge.plug();
+    EXPECT_EQ(bridge.dropped_bytes(), 70u);
 }
