@@ -64,7 +64,14 @@ struct HilCliOptions {
     std::string pty_link;            // --pty: stable symlink to the pseudo-terminal
 };
 
-std::atomic<bool> g_pty_stop{false};
+// Ctrl-C and SIGTERM end a run between events, so that the log keeps every row whole (a kill mid-write had cut the
+// last one) and the summary says how far it got.
+std::atomic<bool> g_stop{false};
+
+void stop_on_signals() {
+    std::signal(SIGINT, [](int) { g_stop.store(true); });
+    std::signal(SIGTERM, [](int) { g_stop.store(true); });
+}
 
 // --pty: the native board serves its UART on a pseudo-terminal, paced to the wall clock, until the duration
 // (only when given) or Ctrl-C; a host such as `driftlab record --port PATH` configures and reads it
@@ -86,9 +93,8 @@ void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
     const auto code = [&sensor](Channel c, std::uint64_t tick) {
         return sensor.convert(c, static_cast<double>(tick) / fw::kTickHz).code;
     };
-    std::signal(SIGINT, [](int) { g_pty_stop.store(true); });
-    std::signal(SIGTERM, [](int) { g_pty_stop.store(true); });
-    const io::PtyBoardSummary s = io::serve_pty_board(p, code, g_pty_stop, [](const std::string& path) {
+    stop_on_signals();
+    const io::PtyBoardSummary s = io::serve_pty_board(p, code, g_stop, [](const std::string& path) {
         std::printf("%s\n", path.c_str());
         std::fflush(stdout);
     });
@@ -284,10 +290,16 @@ void run_hil_command(const HilCliOptions& o) {
     h.on_ready = [&log](const proto::VersionPayload& v, const proto::ConfigPayload& c) { log.open(v, c); };
     if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar();
 
+    h.stop = &g_stop;
+    stop_on_signals();
     const auto wall0 = std::chrono::steady_clock::now();
     const sim::HilSummary s = run_board(h, [&log](const sim::HilRecord& r) { log.write(r); });
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     log.close();
+    if (s.interrupted && h.progress) std::fprintf(stderr, "\n");
+    const std::string interrupted =
+        "interrupted after " + significant(s.simulated_s, 6) + " s of board time (" + significant(h.duration_s, 6) +
+        " s asked for): " + path + " holds the " + std::to_string(s.host.rows) + " rows made so far";
 
     const double rtf = wall_s > 0.0 ? s.simulated_s / wall_s : 0.0;
     if (o.json) {
@@ -323,7 +335,7 @@ void run_hil_command(const HilCliOptions& o) {
               {"tx_overflow", s.status.tx_overflow},
               {"dropped", s.status.dropped}}}};
 #ifdef DRIFTLAB_HAVE_SIM_AVR
-        if (o.cycles && o.target == "avr") {
+        if (o.cycles && o.target == "avr" && !s.interrupted) {
             const auto b = cycle_budget(o, h);
             nlohmann::json fns = nlohmann::json::object();
             for (const auto& f : b.functions)
@@ -338,7 +350,9 @@ void run_hil_command(const HilCliOptions& o) {
                                {"functions", fns}};
         }
 #endif
+        j["interrupted"] = s.interrupted;
         report::write_json(std::cout, j);
+        if (s.interrupted) throw Interrupted(interrupted);
         return;
     }
     // With the log on standard output (-o -), the summary goes beside it, not into it.
@@ -356,10 +370,11 @@ void run_hil_command(const HilCliOptions& o) {
               << "simulated " << std::setprecision(6) << s.simulated_s << " s in " << std::setprecision(3) << wall_s
               << " s wall (" << std::lround(rtf) << "x real time)\n";
 #ifdef DRIFTLAB_HAVE_SIM_AVR
-    if (o.cycles && o.target == "avr")
+    if (o.cycles && o.target == "avr" && !s.interrupted)
         out << "measured in a separate run of this configuration: " << kCycleRun << "\n"
             << sim::avr::format_cycle_budget(cycle_budget(o, h));
 #endif
+    if (s.interrupted) throw Interrupted(interrupted);
 }
 
 }  // namespace

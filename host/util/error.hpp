@@ -49,4 +49,12 @@ public:
     int exit_code() const override { return 5; }
 };
 
+/// The user stopped a run that has an end of its own (Ctrl-C, SIGTERM) before it: what it made so far is kept and
+/// said; 130 (128 + SIGINT), as a shell reports an interrupted command, so that a script does not go on as if done.
+class Interrupted : public Error {
+public:
+    using Error::Error;
+    int exit_code() const override { return 130; }
+};
+
 }  // namespace driftlab::host

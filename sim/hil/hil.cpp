@@ -95,7 +95,12 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
     // Handshake and closing take a few round trips; each request may be retried max_tries times.
     const double give_up_s = options.duration_s + 4.0 * plan.max_tries * plan.reply_timeout_s + 60.0;
     double t = 0.0;
+    bool interrupted = false;
     while (!host.done()) {
+        if (options.stop && options.stop->load()) {
+            interrupted = true;
+            break;
+        }
         t = earliest({board->next_conversion_s(), link.to_firmware().next_arrival_s(), link.to_host().next_arrival_s(),
                       host.next_action_s()});
         if (t == std::numeric_limits<double>::infinity())
@@ -137,7 +142,8 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
     s.status = host.status();
     s.conversions = board->conversions();
     s.simulated_s = t;
-    if (options.progress) options.progress(1.0);
+    s.interrupted = interrupted;
+    if (options.progress && !interrupted) options.progress(1.0);
     return s;
 }
 

@@ -4,6 +4,7 @@
 // and seed give the same records bit for bit. docs/sim.md §Host-in-the-loop.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -38,6 +39,8 @@ struct HilOptions {
     /// Called once when the handshake has verified the configuration, before the first record; may be empty
     /// (a log writer needs VERSION for its metadata).
     std::function<void(const proto::VersionPayload&, const proto::ConfigPayload&)> on_ready;
+    /// When it turns true (a Ctrl-C), the run ends at its next event with what it has; may be null.
+    const std::atomic<bool>* stop = nullptr;
 };
 
 /// Everything a run counted; the JSON summary of `driftlab hil` is made of these.
@@ -50,6 +53,7 @@ struct HilSummary {
     proto::StatusPayload status{};    ///< firmware counters at the end of the run
     std::uint64_t conversions = 0;    ///< ADC conversions the sensor model produced
     double simulated_s = 0.0;         ///< virtual time at the end [s since power-on]
+    bool interrupted = false;         ///< ended by HilOptions::stop, not by its duration
 };
 
 /// Why the link cannot carry the firmware's output (its frames per output period need more than link.baud), with

@@ -3,9 +3,12 @@
 // faster than the paper's 9600-baud radio (sim/models/hundred_hz.toml).
 #include <gtest/gtest.h>
 
+#include <csignal>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -43,6 +46,28 @@ TEST(HilCli, TheLogsSettingsAreWrittenAsTheNumbersTheyAre) {
     const host::LogData log = host::read_log(out);
     EXPECT_EQ(log.metadata.get("warm_up_s"), "1234.5");
     EXPECT_EQ(log.metadata.get("link_baud"), "9600");
+}
+
+// Ctrl-C ends a run between events: every row made so far is in the log, whole (the default SIGINT action had cut
+// the last one mid-write, so that fit and gap refused the file), and the exit code says the run did not finish.
+TEST(HilCli, CtrlCKeepsEveryRowMadeSoFarWholeAndSaysSo) {
+    TempDir dir("hilint");
+    const std::string out = dir.file("h.csv");
+    const pid_t pid = spawn_driftlab({"hil", "--duration", "1e9", "-o", out}, dir.file("hil.out"));
+    // Until a few thousand rows are on disk however loaded the machine (at most a minute).
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    std::error_code ec;
+    while ((!std::filesystem::exists(out, ec) || std::filesystem::file_size(out, ec) < 200000) &&
+           std::chrono::steady_clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ::kill(pid, SIGINT);
+    const RunResult r = wait_child(pid, dir.file("hil.out"));
+    EXPECT_EQ(r.exit_code, 130) << r.output;
+    EXPECT_NE(r.output.find("interrupted after"), std::string::npos) << r.output;
+    const host::LogData log = host::read_log(out);  // strict: a cut last line is an error
+    EXPECT_GT(log.size(), 2000u);
+    EXPECT_EQ(log.seq.back() - log.seq.front() + 1, log.size());  // no row lost on the way out
+    EXPECT_NE(r.output.find("holds the " + std::to_string(log.size()) + " rows"), std::string::npos) << r.output;
 }
 
 TEST(HilCli, TooManyConversionsForThePeriodIsRefusedByField) {
