@@ -192,6 +192,10 @@ void apply_firmware_options(const HilCliOptions& o, proto::ConfigPayload& fw) {
     if (o.stream) fw.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
 }
 
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+std::string firmware_elf(const HilCliOptions& o) { return o.elf.empty() ? sim::avr::default_elf_path() : o.elf; }
+#endif
+
 sim::HilOptions build_options(const HilCliOptions& o) {
     check_option_combinations(o);
     const auto preset = sim::preset_from_name(o.preset);
@@ -232,7 +236,7 @@ sim::HilOptions build_options(const HilCliOptions& o) {
         throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
     if (o.target == "avr") {
 #ifdef DRIFTLAB_HAVE_SIM_AVR
-        sim::avr::AvrBoardOptions avr{o.elf.empty() ? sim::avr::default_elf_path() : o.elf, o.gdb_port};
+        sim::avr::AvrBoardOptions avr{firmware_elf(o), o.gdb_port};
         try {
             h.make_board = sim::avr::avr_board_factory(avr);
         } catch (const sim::avr::AvrError& e) {
@@ -265,7 +269,7 @@ sim::HilSummary run_board(const sim::HilOptions& h, const sim::RecordSink& on_re
 const std::string kCycleRun = "5 s of streaming after 0.5 s (no POLL, so no receive interrupts)";
 
 sim::avr::CycleBudget cycle_budget(const HilCliOptions& o, const sim::HilOptions& h) {
-    return sim::avr::measure_cycle_budget(o.elf.empty() ? sim::avr::default_elf_path() : o.elf, h.model.firmware, 0.5,
+    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5,
                                           5.0, true);
 }
 #endif
@@ -290,8 +294,19 @@ void run_hil_command(const HilCliOptions& o) {
     h.on_ready = [&log](const proto::VersionPayload& v, const proto::ConfigPayload& c) { log.open(v, c); };
     if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar();
 
-    h.stop = &g_stop;
-    stop_on_signals();
+    // Under a debugger the stopped CPU waits inside the board's run, where no stop is looked at: Ctrl-C keeps its
+    // default action there.
+    if (o.gdb_port == 0) {
+        h.stop = &g_stop;
+        stop_on_signals();
+    }
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+    // The CPU is stopped until a debugger continues it: say so, or the run looks hung.
+    if (o.gdb_port > 0)
+        std::fprintf(stderr, "waiting for avr-gdb on port %d (the CPU is stopped until it continues): avr-gdb %s -ex "
+                             "'target remote :%d'\n",
+                     o.gdb_port, firmware_elf(o).c_str(), o.gdb_port);
+#endif
     const auto wall0 = std::chrono::steady_clock::now();
     const sim::HilSummary s = run_board(h, [&log](const sim::HilRecord& r) { log.write(r); });
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
