@@ -33,6 +33,12 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "driftlab 0.1.0");
     for (auto reg : kCommands) reg(app);
+    // The parser's refusals read like every other error, and say whose help lists the options.
+    app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+        std::string command = "driftlab";
+        for (const CLI::App* sub : a->get_subcommands()) command += " " + sub->get_name();
+        return "driftlab: error: " + std::string(e.what()) + "\n(" + command + " --help lists the options)\n";
+    });
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

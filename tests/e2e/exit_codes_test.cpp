@@ -15,6 +15,9 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     const RunResult unknown = run_driftlab({"gap", "x.csv", "--no-such-flag"}, dir.path());
     EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
     EXPECT_NE(unknown.output.find("--no-such-flag"), std::string::npos) << unknown.output;
+    // Worded as every other error, and naming the help of the command it was given to.
+    EXPECT_EQ(unknown.output.rfind("driftlab: error: ", 0), 0u) << unknown.output;
+    EXPECT_NE(unknown.output.find("driftlab gap --help"), std::string::npos) << unknown.output;
     const RunResult invalid = run_driftlab({"gap", "x.csv", "--tau0", "-1"}, dir.path());  // a validator's refusal
     EXPECT_EQ(invalid.exit_code, 2) << invalid.output;
     EXPECT_NE(invalid.output.find("--tau0: expected a number > 0, got '-1'"), std::string::npos) << invalid.output;
