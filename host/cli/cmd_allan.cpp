@@ -100,6 +100,7 @@ json terms_json(const stats::NoiseTermFit& t, const UnitInfo& u) {
         if (t.at_bound[k]) term["upper_bound"] = report::json_number(t.upper_bound[k]);
         j[stats::kNoiseTermSymbols[k]] = term;
     }
+    // An unresolved term's NamedValue::value is NaN: null here, never a 0 to paste into a filter's configuration.
     json phys = json::object();
     for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit)) phys[nv.key] = report::json_number(nv.value);
     j["physical"] = phys;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -52,6 +53,42 @@ TEST(AllanCli, TheTextSaysWhenGapsSkipMostTerms) {
     EXPECT_NE(r.output.find("the longest gap-free stretch is 2 s"), std::string::npos) << r.output;
     const RunResult whole = run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02"}, dir.path());
     EXPECT_EQ(whole.output.find("note: gaps"), std::string::npos) << whole.output;
+}
+
+// The zig-zag has no flat floor and no long-term wander: the fit pins B, K and R at 0. Every output says so; none
+// writes a number a Kalibr or VINS configuration would take for a measured zero: JSON null where the text says
+// "not resolved (<= bound)", the Kalibr random walk (K) included. The keys stay.
+TEST(AllanCli, UnresolvedTermsAreNullInJsonAndMarkedInTextInEveryUnit) {
+    TempDir dir("allanunresolved");
+    const std::string table = table_at_50_hz(dir);
+    const std::vector<std::string> base = {"allan", table, "--kind", "rate", "--tau0", "0.02", "--unit", "deg/s"};
+    std::vector<std::string> with_json = base;
+    with_json.push_back("--json");
+    const RunResult j_run = run_driftlab(with_json, dir.path());
+    ASSERT_EQ(j_run.exit_code, 0) << j_run.output;
+    const RunResult text = run_driftlab(base, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.output;
+    const auto terms = nlohmann::json::parse(j_run.output)["channels"]["gx"]["terms"];
+    const auto kalibr = nlohmann::json::parse(j_run.output)["channels"]["gx"]["kalibr"];
+    // The text line of `key`, e.g. "      K_deg_per_s_per_sqrt_s     not resolved (<= 0.0088222)".
+    const auto text_line = [&](const std::string& key) {
+        const std::size_t at = text.output.find(" " + key + " ");
+        return at == std::string::npos ? std::string() : text.output.substr(at, text.output.find('\n', at) - at);
+    };
+    const std::map<std::string, std::string> kalibr_key = {{"N", "gyroscope_noise_density"}, {"K", "gyroscope_random_walk"}};
+    for (const char* sym : {"B", "K", "R"}) ASSERT_TRUE(terms[sym]["std_error"].is_null()) << sym << ": " << terms[sym];
+    ASSERT_FALSE(terms["N"]["std_error"].is_null());
+    for (const auto& [key, value] : terms["physical"].items()) {
+        const bool unresolved = terms[key.substr(0, 1)]["std_error"].is_null();
+        EXPECT_EQ(value.is_null(), unresolved) << key << " = " << value;
+        EXPECT_EQ(text_line(key).find("not resolved (<= ") != std::string::npos, unresolved) << text_line(key);
+    }
+    for (const auto& [sym, key] : kalibr_key) {
+        ASSERT_TRUE(kalibr.contains(key)) << kalibr;
+        const bool unresolved = terms[sym]["std_error"].is_null();
+        EXPECT_EQ(kalibr[key].is_null(), unresolved) << key << " = " << kalibr[key];
+        EXPECT_EQ(text_line(key).find("not resolved (<= ") != std::string::npos, unresolved) << text_line(key);
+    }
 }
 
 TEST(AllanCli, TheTimeColumnIsNotASeries) {
