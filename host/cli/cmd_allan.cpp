@@ -27,7 +27,7 @@ struct AllanCommandOptions {
     std::string path;
     std::vector<std::string> channels;  ///< empty or "all" = every channel / column
     std::string kind;                   ///< plain files: rate | phase (required); logs: rate only
-    double tau0_s = 0.0;                ///< plain files: required; logs: default median spacing
+    double tau0_s = 0.0;                ///< plain files: required; logs: default stats::grid_period_s
     std::string unit;                   ///< plain files: the data's rate unit (deg/s, rad/s, m/s^2, g, ...)
     std::string grid = "octave";
     int per_decade = 10;
@@ -100,6 +100,7 @@ json terms_json(const stats::NoiseTermFit& t, const UnitInfo& u) {
         if (t.at_bound[k]) term["upper_bound"] = report::json_number(t.upper_bound[k]);
         j[stats::kNoiseTermSymbols[k]] = term;
     }
+    // An unresolved term's NamedValue::value is NaN: null here, never a 0 to paste into a filter's configuration.
     json phys = json::object();
     for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit)) phys[nv.key] = report::json_number(nv.value);
     j["physical"] = phys;
@@ -241,8 +242,9 @@ void run(const AllanCommandOptions& o) {
     json out = {{"file", o.path}, {"kind", req.kind == stats::InputKind::rate ? "rate" : "phase"},
                 {"grid", o.grid}, {"confidence", req.confidence}, {"channels", json::object()}};
     for (const fit::Series& s : series) {
-        const double spacing = stats::median_spacing_s(s.t_s);
-        const double tau0 = o.tau0_s > 0.0 ? o.tau0_s : spacing;
+        // The report's rule, so `allan` and the report's Allan section give a log the same tau0: at the median, rows
+        // in bursts had left 80 % of the grid gaps and ended the curve at 16 ms (the MPU6050 recording).
+        const double tau0 = o.tau0_s > 0.0 ? o.tau0_s : stats::grid_period_s(s.t_s);
         if (!(tau0 > 0.0)) throw DataError(o.path, 0, "series '" + s.name + "': fewer than two samples");
         // The grid places each sample at its time / tau0: rows faster than tau0 would be packed onto consecutive
         // slots (their time, and a real gap after them, lost), slower ones spread over empty slots. tau0 must be the
@@ -296,7 +298,9 @@ void register_allan(CLI::App& app) {
     cmd->add_option("file", o->path, "Canonical log, or a plain numeric file (then --kind and --tau0)")->required();
     cmd->add_option("--channel", o->channels, "Channels (log) or columns (plain file): NAME[,NAME] or all")->delimiter(',');
     cmd->add_option("--kind", o->kind, "Plain files: rate (rate / fractional-frequency samples) or phase (integrated)");
-    cmd->add_option("--tau0", o->tau0_s, "Sample period [s]; required for plain files, logs default to the median spacing")
+    cmd->add_option("--tau0", o->tau0_s,
+                    "Sample period [s]; required for plain files, logs default to the rows' median spacing (their "
+                    "mean for rows in bursts, as report)")
         ->check(positive_number());
     cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, deg/h, rad/s, m/s^2, cm/s^2, g, or any name)");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32");

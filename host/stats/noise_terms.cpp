@@ -163,11 +163,12 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
 
 namespace {
 
-// Term `term` in data units times `si_per_unit`, then `convert`ed, with its bound when the fit left it unresolved.
+// Term `term` in data units times `si_per_unit`, then `convert`ed; an unresolved term has no value, only its bound.
 template <class Convert>
 NamedValue term_value(std::string key, const NoiseTermFit& fit, std::size_t term, double si_per_unit, Convert convert) {
-    return {std::move(key), convert(fit.value[term] * si_per_unit), !fit.at_bound[term],
-            convert(fit.upper_bound[term] * si_per_unit)};
+    const bool resolved = !fit.at_bound[term];
+    return {std::move(key), resolved ? convert(fit.value[term] * si_per_unit) : std::numeric_limits<double>::quiet_NaN(),
+            resolved, convert(fit.upper_bound[term] * si_per_unit)};
 }
 
 }  // namespace

@@ -64,15 +64,17 @@ enum class RateQuantity : std::uint8_t { unknown, angular_rate, acceleration };
 /// One reported number: key with its unit in the name (e.g. "N_deg_per_sqrt_h") and value.
 struct NamedValue {
     std::string key;
+    /// NaN when not resolved: a 0 read without `resolved` would pass for a measured zero noise density (and be
+    /// pasted into a filter's configuration as one); JSON writes it as null.
     double value = 0.0;
-    bool resolved = true;      ///< false: the term is at its bound (NoiseTermFit::at_bound), value 0
+    bool resolved = true;      ///< false: the term is at its bound (NoiseTermFit::at_bound)
     double upper_bound = 0.0;  ///< NoiseTermFit::upper_bound in this key's unit, when not resolved
 };
 
 /// The terms in physical units. `si_per_unit` converts one data unit to rad/s (angular rate) or m/s^2
 /// (acceleration). Angular rate: Q deg, N deg/s/sqrt(Hz) and deg/sqrt(h), B deg/s and deg/h, K deg/s/sqrt(s)
 /// and deg/h/sqrt(h), R deg/s^2 and deg/h^2. Acceleration: Q m/s, N m/s^2/sqrt(Hz) and m/s/sqrt(h), B m/s^2
-/// and mg, K m/s^2/sqrt(s), R m/s^3. Empty for RateQuantity::unknown. Unresolved terms carry their bound.
+/// and mg, K m/s^2/sqrt(s), R m/s^3. Empty for RateQuantity::unknown. Unresolved terms carry their bound and a NaN value.
 std::vector<NamedValue> physical_terms(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit);
 
 /// Kalibr imu.yaml continuous-time densities: {gyroscope|accelerometer}_noise_density = N [rad/s/sqrt(Hz) |

@@ -5,10 +5,13 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 
 #include "e2e_support.hpp"
+#include "host/fit/file_analysis.hpp"
+#include "host/report/allan_section.hpp"
 
 namespace driftlab::e2e {
 namespace {
@@ -52,6 +55,77 @@ TEST(AllanCli, TheTextSaysWhenGapsSkipMostTerms) {
     EXPECT_NE(r.output.find("the longest gap-free stretch is 2 s"), std::string::npos) << r.output;
     const RunResult whole = run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02"}, dir.path());
     EXPECT_EQ(whole.output.find("note: gaps"), std::string::npos) << whole.output;
+}
+
+// The zig-zag has no flat floor and no long-term wander: the fit pins B, K and R at 0. Every output says so; none
+// writes a number a Kalibr or VINS configuration would take for a measured zero: JSON null where the text says
+// "not resolved (<= bound)", the Kalibr random walk (K) included. The keys stay.
+TEST(AllanCli, UnresolvedTermsAreNullInJsonAndMarkedInTextInEveryUnit) {
+    TempDir dir("allanunresolved");
+    const std::string table = table_at_50_hz(dir);
+    const std::vector<std::string> base = {"allan", table, "--kind", "rate", "--tau0", "0.02", "--unit", "deg/s"};
+    std::vector<std::string> with_json = base;
+    with_json.push_back("--json");
+    const RunResult j_run = run_driftlab(with_json, dir.path());
+    ASSERT_EQ(j_run.exit_code, 0) << j_run.output;
+    const RunResult text = run_driftlab(base, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.output;
+    const auto terms = nlohmann::json::parse(j_run.output)["channels"]["gx"]["terms"];
+    const auto kalibr = nlohmann::json::parse(j_run.output)["channels"]["gx"]["kalibr"];
+    // The text line of `key`, e.g. "      K_deg_per_s_per_sqrt_s     not resolved (<= 0.0088222)".
+    const auto text_line = [&](const std::string& key) {
+        const std::size_t at = text.output.find(" " + key + " ");
+        return at == std::string::npos ? std::string() : text.output.substr(at, text.output.find('\n', at) - at);
+    };
+    const std::map<std::string, std::string> kalibr_key = {{"N", "gyroscope_noise_density"}, {"K", "gyroscope_random_walk"}};
+    for (const char* sym : {"B", "K", "R"}) ASSERT_TRUE(terms[sym]["std_error"].is_null()) << sym << ": " << terms[sym];
+    ASSERT_FALSE(terms["N"]["std_error"].is_null());
+    for (const auto& [key, value] : terms["physical"].items()) {
+        const bool unresolved = terms[key.substr(0, 1)]["std_error"].is_null();
+        EXPECT_EQ(value.is_null(), unresolved) << key << " = " << value;
+        EXPECT_EQ(text_line(key).find("not resolved (<= ") != std::string::npos, unresolved) << text_line(key);
+    }
+    for (const auto& [sym, key] : kalibr_key) {
+        ASSERT_TRUE(kalibr.contains(key)) << kalibr;
+        const bool unresolved = terms[sym]["std_error"].is_null();
+        EXPECT_EQ(kalibr[key].is_null(), unresolved) << key << " = " << kalibr[key];
+        EXPECT_EQ(text_line(key).find("not resolved (<= ") != std::string::npos, unresolved) << text_line(key);
+    }
+}
+
+// A log whose rows come in bursts (5 rows 2 ms apart every 50 ms, 100 a second, as the MPU6050 recording) gets the
+// report's tau0 from `allan` too: the mean spacing, (1199 x 0.05 + 0.008) s / 5999 = 9.995 ms, and as the report's
+// Allan section computes it. At the median, 2 ms, `allan` had made a grid 80 % gaps with a curve ending at 16 ms.
+TEST(AllanCli, ALogInBurstsGetsTheReportsTau0) {
+    TempDir dir("allanbursts");
+    const std::string log = dir.file("bursts.csv");
+    {
+        std::ofstream out(log);
+        out << "# driftlab-log: 1\n# source: test\nt_s,seq,gyro,accel_x,accel_y,accel_z\n";
+        std::mt19937_64 rng(5);
+        std::normal_distribution<double> g(0.0, 0.1);
+        for (int k = 0; k < 6000; ++k) {
+            out << 0.05 * (k / 5) + 0.002 * (k % 5) << ',' << k << ',' << 505.0 + g(rng);
+            for (int c = 0; c < 3; ++c) out << ',' << 470.0 + g(rng);
+            out << '\n';
+        }
+    }
+    const RunResult r = run_driftlab({"allan", log, "--channel", "gyro", "--keep-drift", "--json"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto gyro = nlohmann::json::parse(r.output)["channels"]["gyro"];
+    const double tau0 = gyro["tau0_s"].get<double>();
+    EXPECT_NEAR(tau0, (1199 * 0.05 + 0.008) / 5999, 1e-12);
+    EXPECT_LT(gyro["gap_samples"].get<double>(), 0.01 * gyro["samples"].get<double>());
+    EXPECT_GT(gyro["tau"].back().get<double>(), 5.0);
+
+    host::fit::FileAnalysisRequest request;
+    request.path = log;
+    request.names = {"gyro"};
+    const host::fit::FileAnalysis file = host::fit::analyse_file(request);
+    ASSERT_EQ(file.failures(), 0u) << file.failure_summary();
+    const host::report::AllanSection section = host::report::allan_section({&*file.series[0].analysis});
+    ASSERT_EQ(section.plots.size(), 1u);
+    EXPECT_NEAR(section.plots[0].series[0].x.front() / tau0, 1.0, 1e-12);  // the octave grid's first tau is tau0
 }
 
 TEST(AllanCli, TheTimeColumnIsNotASeries) {

@@ -151,6 +151,7 @@ TEST(NoiseTerms, ATermPinnedAtZeroIsUnresolvedWithTheCurvesBound) {
     for (const NamedValue& nv : phys) {
         if (nv.key != "B_deg_per_h") continue;
         EXPECT_FALSE(nv.resolved);
+        EXPECT_TRUE(std::isnan(nv.value)) << nv.value;
         EXPECT_NEAR(nv.upper_bound / (fit.upper_bound[2] * 3600.0), 1.0, 1e-12);
     }
     // A disabled term is not fitted, so it is not "pinned" either.
@@ -182,6 +183,33 @@ TEST(NoiseTerms, PhysicalUnitsForAGyroInDegPerSecond) {
     EXPECT_NEAR(k[0].value, rad_per_deg, 1e-15);
     EXPECT_EQ(k[1].key, "gyroscope_random_walk");
     EXPECT_TRUE(physical_terms(fit, RateQuantity::unknown, 1.0).empty());
+}
+
+// An unresolved term has no value in any unit: a 0 would read as a measured zero density and be pasted into a
+// Kalibr or VINS configuration as one. Its bound converts as a value would.
+TEST(NoiseTerms, UnresolvedTermsHaveNoPhysicalOrKalibrValue) {
+    NoiseTermFit fit;
+    fit.ok = true;
+    fit.value = {0.0, 1.0, 0.0, 0.0, 0.0};
+    fit.at_bound = {false, false, false, true, false};  // K pinned at 0; Q, B and R disabled
+    fit.upper_bound[3] = 2.0;
+    const double rad_per_deg = std::numbers::pi / 180.0;
+    for (const NamedValue& nv : physical_terms(fit, RateQuantity::angular_rate, rad_per_deg)) {
+        if (nv.key.starts_with("K_")) {
+            EXPECT_FALSE(nv.resolved) << nv.key;
+            EXPECT_TRUE(std::isnan(nv.value)) << nv.key << " = " << nv.value;
+        } else {
+            EXPECT_TRUE(nv.resolved) << nv.key;
+            EXPECT_FALSE(std::isnan(nv.value)) << nv.key;
+        }
+    }
+    const auto k = kalibr_densities(fit, RateQuantity::acceleration, 0.01);
+    ASSERT_EQ(k.size(), 2u);
+    EXPECT_EQ(k[1].key, "accelerometer_random_walk");
+    EXPECT_FALSE(k[1].resolved);
+    EXPECT_TRUE(std::isnan(k[1].value)) << k[1].value;
+    EXPECT_NEAR(k[1].upper_bound, 0.02, 1e-15);
+    EXPECT_NEAR(k[0].value, 0.01, 1e-15);
 }
 
 TEST(NoiseTerms, BiasInstabilityFactorIsSqrtTwoLnTwoOverPi) {
