@@ -303,9 +303,9 @@ void register_allan(CLI::App& app) {
                     "mean for rows in bursts, as report)")
         ->check(positive_number());
     cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, deg/h, rad/s, m/s^2, cm/s^2, g, or any name)");
-    cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32");
-    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->check(positive_number());
-    cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all");
+    cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
+    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->capture_default_str()->check(positive_number());
+    cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")->capture_default_str();
     auto* keep = cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
     cmd->add_flag("--remove-drift", o->remove_drift,
                   "Plain --kind rate files: fit and remove the turn-on drift (eq. 1) first, as for logs (the default there)")

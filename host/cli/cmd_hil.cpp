@@ -401,14 +401,14 @@ void register_hil(CLI::App& app) {
     cmd->add_option("--preset", opts->preset, "fig3 (4000 s from power-on at the model's output period) or fig2 (1000 outputs 0.1 s "
                                               "apart, raw and least-squares)")
         ->capture_default_str();
-    cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s]")->check(positive_number());
-    cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds");
-    cmd->add_option("--window", opts->window, "Least-squares window N [conversions]")->check(CLI::Range(1, 64));
+    cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s] (default: the preset's)")->check(positive_number());
+    cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds (default: the preset's, else the model's)");
+    cmd->add_option("--window", opts->window, "Least-squares window N [conversions] (default: the preset's, else the model's)")->check(CLI::Range(1, 64));
     cmd->add_option("--conversions", opts->conversions,
-                    "Conversions per channel per output (10 ms outputs need <= 12: docs/firmware.md)")
+                    "Conversions per channel per output (10 ms outputs need <= 12: docs/firmware.md; default: the preset's, else the model's)")
         ->check(CLI::Range(1, 64));
-    cmd->add_option("--order", opts->order, "Least-squares fit order")->check(CLI::Range(0, 1));
-    cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s]")
+    cmd->add_option("--order", opts->order, "Least-squares fit order (default: the preset's, else the model's)")->check(CLI::Range(0, 1));
+    cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s] (default: the preset's)")
         ->check(non_negative_number());
     cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)");
     cmd->add_option("--seed", opts->seed, "Seed of every random component")->capture_default_str()->check(seed_number());
