@@ -64,7 +64,8 @@ void print_one(const sim::EffectInfo& e) {
     const GapUse use = gap_use(e.name);
     std::cout << e.name << " (" << sim::stage_name(e.stage) << " stage): " << e.summary << "\n  " << e.equation << "\n  gap diagnosis: "
               << (use.candidate ? "a candidate, fitted " : "not a candidate: ") << use.text << "\n  in a gap --model file: " << use.in_model
-              << "\n\n[effects." << e.name << "]\n";
+              << "\n\n# At these defaults it changes nothing: set its sizes, put the table in a model file (TOML) and run\n"
+              << "# driftlab hil --model FILE (docs/effects.md, sim/models/ for examples).\n[effects." << e.name << "]\n";
     std::size_t width = 0;
     for (const sim::ParamInfo& p : e.params) width = std::max(width, p.key.size() + 3 + p.default_text.size());
     for (const sim::ParamInfo& p : e.params) {

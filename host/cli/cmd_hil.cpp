@@ -283,7 +283,12 @@ void run_hil_command(const HilCliOptions& o) {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (path != "-" && !parent.empty()) make_output_folder(parent.string(), "log");
 
+    // The effects the model file switches on, by name (their parameters are in the file), so that a log says what
+    // was simulated without the file beside it.
+    std::string effects;
+    for (const sim::EffectSpec& e : h.model.effects) effects += (effects.empty() ? "" : ",") + e.name;
     MetadataPairs extra = {{"seed", std::to_string(o.seed)},
+                               {"effects", effects.empty() ? "none" : effects},
                                {"model", o.model_file.empty() ? "paper (built in)" : o.model_file},
                                {"model_name", h.model.name},
                                {"preset", o.preset},
@@ -373,6 +378,7 @@ void run_hil_command(const HilCliOptions& o) {
     // With the log on standard output (-o -), the summary goes beside it, not into it.
     std::ostream& out = path == "-" ? std::cerr : std::cout;
     // Every count that takes an output away from the log, so that outputs and rows add up from the text alone.
+    if (!effects.empty()) out << "effects simulated: " << effects << "\n";
     out << "wrote " << s.host.rows << " rows to " << path;
     if (s.host.rows_missing_raw > 0) out << " (" << s.host.rows_missing_raw << " samples not logged: their RAW frame was lost)";
     out << "\n"

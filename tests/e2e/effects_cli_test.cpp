@@ -20,6 +20,7 @@ TEST(EffectsCli, EachEffectsTableParsesAndBuildsTheEffectAtItsDefaults) {
         ASSERT_EQ(r.exit_code, 0) << r.output;
         const std::size_t at = r.output.find("[effects." + info.name + "]\n");
         ASSERT_NE(at, std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("driftlab hil --model FILE"), std::string::npos) << r.output;  // how to use the table
         toml::table model;
         try {
             model = toml::parse(std::string_view(r.output).substr(at));

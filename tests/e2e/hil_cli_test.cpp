@@ -46,6 +46,16 @@ TEST(HilCli, TheLogsSettingsAreWrittenAsTheNumbersTheyAre) {
     const host::LogData log = host::read_log(out);
     EXPECT_EQ(log.metadata.get("warm_up_s"), "1234.5");
     EXPECT_EQ(log.metadata.get("link_baud"), "9600");
+    EXPECT_EQ(log.metadata.get("effects"), "none");
+
+    // A model file's effects are named in the log and in the summary.
+    const std::string model = dir.file("m.toml");
+    std::ofstream(model) << "[effects.gauss_markov]\nsigma_dps = 0.05\ntau_s = 30\n\n[effects.spikes]\nrate_hz = 0.01\n"
+                            "scale_counts = 5\n";
+    const RunResult with = run_driftlab({"hil", "--model", model, "--duration", "3", "-o", out}, dir.path());
+    ASSERT_EQ(with.exit_code, 0) << with.output;
+    EXPECT_EQ(host::read_log(out).metadata.get("effects"), "gauss_markov,spikes");
+    EXPECT_NE(with.output.find("effects simulated: gauss_markov,spikes"), std::string::npos) << with.output;
 }
 
 // Ctrl-C ends a run between events: every row made so far is in the log, whole (the default SIGINT action had cut
