@@ -14,6 +14,7 @@
 #include "host/report/gnuplot.hpp"
 #include "host/report/json_out.hpp"
 #include "host/stats/allan_pipeline.hpp"
+#include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/units.hpp"
@@ -53,13 +54,7 @@ UnitInfo unit_of_channel(Channel c) {
 }
 
 UnitInfo unit_of_name(const std::string& name) {
-    constexpr double kDeg = std::numbers::pi / 180.0;
-    if (name == "deg/s" || name == "dps") return {"deg/s", stats::RateQuantity::angular_rate, kDeg};
-    if (name == "deg/h") return {"deg/h", stats::RateQuantity::angular_rate, kDeg / 3600.0};
-    if (name == "rad/s") return {"rad/s", stats::RateQuantity::angular_rate, 1.0};
-    if (name == "m/s^2" || name == "m/s2") return {"m/s^2", stats::RateQuantity::acceleration, 1.0};
-    if (name == "cm/s^2" || name == "cm/s2") return {"cm/s^2", stats::RateQuantity::acceleration, 0.01};
-    if (name == "g") return {"g", stats::RateQuantity::acceleration, 9.80665};
+    if (const auto u = stats::rate_unit(name)) return {u->name, u->quantity, u->si_per_unit};
     return {name.empty() ? "unit" : name, stats::RateQuantity::unknown, 1.0};
 }
 
@@ -302,7 +297,7 @@ void register_allan(CLI::App& app) {
                     "Sample period [s]; required for plain files, logs default to the rows' median spacing (their "
                     "mean for rows in bursts, as report)")
         ->check(positive_number());
-    cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, deg/h, rad/s, m/s^2, cm/s^2, g, or any name)");
+    cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, dps, mdps, deg/h, rad/s, g, mg, m/s^2, cm/s^2, or any name: then no physical terms)");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
     cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->capture_default_str()->check(positive_number());
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")->capture_default_str();

@@ -12,6 +12,7 @@
 
 #include "driftlab/proto/messages.hpp"
 #include "host/fit/series.hpp"
+#include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -22,11 +23,6 @@ namespace {
 
 constexpr double kMidScale = 512.0;
 constexpr double kFullScale = 1023.0;
-
-// A column's unit and its value in the simulator's unit of the channel (deg/s; g).
-constexpr std::array<std::pair<std::string_view, double>, 3> kGyroUnits{
-    {{"deg/s", 1.0}, {"mdps", 1e-3}, {"rad/s", 180.0 / 3.14159265358979323846}}};
-constexpr std::array<std::pair<std::string_view, double>, 3> kAccelUnits{{{"g", 1.0}, {"mg", 1e-3}, {"m/s2", 1.0 / 9.80665}}};
 
 }  // namespace
 
@@ -44,12 +40,14 @@ ColumnMapping parse_column_mapping(const std::string& text) {
     // The last field is a unit when it does not start like a number (a column name may hold neither ':' nor one).
     const std::string last = text.substr(colon + 1);
     if (!last.empty() && std::isalpha(static_cast<unsigned char>(last.front()))) {
-        const auto units = m.channel == Channel::gyro ? kGyroUnits : kAccelUnits;
-        const auto unit = std::find_if(units.begin(), units.end(), [&last](const auto& u) { return last == u.first; });
-        if (unit == units.end())
-            throw UsageError("--as: unknown unit '" + last + "' for " + channel + " (" +
-                             (m.channel == Channel::gyro ? "deg/s, mdps, rad/s" : "g, mg, m/s2") + ") in '" + text + "'");
-        m.to_model_unit = unit->second;
+        const bool gyro = m.channel == Channel::gyro;
+        const stats::RateQuantity quantity = gyro ? stats::RateQuantity::angular_rate : stats::RateQuantity::acceleration;
+        const auto unit = stats::rate_unit(last);
+        if (!unit || unit->quantity != quantity)
+            throw UsageError("--as: unknown unit '" + last + "' for " + channel + " (" + stats::rate_unit_names(quantity) +
+                             ") in '" + text + "'");
+        // The simulator's unit of the channel: deg/s, g.
+        m.to_model_unit = unit->si_per_unit / (gyro ? stats::rate_unit("deg/s")->si_per_unit : stats::kStandardGravity);
         const auto previous = text.rfind(':', colon - 1);
         if (previous == std::string::npos || previous < eq)
             throw UsageError("--as: expected CHANNEL=COLUMN:LSB:UNIT, got '" + text + "'");

@@ -101,6 +101,11 @@ TEST(PlainRecording, AColumnInAnotherUnitReadsAsTheSameRecordingInDegreesPerSeco
     EXPECT_EQ(parse_column_mapping("gyro=gx:8.75:mdps").to_model_unit, 1e-3);
     EXPECT_EQ(parse_column_mapping("accel_z=az:0.244:mg").to_model_unit, 1e-3);
     EXPECT_NEAR(parse_column_mapping("accel_z=az:0.0024:m/s2").to_model_unit * 9.80665, 1.0, 1e-15);
+    // The spellings allan --unit takes too (one table for both).
+    EXPECT_EQ(parse_column_mapping("accel_z=az:0.0024:m/s^2").to_model_unit, parse_column_mapping("accel_z=az:0.0024:m/s2").to_model_unit);
+    EXPECT_NEAR(parse_column_mapping("accel_z=az:0.24:cm/s2").to_model_unit * 980.665, 1.0, 1e-15);
+    EXPECT_EQ(parse_column_mapping("gyro=gx:0.00875:dps").to_model_unit, 1.0);
+    EXPECT_NEAR(parse_column_mapping("gyro=gx:30:deg/h").to_model_unit * 3600.0, 1.0, 1e-15);
     for (const char* bad : {"gyro=gx:1:g", "accel_x=ax:1:rad/s", "gyro=gx:rad/s", "gyro=gx:1:furlongs", "gyro=:1:deg/s"})
         EXPECT_THROW(parse_column_mapping(bad), UsageError) << bad;
 

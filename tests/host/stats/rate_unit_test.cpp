@@ -1,0 +1,47 @@
+// The shared table of rate units: each spelling's quantity and SI value against its definition, and the names a
+// message lists.
+#include "host/stats/rate_unit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace driftlab::host::stats {
+namespace {
+
+TEST(RateUnit, EachSpellingIsItsDefinitionInSI) {
+    const double deg = 3.14159265358979323846 / 180.0;
+    struct Case {
+        const char* spelling;
+        const char* name;
+        RateQuantity quantity;
+        double si;
+    };
+    for (const Case& c : {Case{"deg/s", "deg/s", RateQuantity::angular_rate, deg},
+                          Case{"dps", "deg/s", RateQuantity::angular_rate, deg},
+                          Case{"mdps", "mdps", RateQuantity::angular_rate, deg / 1000.0},
+                          Case{"deg/h", "deg/h", RateQuantity::angular_rate, deg / 3600.0},
+                          Case{"rad/s", "rad/s", RateQuantity::angular_rate, 1.0},
+                          Case{"g", "g", RateQuantity::acceleration, 9.80665},
+                          Case{"mg", "mg", RateQuantity::acceleration, 9.80665e-3},
+                          Case{"m/s^2", "m/s^2", RateQuantity::acceleration, 1.0},
+                          Case{"m/s2", "m/s^2", RateQuantity::acceleration, 1.0},
+                          Case{"cm/s^2", "cm/s^2", RateQuantity::acceleration, 0.01},
+                          Case{"cm/s2", "cm/s^2", RateQuantity::acceleration, 0.01}}) {
+        const auto u = rate_unit(c.spelling);
+        ASSERT_TRUE(u) << c.spelling;
+        EXPECT_EQ(u->name, c.name) << c.spelling;
+        EXPECT_EQ(u->quantity, c.quantity) << c.spelling;
+        EXPECT_NEAR(u->si_per_unit / c.si, 1.0, 1e-15) << c.spelling;
+    }
+    for (const char* unknown : {"", "furlongs", "DEG/S", "m/s", "deg"}) EXPECT_FALSE(rate_unit(unknown)) << unknown;
+}
+
+TEST(RateUnit, AMessageListsTheSpellingsOfOneQuantity) {
+    EXPECT_EQ(rate_unit_names(RateQuantity::angular_rate), "deg/s, dps, mdps, deg/h, rad/s");
+    EXPECT_EQ(rate_unit_names(RateQuantity::acceleration), "g, mg, m/s^2, m/s2, cm/s^2, cm/s2");
+    EXPECT_EQ(rate_unit_names(RateQuantity::unknown), "");
+}
+
+}  // namespace
+}  // namespace driftlab::host::stats
