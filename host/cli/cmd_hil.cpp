@@ -8,7 +8,6 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -262,8 +261,7 @@ void run_hil_command(const HilCliOptions& o) {
     if (o.pty) return serve_pty_command(o, h);
     const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;
     if (path == "-" && o.json) throw UsageError("--json: the log goes to standard output (-o -); write it to a file");
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (path != "-" && !parent.empty()) make_output_folder(parent.string(), "log");
+    if (path != "-") make_folder_of(path, "log");
 
     MetadataPairs extra = {{"seed", std::to_string(o.seed)},
                                {"model", o.model_file.empty() ? "paper (built in)" : o.model_file},
