@@ -13,6 +13,8 @@
 #include "host/io/capture.hpp"
 #include "host/io/serial_port.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_file.hpp"
+#include "host/util/output_folder.hpp"
 
 namespace driftlab::host::io {
 namespace {
@@ -62,6 +64,12 @@ std::string utc_now_iso8601() {
 
 RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop, const RecordProgress& progress) {
     const std::string capture_path = options.capture_path.empty() ? options.log_path + ".cap" : options.capture_path;
+    // Before the port: opening it resets an Arduino, and a missing folder had been found only then (the capture's)
+    // or after the handshake (the log's, with the capture left behind). Folders are made as `hil` makes its own.
+    make_folder_of(options.log_path, "log");
+    make_folder_of(capture_path, "capture");
+    check_output_file(options.log_path, "log");
+    check_output_file(capture_path, "capture");
     SerialPort port(options.port, options.baud);
 
     const CaptureHeader header = {{"port", options.port},

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -209,6 +210,25 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     EXPECT_GE(std::lround(replies_before), 0);
     EXPECT_LE(std::lround(replies_before), 4);
     expect_rows_in_truth(rec, truth);
+}
+
+// The log's and the capture's folders are made when missing, as `hil` makes its own: -o into a new folder had
+// failed with exit 4 once the port was open ("cannot create the capture"), or, with --capture elsewhere, only after
+// the handshake, leaving the capture behind.
+TEST(RecordPty, MissingFoldersOfTheLogAndTheCaptureAreMade) {
+    TempDir dir("folders");
+    host::io::PtyBoardOptions board_opts;
+    board_opts.speed = 4.0;
+    board_opts.duration_s = 60.0;
+    BoardThread board(board_opts);
+    const std::string log = dir.file("new/sub/rec.csv");
+    const std::string capture = dir.file("captures/rec.cap");
+    const RunResult r = run_driftlab({"record", "--port", board.path(), "--stream", "0.1", "--duration", "1", "-o", log,
+                                      "--capture", capture},
+                                     dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_GE(host::read_log(log).size(), 11u);
+    EXPECT_TRUE(std::filesystem::is_regular_file(capture));
 }
 
 // `driftlab hil --pty` serves the simulated board itself: its first output line is the path a recorder opens.
