@@ -122,6 +122,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
 
         if (link == LinkStatus::lost) {
             event("lost");
+            const auto lost_at = Clock::now();
             const double lost_at_s = seconds_since(t0);
             const std::string last_t =
                 assembler.stats().last_t_s ? "t_s=" + format_s(*assembler.stats().last_t_s) : "before the first row";
@@ -131,8 +132,16 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
             int attempts = 0;
             bool back = false;
             while (!stop.load() && !back) {
-                if (progress) progress(assembler.stats(), seconds_since(t0), false);
-                std::this_thread::sleep_for(std::chrono::milliseconds(backoff_ms));
+                // The wait in slices of the status cadence: the status line had stood still for a whole step (up to
+                // 4 s), and a Ctrl-C had waited for its end.
+                const auto attempt_at = Clock::now() + std::chrono::milliseconds(backoff_ms);
+                for (auto now = Clock::now(); now < attempt_at && !stop.load(); now = Clock::now()) {
+                    const LinkLoss lost{seconds_since(lost_at), attempts + 1,
+                                        std::chrono::duration<double>(attempt_at - now).count()};
+                    if (progress) progress(assembler.stats(), seconds_since(t0), lost);
+                    std::this_thread::sleep_for(std::min<Clock::duration>(kProgressInterval, attempt_at - now));
+                }
+                if (stop.load()) break;
                 backoff_ms = std::min(backoff_ms * 2, options.reconnect_max_backoff_ms);
                 ++attempts;
                 if (!port.reopen()) continue;
@@ -161,7 +170,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
             last_flush = now;
         }
         if (progress && now - last_progress >= kProgressInterval) {
-            progress(assembler.stats(), seconds_since(t0), true);
+            progress(assembler.stats(), seconds_since(t0), std::nullopt);
             last_progress = now;
         }
     }
@@ -172,7 +181,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     summary.stats = assembler.stats();
     summary.polls_sent = client.counters().polls_sent;
     summary.wall_s = seconds_since(t0);
-    if (progress) progress(summary.stats, summary.wall_s, true);
+    if (progress) progress(summary.stats, summary.wall_s, std::nullopt);
     return summary;
 }
 

@@ -8,10 +8,12 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "driftlab/proto/messages.hpp"
 #include "host/io/log_assembler.hpp"
+#include "host/io/status_line.hpp"
 
 namespace driftlab::host::io {
 
@@ -35,9 +37,9 @@ struct RecordSummary {
     bool stopped_by_request = false;
 };
 
-/// Called a few times a second with the progress so far (the live status line); `connected` is false
-/// while the port is away.
-using RecordProgress = std::function<void(const AssemblyStats&, double wall_s, bool connected)>;
+/// Called four times a second with the progress so far (the live status line), while the port is away too, with
+/// `lost` then set.
+using RecordProgress = std::function<void(const AssemblyStats&, double wall_s, const std::optional<LinkLoss>& lost)>;
 
 /// Runs the session. Makes the folders of the log and the capture when missing, then opens the port. Throws
 /// DeviceError when a folder cannot be made or a file not written there (before the port is opened), when the port

@@ -12,13 +12,15 @@ double loss_percent(const AssemblyStats& s) {
     return sent > 0.0 ? 100.0 * static_cast<double>(s.lost_frames) / sent : 0.0;
 }
 
-std::string format_status_line(const AssemblyStats& s, double wall_s, bool connected) {
+std::string format_status_line(const AssemblyStats& s, double wall_s, const std::optional<LinkLoss>& lost) {
     char text[256];
     int n = std::snprintf(text, sizeof text, "%7.1f s  rows %llu  lost %llu (%.2f %%)", wall_s,
                           static_cast<unsigned long long>(s.rows), static_cast<unsigned long long>(s.lost_frames),
                           loss_percent(s));
-    if (!connected) {
-        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  PORT LOST, reconnecting...");
+    if (lost) {
+        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
+                      "  PORT LOST %.1f s ago, reconnect attempt %d in %.1f s", lost->lost_for_s, lost->next_attempt,
+                      lost->next_attempt_in_s);
         return text;
     }
     if (s.rows > 0) {
