@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -27,12 +28,6 @@ constexpr int kFirstBackoffMs = 250;
 constexpr int kStreamPumpMs = 50;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-std::string format_s(double s) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", s);
-    return text;
-}
 
 // Handshake and configuration on an open link; empty string when the board is ready, else the problem.
 std::string bring_up(BoardClient& client, const proto::ConfigPayload& config) {
@@ -123,9 +118,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
         if (link == LinkStatus::lost) {
             event("lost");
             const auto lost_at = Clock::now();
-            const double lost_at_s = seconds_since(t0);
-            const std::string last_t =
-                assembler.stats().last_t_s ? "t_s=" + format_s(*assembler.stats().last_t_s) : "before the first row";
+            const std::optional<double> last_t_s = assembler.stats().last_t_s;
             port.close();
             client.forget_partial_frame();
             int backoff_ms = kFirstBackoffMs;
@@ -157,9 +150,9 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
             }
             if (!back) break;
             ++summary.reconnects;
-            event("gap: link lost after " + last_t + " (" + format_s(lost_at_s) +
-                  " s into the recording), reconnected after " + format_s(seconds_since(t0) - lost_at_s) + " s, " +
-                  std::to_string(attempts) + " attempts");
+            // The row's t_s is board time and the rest host time: the line had given both as bare seconds.
+            event("gap: " + link_lost_gap(last_t_s, std::chrono::duration<double>(lost_at - t0).count(),
+                                          seconds_since(lost_at), attempts));
             event("resumed");
             next_poll = Clock::now();
         }

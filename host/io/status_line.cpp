@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "host/util/format_number.hpp"
 #include "host/util/units.hpp"
 
 namespace driftlab::host::io {
@@ -33,6 +34,14 @@ std::string format_status_line(const AssemblyStats& s, double wall_s, const std:
                       c[1], c[2], c[3], static_cast<unsigned>(s.last_dropped));
     }
     return text;
+}
+
+std::string link_lost_gap(const std::optional<double>& last_t_s, double lost_at_s, double away_s, int attempts) {
+    return "link lost " +
+           (last_t_s ? "after t_s=" + fixed_point(*last_t_s, 3) + " (board clock)" : std::string("before the first row")) +
+           ", " + fixed_point(lost_at_s, 3) + " s into the recording (host clock); reconnected after " +
+           fixed_point(away_s, 3) + " s (host clock), " + std::to_string(attempts) +
+           (attempts == 1 ? " attempt" : " attempts");
 }
 
 std::string skipped_samples(const AssemblyStats& stats) {

@@ -199,7 +199,9 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     const host::LogData rec = host::read_log(log);
     const host::LogData truth = host::read_log(dir.file("truth.csv"));
     ASSERT_EQ(rec.gaps.size(), 1u);
-    EXPECT_NE(rec.gaps[0].text.find("link lost"), std::string::npos) << rec.gaps[0].text;
+    EXPECT_NE(rec.gaps[0].text.find("link lost after t_s="), std::string::npos) << rec.gaps[0].text;
+    EXPECT_NE(rec.gaps[0].text.find(" (board clock), "), std::string::npos) << rec.gaps[0].text;
+    EXPECT_NE(rec.gaps[0].text.find(" s (host clock), "), std::string::npos) << rec.gaps[0].text;
     const std::size_t k = rec.gaps[0].before_row;
     ASSERT_GT(k, 0u);
     ASSERT_LT(k, rec.size());

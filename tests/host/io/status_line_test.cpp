@@ -35,5 +35,17 @@ TEST(StatusLine, ThePortAwaySaysSinceWhenAndTheNextAttempt) {
     EXPECT_EQ(line.find("gyro"), std::string::npos) << line;  // the newest values are not current
 }
 
+// The gap line names the clock of each figure: the last row's t_s is the board's, the loss's time and length the
+// host's. It had read "link lost after t_s=5.500 (3.990 s into the recording), reconnected after 11.759 s, 6 attempts",
+// two clocks as bare seconds side by side.
+TEST(StatusLine, TheGapLineNamesTheClockOfEachFigure) {
+    EXPECT_EQ(link_lost_gap(5.5, 3.99, 11.759, 6),
+              "link lost after t_s=5.500 (board clock), 3.990 s into the recording (host clock); reconnected after "
+              "11.759 s (host clock), 6 attempts");
+    EXPECT_EQ(link_lost_gap(std::nullopt, 0.5, 0.25, 1),
+              "link lost before the first row, 0.500 s into the recording (host clock); reconnected after 0.250 s "
+              "(host clock), 1 attempt");
+}
+
 }  // namespace
 }  // namespace driftlab::host::io
