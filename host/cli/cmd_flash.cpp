@@ -30,10 +30,7 @@ std::string pick_port() {
 }
 
 void run_flash(FlashOptions& opts) {
-    if (opts.request.hex_file.empty()) {
-        opts.request.hex_file = io::default_hex_file("/proc/self/exe");
-        if (opts.request.hex_file.empty()) throw DataError("driftlab_fw.hex", 0, "no default firmware image (pass --hex FILE)");
-    }
+    if (opts.request.hex_file.empty()) opts.request.hex_file = io::default_hex_file("/proc/self/exe");
     if (opts.request.port.empty()) opts.request.port = pick_port();
     if (opts.dry_run) {
         // The same checks as a real run, so the printed command is one that can run (avrdude aside).

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -280,8 +279,7 @@ void run_hil_command(const HilCliOptions& o) {
     if (o.pty) return serve_pty_command(o, h);
     const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;
     if (path == "-" && o.json) throw UsageError("--json: the log goes to standard output (-o -); write it to a file");
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (path != "-" && !parent.empty()) make_output_folder(parent.string(), "log");
+    if (path != "-") make_folder_of(path, "log");
 
     // The effects the model file switches on, by name (their parameters are in the file), so that a log says what
     // was simulated without the file beside it.

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "host/cli/commands.hpp"
 #include "host/io/recorder.hpp"
@@ -75,8 +76,8 @@ void run_record(const RecordCliOptions& o) {
     const bool live = !o.quiet && ::isatty(STDERR_FILENO);
     io::RecordProgress progress;
     if (live) {
-        progress = [](const io::AssemblyStats& s, double wall_s, bool connected) {
-            std::fprintf(stderr, "\r%s\033[K", io::format_status_line(s, wall_s, connected).c_str());
+        progress = [](const io::AssemblyStats& s, double wall_s, const std::optional<io::LinkLoss>& lost) {
+            std::fprintf(stderr, "\r%s\033[K", io::format_status_line(s, wall_s, lost).c_str());
             std::fflush(stderr);
         };
     }

@@ -1,6 +1,5 @@
 // `driftlab report LOG -o report.html`: the drift fit, whiteness and Allan analysis of a log in one
 // self-contained HTML file (host/report/html_report; docs/analysis.md §6).
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -26,8 +25,7 @@ struct ReportCommandOptions {
 
 void run(const ReportCommandOptions& opts) {
     refuse_writing_over_input(opts.output, "-o", opts.request.path, "log");
-    const std::string folder = std::filesystem::path(opts.output).parent_path().string();
-    if (!folder.empty()) make_output_folder(folder, "report");  // before the work, as --plot does
+    make_folder_of(opts.output, "report");  // before the work, as --plot does
     const fit::FileAnalysis file = fit::analyse_file(opts.request);
     report::ReportOptions ropts;
     ropts.plots = !opts.no_plots;

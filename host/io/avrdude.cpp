@@ -50,15 +50,27 @@ std::string find_in_path(const std::string& program, const std::string& path_env
 std::string default_hex_file(const std::string& exe_path) {
     std::error_code ec;
     const fs::path exe = fs::weakly_canonical(exe_path, ec);
-    if (ec) return {};
     // exe = <build>/<preset>/bin/driftlab; the AVR preset builds into <build>/avr, and a native build with avr-gcc
     // builds the same firmware into <build>/<preset>/avr-fw (the image `hil --target avr` runs). Each build writes
-    // its image at one known path, so no folder walk picks a stray copy.
+    // its image at one known path, so no folder walk picks a stray copy. A binary copied elsewhere had been sent to
+    // paths derived from wherever it lay (/tmp/x/driftlab: /avr/firmware/driftlab_fw.hex).
     const fs::path tree = exe.parent_path().parent_path();
+    std::error_code unreadable;  // taken as absent
+    if (ec || !fs::is_regular_file(tree / "CMakeCache.txt", unreadable)) {
+        throw DataError("driftlab_fw.hex", 0,
+                        "no default firmware image: it is looked for beside a build tree's driftlab "
+                        "(build/<preset>/bin/driftlab), and " + (ec ? exe_path : exe.string()) +
+                            " is not one (a copy, or installed); pass --hex FILE");
+    }
     const fs::path preset_image = tree.parent_path() / "avr" / "firmware" / "driftlab_fw.hex";
     const fs::path native_image = tree / "avr-fw" / "firmware" / "driftlab_fw.hex";
-    return (fs::is_regular_file(preset_image, ec) || !fs::is_regular_file(native_image, ec) ? preset_image : native_image)
-        .string();
+    for (const fs::path& image : {preset_image, native_image}) {
+        if (fs::is_regular_file(image, unreadable)) return image.string();
+    }
+    throw DataError("driftlab_fw.hex", 0,
+                    "firmware image not found at " + preset_image.string() + " (the AVR build's) nor at " +
+                        native_image.string() + " (the native build's, made when avr-gcc is installed); build it "
+                        "with `cmake --preset avr && cmake --build --preset avr`, or pass --hex FILE");
 }
 
 void check_image_and_port(const FlashRequest& request) {

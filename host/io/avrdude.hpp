@@ -28,8 +28,9 @@ std::string find_in_path(const std::string& program, const std::string& path_env
 
 /// The firmware image of the AVR build next to the native build that holds `exe_path`
 /// (build/native/bin/driftlab -> build/avr/firmware/driftlab_fw.hex) when it exists, else the one the native build
-/// made itself (build/native/avr-fw/firmware/driftlab_fw.hex) when that exists, else the AVR build's path (which
-/// the image check then reports missing). Exact paths, no folder walk; empty only when `exe_path` cannot be resolved.
+/// made itself (build/native/avr-fw/firmware/driftlab_fw.hex) when that exists. Exact paths, no folder walk. Throws
+/// DataError saying to pass --hex FILE, with the paths tried, or, for a binary outside a build tree (copied or
+/// installed: no CMakeCache.txt in the folder above its own), with that reason.
 std::string default_hex_file(const std::string& exe_path);
 
 /// The checks a flash needs before avrdude: the image is a file (DataError), the port exists (DeviceError); an

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -13,6 +14,8 @@
 #include "host/io/capture.hpp"
 #include "host/io/serial_port.hpp"
 #include "host/util/error.hpp"
+#include "host/util/output_file.hpp"
+#include "host/util/output_folder.hpp"
 
 namespace driftlab::host::io {
 namespace {
@@ -25,12 +28,6 @@ constexpr int kFirstBackoffMs = 250;
 constexpr int kStreamPumpMs = 50;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-std::string format_s(double s) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", s);
-    return text;
-}
 
 // Handshake and configuration on an open link; empty string when the board is ready, else the problem.
 std::string bring_up(BoardClient& client, const proto::ConfigPayload& config) {
@@ -62,6 +59,12 @@ std::string utc_now_iso8601() {
 
 RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop, const RecordProgress& progress) {
     const std::string capture_path = options.capture_path.empty() ? options.log_path + ".cap" : options.capture_path;
+    // Before the port: opening it resets an Arduino, and a missing folder had been found only then (the capture's)
+    // or after the handshake (the log's, with the capture left behind). Folders are made as `hil` makes its own.
+    make_folder_of(options.log_path, "log");
+    make_folder_of(capture_path, "capture");
+    check_output_file(options.log_path, "log");
+    check_output_file(capture_path, "capture");
     SerialPort port(options.port, options.baud);
 
     const CaptureHeader header = {{"port", options.port},
@@ -114,17 +117,24 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
 
         if (link == LinkStatus::lost) {
             event("lost");
-            const double lost_at_s = seconds_since(t0);
-            const std::string last_t =
-                assembler.stats().last_t_s ? "t_s=" + format_s(*assembler.stats().last_t_s) : "before the first row";
+            const auto lost_at = Clock::now();
+            const std::optional<double> last_t_s = assembler.stats().last_t_s;
             port.close();
             client.forget_partial_frame();
             int backoff_ms = kFirstBackoffMs;
             int attempts = 0;
             bool back = false;
             while (!stop.load() && !back) {
-                if (progress) progress(assembler.stats(), seconds_since(t0), false);
-                std::this_thread::sleep_for(std::chrono::milliseconds(backoff_ms));
+                // The wait in slices of the status cadence: the status line had stood still for a whole step (up to
+                // 4 s), and a Ctrl-C had waited for its end.
+                const auto attempt_at = Clock::now() + std::chrono::milliseconds(backoff_ms);
+                for (auto now = Clock::now(); now < attempt_at && !stop.load(); now = Clock::now()) {
+                    const LinkLoss lost{seconds_since(lost_at), attempts + 1,
+                                        std::chrono::duration<double>(attempt_at - now).count()};
+                    if (progress) progress(assembler.stats(), seconds_since(t0), lost);
+                    std::this_thread::sleep_for(std::min<Clock::duration>(kProgressInterval, attempt_at - now));
+                }
+                if (stop.load()) break;
                 backoff_ms = std::min(backoff_ms * 2, options.reconnect_max_backoff_ms);
                 ++attempts;
                 if (!port.reopen()) continue;
@@ -140,9 +150,9 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
             }
             if (!back) break;
             ++summary.reconnects;
-            event("gap: link lost after " + last_t + " (" + format_s(lost_at_s) +
-                  " s into the recording), reconnected after " + format_s(seconds_since(t0) - lost_at_s) + " s, " +
-                  std::to_string(attempts) + " attempts");
+            // The row's t_s is board time and the rest host time: the line had given both as bare seconds.
+            event("gap: " + link_lost_gap(last_t_s, std::chrono::duration<double>(lost_at - t0).count(),
+                                          seconds_since(lost_at), attempts));
             event("resumed");
             next_poll = Clock::now();
         }
@@ -153,7 +163,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
             last_flush = now;
         }
         if (progress && now - last_progress >= kProgressInterval) {
-            progress(assembler.stats(), seconds_since(t0), true);
+            progress(assembler.stats(), seconds_since(t0), std::nullopt);
             last_progress = now;
         }
     }
@@ -164,7 +174,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     summary.stats = assembler.stats();
     summary.polls_sent = client.counters().polls_sent;
     summary.wall_s = seconds_since(t0);
-    if (progress) progress(summary.stats, summary.wall_s, true);
+    if (progress) progress(summary.stats, summary.wall_s, std::nullopt);
     return summary;
 }
 

@@ -8,10 +8,12 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "driftlab/proto/messages.hpp"
 #include "host/io/log_assembler.hpp"
+#include "host/io/status_line.hpp"
 
 namespace driftlab::host::io {
 
@@ -35,12 +37,14 @@ struct RecordSummary {
     bool stopped_by_request = false;
 };
 
-/// Called a few times a second with the progress so far (the live status line); `connected` is false
-/// while the port is away.
-using RecordProgress = std::function<void(const AssemblyStats&, double wall_s, bool connected)>;
+/// Called four times a second with the progress so far (the live status line), while the port is away too, with
+/// `lost` then set.
+using RecordProgress = std::function<void(const AssemblyStats&, double wall_s, const std::optional<LinkLoss>& lost)>;
 
-/// Runs the session. Throws DeviceError when the port cannot be opened or the device is not a driftlab board
-/// of this protocol version (nothing is left behind then), UsageError/DeviceError from the log writer.
+/// Runs the session. Makes the folders of the log and the capture when missing, then opens the port. Throws
+/// DeviceError when a folder cannot be made or a file not written there (before the port is opened), when the port
+/// cannot be opened or the device is not a driftlab board of this protocol version (nothing is left behind then),
+/// UsageError/DeviceError from the log writer.
 RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop, const RecordProgress& progress);
 
 /// The current UTC time as ISO 8601 with milliseconds ("2026-11-22T10:00:00.123Z").

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "host/util/format_number.hpp"
 #include "host/util/units.hpp"
 
 namespace driftlab::host::io {
@@ -12,13 +13,15 @@ double loss_percent(const AssemblyStats& s) {
     return sent > 0.0 ? 100.0 * static_cast<double>(s.lost_frames) / sent : 0.0;
 }
 
-std::string format_status_line(const AssemblyStats& s, double wall_s, bool connected) {
+std::string format_status_line(const AssemblyStats& s, double wall_s, const std::optional<LinkLoss>& lost) {
     char text[256];
     int n = std::snprintf(text, sizeof text, "%7.1f s  rows %llu  lost %llu (%.2f %%)", wall_s,
                           static_cast<unsigned long long>(s.rows), static_cast<unsigned long long>(s.lost_frames),
                           loss_percent(s));
-    if (!connected) {
-        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  PORT LOST, reconnecting...");
+    if (lost) {
+        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
+                      "  PORT LOST %.1f s ago, reconnect attempt %d in %.1f s", lost->lost_for_s, lost->next_attempt,
+                      lost->next_attempt_in_s);
         return text;
     }
     if (s.rows > 0) {
@@ -31,6 +34,14 @@ std::string format_status_line(const AssemblyStats& s, double wall_s, bool conne
                       c[1], c[2], c[3], static_cast<unsigned>(s.last_dropped));
     }
     return text;
+}
+
+std::string link_lost_gap(const std::optional<double>& last_t_s, double lost_at_s, double away_s, int attempts) {
+    return "link lost " +
+           (last_t_s ? "after t_s=" + fixed_point(*last_t_s, 3) + " (board clock)" : std::string("before the first row")) +
+           ", " + fixed_point(lost_at_s, 3) + " s into the recording (host clock); reconnected after " +
+           fixed_point(away_s, 3) + " s (host clock), " + std::to_string(attempts) +
+           (attempts == 1 ? " attempt" : " attempts");
 }
 
 std::string skipped_samples(const AssemblyStats& stats) {

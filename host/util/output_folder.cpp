@@ -14,4 +14,9 @@ void make_output_folder(const std::string& dir, const std::string& what) {
     if (ec) throw DeviceError(dir, "cannot create the " + what + " folder: " + ec.message());
 }
 
+void make_folder_of(const std::string& path, const std::string& what) {
+    const std::string dir = std::filesystem::path(path).parent_path().string();
+    if (!dir.empty()) make_output_folder(dir, what);
+}
+
 }  // namespace driftlab::host

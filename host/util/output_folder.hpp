@@ -10,4 +10,7 @@ namespace driftlab::host {
 /// no command fails with a bare filesystem exception or only after its work is done.
 void make_output_folder(const std::string& dir, const std::string& what);
 
+/// make_output_folder() for the folder that holds the file `path` (none when `path` names no folder).
+void make_folder_of(const std::string& path, const std::string& what);
+
 }  // namespace driftlab::host

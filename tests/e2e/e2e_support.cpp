@@ -50,20 +50,25 @@ std::string BoardThread::path() {
     return path_;
 }
 
-pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file, const std::string& stdout_file) {
+pid_t spawn_program(const std::string& program, const std::vector<std::string>& args, const std::string& output_file,
+                    const std::string& stdout_file) {
     const pid_t pid = ::fork();
     if (pid == 0) {
         const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         ::dup2(stdout_file.empty() ? fd : ::open(stdout_file.c_str(), O_WRONLY), 1);
         ::dup2(fd, 2);
         std::vector<char*> argv;
-        argv.push_back(const_cast<char*>(DRIFTLAB_BIN));
+        argv.push_back(const_cast<char*>(program.c_str()));
         for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
-        ::execv(DRIFTLAB_BIN, argv.data());
+        ::execv(program.c_str(), argv.data());
         ::_exit(127);
     }
     return pid;
+}
+
+pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file, const std::string& stdout_file) {
+    return spawn_program(DRIFTLAB_BIN, args, output_file, stdout_file);
 }
 
 RunResult wait_child(pid_t pid, const std::string& output_file) {

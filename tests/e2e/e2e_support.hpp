@@ -46,8 +46,11 @@ struct RunResult {
     std::string output;  ///< stdout and stderr together
 };
 
-/// Starts `driftlab args...` with its output going to `output_file` (its standard output to `stdout_file` instead,
+/// Starts `program args...` with its output going to `output_file` (its standard output to `stdout_file` instead,
 /// when one is given); returns its pid.
+pid_t spawn_program(const std::string& program, const std::vector<std::string>& args, const std::string& output_file,
+                    const std::string& stdout_file = "");
+/// spawn_program() of the driftlab binary under test.
 pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file, const std::string& stdout_file = "");
 /// Waits for the child and collects its exit status and output.
 RunResult wait_child(pid_t pid, const std::string& output_file);

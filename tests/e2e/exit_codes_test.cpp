@@ -107,6 +107,26 @@ TEST(ExitCodes, FlashDryRunChecksTheImageAndThePortFirst) {
     EXPECT_NE(dry.output.find("-P /dev/null -b 115200 -D -U 'flash:w:" + hex + ":i'"), std::string::npos) << dry.output;
 }
 
+// `flash` from a copy of the binary outside its build tree had named a firmware image derived from wherever the copy
+// lay (/tmp/x/driftlab: "/avr/firmware/driftlab_fw.hex: firmware image not found"); it now says why there is no
+// default image and names --hex (exit 3), before any port or avrdude is looked at.
+TEST(ExitCodes, FlashFromACopiedBinaryNamesHexInsteadOfADerivedPath) {
+    TempDir dir("exitflashcopy");
+    std::filesystem::create_directories(dir.file("x"));
+    const std::string copy = dir.file("x/driftlab");
+    std::error_code ec;
+    std::filesystem::create_hard_link(DRIFTLAB_BIN, copy, ec);  // the binary is large; a link where the file system allows
+    if (ec) std::filesystem::copy_file(DRIFTLAB_BIN, copy);
+    const std::string out = dir.file("flash.out");
+    const RunResult r = wait_child(spawn_program(copy, {"flash", "--port", "/dev/null", "--dry-run"}, out), out);
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("driftlab_fw.hex: no default firmware image: it is looked for beside a build tree's driftlab "
+                            "(build/<preset>/bin/driftlab), and " + copy + " is not one (a copy, or installed); pass --hex FILE"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("/avr/firmware/"), std::string::npos) << r.output;
+}
+
 TEST(ExitCodes, HelpAndVersionSucceed) {
     TempDir dir("exithelp");
     const RunResult help = run_driftlab({"gap", "--help"}, dir.path());

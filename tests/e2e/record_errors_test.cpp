@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <thread>
 
@@ -59,6 +60,24 @@ TEST(RecordErrors, MissingPortNamesThePath) {
     TempDir dir("noport");
     const RunResult r = run_driftlab({"record", "--port", dir.file("ttyNONE"), "-o", dir.file("rec.csv")}, dir.path());
     expect_refused(r, dir.file("ttyNONE") + ": cannot open", dir);
+}
+
+// The output folders are made, or refused, before the port is opened (opening resets an Arduino): a file where a
+// folder must go is named with exit 4 although the port (missing here) would be refused too.
+TEST(RecordErrors, AnOutputFolderThatCannotBeMadeIsNamedBeforeThePort) {
+    TempDir dir("blockedfolder");
+    std::ofstream(dir.file("blocked")) << "a file, not a folder\n";
+    const std::string port = dir.file("ttyNONE");
+    const RunResult log = run_driftlab({"record", "--port", port, "-o", dir.file("blocked/rec.csv")}, dir.path());
+    EXPECT_EQ(log.exit_code, kDeviceErrorExit) << log.output;
+    EXPECT_NE(log.output.find(dir.file("blocked") + ": cannot create the log folder"), std::string::npos) << log.output;
+    const RunResult capture = run_driftlab({"record", "--port", port, "-o", dir.file("rec.csv"), "--capture",
+                                            dir.file("blocked/rec.cap")},
+                                           dir.path());
+    EXPECT_EQ(capture.exit_code, kDeviceErrorExit) << capture.output;
+    EXPECT_NE(capture.output.find(dir.file("blocked") + ": cannot create the capture folder"), std::string::npos)
+        << capture.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("rec.csv")));
 }
 
 // A configuration the firmware would refuse, or a period that is not one, is the command line's fault and is

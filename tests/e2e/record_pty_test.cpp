@@ -5,14 +5,19 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 #include "host/io/capture.hpp"
+#include "host/io/recorder.hpp"
 #include "host/log/log_reader.hpp"
 #include "tests/e2e/e2e_support.hpp"
 
@@ -194,7 +199,9 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     const host::LogData rec = host::read_log(log);
     const host::LogData truth = host::read_log(dir.file("truth.csv"));
     ASSERT_EQ(rec.gaps.size(), 1u);
-    EXPECT_NE(rec.gaps[0].text.find("link lost"), std::string::npos) << rec.gaps[0].text;
+    EXPECT_NE(rec.gaps[0].text.find("link lost after t_s="), std::string::npos) << rec.gaps[0].text;
+    EXPECT_NE(rec.gaps[0].text.find(" (board clock), "), std::string::npos) << rec.gaps[0].text;
+    EXPECT_NE(rec.gaps[0].text.find(" s (host clock), "), std::string::npos) << rec.gaps[0].text;
     const std::size_t k = rec.gaps[0].before_row;
     ASSERT_GT(k, 0u);
     ASSERT_LT(k, rec.size());
@@ -209,6 +216,74 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     EXPECT_GE(std::lround(replies_before), 0);
     EXPECT_LE(std::lround(replies_before), 4);
     expect_rows_in_truth(rec, truth);
+}
+
+// While the port is away the status line keeps its cadence (four times a second), with the time since the loss and
+// until the next attempt: it had been called once per back-off step, standing still for 2 s here (4 s in a longer
+// loss). The recorder runs in this process, to see every call.
+TEST(RecordPty, TheStatusKeepsItsCadenceWhileThePortIsAway) {
+    TempDir dir("lostcadence");
+    host::io::PtyBoardOptions board_opts;
+    board_opts.speed = 4.0;
+    board_opts.duration_s = 120.0;
+    board_opts.link_path = dir.file("board-link");
+    board_opts.unplugs = {{4.0, 12.0}};  // 3 s of wall time: reopen attempts 0.25, 0.75, 1.75 and 3.75 s after
+    BoardThread board(board_opts);
+    host::io::RecordOptions options;
+    options.port = board.path();
+    options.log_path = dir.file("rec.csv");
+    options.duration_s = 20.0;
+    options.config.output_period_ms = 100;
+    options.config.conversions_per_output = 25;
+    options.config.window = 25;
+    options.config.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
+    struct Call {
+        std::chrono::steady_clock::time_point at;
+        host::io::LinkLoss lost;
+    };
+    std::vector<Call> away;
+    const std::atomic<bool> stop{false};
+    const host::io::RecordSummary summary = host::io::record(
+        options, stop, [&](const host::io::AssemblyStats&, double, const std::optional<host::io::LinkLoss>& lost) {
+            if (lost) away.push_back({std::chrono::steady_clock::now(), *lost});
+        });
+    ASSERT_EQ(summary.reconnects, 1u);
+    ASSERT_GE(away.size(), 2u);
+    double longest_s = 0.0;
+    for (std::size_t i = 1; i < away.size(); ++i) {
+        longest_s = std::max(longest_s, std::chrono::duration<double>(away[i].at - away[i - 1].at).count());
+        EXPECT_GT(away[i].lost.lost_for_s, away[i - 1].lost.lost_for_s) << "call " << i;
+        EXPECT_GE(away[i].lost.next_attempt, away[i - 1].lost.next_attempt) << "call " << i;
+    }
+    // 0.25 s apart over the 3.75 s (old: 4 calls, the last 1.75 s after the loss, then 2 s without one); a loaded
+    // machine may stretch a slice, not to a back-off step.
+    EXPECT_GE(away.size(), 10u);
+    EXPECT_LT(longest_s, 0.75) << away.size() << " calls while away";
+    EXPECT_GE(away.back().lost.lost_for_s, 2.5);
+    EXPECT_EQ(away.back().lost.next_attempt, 4);
+    for (const Call& c : away) {
+        EXPECT_GE(c.lost.next_attempt_in_s, 0.0);
+        EXPECT_LE(c.lost.next_attempt_in_s, 2.0);
+    }
+}
+
+// The log's and the capture's folders are made when missing, as `hil` makes its own: -o into a new folder had
+// failed with exit 4 once the port was open ("cannot create the capture"), or, with --capture elsewhere, only after
+// the handshake, leaving the capture behind.
+TEST(RecordPty, MissingFoldersOfTheLogAndTheCaptureAreMade) {
+    TempDir dir("folders");
+    host::io::PtyBoardOptions board_opts;
+    board_opts.speed = 4.0;
+    board_opts.duration_s = 60.0;
+    BoardThread board(board_opts);
+    const std::string log = dir.file("new/sub/rec.csv");
+    const std::string capture = dir.file("captures/rec.cap");
+    const RunResult r = run_driftlab({"record", "--port", board.path(), "--stream", "0.1", "--duration", "1", "-o", log,
+                                      "--capture", capture},
+                                     dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_GE(host::read_log(log).size(), 11u);
+    EXPECT_TRUE(std::filesystem::is_regular_file(capture));
 }
 
 // `driftlab hil --pty` serves the simulated board itself: its first output line is the path a recorder opens.

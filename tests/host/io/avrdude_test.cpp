@@ -106,6 +106,7 @@ TEST_F(FakeAvrdude, DefaultImageIsTheSiblingAvrBuildsElseTheNativeTreesOwnAtThei
     fs::create_directories(dir_ / "build/avr/firmware/a_stray_copy");
     fs::create_directories(dir_ / "build/native/avr-fw/firmware");
     std::ofstream(dir_ / "build/native/bin/driftlab") << "";
+    std::ofstream(dir_ / "build/native/CMakeCache.txt") << "";
     std::ofstream(dir_ / "build/avr/firmware/a_stray_copy/driftlab_fw.hex") << ":00000001FF\n";
     std::ofstream(dir_ / "build/avr/firmware/driftlab_fw.hex") << ":00000001FF\n";
     std::ofstream(dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex") << ":00000001FF\n";
@@ -115,11 +116,36 @@ TEST_F(FakeAvrdude, DefaultImageIsTheSiblingAvrBuildsElseTheNativeTreesOwnAtThei
     fs::remove(preset_image);
     EXPECT_EQ(default_hex_file(exe), (dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex").string());
     fs::remove_all(dir_ / "build/native/avr-fw");
-    // Neither: the preset's path, which the image check reports missing by name (exit 3).
-    EXPECT_EQ(default_hex_file(exe), preset_image);
-    FlashRequest r = request();
-    r.hex_file = default_hex_file(exe);
-    EXPECT_THROW(check_image_and_port(r), DataError);
+    // Neither: both paths named, and --hex (exit 3).
+    try {
+        default_hex_file(exe);
+        FAIL() << "expected DataError";
+    } catch (const DataError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("not found at " + preset_image + " (the AVR build's) nor at " +
+                            (dir_ / "build/native/avr-fw/firmware/driftlab_fw.hex").string()),
+                  std::string::npos)
+            << what;
+        EXPECT_NE(what.find("pass --hex FILE"), std::string::npos) << what;
+    }
+}
+
+// A binary outside a build tree (copied to /tmp/x/driftlab) had been sent to paths derived from wherever it lay
+// (/avr/firmware/driftlab_fw.hex, the "build" two folders up): the image is looked for only beside a build tree
+// (its CMakeCache.txt), and elsewhere the error says so and names --hex, even with an image at the derived path.
+TEST_F(FakeAvrdude, DefaultImageOfABinaryOutsideABuildTreeIsRefusedNamingHex) {
+    fs::create_directories(dir_ / "x/bin");
+    fs::create_directories(dir_ / "avr/firmware");
+    std::ofstream(dir_ / "x/bin/driftlab") << "";
+    std::ofstream(dir_ / "avr/firmware/driftlab_fw.hex") << ":00000001FF\n";  // a stray image where it would look
+    const std::string exe = (dir_ / "x/bin/driftlab").string();
+    try {
+        const std::string image = default_hex_file(exe);
+        FAIL() << "expected DataError, got " << image;
+    } catch (const DataError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(exe + " is not one (a copy, or installed); pass --hex FILE"), std::string::npos) << what;
+    }
 }
 
 // The dry run prints a command to paste: an argument with a space or a quote must come back as one word.
