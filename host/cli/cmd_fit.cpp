@@ -117,12 +117,16 @@ void print_analysis_warnings(const fit::DriftAnalysis& analysis) {
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
     cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required();
     cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
-    cmd->add_option("--t-min", r.options.t_min_s, "Use samples with t_s >= this [s]")->check(finite_value());
-    cmd->add_option("--t-max", r.options.t_max_s, "Use samples with t_s <= this [s]")->check(finite_value());
+    // allan and gap spell the time window --from/--to and the period --tau0: one spelling works in every command.
+    cmd->add_option("--t-min,--from", r.options.t_min_s, "Use samples with t_s >= this [s since power-on]")
+        ->check(finite_value());
+    cmd->add_option("--t-max,--to", r.options.t_max_s, "Use samples with t_s <= this [s since power-on]")
+        ->check(finite_value());
     cmd->add_option("--time-column", r.time_column,
                     "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
                     "time, time_s, timestamp...)");
-    cmd->add_option("--sample-period", r.sample_period_s, "Plain tables without time: sample period [s]")
+    cmd->add_option("--sample-period,--tau0", r.sample_period_s,
+                    "Plain tables without a time column: sample period [s] (default 1 s per row)")
         ->check(positive_number());
     cmd->add_option("--sequences", r.options.whiteness.sequences, "Whiteness: number M of sequences (paper: 10)")
         ->check(positive_number());

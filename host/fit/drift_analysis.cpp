@@ -72,7 +72,8 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     // A plain table's row index read as seconds had been printed as seconds, unremarked.
     if (out.data.index_period_s > 0.0)
         out.warnings.push_back("no time column: t is the row index x " + format_double(out.data.index_period_s) +
-                               " s (--sample-period); name the time column with --time-column if the table has one");
+                               " s (--sample-period or --tau0); name the time column with --time-column if the table "
+                               "has one");
     // A record that starts 100 spans after power-on (Unix time) holds a transient as short as itself only as
     // exp(-100) of C1: the fit is singular, or reads a slow drift as T far beyond the record.
     const double span_s = out.data.t_s.back() - out.data.t_s.front();

@@ -1,9 +1,12 @@
-// `driftlab whiteness` and `fit` on plain tables: whiteness prints every warning of the analysis as fit does (it had
-// printed only the adaptation note), and a table without a time column says that t is the row index.
+// `driftlab whiteness`, `fit` and `report` from the command line: whiteness prints every warning of the analysis as
+// fit does (it had printed only the adaptation note), a table without a time column says that t is the row index,
+// and the timing options take allan's and gap's spelling.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "e2e_support.hpp"
 
@@ -45,6 +48,33 @@ TEST(AnalysisCli, ATableWithoutTimeSaysTIsTheRowIndex) {
         const RunResult r = run_driftlab({command, path}, dir.path());
         EXPECT_NE(r.output.find("no time column: t is the row index x 1 s"), std::string::npos) << command << r.output;
     }
+}
+
+// allan and gap spell the period --tau0 and the time window --from/--to: fit, whiteness and report had refused
+// both ("The following arguments were not expected: 0.01 --tau0").
+TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
+    TempDir dir("timingnames");
+    const std::string path = dir.file("rate.txt");
+    {
+        std::ofstream out(path);
+        for (int k = 0; k < 1200; ++k)
+            out << 3.0 * (1.0 - std::exp(-0.5 * k / 150.0)) + 505.0 + 0.2 * std::sin(2.3 * k) << '\n';
+    }
+    const RunResult given =
+        run_driftlab({"fit", path, "--json", "--sample-period", "0.5", "--t-min", "20", "--t-max", "500"}, dir.path());
+    const RunResult alias =
+        run_driftlab({"fit", path, "--json", "--tau0", "0.5", "--from", "20", "--to", "500"}, dir.path());
+    ASSERT_EQ(alias.exit_code, 0) << alias.output;
+    EXPECT_EQ(alias.output, given.output);
+    EXPECT_EQ(nlohmann::json::parse(alias.output)["channels"]["col1"]["t_last_s"], 500.0);
+    EXPECT_EQ(run_driftlab({"whiteness", path, "--tau0", "0.5", "--from", "20"}, dir.path()).exit_code, 0);
+    const RunResult report =
+        run_driftlab({"report", path, "--tau0", "0.5", "--to", "500", "-o", dir.file("r.html"), "--no-plots"}, dir.path());
+    EXPECT_EQ(report.exit_code, 0) << report.output;
+    const RunResult help = run_driftlab({"fit", "--help"}, dir.path());
+    EXPECT_NE(help.output.find("--sample-period,--tau0"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("--t-min,--from"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("--t-max,--to"), std::string::npos) << help.output;
 }
 
 }  // namespace
