@@ -34,6 +34,7 @@ std::string interval(const fit::Estimate& e, const std::array<double, 2>& ci) {
 
 void print_table(const fit::FileAnalysis& file) {
     std::cout << file.path << "\n";
+    print_file_notes(file, false);
     // A plain table's values are in its own unit; a log's are A/D counts with the physical value beside them.
     const bool log_channels =
         std::any_of(file.series.begin(), file.series.end(), [](const auto& s) { return s.analysis && s.analysis->data.channel; });
@@ -101,6 +102,7 @@ void run(const FitCommandOptions& opts) {
         for (const auto& s : file.series)
             out["channels"][s.name] = s.analysis ? report::fit_json(*s.analysis) : nlohmann::json{{"error", s.error}};
         report::write_json(std::cout, out);
+        print_file_notes(file, true);
     } else {
         print_table(file);
     }
@@ -112,6 +114,11 @@ void run(const FitCommandOptions& opts) {
 
 void print_analysis_warnings(const fit::DriftAnalysis& analysis) {
     for (const auto& warning : analysis.warnings) std::cout << "  warning: " << warning << "\n";
+}
+
+void print_file_notes(const fit::FileAnalysis& file, bool json) {
+    // Beside JSON they go to the error output, which keeps the standard output one document.
+    for (const auto& note : file.notes) (json ? std::cerr : std::cout) << "note: " << note << "\n";
 }
 
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {

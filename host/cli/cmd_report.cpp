@@ -44,6 +44,7 @@ void run(const ReportCommandOptions& opts) {
     } else {
         std::cout << "wrote " << opts.output << " (" << html.size() / 1024 << " KiB)\n";
     }
+    print_file_notes(file, opts.json);
     if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
 }
 

@@ -22,6 +22,7 @@ struct WhitenessCommandOptions {
 
 void print_text(const fit::FileAnalysis& file) {
     std::cout << file.path << "\n";
+    print_file_notes(file, false);
     std::printf("%-10s %9s %9s %8s %11s %9s %11s  %s\n", "channel", "inside", "bound", "M x L", "LB Q(h)", "LB p",
                 "tau [smp]", "verdict");
     for (const auto& s : file.series) {
@@ -51,6 +52,7 @@ void run(const WhitenessCommandOptions& opts) {
                                             {"warnings", s.analysis->warnings}}
                            : nlohmann::json{{"error", s.error}};
         report::write_json(std::cout, out);
+        print_file_notes(file, true);
     } else {
         print_text(file);
     }

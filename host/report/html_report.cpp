@@ -74,6 +74,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
     h += "<h1>Drift analysis</h1>\n<p>File <code>" + html_escape(file.path) + "</code> (" +
          (file.canonical_log ? "driftlab log" : "plain table") + "), generated " + stamp + " by driftlab.</p>\n";
+    for (const auto& note : file.notes) h += "<p>Note: " + html_escape(note) + "</p>\n";
 
     // Table 1 equivalent.
     h += "<h2>Turn-on drift, eq. 1: C1 (1 &minus; exp(&minus;t/T)) + C2</h2>\n";

@@ -1,6 +1,6 @@
 // `driftlab whiteness`, `fit` and `report` from the command line: whiteness prints every warning of the analysis as
 // fit does (it had printed only the adaptation note), a table without a time column says that t is the row index,
-// and the timing options take allan's and gap's spelling.
+// the timing options take allan's and gap's spelling, and a log refuses a sample period its rows contradict.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,6 +75,33 @@ TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
     EXPECT_NE(help.output.find("--sample-period,--tau0"), std::string::npos) << help.output;
     EXPECT_NE(help.output.find("--t-min,--from"), std::string::npos) << help.output;
     EXPECT_NE(help.output.find("--t-max,--to"), std::string::npos) << help.output;
+}
+
+// A canonical log carries its own time: --sample-period 7 on one had been dropped without a word. One that
+// contradicts the rows is refused, one that agrees is noted as unused (beside JSON on the error output).
+TEST(AnalysisCli, ASamplePeriodOnALogIsRefusedOrNoted) {
+    TempDir dir("logperiod");
+    const std::string log = dir.file("h.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "300", "-o", log}, dir.path()).exit_code, 0);
+    const std::string html = dir.file("r.html");
+    for (const auto& args : {std::vector<std::string>{"fit", log, "--sample-period", "7"},
+                             {"whiteness", log, "--tau0", "7"},
+                             {"report", log, "--sample-period", "7", "-o", html, "--no-plots"}}) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
+        EXPECT_NE(r.output.find("--sample-period/--tau0 7 s contradicts " + log + ": it is a driftlab log, timed by "
+                                "its own t_s column, whose rows are 1 s apart"),
+                  std::string::npos) << args[0] << ": " << r.output;
+    }
+    const RunResult agrees = run_driftlab({"fit", log, "--tau0", "1"}, dir.path());
+    EXPECT_EQ(agrees.exit_code, 0) << agrees.output;
+    EXPECT_NE(agrees.output.find("note: --sample-period/--tau0 1 s is not used: " + log), std::string::npos) << agrees.output;
+    const std::string json_file = dir.file("fit.json");
+    std::ofstream(json_file).close();  // run_driftlab_stdout_to opens it, it does not make it
+    const RunResult json = run_driftlab_stdout_to({"fit", log, "--tau0", "1", "--json"}, json_file, dir.path());
+    EXPECT_EQ(json.exit_code, 0) << json.output;
+    EXPECT_NE(json.output.find("note: --sample-period/--tau0 1 s is not used"), std::string::npos) << json.output;
+    EXPECT_TRUE(nlohmann::json::parse(read_text(json_file)).contains("channels"));  // the note is not in it
 }
 
 }  // namespace
