@@ -45,7 +45,7 @@ void run(const ReportCommandOptions& opts) {
         std::cout << "wrote " << opts.output << " (" << html.size() / 1024 << " KiB)\n";
     }
     print_file_notes(file, opts.json);
-    if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
+    throw_if_failed(file, false);  // the reasons are in the page, not on the terminal
 }
 
 }  // namespace

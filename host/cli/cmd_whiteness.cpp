@@ -9,7 +9,6 @@
 #include "host/report/analysis_json.hpp"
 #include "host/report/analysis_plots.hpp"
 #include "host/report/json_out.hpp"
-#include "host/util/error.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -59,7 +58,7 @@ void run(const WhitenessCommandOptions& opts) {
     if (!opts.plot_dir.empty())
         for (const auto& s : file.series)
             if (s.analysis) report::render_plot(report::autocorrelation_plot(*s.analysis), opts.plot_dir, "fig4_" + s.name);
-    if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
+    throw_if_failed(file, !opts.json);
 }
 
 }  // namespace

@@ -46,6 +46,10 @@ void print_analysis_warnings(const fit::DriftAnalysis& analysis);
 /// beside JSON (cmd_fit.cpp).
 void print_file_notes(const fit::FileAnalysis& file, bool json);
 
+/// The non-zero exit (DataError) for series that could not be analysed. With `reasons_printed` (a text table gave
+/// each) it names them only; else it gives every reason (cmd_fit.cpp).
+void throw_if_failed(const fit::FileAnalysis& file, bool reasons_printed);
+
 /// Checks for numeric options. CLI11's PositiveNumber and NonNegativeNumber state their range as 0 to the largest
 /// double written out in full; these say what is wanted and what was given (number_checks.cpp).
 const CLI::Validator& positive_number();

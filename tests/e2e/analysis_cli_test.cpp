@@ -1,8 +1,10 @@
 // `driftlab whiteness`, `fit` and `report` from the command line: whiteness prints every warning of the analysis as
 // fit does (it had printed only the adaptation note), a table without a time column says that t is the row index,
-// the timing options take allan's and gap's spelling, and a log refuses a sample period its rows contradict.
+// the timing options take allan's and gap's spelling, a log refuses a sample period its rows contradict, and fit's
+// table says its units.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -48,6 +50,22 @@ TEST(AnalysisCli, ATableWithoutTimeSaysTIsTheRowIndex) {
         const RunResult r = run_driftlab({command, path}, dir.path());
         EXPECT_NE(r.output.find("no time column: t is the row index x 1 s"), std::string::npos) << command << r.output;
     }
+}
+
+/// Occurrences of `what` in `text`.
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+/// The lines of fit's table: from its header (starting "channel") to the first line that is not a series' row.
+std::vector<std::string> table_rows(const std::string& output) {
+    const auto lines = lines_of(output);
+    auto it = std::find_if(lines.begin(), lines.end(), [](const std::string& l) { return l.rfind("channel", 0) == 0; });
+    std::vector<std::string> rows;
+    for (; it != lines.end() && !it->empty() && it->find(": ") == std::string::npos; ++it) rows.push_back(*it);
+    return rows;
 }
 
 // allan and gap spell the period --tau0 and the time window --from/--to: fit, whiteness and report had refused
@@ -102,6 +120,34 @@ TEST(AnalysisCli, ASamplePeriodOnALogIsRefusedOrNoted) {
     EXPECT_EQ(json.exit_code, 0) << json.output;
     EXPECT_NE(json.output.find("note: --sample-period/--tau0 1 s is not used"), std::string::npos) << json.output;
     EXPECT_TRUE(nlohmann::json::parse(read_text(json_file)).contains("channels"));  // the note is not in it
+}
+
+// The table says its units (C2 from mid-scale, rms in counts) also when the fit failed, gives p to 3 digits, and
+// each failure's reason once (they had been printed in the table and again).
+TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
+    TempDir dir("fittable");
+    const std::string log = dir.file("h.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "300", "-o", log}, dir.path()).exit_code, 0);
+    const RunResult r = run_driftlab({"fit", log}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto rows = table_rows(r.output);
+    ASSERT_EQ(rows.size(), 5u) << r.output;
+    EXPECT_NE(rows[0].find("C2 [counts] (physical from mid-scale)"), std::string::npos) << rows[0];
+    EXPECT_NE(rows[0].find("rms [counts]"), std::string::npos) << rows[0];
+    for (const auto& line : lines_of(r.output)) {
+        const auto p = line.find(", p = ");
+        if (p == std::string::npos) continue;
+        const std::string value = line.substr(p + 6, line.find(' ', p + 6) - p - 6);
+        EXPECT_LE(value.size(), 7u) << line;  // 0.00332 or 0.357, not 0.00332395
+    }
+
+    const RunResult failed = run_driftlab({"fit", log, "--t-max", "10"}, dir.path());
+    EXPECT_EQ(failed.exit_code, 3) << failed.output;
+    EXPECT_NE(failed.output.find("C1 [counts]"), std::string::npos) << failed.output;
+    EXPECT_EQ(failed.output.find("[table unit]"), std::string::npos) << failed.output;
+    EXPECT_EQ(count_of(failed.output, "9 samples in the selected time range"), 4u) << failed.output;
+    EXPECT_NE(failed.output.find(log + ": not analysed: gyro, accel_x, accel_y, accel_z (the reasons are above)"),
+              std::string::npos) << failed.output;
 }
 
 }  // namespace
