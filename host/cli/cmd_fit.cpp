@@ -34,6 +34,8 @@ std::string interval(const fit::Estimate& e, const std::array<double, 2>& ci) {
     return "[" + at_precision(e, ci[0]) + ", " + at_precision(e, ci[1]) + "]";
 }
 
+constexpr const char* kNotDetermined = "not determined";
+
 /// Rows of cells in columns as wide as their widest cell: a value such as -6.92737e+11 or the status
 /// iteration_limit had pushed the rest of its row out of line under fixed widths. A row of two cells (a series
 /// that failed) keeps its second cell whole, beside the first column.
@@ -62,41 +64,64 @@ void print_table(const fit::FileAnalysis& file) {
         {"channel", "C1 " + unit + (file.canonical_log ? " (physical)" : ""),
          "C2 " + unit + (file.canonical_log ? " (physical from mid-scale)" : ""), "T [s]", "status", "rms " + unit,
          "residual"}};
+    std::vector<std::string> undetermined;
     for (const auto& s : file.series) {
         if (!s.analysis) {
             rows.push_back({s.name, "error: " + s.error});
             continue;
         }
         const fit::DriftAnalysis& a = *s.analysis;
-        std::string c1 = at_precision(a.plain.c1, a.plain.c1.value), c2 = at_precision(a.plain.c2, a.plain.c2.value);
+        const bool c1_t = a.c1_and_t_determined(), c2_known = a.c2_determined();
+        std::string c1 = c1_t ? at_precision(a.plain.c1, a.plain.c1.value) : kNotDetermined;
+        std::string c2 = c2_known ? at_precision(a.plain.c2, a.plain.c2.value) : kNotDetermined;
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string name = physical_unit(c).name;
             const auto physical = [c](const fit::Estimate& e, double v) {
                 return to_precision_of(v, std::fabs(counts_to_physical(c, e.stderr_)));
             };
-            c1 += " (" + physical(a.plain.c1, counts_to_physical(c, a.plain.c1.value)) + " " + name + ")";
-            c2 += " (" + physical(a.plain.c2, level_to_physical(c, a.plain.c2.value)) + " " + name + ")";
+            if (c1_t) c1 += " (" + physical(a.plain.c1, counts_to_physical(c, a.plain.c1.value)) + " " + name + ")";
+            if (c2_known) c2 += " (" + physical(a.plain.c2, level_to_physical(c, a.plain.c2.value)) + " " + name + ")";
         }
-        rows.push_back({s.name, c1, c2, at_precision(a.plain.t_s, a.plain.t_s.value), fit::fit_status_name(a.fit.status),
-                        significant(a.fit.rms, 4), a.whiteness.white ? "white" : "NOT white"});
+        rows.push_back({s.name, c1, c2, c1_t ? at_precision(a.plain.t_s, a.plain.t_s.value) : kNotDetermined,
+                        fit::fit_status_name(a.fit.status), significant(a.fit.rms, 4),
+                        a.whiteness.white ? "white" : "NOT white"});
+        if (!c1_t) undetermined.push_back(s.name + ": " + kNotDetermined + ": " + a.undetermined_reason());
     }
     print_columns(rows);
+    for (const auto& line : undetermined) std::cout << line << "\n";
     for (const auto& s : file.series) {
         if (!s.analysis) continue;
         const fit::DriftAnalysis& a = *s.analysis;
         std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << fixed_point(a.data.t_s.front(), 3) << " .. "
                   << fixed_point(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
                   << ")\n";
-        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w) {
-            std::cout << "  " << name << " = " << at_precision(p, p.value) << " +- " << at_precision(p, p.stderr_)
-                      << "  95 % " << interval(p, p.ci95);
-            if (!a.whiteness.white) std::cout << "  widened " << interval(p, w.ci95);
+        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w, bool determined) {
+            std::cout << "  " << name << " = ";
+            if (!determined) {
+                std::cout << kNotDetermined << " (the fit's value is in --json)\n";
+                return;
+            }
+            std::cout << fit::with_error(p);
+            if (std::isfinite(p.stderr_)) {
+                std::cout << "  95 % " << interval(p, p.ci95);
+                if (!a.whiteness.white) std::cout << "  widened " << interval(p, w.ci95);
+            }
             std::cout << "\n";
         };
-        row("C1", a.plain.c1, a.widened.c1);
-        row("C2", a.plain.c2, a.widened.c2);
-        row("T ", a.plain.t_s, a.widened.t_s);
+        row("C1", a.plain.c1, a.widened.c1, a.c1_and_t_determined());
+        row("C2", a.plain.c2, a.widened.c2, a.c2_determined());
+        row("T ", a.plain.t_s, a.widened.t_s, a.c1_and_t_determined());
+        // What a record far shorter than T does determine (JSON initial_slope), where C1 and T are not.
+        if (a.t_beyond_record) {
+            std::cout << "  C1/T = " << fit::with_error(a.plain.initial_slope) << " per s";
+            if (std::isfinite(a.plain.initial_slope.stderr_)) {
+                std::cout << "  95 % " << interval(a.plain.initial_slope, a.plain.initial_slope.ci95);
+                if (!a.whiteness.white)
+                    std::cout << "  widened " << interval(a.plain.initial_slope, a.widened.initial_slope.ci95);
+            }
+            std::cout << "  (initial slope, the drift rate at power-on)\n";
+        }
         const auto& w = a.whiteness;
         std::cout << "  whiteness: " << fixed_point(100.0 * w.fraction_inside, 1) << " % of lags inside +-2 sigma ("
                   << w.sequences_used << " sequences of " << fixed_point(w.sequence_length_s, 1) << " s), Ljung-Box Q("

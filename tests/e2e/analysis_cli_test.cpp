@@ -1,12 +1,13 @@
 // `driftlab whiteness`, `fit` and `report` from the command line: whiteness prints every warning of the analysis as
 // fit does (it had printed only the adaptation note), a table without a time column says that t is the row index,
 // the timing options take allan's and gap's spelling, a log refuses a sample period its rows contradict, and fit's
-// table says its units.
+// table says its units and what it cannot determine.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 
 #include <nlohmann/json.hpp>
 
@@ -120,6 +121,52 @@ TEST(AnalysisCli, ASamplePeriodOnALogIsRefusedOrNoted) {
     EXPECT_EQ(json.exit_code, 0) << json.output;
     EXPECT_NE(json.output.find("note: --sample-period/--tau0 1 s is not used"), std::string::npos) << json.output;
     EXPECT_TRUE(nlohmann::json::parse(read_text(json_file)).contains("channels"));  // the note is not in it
+}
+
+// A warm unit (T far beyond the record) and a singular fit had printed the fit's arbitrary values in the table
+// (gyro -6.92737e+11 counts on hil --warm 3200), out of line, and "+- inf" below it.
+TEST(AnalysisCli, WhatTheDataDoNotDetermineReadsNotDetermined) {
+    TempDir dir("undetermined");
+    const std::string warm = dir.file("warm.csv");
+    const std::string unix_time = dir.file("unix.csv");
+    {
+        std::ofstream w(warm), u(unix_time);
+        w << "t_s,gyro,settling\n";
+        u << "t_s,gyro\n";
+        for (int k = 1; k <= 1500; ++k) {
+            const double noise = 0.2 * std::sin(2.3 * k);
+            w << k << ',' << 508.0 - 1e-3 * k + noise << ',' << 3.0 * (1.0 - std::exp(-k / 150.0)) + 505.0 + noise
+              << '\n';
+            u << std::setprecision(12) << 1.7e9 + k << ',' << 3.0 * (1.0 - std::exp(-k / 411.0)) + 505.0 + noise
+              << '\n';
+        }
+    }
+    const RunResult w = run_driftlab({"fit", warm}, dir.path());
+    ASSERT_EQ(w.exit_code, 0) << w.output;
+    const auto rows = table_rows(w.output);
+    ASSERT_EQ(rows.size(), 3u) << w.output;
+    EXPECT_NE(rows[1].find("not determined"), std::string::npos) << w.output;
+    EXPECT_EQ(rows[2].find("not determined"), std::string::npos) << w.output;
+    EXPECT_EQ(count_of(rows[1], "not determined"), 2u) << w.output;  // C1 and T; C2 is the line's start
+    EXPECT_NE(w.output.find("gyro: not determined: T is beyond the record, which determines only the initial slope C1/T"),
+              std::string::npos) << w.output;
+    EXPECT_NE(w.output.find("  C1 = not determined"), std::string::npos) << w.output;
+    const auto slope = w.output.find("  C1/T = ");
+    ASSERT_NE(slope, std::string::npos) << w.output;
+    EXPECT_NEAR(std::stod(w.output.substr(slope + 9)), -1e-3, 1e-5) << w.output;
+    // Columns line up whatever is in them.
+    const auto status = rows[0].find("status");
+    for (const auto& row : rows) EXPECT_TRUE(row[status - 1] == ' ' && row[status] != ' ') << w.output;
+
+    const RunResult u = run_driftlab({"fit", unix_time}, dir.path());
+    ASSERT_EQ(u.exit_code, 0) << u.output;
+    EXPECT_NE(u.output.find("singular"), std::string::npos) << u.output;
+    EXPECT_EQ(count_of(table_rows(u.output)[1], "not determined"), 3u) << u.output;
+    EXPECT_EQ(u.output.find("+- inf"), std::string::npos) << u.output;
+    EXPECT_EQ(u.output.find("-inf"), std::string::npos) << u.output;
+    const nlohmann::json j = nlohmann::json::parse(run_driftlab({"fit", unix_time, "--json"}, dir.path()).output);
+    EXPECT_TRUE(j["channels"]["gyro"]["C1"]["stderr"].is_null()) << j.dump();
+    EXPECT_TRUE(j["channels"]["gyro"]["C1"]["value"].is_number()) << j.dump();  // JSON keeps the value
 }
 
 // The table says its units (C2 from mid-scale, rms in counts) also when the fit failed, gives p to 3 digits, and

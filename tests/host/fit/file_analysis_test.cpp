@@ -1,4 +1,4 @@
-// analyse_file: a sample period given for a file that carries its own time.
+// analyse_file: a sample period given for a file that carries its own time, and what the analysis says it determines.
 #include "host/fit/file_analysis.hpp"
 
 #include <gtest/gtest.h>
@@ -75,6 +75,35 @@ TEST(FileAnalysis, ASamplePeriodTheRowsAgreeWithIsNotedAsUnused) {
     EXPECT_EQ(file.notes[0], "--sample-period/--tau0 1 s is not used: " + request.path +
                                  " is a driftlab log, timed by its own t_s column, whose rows are 1 s apart (median; "
                                  "mean 1 s)");
+}
+
+// A warm unit's straight record leaves C1 and T undetermined (only C1/T is); a singular fit leaves C2 so too
+// unless T is beyond the record. fit and report print "not determined" where these say so.
+TEST(FileAnalysis, WhatTheDataDetermineIsSaid) {
+    const TempDir dir("fa_determined");
+    FileAnalysisRequest request;
+    request.path = write_log(dir, [](double t) { return 508.0 - 1e-2 * t; });
+    request.names = {"gyro", "accel_x"};
+    const FileAnalysis file = analyse_file(request);
+    ASSERT_EQ(file.failures(), 0u);
+    const DriftAnalysis& warm = *file.series[0].analysis;
+    EXPECT_TRUE(warm.t_beyond_record);
+    EXPECT_FALSE(warm.c1_and_t_determined());
+    EXPECT_TRUE(warm.c2_determined());
+    EXPECT_NE(warm.undetermined_reason().find("T is beyond the record, which determines only the initial slope C1/T"),
+              std::string::npos) << warm.undetermined_reason();
+    EXPECT_NEAR(warm.plain.initial_slope.value, -1e-2, 1e-3);
+    const DriftAnalysis& settling = *file.series[1].analysis;
+    EXPECT_TRUE(settling.c1_and_t_determined() && settling.c2_determined());
+    EXPECT_EQ(settling.undetermined_reason(), "");
+
+    DriftAnalysis singular = settling;
+    singular.fit.status = FitStatus::singular;
+    EXPECT_FALSE(singular.c1_and_t_determined());
+    EXPECT_FALSE(singular.c2_determined());
+    EXPECT_EQ(singular.undetermined_reason(), "the fit is singular (C1, C2 and T are not separately determined)");
+    singular.t_beyond_record = true;
+    EXPECT_TRUE(singular.c2_determined());  // a straight line over the record: its start is C2
 }
 
 }  // namespace
