@@ -65,6 +65,7 @@ void print_table(const fit::FileAnalysis& file) {
          "C2 " + unit + (file.canonical_log ? " (physical from mid-scale)" : ""), "T [s]", "status", "rms " + unit,
          "residual"}};
     std::vector<std::string> undetermined;
+    bool accel_shown = false;
     for (const auto& s : file.series) {
         if (!s.analysis) {
             rows.push_back({s.name, "error: " + s.error});
@@ -77,6 +78,7 @@ void print_table(const fit::FileAnalysis& file) {
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string name = physical_unit(c).name;
+            accel_shown |= c != Channel::gyro;
             const auto physical = [c](const fit::Estimate& e, double v) {
                 return to_precision_of(v, std::fabs(counts_to_physical(c, e.stderr_)));
             };
@@ -90,6 +92,7 @@ void print_table(const fit::FileAnalysis& file) {
     }
     print_columns(rows);
     for (const auto& line : undetermined) std::cout << line << "\n";
+    if (accel_shown) std::cout << "note: " << kAccelScaleNote << "\n";
     for (const auto& s : file.series) {
         if (!s.analysis) continue;
         const fit::DriftAnalysis& a = *s.analysis;

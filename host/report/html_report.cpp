@@ -83,6 +83,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     h += "<table><tr><th>channel</th><th>C1</th><th>C2</th><th>T [s]</th><th>unit</th><th>status</th><th>n</th>"
          "<th>rms</th></tr>\n";
     std::string undetermined;
+    bool accel_shown = false;
     for (const auto& s : file.series) {
         if (!s.analysis) {
             h += "<tr><td>" + html_escape(s.name) + "</td><td colspan=\"7\" class=\"bad\">" + html_escape(s.error) +
@@ -97,6 +98,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string unit = physical_unit(c).name;
+            accel_shown |= c != Channel::gyro;
             if (c1_t) c1 += " (" + sig(counts_to_physical(c, a.plain.c1.value), 4) + " " + unit + ")";
             if (c2_known) c2 += " (" + sig(level_to_physical(c, a.plain.c2.value), 4) + " " + unit + " from mid-scale)";
         }
@@ -109,6 +111,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
                             html_escape(a.undetermined_reason()) + ".</p>\n";
     }
     h += "</table>\n" + undetermined;
+    if (accel_shown) h += "<p>Note: " + html_escape(kAccelScaleNote) + ".</p>\n";
 
     // Intervals.
     h += "<h3>Standard errors and 95 % intervals</h3>\n<p>Plain intervals assume a white residual; the widened ones "

@@ -1,7 +1,7 @@
 // `driftlab whiteness`, `fit` and `report` from the command line: whiteness prints every warning of the analysis as
 // fit does (it had printed only the adaptation note), a table without a time column says that t is the row index,
 // the timing options take allan's and gap's spelling, a log refuses a sample period its rows contradict, and fit's
-// table says its units and what it cannot determine.
+// table says its units, the accelerometer scale it assumes and what it cannot determine.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -169,8 +169,8 @@ TEST(AnalysisCli, WhatTheDataDoNotDetermineReadsNotDetermined) {
     EXPECT_TRUE(j["channels"]["gyro"]["C1"]["value"].is_number()) << j.dump();  // JSON keeps the value
 }
 
-// The table says its units (C2 from mid-scale, rms in counts) also when the fit failed, gives p to 3 digits, and
-// each failure's reason once (they had been printed in the table and again).
+// The table says its units (C2 from mid-scale, rms in counts) also when the fit failed, gives p to 3 digits, the
+// accelerometer's assumed scale, and each failure's reason once (they had been printed in the table and again).
 TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
     TempDir dir("fittable");
     const std::string log = dir.file("h.csv");
@@ -187,6 +187,12 @@ TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
         const std::string value = line.substr(p + 6, line.find(' ', p + 6) - p - 6);
         EXPECT_LE(value.size(), 7u) << line;  // 0.00332 or 0.357, not 0.00332395
     }
+    const std::string accel_note = "note: accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count";
+    EXPECT_NE(r.output.find(accel_note), std::string::npos) << r.output;
+    EXPECT_EQ(run_driftlab({"fit", log, "--channel", "gyro"}, dir.path()).output.find(accel_note), std::string::npos);
+    const std::string html = dir.file("r.html");
+    ASSERT_EQ(run_driftlab({"report", log, "-o", html, "--no-plots"}, dir.path()).exit_code, 0);
+    EXPECT_NE(read_text(html).find("accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count"), std::string::npos);
 
     const RunResult failed = run_driftlab({"fit", log, "--t-max", "10"}, dir.path());
     EXPECT_EQ(failed.exit_code, 3) << failed.output;
