@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "host/cli/commands.hpp"
 #include "host/fit/file_analysis.hpp"
@@ -32,55 +34,103 @@ std::string interval(const fit::Estimate& e, const std::array<double, 2>& ci) {
     return "[" + at_precision(e, ci[0]) + ", " + at_precision(e, ci[1]) + "]";
 }
 
+constexpr const char* kNotDetermined = "not determined";
+
+/// Rows of cells in columns as wide as their widest cell: a value such as -6.92737e+11 or the status
+/// iteration_limit had pushed the rest of its row out of line under fixed widths. A row of two cells (a series
+/// that failed) keeps its second cell whole, beside the first column.
+void print_columns(const std::vector<std::vector<std::string>>& rows) {
+    std::vector<std::size_t> width(rows.front().size(), 0);
+    for (const auto& row : rows)
+        if (row.size() == width.size())
+            for (std::size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
+    for (const auto& row : rows) {
+        std::string line;
+        for (std::size_t i = 0; i < row.size(); ++i) {
+            line += row[i];
+            if (i + 1 < row.size()) line.append(width[i] - std::min(width[i], row[i].size()) + 2, ' ');
+        }
+        std::cout << line << "\n";
+    }
+}
+
 void print_table(const fit::FileAnalysis& file) {
     std::cout << file.path << "\n";
-    // A plain table's values are in its own unit; a log's are A/D counts with the physical value beside them.
-    const bool log_channels =
-        std::any_of(file.series.begin(), file.series.end(), [](const auto& s) { return s.analysis && s.analysis->data.channel; });
-    const char* c1_head = log_channels ? "C1 [counts] (physical)" : "C1 [table unit]";
-    const char* c2_head = log_channels ? "C2 [counts] (physical)" : "C2 [table unit]";
-    std::printf("%-10s %-26s %-26s %-18s %-10s %8s  %s\n", "channel", c1_head, c2_head, "T [s]", "status", "rms",
-                "residual");
+    print_file_notes(file, false);
+    // A log's values are A/D counts with the physical value beside them, a plain table's are in its own unit; the
+    // file says which, also when no series of it could be analysed.
+    const std::string unit = file.canonical_log ? "[counts]" : "[table unit]";
+    std::vector<std::vector<std::string>> rows = {
+        {"channel", "C1 " + unit + (file.canonical_log ? " (physical)" : ""),
+         "C2 " + unit + (file.canonical_log ? " (physical from mid-scale)" : ""), "T [s]", "status", "rms " + unit,
+         "residual"}};
+    std::vector<std::string> undetermined;
+    bool accel_shown = false;
     for (const auto& s : file.series) {
         if (!s.analysis) {
-            std::printf("%-10s error: %s\n", s.name.c_str(), s.error.c_str());
+            rows.push_back({s.name, "error: " + s.error});
             continue;
         }
         const fit::DriftAnalysis& a = *s.analysis;
-        std::string c1 = at_precision(a.plain.c1, a.plain.c1.value), c2 = at_precision(a.plain.c2, a.plain.c2.value);
+        const bool c1_t = a.c1_and_t_determined(), c2_known = a.c2_determined();
+        std::string c1 = c1_t ? at_precision(a.plain.c1, a.plain.c1.value) : kNotDetermined;
+        std::string c2 = c2_known ? at_precision(a.plain.c2, a.plain.c2.value) : kNotDetermined;
         if (a.data.channel) {
             const Channel c = *a.data.channel;
-            const std::string unit = physical_unit(c).name;
+            const std::string name = physical_unit(c).name;
+            accel_shown |= c != Channel::gyro;
             const auto physical = [c](const fit::Estimate& e, double v) {
                 return to_precision_of(v, std::fabs(counts_to_physical(c, e.stderr_)));
             };
-            c1 += " (" + physical(a.plain.c1, counts_to_physical(c, a.plain.c1.value)) + " " + unit + ")";
-            c2 += " (" + physical(a.plain.c2, level_to_physical(c, a.plain.c2.value)) + " " + unit + ")";
+            if (c1_t) c1 += " (" + physical(a.plain.c1, counts_to_physical(c, a.plain.c1.value)) + " " + name + ")";
+            if (c2_known) c2 += " (" + physical(a.plain.c2, level_to_physical(c, a.plain.c2.value)) + " " + name + ")";
         }
-        std::printf("%-10s %-26s %-26s %-18s %-10s %8.4g  %s\n", s.name.c_str(), c1.c_str(), c2.c_str(),
-                    at_precision(a.plain.t_s, a.plain.t_s.value).c_str(), fit::fit_status_name(a.fit.status), a.fit.rms,
-                    a.whiteness.white ? "white" : "NOT white");
+        rows.push_back({s.name, c1, c2, c1_t ? at_precision(a.plain.t_s, a.plain.t_s.value) : kNotDetermined,
+                        fit::fit_status_name(a.fit.status), significant(a.fit.rms, 4),
+                        a.whiteness.white ? "white" : "NOT white"});
+        if (!c1_t) undetermined.push_back(s.name + ": " + kNotDetermined + ": " + a.undetermined_reason());
     }
+    print_columns(rows);
+    for (const auto& line : undetermined) std::cout << line << "\n";
+    if (accel_shown) std::cout << "note: " << kAccelScaleNote << "\n";
     for (const auto& s : file.series) {
         if (!s.analysis) continue;
         const fit::DriftAnalysis& a = *s.analysis;
         std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << fixed_point(a.data.t_s.front(), 3) << " .. "
                   << fixed_point(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
                   << ")\n";
-        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w) {
-            std::cout << "  " << name << " = " << at_precision(p, p.value) << " +- " << at_precision(p, p.stderr_)
-                      << "  95 % " << interval(p, p.ci95);
-            if (!a.whiteness.white) std::cout << "  widened " << interval(p, w.ci95);
+        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w, bool determined) {
+            std::cout << "  " << name << " = ";
+            if (!determined) {
+                std::cout << kNotDetermined << " (the fit's value is in --json)\n";
+                return;
+            }
+            std::cout << fit::with_error(p);
+            if (std::isfinite(p.stderr_)) {
+                std::cout << "  95 % " << interval(p, p.ci95);
+                if (!a.whiteness.white) std::cout << "  widened " << interval(p, w.ci95);
+            }
             std::cout << "\n";
         };
-        row("C1", a.plain.c1, a.widened.c1);
-        row("C2", a.plain.c2, a.widened.c2);
-        row("T ", a.plain.t_s, a.widened.t_s);
+        row("C1", a.plain.c1, a.widened.c1, a.c1_and_t_determined());
+        row("C2", a.plain.c2, a.widened.c2, a.c2_determined());
+        row("T ", a.plain.t_s, a.widened.t_s, a.c1_and_t_determined());
+        // What a record far shorter than T does determine (JSON initial_slope), where C1 and T are not.
+        if (a.t_beyond_record) {
+            std::cout << "  C1/T = " << fit::with_error(a.plain.initial_slope) << " per s";
+            if (std::isfinite(a.plain.initial_slope.stderr_)) {
+                std::cout << "  95 % " << interval(a.plain.initial_slope, a.plain.initial_slope.ci95);
+                if (!a.whiteness.white)
+                    std::cout << "  widened " << interval(a.plain.initial_slope, a.widened.initial_slope.ci95);
+            }
+            std::cout << "  (initial slope, the drift rate at power-on)\n";
+        }
         const auto& w = a.whiteness;
         std::cout << "  whiteness: " << fixed_point(100.0 * w.fraction_inside, 1) << " % of lags inside +-2 sigma ("
                   << w.sequences_used << " sequences of " << fixed_point(w.sequence_length_s, 1) << " s), Ljung-Box Q("
-                  << w.ljung_box.lags << ") = " << fixed_point(w.ljung_box.statistic, 2) << ", p = " << w.ljung_box.p_value
-                  << " -> " << (w.white ? "white" : "not white") << "\n";
+                  << w.ljung_box.lags << ") = " << fixed_point(w.ljung_box.statistic, 2)
+                  << ", p = " << significant(w.ljung_box.p_value, 3) << " -> " << (w.white ? "white" : "not white")
+                  << "\n";
         print_analysis_warnings(a);
     }
 }
@@ -101,11 +151,12 @@ void run(const FitCommandOptions& opts) {
         for (const auto& s : file.series)
             out["channels"][s.name] = s.analysis ? report::fit_json(*s.analysis) : nlohmann::json{{"error", s.error}};
         report::write_json(std::cout, out);
+        print_file_notes(file, true);
     } else {
         print_table(file);
     }
     if (!opts.plot_dir.empty()) write_plots(file, opts.plot_dir);
-    if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
+    throw_if_failed(file, !opts.json);
 }
 
 }  // namespace
@@ -114,15 +165,34 @@ void print_analysis_warnings(const fit::DriftAnalysis& analysis) {
     for (const auto& warning : analysis.warnings) std::cout << "  warning: " << warning << "\n";
 }
 
+void print_file_notes(const fit::FileAnalysis& file, bool json) {
+    // Beside JSON they go to the error output, which keeps the standard output one document.
+    for (const auto& note : file.notes) (json ? std::cerr : std::cout) << "note: " << note << "\n";
+}
+
+void throw_if_failed(const fit::FileAnalysis& file, bool reasons_printed) {
+    if (file.failures() == 0) return;
+    if (!reasons_printed) throw DataError(file.path, 0, file.failure_summary());
+    // The table's rows give each reason: repeating them all in one line had printed every error twice.
+    std::string names;
+    for (const auto& s : file.series)
+        if (!s.analysis) names += (names.empty() ? "" : ", ") + s.name;
+    throw DataError(file.path, 0, "not analysed: " + names + " (the reasons are above)");
+}
+
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
     cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required();
     cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
-    cmd->add_option("--t-min", r.options.t_min_s, "Use samples with t_s >= this [s]")->check(finite_value());
-    cmd->add_option("--t-max", r.options.t_max_s, "Use samples with t_s <= this [s]")->check(finite_value());
+    // allan and gap spell the time window --from/--to and the period --tau0: one spelling works in every command.
+    cmd->add_option("--t-min,--from", r.options.t_min_s, "Use samples with t_s >= this [s since power-on]")
+        ->check(finite_value());
+    cmd->add_option("--t-max,--to", r.options.t_max_s, "Use samples with t_s <= this [s since power-on]")
+        ->check(finite_value());
     cmd->add_option("--time-column", r.time_column,
                     "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
                     "time, time_s, timestamp...)");
-    cmd->add_option("--sample-period", r.sample_period_s, "Plain tables without time: sample period [s]")
+    cmd->add_option("--sample-period,--tau0", r.sample_period_s,
+                    "Plain tables without a time column: sample period [s] (default 1 s per row)")
         ->check(positive_number());
     cmd->add_option("--sequences", r.options.whiteness.sequences, "Whiteness: number M of sequences (paper: 10)")
         ->check(positive_number());

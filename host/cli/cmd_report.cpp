@@ -42,7 +42,8 @@ void run(const ReportCommandOptions& opts) {
     } else {
         std::cout << "wrote " << opts.output << " (" << html.size() / 1024 << " KiB)\n";
     }
-    if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
+    print_file_notes(file, opts.json);
+    throw_if_failed(file, false);  // the reasons are in the page, not on the terminal
 }
 
 }  // namespace

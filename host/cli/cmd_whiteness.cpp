@@ -9,7 +9,6 @@
 #include "host/report/analysis_json.hpp"
 #include "host/report/analysis_plots.hpp"
 #include "host/report/json_out.hpp"
-#include "host/util/error.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -22,6 +21,7 @@ struct WhitenessCommandOptions {
 
 void print_text(const fit::FileAnalysis& file) {
     std::cout << file.path << "\n";
+    print_file_notes(file, false);
     std::printf("%-10s %9s %9s %8s %11s %9s %11s  %s\n", "channel", "inside", "bound", "M x L", "LB Q(h)", "LB p",
                 "tau [smp]", "verdict");
     for (const auto& s : file.series) {
@@ -51,13 +51,14 @@ void run(const WhitenessCommandOptions& opts) {
                                             {"warnings", s.analysis->warnings}}
                            : nlohmann::json{{"error", s.error}};
         report::write_json(std::cout, out);
+        print_file_notes(file, true);
     } else {
         print_text(file);
     }
     if (!opts.plot_dir.empty())
         for (const auto& s : file.series)
             if (s.analysis) report::render_plot(report::autocorrelation_plot(*s.analysis), opts.plot_dir, "fig4_" + s.name);
-    if (file.failures() > 0) throw DataError(file.path, 0, file.failure_summary());
+    throw_if_failed(file, !opts.json);
 }
 
 }  // namespace

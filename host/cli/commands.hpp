@@ -10,6 +10,7 @@
 
 namespace driftlab::host::fit {
 struct FileAnalysisRequest;
+struct FileAnalysis;
 struct DriftAnalysis;
 }
 namespace driftlab::host::gap {
@@ -40,6 +41,14 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request
 
 /// A series' analysis warnings, one "  warning: ..." line each, as fit and whiteness print them (cmd_fit.cpp).
 void print_analysis_warnings(const fit::DriftAnalysis& analysis);
+
+/// The file's notes (an option it does not use), "note: ..." each: on the standard output, or on the error output
+/// beside JSON (cmd_fit.cpp).
+void print_file_notes(const fit::FileAnalysis& file, bool json);
+
+/// The non-zero exit (DataError) for series that could not be analysed. With `reasons_printed` (a text table gave
+/// each) it names them only; else it gives every reason (cmd_fit.cpp).
+void throw_if_failed(const fit::FileAnalysis& file, bool reasons_printed);
 
 /// Checks for numeric options. CLI11's PositiveNumber and NonNegativeNumber state their range as 0 to the largest
 /// double written out in full; these say what is wanted and what was given (number_checks.cpp).

@@ -27,6 +27,14 @@ Series restrict_range(const Series& s, double t_min_s, double t_max_s) {
 
 }  // namespace
 
+std::string DriftAnalysis::undetermined_reason() const {
+    if (t_beyond_record)
+        return "T is beyond the record, which determines only the initial slope C1/T" +
+               std::string(fit.status == FitStatus::singular ? " (the fit is singular)" : "");
+    if (fit.status == FitStatus::singular) return "the fit is singular (C1, C2 and T are not separately determined)";
+    return "";
+}
+
 DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options) {
     DriftAnalysis out;
     out.data = restrict_range(series, options.t_min_s, options.t_max_s);
@@ -72,7 +80,8 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     // A plain table's row index read as seconds had been printed as seconds, unremarked.
     if (out.data.index_period_s > 0.0)
         out.warnings.push_back("no time column: t is the row index x " + format_double(out.data.index_period_s) +
-                               " s (--sample-period); name the time column with --time-column if the table has one");
+                               " s (--sample-period or --tau0); name the time column with --time-column if the table "
+                               "has one");
     // A record that starts 100 spans after power-on (Unix time) holds a transient as short as itself only as
     // exp(-100) of C1: the fit is singular, or reads a slow drift as T far beyond the record.
     const double span_s = out.data.t_s.back() - out.data.t_s.front();
@@ -86,15 +95,14 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     if (out.fit.status == FitStatus::iteration_limit)
         out.warnings.push_back("fit stopped at the evaluation limit (" + std::to_string(out.fit.function_evaluations) +
                                "); parameters are the last iterate");
-    if (out.fit.start.t_at_upper_end || out.fit.parameters.t_s > 3.0 * out.data.t_s.back())
-        out.warnings.push_back("T (" + fixed_point(out.fit.parameters.t_s, 1) + " s) is beyond the record (ends at t = " +
-                               fixed_point(out.data.t_s.back(), 1) +
+    out.t_beyond_record = out.fit.start.t_at_upper_end || out.fit.parameters.t_s > 3.0 * out.data.t_s.back();
+    out.t_below_sampling = out.fit.start.t_at_lower_end || out.fit.parameters.t_s < out.sample_period_s;
+    if (out.t_beyond_record)
+        out.warnings.push_back("T (" + to_precision_of(out.plain.t_s.value, out.plain.t_s.stderr_) +
+                               " s) is beyond the record (ends at t = " + fixed_point(out.data.t_s.back(), 1) +
                                " s): the data show no settling, so only the initial slope C1/T is well determined (" +
-                               to_precision_of(out.plain.initial_slope.value, out.plain.initial_slope.stderr_) +
-                               " +- " +
-                               to_precision_of(out.plain.initial_slope.stderr_, out.plain.initial_slope.stderr_) +
-                               " per s)");
-    if (out.fit.start.t_at_lower_end || out.fit.parameters.t_s < out.sample_period_s)
+                               with_error(out.plain.initial_slope) + " per s)");
+    if (out.t_below_sampling)
         out.warnings.push_back("T (" + significant(out.fit.parameters.t_s, 3) +
                                " s) is shorter than the sampling interval: the transient is not resolved");
     const auto& w = out.whiteness;

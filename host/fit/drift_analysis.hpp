@@ -33,6 +33,17 @@ struct DriftAnalysis {
     ParameterIntervals plain;         ///< assuming white residuals
     ParameterIntervals widened;       ///< with the residual's autocorrelation time (= plain when white)
     std::vector<std::string> warnings;
+    bool t_beyond_record = false;     ///< T above 3x the record's end, or no curvature seen: only C1/T is determined
+    bool t_below_sampling = false;    ///< T below the sampling interval: the transient is not resolved
+
+    /// Whether the data determine C1 and T: not for a singular fit, nor where T is beyond the record (only their
+    /// ratio, plain.initial_slope). The fit's values are then arbitrary (gyro C1 = -6.9e11 counts on a warm log).
+    bool c1_and_t_determined() const { return fit.status != FitStatus::singular && !t_beyond_record; }
+    /// Whether they determine C2: not for a singular fit, unless T is beyond the record, where eq. 1 is a straight
+    /// line over the record and C2 its start.
+    bool c2_determined() const { return fit.status != FitStatus::singular || t_beyond_record; }
+    /// Why a parameter is not determined ("" when all are), for the line under a table that prints "not determined".
+    std::string undetermined_reason() const;
 };
 
 /// Runs the analysis. Throws DataError (naming the file and series) when fewer than kMinAnalysisSamples

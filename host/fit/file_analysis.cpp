@@ -1,9 +1,30 @@
 // Per-file drift analysis; see file_analysis.hpp.
 #include "host/fit/file_analysis.hpp"
 
+#include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::fit {
+namespace {
+
+/// A sample period given for a file that carries its own time had been dropped without a word (fit LOG
+/// --sample-period 7 fitted the log's 1 s rows as if nothing was said): one that contradicts the rows is refused,
+/// one that agrees is noted as unused. `series` share the file's time axis.
+void check_sample_period(const std::vector<Series>& series, double period_s, bool canonical_log, FileAnalysis& out) {
+    if (series.empty() || series.front().index_period_s > 0.0) return;  // the period times the rows: used
+    const std::vector<double>& t_s = series.front().t_s;
+    const std::string option = "--sample-period/--tau0 " + significant(period_s, 6) + " s";
+    const std::string own_time = canonical_log ? "a driftlab log, timed by its own t_s column"
+                                               : "a table timed by its own time column";
+    if (!stats::period_agrees(t_s, period_s))
+        throw UsageError(option + " contradicts " + out.path + ": it is " + own_time + ", whose rows are " +
+                         stats::spacing_text(t_s) + "; leave the option out (it is for tables without a time column)");
+    out.notes.push_back(option + " is not used: " + out.path + " is " + own_time + ", whose rows are " +
+                        stats::spacing_text(t_s));
+}
+
+}  // namespace
 
 std::size_t FileAnalysis::failures() const {
     std::size_t n = 0;
@@ -25,7 +46,8 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
     out.path = request.path;
     out.canonical_log = is_canonical_log(request.path);
     const std::vector<Series> all =
-        load_series(request.path, request.names, request.time_column, request.sample_period_s);
+        load_series(request.path, request.names, request.time_column, request.sample_period_s.value_or(1.0));
+    if (request.sample_period_s) check_sample_period(all, *request.sample_period_s, out.canonical_log, out);
     for (const Series& s : all) {
         SeriesOutcome o;
         o.name = s.name;

@@ -15,7 +15,9 @@ struct FileAnalysisRequest {
     std::string path;
     std::vector<std::string> names;  ///< channels / columns; empty = all
     std::string time_column;         ///< plain tables only; "" = t_s, t or time if present
-    double sample_period_s = 1.0;    ///< plain tables without a time column
+    /// Plain tables without a time column; unset = 1 s per row. A file with its own time (a canonical log's t_s,
+    /// a table's time column) is refused it when the rows' spacing disagrees, and told it is not used otherwise.
+    std::optional<double> sample_period_s;
     AnalysisOptions options;
 };
 
@@ -29,13 +31,15 @@ struct FileAnalysis {
     std::string path;
     bool canonical_log = false;
     std::vector<SeriesOutcome> series;
+    std::vector<std::string> notes;  ///< about the whole file (an option it does not use), printed once
     /// Number of series without a result.
     std::size_t failures() const;
     /// "file: series 'x': why; series 'y': why" for the failures.
     std::string failure_summary() const;
 };
 
-/// Reads the file (DataError when unreadable or malformed) and analyses each series.
+/// Reads the file (DataError when unreadable or malformed) and analyses each series. UsageError when a sample period
+/// is given for a file with its own time and the rows' spacing disagrees with it.
 FileAnalysis analyse_file(const FileAnalysisRequest& request);
 
 }  // namespace driftlab::host::fit

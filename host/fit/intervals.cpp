@@ -7,6 +7,7 @@
 
 #include <Eigen/LU>
 
+#include "host/util/format_number.hpp"
 #include "host/util/special_functions.hpp"
 
 namespace driftlab::host::fit {
@@ -21,6 +22,12 @@ Estimate estimate(double value, double scaled_variance, double inflation, double
 }
 
 }  // namespace
+
+std::string with_error(const Estimate& e) {
+    // A singular fit has no standard errors: "+- inf" had been printed as if it were one.
+    if (!std::isfinite(e.stderr_)) return to_precision_of(e.value, e.stderr_) + " (no interval: the fit is singular)";
+    return to_precision_of(e.value, e.stderr_) + " +- " + to_precision_of(e.stderr_, e.stderr_);
+}
 
 ParameterIntervals parameter_intervals(const FitResult& fit, double tau) {
     ParameterIntervals out;

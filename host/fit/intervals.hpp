@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 
 #include "host/fit/lm_fit.hpp"
 
@@ -20,6 +21,10 @@ struct Estimate {
     double stderr_ = 0.0;               ///< standard error (trailing _ because `stderr` is a macro)
     std::array<double, 2> ci95{};       ///< [lo, hi]
 };
+
+/// "value +- stderr" to the precision of the error; "value (no interval: the fit is singular)" when the error is not
+/// finite. For sentences and the text output.
+std::string with_error(const Estimate& e);
 
 struct ParameterIntervals {
     Estimate c1, c2, t_s;              ///< in the data's unit; T in seconds

@@ -53,6 +53,8 @@ struct Figures {
     }
 };
 
+constexpr const char* kNotDetermined = "not determined";
+
 std::string estimate_cell(const fit::Estimate& e, int digits) {
     return sig(e.value, digits) + " &plusmn; " + sig(e.stderr_, 2);
 }
@@ -74,11 +76,14 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
     h += "<h1>Drift analysis</h1>\n<p>File <code>" + html_escape(file.path) + "</code> (" +
          (file.canonical_log ? "driftlab log" : "plain table") + "), generated " + stamp + " by driftlab.</p>\n";
+    for (const auto& note : file.notes) h += "<p>Note: " + html_escape(note) + "</p>\n";
 
     // Table 1 equivalent.
     h += "<h2>Turn-on drift, eq. 1: C1 (1 &minus; exp(&minus;t/T)) + C2</h2>\n";
     h += "<table><tr><th>channel</th><th>C1</th><th>C2</th><th>T [s]</th><th>unit</th><th>status</th><th>n</th>"
          "<th>rms</th></tr>\n";
+    std::string undetermined;
+    bool accel_shown = false;
     for (const auto& s : file.series) {
         if (!s.analysis) {
             h += "<tr><td>" + html_escape(s.name) + "</td><td colspan=\"7\" class=\"bad\">" + html_escape(s.error) +
@@ -86,19 +91,27 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
             continue;
         }
         const fit::DriftAnalysis& a = *s.analysis;
-        std::string c1 = sig(a.plain.c1.value, 5), c2 = sig(a.plain.c2.value, 6);
+        // The fit's values of parameters the data do not determine are arbitrary (C1 = -6.9e11 counts on a warm log).
+        const bool c1_t = a.c1_and_t_determined(), c2_known = a.c2_determined();
+        std::string c1 = c1_t ? sig(a.plain.c1.value, 5) : kNotDetermined;
+        std::string c2 = c2_known ? sig(a.plain.c2.value, 6) : kNotDetermined;
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string unit = physical_unit(c).name;
-            c1 += " (" + sig(counts_to_physical(c, a.plain.c1.value), 4) + " " + unit + ")";
-            c2 += " (" + sig(level_to_physical(c, a.plain.c2.value), 4) + " " + unit + " from mid-scale)";
+            accel_shown |= c != Channel::gyro;
+            if (c1_t) c1 += " (" + sig(counts_to_physical(c, a.plain.c1.value), 4) + " " + unit + ")";
+            if (c2_known) c2 += " (" + sig(level_to_physical(c, a.plain.c2.value), 4) + " " + unit + " from mid-scale)";
         }
         h += "<tr><td>" + html_escape(s.name) + "</td><td>" + c1 + "</td><td>" + c2 + "</td><td>" +
-             sig(a.plain.t_s.value, 5) + "</td><td>" + html_escape(a.data.unit.empty() ? "-" : a.data.unit) +
-             "</td><td>" + fit::fit_status_name(a.fit.status) + "</td><td>" + std::to_string(a.fit.n) + "</td><td>" +
-             sig(a.fit.rms, 3) + "</td></tr>\n";
+             (c1_t ? sig(a.plain.t_s.value, 5) : kNotDetermined) + "</td><td>" +
+             html_escape(a.data.unit.empty() ? "-" : a.data.unit) + "</td><td>" + fit::fit_status_name(a.fit.status) +
+             "</td><td>" + std::to_string(a.fit.n) + "</td><td>" + sig(a.fit.rms, 3) + "</td></tr>\n";
+        if (!c1_t)
+            undetermined += "<p><b>" + html_escape(s.name) + ":</b> " + kNotDetermined + ": " +
+                            html_escape(a.undetermined_reason()) + ".</p>\n";
     }
-    h += "</table>\n";
+    h += "</table>\n" + undetermined;
+    if (accel_shown) h += "<p>Note: " + html_escape(kAccelScaleNote) + ".</p>\n";
 
     // Intervals.
     h += "<h3>Standard errors and 95 % intervals</h3>\n<p>Plain intervals assume a white residual; the widened ones "
@@ -106,13 +119,18 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     h += "<table><tr><th>channel</th><th>parameter</th><th>value &plusmn; se</th><th>95 %</th><th>95 % widened</th>"
          "</tr>\n";
     for (const fit::DriftAnalysis* a : ok) {
-        const auto row = [&](const char* p, const fit::Estimate& e, const fit::Estimate& w) {
-            h += "<tr><td>" + html_escape(a->data.name) + "</td><td>" + p + "</td><td>" + estimate_cell(e, 6) +
-                 "</td><td>" + ci_cell(e.ci95) + "</td><td>" + ci_cell(w.ci95) + "</td></tr>\n";
+        const auto row = [&](const char* p, const fit::Estimate& e, const fit::Estimate& w, bool determined) {
+            h += "<tr><td>" + html_escape(a->data.name) + "</td><td>" + p + "</td>" +
+                 (determined ? "<td>" + estimate_cell(e, 6) + "</td><td>" + ci_cell(e.ci95) + "</td><td>" +
+                                   ci_cell(w.ci95) + "</td>"
+                             : "<td colspan=\"3\">" + std::string(kNotDetermined) + "</td>") +
+                 "</tr>\n";
         };
-        row("C1", a->plain.c1, a->widened.c1);
-        row("C2", a->plain.c2, a->widened.c2);
-        row("T [s]", a->plain.t_s, a->widened.t_s);
+        row("C1", a->plain.c1, a->widened.c1, a->c1_and_t_determined());
+        row("C2", a->plain.c2, a->widened.c2, a->c2_determined());
+        row("T [s]", a->plain.t_s, a->widened.t_s, a->c1_and_t_determined());
+        // What a record far shorter than T determines where C1 and T are not.
+        if (a->t_beyond_record) row("C1/T [per s]", a->plain.initial_slope, a->widened.initial_slope, true);
     }
     h += "</table>\n";
 

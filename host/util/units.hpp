@@ -11,6 +11,13 @@ inline constexpr double kGyroDpsPerCount = 90.0 / 512.0;
 /// Accelerometer: one count = 19.14 cm/s^2 (ADXL05 through its amplifier) [cm/s^2 per count].
 inline constexpr double kAccelCmps2PerCount = 19.14;
 
+/// Said under every accelerometer value printed in cm/s^2 (fit, report): the scale is the paper's Table 1 as printed,
+/// 10x what the simulator's +-1 g span gives (1/512 g = 19.14 mm/s^2 per count), an open question (docs/sim.md §2).
+/// accel_z's 2101 cm/s^2 from mid-scale at rest had read as 2.1 g without a word.
+inline constexpr const char* kAccelScaleNote =
+    "accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count (0.0195 g), the paper's Table 1 as printed; the "
+    "simulator's +-1 g span makes a count 1/512 g = 19.14 mm/s^2, 10x less (docs/sim.md section 2)";
+
 /// A channel's physical unit: the scale per count and the unit's name.
 struct PhysicalUnit {
     double per_count;

@@ -1,9 +1,15 @@
-// `driftlab whiteness` and `fit` on plain tables: whiteness prints every warning of the analysis as fit does (it had
-// printed only the adaptation note), and a table without a time column says that t is the row index.
+// `driftlab whiteness`, `fit` and `report` from the command line: whiteness prints every warning of the analysis as
+// fit does (it had printed only the adaptation note), a table without a time column says that t is the row index,
+// the timing options take allan's and gap's spelling, a log refuses a sample period its rows contradict, and fit's
+// table says its units, the accelerometer scale it assumes and what it cannot determine.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+
+#include <nlohmann/json.hpp>
 
 #include "e2e_support.hpp"
 
@@ -45,6 +51,156 @@ TEST(AnalysisCli, ATableWithoutTimeSaysTIsTheRowIndex) {
         const RunResult r = run_driftlab({command, path}, dir.path());
         EXPECT_NE(r.output.find("no time column: t is the row index x 1 s"), std::string::npos) << command << r.output;
     }
+}
+
+/// Occurrences of `what` in `text`.
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+/// The lines of fit's table: from its header (starting "channel") to the first line that is not a series' row.
+std::vector<std::string> table_rows(const std::string& output) {
+    const auto lines = lines_of(output);
+    auto it = std::find_if(lines.begin(), lines.end(), [](const std::string& l) { return l.rfind("channel", 0) == 0; });
+    std::vector<std::string> rows;
+    for (; it != lines.end() && !it->empty() && it->find(": ") == std::string::npos; ++it) rows.push_back(*it);
+    return rows;
+}
+
+// allan and gap spell the period --tau0 and the time window --from/--to: fit, whiteness and report had refused
+// both ("The following arguments were not expected: 0.01 --tau0").
+TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
+    TempDir dir("timingnames");
+    const std::string path = dir.file("rate.txt");
+    {
+        std::ofstream out(path);
+        for (int k = 0; k < 1200; ++k)
+            out << 3.0 * (1.0 - std::exp(-0.5 * k / 150.0)) + 505.0 + 0.2 * std::sin(2.3 * k) << '\n';
+    }
+    const RunResult given =
+        run_driftlab({"fit", path, "--json", "--sample-period", "0.5", "--t-min", "20", "--t-max", "500"}, dir.path());
+    const RunResult alias =
+        run_driftlab({"fit", path, "--json", "--tau0", "0.5", "--from", "20", "--to", "500"}, dir.path());
+    ASSERT_EQ(alias.exit_code, 0) << alias.output;
+    EXPECT_EQ(alias.output, given.output);
+    EXPECT_EQ(nlohmann::json::parse(alias.output)["channels"]["col1"]["t_last_s"], 500.0);
+    EXPECT_EQ(run_driftlab({"whiteness", path, "--tau0", "0.5", "--from", "20"}, dir.path()).exit_code, 0);
+    const RunResult report =
+        run_driftlab({"report", path, "--tau0", "0.5", "--to", "500", "-o", dir.file("r.html"), "--no-plots"}, dir.path());
+    EXPECT_EQ(report.exit_code, 0) << report.output;
+    const RunResult help = run_driftlab({"fit", "--help"}, dir.path());
+    EXPECT_NE(help.output.find("--sample-period,--tau0"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("--t-min,--from"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("--t-max,--to"), std::string::npos) << help.output;
+}
+
+// A canonical log carries its own time: --sample-period 7 on one had been dropped without a word. One that
+// contradicts the rows is refused, one that agrees is noted as unused (beside JSON on the error output).
+TEST(AnalysisCli, ASamplePeriodOnALogIsRefusedOrNoted) {
+    TempDir dir("logperiod");
+    const std::string log = dir.file("h.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "300", "-o", log}, dir.path()).exit_code, 0);
+    const std::string html = dir.file("r.html");
+    for (const auto& args : {std::vector<std::string>{"fit", log, "--sample-period", "7"},
+                             {"whiteness", log, "--tau0", "7"},
+                             {"report", log, "--sample-period", "7", "-o", html, "--no-plots"}}) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
+        EXPECT_NE(r.output.find("--sample-period/--tau0 7 s contradicts " + log + ": it is a driftlab log, timed by "
+                                "its own t_s column, whose rows are 1 s apart"),
+                  std::string::npos) << args[0] << ": " << r.output;
+    }
+    const RunResult agrees = run_driftlab({"fit", log, "--tau0", "1"}, dir.path());
+    EXPECT_EQ(agrees.exit_code, 0) << agrees.output;
+    EXPECT_NE(agrees.output.find("note: --sample-period/--tau0 1 s is not used: " + log), std::string::npos) << agrees.output;
+    const std::string json_file = dir.file("fit.json");
+    std::ofstream(json_file).close();  // run_driftlab_stdout_to opens it, it does not make it
+    const RunResult json = run_driftlab_stdout_to({"fit", log, "--tau0", "1", "--json"}, json_file, dir.path());
+    EXPECT_EQ(json.exit_code, 0) << json.output;
+    EXPECT_NE(json.output.find("note: --sample-period/--tau0 1 s is not used"), std::string::npos) << json.output;
+    EXPECT_TRUE(nlohmann::json::parse(read_text(json_file)).contains("channels"));  // the note is not in it
+}
+
+// A warm unit (T far beyond the record) and a singular fit had printed the fit's arbitrary values in the table
+// (gyro -6.92737e+11 counts on hil --warm 3200), out of line, and "+- inf" below it.
+TEST(AnalysisCli, WhatTheDataDoNotDetermineReadsNotDetermined) {
+    TempDir dir("undetermined");
+    const std::string warm = dir.file("warm.csv");
+    const std::string unix_time = dir.file("unix.csv");
+    {
+        std::ofstream w(warm), u(unix_time);
+        w << "t_s,gyro,settling\n";
+        u << "t_s,gyro\n";
+        for (int k = 1; k <= 1500; ++k) {
+            const double noise = 0.2 * std::sin(2.3 * k);
+            w << k << ',' << 508.0 - 1e-3 * k + noise << ',' << 3.0 * (1.0 - std::exp(-k / 150.0)) + 505.0 + noise
+              << '\n';
+            u << std::setprecision(12) << 1.7e9 + k << ',' << 3.0 * (1.0 - std::exp(-k / 411.0)) + 505.0 + noise
+              << '\n';
+        }
+    }
+    const RunResult w = run_driftlab({"fit", warm}, dir.path());
+    ASSERT_EQ(w.exit_code, 0) << w.output;
+    const auto rows = table_rows(w.output);
+    ASSERT_EQ(rows.size(), 3u) << w.output;
+    EXPECT_NE(rows[1].find("not determined"), std::string::npos) << w.output;
+    EXPECT_EQ(rows[2].find("not determined"), std::string::npos) << w.output;
+    EXPECT_EQ(count_of(rows[1], "not determined"), 2u) << w.output;  // C1 and T; C2 is the line's start
+    EXPECT_NE(w.output.find("gyro: not determined: T is beyond the record, which determines only the initial slope C1/T"),
+              std::string::npos) << w.output;
+    EXPECT_NE(w.output.find("  C1 = not determined"), std::string::npos) << w.output;
+    const auto slope = w.output.find("  C1/T = ");
+    ASSERT_NE(slope, std::string::npos) << w.output;
+    EXPECT_NEAR(std::stod(w.output.substr(slope + 9)), -1e-3, 1e-5) << w.output;
+    // Columns line up whatever is in them.
+    const auto status = rows[0].find("status");
+    for (const auto& row : rows) EXPECT_TRUE(row[status - 1] == ' ' && row[status] != ' ') << w.output;
+
+    const RunResult u = run_driftlab({"fit", unix_time}, dir.path());
+    ASSERT_EQ(u.exit_code, 0) << u.output;
+    EXPECT_NE(u.output.find("singular"), std::string::npos) << u.output;
+    EXPECT_EQ(count_of(table_rows(u.output)[1], "not determined"), 3u) << u.output;
+    EXPECT_EQ(u.output.find("+- inf"), std::string::npos) << u.output;
+    EXPECT_EQ(u.output.find("-inf"), std::string::npos) << u.output;
+    const nlohmann::json j = nlohmann::json::parse(run_driftlab({"fit", unix_time, "--json"}, dir.path()).output);
+    EXPECT_TRUE(j["channels"]["gyro"]["C1"]["stderr"].is_null()) << j.dump();
+    EXPECT_TRUE(j["channels"]["gyro"]["C1"]["value"].is_number()) << j.dump();  // JSON keeps the value
+}
+
+// The table says its units (C2 from mid-scale, rms in counts) also when the fit failed, gives p to 3 digits, the
+// accelerometer's assumed scale, and each failure's reason once (they had been printed in the table and again).
+TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
+    TempDir dir("fittable");
+    const std::string log = dir.file("h.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "300", "-o", log}, dir.path()).exit_code, 0);
+    const RunResult r = run_driftlab({"fit", log}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto rows = table_rows(r.output);
+    ASSERT_EQ(rows.size(), 5u) << r.output;
+    EXPECT_NE(rows[0].find("C2 [counts] (physical from mid-scale)"), std::string::npos) << rows[0];
+    EXPECT_NE(rows[0].find("rms [counts]"), std::string::npos) << rows[0];
+    for (const auto& line : lines_of(r.output)) {
+        const auto p = line.find(", p = ");
+        if (p == std::string::npos) continue;
+        const std::string value = line.substr(p + 6, line.find(' ', p + 6) - p - 6);
+        EXPECT_LE(value.size(), 7u) << line;  // 0.00332 or 0.357, not 0.00332395
+    }
+    const std::string accel_note = "note: accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count";
+    EXPECT_NE(r.output.find(accel_note), std::string::npos) << r.output;
+    EXPECT_EQ(run_driftlab({"fit", log, "--channel", "gyro"}, dir.path()).output.find(accel_note), std::string::npos);
+    const std::string html = dir.file("r.html");
+    ASSERT_EQ(run_driftlab({"report", log, "-o", html, "--no-plots"}, dir.path()).exit_code, 0);
+    EXPECT_NE(read_text(html).find("accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count"), std::string::npos);
+
+    const RunResult failed = run_driftlab({"fit", log, "--t-max", "10"}, dir.path());
+    EXPECT_EQ(failed.exit_code, 3) << failed.output;
+    EXPECT_NE(failed.output.find("C1 [counts]"), std::string::npos) << failed.output;
+    EXPECT_EQ(failed.output.find("[table unit]"), std::string::npos) << failed.output;
+    EXPECT_EQ(count_of(failed.output, "9 samples in the selected time range"), 4u) << failed.output;
+    EXPECT_NE(failed.output.find(log + ": not analysed: gyro, accel_x, accel_y, accel_z (the reasons are above)"),
+              std::string::npos) << failed.output;
 }
 
 }  // namespace

@@ -28,8 +28,9 @@ namespace {
 namespace fs = std::filesystem;
 using test_support::TempDir;
 
-/// A small canonical log in `dir` with the paper's gyro row on every channel and raw columns.
-std::string write_log(const TempDir& dir) {
+/// A small canonical log in `dir` with the paper's gyro row on every channel and raw columns; with `warm_gyro` the
+/// gyro is a warm unit's straight decline instead (T far beyond the record).
+std::string write_log(const TempDir& dir, bool warm_gyro = false) {
     const std::string path = dir.file("log.csv");
     std::ofstream out(path);
     out << "# driftlab-log: 1\n# source: test\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro,raw_accel_x,raw_accel_y,"
@@ -39,6 +40,7 @@ std::string write_log(const TempDir& dir) {
         out << k << ',' << k - 1;
         double v[4];
         for (double& x : v) x = 3.0 * (1.0 - std::exp(-k / 150.0)) + 505.0 + 0.25 * rng.normal();
+        if (warm_gyro) v[0] += 3.0 - 1e-2 * k - 3.0 * (1.0 - std::exp(-k / 150.0));
         for (double x : v) out << ',' << x;
         for (double x : v) out << ',' << std::round(x);
         out << '\n';
@@ -161,6 +163,27 @@ std::string write_table(const TempDir& dir, const std::string& name, const std::
 // The report's Allan grid: rows in bursts (5 rows 2 ms apart every 50 ms, 100 a second, as the MPU6050 recording)
 // get tau0 = their mean spacing, 10 ms (59.958 s / 5999), and a curve out to seconds; at the median, 2 ms, 80 % of the grid had been
 // gaps and the curve had ended at 16 ms. A 1 s record with a reconnect that lost 30 % keeps tau0 = 1 s and warns.
+// The fit's values of what the data do not determine are arbitrary (C1 = -6.9e11 counts on a warm log): the page
+// says "not determined", why, and gives the initial slope C1/T the record does determine.
+TEST(Report, WhatTheDataDoNotDetermineReadsNotDetermined) {
+    const TempDir dir("report_undetermined");
+    fit::FileAnalysisRequest request;
+    request.path = write_log(dir, true);
+    request.names = {"gyro", "accel_x"};
+    const fit::FileAnalysis file = fit::analyse_file(request);
+    ASSERT_EQ(file.failures(), 0u);
+    ASSERT_FALSE(file.series[0].analysis->c1_and_t_determined());
+    ReportOptions options;
+    options.plots = false;
+    const std::string html = render_html_report(file, options);
+    EXPECT_NE(html.find("<tr><td>gyro</td><td>not determined</td><td>508"), std::string::npos) << html;
+    EXPECT_NE(html.find("<b>gyro:</b> not determined: T is beyond the record"), std::string::npos) << html;
+    EXPECT_NE(html.find("<tr><td>gyro</td><td>C1</td><td colspan=\"3\">not determined</td></tr>"), std::string::npos)
+        << html;
+    EXPECT_NE(html.find("<tr><td>gyro</td><td>C1/T [per s]</td><td>-0.0"), std::string::npos) << html;
+    EXPECT_EQ(html.find("<b>accel_x:</b> not determined"), std::string::npos) << html;
+}
+
 TEST(Report, AllanGridOfBurstyRowsIsTheirMeanSpacingAndGapsAreWarned) {
     const TempDir dir("report_allan_grid");
     std::vector<double> bursts;
