@@ -88,8 +88,8 @@ TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog
     std::uint64_t start_offset = 0;
     {
         host::io::CaptureReader reader(log + ".cap");
-        while (const auto rec = reader.next())
-            if (rec->kind == host::io::CaptureKind::event && rec->text() == "start") start_offset = rec->offset;
+        while (const auto record = reader.next())
+            if (record->kind == host::io::CaptureKind::event && record->text() == "start") start_offset = record->offset;
     }
     ASSERT_GT(start_offset, 0u);
     const std::string capture = read_text(log + ".cap");
