@@ -50,7 +50,7 @@ UnitInfo unit_of_channel(Channel c) {
     if (c == Channel::gyro) {
         return {"counts", stats::RateQuantity::angular_rate, kGyroDpsPerCount * std::numbers::pi / 180.0};
     }
-    return {"counts", stats::RateQuantity::acceleration, kAccelCmps2PerCount / 100.0};
+    return {"counts", stats::RateQuantity::acceleration, kAccelMmps2PerCount / 1000.0};
 }
 
 UnitInfo unit_of_name(const std::string& name) {

@@ -27,8 +27,8 @@ std::string format_status_line(const AssemblyStats& s, double wall_s, const std:
     if (s.rows > 0) {
         const auto& c = s.last_counts;
         const double mid = kMidScaleCode;
-        // The accelerometer in counts: its g per count is the paper's open question (docs/sim.md §2: 19.14 cm/s^2
-        // or 1/512 g), and a g figure from mid-scale had shown a board at rest reading 2 g on Z.
+        // The accelerometer in counts: a level from mid-scale is no acceleration (accel_z's mid-scale is 1 g, each
+        // axis has its zero-g offset), and a g figure from mid-scale had shown a board at rest reading 2 g on Z.
         std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
                       "  gyro %+.2f deg/s  accel %.1f %.1f %.1f counts  dropped %u", (c[0] - mid) * kGyroDpsPerCount,
                       c[1], c[2], c[3], static_cast<unsigned>(s.last_dropped));

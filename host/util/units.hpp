@@ -8,15 +8,15 @@ namespace driftlab::host {
 
 /// Gyro: 90 deg/s over 512 counts (ENV-05S range on a 10-bit converter) [deg/s per count].
 inline constexpr double kGyroDpsPerCount = 90.0 / 512.0;
-/// Accelerometer: one count = 19.14 cm/s^2 (ADXL05 through its amplifier) [cm/s^2 per count].
-inline constexpr double kAccelCmps2PerCount = 19.14;
+/// Accelerometer: one count = 19.14 mm/s^2 = 1/512 g (ADXL05 through its amplifier, +-1 g over the converter, as the
+/// simulator's span) [mm/s^2 per count]. Table 1 prints these very numbers under "cm/s^2"; read so, a count would be
+/// 0.0195 g, ten times the simulator's, and +-10 g over the codes, twice the ADXL05's range (docs/sim.md §2).
+inline constexpr double kAccelMmps2PerCount = 19.14;
 
-/// Said under every accelerometer value printed in cm/s^2 (fit, report): the scale is the paper's Table 1 as printed,
-/// 10x what the simulator's +-1 g span gives (1/512 g = 19.14 mm/s^2 per count), an open question (docs/sim.md §2).
-/// accel_z's 2101 cm/s^2 from mid-scale at rest had read as 2.1 g without a word.
+/// Said under every accelerometer value printed in mm/s^2 (fit, report), since the paper's table says cm/s^2.
 inline constexpr const char* kAccelScaleNote =
-    "accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count (0.0195 g), the paper's Table 1 as printed; the "
-    "simulator's +-1 g span makes a count 1/512 g = 19.14 mm/s^2, 10x less (docs/sim.md section 2)";
+    "accelerometer values in mm/s^2 at 19.14 mm/s^2 (1/512 g) per count: the numbers of the paper's Table 1, whose "
+    "column says cm/s^2 (ten times the +-1 g span the paper describes; docs/sim.md section 2)";
 
 /// A channel's physical unit: the scale per count and the unit's name.
 struct PhysicalUnit {
@@ -24,9 +24,9 @@ struct PhysicalUnit {
     const char* name;
 };
 
-/// deg/s for the gyro, cm/s^2 for the accelerometer axes (the units of Table 1).
+/// deg/s for the gyro, mm/s^2 for the accelerometer axes (Table 1's numbers).
 constexpr PhysicalUnit physical_unit(Channel c) {
-    return c == Channel::gyro ? PhysicalUnit{kGyroDpsPerCount, "deg/s"} : PhysicalUnit{kAccelCmps2PerCount, "cm/s^2"};
+    return c == Channel::gyro ? PhysicalUnit{kGyroDpsPerCount, "deg/s"} : PhysicalUnit{kAccelMmps2PerCount, "mm/s^2"};
 }
 
 /// A difference of counts (e.g. C1, a standard error) in the physical unit.

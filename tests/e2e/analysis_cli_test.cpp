@@ -187,12 +187,12 @@ TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
         const std::string value = line.substr(p + 6, line.find(' ', p + 6) - p - 6);
         EXPECT_LE(value.size(), 7u) << line;  // 0.00332 or 0.357, not 0.00332395
     }
-    const std::string accel_note = "note: accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count";
+    const std::string accel_note = "note: accelerometer values in mm/s^2 at 19.14 mm/s^2 (1/512 g) per count";
     EXPECT_NE(r.output.find(accel_note), std::string::npos) << r.output;
     EXPECT_EQ(run_driftlab({"fit", log, "--channel", "gyro"}, dir.path()).output.find(accel_note), std::string::npos);
     const std::string html = dir.file("r.html");
     ASSERT_EQ(run_driftlab({"report", log, "-o", html, "--no-plots"}, dir.path()).exit_code, 0);
-    EXPECT_NE(read_text(html).find("accelerometer values in cm/s^2 assume 19.14 cm/s^2 per count"), std::string::npos);
+    EXPECT_NE(read_text(html).find("accelerometer values in mm/s^2 at 19.14 mm/s^2 (1/512 g) per count"), std::string::npos);
 
     const RunResult failed = run_driftlab({"fit", log, "--t-max", "10"}, dir.path());
     EXPECT_EQ(failed.exit_code, 3) << failed.output;
