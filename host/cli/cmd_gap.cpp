@@ -235,6 +235,12 @@ std::string rows_used(const GapCommandOptions& o, const LogData& log) {
 
 void run(const GapCommandOptions& o) {
     refuse_writing_over_input(o.model_out, "--model-out", o.path, "log");
+    refuse_writing_over_input(o.model_out, "--model-out", o.model_path, "model file");
+    if (!o.report_dir.empty())
+        for (const std::string& file : gap::report_files(o.report_dir)) {
+            refuse_writing_over_input(file, "--report", o.path, "log");
+            refuse_writing_over_input(file, "--report", o.model_path, "model file");
+        }
     const auto [log, unit] = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {

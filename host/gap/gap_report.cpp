@@ -2,6 +2,7 @@
 #include "host/gap/gap_report.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -24,6 +25,13 @@ namespace driftlab::host::gap {
 namespace {
 
 constexpr int kBandReplicates = 12;
+
+// The report's plots: gap_<kind>_<channel>, as PNG (gap.md links them); plot_bands() draws them, report_files() lists
+// them all.
+const std::vector<report::ImageFormat> kPlotFormats{report::ImageFormat::png};
+constexpr std::array<const char*, 3> kPlotKinds{"adev", "mean", "codes"};
+
+std::string plot_name(const char* kind, const std::string& channel) { return std::string("gap_") + kind + "_" + channel; }
 
 struct Band {
     std::vector<double> low, high;
@@ -109,10 +117,11 @@ std::string parameter_list(const std::vector<std::pair<std::string, double>>& pa
     return out;
 }
 
-// A channel's real residual against the replicate bands of the base and of the final model.
-void plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
-                const std::vector<double>& x, const std::vector<double>& real, const Band& base, const Band* after,
-                const std::string& dir, const std::string& name) {
+// A channel's real residual against the replicate bands of the base and of the final model, as DIR/<plot_name()>;
+// returns gap.md's link to its image.
+std::string plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
+                       const std::vector<double>& x, const std::vector<double>& real, const Band& base, const Band* after,
+                       const std::string& dir, const std::string& name) {
     report::Plot p;
     p.title = title;
     p.x_label = x_label;
@@ -122,7 +131,8 @@ void plot_bands(const std::string& title, const std::string& x_label, const std:
     if (after)
         p.series.push_back({"with the added effects", x, after->low, after->low, after->high, report::SeriesStyle::band, false, "blue", 1.0});
     p.series.push_back({"real", x, real, {}, {}, report::SeriesStyle::lines, false, "black", 2.0});
-    report::render_plot(p, dir, name, {report::ImageFormat::png});
+    const std::string image = std::filesystem::path(report::render_plot(p, dir, name, kPlotFormats).front()).filename().string();
+    return "![" + name + "](" + image + ")\n\n";
 }
 
 }  // namespace
@@ -221,6 +231,16 @@ std::string left_out_sentence(const GapResult& r) {
     if (out.empty()) return "";
     return out + ": the rows either side are joined, and the replicates, simulated on the same instants, "
                  "live through the same time";
+}
+
+std::vector<std::string> report_files(const std::string& dir) {
+    std::vector<std::string> out{dir + "/gap.md"};
+    for (const char* channel : kChannelNames)
+        for (const char* kind : kPlotKinds) {
+            const auto files = report::plot_files(dir, plot_name(kind, channel), kPlotFormats);
+            out.insert(out.end(), files.begin(), files.end());
+        }
+    return out;
 }
 
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,
@@ -349,19 +369,16 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         std::vector<double> tau(real.size());
         for (std::size_t j = 0; j < tau.size(); ++j) tau[j] = r.base.smoothing.sample_period_s * std::ldexp(1.0, static_cast<int>(j));
         const std::string channel = kChannelNames[c];
-        plot_bands("Residual ADEV, " + channel, "tau [s]", "ADEV of the eq. 1 residual [counts]", true, tau, real, base.adev,
-                   added ? &added->adev : nullptr, dir, "gap_adev_" + channel);
-        plot_bands("Residual mean over time, " + channel, "t [s]", "mean of the eq. 1 residual per bin [counts]", false, bin_t,
-                   binned_mean(residual, edges), base.mean, added ? &added->mean : nullptr, dir, "gap_mean_" + channel);
-        md << "![gap_adev_" << channel << "](gap_adev_" << channel << ".png)\n\n![gap_mean_" << channel << "](gap_mean_"
-           << channel << ".png)\n\n";
+        md << plot_bands("Residual ADEV, " + channel, "tau [s]", "ADEV of the eq. 1 residual [counts]", true, tau, real, base.adev,
+                         added ? &added->adev : nullptr, dir, plot_name("adev", channel));
+        md << plot_bands("Residual mean over time, " + channel, "t [s]", "mean of the eq. 1 residual per bin [counts]", false, bin_t,
+                         binned_mean(residual, edges), base.mean, added ? &added->mean : nullptr, dir, plot_name("mean", channel));
         if (range.real) {
             std::vector<double> code(static_cast<std::size_t>(range.highest - range.lowest + 1));
             for (std::size_t j = 0; j < code.size(); ++j) code[j] = range.lowest + static_cast<double>(j);
-            plot_bands("Raw codes, " + channel, "code", "share of rows on the code", false, code,
-                       code_shares(*range.real, range.lowest, range.highest), base.codes, added ? &added->codes : nullptr, dir,
-                       "gap_codes_" + channel);
-            md << "![gap_codes_" << channel << "](gap_codes_" << channel << ".png)\n\n";
+            md << plot_bands("Raw codes, " + channel, "code", "share of rows on the code", false, code,
+                             code_shares(*range.real, range.lowest, range.highest), base.codes, added ? &added->codes : nullptr, dir,
+                             plot_name("codes", channel));
         }
     }
     std::ofstream out(dir + "/gap.md");

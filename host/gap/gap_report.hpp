@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "host/gap/diagnose.hpp"
 #include "host/gap/verdict_stability.hpp"
@@ -38,6 +39,9 @@ std::string saturated_channels_sentence(const GapResult& result);
 
 /// The stretches --exclude left out, with their rows and why the join is fair; "" when none.
 std::string left_out_sentence(const GapResult& result);
+
+/// Every file write_gap_report() may write into `dir`, whichever channels it plots: an input among them is refused.
+std::vector<std::string> report_files(const std::string& dir);
 
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.

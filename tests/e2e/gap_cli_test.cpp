@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -479,6 +480,37 @@ TEST(GapCli, AnUnusableReportFolderIsRefusedBeforeTheDiagnosis) {
     const RunResult hil = run_driftlab({"hil", "--duration", "10", "-o", log + "/x.csv"}, dir.path());
     EXPECT_EQ(hil.exit_code, 4) << hil.output;
     EXPECT_NE(hil.output.find("cannot create the log folder"), std::string::npos) << hil.output;
+}
+
+// `gap LOG --model M --model-out M` had written the estimate over the model it started from (exit 0); the report's
+// own files are outputs too. Each is refused before anything is written, whatever spelling names the file. A log
+// elsewhere in the report folder is no conflict.
+TEST(GapCli, NeitherTheModelFileNorTheLogIsWrittenOver) {
+    TempDir dir("gapoverwrite");
+    const std::string model_text = "name = \"unit\"\n";
+    std::ofstream(dir.file("m.toml")) << model_text;
+    const RunResult model = run_driftlab({"gap", dir.file("x.csv"), "--model", dir.file("m.toml"), "--model-out",
+                                          (dir.path() / "." / "m.toml").string()}, dir.path());
+    EXPECT_EQ(model.exit_code, 2) << model.output;
+    EXPECT_NE(model.output.find("--model-out: '" + (dir.path() / "." / "m.toml").string() + "' is the model file this command reads"),
+              std::string::npos) << model.output;
+    EXPECT_EQ(read_text(dir.file("m.toml")), model_text);
+
+    std::filesystem::create_directory(dir.file("rep"));
+    const std::string table = "t_s y\n0 1\n1 2\n";
+    for (const std::string name : {"gap.md", "gap_mean_gyro.dat"}) {
+        std::ofstream(dir.file("rep/" + name)) << table;
+        const RunResult log = run_driftlab({"gap", dir.file("rep/" + name), "--tau0", "1", "--report", dir.file("rep")}, dir.path());
+        EXPECT_EQ(log.exit_code, 2) << name << ": " << log.output;
+        EXPECT_NE(log.output.find("--report: '" + dir.file("rep/" + name) + "' is the log this command reads"), std::string::npos)
+            << log.output;
+        EXPECT_EQ(read_text(dir.file("rep/" + name)), table) << name;
+    }
+    std::ofstream(dir.file("rep/gap_adev_gyro.png")) << model_text;
+    const RunResult plot = run_driftlab({"gap", dir.file("x.csv"), "--model", dir.file("rep/gap_adev_gyro.png"), "--report",
+                                         dir.file("rep")}, dir.path());
+    EXPECT_EQ(plot.exit_code, 2) << plot.output;
+    EXPECT_NE(plot.output.find("is the model file this command reads"), std::string::npos) << plot.output;
 }
 
 // A plot folder that cannot be made is refused before minutes of benchmark, not after them.
