@@ -46,6 +46,7 @@ struct GapCommandOptions {
     int replicates = 40;
     std::uint64_t seed = 1;
     double fit_fraction = 0.6;
+    bool fit_fraction_given = false;
     gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     bool locate_only = false;
     bool search_diffuse = false;
@@ -234,6 +235,10 @@ std::string rows_used(const GapCommandOptions& o, const LogData& log) {
 }
 
 void run(const GapCommandOptions& o) {
+    // Only the forecast design splits the log at a fraction: interleaved tenths would silently ignore it.
+    if (o.fit_fraction_given && o.holdout != gap::Holdout::forecast)
+        throw UsageError("--fit-fraction sets where --holdout forecast splits the log; the default interleaved design fits on "
+                         "tenths 0, 4, 5, 7, 9 of the log whatever the fraction: add --holdout forecast, or leave --fit-fraction out");
     refuse_writing_over_input(o.model_out, "--model-out", o.path, "log");
     refuse_writing_over_input(o.model_out, "--model-out", o.model_path, "model file");
     if (!o.report_dir.empty())
@@ -341,9 +346,12 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)")->check(seed_number());
-    cmd->add_option("--fit-fraction", o->fit_fraction, "First part of the log (by time) used to fit candidates")
-        ->check(finite_value())
-        ->check(CLI::Range(0.3, 0.85));
+    const CLI::Option* fit_fraction =
+        cmd->add_option("--fit-fraction", o->fit_fraction, "With --holdout forecast: the first part of the log (by time) used to fit "
+                                                           "candidates (default 0.6; refused with the interleaved design, which "
+                                                           "does not split at a fraction)")
+            ->check(finite_value())
+            ->check(CLI::Range(0.3, 0.85));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
     cmd->add_flag("--search-diffuse", o->search_diffuse,
@@ -361,7 +369,10 @@ void register_gap(CLI::App& app) {
                     "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as a model file "
                     "for driftlab hil --model and gap --model")
         ->check(non_empty_path());
-    cmd->callback([o] { run(*o); });
+    cmd->callback([o, fit_fraction] {
+        o->fit_fraction_given = fit_fraction->count() > 0;
+        run(*o);
+    });
 }
 
 }  // namespace driftlab::host::cli

@@ -513,6 +513,26 @@ TEST(GapCli, NeitherTheModelFileNorTheLogIsWrittenOver) {
     EXPECT_NE(plot.output.find("is the model file this command reads"), std::string::npos) << plot.output;
 }
 
+// --fit-fraction sets the forecast design's split; under the default interleaved design it had been ignored without
+// a word, the report and the JSON still saying 0.6.
+TEST(GapCli, FitFractionIsRefusedWithoutTheForecastDesign) {
+    TempDir dir("gapfitfraction");
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "0.7"},
+                                                 {"gap", "x.csv", "--fit-fraction", "0.7", "--holdout", "interleaved"}}) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find("--fit-fraction sets where --holdout forecast splits the log"), std::string::npos) << r.output;
+    }
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "-o", log}, dir.path()).exit_code, 0);
+    const RunResult forecast = run_driftlab({"gap", log, "--holdout", "forecast", "--fit-fraction", "0.7", "--replicates", "10",
+                                             "--locate-only", "--json"}, dir.path());
+    ASSERT_EQ(forecast.exit_code, 0) << forecast.output;
+    const auto j = nlohmann::json::parse(forecast.output);
+    EXPECT_EQ(j["holdout"], "forecast");
+    EXPECT_DOUBLE_EQ(j["fit_fraction"].get<double>(), 0.7);
+}
+
 // A plot folder that cannot be made is refused before minutes of benchmark, not after them.
 TEST(GapEvalCli, AnUnusablePlotFolderIsRefusedBeforeTheRun) {
     TempDir dir("gapevalplot");
