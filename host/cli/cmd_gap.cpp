@@ -28,6 +28,7 @@
 #include "host/log/log_reader.hpp"
 #include "host/log/log_window.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 #include "sim/model/model_file.hpp"
@@ -183,10 +184,12 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     if (r.located.size() > kCellsShown)
         std::printf("  ... and %zu more with smaller |z| (--json and --report list them)\n", r.located.size() - kCellsShown);
     if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) std::printf("base: %s\n", given.c_str());
-    if (!r.accepted.empty()) std::printf("explanation (effects added in order; parameters estimated on the whole log beside them all):\n");
+    if (!r.accepted.empty())
+        std::printf("explanation (effects added in order; heldout: the channel's held-out score before -> after the step, %s; "
+                    "parameters estimated on the whole log beside them all):\n", gap::kShrinkDefinition);
     for (const auto& e : r.accepted) {
-        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %.0f%%)  %s", e.step, e.effect.c_str(), e.channel.c_str(),
-                    e.heldout_before, e.heldout_after, 100 * e.heldout_shrink, gap::estimate_text(e).c_str());
+        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %s%%)  %s", e.step, e.effect.c_str(), e.channel.c_str(),
+                    e.heldout_before, e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), gap::estimate_text(e).c_str());
         if (e.replaces_given) std::printf("  in place of the model's");
         std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());
@@ -196,12 +199,19 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                     "a shape path needs %.0f less)\n", p.step, p.channel.c_str(), p.process.c_str(), p.shape.c_str(),
                     p.criterion_process, p.criterion_shape, (p.shape_kept ? p.shape : p.process).c_str(),
                     options.explain_options.shape_path_margin);
-    if (!r.tried.empty()) std::printf("candidates (fitted on the fitting part, judged on the held-out part):\n");
-    for (const auto& e : r.tried) {
-        std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.step,
+    const gap::ExplainOptions& rules = options.explain_options;
+    if (!r.tried.empty())
+        std::printf("candidates (fitted on the fitting part, judged on the held-out part; the added first, then by step; heldout and "
+                    "shrink as above; gain vs penalty: the likelihood gain against its parameters' price, passing needs gain > %s x penalty; "
+                    "dIC: the spectral criterion (%s) without it minus with it, > 0 favours it):\n",
+                    significant(rules.penalty_per_param, 3).c_str(), gap::criterion_name(rules.information_criterion));
+    for (const gap::Explanation* candidate : gap::candidates_in_table_order(r)) {
+        const gap::Explanation& e = *candidate;
+        std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %s%%)  gain %s vs penalty %s ", e.step,
                     e.effect.c_str(), e.channel.c_str(), gap::was_added(r, e) ? "ADDED   " : e.accepted ? "passed  " : "rejected", e.heldout_before,
-                    e.heldout_after, 100 * e.heldout_shrink, e.loss_gain, e.penalty);
-        if (gap::has_delta_ic(e)) std::printf(" dIC %.1f", gap::delta_ic(e, options.explain_options.information_criterion));
+                    e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), fixed_point(e.loss_gain, 1).c_str(),
+                    fixed_point(e.penalty, 1).c_str());
+        if (gap::has_delta_ic(e)) std::printf(" dIC %s", fixed_point(gap::delta_ic(e, rules.information_criterion), 1).c_str());
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");

@@ -153,8 +153,10 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     const std::string located = counted(r.located.size(), "cell") + " located";
     if (!r.accepted.empty()) {
         const Explanation& e = r.accepted.front();
-        std::string out = "on " + e.channel + " it removes " + fixed(100 * e.heldout_shrink, 0) + " % of the held-out gap excess (" +
-                          fixed(e.heldout_before) + " -> " + fixed(e.heldout_after) + ")";
+        // The channel's own score, not the whole log's the gap line and table show: say so, and what the share is of.
+        std::string out = "on " + e.channel + " it removes " + fixed(100 * e.heldout_shrink, 0) + " % of " + e.channel +
+                          "'s own held-out gap excess (" + e.channel + "'s held-out score " + fixed(e.heldout_before) + " -> " +
+                          fixed(e.heldout_after) + "; " + kShrinkDefinition + "; the whole log's scores are below)";
         for (std::size_t k = 1; k < r.accepted.size(); ++k)
             out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel;
         out += r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound";
@@ -233,6 +235,17 @@ std::string left_out_sentence(const GapResult& r) {
                  "live through the same time";
 }
 
+std::vector<const Explanation*> candidates_in_table_order(const GapResult& r) {
+    std::vector<const Explanation*> out;
+    for (const auto& e : r.tried) out.push_back(&e);
+    std::stable_sort(out.begin(), out.end(), [&r](const Explanation* a, const Explanation* b) {
+        const bool a_added = was_added(r, *a), b_added = was_added(r, *b);
+        if (a_added != b_added) return a_added;
+        return a->step < b->step;
+    });
+    return out;
+}
+
 std::vector<std::string> report_files(const std::string& dir) {
     std::vector<std::string> out{dir + "/gap.md"};
     for (const char* channel : kChannelNames)
@@ -276,8 +289,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     if (!r.accepted.empty()) {
         md << "## Explanation: the effects added, in order\n\nParameters as estimated on the whole log beside all the "
               "added effects, and (for a mean shape or a Gaussian process) the fitting part's, which the held-out part "
-              "judged; the held-out gap is the channel's, before and after each step.\n\n"
-              "| step | effect | channel | parameters | held-out gap | shrink | close call | what would confirm it |\n"
+              "judged; the held-out score is the channel's, before and after each step (" << kShrinkDefinition << ").\n\n"
+              "| step | effect | channel | parameters | channel's held-out score | shrink | close call | what would confirm it |\n"
               "|---|---|---|---|---|---|---|---|\n";
         for (const auto& e : r.accepted)
             md << "| " << e.step << " | " << e.effect << (e.replaces_given ? " (in place of the model's)" : "") << " | " << e.channel
@@ -312,16 +325,23 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
            << (r.diffuse_searched  ? "The candidates were searched on it (--search-diffuse).\n\n"
                : options.explain   ? "The candidates were not searched (--search-diffuse searches them).\n\n"
                                    : "No candidate was tried (--locate-only).\n\n");
-    md << "## Which: candidate effects\n\nFitted on the fitting part, judged on the held-out part; among accepted "
-          "Gaussian candidates the full-log spectral information criterion ("
-       << criterion_name(options.explain_options.information_criterion)
-       << ") chooses.\n\n"
-          "| step | effect | channel | parameters | held-out gap | shrink | gain / penalty | delta IC | decision |\n"
-          "|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& e : r.tried) {
+    const ExplainOptions& rules = options.explain_options;
+    md << "## Which: candidate effects\n\n"
+          "Fitted on the fitting part, judged on the held-out part: the added effects first, in step order, then the others "
+              "by step. The held-out score is the channel's, before -> with the candidate (" << kShrinkDefinition << "). A candidate "
+              "passes when, among other tests, its gain exceeds " << significant(rules.penalty_per_param, 3) << " x its penalty and "
+              "it shrinks the held-out score by at least " << fixed(100 * rules.min_heldout_shrink, 0) << " %; among the mean "
+              "shapes and Gaussian processes that pass, the one with the largest ΔIC (" << criterion_name(rules.information_criterion)
+           << ": the criterion without the candidate minus with it, so above 0 favours it) is chosen. ΔIC is computed for "
+              "those only (else -), and an effect added at a later step can have ΔIC at or below 0: it passed the held-out tests, "
+              "but the spectrum alone would not pay for its parameters.\n\n"
+              "| step | effect | channel | parameters | channel's held-out score | shrink | gain / penalty | ΔIC (> 0 favours it) | decision |\n"
+              "|---|---|---|---|---|---|---|---|---|\n";
+    for (const Explanation* candidate : candidates_in_table_order(r)) {
+        const Explanation& e = *candidate;
         md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e.params) << " | " << fixed(e.heldout_before)
            << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0) << " % | " << fixed(e.loss_gain, 1)
-           << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
+           << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, rules.information_criterion), 1) : std::string("-")) << " | "
            << (was_added(r, e) ? "**added**" : e.accepted ? "passed, not chosen" : "rejected")
            << (e.residual_step.significant ? ", leaves a level step" : "")
            << (e.shape_steps.steps_win ? ", two level steps fit better" : "")

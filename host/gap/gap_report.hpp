@@ -40,6 +40,14 @@ std::string saturated_channels_sentence(const GapResult& result);
 /// The stretches --exclude left out, with their rows and why the join is fair; "" when none.
 std::string left_out_sentence(const GapResult& result);
 
+/// What the shrink of a held-out score is, where one is shown: "shrink = (before - after) / (before - 1)", the share
+/// of the score's excess over 1 (a consistent simulator's score) that an effect removes.
+inline constexpr const char* kShrinkDefinition = "shrink = (before - after) / (before - 1)";
+
+/// The candidates tried as the terminal and the report list them: the added effects in step order, then the others
+/// by step (within a step as GapResult::tried holds them: those that passed first, then by held-out shrink).
+std::vector<const Explanation*> candidates_in_table_order(const GapResult& result);
+
 /// Every file write_gap_report() may write into `dir`, whichever channels it plots: an input among them is refused.
 std::vector<std::string> report_files(const std::string& dir);
 

@@ -61,7 +61,13 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     const RunResult gap = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "16", "--model-out", dir.file("fitted.toml"),
                                         "--stability", "3", "--report", dir.file("report")}, dir.path());
     ASSERT_EQ(gap.exit_code, 0) << gap.output;
-    EXPECT_NE(gap.output.find("verdict: ambient_cycle"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("verdict: ambient_cycle (on gyro it removes "), std::string::npos) << gap.output;
+    // Its shrink is the gyro's own held-out score's, which the line says, beside the whole log's in the gap line.
+    EXPECT_NE(gap.output.find(" % of gyro's own held-out gap excess (gyro's held-out score "), std::string::npos) << gap.output;
+    // The candidate list starts with the effects added, in step order.
+    const std::size_t candidates = gap.output.find("\ncandidates (");
+    ASSERT_NE(candidates, std::string::npos) << gap.output;
+    EXPECT_EQ(gap.output.find("\n  1 ambient_cycle      gyro     ADDED", candidates), gap.output.find('\n', candidates + 1)) << gap.output;
     // The cycle locates more cells than the terminal lists: it shows the 15 largest and counts the rest; the report
     // lists every one.
     const std::size_t at = gap.output.find("located cells (|z| > ");

@@ -1,4 +1,6 @@
-// The files a report may write: an input among them is refused (gap --report).
+// What the terminal and the report show of a diagnosis, apart from the numbers it decides with: the verdict's
+// shrink said as the channel's own, the candidate table's order, and the files a report may write (an input among
+// them is refused).
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -9,6 +11,47 @@
 
 namespace driftlab::host::gap {
 namespace {
+
+Explanation candidate(const std::string& effect, int step, bool accepted, double shrink) {
+    Explanation e;
+    e.effect = effect;
+    e.channel = "gyro";
+    e.step = step;
+    e.accepted = accepted;
+    e.heldout_shrink = shrink;
+    return e;
+}
+
+// The reviewer's log: the verdict's "100 % (248.17 -> 2.13)" stood beside the gap table's whole-log 47.82 -> 0.99
+// without saying it was the gyro's own score, or what the share is of.
+TEST(GapReport, TheVerdictSaysWhoseHeldOutScoreItShrinksAndHow) {
+    GapResult r;
+    Explanation cycle = candidate("ambient_cycle", 1, true, 0.9946);
+    cycle.heldout_before = 248.17, cycle.heldout_after = 2.13;
+    r.accepted.push_back(cycle);
+    r.gap_after_heldout = 0.99, r.gap_bound_after = 1.24;
+    const std::string reason = verdict_reason(r, GapOptions{});
+    EXPECT_EQ(reason.rfind("on gyro it removes 99 % of gyro's own held-out gap excess (gyro's held-out score 248.17 -> 2.13; "
+                           "shrink = (before - after) / (before - 1); the whole log's scores are below); the gap closes", 0), 0u)
+        << reason;
+}
+
+// The diagnosis holds its candidates passed first, then by shrink (a step-3 effect above a step-2 one); the table
+// lists the added in step order, then the others by step, each step's as the diagnosis held them.
+TEST(GapReport, TheCandidateTableListsTheAddedInStepOrderThenTheOthersByStep) {
+    GapResult r;
+    r.tried = {candidate("rate_random_walk", 1, true, 1.0), candidate("ambient_cycle", 1, true, 0.99),
+               candidate("thermal_second_tc", 3, true, 0.66), candidate("rate_random_walk", 2, true, 0.46),
+               candidate("thermal_second_tc", 1, false, 0.37), candidate("flicker", 2, false, 0.01),
+               candidate("gauss_markov", 1, false, 0.0), candidate("flicker", 3, false, -0.49)};
+    r.accepted = {r.tried[1], r.tried[3], r.tried[2]};  // in the order they were added
+    std::vector<std::string> order;
+    for (const Explanation* e : candidates_in_table_order(r)) order.push_back(std::to_string(e->step) + " " + e->effect);
+    const std::vector<std::string> expected{"1 ambient_cycle",    "2 rate_random_walk", "3 thermal_second_tc",
+                                            "1 rate_random_walk", "1 thermal_second_tc", "1 gauss_markov",
+                                            "2 flicker",          "3 flicker"};
+    EXPECT_EQ(order, expected);
+}
 
 // A log or model file named as one of the report's files would be written over: report_files() lists them all.
 TEST(GapReport, TheReportsFilesAreListedWhicheverChannelsItPlots) {
