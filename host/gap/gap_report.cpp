@@ -273,6 +273,24 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         for (const std::string& line : spread) md << "- " << line << "\n";
         if (!spread.empty()) md << "\n";
     }
+    // The words the tables below use, for a reader who has not read docs/gap.md.
+    md << "## How to read this report\n\n"
+          "The simulator, calibrated to this log, is run " << options.replicates << " times with fresh noise on the log's own "
+          "instants (the *replicates*). The same set of statistics (the *battery*: means and variances over tenths of the log, "
+          "Allan deviations, spectra and autocorrelations by octave, and more) is computed on the log and on every replicate; "
+          "one statistic on one window, band or lag of one part of the log is a *cell*. A cell is *located* where the log "
+          "lies outside what the replicates do: its z (the distance from the replicates' mean in their standard deviations) "
+          "is beyond a threshold that a log the simulator explains crosses in about " << fixed(100 * options.alpha, 0)
+       << " % of cases, and its difference is beyond a *practical margin*, the least that matters (0.1 count for a mean, "
+          "10 % for a deviation). The *gap score* is the mean z^2 over the cells divided by the replicates' own: about 1 "
+          "when the simulator explains the log.\n\n"
+          "Candidate effects are fitted on one part of the log and judged on the other, the *held-out part*: an effect must "
+          "predict data it was not fitted to. *Shrink* is the share of a held-out score's excess over 1 that an effect "
+          "removes, (before - after) / (before - 1): 100 % brings the score to 1 (more, below 1), a negative shrink makes it worse. "
+          "*Gain / penalty*: how much the cells' likelihood gains with the effect, against the price of its parameters. "
+          "*ΔIC*: the full-log spectral information criterion without the effect minus with it, above 0 where the spectrum "
+          "favours the effect. A *level step* is an abrupt jump of the mean, which no effect of the library makes. "
+          "docs/gap.md, in the driftlab sources, gives the method and every rule in full.\n\n";
     if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
     if (const std::string quiet = noise_free_sentence(r); !quiet.empty()) md << "Not analysed: " << quiet << ".\n\n";
     if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
@@ -310,15 +328,19 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
                << (p.shape_kept ? p.shape : p.process) << " first |\n";
         md << "\n";
     }
-    md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << ", beyond the practical margin)\n\n";
-    md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
-    for (const auto& l : r.located) {
-        const auto& c = r.layout[l.index];
-        md << "| " << c.statistic << " | " << c.channel << " | " << c.cell << " | " << segment_name(c.segment) << " | "
-           << fixed(l.z, 1) << " | " << (std::isnan(l.ratio) ? "diff " + fixed(l.difference, 3) : "ratio " + fixed(l.ratio, 3))
-           << " [" << fixed(l.interval_low, 3) << ", " << fixed(l.interval_high, 3) << "] |\n";
+    md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << " and a difference beyond the cell's practical margin)\n\n";
+    if (r.located.empty()) {
+        md << "None: no cell lies beyond both.\n\n";  // a table of headers alone reads as a failure to fill it
+    } else {
+        md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
+        for (const auto& l : r.located) {
+            const auto& c = r.layout[l.index];
+            md << "| " << c.statistic << " | " << c.channel << " | " << c.cell << " | " << segment_name(c.segment) << " | "
+               << fixed(l.z, 1) << " | " << (std::isnan(l.ratio) ? "diff " + fixed(l.difference, 3) : "ratio " + fixed(l.ratio, 3))
+               << " [" << fixed(l.interval_low, 3) << ", " << fixed(l.interval_high, 3) << "] |\n";
+        }
+        md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     }
-    md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     if (r.diffuse_gap)
         md << "Diffuse gap: the held-out score exceeds its bound with no cell located (many cells a little off, none "
               "alone beyond the threshold). "
@@ -326,8 +348,12 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
                : options.explain   ? "The candidates were not searched (--search-diffuse searches them).\n\n"
                                    : "No candidate was tried (--locate-only).\n\n");
     const ExplainOptions& rules = options.explain_options;
-    md << "## Which: candidate effects\n\n"
-          "Fitted on the fitting part, judged on the held-out part: the added effects first, in step order, then the others "
+    md << "## Which: candidate effects\n\n";
+    if (r.tried.empty())
+        md << "None tried" << (!options.explain ? " (--locate-only)" : r.located.empty() && !r.diffuse_searched ? ": no cell located, nothing to explain" : "")
+           << ".\n";
+    else
+        md << "Fitted on the fitting part, judged on the held-out part: the added effects first, in step order, then the others "
               "by step. The held-out score is the channel's, before -> with the candidate (" << kShrinkDefinition << "). A candidate "
               "passes when, among other tests, its gain exceeds " << significant(rules.penalty_per_param, 3) << " x its penalty and "
               "it shrinks the held-out score by at least " << fixed(100 * rules.min_heldout_shrink, 0) << " %; among the mean "

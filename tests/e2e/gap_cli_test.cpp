@@ -519,6 +519,31 @@ TEST(GapCli, NeitherTheModelFileNorTheLogIsWrittenOver) {
     EXPECT_NE(plot.output.find("is the model file this command reads"), std::string::npos) << plot.output;
 }
 
+// The report's words (battery, cell, replicate, practical margin, shrink...) are said before its tables, and a table
+// without rows is "None" and why, not a header alone. The log may sit in the report's folder.
+TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
+    TempDir dir("gapreportnone");
+    std::filesystem::create_directory(dir.file("rep"));
+    const std::string log = dir.file("rep/hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "1500", "--seed", "3", "-o", log}, dir.path()).exit_code, 0);
+    const RunResult gap = run_driftlab({"gap", log, "--replicates", "16", "--locate-only", "--report", dir.file("rep")}, dir.path());
+    ASSERT_EQ(gap.exit_code, 0) << gap.output;
+    ASSERT_NE(gap.output.find("located cells (|z| > "), std::string::npos) << gap.output;
+    ASSERT_NE(gap.output.find("and beyond the margin): 0\n"), std::string::npos) << gap.output;
+    const std::string md = read_text(dir.file("rep/gap.md"));
+    const std::size_t guide = md.find("## How to read this report\n\n");
+    ASSERT_NE(guide, std::string::npos) << md.substr(0, 800);
+    for (const char* word : {"*replicates*", "*battery*", "*cell*", "*located*", "*practical margin*", "*gap score*", "*held-out part*",
+                             "*Shrink*", "*Gain / penalty*", "*ΔIC*", "*level step*", "docs/gap.md"})
+        EXPECT_NE(md.find(word, guide), std::string::npos) << word;
+    EXPECT_NE(md.find("## Where: located cells (|z| > "), std::string::npos);
+    EXPECT_NE(md.find("None: no cell lies beyond both.\n"), std::string::npos) << md;
+    EXPECT_EQ(md.find("| statistic | channel | cell |"), std::string::npos) << "no table of headers alone";
+    EXPECT_NE(md.find("## Which: candidate effects\n\nNone tried (--locate-only).\n"), std::string::npos) << md;
+    EXPECT_EQ(md.find("| step | effect |"), std::string::npos) << "no table of headers alone";
+    EXPECT_EQ(read_text(log).rfind("# driftlab-log", 0), 0u) << "the log in the report's folder is left as it was";
+}
+
 // --fit-fraction sets the forecast design's split; under the default interleaved design it had been ignored without
 // a word, the report and the JSON still saying 0.6.
 TEST(GapCli, FitFractionIsRefusedWithoutTheForecastDesign) {
