@@ -177,9 +177,8 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     for (std::size_t i = 0; i < r.located.size() && i < kCellsShown; ++i) {
         const auto& l = r.located[i];
         const auto& c = r.layout[l.index];
-        std::printf("  %-5s %-16s %-28s %-7s z %7.1f  %s %.3g\n", c.statistic.c_str(), c.channel.c_str(), c.cell.c_str(),
-                    gap::segment_name(c.segment), l.z, std::isnan(l.ratio) ? "diff" : "ratio",
-                    std::isnan(l.ratio) ? l.difference : l.ratio);
+        std::printf("  %-5s %-16s %-28s %-7s z %7.1f  %s\n", c.statistic.c_str(), c.channel.c_str(), c.shown().c_str(),
+                    gap::segment_name(c.segment), l.z, gap::located_value_text(l).c_str());
     }
     if (r.located.size() > kCellsShown)
         std::printf("  ... and %zu more with smaller |z| (--json and --report list them)\n", r.located.size() - kCellsShown);
@@ -224,11 +223,14 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
     for (const auto& n : r.not_tried) std::printf("not tried: %s (%s)\n", n.effect.c_str(), n.reason.c_str());
-    // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps.
-    std::printf("timing: %s (%s lost), %s; row spacing varies by %.3g %% of the output period (sd)\n",
-                gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
+    // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps. A spread below 1e-6 %
+    // is the rounding of the times as written (1.51e-13 % on a hil log), not a timing to report.
+    const double jitter_percent = 100.0 * r.timing.dt_jitter_rel;
+    std::printf("timing: %s (%s lost), %s; %s\n", gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
                 gap::counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
-                gap::counted(r.timing.gap_events, "gap event").c_str(), 100.0 * r.timing.dt_jitter_rel);
+                gap::counted(r.timing.gap_events, "gap event").c_str(),
+                jitter_percent < 1e-6 ? "row spacing constant (its sd below 1e-6 % of the output period)"
+                                      : ("row spacing varies by " + significant(jitter_percent, 3) + " % of the output period (sd)").c_str());
 }
 
 // " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else "".

@@ -246,6 +246,13 @@ std::vector<const Explanation*> candidates_in_table_order(const GapResult& r) {
     return out;
 }
 
+std::string located_value_text(const LocatedCell& l) {
+    const double half_width = 0.5 * (l.interval_high - l.interval_low);
+    const bool ratio = !std::isnan(l.ratio);
+    return (ratio ? "ratio " : "diff ") + to_precision_of(ratio ? l.ratio : l.difference, half_width) + " [" +
+           to_precision_of(l.interval_low, half_width) + ", " + to_precision_of(l.interval_high, half_width) + "]";
+}
+
 std::vector<std::string> report_files(const std::string& dir) {
     std::vector<std::string> out{dir + "/gap.md"};
     for (const char* channel : kChannelNames)
@@ -335,9 +342,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
         for (const auto& l : r.located) {
             const auto& c = r.layout[l.index];
-            md << "| " << c.statistic << " | " << c.channel << " | " << c.cell << " | " << segment_name(c.segment) << " | "
-               << fixed(l.z, 1) << " | " << (std::isnan(l.ratio) ? "diff " + fixed(l.difference, 3) : "ratio " + fixed(l.ratio, 3))
-               << " [" << fixed(l.interval_low, 3) << ", " << fixed(l.interval_high, 3) << "] |\n";
+            md << "| " << c.statistic << " | " << c.channel << " | " << c.shown() << " | " << segment_name(c.segment) << " | "
+               << fixed(l.z, 1) << " | " << located_value_text(l) << " |\n";
         }
         md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     }

@@ -48,6 +48,10 @@ inline constexpr const char* kShrinkDefinition = "shrink = (before - after) / (b
 /// by step (within a step as GapResult::tried holds them: those that passed first, then by held-out shrink).
 std::vector<const Explanation*> candidates_in_table_order(const GapResult& result);
 
+/// A located cell's ratio (log-scale statistics) or difference and its 95 % interval, to the digits the interval
+/// warrants: "ratio 173 [27, 1109]", "diff 0.306 [0.296, 0.317]".
+std::string located_value_text(const LocatedCell& cell);
+
 /// Every file write_gap_report() may write into `dir`, whichever channels it plots: an input among them is refused.
 std::vector<std::string> report_files(const std::string& dir);
 

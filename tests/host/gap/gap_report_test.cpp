@@ -1,13 +1,15 @@
 // What the terminal and the report show of a diagnosis, apart from the numbers it decides with: the verdict's
-// shrink said as the channel's own, the candidate table's order, and the files a report may write (an input among
-// them is refused).
+// shrink said as the channel's own, the candidate table's order, a located cell's digits, the cells' text, and the
+// files a report may write (an input among them is refused).
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "host/gap/gap_report.hpp"
+#include "host/gap/statistics.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -51,6 +53,41 @@ TEST(GapReport, TheCandidateTableListsTheAddedInStepOrderThenTheOthersByStep) {
                                             "1 rate_random_walk", "1 thermal_second_tc", "1 gauss_markov",
                                             "2 flicker",          "3 flicker"};
     EXPECT_EQ(order, expected);
+}
+
+// "ratio 173.285 [27.075, 1109.073]": three decimals whatever the interval. The digits now follow the interval.
+TEST(GapReport, ALocatedCellShowsTheDigitsItsIntervalWarrants) {
+    LocatedCell wide;
+    wide.ratio = 173.285, wide.interval_low = 27.075, wide.interval_high = 1109.073;
+    EXPECT_EQ(located_value_text(wide), "ratio 173 [27, 1109]");
+    LocatedCell narrow;
+    narrow.ratio = std::nan(""), narrow.difference = 0.3063, narrow.interval_low = 0.2957, narrow.interval_high = 0.3169;
+    EXPECT_EQ(located_value_text(narrow), "diff 0.306 [0.296, 0.317]");
+}
+
+// The JSON's cell keys keep their three significant digits; the text shows no exponent and a band of one lag as that lag.
+TEST(GapReport, ACellsTextHasNoExponentAndALagBandOfOneLagIsThatLag) {
+    std::vector<double> t(1500), y(1500);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        t[k] = 1.098 + static_cast<double>(k);
+        y[k] = 500.0 + 0.25 * static_cast<double>((k * 7919) % 13);
+    }
+    BatteryOptions o;
+    o.channels = {true, false, false, false};
+    std::vector<Cell> layout;
+    compute_battery(t, {&y, nullptr, nullptr, nullptr}, o, &layout);
+    const auto find = [&](const std::string& key) {
+        const auto at = std::find_if(layout.begin(), layout.end(), [&](const Cell& c) { return c.cell == key; });
+        EXPECT_NE(at, layout.end()) << key;
+        return at == layout.end() ? std::string() : at->shown();
+    };
+    EXPECT_EQ(find("t=1.2e+03s..1.35e+03s"), "t=1201s..1350s");
+    EXPECT_EQ(find("t=1.1s..150s"), "t=1s..150s");
+    EXPECT_EQ(find("lag=1s..1s"), "lag=1s");
+    EXPECT_EQ(find("lag=32s..63s"), "lag=32s..63s");
+    EXPECT_EQ(find("tau=64s"), "tau=64s");
+    EXPECT_EQ(find("kurtosis"), "kurtosis");  // no number: the key as it is
+    for (const Cell& c : layout) EXPECT_EQ(c.shown().find("e+"), std::string::npos) << c.cell << " shown as " << c.shown();
 }
 
 // A log or model file named as one of the report's files would be written over: report_files() lists them all.
