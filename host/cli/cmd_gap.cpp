@@ -28,6 +28,7 @@
 #include "host/log/log_reader.hpp"
 #include "host/log/log_window.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 #include "sim/model/model_file.hpp"
@@ -46,6 +47,7 @@ struct GapCommandOptions {
     int replicates = 40;
     std::uint64_t seed = 1;
     double fit_fraction = 0.6;
+    bool fit_fraction_given = false;
     gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     bool locate_only = false;
     bool search_diffuse = false;
@@ -175,17 +177,18 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     for (std::size_t i = 0; i < r.located.size() && i < kCellsShown; ++i) {
         const auto& l = r.located[i];
         const auto& c = r.layout[l.index];
-        std::printf("  %-5s %-16s %-28s %-7s z %7.1f  %s %.3g\n", c.statistic.c_str(), c.channel.c_str(), c.cell.c_str(),
-                    gap::segment_name(c.segment), l.z, std::isnan(l.ratio) ? "diff" : "ratio",
-                    std::isnan(l.ratio) ? l.difference : l.ratio);
+        std::printf("  %-5s %-16s %-28s %-7s z %7.1f  %s\n", c.statistic.c_str(), c.channel.c_str(), c.shown().c_str(),
+                    gap::segment_name(c.segment), l.z, gap::located_value_text(l).c_str());
     }
     if (r.located.size() > kCellsShown)
         std::printf("  ... and %zu more with smaller |z| (--json and --report list them)\n", r.located.size() - kCellsShown);
     if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) std::printf("base: %s\n", given.c_str());
-    if (!r.accepted.empty()) std::printf("explanation (effects added in order; parameters estimated on the whole log beside them all):\n");
+    if (!r.accepted.empty())
+        std::printf("explanation (effects added in order; heldout: the channel's held-out score before -> after the step, %s; "
+                    "parameters estimated on the whole log beside them all):\n", gap::kShrinkDefinition);
     for (const auto& e : r.accepted) {
-        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %.0f%%)  %s", e.step, e.effect.c_str(), e.channel.c_str(),
-                    e.heldout_before, e.heldout_after, 100 * e.heldout_shrink, gap::estimate_text(e).c_str());
+        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %s%%)  %s", e.step, e.effect.c_str(), e.channel.c_str(),
+                    e.heldout_before, e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), gap::estimate_text(e).c_str());
         if (e.replaces_given) std::printf("  in place of the model's");
         std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());
@@ -195,12 +198,19 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
                     "a shape path needs %.0f less)\n", p.step, p.channel.c_str(), p.process.c_str(), p.shape.c_str(),
                     p.criterion_process, p.criterion_shape, (p.shape_kept ? p.shape : p.process).c_str(),
                     options.explain_options.shape_path_margin);
-    if (!r.tried.empty()) std::printf("candidates (fitted on the fitting part, judged on the held-out part):\n");
-    for (const auto& e : r.tried) {
-        std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %.0f%%)  gain %.1f vs penalty %.1f ", e.step,
+    const gap::ExplainOptions& rules = options.explain_options;
+    if (!r.tried.empty())
+        std::printf("candidates (fitted on the fitting part, judged on the held-out part; the added first, then by step; heldout and "
+                    "shrink as above; gain vs penalty: the likelihood gain against its parameters' price, passing needs gain > %s x penalty; "
+                    "dIC: the spectral criterion (%s) without it minus with it, > 0 favours it):\n",
+                    significant(rules.penalty_per_param, 3).c_str(), gap::criterion_name(rules.information_criterion));
+    for (const gap::Explanation* candidate : gap::candidates_in_table_order(r)) {
+        const gap::Explanation& e = *candidate;
+        std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %s%%)  gain %s vs penalty %s ", e.step,
                     e.effect.c_str(), e.channel.c_str(), gap::was_added(r, e) ? "ADDED   " : e.accepted ? "passed  " : "rejected", e.heldout_before,
-                    e.heldout_after, 100 * e.heldout_shrink, e.loss_gain, e.penalty);
-        if (gap::has_delta_ic(e)) std::printf(" dIC %.1f", gap::delta_ic(e, options.explain_options.information_criterion));
+                    e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), fixed_point(e.loss_gain, 1).c_str(),
+                    fixed_point(e.penalty, 1).c_str());
+        if (gap::has_delta_ic(e)) std::printf(" dIC %s", fixed_point(gap::delta_ic(e, rules.information_criterion), 1).c_str());
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");
@@ -213,11 +223,14 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options) {
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
     for (const auto& n : r.not_tried) std::printf("not tried: %s (%s)\n", n.effect.c_str(), n.reason.c_str());
-    // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps.
-    std::printf("timing: %s (%s lost), %s; row spacing varies by %.3g %% of the output period (sd)\n",
-                gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
+    // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps. A spread below 1e-6 %
+    // is the rounding of the times as written (1.51e-13 % on a hil log), not a timing to report.
+    const double jitter_percent = 100.0 * r.timing.dt_jitter_rel;
+    std::printf("timing: %s (%s lost), %s; %s\n", gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
                 gap::counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
-                gap::counted(r.timing.gap_events, "gap event").c_str(), 100.0 * r.timing.dt_jitter_rel);
+                gap::counted(r.timing.gap_events, "gap event").c_str(),
+                jitter_percent < 1e-6 ? "row spacing constant (its sd below 1e-6 % of the output period)"
+                                      : ("row spacing varies by " + significant(jitter_percent, 3) + " % of the output period (sd)").c_str());
 }
 
 // " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else "".
@@ -234,7 +247,17 @@ std::string rows_used(const GapCommandOptions& o, const LogData& log) {
 }
 
 void run(const GapCommandOptions& o) {
+    // Only the forecast design splits the log at a fraction: interleaved tenths would silently ignore it.
+    if (o.fit_fraction_given && o.holdout != gap::Holdout::forecast)
+        throw UsageError("--fit-fraction sets where --holdout forecast splits the log; the default interleaved design fits on "
+                         "tenths 0, 4, 5, 7, 9 of the log whatever the fraction: add --holdout forecast, or leave --fit-fraction out");
     refuse_writing_over_input(o.model_out, "--model-out", o.path, "log");
+    refuse_writing_over_input(o.model_out, "--model-out", o.model_path, "model file");
+    if (!o.report_dir.empty())
+        for (const std::string& file : gap::report_files(o.report_dir)) {
+            refuse_writing_over_input(file, "--report", o.path, "log");
+            refuse_writing_over_input(file, "--report", o.model_path, "model file");
+        }
     const auto [log, unit] = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {
@@ -335,9 +358,12 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)")->check(seed_number());
-    cmd->add_option("--fit-fraction", o->fit_fraction, "First part of the log (by time) used to fit candidates")
-        ->check(finite_value())
-        ->check(CLI::Range(0.3, 0.85));
+    const CLI::Option* fit_fraction =
+        cmd->add_option("--fit-fraction", o->fit_fraction, "With --holdout forecast: the first part of the log (by time) used to fit "
+                                                           "candidates (default 0.6; refused with the interleaved design, which "
+                                                           "does not split at a fraction)")
+            ->check(finite_value())
+            ->check(CLI::Range(0.3, 0.85));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
     cmd->add_flag("--search-diffuse", o->search_diffuse,
@@ -355,7 +381,10 @@ void register_gap(CLI::App& app) {
                     "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as a model file "
                     "for driftlab hil --model and gap --model")
         ->check(non_empty_path());
-    cmd->callback([o] { run(*o); });
+    cmd->callback([o, fit_fraction] {
+        o->fit_fraction_given = fit_fraction->count() > 0;
+        run(*o);
+    });
 }
 
 }  // namespace driftlab::host::cli

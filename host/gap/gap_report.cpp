@@ -2,6 +2,7 @@
 #include "host/gap/gap_report.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -24,6 +25,13 @@ namespace driftlab::host::gap {
 namespace {
 
 constexpr int kBandReplicates = 12;
+
+// The report's plots: gap_<kind>_<channel>, as PNG (gap.md links them); plot_bands() draws them, report_files() lists
+// them all.
+const std::vector<report::ImageFormat> kPlotFormats{report::ImageFormat::png};
+constexpr std::array<const char*, 3> kPlotKinds{"adev", "mean", "codes"};
+
+std::string plot_name(const char* kind, const std::string& channel) { return std::string("gap_") + kind + "_" + channel; }
 
 struct Band {
     std::vector<double> low, high;
@@ -109,10 +117,11 @@ std::string parameter_list(const std::vector<std::pair<std::string, double>>& pa
     return out;
 }
 
-// A channel's real residual against the replicate bands of the base and of the final model.
-void plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
-                const std::vector<double>& x, const std::vector<double>& real, const Band& base, const Band* after,
-                const std::string& dir, const std::string& name) {
+// A channel's real residual against the replicate bands of the base and of the final model, as DIR/<plot_name()>;
+// returns gap.md's link to its image.
+std::string plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
+                       const std::vector<double>& x, const std::vector<double>& real, const Band& base, const Band* after,
+                       const std::string& dir, const std::string& name) {
     report::Plot p;
     p.title = title;
     p.x_label = x_label;
@@ -122,7 +131,8 @@ void plot_bands(const std::string& title, const std::string& x_label, const std:
     if (after)
         p.series.push_back({"with the added effects", x, after->low, after->low, after->high, report::SeriesStyle::band, false, "blue", 1.0});
     p.series.push_back({"real", x, real, {}, {}, report::SeriesStyle::lines, false, "black", 2.0});
-    report::render_plot(p, dir, name, {report::ImageFormat::png});
+    const std::string image = std::filesystem::path(report::render_plot(p, dir, name, kPlotFormats).front()).filename().string();
+    return "![" + name + "](" + image + ")\n\n";
 }
 
 }  // namespace
@@ -143,8 +153,10 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     const std::string located = counted(r.located.size(), "cell") + " located";
     if (!r.accepted.empty()) {
         const Explanation& e = r.accepted.front();
-        std::string out = "on " + e.channel + " it removes " + fixed(100 * e.heldout_shrink, 0) + " % of the held-out gap excess (" +
-                          fixed(e.heldout_before) + " -> " + fixed(e.heldout_after) + ")";
+        // The channel's own score, not the whole log's the gap line and table show: say so, and what the share is of.
+        std::string out = "on " + e.channel + " it removes " + fixed(100 * e.heldout_shrink, 0) + " % of " + e.channel +
+                          "'s own held-out gap excess (" + e.channel + "'s held-out score " + fixed(e.heldout_before) + " -> " +
+                          fixed(e.heldout_after) + "; " + kShrinkDefinition + "; the whole log's scores are below)";
         for (std::size_t k = 1; k < r.accepted.size(); ++k)
             out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel;
         out += r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound";
@@ -223,6 +235,34 @@ std::string left_out_sentence(const GapResult& r) {
                  "live through the same time";
 }
 
+std::vector<const Explanation*> candidates_in_table_order(const GapResult& r) {
+    std::vector<const Explanation*> out;
+    for (const auto& e : r.tried) out.push_back(&e);
+    std::stable_sort(out.begin(), out.end(), [&r](const Explanation* a, const Explanation* b) {
+        const bool a_added = was_added(r, *a), b_added = was_added(r, *b);
+        if (a_added != b_added) return a_added;
+        return a->step < b->step;
+    });
+    return out;
+}
+
+std::string located_value_text(const LocatedCell& l) {
+    const double half_width = 0.5 * (l.interval_high - l.interval_low);
+    const bool ratio = !std::isnan(l.ratio);
+    return (ratio ? "ratio " : "diff ") + to_precision_of(ratio ? l.ratio : l.difference, half_width) + " [" +
+           to_precision_of(l.interval_low, half_width) + ", " + to_precision_of(l.interval_high, half_width) + "]";
+}
+
+std::vector<std::string> report_files(const std::string& dir) {
+    std::vector<std::string> out{dir + "/gap.md"};
+    for (const char* channel : kChannelNames)
+        for (const char* kind : kPlotKinds) {
+            const auto files = report::plot_files(dir, plot_name(kind, channel), kPlotFormats);
+            out.insert(out.end(), files.begin(), files.end());
+        }
+    return out;
+}
+
 void write_gap_report(const GapResult& r, const LogData& log, const std::string& dir, const GapOptions& options,
                       const VerdictStability* stability) {
     make_output_folder(dir, "report");
@@ -240,6 +280,24 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         for (const std::string& line : spread) md << "- " << line << "\n";
         if (!spread.empty()) md << "\n";
     }
+    // The words the tables below use, for a reader who has not read docs/gap.md.
+    md << "## How to read this report\n\n"
+          "The simulator, calibrated to this log, is run " << options.replicates << " times with fresh noise on the log's own "
+          "instants (the *replicates*). The same set of statistics (the *battery*: means and variances over tenths of the log, "
+          "Allan deviations, spectra and autocorrelations by octave, and more) is computed on the log and on every replicate; "
+          "one statistic on one window, band or lag of one part of the log is a *cell*. A cell is *located* where the log "
+          "lies outside what the replicates do: its z (the distance from the replicates' mean in their standard deviations) "
+          "is beyond a threshold that a log the simulator explains crosses in about " << fixed(100 * options.alpha, 0)
+       << " % of cases, and its difference is beyond a *practical margin*, the least that matters (0.1 count for a mean, "
+          "10 % for a deviation). The *gap score* is the mean z^2 over the cells divided by the replicates' own: about 1 "
+          "when the simulator explains the log.\n\n"
+          "Candidate effects are fitted on one part of the log and judged on the other, the *held-out part*: an effect must "
+          "predict data it was not fitted to. *Shrink* is the share of a held-out score's excess over 1 that an effect "
+          "removes, (before - after) / (before - 1): 100 % brings the score to 1 (more, below 1), a negative shrink makes it worse. "
+          "*Gain / penalty*: how much the cells' likelihood gains with the effect, against the price of its parameters. "
+          "*ΔIC*: the full-log spectral information criterion without the effect minus with it, above 0 where the spectrum "
+          "favours the effect. A *level step* is an abrupt jump of the mean, which no effect of the library makes. "
+          "docs/gap.md, in the driftlab sources, gives the method and every rule in full.\n\n";
     if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
     if (const std::string quiet = noise_free_sentence(r); !quiet.empty()) md << "Not analysed: " << quiet << ".\n\n";
     if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
@@ -256,8 +314,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     if (!r.accepted.empty()) {
         md << "## Explanation: the effects added, in order\n\nParameters as estimated on the whole log beside all the "
               "added effects, and (for a mean shape or a Gaussian process) the fitting part's, which the held-out part "
-              "judged; the held-out gap is the channel's, before and after each step.\n\n"
-              "| step | effect | channel | parameters | held-out gap | shrink | close call | what would confirm it |\n"
+              "judged; the held-out score is the channel's, before and after each step (" << kShrinkDefinition << ").\n\n"
+              "| step | effect | channel | parameters | channel's held-out score | shrink | close call | what would confirm it |\n"
               "|---|---|---|---|---|---|---|---|\n";
         for (const auto& e : r.accepted)
             md << "| " << e.step << " | " << e.effect << (e.replaces_given ? " (in place of the model's)" : "") << " | " << e.channel
@@ -277,31 +335,45 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
                << (p.shape_kept ? p.shape : p.process) << " first |\n";
         md << "\n";
     }
-    md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << ", beyond the practical margin)\n\n";
-    md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
-    for (const auto& l : r.located) {
-        const auto& c = r.layout[l.index];
-        md << "| " << c.statistic << " | " << c.channel << " | " << c.cell << " | " << segment_name(c.segment) << " | "
-           << fixed(l.z, 1) << " | " << (std::isnan(l.ratio) ? "diff " + fixed(l.difference, 3) : "ratio " + fixed(l.ratio, 3))
-           << " [" << fixed(l.interval_low, 3) << ", " << fixed(l.interval_high, 3) << "] |\n";
+    md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << " and a difference beyond the cell's practical margin)\n\n";
+    if (r.located.empty()) {
+        md << "None: no cell lies beyond both.\n\n";  // a table of headers alone reads as a failure to fill it
+    } else {
+        md << "| statistic | channel | cell | part | z | ratio or difference [95 % interval] |\n|---|---|---|---|---|---|\n";
+        for (const auto& l : r.located) {
+            const auto& c = r.layout[l.index];
+            md << "| " << c.statistic << " | " << c.channel << " | " << c.shown() << " | " << segment_name(c.segment) << " | "
+               << fixed(l.z, 1) << " | " << located_value_text(l) << " |\n";
+        }
+        md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     }
-    md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     if (r.diffuse_gap)
         md << "Diffuse gap: the held-out score exceeds its bound with no cell located (many cells a little off, none "
               "alone beyond the threshold). "
            << (r.diffuse_searched  ? "The candidates were searched on it (--search-diffuse).\n\n"
                : options.explain   ? "The candidates were not searched (--search-diffuse searches them).\n\n"
                                    : "No candidate was tried (--locate-only).\n\n");
-    md << "## Which: candidate effects\n\nFitted on the fitting part, judged on the held-out part; among accepted "
-          "Gaussian candidates the full-log spectral information criterion ("
-       << criterion_name(options.explain_options.information_criterion)
-       << ") chooses.\n\n"
-          "| step | effect | channel | parameters | held-out gap | shrink | gain / penalty | delta IC | decision |\n"
-          "|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& e : r.tried) {
+    const ExplainOptions& rules = options.explain_options;
+    md << "## Which: candidate effects\n\n";
+    if (r.tried.empty())
+        md << "None tried" << (!options.explain ? " (--locate-only)" : r.located.empty() && !r.diffuse_searched ? ": no cell located, nothing to explain" : "")
+           << ".\n";
+    else
+        md << "Fitted on the fitting part, judged on the held-out part: the added effects first, in step order, then the others "
+              "by step. The held-out score is the channel's, before -> with the candidate (" << kShrinkDefinition << "). A candidate "
+              "passes when, among other tests, its gain exceeds " << significant(rules.penalty_per_param, 3) << " x its penalty and "
+              "it shrinks the held-out score by at least " << fixed(100 * rules.min_heldout_shrink, 0) << " %; among the mean "
+              "shapes and Gaussian processes that pass, the one with the largest ΔIC (" << criterion_name(rules.information_criterion)
+           << ": the criterion without the candidate minus with it, so above 0 favours it) is chosen. ΔIC is computed for "
+              "those only (else -), and an effect added at a later step can have ΔIC at or below 0: it passed the held-out tests, "
+              "but the spectrum alone would not pay for its parameters.\n\n"
+              "| step | effect | channel | parameters | channel's held-out score | shrink | gain / penalty | ΔIC (> 0 favours it) | decision |\n"
+              "|---|---|---|---|---|---|---|---|---|\n";
+    for (const Explanation* candidate : candidates_in_table_order(r)) {
+        const Explanation& e = *candidate;
         md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e.params) << " | " << fixed(e.heldout_before)
            << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0) << " % | " << fixed(e.loss_gain, 1)
-           << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, options.explain_options.information_criterion), 1) : std::string("-")) << " | "
+           << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, rules.information_criterion), 1) : std::string("-")) << " | "
            << (was_added(r, e) ? "**added**" : e.accepted ? "passed, not chosen" : "rejected")
            << (e.residual_step.significant ? ", leaves a level step" : "")
            << (e.shape_steps.steps_win ? ", two level steps fit better" : "")
@@ -349,19 +421,16 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         std::vector<double> tau(real.size());
         for (std::size_t j = 0; j < tau.size(); ++j) tau[j] = r.base.smoothing.sample_period_s * std::ldexp(1.0, static_cast<int>(j));
         const std::string channel = kChannelNames[c];
-        plot_bands("Residual ADEV, " + channel, "tau [s]", "ADEV of the eq. 1 residual [counts]", true, tau, real, base.adev,
-                   added ? &added->adev : nullptr, dir, "gap_adev_" + channel);
-        plot_bands("Residual mean over time, " + channel, "t [s]", "mean of the eq. 1 residual per bin [counts]", false, bin_t,
-                   binned_mean(residual, edges), base.mean, added ? &added->mean : nullptr, dir, "gap_mean_" + channel);
-        md << "![gap_adev_" << channel << "](gap_adev_" << channel << ".png)\n\n![gap_mean_" << channel << "](gap_mean_"
-           << channel << ".png)\n\n";
+        md << plot_bands("Residual ADEV, " + channel, "tau [s]", "ADEV of the eq. 1 residual [counts]", true, tau, real, base.adev,
+                         added ? &added->adev : nullptr, dir, plot_name("adev", channel));
+        md << plot_bands("Residual mean over time, " + channel, "t [s]", "mean of the eq. 1 residual per bin [counts]", false, bin_t,
+                         binned_mean(residual, edges), base.mean, added ? &added->mean : nullptr, dir, plot_name("mean", channel));
         if (range.real) {
             std::vector<double> code(static_cast<std::size_t>(range.highest - range.lowest + 1));
             for (std::size_t j = 0; j < code.size(); ++j) code[j] = range.lowest + static_cast<double>(j);
-            plot_bands("Raw codes, " + channel, "code", "share of rows on the code", false, code,
-                       code_shares(*range.real, range.lowest, range.highest), base.codes, added ? &added->codes : nullptr, dir,
-                       "gap_codes_" + channel);
-            md << "![gap_codes_" << channel << "](gap_codes_" << channel << ".png)\n\n";
+            md << plot_bands("Raw codes, " + channel, "code", "share of rows on the code", false, code,
+                             code_shares(*range.real, range.lowest, range.highest), base.codes, added ? &added->codes : nullptr, dir,
+                             plot_name("codes", channel));
         }
     }
     std::ofstream out(dir + "/gap.md");

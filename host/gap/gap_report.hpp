@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "host/gap/diagnose.hpp"
 #include "host/gap/verdict_stability.hpp"
@@ -38,6 +39,21 @@ std::string saturated_channels_sentence(const GapResult& result);
 
 /// The stretches --exclude left out, with their rows and why the join is fair; "" when none.
 std::string left_out_sentence(const GapResult& result);
+
+/// What the shrink of a held-out score is, where one is shown: "shrink = (before - after) / (before - 1)", the share
+/// of the score's excess over 1 (a consistent simulator's score) that an effect removes.
+inline constexpr const char* kShrinkDefinition = "shrink = (before - after) / (before - 1)";
+
+/// The candidates tried as the terminal and the report list them: the added effects in step order, then the others
+/// by step (within a step as GapResult::tried holds them: those that passed first, then by held-out shrink).
+std::vector<const Explanation*> candidates_in_table_order(const GapResult& result);
+
+/// A located cell's ratio (log-scale statistics) or difference and its 95 % interval, to the digits the interval
+/// warrants: "ratio 173 [27, 1109]", "diff 0.306 [0.296, 0.317]".
+std::string located_value_text(const LocatedCell& cell);
+
+/// Every file write_gap_report() may write into `dir`, whichever channels it plots: an input among them is refused.
+std::vector<std::string> report_files(const std::string& dir);
 
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "host/fit/lm_fit.hpp"
 #include "host/gap/code_density.hpp"
@@ -36,9 +37,12 @@ constexpr std::size_t kJumpBlocks = 16;       // blocks per part for the step st
 class Builder {
 public:
     Builder(std::vector<double>& values, std::vector<Cell>* layout) : values_(values), layout_(layout) {}
-    void add(double value, const Cell& cell) {
+    /// `text`: Cell::text, where the cell's text differs from its key.
+    void add(double value, const Cell& cell, std::string text = {}) {
         values_.push_back(value);
-        if (layout_) layout_->push_back(cell);
+        if (!layout_) return;
+        layout_->push_back(cell);
+        layout_->back().text = std::move(text);
     }
     bool wants_layout() const { return layout_ != nullptr; }
 
@@ -50,6 +54,11 @@ private:
 std::string short_number(double v) { return significant(v, 3); }
 
 std::string seconds_label(double s) { return short_number(s) + "s"; }
+
+// A cell's seconds for people (Cell::text): a window's ends to the digits its length warrants (t=1201s..1350s), a lag
+// or a tau, a whole multiple of the sample period, as it is.
+std::string window_seconds_text(double s, double length_s) { return to_precision_of(s, length_s) + "s"; }
+std::string multiple_seconds_text(double s) { return significant(s, 6) + "s"; }
 
 double log_floor(double v) { return std::log(std::max(v, 1e-300)); }
 
@@ -163,10 +172,14 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
             for (std::size_t i = a; i < b; ++i) var += (e[i] - mean) * (e[i] - mean);
             var /= static_cast<double>(std::max<std::size_t>(1, b - a - 1));
             const Segment seg = fitting[(a + b) / 2] ? Segment::fit : Segment::heldout;
-            std::string label;
-            if (out.wants_layout()) label = "t=" + seconds_label(t_s[a]) + ".." + seconds_label(t_s[b - 1]);
-            out.add(mean, {"mean", name, ci, label, seg, false, kMeanMarginCounts});
-            out.add(log_floor(var), {"var", name, ci, label, seg, true, 2.0 * kLogRatioMargin});
+            std::string label, text;
+            if (out.wants_layout()) {
+                label = "t=" + seconds_label(t_s[a]) + ".." + seconds_label(t_s[b - 1]);
+                const double length = t_s[b - 1] - t_s[a];
+                text = "t=" + window_seconds_text(t_s[a], length) + ".." + window_seconds_text(t_s[b - 1], length);
+            }
+            out.add(mean, {"mean", name, ci, label, seg, false, kMeanMarginCounts}, text);
+            out.add(log_floor(var), {"var", name, ci, label, seg, true, 2.0 * kLogRatioMargin}, text);
         }
         for (int s = 0; s < 2; ++s) {
             const Segment seg = s == 0 ? Segment::fit : Segment::heldout;
@@ -174,21 +187,24 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
             const std::vector<double> part_y = part_of(yc, fitting, s == 0);
             const std::size_t len = part.size();
             const auto adev = octave_oadev(part, std::max<std::size_t>(1, len / 8));
-            for (std::size_t j = 0; j < adev.size(); ++j)
-                out.add(log_floor(adev[j]), {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau0 * std::ldexp(1.0, static_cast<int>(j))) : "",
-                                             seg, true, kLogRatioMargin});
+            for (std::size_t j = 0; j < adev.size(); ++j) {
+                const double tau = tau0 * std::ldexp(1.0, static_cast<int>(j));
+                out.add(log_floor(adev[j]), {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau) : "", seg, true, kLogRatioMargin},
+                        out.wants_layout() ? "tau=" + multiple_seconds_text(tau) : "");
+            }
             spectra[c][static_cast<std::size_t>(s)] = band_spectrum(part);
             const auto psd = octave_band_power(spectra[c][static_cast<std::size_t>(s)]);
             for (std::size_t j = 0; j < psd.size(); ++j)
                 out.add(log_floor(psd[j]), {"psd", name, ci, out.wants_layout() ? band_label(j) : "", seg, true, kPsdMargin});
             const auto acf = octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
             for (std::size_t j = 0; j < acf.size(); ++j) {
-                std::string label;
+                std::string label, text;
                 if (out.wants_layout()) {
                     const double lo = std::ldexp(1.0, static_cast<int>(j));
                     label = "lag=" + seconds_label(lo * tau0) + ".." + seconds_label((2 * lo - 1) * tau0);
+                    text = "lag=" + multiple_seconds_text(lo * tau0) + (lo > 1 ? ".." + multiple_seconds_text((2 * lo - 1) * tau0) : "");
                 }
-                out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin});
+                out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin}, text);
             }
             out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
             if (codes)

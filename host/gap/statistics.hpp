@@ -30,6 +30,11 @@ struct Cell {
     Segment segment = Segment::fit;
     bool log_scale = false;  ///< the value is a logarithm (compare as a ratio)
     double margin = 0.0;     ///< smallest practically relevant difference of the value
+    /// The cell as the terminal and the report show it where that differs from `cell`, the JSON's stable key (whose
+    /// three significant digits read t=1.2e+03s, and a one-lag band lag=1s..1s): see shown().
+    std::string text{};
+
+    const std::string& shown() const { return text.empty() ? cell : text; }
 };
 
 /// How the log is split into the part candidates are fitted on and the part they are judged on.

@@ -168,28 +168,52 @@ bool gnuplot_available() {
     return false;
 }
 
-std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, const std::string& name,
-                                     const std::vector<ImageFormat>& formats) {
-    check(plot);
-    make_output_folder(dir, "plot");
+namespace {
+
+// Every file render_plot() writes for one plot: one place for their names, which plot_files() lists.
+struct PlotPaths {
+    fs::path data, log;
+    std::vector<std::pair<fs::path, fs::path>> images;  ///< per format: the image and its script
+};
+
+PlotPaths plot_paths(const std::string& dir, const std::string& name, const std::vector<ImageFormat>& formats) {
     // The name comes from a column header ("gyro(deg/s)", "a/b"): only characters safe in a file name are kept.
     std::string file_name = name;
     for (char& c : file_name)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.') c = '_';
-    const fs::path base = fs::path(dir) / file_name;
-    const fs::path data = base.string() + ".dat";
-    write_data(plot, data);
-    std::vector<std::string> images;
+    const std::string base = (fs::path(dir) / file_name).string();
+    PlotPaths p{base + ".dat", base + ".gnuplot.log", {}};
     for (ImageFormat f : formats) {
-        const char* ext = f == ImageFormat::png ? ".png" : ".svg";
-        const fs::path image = base.string() + ext;
-        const fs::path gp = base.string() + (f == ImageFormat::png ? ".png.gp" : ".svg.gp");
-        std::ofstream(gp, std::ios::binary) << script(plot, data, image, f);
-        run_gnuplot(gp, base.string() + ".gnuplot.log");
+        const std::string image = base + (f == ImageFormat::png ? ".png" : ".svg");
+        p.images.emplace_back(image, image + ".gp");
+    }
+    return p;
+}
+
+}  // namespace
+
+std::vector<std::string> plot_files(const std::string& dir, const std::string& name, const std::vector<ImageFormat>& formats) {
+    const PlotPaths p = plot_paths(dir, name, formats);
+    std::vector<std::string> out{p.data.string(), p.log.string()};
+    for (const auto& [image, gp] : p.images) out.insert(out.end(), {image.string(), gp.string()});
+    return out;
+}
+
+std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, const std::string& name,
+                                     const std::vector<ImageFormat>& formats) {
+    check(plot);
+    make_output_folder(dir, "plot");
+    const PlotPaths p = plot_paths(dir, name, formats);
+    write_data(plot, p.data);
+    std::vector<std::string> images;
+    for (std::size_t k = 0; k < formats.size(); ++k) {
+        const auto& [image, gp] = p.images[k];
+        std::ofstream(gp, std::ios::binary) << script(plot, p.data, image, formats[k]);
+        run_gnuplot(gp, p.log);
         images.push_back(image.string());
     }
     std::error_code ec;  // a log left behind is harmless
-    fs::remove(base.string() + ".gnuplot.log", ec);
+    fs::remove(p.log, ec);
     return images;
 }
 

@@ -47,6 +47,11 @@ enum class ImageFormat { png, svg };
 std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, const std::string& name,
                                      const std::vector<ImageFormat>& formats = {ImageFormat::png, ImageFormat::svg});
 
+/// Every file render_plot(plot, dir, name, formats) writes (its data, scripts, images and passing log), so that a
+/// command can refuse an input it would write over before its work.
+std::vector<std::string> plot_files(const std::string& dir, const std::string& name,
+                                    const std::vector<ImageFormat>& formats = {ImageFormat::png, ImageFormat::svg});
+
 /// The SVG document of `plot` as text (rendered in a temporary folder).
 std::string render_svg(const Plot& plot);
 

@@ -5,8 +5,20 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 namespace driftlab::host {
+
+namespace {
+
+// printf keeps the sign of a negative value that rounds to zero ("-0.0", "-0 %"), which reads as a change where the
+// text shows none.
+std::string without_negative_zero(const char* text) {
+    if (text[0] == '-' && std::string_view(text + 1).find_first_not_of("0.") == std::string_view::npos) return text + 1;
+    return text;
+}
+
+}  // namespace
 
 void append_double(std::string& out, double value) {
     char buf[32];
@@ -29,6 +41,7 @@ std::string to_precision_of(double value, double uncertainty) {
     const int last = static_cast<int>(std::floor(std::log10(uncertainty))) - 1;  // power of ten of the last digit
     if (last >= -12 && std::fabs(value) < 1e9 && uncertainty < 1e9) {
         std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -last), value);
+        return without_negative_zero(buf);
     } else {
         const int lead = value != 0.0 ? static_cast<int>(std::floor(std::log10(std::fabs(value)))) : last + 1;
         std::snprintf(buf, sizeof buf, "%.*e", std::clamp(lead - last, 0, 16), value);
@@ -45,7 +58,7 @@ std::string significant(double value, int digits) {
 std::string fixed_point(double value, int decimals) {
     char buf[400];  // %f of 1e308 has 309 digits before the point
     std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-    return buf;
+    return without_negative_zero(buf);
 }
 
 }  // namespace driftlab::host

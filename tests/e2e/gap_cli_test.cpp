@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -60,7 +61,13 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     const RunResult gap = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "16", "--model-out", dir.file("fitted.toml"),
                                         "--stability", "3", "--report", dir.file("report")}, dir.path());
     ASSERT_EQ(gap.exit_code, 0) << gap.output;
-    EXPECT_NE(gap.output.find("verdict: ambient_cycle"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("verdict: ambient_cycle (on gyro it removes "), std::string::npos) << gap.output;
+    // Its shrink is the gyro's own held-out score's, which the line says, beside the whole log's in the gap line.
+    EXPECT_NE(gap.output.find(" % of gyro's own held-out gap excess (gyro's held-out score "), std::string::npos) << gap.output;
+    // The candidate list starts with the effects added, in step order.
+    const std::size_t candidates = gap.output.find("\ncandidates (");
+    ASSERT_NE(candidates, std::string::npos) << gap.output;
+    EXPECT_EQ(gap.output.find("\n  1 ambient_cycle      gyro     ADDED", candidates), gap.output.find('\n', candidates + 1)) << gap.output;
     // The cycle locates more cells than the terminal lists: it shows the 15 largest and counts the rest; the report
     // lists every one.
     const std::size_t at = gap.output.find("located cells (|z| > ");
@@ -479,6 +486,84 @@ TEST(GapCli, AnUnusableReportFolderIsRefusedBeforeTheDiagnosis) {
     const RunResult hil = run_driftlab({"hil", "--duration", "10", "-o", log + "/x.csv"}, dir.path());
     EXPECT_EQ(hil.exit_code, 4) << hil.output;
     EXPECT_NE(hil.output.find("cannot create the log folder"), std::string::npos) << hil.output;
+}
+
+// `gap LOG --model M --model-out M` had written the estimate over the model it started from (exit 0); the report's
+// own files are outputs too. Each is refused before anything is written, whatever spelling names the file. A log
+// elsewhere in the report folder is no conflict.
+TEST(GapCli, NeitherTheModelFileNorTheLogIsWrittenOver) {
+    TempDir dir("gapoverwrite");
+    const std::string model_text = "name = \"unit\"\n";
+    std::ofstream(dir.file("m.toml")) << model_text;
+    const RunResult model = run_driftlab({"gap", dir.file("x.csv"), "--model", dir.file("m.toml"), "--model-out",
+                                          (dir.path() / "." / "m.toml").string()}, dir.path());
+    EXPECT_EQ(model.exit_code, 2) << model.output;
+    EXPECT_NE(model.output.find("--model-out: '" + (dir.path() / "." / "m.toml").string() + "' is the model file this command reads"),
+              std::string::npos) << model.output;
+    EXPECT_EQ(read_text(dir.file("m.toml")), model_text);
+
+    std::filesystem::create_directory(dir.file("rep"));
+    const std::string table = "t_s y\n0 1\n1 2\n";
+    for (const std::string name : {"gap.md", "gap_mean_gyro.dat"}) {
+        std::ofstream(dir.file("rep/" + name)) << table;
+        const RunResult log = run_driftlab({"gap", dir.file("rep/" + name), "--tau0", "1", "--report", dir.file("rep")}, dir.path());
+        EXPECT_EQ(log.exit_code, 2) << name << ": " << log.output;
+        EXPECT_NE(log.output.find("--report: '" + dir.file("rep/" + name) + "' is the log this command reads"), std::string::npos)
+            << log.output;
+        EXPECT_EQ(read_text(dir.file("rep/" + name)), table) << name;
+    }
+    std::ofstream(dir.file("rep/gap_adev_gyro.png")) << model_text;
+    const RunResult plot = run_driftlab({"gap", dir.file("x.csv"), "--model", dir.file("rep/gap_adev_gyro.png"), "--report",
+                                         dir.file("rep")}, dir.path());
+    EXPECT_EQ(plot.exit_code, 2) << plot.output;
+    EXPECT_NE(plot.output.find("is the model file this command reads"), std::string::npos) << plot.output;
+}
+
+// The report's words (battery, cell, replicate, practical margin, shrink...) are said before its tables, and a table
+// without rows is "None" and why, not a header alone. The log may sit in the report's folder.
+TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
+    TempDir dir("gapreportnone");
+    std::filesystem::create_directory(dir.file("rep"));
+    const std::string log = dir.file("rep/hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "1500", "--seed", "3", "-o", log}, dir.path()).exit_code, 0);
+    const RunResult gap = run_driftlab({"gap", log, "--replicates", "16", "--locate-only", "--report", dir.file("rep")}, dir.path());
+    ASSERT_EQ(gap.exit_code, 0) << gap.output;
+    ASSERT_NE(gap.output.find("located cells (|z| > "), std::string::npos) << gap.output;
+    ASSERT_NE(gap.output.find("and beyond the margin): 0\n"), std::string::npos) << gap.output;
+    // A hil log's times are evenly spaced but for their rounding (1.5e-13 %), which had been printed as a spread.
+    EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the output period)\n"), std::string::npos) << gap.output;
+    const std::string md = read_text(dir.file("rep/gap.md"));
+    const std::size_t guide = md.find("## How to read this report\n\n");
+    ASSERT_NE(guide, std::string::npos) << md.substr(0, 800);
+    for (const char* word : {"*replicates*", "*battery*", "*cell*", "*located*", "*practical margin*", "*gap score*", "*held-out part*",
+                             "*Shrink*", "*Gain / penalty*", "*ΔIC*", "*level step*", "docs/gap.md"})
+        EXPECT_NE(md.find(word, guide), std::string::npos) << word;
+    EXPECT_NE(md.find("## Where: located cells (|z| > "), std::string::npos);
+    EXPECT_NE(md.find("None: no cell lies beyond both.\n"), std::string::npos) << md;
+    EXPECT_EQ(md.find("| statistic | channel | cell |"), std::string::npos) << "no table of headers alone";
+    EXPECT_NE(md.find("## Which: candidate effects\n\nNone tried (--locate-only).\n"), std::string::npos) << md;
+    EXPECT_EQ(md.find("| step | effect |"), std::string::npos) << "no table of headers alone";
+    EXPECT_EQ(read_text(log).rfind("# driftlab-log", 0), 0u) << "the log in the report's folder is left as it was";
+}
+
+// --fit-fraction sets the forecast design's split; under the default interleaved design it had been ignored without
+// a word, the report and the JSON still saying 0.6.
+TEST(GapCli, FitFractionIsRefusedWithoutTheForecastDesign) {
+    TempDir dir("gapfitfraction");
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "0.7"},
+                                                 {"gap", "x.csv", "--fit-fraction", "0.7", "--holdout", "interleaved"}}) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find("--fit-fraction sets where --holdout forecast splits the log"), std::string::npos) << r.output;
+    }
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "-o", log}, dir.path()).exit_code, 0);
+    const RunResult forecast = run_driftlab({"gap", log, "--holdout", "forecast", "--fit-fraction", "0.7", "--replicates", "10",
+                                             "--locate-only", "--json"}, dir.path());
+    ASSERT_EQ(forecast.exit_code, 0) << forecast.output;
+    const auto j = nlohmann::json::parse(forecast.output);
+    EXPECT_EQ(j["holdout"], "forecast");
+    EXPECT_DOUBLE_EQ(j["fit_fraction"].get<double>(), 0.7);
 }
 
 // A plot folder that cannot be made is refused before minutes of benchmark, not after them.

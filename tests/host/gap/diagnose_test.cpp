@@ -240,6 +240,10 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     write_gap_report(p.result, p.log, dir.string(), small_options());
     const std::string md = read_text(dir / "gap.md");
     EXPECT_NE(md.find("**Verdict: thermal_second_tc**: on gyro it removes"), std::string::npos) << md.substr(0, 300);
+    // The words the tables use are said before them.
+    const auto guide = md.find("## How to read this report");
+    ASSERT_NE(guide, std::string::npos) << md.substr(0, 600);
+    EXPECT_LT(guide, md.find("| | fitting part |"));
     const auto explanation = md.find("## Explanation");
     ASSERT_NE(explanation, std::string::npos);
     EXPECT_NE(md.find("| 1 | thermal_second_tc | gyro | c3_dps=", explanation), std::string::npos);

@@ -41,5 +41,17 @@ TEST(ToPrecisionOf, WithoutAFiniteUncertaintySixSignificantDigits) {
     EXPECT_EQ(to_precision_of(inf, 1.0), "inf");
 }
 
+// A small negative value rounded to zero had kept its sign: gap's candidate table read "shrink -0%" and "gain -0.0"
+// where nothing changed. A negative value that does not round to zero keeps it.
+TEST(FixedPoint, AValueThatRoundsToZeroHasNoSign) {
+    EXPECT_EQ(fixed_point(-0.004, 0), "0");
+    EXPECT_EQ(fixed_point(-0.04, 1), "0.0");
+    EXPECT_EQ(fixed_point(-0.0, 2), "0.00");
+    EXPECT_EQ(fixed_point(-0.06, 1), "-0.1");
+    EXPECT_EQ(fixed_point(-12.34, 1), "-12.3");
+    EXPECT_EQ(to_precision_of(-0.0003, 0.05), "0.000");
+    EXPECT_EQ(to_precision_of(-0.0003, 0.005), "-0.0003");
+}
+
 }  // namespace
 }  // namespace driftlab::host

@@ -1,0 +1,103 @@
+// What the terminal and the report show of a diagnosis, apart from the numbers it decides with: the verdict's
+// shrink said as the channel's own, the candidate table's order, a located cell's digits, the cells' text, and the
+// files a report may write (an input among them is refused).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "host/gap/gap_report.hpp"
+#include "host/gap/statistics.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+Explanation candidate(const std::string& effect, int step, bool accepted, double shrink) {
+    Explanation e;
+    e.effect = effect;
+    e.channel = "gyro";
+    e.step = step;
+    e.accepted = accepted;
+    e.heldout_shrink = shrink;
+    return e;
+}
+
+// The reviewer's log: the verdict's "100 % (248.17 -> 2.13)" stood beside the gap table's whole-log 47.82 -> 0.99
+// without saying it was the gyro's own score, or what the share is of.
+TEST(GapReport, TheVerdictSaysWhoseHeldOutScoreItShrinksAndHow) {
+    GapResult r;
+    Explanation cycle = candidate("ambient_cycle", 1, true, 0.9946);
+    cycle.heldout_before = 248.17, cycle.heldout_after = 2.13;
+    r.accepted.push_back(cycle);
+    r.gap_after_heldout = 0.99, r.gap_bound_after = 1.24;
+    const std::string reason = verdict_reason(r, GapOptions{});
+    EXPECT_EQ(reason.rfind("on gyro it removes 99 % of gyro's own held-out gap excess (gyro's held-out score 248.17 -> 2.13; "
+                           "shrink = (before - after) / (before - 1); the whole log's scores are below); the gap closes", 0), 0u)
+        << reason;
+}
+
+// The diagnosis holds its candidates passed first, then by shrink (a step-3 effect above a step-2 one); the table
+// lists the added in step order, then the others by step, each step's as the diagnosis held them.
+TEST(GapReport, TheCandidateTableListsTheAddedInStepOrderThenTheOthersByStep) {
+    GapResult r;
+    r.tried = {candidate("rate_random_walk", 1, true, 1.0), candidate("ambient_cycle", 1, true, 0.99),
+               candidate("thermal_second_tc", 3, true, 0.66), candidate("rate_random_walk", 2, true, 0.46),
+               candidate("thermal_second_tc", 1, false, 0.37), candidate("flicker", 2, false, 0.01),
+               candidate("gauss_markov", 1, false, 0.0), candidate("flicker", 3, false, -0.49)};
+    r.accepted = {r.tried[1], r.tried[3], r.tried[2]};  // in the order they were added
+    std::vector<std::string> order;
+    for (const Explanation* e : candidates_in_table_order(r)) order.push_back(std::to_string(e->step) + " " + e->effect);
+    const std::vector<std::string> expected{"1 ambient_cycle",    "2 rate_random_walk", "3 thermal_second_tc",
+                                            "1 rate_random_walk", "1 thermal_second_tc", "1 gauss_markov",
+                                            "2 flicker",          "3 flicker"};
+    EXPECT_EQ(order, expected);
+}
+
+// "ratio 173.285 [27.075, 1109.073]": three decimals whatever the interval. The digits now follow the interval.
+TEST(GapReport, ALocatedCellShowsTheDigitsItsIntervalWarrants) {
+    LocatedCell wide;
+    wide.ratio = 173.285, wide.interval_low = 27.075, wide.interval_high = 1109.073;
+    EXPECT_EQ(located_value_text(wide), "ratio 173 [27, 1109]");
+    LocatedCell narrow;
+    narrow.ratio = std::nan(""), narrow.difference = 0.3063, narrow.interval_low = 0.2957, narrow.interval_high = 0.3169;
+    EXPECT_EQ(located_value_text(narrow), "diff 0.306 [0.296, 0.317]");
+}
+
+// The JSON's cell keys keep their three significant digits; the text shows no exponent and a band of one lag as that lag.
+TEST(GapReport, ACellsTextHasNoExponentAndALagBandOfOneLagIsThatLag) {
+    std::vector<double> t(1500), y(1500);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        t[k] = 1.098 + static_cast<double>(k);
+        y[k] = 500.0 + 0.25 * static_cast<double>((k * 7919) % 13);
+    }
+    BatteryOptions o;
+    o.channels = {true, false, false, false};
+    std::vector<Cell> layout;
+    compute_battery(t, {&y, nullptr, nullptr, nullptr}, o, &layout);
+    const auto find = [&](const std::string& key) {
+        const auto at = std::find_if(layout.begin(), layout.end(), [&](const Cell& c) { return c.cell == key; });
+        EXPECT_NE(at, layout.end()) << key;
+        return at == layout.end() ? std::string() : at->shown();
+    };
+    EXPECT_EQ(find("t=1.2e+03s..1.35e+03s"), "t=1201s..1350s");
+    EXPECT_EQ(find("t=1.1s..150s"), "t=1s..150s");
+    EXPECT_EQ(find("lag=1s..1s"), "lag=1s");
+    EXPECT_EQ(find("lag=32s..63s"), "lag=32s..63s");
+    EXPECT_EQ(find("tau=64s"), "tau=64s");
+    EXPECT_EQ(find("kurtosis"), "kurtosis");  // no number: the key as it is
+    for (const Cell& c : layout) EXPECT_EQ(c.shown().find("e+"), std::string::npos) << c.cell << " shown as " << c.shown();
+}
+
+// A log or model file named as one of the report's files would be written over: report_files() lists them all.
+TEST(GapReport, TheReportsFilesAreListedWhicheverChannelsItPlots) {
+    const std::vector<std::string> files = report_files("rep");
+    for (const std::string expected : {"rep/gap.md", "rep/gap_mean_gyro.png", "rep/gap_mean_gyro.dat", "rep/gap_adev_accel_z.png.gp",
+                                       "rep/gap_codes_accel_x.png"})
+        EXPECT_NE(std::find(files.begin(), files.end(), expected), files.end()) << expected;
+    EXPECT_EQ(std::find(files.begin(), files.end(), "rep/h.csv"), files.end());
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap
