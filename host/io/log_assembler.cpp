@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::io {
 namespace {
@@ -146,7 +147,7 @@ bool LogAssembler::settle_gap(const Stamped& evidence) {
     newest_sample_.reset();
     if (writer_) {
         writer_->write_gap("firmware restarted during the gap (uptime " +
-                           std::to_string(version_ ? static_cast<double>(uptime) / version_->tick_hz : 0.0) +
+                           format_double(version_ ? static_cast<double>(uptime) / version_->tick_hz : 0.0) +
                            " s); tick and seq continue after the last row");
     }
     return true;

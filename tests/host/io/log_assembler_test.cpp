@@ -272,6 +272,8 @@ TEST(LogAssembler, AFirmwareRestartedWhereTheOldCountWouldHaveWrappedIsARestart)
     EXPECT_EQ(stats.firmware_restarts, 1u);
     ASSERT_EQ(log.gaps.size(), 2u);
     EXPECT_NE(log.gaps[1].text.find("firmware restarted"), std::string::npos) << log.gaps[1].text;
+    // 1 s since the reboot when the STATUS left, 0.4 ms into the handshake: the shortest text, not "1.000400".
+    EXPECT_NE(log.gaps[1].text.find("(uptime 1.0004 s)"), std::string::npos) << log.gaps[1].text;
     ASSERT_EQ(log.size(), 5u);
     EXPECT_GT(log.t_s[3], log.t_s[2]);
 }
