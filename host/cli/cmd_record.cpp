@@ -35,6 +35,7 @@ struct RecordCliOptions {
     std::string output;
     std::string capture;
     bool quiet = false;
+    bool overwrite = false;
 };
 
 void run_record(const RecordCliOptions& o) {
@@ -45,6 +46,7 @@ void run_record(const RecordCliOptions& o) {
     r.log_path = o.output;
     r.capture_path = o.capture;
     r.recorder_name = "driftlab 0.1.0";
+    r.overwrite = o.overwrite;
     const bool stream = o.stream_s > 0.0;
     r.config.output_period_ms = output_period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1),
                                                  stream ? "--stream" : "--poll");
@@ -118,6 +120,7 @@ void register_record(CLI::App& app) {
     cmd->add_option("-o,--output", o->output, "Log file (canonical CSV)")->required();
     cmd->add_option("--capture", o->capture, "Raw capture file (default: LOG.cap beside the log)");
     cmd->add_flag("-q,--quiet", o->quiet, "No live status line");
+    cmd->add_flag("--overwrite", o->overwrite, "Replace a log or capture already there (refused otherwise)");
     cmd->callback([o] { run_record(*o); });
 }
 

@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <system_error>
 #include <thread>
+#include <utility>
 
 #include "host/io/board_client.hpp"
 #include "host/io/capture.hpp"
@@ -61,6 +63,13 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     const std::string capture_path = options.capture_path.empty() ? options.log_path + ".cap" : options.capture_path;
     // Before the port: opening it resets an Arduino, and a missing folder had been found only then (the capture's)
     // or after the handshake (the log's, with the capture left behind). Folders are made as `hil` makes its own.
+    // An hour's recording is not made again by running the command once more from the shell's history.
+    for (const auto& [path, what] : {std::pair{options.log_path, "log"}, std::pair{capture_path, "capture"}}) {
+        std::error_code ec;
+        if (!options.overwrite && std::filesystem::exists(path, ec))
+            throw UsageError(path + ": a " + what + " is already there; name another " +
+                             (std::string(what) == "capture" ? "--capture" : "-o") + ", or pass --overwrite to replace it");
+    }
     make_folder_of(options.log_path, "log");
     make_folder_of(capture_path, "capture");
     check_output_file(options.log_path, "log");

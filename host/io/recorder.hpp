@@ -26,6 +26,7 @@ struct RecordOptions {
     std::string capture_path;        ///< default: log_path + ".cap"
     int reconnect_max_backoff_ms = 4000;  ///< [ms] longest wait between reopen attempts
     std::string recorder_name = "driftlab";
+    bool overwrite = false;          ///< replace a log or capture already there (else refused)
 };
 
 /// How the session went, for the final message.

@@ -80,6 +80,34 @@ TEST(RecordErrors, AnOutputFolderThatCannotBeMadeIsNamedBeforeThePort) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("rec.csv")));
 }
 
+// An earlier recording is not replaced by running the command again (an hour's log and its capture had been
+// truncated without a word): refused before the port, exit 2, both files kept; --overwrite lets the run go on (to
+// the missing port here).
+TEST(RecordErrors, AnEarlierRecordingIsKeptUnlessOverwriteIsGiven) {
+    TempDir dir("earlier");
+    const std::string port = dir.file("ttyNONE");
+    const std::string log = dir.file("run.csv");
+    std::ofstream(log) << "an hour of rows\n";
+    const RunResult again = run_driftlab({"record", "--port", port, "-o", log}, dir.path());
+    EXPECT_EQ(again.exit_code, 2) << again.output;
+    EXPECT_NE(again.output.find(log + ": a log is already there; name another -o, or pass --overwrite"), std::string::npos)
+        << again.output;
+    EXPECT_EQ(read_text(log), "an hour of rows\n");
+
+    const std::string other = dir.file("other.csv");
+    std::ofstream(other + ".cap") << "its capture\n";
+    const RunResult capture = run_driftlab({"record", "--port", port, "-o", other}, dir.path());
+    EXPECT_EQ(capture.exit_code, 2) << capture.output;
+    EXPECT_NE(capture.output.find(other + ".cap: a capture is already there; name another --capture"), std::string::npos)
+        << capture.output;
+    EXPECT_FALSE(std::filesystem::exists(other));
+    EXPECT_EQ(read_text(other + ".cap"), "its capture\n");
+
+    const RunResult overwrite = run_driftlab({"record", "--port", port, "-o", log, "--overwrite"}, dir.path());
+    EXPECT_EQ(overwrite.exit_code, kDeviceErrorExit) << overwrite.output;
+    EXPECT_NE(overwrite.output.find(port + ": cannot open"), std::string::npos) << overwrite.output;
+}
+
 // A configuration the firmware would refuse, or a period that is not one, is the command line's fault and is
 // refused before the port is opened (a missing port here would otherwise give exit 4): --stream -1 had recorded in
 // poll mode at 0.1 s, 0.0105 had been rounded to 10 ms, and 10 ms with 25 conversions had come back from the board
