@@ -95,7 +95,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     if (out.fit.status == FitStatus::iteration_limit)
         out.warnings.push_back("fit stopped at the evaluation limit (" + std::to_string(out.fit.function_evaluations) +
                                "); parameters are the last iterate");
-    out.t_beyond_record = out.fit.start.t_at_upper_end || out.fit.parameters.t_s > 3.0 * out.data.t_s.back();
+    out.t_beyond_record = out.fit.start.t_at_upper_end || beyond_record(out.fit.parameters.t_s, out.data.t_s.back());
     out.t_below_sampling = out.fit.start.t_at_lower_end || out.fit.parameters.t_s < out.sample_period_s;
     if (out.t_beyond_record)
         out.warnings.push_back("T (" + to_precision_of(out.plain.t_s.value, out.plain.t_s.stderr_) +

@@ -46,6 +46,11 @@ struct DriftAnalysis {
     std::string undetermined_reason() const;
 };
 
+/// Whether a time constant is too long for a record ending at `record_end_s` [s since power-on] to tell an
+/// exponential's size from its time constant: it is then nearly a straight slope over the record, of which only the
+/// ratio (the initial slope) is seen. Eq. 1's T here, and the gap diagnosis's second time constant.
+constexpr bool beyond_record(double time_constant_s, double record_end_s) { return time_constant_s > 3.0 * record_end_s; }
+
 /// Runs the analysis. Throws DataError (naming the file and series) when fewer than kMinAnalysisSamples
 /// samples are in range or the series is constant.
 DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options = {});

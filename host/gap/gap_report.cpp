@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "host/fit/drift_analysis.hpp"
 #include "host/fit/lm_fit.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/replicates.hpp"
@@ -193,9 +194,23 @@ std::string given_effects_sentence(const GivenEffects& given) {
     return out;
 }
 
-std::string estimate_text(const Explanation& e) {
-    if (e.whole_log_params.empty()) return parameter_list(e.params);
-    return parameter_list(e.whole_log_params) + " (whole log; fitting part: " + parameter_list(e.params) + ")";
+std::string estimate_text(const Explanation& e, double record_end_s) {
+    std::string text = parameter_list(e.estimate());
+    if (!e.whole_log_params.empty()) text += " (whole log; fitting part: " + parameter_list(e.params) + ")";
+    // A size the whole log sets to almost nothing (a walk beside a process that takes it all) is no estimate to copy.
+    if (!e.whole_log_params.empty() && !e.params.empty() && e.params[0].second != 0.0 &&
+        std::abs(e.whole_log_params[0].second) < 0.01 * std::abs(e.params[0].second))
+        text += "; on the whole log, beside the other effects, its " + e.whole_log_params[0].first +
+                " is under 1 % of the fitting part's: there the others take all of it";
+    // A copied t2 of five times the log would pass for a measured one (the search's longest time constant).
+    if (e.effect == "thermal_second_tc" && e.estimate().size() == 2 && fit::beyond_record(e.estimate()[1].second, record_end_s)) {
+        const auto& [size_key, size] = e.estimate()[0];
+        const double t2 = e.estimate()[1].second;
+        text += "; t2 is beyond 3x the log's " + fixed_point(record_end_s, 0) + " s, so within it the exponential is a straight slope: "
+                "the log tells its initial slope, " + significant(size / t2, 2) + (size_key == "c3_dps" ? " deg/s" : " g") +
+                " per s, not c3 and t2 apart";
+    }
+    return text;
 }
 
 std::string constant_channels_sentence(const GapResult& r) {
@@ -319,7 +334,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
               "|---|---|---|---|---|---|---|---|\n";
         for (const auto& e : r.accepted)
             md << "| " << e.step << " | " << e.effect << (e.replaces_given ? " (in place of the model's)" : "") << " | " << e.channel
-               << " | " << estimate_text(e) << " | " << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | "
+               << " | " << estimate_text(e, log.t_s.back()) << " | " << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | "
                << fixed(100 * e.heldout_shrink, 0) << " % | " << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
         md << "\n";
     }

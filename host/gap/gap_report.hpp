@@ -25,8 +25,9 @@ std::string verdict_reason(const GapResult& result, const GapOptions& options);
 std::string given_effects_sentence(const GivenEffects& given);
 
 /// An added effect's parameters: "k=v ..." as estimated on the whole log, then "(whole log; fitting part: k=v ...)"
-/// with those the held-out part judged; the fitting part's alone where nothing was estimated again.
-std::string estimate_text(const Explanation& e);
+/// with those the held-out part judged; the fitting part's alone where nothing was estimated again. A second time
+/// constant beyond the record (ending at `record_end_s`) is said to be one, with the slope the log does tell.
+std::string estimate_text(const Explanation& e, double record_end_s);
 
 /// The recorded channels left out because they never change, and why that matters; "" when there are none.
 std::string constant_channels_sentence(const GapResult& result);

@@ -56,6 +56,37 @@ TEST(GapReport, TheCandidateTableListsTheAddedInStepOrderThenTheOthersByStep) {
 }
 
 // "ratio 173.285 [27.075, 1109.073]": three decimals whatever the interval. The digits now follow the interval.
+// A second time constant at five times the log (the search's longest) is no measurement: the text says so and gives
+// the slope c3/t2 the log does tell; one within three times the log is shown as it is (the rule fit's T follows).
+TEST(GapReport, ASecondTimeConstantBeyondTheRecordIsSaidToBeOneWithItsSlope) {
+    Explanation e;
+    e.effect = "thermal_second_tc";
+    e.params = {{"c3_dps", -0.22}, {"t2_s", 7500.0}};
+    e.whole_log_params = {{"c3_dps", -0.075}, {"t2_s", 7500.0}};
+    const std::string beyond = estimate_text(e, 1500.0);
+    EXPECT_NE(beyond.find("c3_dps=-0.075 t2_s=7500 (whole log; fitting part: c3_dps=-0.22 t2_s=7500)"), std::string::npos) << beyond;
+    EXPECT_NE(beyond.find("t2 is beyond 3x the log's 1500 s"), std::string::npos) << beyond;
+    EXPECT_NE(beyond.find("initial slope, -1e-05 deg/s per s"), std::string::npos) << beyond;  // -0.075 / 7500
+    e.whole_log_params = {{"c3_dps", -0.075}, {"t2_s", 4000.0}};
+    EXPECT_EQ(estimate_text(e, 1500.0).find("beyond"), std::string::npos) << estimate_text(e, 1500.0);
+    e.effect = "gauss_markov";
+    e.whole_log_params = {{"sigma_dps", 0.02}, {"tau_s", 9000.0}};
+    EXPECT_EQ(estimate_text(e, 1500.0).find("beyond"), std::string::npos);
+}
+
+// The whole-log estimate can give a process none of the signal beside the others (a walk of 3.8e-10 deg/s/sqrt(s)
+// where the fitting part had 4.5e-4): said, since it is no size to copy into a model.
+TEST(GapReport, ASizeTheWholeLogSetsToNearlyNothingIsSaidToBeSo) {
+    Explanation e;
+    e.effect = "rate_random_walk";
+    e.params = {{"k_dps_per_sqrt_s", 4.543e-4}};
+    e.whole_log_params = {{"k_dps_per_sqrt_s", 3.804e-10}};
+    EXPECT_NE(estimate_text(e, 1500.0).find("its k_dps_per_sqrt_s is under 1 % of the fitting part's"), std::string::npos)
+        << estimate_text(e, 1500.0);
+    e.whole_log_params = {{"k_dps_per_sqrt_s", 2e-4}};
+    EXPECT_EQ(estimate_text(e, 1500.0).find("under 1 %"), std::string::npos) << estimate_text(e, 1500.0);
+}
+
 TEST(GapReport, ALocatedCellShowsTheDigitsItsIntervalWarrants) {
     LocatedCell wide;
     wide.ratio = 173.285, wide.interval_low = 27.075, wide.interval_high = 1109.073;
