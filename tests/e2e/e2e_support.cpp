@@ -23,6 +23,13 @@ std::uint16_t synthetic_code(Channel c, std::uint64_t tick) {
     return static_cast<std::uint16_t>(500 + static_cast<int>(rise) + noise);
 }
 
+host::io::PtyBoardOptions paced_board(double speed, double duration_s) {
+    host::io::PtyBoardOptions options;
+    options.speed = speed;
+    options.duration_s = duration_s;
+    return options;
+}
+
 BoardThread::BoardThread(host::io::PtyBoardOptions options) : options_(std::move(options)) {
     thread_ = std::thread([this] {
         summary_ = host::io::serve_pty_board(options_, synthetic_code, stop_, [this](const std::string& p) {

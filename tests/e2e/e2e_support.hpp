@@ -19,6 +19,9 @@ namespace driftlab::e2e {
 /// A deterministic sensor: mid-scale plus a slow rise and +-2 counts of hashed noise, per channel.
 std::uint16_t synthetic_code(Channel c, std::uint64_t tick);
 
+/// A board's options paced at `speed` times the wall clock, for `duration_s` of board time.
+host::io::PtyBoardOptions paced_board(double speed, double duration_s);
+
 /// A board served on a pseudo-terminal from a thread until destroyed (or its duration ends).
 class BoardThread {
 public:

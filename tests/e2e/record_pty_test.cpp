@@ -46,11 +46,9 @@ void expect_rows_in_truth(const host::LogData& log, const host::LogData& truth) 
 
 TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog) {
     TempDir dir("stream60");
-    host::io::PtyBoardOptions board_opts;
     // 4x the wall clock: faster pacing lets a busy machine (ctest -j) leave the recorder unscheduled long enough
     // for the pseudo-terminal's buffer to fill, and the board then drops bytes as a real UART would.
-    board_opts.speed = 4.0;
-    board_opts.duration_s = 90.0;
+    host::io::PtyBoardOptions board_opts = paced_board(4.0, 90.0);
     board_opts.truth_log = dir.file("truth.csv");
     BoardThread board(board_opts);
     const std::string log = dir.file("rec.csv");
@@ -115,9 +113,7 @@ TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog
 
 TEST(RecordPty, PolledRecordingHoldsExactlyTheAnswersTheBoardSent) {
     TempDir dir("poll");
-    host::io::PtyBoardOptions board_opts;
-    board_opts.speed = 1.0;
-    board_opts.duration_s = 30.0;
+    host::io::PtyBoardOptions board_opts = paced_board(1.0, 30.0);
     board_opts.truth_log = dir.file("truth.csv");
     BoardThread board(board_opts);
     const std::string log = dir.file("rec.csv");
@@ -143,9 +139,7 @@ TEST(RecordPty, PolledRecordingHoldsExactlyTheAnswersTheBoardSent) {
 
 TEST(RecordPty, SigkillLeavesAReadableLogAndTheCaptureRebuildsEveryCompleteLine) {
     TempDir dir("kill");
-    host::io::PtyBoardOptions board_opts;
-    board_opts.speed = 10.0;
-    board_opts.duration_s = 600.0;
+    host::io::PtyBoardOptions board_opts = paced_board(10.0, 600.0);
     BoardThread board(board_opts);
     const std::string log = dir.file("rec.csv");
     const pid_t pid = spawn_driftlab({"record", "--port", board.path(), "--stream", "0.02", "-o", log},
@@ -181,9 +175,7 @@ TEST(RecordPty, SigkillLeavesAReadableLogAndTheCaptureRebuildsEveryCompleteLine)
 // must reconnect, record the loss as a gap and lose nothing else (docs/recording.md "Durability").
 TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     TempDir dir("unplug");
-    host::io::PtyBoardOptions board_opts;
-    board_opts.speed = 4.0;
-    board_opts.duration_s = 120.0;
+    host::io::PtyBoardOptions board_opts = paced_board(4.0, 120.0);
     board_opts.link_path = dir.file("board-link");
     board_opts.truth_log = dir.file("truth.csv");
     board_opts.unplugs = {{6.0, 6.0}};
@@ -223,9 +215,7 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
 // loss). The recorder runs in this process, to see every call.
 TEST(RecordPty, TheStatusKeepsItsCadenceWhileThePortIsAway) {
     TempDir dir("lostcadence");
-    host::io::PtyBoardOptions board_opts;
-    board_opts.speed = 4.0;
-    board_opts.duration_s = 120.0;
+    host::io::PtyBoardOptions board_opts = paced_board(4.0, 120.0);
     board_opts.link_path = dir.file("board-link");
     board_opts.unplugs = {{4.0, 12.0}};  // 3 s of wall time: reopen attempts 0.25, 0.75, 1.75 and 3.75 s after
     BoardThread board(board_opts);
@@ -272,9 +262,7 @@ TEST(RecordPty, TheStatusKeepsItsCadenceWhileThePortIsAway) {
 // the handshake, leaving the capture behind.
 TEST(RecordPty, MissingFoldersOfTheLogAndTheCaptureAreMade) {
     TempDir dir("folders");
-    host::io::PtyBoardOptions board_opts;
-    board_opts.speed = 4.0;
-    board_opts.duration_s = 60.0;
+    host::io::PtyBoardOptions board_opts = paced_board(4.0, 60.0);
     BoardThread board(board_opts);
     const std::string log = dir.file("new/sub/rec.csv");
     const std::string capture = dir.file("captures/rec.cap");
