@@ -31,6 +31,7 @@
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/time_left.hpp"
 #include "sim/model/model_file.hpp"
 
 namespace driftlab::host::cli {
@@ -275,8 +276,7 @@ void run(const GapCommandOptions& o) {
     const auto started = std::chrono::steady_clock::now();
     if (tty)
         options.progress = [started](const std::string& stage) {
-            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-            std::fprintf(stderr, "\r\033[Kgap: %.0f s, %s", s, stage.c_str());
+            std::fprintf(stderr, "\r\033[Kgap: %.0f s, %s", seconds_since(started), stage.c_str());
         };
     options.channels = channels_named(o);
     const gap::GapResult r = gap::diagnose(log, unit, options);

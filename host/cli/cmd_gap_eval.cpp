@@ -114,9 +114,8 @@ void run(const GapEvalCommandOptions& o) {
         if (!tty) return {};
         const auto started = std::chrono::steady_clock::now();
         return [what, started](std::size_t done, std::size_t total) {
-            const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             const double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
-            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu  %s\033[K", what, done, total, time_left(fraction, elapsed_s).c_str());
+            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu  %s\033[K", what, done, total, time_left(fraction, seconds_since(started)).c_str());
             if (done == total) std::fprintf(stderr, "\n");
         };
     };

@@ -155,10 +155,9 @@ std::function<void(double)> progress_bar() {
     return [started](double fraction) {
         const int width = 40;
         const int filled = static_cast<int>(fraction * width);
-        const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         std::fprintf(stderr, "\r[%s%s] %3d%%  %s\033[K", std::string(filled, '#').c_str(),
                      std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100.0),
-                     time_left(fraction, elapsed_s).c_str());
+                     time_left(fraction, seconds_since(started)).c_str());
         if (fraction >= 1.0) std::fprintf(stderr, "\n");
     };
 }
@@ -312,7 +311,7 @@ void run_hil_command(const HilCliOptions& o) {
 #endif
     const auto wall0 = std::chrono::steady_clock::now();
     const sim::HilSummary s = run_board(h, [&log](const sim::HilRecord& r) { log.write(r); });
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    const double wall_s = seconds_since(wall0);
     log.close();
     if (s.interrupted && h.progress) std::fprintf(stderr, "\n");
     const std::string interrupted =

@@ -18,6 +18,7 @@
 #include "host/util/error.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/time_left.hpp"
 
 namespace driftlab::host::io {
 namespace {
@@ -28,8 +29,6 @@ constexpr auto kFlushInterval = std::chrono::milliseconds(1000);
 constexpr auto kProgressInterval = std::chrono::milliseconds(250);
 constexpr int kFirstBackoffMs = 250;
 constexpr int kStreamPumpMs = 50;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Handshake and configuration on an open link; empty string when the board is ready, else the problem.
 std::string bring_up(BoardClient& client, const proto::ConfigPayload& config) {

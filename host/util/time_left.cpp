@@ -6,6 +6,10 @@
 
 namespace driftlab::host {
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string format_duration(double seconds) {
     char text[64];
     const long long s = std::llround(std::fmax(seconds, 0.0));

@@ -1,9 +1,13 @@
 // Elapsed and remaining time of a long run, as text for its progress line.
 #pragma once
 
+#include <chrono>
 #include <string>
 
 namespace driftlab::host {
+
+/// Seconds of the steady clock since `start`: a run's elapsed wall time.
+double seconds_since(std::chrono::steady_clock::time_point start);
 
 /// `seconds` as a person reads a duration: "45 s", "2 min 05 s", "1 h 05 min" (rounded to the unit shown last).
 std::string format_duration(double seconds);

@@ -1,12 +1,19 @@
 // Progress-line durations: the units a person reads, and the pace-so-far extrapolation.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "host/util/time_left.hpp"
 
 namespace driftlab::host {
 namespace {
+
+TEST(SecondsSince, AStartTwoSecondsAgoIsTwoSecondsAgo) {
+    const double s = seconds_since(std::chrono::steady_clock::now() - std::chrono::seconds(2));
+    EXPECT_GE(s, 2.0);
+    EXPECT_LT(s, 60.0);  // however loaded the machine
+}
 
 TEST(FormatDuration, SecondsMinutesAndHoursRoundToTheLastUnitShown) {
     EXPECT_EQ(format_duration(0.0), "0 s");
