@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -47,10 +46,9 @@ struct UnitInfo {
 };
 
 UnitInfo unit_of_channel(Channel c) {
-    if (c == Channel::gyro) {
-        return {"counts", stats::RateQuantity::angular_rate, kGyroDpsPerCount * std::numbers::pi / 180.0};
-    }
-    return {"counts", stats::RateQuantity::acceleration, kAccelMmps2PerCount / 1000.0};
+    const PhysicalUnit physical = physical_unit(c);
+    const auto unit = stats::rate_unit(physical.name);  // deg/s or mm/s^2, both in the table (test RateUnit.*)
+    return {"counts", unit->quantity, physical.per_count * unit->si_per_unit};
 }
 
 UnitInfo unit_of_name(const std::string& name) {
@@ -297,7 +295,7 @@ void register_allan(CLI::App& app) {
                     "Sample period [s]; required for plain files, logs default to the rows' median spacing (their "
                     "mean for rows in bursts, as report)")
         ->check(positive_number());
-    cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, dps, mdps, deg/h, rad/s, g, mg, m/s^2, cm/s^2, or any name: then no physical terms)");
+    cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, dps, mdps, deg/h, rad/s, g, mg, m/s^2, cm/s^2, mm/s^2, or any name: then no physical terms)");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
     cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->capture_default_str()->check(positive_number());
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")->capture_default_str();

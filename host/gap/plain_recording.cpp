@@ -47,7 +47,7 @@ ColumnMapping parse_column_mapping(const std::string& text) {
             throw UsageError("--as: unknown unit '" + last + "' for " + channel + " (" + stats::rate_unit_names(quantity) +
                              ") in '" + text + "'");
         // The simulator's unit of the channel: deg/s, g.
-        m.to_model_unit = unit->si_per_unit / (gyro ? stats::rate_unit("deg/s")->si_per_unit : stats::kStandardGravity);
+        m.to_model_unit = unit->si_per_unit / stats::rate_unit(gyro ? "deg/s" : "g")->si_per_unit;
         const auto previous = text.rfind(':', colon - 1);
         if (previous == std::string::npos || previous < eq)
             throw UsageError("--as: expected CHANNEL=COLUMN:LSB:UNIT, got '" + text + "'");

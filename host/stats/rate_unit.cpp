@@ -16,7 +16,7 @@ struct Entry {
 };
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr std::array<Entry, 11> kUnits{{
+constexpr std::array<Entry, 13> kUnits{{
     {"deg/s", "deg/s", RateQuantity::angular_rate, kDeg},
     {"dps", "deg/s", RateQuantity::angular_rate, kDeg},
     {"mdps", "mdps", RateQuantity::angular_rate, kDeg * 1e-3},
@@ -28,6 +28,8 @@ constexpr std::array<Entry, 11> kUnits{{
     {"m/s2", "m/s^2", RateQuantity::acceleration, 1.0},
     {"cm/s^2", "cm/s^2", RateQuantity::acceleration, 0.01},
     {"cm/s2", "cm/s^2", RateQuantity::acceleration, 0.01},
+    {"mm/s^2", "mm/s^2", RateQuantity::acceleration, 1e-3},
+    {"mm/s2", "mm/s^2", RateQuantity::acceleration, 1e-3},
 }};
 
 }  // namespace

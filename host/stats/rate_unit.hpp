@@ -16,7 +16,8 @@ struct RateUnit {
     double si_per_unit;      ///< rad/s or m/s^2 per unit
 };
 
-/// The unit `name` stands for (deg/s, dps, mdps, deg/h, rad/s; g, mg, m/s^2, m/s2, cm/s^2, cm/s2); none when unknown.
+/// The unit `name` stands for (deg/s, dps, mdps, deg/h, rad/s; g, mg, m/s^2, m/s2, cm/s^2,
+/// cm/s2, mm/s^2, mm/s2: the physical units of host/util/units.hpp among them); none when unknown.
 std::optional<RateUnit> rate_unit(std::string_view name);
 
 /// The spellings rate_unit() knows for `quantity`, comma-separated, for a message.

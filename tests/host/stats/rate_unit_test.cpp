@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "host/util/units.hpp"
+
 namespace driftlab::host::stats {
 namespace {
 
@@ -27,7 +29,9 @@ TEST(RateUnit, EachSpellingIsItsDefinitionInSI) {
                           Case{"m/s^2", "m/s^2", RateQuantity::acceleration, 1.0},
                           Case{"m/s2", "m/s^2", RateQuantity::acceleration, 1.0},
                           Case{"cm/s^2", "cm/s^2", RateQuantity::acceleration, 0.01},
-                          Case{"cm/s2", "cm/s^2", RateQuantity::acceleration, 0.01}}) {
+                          Case{"cm/s2", "cm/s^2", RateQuantity::acceleration, 0.01},
+                          Case{"mm/s^2", "mm/s^2", RateQuantity::acceleration, 0.001},
+                          Case{"mm/s2", "mm/s^2", RateQuantity::acceleration, 0.001}}) {
         const auto u = rate_unit(c.spelling);
         ASSERT_TRUE(u) << c.spelling;
         EXPECT_EQ(u->name, c.name) << c.spelling;
@@ -37,9 +41,18 @@ TEST(RateUnit, EachSpellingIsItsDefinitionInSI) {
     for (const char* unknown : {"", "furlongs", "DEG/S", "m/s", "deg"}) EXPECT_FALSE(rate_unit(unknown)) << unknown;
 }
 
+// allan converts a log channel's terms to SI through the table, by the name of its physical unit.
+TEST(RateUnit, EachChannelsPhysicalUnitIsInTheTable) {
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        const auto u = rate_unit(physical_unit(static_cast<Channel>(c)).name);
+        ASSERT_TRUE(u) << kChannelNames[c];
+        EXPECT_EQ(u->quantity, c == 0 ? RateQuantity::angular_rate : RateQuantity::acceleration) << kChannelNames[c];
+    }
+}
+
 TEST(RateUnit, AMessageListsTheSpellingsOfOneQuantity) {
     EXPECT_EQ(rate_unit_names(RateQuantity::angular_rate), "deg/s, dps, mdps, deg/h, rad/s");
-    EXPECT_EQ(rate_unit_names(RateQuantity::acceleration), "g, mg, m/s^2, m/s2, cm/s^2, cm/s2");
+    EXPECT_EQ(rate_unit_names(RateQuantity::acceleration), "g, mg, m/s^2, m/s2, cm/s^2, cm/s2, mm/s^2, mm/s2");
     EXPECT_EQ(rate_unit_names(RateQuantity::unknown), "");
 }
 
