@@ -10,7 +10,7 @@
 #include <sstream>
 #include <system_error>
 #include <thread>
-#include <utility>
+#include <tuple>
 
 #include "host/io/board_client.hpp"
 #include "host/io/capture.hpp"
@@ -63,11 +63,12 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     // Before the port: opening it resets an Arduino, and a missing folder had been found only then (the capture's)
     // or after the handshake (the log's, with the capture left behind). Folders are made as `hil` makes its own.
     // An hour's recording is not made again by running the command once more from the shell's history.
-    for (const auto& [path, what] : {std::pair{options.log_path, "log"}, std::pair{capture_path, "capture"}}) {
+    for (const auto& [path, what, option] :
+         {std::tuple{options.log_path, "log", "-o"}, std::tuple{capture_path, "capture", "--capture"}}) {
         std::error_code ec;
         if (!options.overwrite && std::filesystem::exists(path, ec))
-            throw UsageError(path + ": a " + what + " is already there; name another " +
-                             (std::string(what) == "capture" ? "--capture" : "-o") + ", or pass --overwrite to replace it");
+            throw UsageError(path + ": a " + what + " is already there; name another " + option +
+                             ", or pass --overwrite to replace it");
     }
     make_folder_of(options.log_path, "log");
     make_folder_of(capture_path, "capture");
