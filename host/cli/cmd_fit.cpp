@@ -99,32 +99,28 @@ void print_table(const fit::FileAnalysis& file) {
         std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << fixed_point(a.data.t_s.front(), 3) << " .. "
                   << fixed_point(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
                   << ")\n";
-        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w, bool determined) {
+        // `per` follows the value (its unit), `note` the intervals.
+        const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w, bool determined,
+                             const char* per = "", const char* note = "") {
             std::cout << "  " << name << " = ";
             if (!determined) {
                 std::cout << kNotDetermined << " (the fit's value is in --json)\n";
                 return;
             }
-            std::cout << fit::with_error(p);
+            std::cout << fit::with_error(p) << per;
             if (std::isfinite(p.stderr_)) {
                 std::cout << "  95 % " << interval(p, p.ci95);
                 if (!a.whiteness.white) std::cout << "  widened " << interval(p, w.ci95);
             }
-            std::cout << "\n";
+            std::cout << note << "\n";
         };
         row("C1", a.plain.c1, a.widened.c1, a.c1_and_t_determined());
         row("C2", a.plain.c2, a.widened.c2, a.c2_determined());
         row("T ", a.plain.t_s, a.widened.t_s, a.c1_and_t_determined());
         // What a record far shorter than T does determine (JSON initial_slope), where C1 and T are not.
-        if (a.t_beyond_record) {
-            std::cout << "  C1/T = " << fit::with_error(a.plain.initial_slope) << " per s";
-            if (std::isfinite(a.plain.initial_slope.stderr_)) {
-                std::cout << "  95 % " << interval(a.plain.initial_slope, a.plain.initial_slope.ci95);
-                if (!a.whiteness.white)
-                    std::cout << "  widened " << interval(a.plain.initial_slope, a.widened.initial_slope.ci95);
-            }
-            std::cout << "  (initial slope, the drift rate at power-on)\n";
-        }
+        if (a.t_beyond_record)
+            row("C1/T", a.plain.initial_slope, a.widened.initial_slope, true, " per s",
+                "  (initial slope, the drift rate at power-on)");
         const auto& w = a.whiteness;
         std::cout << "  whiteness: " << fixed_point(100.0 * w.fraction_inside, 1) << " % of lags inside +-2 sigma ("
                   << w.sequences_used << " sequences of " << fixed_point(w.sequence_length_s, 1) << " s), Ljung-Box Q("
