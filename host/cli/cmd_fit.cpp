@@ -34,8 +34,6 @@ std::string interval(const fit::Estimate& e, const std::array<double, 2>& ci) {
     return "[" + at_precision(e, ci[0]) + ", " + at_precision(e, ci[1]) + "]";
 }
 
-constexpr const char* kNotDetermined = "not determined";
-
 /// Rows of cells in columns as wide as their widest cell: a value such as -6.92737e+11 or the status
 /// iteration_limit had pushed the rest of its row out of line under fixed widths. A row of two cells (a series
 /// that failed) keeps its second cell whole, beside the first column.
@@ -73,8 +71,8 @@ void print_table(const fit::FileAnalysis& file) {
         }
         const fit::DriftAnalysis& a = *s.analysis;
         const bool c1_t = a.c1_and_t_determined(), c2_known = a.c2_determined();
-        std::string c1 = c1_t ? at_precision(a.plain.c1, a.plain.c1.value) : kNotDetermined;
-        std::string c2 = c2_known ? at_precision(a.plain.c2, a.plain.c2.value) : kNotDetermined;
+        std::string c1 = c1_t ? at_precision(a.plain.c1, a.plain.c1.value) : fit::kNotDetermined;
+        std::string c2 = c2_known ? at_precision(a.plain.c2, a.plain.c2.value) : fit::kNotDetermined;
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string name = physical_unit(c).name;
@@ -85,10 +83,10 @@ void print_table(const fit::FileAnalysis& file) {
             if (c1_t) c1 += " (" + physical(a.plain.c1, counts_to_physical(c, a.plain.c1.value)) + " " + name + ")";
             if (c2_known) c2 += " (" + physical(a.plain.c2, level_to_physical(c, a.plain.c2.value)) + " " + name + ")";
         }
-        rows.push_back({s.name, c1, c2, c1_t ? at_precision(a.plain.t_s, a.plain.t_s.value) : kNotDetermined,
+        rows.push_back({s.name, c1, c2, c1_t ? at_precision(a.plain.t_s, a.plain.t_s.value) : fit::kNotDetermined,
                         fit::fit_status_name(a.fit.status), significant(a.fit.rms, 4),
                         a.whiteness.white ? "white" : "NOT white"});
-        if (!c1_t) undetermined.push_back(s.name + ": " + kNotDetermined + ": " + a.undetermined_reason());
+        if (!c1_t) undetermined.push_back(s.name + ": " + fit::kNotDetermined + ": " + a.undetermined_reason());
     }
     print_columns(rows);
     for (const auto& line : undetermined) std::cout << line << "\n";
@@ -104,7 +102,7 @@ void print_table(const fit::FileAnalysis& file) {
                              const char* per = "", const char* note = "") {
             std::cout << "  " << name << " = ";
             if (!determined) {
-                std::cout << kNotDetermined << " (the fit's value is in --json)\n";
+                std::cout << fit::kNotDetermined << " (the fit's value is in --json)\n";
                 return;
             }
             std::cout << fit::with_error(p) << per;

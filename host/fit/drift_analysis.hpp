@@ -46,6 +46,9 @@ struct DriftAnalysis {
     std::string undetermined_reason() const;
 };
 
+/// What `fit` and `report` show in place of a parameter the data do not determine (DriftAnalysis::c1_and_t_determined).
+inline constexpr const char* kNotDetermined = "not determined";
+
 /// Whether a time constant is too long for a record ending at `record_end_s` [s since power-on] to tell an
 /// exponential's size from its time constant: it is then nearly a straight slope over the record, of which only the
 /// ratio (the initial slope) is seen. Eq. 1's T here, and the gap diagnosis's second time constant.

@@ -53,8 +53,6 @@ struct Figures {
     }
 };
 
-constexpr const char* kNotDetermined = "not determined";
-
 std::string estimate_cell(const fit::Estimate& e, int digits) {
     return sig(e.value, digits) + " &plusmn; " + sig(e.stderr_, 2);
 }
@@ -93,8 +91,8 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
         const fit::DriftAnalysis& a = *s.analysis;
         // The fit's values of parameters the data do not determine are arbitrary (C1 = -6.9e11 counts on a warm log).
         const bool c1_t = a.c1_and_t_determined(), c2_known = a.c2_determined();
-        std::string c1 = c1_t ? sig(a.plain.c1.value, 5) : kNotDetermined;
-        std::string c2 = c2_known ? sig(a.plain.c2.value, 6) : kNotDetermined;
+        std::string c1 = c1_t ? sig(a.plain.c1.value, 5) : fit::kNotDetermined;
+        std::string c2 = c2_known ? sig(a.plain.c2.value, 6) : fit::kNotDetermined;
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string unit = physical_unit(c).name;
@@ -103,11 +101,11 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
             if (c2_known) c2 += " (" + sig(level_to_physical(c, a.plain.c2.value), 4) + " " + unit + " from mid-scale)";
         }
         h += "<tr><td>" + html_escape(s.name) + "</td><td>" + c1 + "</td><td>" + c2 + "</td><td>" +
-             (c1_t ? sig(a.plain.t_s.value, 5) : kNotDetermined) + "</td><td>" +
+             (c1_t ? sig(a.plain.t_s.value, 5) : fit::kNotDetermined) + "</td><td>" +
              html_escape(a.data.unit.empty() ? "-" : a.data.unit) + "</td><td>" + fit::fit_status_name(a.fit.status) +
              "</td><td>" + std::to_string(a.fit.n) + "</td><td>" + sig(a.fit.rms, 3) + "</td></tr>\n";
         if (!c1_t)
-            undetermined += "<p><b>" + html_escape(s.name) + ":</b> " + kNotDetermined + ": " +
+            undetermined += "<p><b>" + html_escape(s.name) + ":</b> " + fit::kNotDetermined + ": " +
                             html_escape(a.undetermined_reason()) + ".</p>\n";
     }
     h += "</table>\n" + undetermined;
@@ -123,7 +121,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
             h += "<tr><td>" + html_escape(a->data.name) + "</td><td>" + p + "</td>" +
                  (determined ? "<td>" + estimate_cell(e, 6) + "</td><td>" + ci_cell(e.ci95) + "</td><td>" +
                                    ci_cell(w.ci95) + "</td>"
-                             : "<td colspan=\"3\">" + std::string(kNotDetermined) + "</td>") +
+                             : "<td colspan=\"3\">" + std::string(fit::kNotDetermined) + "</td>") +
                  "</tr>\n";
         };
         row("C1", a->plain.c1, a->widened.c1, a->c1_and_t_determined());
