@@ -21,8 +21,13 @@ std::string without_negative_zero(const char* text) {
 }  // namespace
 
 void append_double(std::string& out, double value) {
-    char buf[32];
-    const auto result = std::to_chars(buf, buf + sizeof buf, value);
+    // The shortest text alone is scientific wherever that is shorter: a tick count of 5000000 read "5e+06" beside
+    // 5025000 on the next row, and 0.0001 read "1e-04". Fixed-point is kept where a reader expects it.
+    const double magnitude = std::fabs(value);
+    const bool fixed = magnitude >= 1e-4 && magnitude < 1e15;
+    char buf[48];
+    const auto result = fixed ? std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed)
+                              : std::to_chars(buf, buf + sizeof buf, value);
     out.append(buf, result.ptr);
 }
 

@@ -6,7 +6,8 @@
 
 namespace driftlab::host {
 
-/// Shortest decimal text that round-trips to exactly `value` (std::to_chars); "nan"/"inf" for non-finite.
+/// Shortest decimal text that round-trips to exactly `value` (std::to_chars): fixed-point for magnitudes from 1e-4
+/// to below 1e15 (5000000, 0.0001), else the shortest of either form (1e-05, 3e+205); "nan"/"inf" for non-finite.
 std::string format_double(double value);
 
 /// Appends format_double(value) to `out` without a temporary string.

@@ -11,8 +11,19 @@ namespace driftlab::host {
 namespace {
 
 TEST(FormatDouble, ParsesBackToTheSameDouble) {
-    for (double v : {0.1, -505.0834, 1e-300, 3.0e205, 2.0 / 3.0, std::nextafter(1.0, 2.0)})
+    for (double v : {0.1, -505.0834, 1e-300, 3.0e205, 2.0 / 3.0, std::nextafter(1.0, 2.0), 123456789012345.6,
+                     0.000123456789012345678, 5000000.0})
         EXPECT_EQ(std::stod(format_double(v)), v) << format_double(v);
+}
+
+// A tick count read "5e+06" beside 5025000 on the next row: integers and ordinary fractions are fixed-point.
+TEST(FormatDouble, OrdinaryMagnitudesAreFixedPointAndOthersShortest) {
+    EXPECT_EQ(format_double(5000000.0), "5000000");
+    EXPECT_EQ(format_double(0.0001), "0.0001");
+    EXPECT_EQ(format_double(-120000.5), "-120000.5");
+    EXPECT_EQ(format_double(0.0), "0");
+    EXPECT_EQ(format_double(1e-5), "1e-05");
+    EXPECT_EQ(format_double(1e15), "1e+15");
 }
 
 // The last digit sits at the uncertainty's second significant digit, whatever the magnitude: a table in g shows
