@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "host/io/capture.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -103,6 +104,10 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 
 bool is_canonical_log(const std::string& path) {
     std::ifstream in = open_input_file(path);
+    // Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number").
+    if (io::is_capture_file(path))
+        throw DataError(path, 1, "a raw capture from `driftlab record`, not a log: rebuild its log with `driftlab decode " +
+                                     path + " -o LOG.csv` and analyse that");
     return starts_as_log(in);
 }
 

@@ -41,6 +41,7 @@ std::vector<Series> load_series(const std::string& path, const std::vector<std::
 
 /// True when the file starts with `# driftlab-log:` (a canonical log rather than a plain table). Throws DataError
 /// naming the file when it cannot be opened, so that a missing file is not mistaken for a table missing its options.
+/// A raw capture is refused there too, naming `driftlab decode`.
 bool is_canonical_log(const std::string& path);
 
 }  // namespace driftlab::host::fit

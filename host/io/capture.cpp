@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <string_view>
 
 #include "host/log/log_metadata.hpp"
 #include "host/util/error.hpp"
@@ -26,6 +27,7 @@ bool known_kind(std::uint8_t kind) {
 }
 
 constexpr char kMagic[] = "driftlab-capture: 1";  // the format version is the magic line's number
+constexpr std::string_view kMagicKey = "driftlab-capture: ";
 
 void put_le(std::string& out, std::uint64_t v, int bytes) {
     for (int i = 0; i < bytes; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
@@ -98,9 +100,11 @@ CaptureReader::CaptureReader(const std::string& path) : path_(path) {
         pos_ = static_cast<std::size_t>(nl - data_.begin()) + 1;
         ++line;
         if (line == 1) {
-            if (text != kMagic) {
+            if (text.rfind(kMagicKey, 0) == 0 && text != kMagic)
+                throw DataError(path, 1, "capture format version '" + text.substr(kMagicKey.size()) +
+                                             "' is not supported (this reader knows 1)");
+            if (text != kMagic)
                 throw DataError(path, 1, "not a driftlab capture (expected '" + std::string(kMagic) + "')");
-            }
             continue;
         }
         if (text.empty()) {
@@ -196,6 +200,12 @@ std::optional<CaptureRecord> CaptureReader::next() {
     damaged_.push_back({pos_, resume - pos_});
     pos_ = resume;
     return next();
+}
+
+bool is_capture_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string first;
+    return std::getline(in, first) && first.rfind(kMagicKey, 0) == 0;
 }
 
 }  // namespace driftlab::host::io

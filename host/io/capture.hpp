@@ -103,4 +103,8 @@ private:
     std::vector<std::uint64_t> retimed_;
 };
 
+/// True when the file at `path` opens with a capture's magic line, of any format version: analysis commands name
+/// `decode` for it rather than failing on its header as a table's.
+bool is_capture_file(const std::string& path);
+
 }  // namespace driftlab::host::io

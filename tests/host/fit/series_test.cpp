@@ -3,6 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "host/io/capture.hpp"
+
 #include "host/log/numeric_table.hpp"
 #include "host/util/error.hpp"
 
@@ -21,6 +27,22 @@ TEST(Series, NamingTheTimeColumnIsRefused) {
     } catch (const UsageError& e) {
         EXPECT_NE(std::string(e.what()).find("'t_s' is the time column of table.txt"), std::string::npos) << e.what();
     }
+}
+
+// Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number"): every analysis
+// command now names `decode`, whose input it is.
+TEST(Series, ARawCaptureIsRefusedNamingDecode) {
+    const std::string path =
+        (std::filesystem::temp_directory_path() / ("driftlab_series_" + std::to_string(::getpid()) + ".cap")).string();
+    io::CaptureWriter(path, {{"port", "/dev/ttyUSB0"}}).write_event("start");
+    try {
+        load_series(path, {});
+        ADD_FAILURE() << "a capture was read as a table";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find(path + ":1: a raw capture"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("driftlab decode " + path), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(path);
 }
 
 }  // namespace

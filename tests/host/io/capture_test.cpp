@@ -95,6 +95,7 @@ TEST(Capture, NotACaptureIsADataErrorAndATailOfNoRecordIsDamage) {
     const std::string path = temp_file("bad.cap");
     std::ofstream(path) << "# driftlab-log: 1\n";
     EXPECT_THROW(CaptureReader{path}, DataError);
+    EXPECT_FALSE(is_capture_file(path));
     std::ofstream(path, std::ios::binary) << "driftlab-capture: 1\n\nX00000000000000";
     CaptureReader r(path);
     EXPECT_FALSE(r.next());
@@ -102,6 +103,16 @@ TEST(Capture, NotACaptureIsADataErrorAndATailOfNoRecordIsDamage) {
     ASSERT_EQ(r.damaged().size(), 1u);
     EXPECT_EQ(r.damaged()[0].offset, 21u);
     EXPECT_EQ(r.damaged()[0].bytes, 15u);
+    // A later format is named as such, as a log's version is, not as something else.
+    std::ofstream(path, std::ios::binary) << "driftlab-capture: 2\n\n";
+    EXPECT_TRUE(is_capture_file(path));
+    try {
+        CaptureReader{path};
+        ADD_FAILURE() << "format version 2 was read";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find(":1: capture format version '2' is not supported"), std::string::npos)
+            << e.what();
+    }
     // A damaged header key is the capture's fault, named by its line (it had surfaced as a usage error of the log).
     std::ofstream(path, std::ios::binary) << "driftlab-capture: 1\nport: /dev/ttyUSB0\nbAud: 9600\n\n";
     try {
