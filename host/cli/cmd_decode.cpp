@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "host/cli/commands.hpp"
 #include "host/io/capture.hpp"
@@ -11,6 +12,7 @@
 #include "host/io/status_line.hpp"
 #include "host/util/error.hpp"
 #include "host/util/output_file.hpp"
+#include "host/util/output_folder.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -18,6 +20,37 @@ namespace {
 struct DecodeOptions {
     std::string capture;
     std::string output;
+    bool overwrite = false;
+};
+
+/// Frames of the capture that failed their CRC check in each record, as "byte offset N" notes (a damaged copy of
+/// the file, or a noisy link the live log lost them to as well); the first few named, the rest counted.
+class CrcFailures {
+public:
+    void after_record(std::uint32_t bad_crc_so_far, std::uint64_t record_offset) {
+        if (bad_crc_so_far > seen_ && offsets_.size() < kNamed) {
+            offsets_.push_back(record_offset);
+            named_ = bad_crc_so_far;
+        }
+        seen_ = bad_crc_so_far;
+    }
+    void warn(const std::string& capture) const {
+        if (seen_ == 0) return;
+        std::string where;
+        for (const std::uint64_t o : offsets_) where += (where.empty() ? "" : ", ") + std::to_string(o);
+        const bool one = seen_ == 1;
+        std::fprintf(stderr, "driftlab: warning: %s: %u %s CRC check and %s as lost (in the %s at byte %s %s%s)\n",
+                     capture.c_str(), static_cast<unsigned>(seen_), one ? "frame failed its" : "frames failed their",
+                     one ? "counts" : "count", offsets_.size() == 1 ? "record" : "records",
+                     offsets_.size() == 1 ? "offset" : "offsets", where.c_str(),
+                     seen_ > named_ ? " and later ones" : "");
+    }
+
+private:
+    static constexpr std::size_t kNamed = 5;
+    std::uint32_t seen_ = 0;
+    std::uint32_t named_ = 0;  ///< of seen_, those in the records named
+    std::vector<std::uint64_t> offsets_;
 };
 
 /// True when `text` is "start" with one bit flipped.
@@ -60,11 +93,12 @@ std::optional<std::uint64_t> damaged_start(const std::string& capture) {
 /// Feeds every record of `reader` to `assembler`, the event at `rescued_start` read as the start; true when the
 /// log started.
 bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& assembler,
-          std::optional<std::uint64_t> rescued_start) {
+          std::optional<std::uint64_t> rescued_start, CrcFailures& crc_failures) {
     bool started = false;
     while (auto rec = reader.next()) {
         if (rec->kind == io::CaptureKind::rx) {
             assembler.on_rx(rec->t_us, rec->payload.data(), rec->payload.size());
+            crc_failures.after_record(assembler.decoder_counters().bad_crc, rec->offset);
         } else if (rec->kind == io::CaptureKind::event) {
             const bool rescued = rec->offset == rescued_start;
             if (rescued)
@@ -89,14 +123,20 @@ bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& a
 
 void run_decode(const DecodeOptions& o) {
     refuse_writing_over_input(o.output, "-o", o.capture, "capture");
+    // The recorded log usually sits beside its capture: `decode run.csv.cap -o run.csv` of a damaged capture had
+    // replaced an intact recording with fewer rows.
+    refuse_replacing(o.output, "log", "-o", o.overwrite);
     auto reader = std::make_unique<io::CaptureReader>(o.capture);
+    make_folder_of(o.output, "log");
     auto assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
-    bool started = feed(o, *reader, *assembler, std::nullopt);
+    auto crc_failures = std::make_unique<CrcFailures>();
+    bool started = feed(o, *reader, *assembler, std::nullopt, *crc_failures);
     // Only a capture without a start is read again, for a damaged one (the assembler wrote nothing without it).
     if (const auto rescued_start = started ? std::nullopt : damaged_start(o.capture)) {
         reader = std::make_unique<io::CaptureReader>(o.capture);
         assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
-        started = feed(o, *reader, *assembler, rescued_start);
+        crc_failures = std::make_unique<CrcFailures>();
+        started = feed(o, *reader, *assembler, rescued_start, *crc_failures);
     }
     if (!started) {
         throw DataError(o.capture, 0, "the capture holds no recording start (the recorder stopped during the "
@@ -112,17 +152,21 @@ void run_decode(const DecodeOptions& o) {
         std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: a record's time is damaged (it is after the next "
                              "record's); read at the previous record's time\n",
                      o.capture.c_str(), static_cast<unsigned long long>(offset));
+    crc_failures->warn(o.capture);
     if (reader->truncated_at()) {
         std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: last record cut (recorder killed while "
                              "writing); decoded up to it\n",
                      o.capture.c_str(), static_cast<unsigned long long>(*reader->truncated_at()));
     }
     const io::AssemblyStats& s = assembler->stats();
-    std::printf("decoded %llu rows to %s; frames %llu, lost %llu (%.3f %%), gaps %llu\n",
-                static_cast<unsigned long long>(s.rows), o.output.c_str(), static_cast<unsigned long long>(s.frames),
-                static_cast<unsigned long long>(s.lost_frames), io::loss_percent(s),
+    // With the log on standard output, the summary goes beside the warnings rather than after its last row.
+    std::FILE* summary = o.output == "-" ? stderr : stdout;
+    std::fprintf(summary, "decoded %llu rows to %s; frames %llu, lost %llu (%.3f %%; crc errors %u), gaps %llu\n",
+                static_cast<unsigned long long>(s.rows), o.output == "-" ? "standard output" : o.output.c_str(),
+                static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.lost_frames),
+                io::loss_percent(s), static_cast<unsigned>(assembler->decoder_counters().bad_crc),
                 static_cast<unsigned long long>(s.gaps));
-    if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::printf("%s\n", skipped.c_str());
+    if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::fprintf(summary, "%s\n", skipped.c_str());
 }
 
 }  // namespace
@@ -131,7 +175,12 @@ void register_decode(CLI::App& app) {
     auto o = std::make_shared<DecodeOptions>();
     CLI::App* cmd = app.add_subcommand("decode", "Rebuild a recorded log from its raw capture (LOG.csv.cap)");
     cmd->add_option("capture", o->capture, "Capture file written by `driftlab record`")->required();
-    cmd->add_option("-o,--output", o->output, "Log file to write")->required();
+    cmd->add_option("-o,--output", o->output, "Log file to write (its folder is made; - for standard output)")
+        ->required();
+    cmd->add_flag("--overwrite", o->overwrite, "Replace a file already at -o (refused otherwise)");
+    cmd->footer("Damage in the capture (a cut last record, skipped stretches, frames failing their CRC) is warned of "
+                "with byte offsets on standard error; the log is still written, and the exit code is 0. Exit 3: no "
+                "log can be rebuilt (not a capture, no recording start).");
     cmd->callback([o] { run_decode(*o); });
 }
 

@@ -67,6 +67,8 @@ public:
 
     bool started() const { return writer_ != nullptr; }
     const AssemblyStats& stats() const { return stats_; }
+    /// The frame decoder's rejects (bad CRC among them), which AssemblyStats counts only as lost sequence numbers.
+    const proto::DecoderCounters& decoder_counters() const { return decoder_.counters(); }
     const std::optional<proto::VersionPayload>& version() const { return version_; }
     const std::optional<proto::ConfigPayload>& config() const { return config_; }
 

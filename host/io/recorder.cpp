@@ -8,9 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
-#include <system_error>
 #include <thread>
-#include <tuple>
 
 #include "host/io/board_client.hpp"
 #include "host/io/capture.hpp"
@@ -63,13 +61,8 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     // Before the port: opening it resets an Arduino, and a missing folder had been found only then (the capture's)
     // or after the handshake (the log's, with the capture left behind). Folders are made as `hil` makes its own.
     // An hour's recording is not made again by running the command once more from the shell's history.
-    for (const auto& [path, what, option] :
-         {std::tuple{options.log_path, "log", "-o"}, std::tuple{capture_path, "capture", "--capture"}}) {
-        std::error_code ec;
-        if (!options.overwrite && std::filesystem::exists(path, ec))
-            throw UsageError(path + ": a " + what + " is already there; name another " + option +
-                             ", or pass --overwrite to replace it");
-    }
+    refuse_replacing(options.log_path, "log", "-o", options.overwrite);
+    refuse_replacing(capture_path, "capture", "--capture", options.overwrite);
     make_folder_of(options.log_path, "log");
     make_folder_of(capture_path, "capture");
     check_output_file(options.log_path, "log");

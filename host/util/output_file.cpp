@@ -29,6 +29,13 @@ void refuse_writing_over_input(const std::string& output, const std::string& opt
                          "'); writing there would destroy it");
 }
 
+void refuse_replacing(const std::string& path, const std::string& what, const std::string& option, bool overwrite) {
+    std::error_code ec;
+    if (!overwrite && std::filesystem::exists(path, ec))
+        throw UsageError(path + ": a " + what + " is already there; name another " + option +
+                         ", or pass --overwrite to replace it");
+}
+
 void write_output_file(const std::string& path, const std::string& text, const std::string& what) {
     const std::string temporary = path + ".part";
     {

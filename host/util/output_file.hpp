@@ -16,6 +16,10 @@ void check_output_file(const std::string& path, const std::string& what);
 void refuse_writing_over_input(const std::string& output, const std::string& option, const std::string& input,
                                const std::string& input_what);
 
+/// Throws UsageError when a file is already at `path` and `overwrite` is false, so that a recording is not replaced
+/// by running a command once more from the shell's history. `what` names the file ("log"), `option` its option.
+void refuse_replacing(const std::string& path, const std::string& what, const std::string& option, bool overwrite);
+
 /// Writes `text` to `path` through a temporary file beside it and a rename, so that a reader never sees a part of
 /// it and an earlier file stays as it was when writing fails. Throws DeviceError as above.
 void write_output_file(const std::string& path, const std::string& text, const std::string& what);

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "driftlab/proto/decoder.hpp"
 #include "host/io/capture.hpp"
 #include "host/io/recorder.hpp"
 #include "host/log/log_reader.hpp"
@@ -42,7 +43,58 @@ void expect_rows_in_truth(const host::LogData& log, const host::LogData& truth) 
     }
 }
 
+// `decode run.csv.cap -o run.csv` of a damaged capture had replaced the intact recording beside it; a frame failing
+// its CRC in a damaged copy had been counted only as a lost sequence number, like a radio loss.
+void expect_decode_keeps_logs_and_names_crc_failures(const TempDir& dir, const std::string& log) {
+    const std::string recorded = read_text(log);
+    const RunResult again = run_driftlab({"decode", log + ".cap", "-o", log}, dir.path());
+    EXPECT_EQ(again.exit_code, 2) << again.output;
+    EXPECT_NE(again.output.find("a log is already there"), std::string::npos) << again.output;
+    EXPECT_EQ(read_text(log), recorded);
+
+    // Its folder is made; with --overwrite it replaces; to standard output the log alone (the summary on stderr).
+    const std::string nested = dir.file("sub/dir/decoded.csv");
+    ASSERT_EQ(run_driftlab({"decode", log + ".cap", "-o", nested}, dir.path()).exit_code, 0);
+    std::ofstream(nested) << "stale";
+    const RunResult replaced = run_driftlab({"decode", log + ".cap", "-o", nested, "--overwrite"}, dir.path());
+    ASSERT_EQ(replaced.exit_code, 0) << replaced.output;
+    EXPECT_EQ(read_text(nested), recorded);
+    std::ofstream(dir.file("out.csv")).close();  // standard output is opened there, not created
+    const RunResult to_stdout = run_driftlab_stdout_to({"decode", log + ".cap", "-o", "-"}, dir.file("out.csv"), dir.path());
+    ASSERT_EQ(to_stdout.exit_code, 0) << to_stdout.output;
+    EXPECT_EQ(read_text(dir.file("out.csv")), recorded);
+    EXPECT_NE(to_stdout.output.find("to standard output"), std::string::npos) << to_stdout.output;
+
+    // The last byte of the tenth frame received, found by decoding the capture's received bytes: its CRC.
+    std::string capture = read_text(log + ".cap");
+    std::uint64_t record_offset = 0;
+    std::size_t last_byte = 0;
+    {
+        host::io::CaptureReader reader(log + ".cap");
+        proto::Decoder decoder;
+        int frames = 0;
+        while (const auto record = reader.next()) {
+            if (record->kind != host::io::CaptureKind::rx) continue;
+            for (std::size_t i = 0; i < record->payload.size() && frames < 10; ++i) {
+                if (!decoder.feed(record->payload[i])) continue;
+                for (bool more = true; more; more = decoder.next()) ++frames;
+                if (frames >= 10) record_offset = record->offset, last_byte = record->offset + 1 + 8 + 4 + i;
+            }
+        }
+    }
+    ASSERT_GT(last_byte, 0u);
+    capture[last_byte] = static_cast<char>(capture[last_byte] ^ 0x10);
+    std::ofstream(dir.file("crc.cap"), std::ios::binary) << capture;
+    const RunResult crc = run_driftlab({"decode", dir.file("crc.cap"), "-o", dir.file("crc.csv")}, dir.path());
+    ASSERT_EQ(crc.exit_code, 0) << crc.output;
+    EXPECT_NE(crc.output.find("crc.cap: 1 frame failed its CRC check and counts as lost (in the record at byte "
+                              "offset " + std::to_string(record_offset) + ")\n"),
+              std::string::npos)
+        << crc.output;
+    EXPECT_NE(crc.output.find("crc errors 1)"), std::string::npos) << crc.output;
+}
 }  // namespace
+
 
 TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog) {
     TempDir dir("stream60");
@@ -79,6 +131,7 @@ TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog
     const RunResult d = run_driftlab({"decode", log + ".cap", "-o", dir.file("decoded.csv")}, dir.path());
     ASSERT_EQ(d.exit_code, 0) << d.output;
     EXPECT_EQ(read_text(dir.file("decoded.csv")), read_text(log));
+    expect_decode_keeps_logs_and_names_crc_failures(dir, log);
 
     // One flipped bit in the start event's text ("start" -> "stcrt": events carry no checksum) had left the capture
     // undecodable; it is read as the start, with a warning naming its offset, and rebuilds the same log. Two bits
