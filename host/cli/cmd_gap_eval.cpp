@@ -56,9 +56,13 @@ std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, con
 
 // A generator named by itself or by the library effect it stands for.
 std::string generator_named(const std::string& flag, const std::string& name) {
-    for (const auto& t : gap::truth_list())
+    std::string known;
+    for (const auto& t : gap::truth_list()) {
         if (t.generator == name || t.effect == name) return t.generator;
-    throw UsageError(flag + ": unknown generator or effect '" + name + "'");
+        known += (known.empty() ? "" : ", ") + t.generator + (t.effect.empty() || t.effect == t.generator ? "" : " (" + t.effect + ")");
+    }
+    throw UsageError(flag + ": unknown generator or effect '" + name + "' (generators, with the effect each stands for: " +
+                     known + ")");
 }
 
 std::vector<std::pair<std::string, std::string>> parse_pairs(const std::vector<std::string>& list) {

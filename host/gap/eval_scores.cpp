@@ -202,7 +202,7 @@ std::string scores_markdown(const EvalScores& s) {
             std::size_t j = i;
             for (; j < d.curve.size() && std::abs(d.curve[j].size - d.curve[i].size) <= 1e-9 * d.curve[i].size; ++j)
                 detected += d.curve[j].detected, logs += d.curve[j].logs;
-            md << " " << fixed(d.curve[i].size, 2) << ": " << detected << "/" << logs << ";";
+            md << (i ? "; " : " ") << fixed(d.curve[i].size, 2) << ": " << detected << "/" << logs;
             i = j;
         }
         md << " |\n";

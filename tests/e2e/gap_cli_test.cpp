@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "e2e_support.hpp"
+#include "host/gap/truth.hpp"
 #include "sim/model/model_file.hpp"
 
 namespace driftlab::e2e {
@@ -637,6 +638,10 @@ TEST(GapEvalCli, ABadPairIsRefusedNamingIt) {
     refused("sar_mismatch+flicker", "--pairs: sar_mismatch replaces the converter");
     refused("thermostat+wobble", "--pairs: unknown generator or effect 'wobble'");
     refused("none+thermostat", "--pairs: unknown generator or effect 'none'");
+    // A misspelt name is answered with the names there are.
+    const RunResult misspelt = run_driftlab({"gap-eval", "--quick", "--effects", "thermostatt"}, dir.path());
+    EXPECT_EQ(misspelt.exit_code, 2) << misspelt.output;
+    for (const auto& t : host::gap::truth_list()) EXPECT_NE(misspelt.output.find(t.generator), std::string::npos) << t.generator;
 }
 
 }  // namespace

@@ -425,7 +425,7 @@ TEST(GapEval, ScoresCountTheScoringDecisions) {
     // A size the search reached twice (0.4 and 0.4000000000000001) is one entry of both batches in the table.
     const DetectionSize twice{"thermal_rc", 0.26, {{0.2, 0, 4}, {0.2, 1, 4}, {0.4, 4, 4}, {0.4000000000000001, 4, 4}}};
     const std::string md = scores_markdown(score(cases, Thresholds{1.0, 0.3, 0.05, InformationCriterion::bic}, o, {twice}));
-    EXPECT_NE(md.find("| thermal_rc | 0.26 | 0.20: 1/8; 0.40: 8/8; |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| thermal_rc | 0.26 | 0.20: 1/8; 0.40: 8/8 |"), std::string::npos) << md;
 
     // The targets, read at 2 x a_50 with exact intervals: the false-positive rate 1/3 (Clopper-Pearson 0.8-90.6 %),
     // flicker's top-1 1/2 and the mode hop attributed 1/1; none met, none settled by so few logs.
