@@ -27,6 +27,8 @@ void run(const ReportCommandOptions& opts) {
     refuse_writing_over_input(opts.output, "-o", opts.request.path, "log");
     make_folder_of(opts.output, "report");  // before the work, as --plot does
     const fit::FileAnalysis file = fit::analyse_file(opts.request);
+    // A page of empty tables had been written where no series could be analysed; one that failed is shown there.
+    if (file.failures() == file.series.size()) throw_if_failed(file, false);
     report::ReportOptions ropts;
     ropts.plots = !opts.no_plots;
     const std::string html = report::render_html_report(file, ropts);

@@ -1,6 +1,10 @@
 // Per-file drift analysis; see file_analysis.hpp.
 #include "host/fit/file_analysis.hpp"
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -33,11 +37,22 @@ std::size_t FileAnalysis::failures() const {
 }
 
 std::string FileAnalysis::failure_summary() const {
-    std::string out;
+    // One reason shared by several series (a time range that holds none of them) is said once, naming them all:
+    // a log's four channels had repeated the same sentence four times.
+    std::vector<std::pair<std::string, std::string>> by_reason;  // (reason, "series 'a', 'b'")
     for (const auto& s : series) {
         if (s.analysis) continue;
-        out += (out.empty() ? "" : "; ") + s.error;
+        const std::string own = "series '" + s.name + "': ";
+        const bool named = s.error.rfind(own, 0) == 0;
+        const std::string reason = named ? s.error.substr(own.size()) : s.error;
+        const auto same = std::find_if(by_reason.begin(), by_reason.end(), [&](const auto& r) { return named && r.first == reason; });
+        if (same != by_reason.end())
+            same->second += ", '" + s.name + "'";
+        else
+            by_reason.emplace_back(reason, named ? "series '" + s.name + "'" : "");
     }
+    std::string out;
+    for (const auto& [reason, names] : by_reason) out += (out.empty() ? "" : "; ") + (names.empty() ? reason : names + ": " + reason);
     return out;
 }
 

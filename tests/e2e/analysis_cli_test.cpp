@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 
@@ -201,6 +202,18 @@ TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
     EXPECT_EQ(count_of(failed.output, "9 samples in the selected time range"), 4u) << failed.output;
     EXPECT_NE(failed.output.find(log + ": not analysed: gyro, accel_x, accel_y, accel_z (the reasons are above)"),
               std::string::npos) << failed.output;
+
+    // Where no series can be analysed, report writes no page of empty tables, and says the shared reason once
+    // with the span the range missed.
+    const std::string none = dir.file("none.html");
+    const RunResult empty = run_driftlab({"report", log, "--from", "400", "-o", none, "--no-plots"}, dir.path());
+    EXPECT_EQ(empty.exit_code, 3) << empty.output;
+    EXPECT_FALSE(std::filesystem::exists(none));
+    EXPECT_EQ(count_of(empty.output, "samples in the selected time range"), 1u) << empty.output;
+    EXPECT_NE(empty.output.find("series 'gyro', 'accel_x', 'accel_y', 'accel_z': 0 samples in the selected time range "
+                                "(the series spans t = "),
+              std::string::npos)
+        << empty.output;
 }
 
 }  // namespace
