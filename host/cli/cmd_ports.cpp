@@ -44,7 +44,9 @@ void print_text(const io::UsbPortScan& scan) {
     if (!scan.usb_available) std::cout << "note: " << scan.usb_note << "\n";
     if (scan.ports.empty()) {
         std::cout << "no USB serial adapter found (is the board plugged in? `dmesg | tail` shows what the "
-                     "kernel saw)\n";
+                     "kernel saw)\n"
+                     "a board on a built-in UART is given to `record --port` by its node (/dev/ttyS0, /dev/ttyAMA0); "
+                     "`driftlab hil --pty` makes a simulated board on a pseudo-terminal\n";
         return;
     }
     for (const io::UsbSerialPort& p : scan.ports) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <system_error>
 #include <fstream>
 #include <optional>
 
@@ -144,11 +145,18 @@ UsbPortScan list_usb_serial_ports(const SystemPaths& paths) {
     const std::vector<TtyUsbNode> nodes = scan_sysfs_usb_ttys(paths.sysfs_root);
     const auto by_id = scan_by_id_links(paths.dev_root);
 
+    // libusb starts without a USB bus (a container run without the host's devices) and lists nothing, which had
+    // read as "no board plugged in".
+    std::error_code ec;
+    const bool bus_visible = fs::exists(fs::path(paths.sysfs_root) / "bus/usb", ec) ||
+                             fs::exists(fs::path(paths.dev_root) / "bus/usb", ec);
     libusb_context* ctx = nullptr;
-    const int init = libusb_init(&ctx);
+    const int init = bus_visible ? libusb_init(&ctx) : LIBUSB_ERROR_NO_DEVICE;
     if (init != LIBUSB_SUCCESS) {
         scan.usb_available = false;
-        scan.usb_note = std::string("libusb cannot open the USB subsystem: ") + libusb_strerror(init);
+        scan.usb_note = bus_visible ? std::string("libusb cannot open the USB subsystem: ") + libusb_strerror(init)
+                                    : "no USB bus is visible here (neither " + paths.sysfs_root + "/bus/usb nor " +
+                                          paths.dev_root + "/bus/usb: a container started without the host's devices?)";
         // sysfs alone still names the adapters the kernel knows.
         scan.ports = ports_from_sysfs(nodes, by_id, paths.dev_root);
         return scan;

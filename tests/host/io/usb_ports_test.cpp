@@ -112,6 +112,15 @@ TEST_F(FakeSystem, MissingTreesGiveEmptyResultsNotErrors) {
     EXPECT_TRUE(scan_by_id_links((root_ / "nowhere").string()).empty());
 }
 
+// Without a USB bus in view (a container run without the host's devices) libusb lists nothing, which had read as no
+// board plugged in: the scan says why, and sysfs still names the adapters the kernel knows.
+TEST_F(FakeSystem, NoUsbBusInViewIsSaidAndSysfsStillListsTheAdapters) {
+    const UsbPortScan scan = list_usb_serial_ports({(root_ / "sys").string(), (root_ / "dev").string()});
+    EXPECT_FALSE(scan.usb_available);
+    EXPECT_NE(scan.usb_note.find("no USB bus is visible here"), std::string::npos) << scan.usb_note;
+    EXPECT_EQ(scan.ports.size(), 2u);
+}
+
 TEST(UsbPorts, KnownVendorsAreTheCommonBridgesAndArduino) {
     EXPECT_TRUE(is_known_serial_vendor(0x0403));   // FTDI
     EXPECT_TRUE(is_known_serial_vendor(0x1a86));   // CH340
