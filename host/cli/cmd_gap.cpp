@@ -212,14 +212,15 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, double 
                     e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), fixed_point(e.loss_gain, 1).c_str(),
                     fixed_point(e.penalty, 1).c_str());
         if (gap::has_delta_ic(e)) std::printf(" dIC %s", fixed_point(gap::delta_ic(e, rules.information_criterion), 1).c_str());
-        for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
+        if (!e.params.empty()) std::printf(" %s", gap::parameter_list(e.params).c_str());
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");
     }
     for (const auto& s : r.level_steps)
-        std::printf("level steps on %s: %.3g counts at t = %.1f s, %.3g at %.1f s; likelihood %.1f over the model (price %.1f), "
-                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)], s.steps[0].size_counts, s.steps[0].t_s,
-                    s.steps[1].size_counts, s.steps[1].t_s, s.statistic, s.margin, s.p_value, gap::step_reading(s));
+        std::printf("level steps on %s: %s counts at t = %.1f s, %s at %.1f s; likelihood %.1f over the model (price %.1f), "
+                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)], significant_plain(s.steps[0].size_counts, 3).c_str(),
+                    s.steps[0].t_s, significant_plain(s.steps[1].size_counts, 3).c_str(), s.steps[1].t_s, s.statistic, s.margin,
+                    s.p_value, gap::step_reading(s));
     std::printf("not identifiable from a static log:");
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");

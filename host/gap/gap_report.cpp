@@ -7,7 +7,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <sstream>
 
 #include "host/fit/drift_analysis.hpp"
@@ -106,16 +105,6 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
     return bands;
 }
 
-std::string parameter_list(const std::vector<std::pair<std::string, double>>& params) {
-    std::string out;
-    for (const auto& [k, v] : params) {
-        std::ostringstream value;
-        value << std::setprecision(4) << v;  // sizes in g are 1e-5 and below
-        out += (out.empty() ? "" : " ") + k + "=" + value.str();
-    }
-    return out;
-}
-
 // A channel's real residual against the replicate bands of the base and of the final model, as DIR/<plot_name()>;
 // returns gap.md's link to its image.
 std::string plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
@@ -179,6 +168,14 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     return located + " and no candidate passes (held-out shrink, held-out likelihood and penalised gain)";
 }
 
+std::string parameter_text(double value) { return significant_plain(value, 4); }
+
+std::string parameter_list(const std::vector<std::pair<std::string, double>>& params) {
+    std::string out;
+    for (const auto& [k, v] : params) out += (out.empty() ? "" : " ") + k + "=" + parameter_text(v);
+    return out;
+}
+
 std::string given_effects_sentence(const GivenEffects& given) {
     std::string out;
     const auto part = [&](const std::string& what, const std::vector<Explanation>& list) {
@@ -205,7 +202,7 @@ std::string estimate_text(const Explanation& e, double record_end_s) {
         const auto& [size_key, size] = e.estimate()[0];
         const double t2 = e.estimate()[1].second;
         text += "; t2 is beyond 3x the log's " + fixed_point(record_end_s, 0) + " s, so within it the exponential is a straight slope: "
-                "the log tells its initial slope, " + significant(size / t2, 2) + (size_key == "c3_dps" ? " deg/s" : " g") +
+                "the log tells its initial slope, " + significant_plain(size / t2, 2) + (size_key == "c3_dps" ? " deg/s" : " g") +
                 " per s, not c3 and t2 apart";
     }
     return text;

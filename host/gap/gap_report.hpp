@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "host/gap/diagnose.hpp"
@@ -23,6 +24,13 @@ std::string verdict_reason(const GapResult& result, const GapOptions& options);
 /// The model file's own effects in the base (`gap --model` with effects), one sentence: those refitted to the log
 /// with their parameters, and those kept as the file gives them; "" when the model has none.
 std::string given_effects_sentence(const GivenEffects& given);
+
+/// An estimated parameter where no spread says how far to trust it: four significant digits (a DNL transition,
+/// 507.4 counts, needs them), without an exponent (t2_s=11910, k_g_per_sqrt_s=0.00009776).
+std::string parameter_text(double value);
+
+/// "k=v k=v ...", each value as parameter_text() writes it: a candidate's parameters.
+std::string parameter_list(const std::vector<std::pair<std::string, double>>& params);
 
 /// An added effect's parameters: "k=v ..." as estimated on the whole log, then "(whole log; fitting part: k=v ...)"
 /// with those the held-out part judged; the fitting part's alone where nothing was estimated again. A second time
