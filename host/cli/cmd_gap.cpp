@@ -259,6 +259,7 @@ void run(const GapCommandOptions& o) {
         for (const std::string& file : gap::report_files(o.report_dir)) {
             refuse_writing_over_input(file, "--report", o.path, "log");
             refuse_writing_over_input(file, "--report", o.model_path, "model file");
+            refuse_two_outputs_in_one_file(o.model_out, "--model-out", file, "--report");
         }
     const auto [log, unit] = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis

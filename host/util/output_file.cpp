@@ -11,6 +11,19 @@
 
 namespace driftlab::host {
 
+namespace {
+
+// `p` made absolute, its links, "." and ".." resolved as far as it exists; empty where that fails.
+std::filesystem::path resolved_path(const std::string& p) {
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(p, ec);
+    if (ec) return {};
+    std::filesystem::path out = std::filesystem::weakly_canonical(absolute, ec);
+    return ec ? std::filesystem::path{} : out;
+}
+
+}  // namespace
+
 void check_output_file(const std::string& path, const std::string& what) {
     std::error_code ec;
     const bool existed = std::filesystem::exists(path, ec);
@@ -27,6 +40,18 @@ void refuse_writing_over_input(const std::string& output, const std::string& opt
     if (!output.empty() && !input.empty() && std::filesystem::equivalent(output, input, ec))
         throw UsageError(option + ": '" + output + "' is the " + input_what + " this command reads ('" + input +
                          "'); writing there would destroy it");
+}
+
+void refuse_two_outputs_in_one_file(const std::string& path, const std::string& option, const std::string& other,
+                                    const std::string& other_option) {
+    if (path.empty() || other.empty()) return;
+    // Outputs need not exist yet, which std::filesystem::equivalent() requires: their paths are compared once
+    // resolved as far as they exist (a folder's link, "."), and a hard link to an existing file by identity.
+    std::error_code ec;
+    const std::filesystem::path resolved = resolved_path(path);
+    if (std::filesystem::equivalent(path, other, ec) || (!resolved.empty() && resolved == resolved_path(other)))
+        throw UsageError(option + ": '" + path + "' is a file " + other_option + " writes ('" + other +
+                         "'); one would be written over the other");
 }
 
 void write_output_file(const std::string& path, const std::string& text, const std::string& what) {
