@@ -168,6 +168,19 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     return located + " and no candidate passes (held-out shrink, held-out likelihood and penalised gain)";
 }
 
+std::string slow_drift_sentence(const GapResult& r, const LogData& log) {
+    if (r.verdict != "none") return "";
+    const double span_s = log.t_s.back() - log.t_s.front();
+    std::string slow;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (r.channels[c] && r.base.base[c].drift.tau_s >= 0.5 * span_s)
+            slow += (slow.empty() ? "" : ", ") + significant_plain(r.base.base[c].drift.tau_s, 3) + " s on " + kChannelNames[c];
+    if (slow.empty()) return "";
+    return "the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = " + slow + ", at least half the log's " +
+           fixed_point(span_s, 0) + " s, so it still bends at the log's end: an effect this slow (a second time constant, a slow "
+           "thermal drift) would be taken up by the drift fit rather than left as a gap, and only a log several T long tells them apart";
+}
+
 std::string parameter_text(double value) { return significant_plain(value, 4); }
 
 std::string parameter_list(const std::vector<std::pair<std::string, double>>& params) {
@@ -280,6 +293,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     std::ostringstream md;
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
+    if (const std::string slow = slow_drift_sentence(r, log); !slow.empty()) md << "Slow drift: " << slow << ".\n\n";
     if (stability) {
         md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
         const std::vector<std::string> spread = spread_lines(*stability);

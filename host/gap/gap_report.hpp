@@ -21,6 +21,12 @@ std::string counted(std::size_t n, const std::string& noun);
 /// One sentence on why the verdict is what it is (the rule that decided it).
 std::string verdict_reason(const GapResult& result, const GapOptions& options);
 
+/// For a `none` verdict, the analysed channels whose calibrated eq. 1 time constant T is at least half the log's span
+/// (e^-2, 14 % of the rise, still to come at its end), in one sentence: eq. 1 still bends across the whole log there,
+/// so an effect this slow is taken up by the drift fit and leaves no gap to find. "" for any other verdict, or when
+/// every T is shorter.
+std::string slow_drift_sentence(const GapResult& result, const LogData& log);
+
 /// The model file's own effects in the base (`gap --model` with effects), one sentence: those refitted to the log
 /// with their parameters, and those kept as the file gives them; "" when the model has none.
 std::string given_effects_sentence(const GivenEffects& given);

@@ -565,7 +565,15 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
     ASSERT_NE(gap.output.find("and beyond the margin): 0\n"), std::string::npos) << gap.output;
     // A hil log's times are evenly spaced but for their rounding (1.5e-13 %), which had been printed as a spread.
     EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the output period)\n"), std::string::npos) << gap.output;
+    // 1500 s is under twice the paper's accelerometer T (about 950 s), not the gyro's (411 s): a `none` that says a
+    // slow effect there would be in eq. 1's fit, for the accelerometers alone.
+    const std::size_t slow = gap.output.find("\nslow drift: the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = ");
+    ASSERT_NE(slow, std::string::npos) << gap.output;
+    const std::string slow_line = gap.output.substr(slow + 1, gap.output.find('\n', slow + 1) - slow - 1);
+    EXPECT_NE(slow_line.find(" s on accel_"), std::string::npos) << slow_line;
+    EXPECT_EQ(slow_line.find(" s on gyro"), std::string::npos) << slow_line;
     const std::string md = read_text(dir.file("rep/gap.md"));
+    EXPECT_NE(md.find("\n\nSlow drift: the paper's drift model, eq. 1"), std::string::npos) << md.substr(0, 800);
     const std::size_t guide = md.find("## How to read this report\n\n");
     ASSERT_NE(guide, std::string::npos) << md.substr(0, 800);
     for (const char* word : {"*replicates*", "*battery*", "*cell*", "*located*", "*practical margin*", "*gap score*", "*held-out part*",
