@@ -155,8 +155,9 @@ Loaded load(const GapCommandOptions& o) {
     return {in_window(o, std::move(log)), std::move(scaled)};
 }
 
-void print_text(const gap::GapResult& r, const gap::GapOptions& options, double record_end_s) {
+void print_text(const gap::GapResult& r, const gap::GapOptions& options, const LogData& log) {
     std::printf("verdict: %s (%s)\n", r.verdict.c_str(), gap::verdict_reason(r, options).c_str());
+    if (const std::string slow = gap::slow_drift_sentence(r, log); !slow.empty()) std::printf("slow drift: %s\n", slow.c_str());
     std::printf("gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f"
                 " (held-out bound %.2f: %s)\n",
                 r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout, r.gap_bound_after,
@@ -189,7 +190,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, double 
                     "parameters estimated on the whole log beside them all):\n", gap::kShrinkDefinition);
     for (const auto& e : r.accepted) {
         std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %s%%)  %s", e.step, e.effect.c_str(), e.channel.c_str(),
-                    e.heldout_before, e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), gap::estimate_text(e, record_end_s).c_str());
+                    e.heldout_before, e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), gap::estimate_text(e, log.t_s.back()).c_str());
         if (e.replaces_given) std::printf("  in place of the model's");
         std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());
@@ -212,14 +213,15 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, double 
                     e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), fixed_point(e.loss_gain, 1).c_str(),
                     fixed_point(e.penalty, 1).c_str());
         if (gap::has_delta_ic(e)) std::printf(" dIC %s", fixed_point(gap::delta_ic(e, rules.information_criterion), 1).c_str());
-        for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
+        if (!e.params.empty()) std::printf(" %s", gap::parameter_list(e.params).c_str());
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");
     }
     for (const auto& s : r.level_steps)
-        std::printf("level steps on %s: %.3g counts at t = %.1f s, %.3g at %.1f s; likelihood %.1f over the model (price %.1f), "
-                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)], s.steps[0].size_counts, s.steps[0].t_s,
-                    s.steps[1].size_counts, s.steps[1].t_s, s.statistic, s.margin, s.p_value, gap::step_reading(s));
+        std::printf("level steps on %s: %s counts at t = %.1f s, %s at %.1f s; likelihood %.1f over the model (price %.1f), "
+                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)], significant_plain(s.steps[0].size_counts, 3).c_str(),
+                    s.steps[0].t_s, significant_plain(s.steps[1].size_counts, 3).c_str(), s.steps[1].t_s, s.statistic, s.margin,
+                    s.p_value, gap::step_reading(s));
     std::printf("not identifiable from a static log:");
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
@@ -258,6 +260,7 @@ void run(const GapCommandOptions& o) {
         for (const std::string& file : gap::report_files(o.report_dir)) {
             refuse_writing_over_input(file, "--report", o.path, "log");
             refuse_writing_over_input(file, "--report", o.model_path, "model file");
+            refuse_two_outputs_in_one_file(o.model_out, "--model-out", file, "--report");
         }
     const auto [log, unit] = load(o);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
@@ -304,7 +307,7 @@ void run(const GapCommandOptions& o) {
         std::cout << j.dump(2) << "\n";
         for (const std::string& n : model_notes) std::fprintf(stderr, "driftlab gap: model file note: %s\n", n.c_str());
     } else {
-        print_text(r, options, log.t_s.back());
+        print_text(r, options, log);
         if (stability.logs > 0)
             for (const std::string& line : gap::stability_text(stability, r.verdict)) std::printf("%s\n", line.c_str());
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());

@@ -22,9 +22,8 @@ std::optional<double> median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-std::string fixed(double v, int digits) { return fixed_point(v, digits); }
-
-std::string fixed(const std::optional<double>& v) { return v ? fixed(*v, 2) : "-"; }
+// A median over no logs is "-" in its cell.
+std::string fixed_or_dash(const std::optional<double>& v) { return v ? fixed_point(*v, 2) : "-"; }
 
 nlohmann::json number(const std::optional<double>& v) { return v ? report::json_number(*v) : nlohmann::json(nullptr); }
 
@@ -43,7 +42,7 @@ TargetScore target(std::string name, std::size_t count, std::size_t logs, double
 // library effect and the attributed share of each out-of-library generator (that one over all sizes too).
 std::vector<TargetScore> read_targets(const EvalScores& s) {
     std::vector<TargetScore> out;
-    const std::string at_level = " at " + fixed(kTargetLevel, 0) + " x a_50";
+    const std::string at_level = " at " + fixed_point(kTargetLevel, 0) + " x a_50";
     if (s.clean) out.push_back(target("false positives: clean logs given a verdict", s.clean_flagged, s.clean, 0.05, true));
     for (const auto& z : s.by_size) {
         if (z.generator == "none" || z.level != kTargetLevel || z.logs == 0) continue;
@@ -63,7 +62,7 @@ std::vector<TargetScore> read_targets(const EvalScores& s) {
     return out;
 }
 
-std::string percent(double v) { return fixed(100.0 * v, 1) + " %"; }
+std::string percent(double v) { return fixed_point(100.0 * v, 1) + " %"; }
 
 // Each log's added effects as a set against its truth effects (one or two), pooled over the logs of each pair.
 std::vector<PairScore> score_pairs(const std::vector<PairCase>& cases) {
@@ -194,7 +193,7 @@ std::string scores_markdown(const EvalScores& s) {
            << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
               "| generator | a_50 | size: detected/logs |\n|---|---|---|\n";
     for (const auto& d : s.sizes) {
-        md << "| " << d.generator << " | " << fixed(d.a50, 2) << " |";
+        md << "| " << d.generator << " | " << fixed_point(d.a50, 2) << " |";
         // The search can reach one size twice (0.4 and 0.4000000000000001): one entry with both batches, where two
         // entries of the same size had read as two detection rates for it (the fit keeps them apart).
         for (std::size_t i = 0; i < d.curve.size();) {
@@ -202,15 +201,15 @@ std::string scores_markdown(const EvalScores& s) {
             std::size_t j = i;
             for (; j < d.curve.size() && std::abs(d.curve[j].size - d.curve[i].size) <= 1e-9 * d.curve[i].size; ++j)
                 detected += d.curve[j].detected, logs += d.curve[j].logs;
-            md << (i ? "; " : " ") << fixed(d.curve[i].size, 2) << ": " << detected << "/" << logs;
+            md << (i ? "; " : " ") << fixed_point(d.curve[i].size, 2) << ": " << detected << "/" << logs;
             i = j;
         }
         md << " |\n";
     }
     if (s.clean)
         md << "\nFalse-positive rate on clean" << (o.raw_clean ? " raw-mode" : "") << " logs: " << s.clean_flagged << "/" << s.clean << " = "
-           << fixed(100.0 * static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean), 1)
-           << " % (95 % Clopper-Pearson " << fixed(100.0 * s.fpr_low, 1) << "-" << fixed(100.0 * s.fpr_high, 1) << " %).\n";
+           << fixed_point(100.0 * static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean), 1)
+           << " % (95 % Clopper-Pearson " << fixed_point(100.0 * s.fpr_low, 1) << "-" << fixed_point(100.0 * s.fpr_high, 1) << " %).\n";
     md << "\n### Confusion (rows: truth generator -> library effect; columns: verdict), all sizes\n\n| truth |";
     for (const auto& v : s.verdicts) md << " " << v << " |";
     md << "\n|---|";
@@ -233,8 +232,8 @@ std::string scores_markdown(const EvalScores& s) {
           "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& z : s.by_size)
         md << "| " << z.generator << " | " << z.level << " | " << z.logs << " | " << z.detected << " | " << z.top1 << " | "
-           << z.or_pair << " | " << fixed(z.predicted) << " | " << fixed(z.remeasured) << " | " << fixed(z.oracle) << " | "
-           << fixed(z.abs_error) << " |\n";
+           << z.or_pair << " | " << fixed_or_dash(z.predicted) << " | " << fixed_or_dash(z.remeasured) << " | " << fixed_or_dash(z.oracle) << " | "
+           << fixed_or_dash(z.abs_error) << " |\n";
     if (!s.targets.empty()) {
         md << "\n### Targets (scoring seeds; 95 % Clopper-Pearson intervals)\n\n"
               "`met` reads the estimate; `settled` says whether the interval lies wholly on one side of the bound.\n\n"
@@ -262,8 +261,8 @@ std::string scores_markdown(const EvalScores& s) {
             else
                 md << " + " << z.second << " (" << z.first_effect << " + " << z.second_effect << ")";
             md << " | " << z.logs << " | " << z.detected << " | " << z.verdict_one << " | " << z.all << " | " << z.wrong << " | "
-               << z.unexplained << " | " << fixed(z.precision, 2) << " | " << fixed(z.recall, 2) << " | "
-               << fixed(z.recall_or_pair, 2) << " | " << fixed(z.f1, 2) << " | " << fixed(z.shrink) << " |\n";
+               << z.unexplained << " | " << fixed_point(z.precision, 2) << " | " << fixed_point(z.recall, 2) << " | "
+               << fixed_point(z.recall_or_pair, 2) << " | " << fixed_point(z.f1, 2) << " | " << fixed_or_dash(z.shrink) << " |\n";
         }
     }
     return md.str();

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <sstream>
 
 #include "host/fit/drift_analysis.hpp"
@@ -106,18 +105,6 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
     return bands;
 }
 
-std::string fixed(double v, int digits = 2) { return fixed_point(v, digits); }
-
-std::string parameter_list(const std::vector<std::pair<std::string, double>>& params) {
-    std::string out;
-    for (const auto& [k, v] : params) {
-        std::ostringstream value;
-        value << std::setprecision(4) << v;  // sizes in g are 1e-5 and below
-        out += (out.empty() ? "" : " ") + k + "=" + value.str();
-    }
-    return out;
-}
-
 // A channel's real residual against the replicate bands of the base and of the final model, as DIR/<plot_name()>;
 // returns gap.md's link to its image.
 std::string plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
@@ -141,31 +128,31 @@ std::string plot_bands(const std::string& title, const std::string& x_label, con
 std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     for (const auto& s : r.level_steps)
         if (s.significant)
-            return std::string("a level step on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed(s.steps[0].size_counts) +
-                   " counts at t = " + fixed(s.steps[0].t_s, 1) + " s; p = " + fixed(s.p_value, 3) +
+            return std::string("a level step on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed_point(s.steps[0].size_counts, 2) +
+                   " counts at t = " + fixed_point(s.steps[0].t_s, 1) + " s; p = " + fixed_point(s.p_value, 3) +
                    ") that no library effect makes; the added effects stay as partial explanations";
     for (const auto& e : r.accepted)
         if (e.shape_steps.steps_win)
-            return "a hop and a return on " + e.channel + " (" + fixed(e.shape_steps.steps[0].size_counts) + " counts at t = " +
-                   fixed(e.shape_steps.steps[0].t_s, 1) + " s, " + fixed(e.shape_steps.steps[1].size_counts) + " at " +
-                   fixed(e.shape_steps.steps[1].t_s, 1) + " s) describe its mean better than " + e.effect +
-                   " (likelihood " + fixed(e.shape_steps.statistic, 1) + " over the price " + fixed(e.shape_steps.margin, 1) +
+            return "a hop and a return on " + e.channel + " (" + fixed_point(e.shape_steps.steps[0].size_counts, 2) + " counts at t = " +
+                   fixed_point(e.shape_steps.steps[0].t_s, 1) + " s, " + fixed_point(e.shape_steps.steps[1].size_counts, 2) + " at " +
+                   fixed_point(e.shape_steps.steps[1].t_s, 1) + " s) describe its mean better than " + e.effect +
+                   " (likelihood " + fixed_point(e.shape_steps.statistic, 1) + " over the price " + fixed_point(e.shape_steps.margin, 1) +
                    "): a level step no library effect makes; the added effects stay as partial explanations";
     const std::string located = counted(r.located.size(), "cell") + " located";
     if (!r.accepted.empty()) {
         const Explanation& e = r.accepted.front();
         // The channel's own score, not the whole log's the gap line and table show: say so, and what the share is of.
-        std::string out = "on " + e.channel + " it removes " + fixed(100 * e.heldout_shrink, 0) + " % of " + e.channel +
-                          "'s own held-out gap excess (" + e.channel + "'s held-out score " + fixed(e.heldout_before) + " -> " +
-                          fixed(e.heldout_after) + "; " + kShrinkDefinition + "; the whole log's scores are below)";
+        std::string out = "on " + e.channel + " it removes " + fixed_point(100 * e.heldout_shrink, 0) + " % of " + e.channel +
+                          "'s own held-out gap excess (" + e.channel + "'s held-out score " + fixed_point(e.heldout_before, 2) + " -> " +
+                          fixed_point(e.heldout_after, 2) + "; " + kShrinkDefinition + "; the whole log's scores are below)";
         for (std::size_t k = 1; k < r.accepted.size(); ++k)
             out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel;
         out += r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound";
         for (const auto& s : r.level_steps)
             if (s.outsized)
-                out += std::string("; level steps on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed(s.steps[0].size_counts) +
-                       " counts at t = " + fixed(s.steps[0].t_s, 1) + " s, " + fixed(s.steps[1].size_counts) + " at " +
-                       fixed(s.steps[1].t_s, 1) + " s; p = " + fixed(s.p_value, 3) +
+                out += std::string("; level steps on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed_point(s.steps[0].size_counts, 2) +
+                       " counts at t = " + fixed_point(s.steps[0].t_s, 1) + " s, " + fixed_point(s.steps[1].size_counts, 2) + " at " +
+                       fixed_point(s.steps[1].t_s, 1) + " s; p = " + fixed_point(s.p_value, 3) +
                        ") are read as the processes' outsized increments: they remain beside them";
         return out;
     }
@@ -179,6 +166,27 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     }
     if (!options.explain) return located + "; no candidate tried (--locate-only)";
     return located + " and no candidate passes (held-out shrink, held-out likelihood and penalised gain)";
+}
+
+std::string slow_drift_sentence(const GapResult& r, const LogData& log) {
+    if (r.verdict != "none") return "";
+    const double span_s = log.t_s.back() - log.t_s.front();
+    std::string slow;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (r.channels[c] && r.base.base[c].drift.tau_s >= 0.5 * span_s)
+            slow += (slow.empty() ? "" : ", ") + significant_plain(r.base.base[c].drift.tau_s, 3) + " s on " + kChannelNames[c];
+    if (slow.empty()) return "";
+    return "the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = " + slow + ", at least half the log's " +
+           fixed_point(span_s, 0) + " s, so it still bends at the log's end: an effect this slow (a second time constant, a slow "
+           "thermal drift) would be taken up by the drift fit rather than left as a gap, and only a log several T long tells them apart";
+}
+
+std::string parameter_text(double value) { return significant_plain(value, 4); }
+
+std::string parameter_list(const std::vector<std::pair<std::string, double>>& params) {
+    std::string out;
+    for (const auto& [k, v] : params) out += (out.empty() ? "" : " ") + k + "=" + parameter_text(v);
+    return out;
 }
 
 std::string given_effects_sentence(const GivenEffects& given) {
@@ -207,7 +215,7 @@ std::string estimate_text(const Explanation& e, double record_end_s) {
         const auto& [size_key, size] = e.estimate()[0];
         const double t2 = e.estimate()[1].second;
         text += "; t2 is beyond 3x the log's " + fixed_point(record_end_s, 0) + " s, so within it the exponential is a straight slope: "
-                "the log tells its initial slope, " + significant(size / t2, 2) + (size_key == "c3_dps" ? " deg/s" : " g") +
+                "the log tells its initial slope, " + significant_plain(size / t2, 2) + (size_key == "c3_dps" ? " deg/s" : " g") +
                 " per s, not c3 and t2 apart";
     }
     return text;
@@ -232,7 +240,8 @@ std::string saturated_channels_sentence(const GapResult& r) {
     std::string out;
     for (const auto& s : r.saturated)
         out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(s.channel)]) + " in " + counted(s.rows, "row") +
-               (s.rows == 1 ? " at t = " + fixed(s.first_t_s, 1) + " s" : " from t = " + fixed(s.first_t_s, 1) + " s to " + fixed(s.last_t_s, 1) + " s");
+               (s.rows == 1 ? " at t = " + fixed_point(s.first_t_s, 1) + " s"
+                            : " from t = " + fixed_point(s.first_t_s, 1) + " s to " + fixed_point(s.last_t_s, 1) + " s");
     if (out.empty()) return "";
     return out + ": a conversion reached code 0 or the top code there (the firmware's sat_flags); the simulator clips only "
                  "where its own noise reaches a rail, so a shock, or a rail the unit sits near, can read as a gap (--from and --to "
@@ -284,6 +293,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     std::ostringstream md;
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
+    if (const std::string slow = slow_drift_sentence(r, log); !slow.empty()) md << "Slow drift: " << slow << ".\n\n";
     if (stability) {
         md << "Verdict stability: " << stability_sentence(*stability, r.verdict) << ".\n\n";
         const std::vector<std::string> spread = spread_lines(*stability);
@@ -302,7 +312,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
           "Allan deviations, spectra and autocorrelations by octave, and more) is computed on the log and on every replicate; "
           "one statistic on one window, band or lag of one part of the log is a *cell*. A cell is *located* where the log "
           "lies outside what the replicates do: its z (the distance from the replicates' mean in their standard deviations) "
-          "is beyond a threshold that a log the simulator explains crosses in about " << fixed(100 * options.alpha, 0)
+          "is beyond a threshold that a log the simulator explains crosses in about " << fixed_point(100 * options.alpha, 0)
        << " % of cases, and its difference is beyond a *practical margin*, the least that matters (0.1 count for a mean, "
           "10 % for a deviation). The *gap score* is the mean z^2 over the cells divided by the replicates' own: about 1 "
           "when the simulator explains the log.\n\n"
@@ -322,10 +332,10 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)
        << ". A held-out score within its bound (level " << options.alpha << ") is a closed gap."
        << "\n\n| | fitting part | held-out part | held-out bound |\n|---|---|---|---|\n";
-    md << "| base simulator | " << fixed(r.gap_before_fit) << " | " << fixed(r.gap_before_heldout) << " | "
-       << fixed(r.gap_bound_before) << " |\n";
-    md << "| with the added effects | " << fixed(r.gap_after_fit) << " | " << fixed(r.gap_after_heldout) << " | "
-       << fixed(r.gap_bound_after) << " |\n\n";
+    md << "| base simulator | " << fixed_point(r.gap_before_fit, 2) << " | " << fixed_point(r.gap_before_heldout, 2) << " | "
+       << fixed_point(r.gap_bound_before, 2) << " |\n";
+    md << "| with the added effects | " << fixed_point(r.gap_after_fit, 2) << " | " << fixed_point(r.gap_after_heldout, 2) << " | "
+       << fixed_point(r.gap_bound_after, 2) << " |\n\n";
     if (!r.accepted.empty()) {
         md << "## Explanation: the effects added, in order\n\nParameters as estimated on the whole log beside all the "
               "added effects, and (for a mean shape or a Gaussian process) the fitting part's, which the held-out part "
@@ -334,23 +344,24 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
               "|---|---|---|---|---|---|---|---|\n";
         for (const auto& e : r.accepted)
             md << "| " << e.step << " | " << e.effect << (e.replaces_given ? " (in place of the model's)" : "") << " | " << e.channel
-               << " | " << estimate_text(e, log.t_s.back()) << " | " << fixed(e.heldout_before) << " -> " << fixed(e.heldout_after) << " | "
-               << fixed(100 * e.heldout_shrink, 0) << " % | " << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
+               << " | " << estimate_text(e, log.t_s.back()) << " | " << fixed_point(e.heldout_before, 2) << " -> "
+               << fixed_point(e.heldout_after, 2) << " | " << fixed_point(100 * e.heldout_shrink, 0) << " % | "
+               << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
         md << "\n";
     }
     if (!r.paths.empty()) {
         md << "A Gaussian process chosen over an accepted mean shape may have taken the shape's signal with the rest, so "
               "the path that adds the shape first was followed too; the path whose final model has the lower full-log "
               "spectral criterion on the channel is kept (a shape path by more than "
-           << fixed(options.explain_options.shape_path_margin, 0) << ").\n\n"
+           << fixed_point(options.explain_options.shape_path_margin, 0) << ").\n\n"
            << "| step | channel | process first | shape first | criterion at the end | kept |\n|---|---|---|---|---|---|\n";
         for (const auto& p : r.paths)
             md << "| " << p.step << " | " << p.channel << " | " << p.process << " | " << p.shape << " | "
-               << fixed(p.criterion_process, 1) << " / " << fixed(p.criterion_shape, 1) << " | "
+               << fixed_point(p.criterion_process, 1) << " / " << fixed_point(p.criterion_shape, 1) << " | "
                << (p.shape_kept ? p.shape : p.process) << " first |\n";
         md << "\n";
     }
-    md << "## Where: located cells (|z| > " << fixed(r.before.threshold) << " and a difference beyond the cell's practical margin)\n\n";
+    md << "## Where: located cells (|z| > " << fixed_point(r.before.threshold, 2) << " and a difference beyond the cell's practical margin)\n\n";
     if (r.located.empty()) {
         md << "None: no cell lies beyond both.\n\n";  // a table of headers alone reads as a failure to fill it
     } else {
@@ -358,7 +369,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         for (const auto& l : r.located) {
             const auto& c = r.layout[l.index];
             md << "| " << c.statistic << " | " << c.channel << " | " << c.shown() << " | " << segment_name(c.segment) << " | "
-               << fixed(l.z, 1) << " | " << located_value_text(l) << " |\n";
+               << fixed_point(l.z, 1) << " | " << located_value_text(l) << " |\n";
         }
         md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     }
@@ -377,7 +388,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         md << "Fitted on the fitting part, judged on the held-out part: the added effects first, in step order, then the others "
               "by step. The held-out score is the channel's, before -> with the candidate (" << kShrinkDefinition << "). A candidate "
               "passes when, among other tests, its gain exceeds " << significant(rules.penalty_per_param, 3) << " x its penalty and "
-              "it shrinks the held-out score by at least " << fixed(100 * rules.min_heldout_shrink, 0) << " %; among the mean "
+              "it shrinks the held-out score by at least " << fixed_point(100 * rules.min_heldout_shrink, 0) << " %; among the mean "
               "shapes and Gaussian processes that pass, the one with the largest ΔIC (" << criterion_name(rules.information_criterion)
            << ": the criterion without the candidate minus with it, so above 0 favours it) is chosen. ΔIC is computed for "
               "those only (else -), and an effect added at a later step can have ΔIC at or below 0: it passed the held-out tests, "
@@ -386,9 +397,10 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
               "|---|---|---|---|---|---|---|---|---|\n";
     for (const Explanation* candidate : candidates_in_table_order(r)) {
         const Explanation& e = *candidate;
-        md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e.params) << " | " << fixed(e.heldout_before)
-           << " -> " << fixed(e.heldout_after) << " | " << fixed(100 * e.heldout_shrink, 0) << " % | " << fixed(e.loss_gain, 1)
-           << " / " << fixed(e.penalty, 1) << " | " << (has_delta_ic(e) ? fixed(delta_ic(e, rules.information_criterion), 1) : std::string("-")) << " | "
+        md << "| " << e.step << " | " << e.effect << " | " << e.channel << " | " << parameter_list(e.params) << " | "
+           << fixed_point(e.heldout_before, 2) << " -> " << fixed_point(e.heldout_after, 2) << " | "
+           << fixed_point(100 * e.heldout_shrink, 0) << " % | " << fixed_point(e.loss_gain, 1) << " / " << fixed_point(e.penalty, 1) << " | "
+           << (has_delta_ic(e) ? fixed_point(delta_ic(e, rules.information_criterion), 1) : std::string("-")) << " | "
            << (was_added(r, e) ? "**added**" : e.accepted ? "passed, not chosen" : "rejected")
            << (e.residual_step.significant ? ", leaves a level step" : "")
            << (e.shape_steps.steps_win ? ", two level steps fit better" : "")
@@ -396,12 +408,13 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     for (const auto& s : r.level_steps) {
         md << "\nLevel-step test, " << kChannelNames[channel_index(s.channel)] << ": two steps of "
-           << fixed(s.steps[0].size_counts, 3) << " counts at t = " << fixed(s.steps[0].t_s, 1) << " s and "
-           << fixed(s.steps[1].size_counts, 3) << " counts at t = " << fixed(s.steps[1].t_s, 1)
-           << " s: likelihood over the explanation " << fixed(s.statistic, 1) << " (price " << fixed(s.margin, 1)
-           << ", p " << fixed(s.rival_p, 3) << "); largest whitened impulse " << fixed(s.impulse, 2) << " (p "
-           << fixed(s.impulse_p, 3) << "); combined p = " << fixed(s.p_value, 3)
-           << "; the processes beside the steps " << fixed(s.process_gain, 1) << " over the floor (price " << fixed(s.process_margin, 1) << ")"
+           << fixed_point(s.steps[0].size_counts, 3) << " counts at t = " << fixed_point(s.steps[0].t_s, 1) << " s and "
+           << fixed_point(s.steps[1].size_counts, 3) << " counts at t = " << fixed_point(s.steps[1].t_s, 1)
+           << " s: likelihood over the explanation " << fixed_point(s.statistic, 1) << " (price " << fixed_point(s.margin, 1)
+           << ", p " << fixed_point(s.rival_p, 3) << "); largest whitened impulse " << fixed_point(s.impulse, 2) << " (p "
+           << fixed_point(s.impulse_p, 3) << "); combined p = " << fixed_point(s.p_value, 3)
+           << "; the processes beside the steps " << fixed_point(s.process_gain, 1) << " over the floor (price "
+           << fixed_point(s.process_margin, 1) << ")"
            << " (" << step_reading(s) << ")\n";
     }
     md << "\nNot identifiable from a static log:\n\n";

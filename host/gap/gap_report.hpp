@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "host/gap/diagnose.hpp"
@@ -20,9 +21,22 @@ std::string counted(std::size_t n, const std::string& noun);
 /// One sentence on why the verdict is what it is (the rule that decided it).
 std::string verdict_reason(const GapResult& result, const GapOptions& options);
 
+/// For a `none` verdict, the analysed channels whose calibrated eq. 1 time constant T is at least half the log's span
+/// (e^-2, 14 % of the rise, still to come at its end), in one sentence: eq. 1 still bends across the whole log there,
+/// so an effect this slow is taken up by the drift fit and leaves no gap to find. "" for any other verdict, or when
+/// every T is shorter.
+std::string slow_drift_sentence(const GapResult& result, const LogData& log);
+
 /// The model file's own effects in the base (`gap --model` with effects), one sentence: those refitted to the log
 /// with their parameters, and those kept as the file gives them; "" when the model has none.
 std::string given_effects_sentence(const GivenEffects& given);
+
+/// An estimated parameter where no spread says how far to trust it: four significant digits (a DNL transition,
+/// 507.4 counts, needs them), without an exponent (t2_s=11910, k_g_per_sqrt_s=0.00009776).
+std::string parameter_text(double value);
+
+/// "k=v k=v ...", each value as parameter_text() writes it: a candidate's parameters.
+std::string parameter_list(const std::vector<std::pair<std::string, double>>& params);
 
 /// An added effect's parameters: "k=v ..." as estimated on the whole log, then "(whole log; fitting part: k=v ...)"
 /// with those the held-out part judged; the fitting part's alone where nothing was estimated again. A second time

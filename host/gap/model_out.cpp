@@ -7,6 +7,7 @@
 
 #include "firmware/core/config.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "sim/model/white_noise.hpp"
 
 namespace driftlab::host::gap {
@@ -45,10 +46,11 @@ ModelOut model_out(const GapModel& model, const std::array<bool, kChannelCount>&
         const double sigma = model.base[i].sigma_n_counts;
         double raw_counts = sim::raw_std_counts_for_analog_sigma(sigma);
         if (raw_counts > 0.0 && raw_counts < sim::kMinCalibratedRawStdCounts) {
-            char note[200];
-            std::snprintf(note, sizeof note, "%s: white noise %.3g counts before the quantiser written as %.3g (raw spread %.2g counts, the least a model file takes)",
-                          kChannelNames[i], sigma, sim::analog_sigma_for_raw_std_counts(sim::kMinCalibratedRawStdCounts), sim::kMinCalibratedRawStdCounts);
-            out.notes.emplace_back(note);
+            out.notes.push_back(std::string(kChannelNames[i]) + ": white noise " + significant_plain(sigma, 3) +
+                                " counts before the quantiser written as " +
+                                significant_plain(sim::analog_sigma_for_raw_std_counts(sim::kMinCalibratedRawStdCounts), 3) +
+                                " (raw spread " + significant_plain(sim::kMinCalibratedRawStdCounts, 2) +
+                                " counts, the least a model file takes)");
             raw_counts = sim::kMinCalibratedRawStdCounts;
         }
         // The loader multiplies back by counts_per_unit; a quotient rounded down would read as just below the floor.

@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "host/gap/gap_report.hpp"
 #include "host/gap/sim_chain.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
 
@@ -56,6 +58,17 @@ double ParameterSpread::quantile(double q) const {
     return values[lo] + (pos - static_cast<double>(lo)) * (values[hi] - values[lo]);
 }
 
+namespace {
+
+// A value beside the simulated logs' middle 68 %: to the digits half that range warrants (their scatter is the
+// estimate's), or as a lone parameter where the range is one value.
+std::string within_spread(double value, const ParameterSpread& p) {
+    const double half_width = 0.5 * (p.quantile(0.84) - p.quantile(0.16));
+    return half_width > 0.0 ? to_precision_of(value, half_width) : parameter_text(value);
+}
+
+}  // namespace
+
 std::vector<std::string> spread_lines(const VerdictStability& s) {
     std::vector<std::string> lines;
     for (std::size_t k = 0; k < s.params.size();) {
@@ -66,23 +79,19 @@ std::vector<std::string> spread_lines(const VerdictStability& s) {
         std::string line = first.effect + " on " + first.channel;
         if (first.logs_added == 0) {
             line += ": added again in none of the " + std::to_string(s.logs) + " logs (";
-            for (std::size_t i = k; i < end; ++i) {
-                char text[120];
-                std::snprintf(text, sizeof text, "%s%s %.4g", i > k ? ", " : "", s.params[i].param.c_str(), s.params[i].estimate);
-                line += text;
-            }
+            for (std::size_t i = k; i < end; ++i)
+                line += (i > k ? ", " : "") + s.params[i].param + " " + parameter_text(s.params[i].estimate);
             lines.push_back(line + ")");
         } else {
             line += " (" + std::to_string(first.logs_added) + " of " + std::to_string(s.logs) + " logs):";
             for (std::size_t i = k; i < end; ++i) {
                 const ParameterSpread& p = s.params[i];
-                char text[200];
+                line += (i > k ? "; " : " ") + p.param + " ";
                 if (p.values.empty())
-                    std::snprintf(text, sizeof text, "%s %s %.4g -> not found again", i > k ? ";" : "", p.param.c_str(), p.estimate);
+                    line += parameter_text(p.estimate) + " -> not found again";
                 else
-                    std::snprintf(text, sizeof text, "%s %s %.4g -> %.3g to %.3g (median %.3g)", i > k ? ";" : "", p.param.c_str(),
-                                  p.estimate, p.quantile(0.16), p.quantile(0.84), p.quantile(0.5));
-                line += text;
+                    line += within_spread(p.estimate, p) + " -> " + within_spread(p.quantile(0.16), p) + " to " +
+                            within_spread(p.quantile(0.84), p) + " (median " + within_spread(p.quantile(0.5), p) + ")";
                 if (!p.values.empty() && p.values.size() < p.logs_added) line += " in " + std::to_string(p.values.size());
             }
             lines.push_back(line);

@@ -49,7 +49,8 @@ std::string stability_sentence(const VerdictStability& stability, const std::str
 inline constexpr const char* kSpreadHeading = "estimates on those logs (middle 68 %, where each added the effect again):";
 
 /// The middle 68 % of the simulated logs' estimates (about one standard deviation either side), one line per added
-/// effect: "gauss_markov on gyro (19 of 20 logs): sigma_dps 0.02525 -> 0.0213 to 0.0291 (median 0.0248); ...".
+/// effect, each value to the digits half that range warrants (parameter_text() where there is no range):
+/// "gauss_markov on gyro (19 of 20 logs): sigma_dps 0.0253 -> 0.0213 to 0.0291 (median 0.0248); ...".
 std::vector<std::string> spread_lines(const VerdictStability& stability);
 
 /// The plain-text block the terminal and a model file's comments share: "verdict stability: " and the sentence, then

@@ -5,6 +5,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
 #include <string_view>
 
 namespace driftlab::host {
@@ -16,6 +19,15 @@ namespace {
 std::string without_negative_zero(const char* text) {
     if (text[0] == '-' && std::string_view(text + 1).find_first_not_of("0.") == std::string_view::npos) return text + 1;
     return text;
+}
+
+// `value` fixed-point with its last digit at 10^last, where that reads plainly: a last digit from 1e-12 up and a
+// magnitude below 1e9 (a wider value is clearer with an exponent).
+std::optional<std::string> plain_to_digit(double value, int last) {
+    if (last < -12 || !(std::fabs(value) < 1e9)) return std::nullopt;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -last), value);
+    return without_negative_zero(buf);
 }
 
 }  // namespace
@@ -44,14 +56,29 @@ std::string to_precision_of(double value, double uncertainty) {
         return buf;
     }
     const int last = static_cast<int>(std::floor(std::log10(uncertainty))) - 1;  // power of ten of the last digit
-    if (last >= -12 && std::fabs(value) < 1e9 && uncertainty < 1e9) {
-        std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -last), value);
-        return without_negative_zero(buf);
-    } else {
-        const int lead = value != 0.0 ? static_cast<int>(std::floor(std::log10(std::fabs(value)))) : last + 1;
-        std::snprintf(buf, sizeof buf, "%.*e", std::clamp(lead - last, 0, 16), value);
-    }
+    if (uncertainty < 1e9)
+        if (const auto plain = plain_to_digit(value, last)) return *plain;
+    const int lead = value != 0.0 ? static_cast<int>(std::floor(std::log10(std::fabs(value)))) : last + 1;
+    std::snprintf(buf, sizeof buf, "%.*e", std::clamp(lead - last, 0, 16), value);
     return buf;
+}
+
+std::string significant_plain(double value, int digits) {
+    if (value == 0.0) return "0";
+    if (!std::isfinite(value) || digits < 1) return significant(value, digits);
+    // Rounded by %e first, whose exponent is then the leading digit's (9.9996 at 4 digits leads at 10), and whose
+    // digits are the only ones kept (11912.3 at 4 digits is 11910, where %.0f alone would write every digit).
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*e", digits - 1, value);
+    const int lead = std::atoi(std::strchr(buf, 'e') + 1);
+    const auto plain = plain_to_digit(std::strtod(buf, nullptr), lead - digits + 1);
+    if (!plain) return significant(value, digits);
+    std::string text = *plain;
+    if (text.find('.') != std::string::npos) {
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.') text.pop_back();
+    }
+    return text;
 }
 
 std::string significant(double value, int digits) {

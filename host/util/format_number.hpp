@@ -22,6 +22,11 @@ std::string to_precision_of(double value, double uncertainty);
 /// `value` to `digits` significant digits (printf %g): a spacing or a p-value in a sentence, not a number to read back.
 std::string significant(double value, int digits);
 
+/// `value` to at most `digits` significant digits, trailing zeros dropped as %g drops them, but without %g's exponent
+/// where to_precision_of() writes none: a value without an uncertainty to round to, for people (at 4 digits
+/// 11912.3 -> 11910, 0.00017351 -> 0.0001735, 30.0 -> 30; 3.1e+205 as %g writes it).
+std::string significant_plain(double value, int digits);
+
 /// `value` with `decimals` digits after the point (printf %f), for tables and sentences.
 std::string fixed_point(double value, int decimals);
 

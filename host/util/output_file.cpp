@@ -11,6 +11,19 @@
 
 namespace driftlab::host {
 
+namespace {
+
+// `p` made absolute, its links, "." and ".." resolved as far as it exists; empty where that fails.
+std::filesystem::path resolved_path(const std::string& p) {
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(p, ec);
+    if (ec) return {};
+    std::filesystem::path out = std::filesystem::weakly_canonical(absolute, ec);
+    return ec ? std::filesystem::path{} : out;
+}
+
+}  // namespace
+
 void check_output_file(const std::string& path, const std::string& what) {
     std::error_code ec;
     const bool existed = std::filesystem::exists(path, ec);
@@ -34,6 +47,18 @@ void refuse_replacing(const std::string& path, const std::string& what, const st
     if (!overwrite && std::filesystem::exists(path, ec))
         throw UsageError(path + ": a " + what + " is already there; name another " + option +
                          ", or pass --overwrite to replace it");
+}
+
+void refuse_two_outputs_in_one_file(const std::string& path, const std::string& option, const std::string& other,
+                                    const std::string& other_option) {
+    if (path.empty() || other.empty()) return;
+    // Outputs need not exist yet, which std::filesystem::equivalent() requires: their paths are compared once
+    // resolved as far as they exist (a folder's link, "."), and a hard link to an existing file by identity.
+    std::error_code ec;
+    const std::filesystem::path resolved = resolved_path(path);
+    if (std::filesystem::equivalent(path, other, ec) || (!resolved.empty() && resolved == resolved_path(other)))
+        throw UsageError(option + ": '" + path + "' is a file " + other_option + " writes ('" + other +
+                         "'); one would be written over the other");
 }
 
 void write_output_file(const std::string& path, const std::string& text, const std::string& what) {

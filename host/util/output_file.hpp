@@ -20,6 +20,12 @@ void refuse_writing_over_input(const std::string& output, const std::string& opt
 /// by running a command once more from the shell's history. `what` names the file ("log"), `option` its option.
 void refuse_replacing(const std::string& path, const std::string& what, const std::string& option, bool overwrite);
 
+/// Throws UsageError when two outputs of one command, `path` (of `option`) and `other` (of `other_option`), are one
+/// file, whether it exists yet or not: the same path once links, "." and ".." are resolved, or one file by identity.
+/// The later write would replace the earlier one's file.
+void refuse_two_outputs_in_one_file(const std::string& path, const std::string& option, const std::string& other,
+                                    const std::string& other_option);
+
 /// Writes `text` to `path` through a temporary file beside it and a rename, so that a reader never sees a part of
 /// it and an earlier file stays as it was when writing fails. Throws DeviceError as above.
 void write_output_file(const std::string& path, const std::string& text, const std::string& what);

@@ -520,6 +520,39 @@ TEST(GapCli, NeitherTheModelFileNorTheLogIsWrittenOver) {
     EXPECT_NE(plot.output.find("is the model file this command reads"), std::string::npos) << plot.output;
 }
 
+// `--report rep --model-out rep/gap.md` had written the model file over the report it had just written (exit 0).
+// One output aimed at another's file is refused before the diagnosis, whether the file exists yet or not and
+// whatever spelling or folder link names it; a model file elsewhere in the report's folder is no conflict.
+TEST(GapCli, TheModelFileOutIsNoneOfTheReportsFiles) {
+    TempDir dir("gapmodelreport");
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "-o", log}, dir.path()).exit_code, 0);
+    const std::string not_yet = (dir.path() / "rep" / "." / "gap.md").string();
+    const RunResult fresh =
+        run_driftlab({"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out", not_yet}, dir.path());
+    EXPECT_EQ(fresh.exit_code, 2) << fresh.output;
+    EXPECT_NE(fresh.output.find("--model-out: '" + not_yet + "' is a file --report writes ('" + dir.file("rep") + "/gap.md')"),
+              std::string::npos) << fresh.output;
+    EXPECT_EQ(fresh.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
+    EXPECT_FALSE(std::filesystem::exists(dir.file("rep"))) << "nothing written";
+
+    std::filesystem::create_directory(dir.file("rep"));
+    std::filesystem::create_directory_symlink(dir.file("rep"), dir.file("alias"));
+    const std::string plot = "an earlier plot\n";
+    std::ofstream(dir.file("rep/gap_mean_accel_z.png")) << plot;
+    const RunResult linked = run_driftlab({"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out",
+                                           dir.file("alias/gap_mean_accel_z.png")}, dir.path());
+    EXPECT_EQ(linked.exit_code, 2) << linked.output;
+    EXPECT_NE(linked.output.find("is a file --report writes"), std::string::npos) << linked.output;
+    EXPECT_EQ(read_text(dir.file("rep/gap_mean_accel_z.png")), plot);
+
+    const RunResult beside = run_driftlab({"gap", log, "--replicates", "10", "--locate-only", "--report", dir.file("rep"),
+                                           "--model-out", dir.file("alias/m.toml")}, dir.path());
+    ASSERT_EQ(beside.exit_code, 0) << beside.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("rep/gap.md")));
+    EXPECT_NE(read_text(dir.file("rep/m.toml")).find("# driftlab gap "), std::string::npos);
+}
+
 // The report's words (battery, cell, replicate, practical margin, shrink...) are said before its tables, and a table
 // without rows is "None" and why, not a header alone. The log may sit in the report's folder.
 TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
@@ -533,7 +566,15 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
     ASSERT_NE(gap.output.find("and beyond the margin): 0\n"), std::string::npos) << gap.output;
     // A hil log's times are evenly spaced but for their rounding (1.5e-13 %), which had been printed as a spread.
     EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the output period)\n"), std::string::npos) << gap.output;
+    // 1500 s is under twice the paper's accelerometer T (about 950 s), not the gyro's (411 s): a `none` that says a
+    // slow effect there would be in eq. 1's fit, for the accelerometers alone.
+    const std::size_t slow = gap.output.find("\nslow drift: the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = ");
+    ASSERT_NE(slow, std::string::npos) << gap.output;
+    const std::string slow_line = gap.output.substr(slow + 1, gap.output.find('\n', slow + 1) - slow - 1);
+    EXPECT_NE(slow_line.find(" s on accel_"), std::string::npos) << slow_line;
+    EXPECT_EQ(slow_line.find(" s on gyro"), std::string::npos) << slow_line;
     const std::string md = read_text(dir.file("rep/gap.md"));
+    EXPECT_NE(md.find("\n\nSlow drift: the paper's drift model, eq. 1"), std::string::npos) << md.substr(0, 800);
     const std::size_t guide = md.find("## How to read this report\n\n");
     ASSERT_NE(guide, std::string::npos) << md.substr(0, 800);
     for (const char* word : {"*replicates*", "*battery*", "*cell*", "*located*", "*practical margin*", "*gap score*", "*held-out part*",

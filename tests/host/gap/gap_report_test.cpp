@@ -66,7 +66,7 @@ TEST(GapReport, ASecondTimeConstantBeyondTheRecordIsSaidToBeOneWithItsSlope) {
     const std::string beyond = estimate_text(e, 1500.0);
     EXPECT_NE(beyond.find("c3_dps=-0.075 t2_s=7500 (whole log; fitting part: c3_dps=-0.22 t2_s=7500)"), std::string::npos) << beyond;
     EXPECT_NE(beyond.find("t2 is beyond 3x the log's 1500 s"), std::string::npos) << beyond;
-    EXPECT_NE(beyond.find("initial slope, -1e-05 deg/s per s"), std::string::npos) << beyond;  // -0.075 / 7500
+    EXPECT_NE(beyond.find("initial slope, -0.00001 deg/s per s"), std::string::npos) << beyond;  // -0.075 / 7500, no exponent
     e.whole_log_params = {{"c3_dps", -0.075}, {"t2_s", 4000.0}};
     EXPECT_EQ(estimate_text(e, 1500.0).find("beyond"), std::string::npos) << estimate_text(e, 1500.0);
     e.effect = "gauss_markov";
@@ -85,6 +85,28 @@ TEST(GapReport, ASizeTheWholeLogSetsToNearlyNothingIsSaidToBeSo) {
         << estimate_text(e, 1500.0);
     e.whole_log_params = {{"k_dps_per_sqrt_s", 2e-4}};
     EXPECT_EQ(estimate_text(e, 1500.0).find("under 1 %"), std::string::npos) << estimate_text(e, 1500.0);
+}
+
+// A `none` verdict on a log shorter than twice eq. 1's T: the drift fit bends across the whole log and could have
+// taken a slow effect with it. Said for the analysed channels with T at least half the span, for `none` alone.
+TEST(GapReport, ANoneVerdictSaysWhenEq1IsSlowEnoughToAbsorbASlowEffect) {
+    GapResult r;
+    r.verdict = "none";
+    r.channels = {true, true, false, false};
+    r.base.base[0].drift.tau_s = 411.0;   // the paper's gyro: settled within 1500 s
+    r.base.base[1].drift.tau_s = 953.0;   // the paper's accel_x: over half of 1500 s
+    r.base.base[2].drift.tau_s = 5000.0;  // not analysed
+    LogData log;
+    log.t_s = {0.0, 1.0, 1500.0};
+    const std::string slow = slow_drift_sentence(r, log);
+    EXPECT_EQ(slow.rfind("the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = 953 s on accel_x, at least "
+                         "half the log's 1500 s, so it still bends at the log's end", 0), 0u) << slow;
+    EXPECT_NE(slow.find("taken up by the drift fit"), std::string::npos) << slow;
+    log.t_s = {0.0, 1.0, 4000.0};  // Fig. 3's length: both settle within it
+    EXPECT_EQ(slow_drift_sentence(r, log), "");
+    log.t_s = {0.0, 1.0, 1500.0};
+    r.verdict = "gauss_markov";  // an effect was added: the gap was found, not absorbed
+    EXPECT_EQ(slow_drift_sentence(r, log), "");
 }
 
 TEST(GapReport, ALocatedCellShowsTheDigitsItsIntervalWarrants) {

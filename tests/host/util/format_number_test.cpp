@@ -64,5 +64,28 @@ TEST(FixedPoint, AValueThatRoundsToZeroHasNoSign) {
     EXPECT_EQ(to_precision_of(-0.0003, 0.005), "-0.0003");
 }
 
+// gap's parameters were printed with %.4g: a second time constant read "t2_s 1.191e+04" and a walk's size
+// "9.776e-05". The same digits, at most, without the exponent; the digits %e rounds to, not every digit of %f.
+TEST(SignificantPlain, AtMostTheDigitsAndNoExponentForOrdinaryMagnitudes) {
+    EXPECT_EQ(significant_plain(11912.3, 4), "11910");
+    EXPECT_EQ(significant_plain(145812.3, 4), "145800");
+    EXPECT_EQ(significant_plain(9.776e-05, 4), "0.00009776");
+    EXPECT_EQ(significant_plain(-0.34061, 4), "-0.3406");
+    EXPECT_EQ(significant_plain(507.44, 4), "507.4");
+    EXPECT_EQ(significant_plain(30.0, 4), "30");       // no trailing zeros, as %g
+    EXPECT_EQ(significant_plain(0.0250, 3), "0.025");
+    EXPECT_EQ(significant_plain(9.99996, 4), "10");     // rounding carries into a new leading digit
+    EXPECT_EQ(significant_plain(-1.0e-5, 2), "-0.00001");
+    EXPECT_EQ(significant_plain(-0.0, 4), "0");
+}
+
+TEST(SignificantPlain, BeyondToPrecisionOfsPlainRangeItIsPercentG) {
+    EXPECT_EQ(significant_plain(3.1e205, 4), "3.1e+205");
+    EXPECT_EQ(significant_plain(2.5e9, 3), "2.5e+09");
+    EXPECT_EQ(significant_plain(1.234e-11, 4), "1.234e-11");  // its last digit at 1e-14
+    EXPECT_EQ(significant_plain(1.2e-11, 2), "0.000000000012");
+    EXPECT_EQ(significant_plain(std::nan(""), 4), "nan");
+}
+
 }  // namespace
 }  // namespace driftlab::host
