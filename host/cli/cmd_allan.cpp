@@ -297,7 +297,7 @@ void register_allan(CLI::App& app) {
         ->check(positive_number());
     cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, dps, mdps, deg/h, rad/s, g, mg, m/s^2, cm/s^2, mm/s^2, or any name: then no physical terms)");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
-    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->capture_default_str()->check(positive_number());
+    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log (default 10)")->check(positive_number());
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")->capture_default_str();
     auto* keep = cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
     cmd->add_flag("--remove-drift", o->remove_drift,
