@@ -70,8 +70,9 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
             throw UsageError(path + ": a " + what + " is already there; name another " + option +
                              ", or pass --overwrite to replace it");
     }
-    make_folder_of(options.log_path, "log");
-    make_folder_of(capture_path, "capture");
+    NewFolders folders;  // removed again, when empty, if the run is refused before it writes
+    folders.make_folder_of(options.log_path, "log");
+    folders.make_folder_of(capture_path, "capture");
     check_output_file(options.log_path, "log");
     check_output_file(capture_path, "capture");
     SerialPort port(options.port, options.baud);
@@ -98,6 +99,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
         throw DeviceError(options.port, problem);
     }
     event("start");
+    folders.keep();
 
     RecordSummary summary;
     const auto t0 = Clock::now();
