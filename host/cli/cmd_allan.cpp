@@ -170,7 +170,7 @@ report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, co
     p.x_label = "tau [s]";
     p.y_label = "overlapping ADEV [" + u.name + "]";
     p.log_x = p.log_y = true;
-    const stats::AllanCurves& main = r.drift_removed ? *r.drift_removed : r.raw;
+    const stats::AllanCurves& main = r.primary();
     const stats::AnalysedCurve& c = main.curves.front();
     report::PlotSeries band{r.drift_removed ? "drift removed (68 % CI)" : "ADEV (68 % CI)", c.curve.tau_s, c.curve.dev,
                             c.ci_low, c.ci_high, report::SeriesStyle::error_bars, false, "#1f77b4", 1.5};
@@ -253,14 +253,15 @@ void run(const AllanCommandOptions& o) {
             throw DataError(o.path, 0, "series '" + s.name + "': " + e.what());
         }
         const UnitInfo u = s.channel ? unit_of_channel(*s.channel) : unit_of_name(o.unit);
+        const std::optional<std::string> packing = stats::packing_caveat(r, r.primary().curves.front());
         if (o.json) {
-            const stats::AllanCurves& main = r.drift_removed ? *r.drift_removed : r.raw;
-            json c = version_json(main, u);
+            json c = version_json(r.primary(), u);
             c["tau0_s"] = tau0;
             c["samples"] = r.samples;
             c["gap_samples"] = r.gap_samples;
             c["packed_samples"] = r.packed_samples;
             c["packed_most_slots"] = r.packed_most_slots;
+            c["packing_warning"] = packing ? json(*packing) : json(nullptr);
             c["drift_removed"] = r.drift_removed.has_value();
             c["drift_status"] = r.drift_status;
             if (r.drift) c["drift"] = {{"C1", r.drift->c1}, {"C2", r.drift->c2}, {"T_s", r.drift->t_s}};
@@ -269,11 +270,7 @@ void run(const AllanCommandOptions& o) {
         } else {
             std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(), s.name.c_str(),
                         tau0, r.samples, r.gap_samples, r.drift_removed ? "removed (eq. 1)" : r.drift_status.c_str());
-            if (r.packed_samples > 0)
-                std::printf("  warning: %zu samples came faster than tau0 (bursts, or a record that changes its rate) "
-                            "and were placed 2 to %zu slots (%.6g s) after their time; a gap right after such a stretch "
-                            "is closed up\n",
-                            r.packed_samples, r.packed_most_slots, static_cast<double>(r.packed_most_slots) * tau0);
+            if (packing) std::printf("  warning: %s\n", packing->c_str());
             if (r.drift_removed) print_version("drift removed", *r.drift_removed, u, r.longest_gap_free_s);
             print_version(r.drift_removed ? "raw" : "as given", r.raw, u, r.longest_gap_free_s);
         }
@@ -297,7 +294,7 @@ void register_allan(CLI::App& app) {
         ->check(positive_number());
     cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, dps, mdps, deg/h, rad/s, g, mg, m/s^2, cm/s^2, mm/s^2, or any name: then no physical terms)");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
-    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log")->capture_default_str()->check(positive_number());
+    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log (default 10)")->check(positive_number());
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")->capture_default_str();
     auto* keep = cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
     cmd->add_flag("--remove-drift", o->remove_drift,

@@ -127,7 +127,8 @@ void run_decode(const DecodeOptions& o) {
     // replaced an intact recording with fewer rows.
     refuse_replacing(o.output, "log", "-o", o.overwrite);
     auto reader = std::make_unique<io::CaptureReader>(o.capture);
-    make_folder_of(o.output, "log");
+    NewFolders folders;  // taken away again, when empty, if no log can be rebuilt
+    folders.make_folder_of(o.output, "log");
     auto assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
     auto crc_failures = std::make_unique<CrcFailures>();
     bool started = feed(o, *reader, *assembler, std::nullopt, *crc_failures);
@@ -143,6 +144,7 @@ void run_decode(const DecodeOptions& o) {
                                       "handshake), so there is no log to rebuild");
     }
     assembler->finish();
+    folders.keep();
     for (const auto& d : reader->damaged())
         std::fprintf(stderr, "driftlab: warning: %s: byte offsets %llu..%llu: damaged, %llu bytes skipped to the next whole "
                              "records (frames in them count as lost)\n",

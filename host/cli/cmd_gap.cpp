@@ -344,7 +344,7 @@ void register_gap(CLI::App& app) {
         ->check(positive_number());
     cmd->add_option("--block", o->block, "Plain recordings: samples averaged per output (an order-0 smoother of that "
                                          "window; default 1)")
-        ->check(CLI::Range(1, static_cast<int>(proto::kConversionsPerOutputMax)));
+        ->check(whole_number_in(1, proto::kConversionsPerOutputMax));
     cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
                     "the file's values, mean shapes refitted to the log; default: the paper's unit");
     cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start")
@@ -359,14 +359,13 @@ void register_gap(CLI::App& app) {
                     "(e.g. 0.5 for what a shock leaves after the rail), joined as with --exclude")
         ->check(non_negative_number());
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
-    cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(CLI::Range(10, 100000));
+    cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(whole_number_in(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)")->check(seed_number());
     const CLI::Option* fit_fraction =
         cmd->add_option("--fit-fraction", o->fit_fraction, "With --holdout forecast: the first part of the log (by time) used to fit "
                                                            "candidates (default 0.6; refused with the interleaved design, which "
                                                            "does not split at a fraction)")
-            ->check(finite_value())
-            ->check(CLI::Range(0.3, 0.85));
+            ->check(number_in(0.3, 0.85));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
     cmd->add_flag("--search-diffuse", o->search_diffuse,
@@ -379,7 +378,7 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--stability", o->stability,
                     "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness) "
                     "and how the added effects' estimates scatter over them (N times the diagnosis's time)")
-        ->check(CLI::Range(0, 1000));
+        ->check(whole_number_in(0, 1000));
     cmd->add_option("--model-out", o->model_out,
                     "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as a model file "
                     "for driftlab hil --model and gap --model")

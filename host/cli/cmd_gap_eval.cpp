@@ -173,8 +173,7 @@ void register_gap_eval(CLI::App& app) {
     // compare), and tells nothing about detection.
     CLI::Option* levels = cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50, at most 16 (default 0.5,1,2,4)")
         ->delimiter(',')
-        ->check(positive_number())
-        ->check(CLI::Range(0.0, 16.0));
+        ->check(number_in(0.0, 16.0, Bound::open));
     CLI::Option* pairs =
         cmd->add_option("--pairs", o->pairs,
                         "Two-effect logs: pairs A+B of generators (or effects) planted together, diagnosed as `driftlab gap` "
@@ -182,11 +181,10 @@ void register_gap_eval(CLI::App& app) {
                             " in a run of all effects, none with --effects)")
             ->delimiter(',');
     cmd->add_option("--pair-level", o->pair_level, "Each of a pair at this multiple of its own a_50, at most 16 (default 2)")
-        ->check(positive_number())
-        ->check(CLI::Range(0.0, 16.0));
+        ->check(number_in(0.0, 16.0, Bound::open));
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
                     "Clean logs per seed for the false-positive rate (default: as many as sizes)")
-        ->check(CLI::Range(1, 1000));
+        ->check(whole_number_in(1, 1000));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
     cmd->add_flag("--shipped", o->shipped,

@@ -406,11 +406,11 @@ void register_hil(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s] (default: the preset's)")->check(positive_number());
     cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds (default: the preset's, else the model's)");
-    cmd->add_option("--window", opts->window, "Least-squares window N [conversions] (default: the preset's, else the model's)")->check(CLI::Range(1, 64));
+    cmd->add_option("--window", opts->window, "Least-squares window N [conversions] (default: the preset's, else the model's)")->check(whole_number_in(1, 64));
     cmd->add_option("--conversions", opts->conversions,
                     "Conversions per channel per output (10 ms outputs need <= 12: docs/firmware.md; default: the preset's, else the model's)")
-        ->check(CLI::Range(1, 64));
-    cmd->add_option("--order", opts->order, "Least-squares fit order (default: the preset's, else the model's)")->check(CLI::Range(0, 1));
+        ->check(whole_number_in(1, 64));
+    cmd->add_option("--order", opts->order, "Least-squares fit order (default: the preset's, else the model's)")->check(whole_number_in(0, 1));
     cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s] (default: the preset's)")
         ->check(non_negative_number());
     cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)");
@@ -428,7 +428,7 @@ void register_hil(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)");
     cmd->add_option("--gdb", opts->gdb_port, "--target avr: start simavr's gdb stub on this TCP port and wait for "
-                                             "avr-gdb (docs/avr-in-the-loop.md)")->check(CLI::Range(1, 65535));
+                                             "avr-gdb (docs/avr-in-the-loop.md)")->check(whole_number_in(1, 65535));
     cmd->add_flag("--cycles", opts->cycles, "--target avr: also print the firmware's cycle budget (ISR and fit "
                                             "cycles, CPU load, stack) at this configuration");
     cmd->callback([opts] { run_hil_command(*opts); });

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -51,9 +52,15 @@ void print_file_notes(const fit::FileAnalysis& file, bool json);
 void throw_if_failed(const fit::FileAnalysis& file, bool reasons_printed);
 
 /// Checks for numeric options. CLI11's PositiveNumber and NonNegativeNumber state their range as 0 to the largest
-/// double written out in full; these say what is wanted and what was given (number_checks.cpp).
+/// double written out in full; these say what is wanted and what was given, in --help too (number_checks.cpp).
 const CLI::Validator& positive_number();
 const CLI::Validator& non_negative_number();
+/// Whether an interval's end belongs to it.
+enum class Bound { closed, open };
+/// A finite number from `low` (itself too unless `low_bound` is open) to `high`; CLI::Range took "nan".
+CLI::Validator number_in(double low, double high, Bound low_bound = Bound::closed);
+/// A whole number from `low` to `high`, for integer options ("3.5" and "65" named as such, not as a failed conversion).
+CLI::Validator whole_number_in(long long low, long long high);
 /// Any finite number (a time bound may be negative; "nan" compared false with every time and cut nothing).
 const CLI::Validator& finite_value();
 /// A path that is not empty ("--report ''" had been taken for no report at all).
@@ -67,6 +74,9 @@ std::uint16_t output_period_ms(double period_s, const std::string& option);
 
 /// The whole of `text` as a finite number; none for anything else (trailing text, "nan", "inf").
 std::optional<double> finite_number(const std::string& text);
+
+/// The formatter of every command's help: an option's type and its checks read as one phrase (help_formatter.cpp).
+std::shared_ptr<CLI::Formatter> help_formatter();
 
 /// --holdout interleaved|forecast, which gap and gap-eval share (defined in cmd_gap.cpp).
 void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout);

@@ -1,4 +1,6 @@
-// Option checks for numbers and paths; see commands.hpp.
+// Option checks for numbers and paths; see commands.hpp. A check's description is what --help shows after the
+// option's type (help_formatter.cpp): its range in the words of its refusal ("FLOAT > 0"), or none where the type
+// says enough (a finite FLOAT, a TEXT path, a UINT seed).
 #include <cmath>
 #include <string>
 
@@ -10,14 +12,15 @@
 namespace driftlab::host::cli {
 namespace {
 
-CLI::Validator number_check(const char* name, bool zero_allowed) {
+CLI::Validator number_check(bool zero_allowed) {
+    const std::string range = zero_allowed ? ">= 0" : "> 0";
     return CLI::Validator(
-        [zero_allowed](std::string& text) -> std::string {
+        [zero_allowed, range](std::string& text) -> std::string {
             const std::optional<double> v = finite_number(text);
             const bool ok = v && (zero_allowed ? *v >= 0.0 : *v > 0.0);
-            return ok ? std::string() : std::string("expected a number ") + (zero_allowed ? ">= 0" : "> 0") + ", got '" + text + "'";
+            return ok ? std::string() : "expected a number " + range + ", got '" + text + "'";
         },
-        name);
+        range);
 }
 
 }  // namespace
@@ -44,12 +47,12 @@ std::optional<double> finite_number(const std::string& text) {
 }
 
 const CLI::Validator& positive_number() {
-    static const CLI::Validator check = number_check("POSITIVE", false);
+    static const CLI::Validator check = number_check(false);
     return check;
 }
 
 const CLI::Validator& non_negative_number() {
-    static const CLI::Validator check = number_check("NONNEGATIVE", true);
+    static const CLI::Validator check = number_check(true);
     return check;
 }
 
@@ -58,13 +61,43 @@ const CLI::Validator& finite_value() {
         [](std::string& text) -> std::string {
             return finite_number(text) ? std::string() : "expected a finite number, got '" + text + "'";
         },
-        "NUMBER");
+        "");
     return check;
+}
+
+CLI::Validator number_in(double low, double high, Bound low_bound) {
+    const bool open = low_bound == Bound::open;
+    const std::string range = std::string(open ? "(" : "[") + significant(low, 6) + ", " + significant(high, 6) + "]";
+    return CLI::Validator(
+        [low, high, open, range](std::string& text) -> std::string {
+            // CLI::Range had let "nan" through: it compares false with both ends.
+            const std::optional<double> v = finite_number(text);
+            const bool ok = v && (open ? *v > low : *v >= low) && *v <= high;
+            return ok ? std::string() : "expected a number in " + range + ", got '" + text + "'";
+        },
+        "in " + range);
+}
+
+CLI::Validator whole_number_in(long long low, long long high) {
+    const std::string range = "[" + std::to_string(low) + ", " + std::to_string(high) + "]";
+    return CLI::Validator(
+        [low, high, range](std::string& text) -> std::string {
+            std::size_t used = 0;
+            long long v = 0;
+            try {
+                v = std::stoll(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            const bool ok = used > 0 && used == text.size() && v >= low && v <= high;
+            return ok ? std::string() : "expected a whole number in " + range + ", got '" + text + "'";
+        },
+        "in " + range);
 }
 
 const CLI::Validator& non_empty_path() {
     static const CLI::Validator check(
-        [](std::string& text) -> std::string { return text.empty() ? "expected a path, got ''" : std::string(); }, "PATH");
+        [](std::string& text) -> std::string { return text.empty() ? "expected a path, got ''" : std::string(); }, "");
     return check;
 }
 
@@ -77,7 +110,7 @@ const CLI::Validator& seed_number() {
             if (digits && (text.size() < 20 || text <= "18446744073709551615")) return {};
             return "expected a whole number from 0 to 18446744073709551615, got '" + text + "'";
         },
-        "SEED");
+        "");
     return check;
 }
 

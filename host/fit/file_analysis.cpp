@@ -12,20 +12,35 @@
 namespace driftlab::host::fit {
 namespace {
 
-/// A sample period given for a file that carries its own time had been dropped without a word (fit LOG
-/// --sample-period 7 fitted the log's 1 s rows as if nothing was said): one that contradicts the rows is refused,
-/// one that agrees is noted as unused. `series` share the file's time axis.
-void check_sample_period(const std::vector<Series>& series, double period_s, bool canonical_log, FileAnalysis& out) {
+std::string own_time_of(const FileAnalysis& out) {
+    return out.canonical_log ? "a driftlab log, timed by its own t_s column" : "a table timed by its own time column";
+}
+
+/// An option that sets a table's time given for a file that carries its own (`own_time`) had been dropped without a
+/// word (fit LOG --sample-period 7 fitted the log's 1 s rows as if nothing was said; --time-column seq likewise):
+/// one that contradicts the file is refused, saying what it is `for_what`, one that agrees is noted as unused.
+void refuse_or_note_unused(const std::string& option, bool agrees, const std::string& own_time,
+                           const std::string& for_what, FileAnalysis& out) {
+    if (!agrees)
+        throw UsageError(option + " contradicts " + out.path + ": it is " + own_time +
+                         "; leave the option out (it is for " + for_what + ")");
+    out.notes.push_back(option + " is not used: " + out.path + " is " + own_time);
+}
+
+/// `series` share the file's time axis.
+void check_sample_period(const std::vector<Series>& series, double period_s, FileAnalysis& out) {
     if (series.empty() || series.front().index_period_s > 0.0) return;  // the period times the rows: used
     const std::vector<double>& t_s = series.front().t_s;
-    const std::string option = "--sample-period/--tau0 " + significant(period_s, 6) + " s";
-    const std::string own_time = canonical_log ? "a driftlab log, timed by its own t_s column"
-                                               : "a table timed by its own time column";
-    if (!stats::period_agrees(t_s, period_s))
-        throw UsageError(option + " contradicts " + out.path + ": it is " + own_time + ", whose rows are " +
-                         stats::spacing_text(t_s) + "; leave the option out (it is for tables without a time column)");
-    out.notes.push_back(option + " is not used: " + out.path + " is " + own_time + ", whose rows are " +
-                        stats::spacing_text(t_s));
+    refuse_or_note_unused("--sample-period/--tau0 " + significant(period_s, 6) + " s",
+                          stats::period_agrees(t_s, period_s),
+                          own_time_of(out) + ", whose rows are " + stats::spacing_text(t_s),
+                          "tables without a time column", out);
+}
+
+/// A table is timed by the column named; a log only ever by its t_s.
+void check_time_column(const std::string& column, FileAnalysis& out) {
+    if (out.canonical_log)
+        refuse_or_note_unused("--time-column " + column, column == "t_s", own_time_of(out), "plain tables", out);
 }
 
 }  // namespace
@@ -60,9 +75,10 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
     FileAnalysis out;
     out.path = request.path;
     out.canonical_log = is_canonical_log(request.path);
+    if (!request.time_column.empty()) check_time_column(request.time_column, out);
     const std::vector<Series> all =
         load_series(request.path, request.names, request.time_column, request.sample_period_s.value_or(1.0));
-    if (request.sample_period_s) check_sample_period(all, *request.sample_period_s, out.canonical_log, out);
+    if (request.sample_period_s) check_sample_period(all, *request.sample_period_s, out);
     for (const Series& s : all) {
         SeriesOutcome o;
         o.name = s.name;

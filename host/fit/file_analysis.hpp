@@ -14,7 +14,9 @@ namespace driftlab::host::fit {
 struct FileAnalysisRequest {
     std::string path;
     std::vector<std::string> names;  ///< channels / columns; empty = all
-    std::string time_column;         ///< plain tables only; "" = t_s, t or time if present
+    /// Plain tables only; "" = t_s, t or time if present. A canonical log is refused any but its own t_s, which is
+    /// noted as unused.
+    std::string time_column;
     /// Plain tables without a time column; unset = 1 s per row. A file with its own time (a canonical log's t_s,
     /// a table's time column) is refused it when the rows' spacing disagrees, and told it is not used otherwise.
     std::optional<double> sample_period_s;
@@ -39,7 +41,8 @@ struct FileAnalysis {
 };
 
 /// Reads the file (DataError when unreadable or malformed) and analyses each series. UsageError when a sample period
-/// is given for a file with its own time and the rows' spacing disagrees with it.
+/// is given for a file with its own time and the rows' spacing disagrees with it, or a time column other than t_s for
+/// a canonical log.
 FileAnalysis analyse_file(const FileAnalysisRequest& request);
 
 }  // namespace driftlab::host::fit

@@ -63,8 +63,9 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     // An hour's recording is not made again by running the command once more from the shell's history.
     refuse_replacing(options.log_path, "log", "-o", options.overwrite);
     refuse_replacing(capture_path, "capture", "--capture", options.overwrite);
-    make_folder_of(options.log_path, "log");
-    make_folder_of(capture_path, "capture");
+    NewFolders folders;  // removed again, when empty, if the run is refused before it writes
+    folders.make_folder_of(options.log_path, "log");
+    folders.make_folder_of(capture_path, "capture");
     check_output_file(options.log_path, "log");
     check_output_file(capture_path, "capture");
     SerialPort port(options.port, options.baud);
@@ -91,6 +92,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
         throw DeviceError(options.port, problem);
     }
     event("start");
+    folders.keep();
 
     RecordSummary summary;
     const auto t0 = Clock::now();

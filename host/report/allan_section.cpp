@@ -67,7 +67,8 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         const double tau0_s = stats::grid_period_s(a->data.t_s);
         const stats::AllanResult raw_result = oadev(a->data.t_s, a->data.values, tau0_s);
         const stats::AllanCurves& raw_curves = raw_result.raw;
-        const stats::AllanCurves residual_curves = oadev(a->data.t_s, a->fit.residual, tau0_s).raw;
+        const stats::AllanResult residual_result = oadev(a->data.t_s, a->fit.residual, tau0_s);
+        const stats::AllanCurves& residual_curves = residual_result.raw;
         const double gap_share = static_cast<double>(raw_result.gap_samples) / static_cast<double>(raw_result.samples);
         if (gap_share > kNotableGapShare) {
             warnings += "<div class=\"warn\"><b>" + name + ":</b> " + fixed(100.0 * gap_share, 0) + " % of the " +
@@ -78,6 +79,8 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         }
         const stats::AnalysedCurve& raw = *raw_curves.find(stats::Deviation::oadev);
         const stats::AnalysedCurve& residual = *residual_curves.find(stats::Deviation::oadev);
+        if (const auto packing = stats::packing_caveat(residual_result, residual))
+            warnings += "<div class=\"warn\"><b>" + name + ":</b> " + html_escape(*packing) + ".</div>\n";
         if (residual.curve.dev.empty()) continue;
         std::size_t best = 0;
         for (std::size_t i = 1; i < residual.curve.dev.size(); ++i)

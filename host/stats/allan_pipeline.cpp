@@ -1,6 +1,8 @@
 // One series through grid placement, optional drift removal and the Allan statistics (docs/allan.md §7).
 #include "host/stats/allan_pipeline.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -63,6 +65,22 @@ std::optional<fit::DriftParameters> fit_turn_on_drift(const std::vector<double>&
         status = e.what();
         return std::nullopt;
     }
+}
+
+std::optional<std::string> packing_caveat(const AllanResult& r, const AnalysedCurve& curve) {
+    const std::vector<double>& dev = curve.curve.dev;
+    if (r.packed_samples == 0 || dev.empty()) return std::nullopt;
+    const double moved_s = static_cast<double>(r.packed_most_slots) * r.tau0_s;
+    const double minimum_tau_s = curve.curve.tau_s[static_cast<std::size_t>(std::min_element(dev.begin(), dev.end()) - dev.begin())];
+    if (moved_s <= kSpacingTolerance * minimum_tau_s) return std::nullopt;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%zu samples came faster than tau0 (bursts, or a record that changes its rate) and were placed up to "
+                  "%zu slots (%.4g s) after their time, %.0f %% of tau = %.4g s at the curve's minimum: from there on "
+                  "the curve reads correlated noise, which depends on when a sample was taken, and may be biased; a gap "
+                  "right after such a stretch is closed up",
+                  r.packed_samples, r.packed_most_slots, moved_s, 100.0 * moved_s / minimum_tau_s, minimum_tau_s);
+    return std::string(text);
 }
 
 AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<double>& values, double tau0_s,

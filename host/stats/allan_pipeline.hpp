@@ -40,11 +40,23 @@ struct AllanResult {
     std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
     std::optional<fit::DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]
     std::string drift_status;                   ///< why no drift was removed, or the fit status
+    /// The curves the result is read from: drift removed when it was, else raw.
+    const AllanCurves& primary() const { return drift_removed ? *drift_removed : raw; }
 };
 
 /// Analyses samples `values` taken at times `t_s` [s] (strictly increasing) on a grid of `tau0_s`.
 AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<double>& values, double tau0_s,
                           const AllanRequest& request);
+
+/// The caveat of samples packed onto the grid (rows faster than tau0), when it can bias `curve` (one of `r`'s):
+/// packing keeps the samples' order and moves each at most packed_most_slots x tau0 late. White noise does not care
+/// when a sample was taken, and it is what the curve reads left of its minimum; from the minimum on (bias
+/// instability, rate random walk, drift) it reads correlated noise, for which a displacement d changes an averaging
+/// time tau by up to d / tau. Up to kSpacingTolerance of the minimum's tau that is no more than tau0 itself may be
+/// off (period_agrees), and nothing is said: a steady burst reader (the MPU6050 recording's gyro: 0.55 s against a
+/// minimum at 82 s) stays below, a record that changes its rate part-way (every later row moved by what the fast
+/// stretch gained) does not. Nothing either without packing or without a curve.
+std::optional<std::string> packing_caveat(const AllanResult& r, const AnalysedCurve& curve);
 
 /// The one place the turn-on drift enters the Allan analysis: fits eq. 1 to (t_s, values); nothing (and the
 /// reason in `status`) when the fit fails or does not converge.

@@ -22,10 +22,7 @@ double mean_spacing_s(std::span<const double> t_s) {
     return t_s.size() < 2 ? 0.0 : (t_s.back() - t_s.front()) / static_cast<double>(t_s.size() - 1);
 }
 
-bool spacing_agrees(double a_s, double b_s) {
-    constexpr double kTolerance = 0.05;
-    return std::abs(a_s / b_s - 1.0) <= kTolerance;
-}
+bool spacing_agrees(double a_s, double b_s) { return std::abs(a_s / b_s - 1.0) <= kSpacingTolerance; }
 
 bool period_agrees(std::span<const double> t_s, double period_s) {
     return t_s.size() < 2 || spacing_agrees(median_spacing_s(t_s), period_s) ||

@@ -25,7 +25,10 @@ double median_spacing_s(std::span<const double> t_s);
 /// Mean spacing of increasing times [s]; 0 for fewer than two samples.
 double mean_spacing_s(std::span<const double> t_s);
 
-/// Whether spacing `a_s` lies within 5 % of `b_s` (jittered host time stamps); the test of period_agrees.
+/// How far a spacing may be from another and still agree (jittered host time stamps).
+constexpr double kSpacingTolerance = 0.05;
+
+/// Whether spacing `a_s` lies within kSpacingTolerance of `b_s`; the test of period_agrees.
 bool spacing_agrees(double a_s, double b_s);
 
 /// Whether `period_s` agrees within 5 % (jittered host time stamps) with the median or the mean spacing of `t_s`:

@@ -146,6 +146,37 @@ TEST(AllanCli, ALogInBurstsGetsTheReportsTau0) {
     EXPECT_NEAR(section.plots[0].series[0].x.front() / tau0, 1.0, 1e-12);  // the octave grid's first tau is tau0
 }
 
+// Rows packed onto the grid are warned of per channel where they can bias its curve (allan.md §7): a record at
+// 2 rows a second for 1000 s, then 1 a second, on a grid of 1 s; steady bursts of white noise are not warned.
+TEST(AllanCli, PackingIsWarnedWhereItCanBiasTheCurve) {
+    TempDir dir("allanpacking");
+    const std::string changed = dir.file("changed.txt");
+    const std::string bursts = dir.file("bursts.txt");
+    {
+        std::mt19937_64 rng(9);
+        std::normal_distribution<double> g(0.0, 1.0);
+        std::ofstream c(changed), b(bursts);
+        c << "t_s gx\n";
+        b << "t_s gx\n";
+        for (int k = 0; k < 6000; ++k) {
+            c << (k < 2000 ? 0.5 * k : k - 1000.0) << ' ' << g(rng) << '\n';
+            b << 0.05 * (k / 5) + 0.002 * (k % 5) << ' ' << g(rng) << '\n';
+        }
+    }
+    const RunResult text = run_driftlab({"allan", changed, "--kind", "rate", "--tau0", "1"}, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.output;
+    EXPECT_NE(text.output.find("  warning: 5996 samples came faster than tau0"), std::string::npos) << text.output;
+    const RunResult json = run_driftlab({"allan", changed, "--kind", "rate", "--tau0", "1", "--json"}, dir.path());
+    ASSERT_EQ(json.exit_code, 0) << json.output;
+    EXPECT_TRUE(nlohmann::json::parse(json.output)["channels"]["gx"]["packing_warning"].is_string()) << json.output;
+
+    const RunResult steady = run_driftlab({"allan", bursts, "--kind", "rate", "--tau0", "0.01", "--json"}, dir.path());
+    ASSERT_EQ(steady.exit_code, 0) << steady.output;
+    const auto gx = nlohmann::json::parse(steady.output)["channels"]["gx"];
+    EXPECT_GT(gx["packed_samples"].get<int>(), 0);
+    EXPECT_TRUE(gx["packing_warning"].is_null()) << steady.output;
+}
+
 TEST(AllanCli, TheTimeColumnIsNotASeries) {
     TempDir dir("allantime");
     const RunResult r =

@@ -124,6 +124,25 @@ TEST(AnalysisCli, ASamplePeriodOnALogIsRefusedOrNoted) {
     EXPECT_TRUE(nlohmann::json::parse(read_text(json_file)).contains("channels"));  // the note is not in it
 }
 
+// --time-column on a canonical log had been dropped without a word, as --sample-period had: a log is timed by its
+// t_s alone.
+TEST(AnalysisCli, ATimeColumnOnALogIsRefusedOrNoted) {
+    TempDir dir("logtimecolumn");
+    const std::string log = dir.file("h.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "300", "-o", log}, dir.path()).exit_code, 0);
+    for (const auto& args : {std::vector<std::string>{"fit", log, "--time-column", "seq"},
+                             {"report", log, "--time-column", "seq", "-o", dir.file("r.html"), "--no-plots"}}) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
+        EXPECT_NE(r.output.find("--time-column seq contradicts " + log + ": it is a driftlab log, timed by its own t_s "
+                                "column; leave the option out (it is for plain tables)"),
+                  std::string::npos) << args[0] << ": " << r.output;
+    }
+    const RunResult own = run_driftlab({"whiteness", log, "--time-column", "t_s"}, dir.path());
+    EXPECT_EQ(own.exit_code, 0) << own.output;
+    EXPECT_NE(own.output.find("note: --time-column t_s is not used: " + log), std::string::npos) << own.output;
+}
+
 // A warm unit (T far beyond the record) and a singular fit had printed the fit's arbitrary values in the table
 // (gyro -6.92737e+11 counts on hil --warm 3200), out of line, and "+- inf" below it.
 TEST(AnalysisCli, WhatTheDataDoNotDetermineReadsNotDetermined) {

@@ -40,12 +40,15 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     // gap: "nan" had passed --fit-fraction's range (and --from's order check) to be refused later with the wrong
     // range; an empty --report had meant no report; sizes beyond 16 x a_50 swamp the log; a size twice was one row.
     for (const std::vector<std::string>& args :
-         {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "nan"}, {"gap", "x.csv", "--from", "nan"},
-          {"gap", "x.csv", "--to", "inf"}}) {
+         {std::vector<std::string>{"gap", "x.csv", "--from", "nan"}, {"gap", "x.csv", "--to", "inf"}}) {
         const RunResult r = run_driftlab(args, dir.path());
         EXPECT_EQ(r.exit_code, 2) << args[2] << ": " << r.output;
         EXPECT_NE(r.output.find("expected a finite number, got '" + args[3] + "'"), std::string::npos) << r.output;
     }
+    const RunResult fraction = run_driftlab({"gap", "x.csv", "--fit-fraction", "nan"}, dir.path());
+    EXPECT_EQ(fraction.exit_code, 2) << fraction.output;
+    EXPECT_NE(fraction.output.find("--fit-fraction: expected a number in [0.3, 0.85], got 'nan'"), std::string::npos)
+        << fraction.output;
     for (const char* path : {"--report", "--model-out"}) {
         const RunResult empty = run_driftlab({"gap", "x.csv", path, ""}, dir.path());
         EXPECT_EQ(empty.exit_code, 2) << empty.output;
@@ -53,6 +56,12 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     }
     const RunResult huge = run_driftlab({"gap-eval", "--quick", "--levels", "1000"}, dir.path());
     EXPECT_EQ(huge.exit_code, 2) << huge.output;
+    EXPECT_NE(huge.output.find("--levels: expected a number in (0, 16], got '1000'"), std::string::npos) << huge.output;
+    // An integer option names a fraction as outside its range, not as a failed conversion.
+    const RunResult fraction_of_window = run_driftlab({"hil", "--window", "3.5", "-o", dir.file("h.csv")}, dir.path());
+    EXPECT_EQ(fraction_of_window.exit_code, 2) << fraction_of_window.output;
+    EXPECT_NE(fraction_of_window.output.find("--window: expected a whole number in [1, 64], got '3.5'"), std::string::npos)
+        << fraction_of_window.output;
     const RunResult twice = run_driftlab({"gap-eval", "--quick", "--levels", "2,2"}, dir.path());
     EXPECT_EQ(twice.exit_code, 2) << twice.output;
     EXPECT_NE(twice.output.find("--levels: 2 is given twice"), std::string::npos) << twice.output;

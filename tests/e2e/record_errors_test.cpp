@@ -80,6 +80,29 @@ TEST(RecordErrors, AnOutputFolderThatCannotBeMadeIsNamedBeforeThePort) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("rec.csv")));
 }
 
+// Folders made for a run that is then refused are taken away again (they had been left behind, empty), and only
+// those: a folder that was there before stays, empty as it is.
+TEST(RecordErrors, ARefusedRunRemovesOnlyTheFoldersItMade) {
+    TempDir dir("refusedfolders");
+    std::filesystem::create_directory(dir.file("before"));
+    host::io::PtyBridge silent;
+    for (const std::string& port : {dir.file("ttyNONE"), silent.slave_path()}) {
+        const RunResult r = run_driftlab({"record", "--port", port, "-o", dir.file("before/new/deeper/rec.csv"),
+                                          "--capture", dir.file("cap/rec.cap")},
+                                         dir.path());
+        EXPECT_EQ(r.exit_code, kDeviceErrorExit) << r.output;
+        EXPECT_TRUE(std::filesystem::is_directory(dir.file("before"))) << port;
+        EXPECT_FALSE(std::filesystem::exists(dir.file("before/new"))) << port;
+        EXPECT_FALSE(std::filesystem::exists(dir.file("cap"))) << port;
+    }
+    // A folder the run made that holds something else by then is kept with it.
+    std::filesystem::create_directories(dir.file("before/new"));
+    std::ofstream(dir.file("before/new/notes.txt")) << "mine\n";
+    const RunResult r = run_driftlab({"record", "--port", dir.file("ttyNONE"), "-o", dir.file("before/new/rec.csv")}, dir.path());
+    EXPECT_EQ(r.exit_code, kDeviceErrorExit) << r.output;
+    EXPECT_EQ(read_text(dir.file("before/new/notes.txt")), "mine\n");
+}
+
 // An earlier recording is not replaced by running the command again (an hour's log and its capture had been
 // truncated without a word): refused before the port, exit 2, both files kept; --overwrite lets the run go on (to
 // the missing port here).

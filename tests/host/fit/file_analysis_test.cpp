@@ -1,4 +1,4 @@
-// analyse_file: a sample period given for a file that carries its own time, and what the analysis says it determines.
+// analyse_file: a sample period or time column given for a file that carries its own time, and what the analysis says it determines.
 #include "host/fit/file_analysis.hpp"
 
 #include <gtest/gtest.h>
@@ -75,6 +75,43 @@ TEST(FileAnalysis, ASamplePeriodTheRowsAgreeWithIsNotedAsUnused) {
     EXPECT_EQ(file.notes[0], "--sample-period/--tau0 1 s is not used: " + request.path +
                                  " is a driftlab log, timed by its own t_s column, whose rows are 1 s apart (median; "
                                  "mean 1 s)");
+}
+
+// fit LOG --time-column seq had fitted on t_s without a word: a log is timed by its t_s alone, so another column is
+// refused and t_s itself noted as unused.
+TEST(FileAnalysis, ATimeColumnOtherThanALogsTsIsRefusedAndItsTsNoted) {
+    const TempDir dir("fa_time_column");
+    FileAnalysisRequest request;
+    request.path = write_log(dir, paper_gyro);
+    request.time_column = "seq";
+    try {
+        analyse_file(request);
+        ADD_FAILURE() << "--time-column seq on a log was accepted";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()), "--time-column seq contradicts " + request.path +
+                                             ": it is a driftlab log, timed by its own t_s column; leave the option out "
+                                             "(it is for plain tables)");
+    }
+    request.time_column = "t_s";
+    const FileAnalysis file = analyse_file(request);
+    EXPECT_EQ(file.failures(), 0u);
+    ASSERT_EQ(file.notes.size(), 1u);
+    EXPECT_EQ(file.notes[0], "--time-column t_s is not used: " + request.path +
+                                 " is a driftlab log, timed by its own t_s column");
+    // A table is timed by the column named, without a note.
+    const std::string table = dir.file("table.csv");
+    {
+        std::ofstream out(table);
+        out << "t_s,seq,gyro\n";
+        for (int k = 1; k <= 300; ++k) out << k << ',' << 2 * k << ',' << paper_gyro(k) << '\n';
+    }
+    request.path = table;
+    request.names = {"gyro"};
+    request.time_column = "seq";
+    const FileAnalysis by_seq = analyse_file(request);
+    EXPECT_TRUE(by_seq.notes.empty());
+    ASSERT_EQ(by_seq.failures(), 0u) << by_seq.failure_summary();
+    EXPECT_DOUBLE_EQ(by_seq.series[0].analysis->sample_period_s, 2.0);
 }
 
 // A warm unit's straight record leaves C1 and T undetermined (only C1/T is); a singular fit leaves C2 so too

@@ -213,6 +213,24 @@ TEST(Report, AllanGridOfBurstyRowsIsTheirMeanSpacingAndGapsAreWarned) {
     }
 }
 
+// The report's Allan section gives allan's packing caveat where it applies: a record whose rows come twice as fast
+// for its first 1000 s, on the 1 s grid of the rest, has its later rows 1000 slots late; the steady bursts above get
+// none.
+TEST(Report, AllanPackingThatCanBiasTheCurveIsWarned) {
+    const TempDir dir("report_allan_packing");
+    std::vector<double> times;
+    for (int k = 0; k < 2000; ++k) times.push_back(0.5 * k);
+    for (int k = 0; k < 4000; ++k) times.push_back(1000.0 + k);
+    fit::FileAnalysisRequest request;
+    request.path = write_table(dir, "changed.txt", times);
+    const fit::FileAnalysis file = fit::analyse_file(request);
+    ASSERT_EQ(file.failures(), 0u);
+    const AllanSection section = allan_section({&*file.series[0].analysis});
+    EXPECT_NE(section.html.find("<b>gx:</b> 5996 samples came faster than tau0 (bursts, or a record that changes its "
+                                "rate) and were placed up to 1000 slots (1000 s) after their time"),
+              std::string::npos) << section.html;
+}
+
 // The report's expected share of lags inside +-2 sigma for a white residual is what this estimator gives: the
 // biased R(d) has variance (L-d)/L^2 of the bound's 1/L, so P(|Z| < 2 sqrt(L/(L-d))) averaged over d = 1..L-1,
 // 98.87 % for L = 50 (not the 95.45 % of a normal variable at 2 sigma).

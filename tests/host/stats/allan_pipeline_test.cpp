@@ -78,6 +78,60 @@ TEST(UniformGrid, GridPeriodIsTheMeanOnlyForRowsInBursts) {
     EXPECT_EQ(grid_period_s(reconnect), 1.0);
 }
 
+// Packing is worth a caveat once it moves samples by more than 5 % of the averaging time at the curve's minimum,
+// from where the curve reads correlated noise; not at 5 % itself, and never without packing.
+TEST(AllanPipeline, PackingIsACaveatPastATwentiethOfTheMinimumsTau) {
+    AnalysedCurve curve;
+    curve.curve.tau_s = {1.0, 10.0, 100.0, 1000.0};
+    curve.curve.dev = {4.0, 2.0, 1.0, 3.0};
+    AllanResult r;
+    r.tau0_s = 1.0;
+    r.packed_samples = 10;
+    r.packed_most_slots = 5;  // 5 s: 5 % of the minimum's 100 s
+    EXPECT_FALSE(packing_caveat(r, curve).has_value());
+    r.packed_most_slots = 6;
+    const std::optional<std::string> caveat = packing_caveat(r, curve);
+    ASSERT_TRUE(caveat.has_value());
+    EXPECT_NE(caveat->find("10 samples came faster than tau0"), std::string::npos) << *caveat;
+    EXPECT_NE(caveat->find("up to 6 slots (6 s) after their time, 6 % of tau = 100 s at the curve's minimum"),
+              std::string::npos) << *caveat;
+    // A curve that only rises (a random walk) reads correlated noise from tau0 on: 2 slots already bias it.
+    curve.curve.dev = {1.0, 2.0, 3.0, 4.0};
+    r.packed_most_slots = 2;
+    EXPECT_TRUE(packing_caveat(r, curve).has_value());
+    r.packed_samples = 0;
+    r.packed_most_slots = 0;
+    EXPECT_FALSE(packing_caveat(r, curve).has_value());
+}
+
+// Through the pipeline: steady bursts (5 rows 2 ms apart every 50 ms, as the MPU6050 recording's) pack samples a
+// few slots, which white noise does not mind; a record that changes its rate moves every later row by what the fast
+// stretch gained, hundreds of slots, and is told.
+TEST(AllanPipeline, SteadyBurstsGetNoPackingCaveatARateChangeDoes) {
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> g(0.0, 1.0);
+    std::vector<double> t, y;
+    for (int k = 0; k < 6000; ++k) {
+        t.push_back(0.05 * (k / 5) + 0.002 * (k % 5));
+        y.push_back(g(rng));
+    }
+    AllanRequest req;
+    req.remove_drift = false;
+    const AllanResult bursts = analyse_allan(t, y, grid_period_s(t), req);
+    EXPECT_GT(bursts.packed_samples, 3000u);
+    EXPECT_FALSE(packing_caveat(bursts, bursts.primary().curves.front()).has_value());
+
+    t.clear();
+    for (int k = 0; k < 2000; ++k) t.push_back(0.5 * k);
+    for (int k = 0; k < 4000; ++k) t.push_back(1000.0 + k);
+    const AllanResult changed = analyse_allan(t, y, grid_period_s(t), req);
+    EXPECT_DOUBLE_EQ(changed.tau0_s, 1.0);
+    EXPECT_EQ(changed.packed_most_slots, 1000u);
+    const std::optional<std::string> caveat = packing_caveat(changed, changed.primary().curves.front());
+    ASSERT_TRUE(caveat.has_value());
+    EXPECT_NE(caveat->find("up to 1000 slots (1000 s) after their time"), std::string::npos) << *caveat;
+}
+
 TEST(UniformGrid, RejectsAGridFarFinerThanTheSamples) {
     const std::vector<double> t = {0.0, 1000.0};
     const std::vector<double> v = {0.0, 0.0};
