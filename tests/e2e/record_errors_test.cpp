@@ -208,8 +208,9 @@ TEST(DecodeErrors, AStartWithoutTheBoardsFramesNamesTheFileAndOffset) {
         start_offset = std::filesystem::file_size(renamed);
         w.write_event("start");
     }
-    const RunResult r = run_driftlab({"decode", renamed, "-o", dir.file("x.csv")}, dir.path());
+    const RunResult r = run_driftlab({"decode", renamed, "-o", dir.file("made/x.csv")}, dir.path());
     EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("made")));  // the folder it made for no log is taken away
     EXPECT_NE(r.output.find("renamed.cap: byte offset " + std::to_string(start_offset) + ": recording started before"),
               std::string::npos)
         << r.output;
