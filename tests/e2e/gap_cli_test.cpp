@@ -531,7 +531,7 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
     ASSERT_NE(gap.output.find("located cells (|z| > "), std::string::npos) << gap.output;
     ASSERT_NE(gap.output.find("and beyond the margin): 0\n"), std::string::npos) << gap.output;
     // A hil log's times are evenly spaced but for their rounding (1.5e-13 %), which had been printed as a spread.
-    EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the output period)\n"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the rows' period)\n"), std::string::npos) << gap.output;
     const std::string md = read_text(dir.file("rep/gap.md"));
     const std::size_t guide = md.find("## How to read this report\n\n");
     ASSERT_NE(guide, std::string::npos) << md.substr(0, 800);
