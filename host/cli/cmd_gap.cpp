@@ -232,8 +232,8 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
     std::printf("timing: %s (%s lost), %s; %s\n", gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
                 gap::counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
                 gap::counted(r.timing.gap_events, "gap event").c_str(),
-                jitter_percent < 1e-6 ? "row spacing constant (its sd below 1e-6 % of the output period)"
-                                      : ("row spacing varies by " + significant(jitter_percent, 3) + " % of the output period (sd)").c_str());
+                jitter_percent < 1e-6 ? "row spacing constant (its sd below 1e-6 % of the rows' period)"
+                                      : ("row spacing varies by " + significant(jitter_percent, 3) + " % of the rows' period (sd)").c_str());
 }
 
 // " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else "".

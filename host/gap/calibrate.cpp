@@ -67,11 +67,21 @@ Smoothing smoothing_from_log(const LogData& log) {
         if (!v || !(*v > 0.0)) throw DataError(log.source_name, line, "metadata 'sample_period_s' must be a positive number [s]");
         // A wrong period misplaces every lag and band; bursts leave the mean alone, and lost frames are taken out.
         const std::vector<double> t = times_without_lost_frames(log);
-        if (!stats::period_agrees(t, *v))
-            throw DataError(log.source_name, line,
-                            "metadata 'sample_period_s' is " + format_double(*v) + " s, but the rows are " +
-                                stats::spacing_text(t) + ", lost frames taken out");
         s.sample_period_s = *v;
+        if (!stats::period_agrees(t, *v)) {
+            // Polled rows come at the poll cadence on the board's clock: slower than the outputs when the board runs
+            // faster than the recorder's clock (hil --pty --speed 10), each row still one output's window. Never
+            // faster: a poll between two outputs repeats a row, which the recorder does not write.
+            const double rows_s = stats::grid_period_s(t);
+            const bool polled = log.metadata.get("mode") == "poll";
+            if (!polled || !(rows_s > *v))
+                throw DataError(log.source_name, line,
+                                "metadata 'sample_period_s' is " + format_double(*v) + " s, but the rows are " +
+                                    stats::spacing_text(t) + ", lost frames taken out" +
+                                    (polled ? " (polled rows cannot come faster than the outputs)" : ""));
+            s.sample_period_s = rows_s;
+            s.outputs_per_row = rows_s / *v;
+        }
     }
     s.conversions_per_output = metadata_int(log, "conversions_per_output", 1, 1, 64);
     s.window = metadata_int(log, "window", 1, 1, 64);

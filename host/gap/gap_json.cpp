@@ -156,6 +156,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     }
     j["calibration"] = {{"channels", cal},
                         {"sample_period_s", r.base.smoothing.sample_period_s},
+                        {"outputs_per_row", r.base.smoothing.outputs_per_row},
                         {"conversions_per_output", r.base.smoothing.conversions_per_output},
                         {"window", r.base.smoothing.window},
                         {"fit_order", r.base.smoothing.fit_order}};

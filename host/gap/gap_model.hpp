@@ -15,10 +15,16 @@ namespace driftlab::host::gap {
 
 /// The firmware's least-squares smoothing and output timing (log metadata; docs/log-format.md).
 struct Smoothing {
-    double sample_period_s = 1.0;   ///< output period [s]
+    double sample_period_s = 1.0;   ///< the rows' period, the spacing every lag and band counts [s]
     int conversions_per_output = 1; ///< conversions of each channel per output [-]
     int window = 1;                 ///< N of the sliding least-squares fit [conversions]
     int fit_order = 0;              ///< 0 = mean, 1 = line evaluated at the newest conversion
+    /// Outputs the firmware made per row: 1 when every output is a row; more for polled rows that come slower than
+    /// the outputs (a board paced faster than the recorder's clock, `hil --pty --speed 10` with `record --poll`).
+    double outputs_per_row = 1.0;
+
+    double output_period_s() const { return sample_period_s / outputs_per_row; }
+    double conversion_period_s() const { return output_period_s() / conversions_per_output; }
 };
 
 /// The calibrated base of one channel.

@@ -13,21 +13,21 @@
 namespace driftlab::host::gap {
 
 proto::ConfigPayload firmware_config(const Smoothing& s, bool raw, const std::string& source) {
-    const double period_ms = std::round(s.sample_period_s * 1000.0);
+    const double period_ms = std::round(s.output_period_s() * 1000.0);
     proto::ConfigPayload fw{static_cast<std::uint16_t>(std::clamp(period_ms, 0.0, 65535.0)),
                             static_cast<std::uint8_t>(std::clamp(s.conversions_per_output, 0, 255)),
                             static_cast<std::uint8_t>(std::clamp(s.window, 0, 255)),
                             static_cast<std::uint8_t>(s.fit_order),
                             static_cast<std::uint8_t>(proto::OutputMode::poll),
                             static_cast<std::uint8_t>(raw ? 1 : 0)};
-    const bool exact = std::abs(period_ms - s.sample_period_s * 1000.0) <= 1e-6 * period_ms && period_ms == fw.output_period_ms &&
+    const bool exact = std::abs(period_ms - s.output_period_s() * 1000.0) <= 1e-6 * period_ms && period_ms == fw.output_period_ms &&
                        s.conversions_per_output == fw.conversions_per_output && s.window == fw.window;
     if (!exact || fw::validate(fw).status != proto::Status::ok) {
         char what[260];
         std::snprintf(what, sizeof what,
                       "--model-out: the log's smoothing (output period %.6g ms, %d conversions per output, window %d, order %d) is "
                       "no CONFIG the firmware accepts (docs/protocol.md: a whole number of ms in 10..60000, 1..64, 1..64, 0 or 1)",
-                      s.sample_period_s * 1000.0, s.conversions_per_output, s.window, s.fit_order);
+                      s.output_period_s() * 1000.0, s.conversions_per_output, s.window, s.fit_order);
         throw DataError(source, 0, what);
     }
     return fw;

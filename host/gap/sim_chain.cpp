@@ -40,7 +40,7 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
     const sim::Adc adc(model.unit.adc);
     const double mid_counts = std::ldexp(1.0, model.unit.adc.bits - 1);
     const Smoothing& sm = model.smoothing;
-    const double conversion_period_s = sm.sample_period_s / sm.conversions_per_output;
+    const double conversion_period_s = sm.conversion_period_s();
     const auto order = sm.fit_order == 1 ? fw::FitOrder::line : fw::FitOrder::mean;
     auto effects = build_effects(model, seed);
     const auto& physical = effects[static_cast<std::size_t>(sim::Stage::physical)];

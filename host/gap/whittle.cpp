@@ -125,8 +125,10 @@ std::vector<double> white_floor_autocovariance(const Smoothing& s) {
     std::vector<double> h(static_cast<std::size_t>(n));  // h[x], x = 0 oldest .. n - 1 newest
     for (int x = 0; x < n; ++x)
         h[static_cast<std::size_t>(x)] = s.fit_order == 0 ? 1.0 / n : (6.0 * x - 2.0 * (n - 2)) / (n * (n + 1.0));
+    // Conversions from one row to the next: rounded where polled rows come at a jittered cadence.
+    const int step = std::max(1, static_cast<int>(std::lround(s.outputs_per_row * s.conversions_per_output)));
     std::vector<double> r;
-    for (int lag = 0; lag < n; lag += s.conversions_per_output) {
+    for (int lag = 0; lag < n; lag += step) {
         double sum = 0.0;
         for (int x = 0; x + lag < n; ++x) sum += h[static_cast<std::size_t>(x)] * h[static_cast<std::size_t>(x + lag)];
         r.push_back(sum);

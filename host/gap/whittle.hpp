@@ -56,7 +56,8 @@ std::size_t smooth_length_at_most(std::size_t n);
 
 /// Autocovariance at output lags 0, 1, ... of the smoother's output for unit-variance white conversions:
 /// r_m = sum_x h_x h_{x + m D}, with the LS weights h of fw::LsWindow (order 0: 1/N; order 1 evaluated at the
-/// newest conversion: (6x - 2(N - 2)) / (N (N + 1)), x = 0 oldest) and D conversions per output.
+/// newest conversion: (6x - 2(N - 2)) / (N (N + 1)), x = 0 oldest) and D conversions per row (per output, times
+/// the outputs per row).
 std::vector<double> white_floor_autocovariance(const Smoothing& s);
 
 /// The smoother output's long-run variance over its variance, (r_0 + 2 sum_{m>0} r_m) / r_0: how many outputs share

@@ -56,7 +56,7 @@ public:
     /// Lagged temperature deviation theta(t) [K].
     double lagged_temperature_k(double t_s) const;
     /// The unit's temperature, the ambient mean plus theta(t) [degC]: the chain's temperature (temp_scale_factor).
-    double temperature_degc(double t_s) const { return kMeanDegc + lagged_temperature_k(t_s); }
+    double temperature_degc(double t_s) const override { return kMeanDegc + lagged_temperature_k(t_s); }
     /// The ambient wave's mean [degC]; the couplings see only the swing, temp_scale_factor the whole temperature.
     static constexpr double kMeanDegc = 25.0;
 

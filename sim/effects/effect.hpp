@@ -112,6 +112,9 @@ public:
     /// True for effects that are a real input (vibration): the chain adds them to ctx.true_physical as well, so
     /// cross-couplings (cross_axis, g_sensitivity, temp_scale_factor) see them (file comment, "Order").
     virtual bool is_input() const { return false; }
+    /// The unit's temperature at t [degC] for an effect that models it (ambient_cycle): the chain passes the first
+    /// such effect's to all as ctx.temperature_degc. kNotModelled, at every t, for the others.
+    virtual double temperature_degc(double /*t_s*/) const { return kNotModelled; }
     /// Current parameters under their TOML keys (round trip and JSON output).
     virtual toml::table parameters() const = 0;
 };

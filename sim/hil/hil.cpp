@@ -76,7 +76,6 @@ std::optional<std::string> link_capacity_refusal(const SimModel& model) {
 }
 
 HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
-    if (const auto refusal = link_capacity_refusal(options.model)) throw host::UsageError(*refusal);
     SensorSource source(options.model, options.seed, options.warm_up_s);
     Link link(options.model.link, options.seed);
     HostPlan plan;

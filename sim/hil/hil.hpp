@@ -60,9 +60,11 @@ struct HilSummary {
 /// the figures; none when it can.
 std::optional<std::string> link_capacity_refusal(const SimModel& model);
 
-/// Runs one host-in-the-loop session; records go to `sink` as the host completes them.
+/// Runs one host-in-the-loop session; records go to `sink` as the host completes them. The caller refuses a model
+/// whose link cannot carry its output (link_capacity_refusal) before: `driftlab hil` does, telling the model file's
+/// fault from the command line's, which a check in here could not.
 /// Throws host::DeviceError when the emulated board stops answering, host::UsageError when it refuses the
-/// configuration (link_capacity_refusal among others).
+/// configuration.
 HilSummary run_hil(const HilOptions& options, const RecordSink& sink);
 
 }  // namespace driftlab::sim

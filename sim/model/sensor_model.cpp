@@ -30,7 +30,8 @@ SensorModel::SensorModel(const SimModel& model, std::uint64_t seed, double power
     for (const EffectSpec& spec : model.effects) {
         auto effect = make_effect(spec.name, spec.table, "effects." + spec.name);
         effect->reset(seed);
-        if (ambient_ == nullptr) ambient_ = dynamic_cast<const AmbientCycle*>(effect.get());
+        // An effect that models no temperature answers NaN at every t, so one instant tells.
+        if (temperature_ == nullptr && !std::isnan(effect->temperature_degc(0.0))) temperature_ = effect.get();
         by_stage_[stage_index(effect->stage())].push_back(std::move(effect));
     }
     // The model file's order is the user's, not the physics': within a stage the effect library fixes it
@@ -61,7 +62,7 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
     started_[i] = true;
     last_t_s_[i] = ctx.t_s;
     ctx.true_physical = inputs_unit_;
-    if (ambient_ != nullptr) ctx.temperature_degc = ambient_->temperature_degc(ctx.t_s);
+    if (temperature_ != nullptr) ctx.temperature_degc = temperature_->temperature_degc(ctx.t_s);
 
     ChannelValues values = inputs_unit_;
     // apply_in_chain gives input effects (vibration) to all four channels' true motion, so cross-couplings

@@ -10,7 +10,6 @@
 #include <memory>
 #include <vector>
 
-#include "sim/effects/ambient_cycle.hpp"
 #include "sim/effects/effect.hpp"
 #include "sim/model/adc.hpp"
 #include "sim/model/drift.hpp"
@@ -53,7 +52,7 @@ private:
     std::vector<WhiteNoise> noise_;
     ChannelValues inputs_unit_{};
     std::array<std::vector<std::unique_ptr<Effect>>, 4> by_stage_;  // indexed by Stage
-    const AmbientCycle* ambient_ = nullptr;  // the first ambient_cycle: the chain's temperature, when there is one
+    const Effect* temperature_ = nullptr;  // the first effect that models the unit's temperature, when there is one
     std::array<double, kChannelCount> last_t_s_{};
     std::array<bool, kChannelCount> started_{};
 };

@@ -565,7 +565,7 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
     ASSERT_NE(gap.output.find("located cells (|z| > "), std::string::npos) << gap.output;
     ASSERT_NE(gap.output.find("and beyond the margin): 0\n"), std::string::npos) << gap.output;
     // A hil log's times are evenly spaced but for their rounding (1.5e-13 %), which had been printed as a spread.
-    EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the output period)\n"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the rows' period)\n"), std::string::npos) << gap.output;
     // 1500 s is under twice the paper's accelerometer T (about 950 s), not the gyro's (411 s): a `none` that says a
     // slow effect there would be in eq. 1's fit, for the accelerometers alone.
     const std::size_t slow = gap.output.find("\nslow drift: the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = ");

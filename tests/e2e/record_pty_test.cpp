@@ -16,6 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "driftlab/proto/decoder.hpp"
 #include "host/io/capture.hpp"
 #include "host/io/recorder.hpp"
@@ -93,8 +95,24 @@ void expect_decode_keeps_logs_and_names_crc_failures(const TempDir& dir, const s
         << crc.output;
     EXPECT_NE(crc.output.find("crc errors 1)"), std::string::npos) << crc.output;
 }
-}  // namespace
 
+// `driftlab hil --pty` started with `args`: its process, and the path it serves (its first output line), empty when
+// none came within 5 s.
+std::pair<pid_t, std::string> serve_hil_pty(const std::vector<std::string>& args, const std::string& output_file) {
+    std::vector<std::string> all = {"hil", "--pty"};
+    all.insert(all.end(), args.begin(), args.end());
+    const pid_t hil = spawn_driftlab(all, output_file);
+    std::string path;
+    for (int i = 0; i < 500 && path.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        std::istringstream lines(read_text(output_file));
+        std::string first;
+        if (std::getline(lines, first) && first.rfind("/dev/", 0) == 0) path = first;
+    }
+    return {hil, path};
+}
+
+}  // namespace
 
 TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog) {
     TempDir dir("stream60");
@@ -330,14 +348,7 @@ TEST(RecordPty, MissingFoldersOfTheLogAndTheCaptureAreMade) {
 // `driftlab hil --pty` serves the simulated board itself: its first output line is the path a recorder opens.
 TEST(RecordPty, HilPtyServesTheSimulatedBoardToTheRecorder) {
     TempDir dir("hilpty");
-    const pid_t hil = spawn_driftlab({"hil", "--pty", "--speed", "20", "--duration", "120"}, dir.file("hil.out"));
-    std::string path;
-    for (int i = 0; i < 500 && path.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        std::istringstream lines(read_text(dir.file("hil.out")));
-        std::string first;
-        if (std::getline(lines, first) && first.rfind("/dev/", 0) == 0) path = first;
-    }
+    const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "120"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
     const RunResult r = run_driftlab({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log},
@@ -355,4 +366,28 @@ TEST(RecordPty, HilPtyServesTheSimulatedBoardToTheRecorder) {
     EXPECT_GE(rec.size() + 1, spanned);
     // The paper's gyro at rest after the warm-up stays within a few counts of Table 1's C1 + C2 = 508.
     for (std::size_t i = 0; i < rec.size(); ++i) EXPECT_NEAR(rec.counts[0][i], 506.0, 6.0) << "row " << i;
+}
+
+// Polls at the recorder's clock against a board paced 20 times faster: outputs 0.1 s apart, rows 2 s apart on the
+// board's clock, each one output's window. `gap` had refused the log (metadata 'sample_period_s' is 0.1 s, but the
+// rows are 2 s apart); it keeps both periods and calibrates the gyro's white noise to the paper model's 1.0239
+// counts: 220 rows know the short-lag spread to 1/sqrt(440) = 4.8 %, 25 % is over 5 sigma.
+TEST(RecordPty, GapReadsAPolledRecordingOfABoardPacedFasterThanTheRecorder) {
+    TempDir dir("hilpoll");
+    const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "500"}, dir.file("hil.out"));
+    ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
+    const std::string log = dir.file("rec.csv");
+    const RunResult r = run_driftlab({"record", "--port", path, "--poll", "0.1", "--duration", "440", "-q", "-o", log},
+                                     dir.path());
+    ::kill(hil, SIGTERM);
+    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    ASSERT_EQ(host::read_log(log).metadata.get_double("sample_period_s"), 0.1);
+
+    const RunResult gap = run_driftlab({"gap", log, "--replicates", "16", "--json"}, dir.path());
+    ASSERT_EQ(gap.exit_code, 0) << gap.output;
+    const auto j = nlohmann::json::parse(gap.output);
+    EXPECT_NEAR(j["calibration"]["sample_period_s"].get<double>(), 2.0, 0.1);
+    EXPECT_NEAR(j["calibration"]["outputs_per_row"].get<double>(), 20.0, 1.0);
+    EXPECT_NEAR(j["calibration"]["channels"]["gyro"]["sigma_n_counts"].get<double>() / 1.0239, 1.0, 0.25);
 }

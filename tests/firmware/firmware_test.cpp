@@ -135,6 +135,49 @@ TEST(Firmware, StreamModeSendsOneSamplePerOutputPeriodOnTheTickGrid) {
   }
 }
 
+// docs/protocol.md §3.5: a POLL is answered at once with the windows as they are. Before the first conversion, and
+// after a CONFIG_SET that emptied them, that is n_window 0, every value 0 and the last tick seen (0 before any): the
+// flag, not the zeros, tells it from a reading.
+TEST(Firmware, PollWithEmptyWindowsAnswersZerosFlaggedByNWindowZero) {
+  NativeRig rig;
+  const auto empty_answer_tick = [&rig] {
+    rig.send_empty(MsgType::poll);
+    const std::vector<Frame> frames = rig.receive();
+    EXPECT_EQ(frames.size(), 1U);
+    const auto s = parse_as<proto::SamplePayload>(frames.at(0));
+    EXPECT_EQ(s.n_window, 0);
+    for (int32_t v : s.value_q8) EXPECT_EQ(v, 0);
+    return s.tick;
+  };
+  EXPECT_EQ(empty_answer_tick(), 0U);
+  rig.run_until(10 * kPeriodTicks + 77, [](Channel, uint64_t) -> uint16_t { return 600; });
+  proto::ConfigPayload config = default_payload();
+  config.window = 8;  // a new window empties them
+  rig.send_config(config);
+  ASSERT_TRUE(is(rig.receive().at(0), MsgType::ack));
+  EXPECT_EQ(empty_answer_tick(), 10 * kPeriodTicks);
+}
+
+// docs/protocol.md §3.5: the mode is not checked, so a POLL in stream mode adds a SAMPLE off the output grid, at the
+// newest conversion's tick, taking a sequence number between two streamed ones; the stream's cadence is unchanged.
+TEST(Firmware, PollInStreamModeAddsOneSampleOffTheGridAndLeavesTheCadence) {
+  NativeRig rig;
+  proto::ConfigPayload config = default_payload();
+  config.mode = 1;
+  rig.send_config(config);
+  rig.run_until(kOutputTicks + 5 * kPeriodTicks + 10, [](Channel, uint64_t) -> uint16_t { return 512; });
+  rig.send_empty(MsgType::poll);
+  rig.run_until(2 * kOutputTicks + 10, [](Channel, uint64_t) -> uint16_t { return 512; });
+  const std::vector<Frame> frames = rig.receive();
+  ASSERT_EQ(frames.size(), 4U);  // ACK, streamed, polled, streamed
+  const uint32_t expected_ticks[] = {kOutputTicks, kOutputTicks + 5 * kPeriodTicks, 2 * kOutputTicks};
+  for (size_t k = 1; k < frames.size(); ++k) {
+    ASSERT_TRUE(is(frames[k], MsgType::sample)) << k;
+    EXPECT_EQ(frames[k].seq, k);
+    EXPECT_EQ(parse_as<proto::SamplePayload>(frames[k]).tick, expected_ticks[k - 1]) << k;
+  }
+}
+
 TEST(Firmware, RawModeFollowsEachSampleWithTheNewestCodes) {
   NativeRig rig;
   proto::ConfigPayload config = default_payload();

@@ -88,5 +88,36 @@ TEST(Calibrate, TheStatedPeriodMustMatchTheRowsLostFramesTakenOut) {
     }
 }
 
+// `record --poll 1` against `hil --pty --speed 10`: the board outputs every second, the polls come every 10 s of its
+// clock, give or take the recorder's scheduling (here +-10 ms). The rows' period (the lags) and the output period
+// (the conversions) are both kept, and the noise before the quantiser comes back: 400 rows know the short-lag spread
+// to 1/sqrt(2 * 400) = 3.5 %, 15 % is over 4 sigma. A stream log's rows are its outputs, and polled rows cannot come
+// faster than the outputs (a poll between two repeats a row): both still refused.
+TEST(Calibrate, PolledRowsSlowerThanTheOutputsKeepBothPeriods) {
+    GapModel m = testing::paper_gyro_model(25);
+    m.smoothing = {10.0, 25, 25, 0, 10.0};
+    LogData log = testing::gyro_log(m, 400, {}, 9);
+    for (std::size_t k = 0; k < log.size(); ++k) log.t_s[k] += 0.01 * std::sin(1.7 * static_cast<double>(k));
+    log.metadata.set("sample_period_s", 1.0);
+    log.metadata.set("mode", "poll");
+    const Smoothing s = smoothing_from_log(log);
+    EXPECT_NEAR(s.sample_period_s, 10.0, 0.02);
+    EXPECT_NEAR(s.output_period_s(), 1.0, 1e-12);
+    EXPECT_NEAR(s.conversion_period_s(), 0.04, 1e-14);
+    const GapModel base = calibrate_base(log, sim::paper_model(), {true, false, false, false}, 1);
+    EXPECT_NEAR(base.base[0].sigma_n_counts / 1.05, 1.0, 0.15);
+
+    log.metadata.set("mode", "stream");
+    EXPECT_THROW(smoothing_from_log(log), DataError);
+    log.metadata.set("mode", "poll");
+    log.metadata.set("sample_period_s", 100.0);
+    try {
+        smoothing_from_log(log);
+        FAIL() << "polled rows faster than the outputs accepted";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("polled rows cannot come faster than the outputs"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace driftlab::host::gap

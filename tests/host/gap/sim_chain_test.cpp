@@ -32,6 +32,26 @@ TEST(SimChain, NoiselessLevelQuantisesToNearestCode) {
         for (double v : out[c]) EXPECT_EQ(v, 600.0);
 }
 
+// Polled rows 10 s apart of a firmware whose outputs are 1 s apart: each row is the mean of the 25 conversions of the
+// last output period, 40 ms apart (not 400 ms, the rows' period over the conversions per output). Noiseless, on
+// eq. 1 rising 8 counts/s at t = 0: the mean of the rounded codes at t - 0.04 j, j = 0..24, to the Q8 output's step.
+TEST(SimChain, PolledRowsSlowerThanTheOutputsConvertAtTheOutputPeriod) {
+    GapModel m = flat_model(0.0, 0.0, 25, 0);
+    m.smoothing = {10.0, 25, 25, 0, 10.0};
+    m.base[0].drift = {800.0, 100.0, 100.0};  // C1, C2, T: 100 .. 900 counts
+    std::vector<double> t;
+    for (int k = 1; k <= 30; ++k) t.push_back(10.0 * k);
+    SimRequest req;
+    req.t_s = &t;
+    req.channels = {true, false, false, false};
+    const SimOutput out = simulate(m, req, 1);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        double mean = 0.0;
+        for (int j = 0; j < 25; ++j) mean += std::floor(800.0 * (1.0 - std::exp(-(t[k] - 0.04 * j) / 100.0)) + 100.0 + 0.5) / 25.0;
+        EXPECT_NEAR(out[0][k], mean, 1.0 / 256.0) << "row " << k;
+    }
+}
+
 TEST(SimChain, MeanSmootherVarianceIsNoisePlusQuantisationOverN) {
     // sigma_n = 2 counts >> 0.5 LSB: var(y) = (sigma_n^2 + 1/12) / N for the order-0 window (gap-method §1).
     const auto t = instants(20000);

@@ -27,6 +27,18 @@ TEST(Whittle, WhiteFloorAutocovarianceFollowsTheSmootherKernel) {
     EXPECT_NEAR(r[0], 2.0 * 15.0 / 72.0, 1e-12);
 }
 
+// Polled rows slower than the outputs (a board paced faster than the recorder) are outputs_per_row x D conversions
+// apart: ten outputs of 4 conversions leave no conversion two rows of window 8 share; 1.5 outputs (6 conversions)
+// leave 2 of 8.
+TEST(Whittle, WhiteFloorOfPolledRowsStepsByTheConversionsBetweenRows) {
+    auto r = white_floor_autocovariance({10.0, 4, 8, 0, 10.0});
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_NEAR(r[0], 1.0 / 8.0, 1e-15);
+    r = white_floor_autocovariance({1.5, 4, 8, 0, 1.5});
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_NEAR(r[1], 2.0 / 64.0, 1e-15);
+}
+
 // Order 0 with D conversions per output over a window of N = kD: k outputs share each conversion, so the long-run
 // variance of the outputs is k times their variance.
 TEST(Whittle, LongRunFactorCountsTheOutputsThatShareAConversion) {

@@ -66,6 +66,35 @@ TEST(GaussMarkov, ExactDiscretisationHoldsForIrregularInstants) {
     EXPECT_NEAR(test::autocorrelation(y, 2), std::exp(-2.0 / 5.0), 0.03);  // two steps = 2 s
 }
 
+// Across power-ons (one seed each): the first value is already stationary, b_0 ~ N(0, sigma^2), and the value dt
+// later reverts toward 0, E[b_1 | b_0] = phi b_0 with phi = exp(-dt / tau), scattering by sigma^2 (1 - phi^2) about
+// it. n = 4 channels x 20000 seeds independent pairs: a variance is known to sqrt(2 / n) relative, the regression
+// slope to sqrt((1 - phi^2) / n), the mean to sigma / sqrt(n); every check is 5 of those.
+TEST(GaussMarkov, StartsStationaryAndRevertsByPhiAcrossPowerOns) {
+    const double sigma = 2.0, tau_s = 5.0, dt_s = 2.0;
+    GaussMarkov gm(params(sigma, tau_s));
+    const double phi = std::exp(-dt_s / tau_s);
+    double sum0 = 0.0, s00 = 0.0, s01 = 0.0, s11 = 0.0;
+    const std::size_t seeds = 20000;
+    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+        gm.reset(seed);
+        const auto y = run_added(gm, 2, dt_s);
+        for (std::size_t c = 0; c < kChannelCount; ++c) {
+            sum0 += y[c][0];
+            s00 += y[c][0] * y[c][0];
+            s01 += y[c][0] * y[c][1];
+            s11 += y[c][1] * y[c][1];
+        }
+    }
+    const double n = static_cast<double>(seeds * kChannelCount);
+    const double slope = s01 / s00;
+    const double residual_var = (s11 - 2.0 * phi * s01 + phi * phi * s00) / n;  // of b_1 - phi b_0, mean 0
+    EXPECT_NEAR(sum0 / n, 0.0, 5.0 * sigma / std::sqrt(n));
+    EXPECT_NEAR(s00 / n / (sigma * sigma), 1.0, 5.0 * std::sqrt(2.0 / n));
+    EXPECT_NEAR(slope, phi, 5.0 * std::sqrt((1.0 - phi * phi) / n));
+    EXPECT_NEAR(residual_var / (sigma * sigma * (1.0 - phi * phi)), 1.0, 5.0 * std::sqrt(2.0 / n));
+}
+
 TEST(GaussMarkov, AdevPeaksAt0618SigmaNear189Tau) {
     GaussMarkov gm(params(1.0, 8.0));
     gm.reset(21);

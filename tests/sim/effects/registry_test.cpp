@@ -1,5 +1,6 @@
 // The registry: the sixteen names and stages, identity by default, TOML round trip, and errors that name the key
 // and the expected unit.
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <set>
@@ -101,6 +102,19 @@ TEST(EffectRegistry, EveryEffectIsIdentityByDefault) {
             e->apply(v, ctx);
             EXPECT_EQ(v, in) << info.name;
             EXPECT_EQ(e->actual_instant_s(ctx.t_s, ctx), ctx.t_s) << info.name;
+        }
+    }
+}
+
+// The chain takes its temperature from the first effect that models one, told by a NaN at one instant
+// (sensor_model.cpp): only ambient_cycle models it, at every t (25 degC with its default zero swing), the others
+// at none.
+TEST(EffectRegistry, OnlyAmbientCycleModelsTheTemperature) {
+    for (const EffectInfo& info : list_effects()) {
+        const auto e = make_effect(info.name);
+        for (const double t : {0.0, 1.3, 600.0, 1e6}) {
+            if (info.name == "ambient_cycle") EXPECT_EQ(e->temperature_degc(t), 25.0) << t;
+            else EXPECT_TRUE(std::isnan(e->temperature_degc(t))) << info.name << " at " << t;
         }
     }
 }

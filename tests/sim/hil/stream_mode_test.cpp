@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
-#include "host/util/error.hpp"
 #include "tests/sim/hil/hil_test_support.hpp"
 
 namespace driftlab::sim {
@@ -54,19 +54,24 @@ TEST(StreamMode, RawModeKeepsAsManyRowsAsSmoothedOnly) {
     EXPECT_EQ(raw.rows.size(), plain.rows.size());
 }
 
-// The paper's 9600-baud link carries 960 bytes/s: a SAMPLE frame (33 bytes) every 35 ms fits (943 bytes/s), every
-// 34 ms does not (971); with RAW (54 bytes) 57 ms fits and 56 ms does not. Beyond it outputs would queue without
-// end and the run's time would end before most arrived.
+// The paper's 9600-baud link carries 960 bytes/s: a SAMPLE frame (33 bytes) every 35 ms fits (943 bytes/s), and the
+// run logs every output; every 34 ms does not (971); with RAW (54 bytes) 57 ms fits and 56 ms does not. Beyond it
+// outputs would queue without end and the run's time would end before most arrived: link_capacity_refusal says so,
+// with the figures, and `driftlab hil` refuses the run (its test: HilCli.AnOutputRateTheLinkCannotCarry...).
 TEST(StreamMode, AnOutputRateBeyondTheLinkIsRefused) {
-    const auto rows_of = [](double period_s, bool raw) {
+    const auto options = [](double period_s, bool raw) {
         HilOptions o = streamed(period_s, 2.0, raw);
         o.model.firmware.conversions_per_output = 8;
-        return run_into_memory(o).rows.size();
+        return o;
     };
-    EXPECT_GE(rows_of(0.035, false), 56u);
-    EXPECT_THROW(rows_of(0.034, false), host::UsageError);
-    EXPECT_GE(rows_of(0.057, true), 34u);
-    EXPECT_THROW(rows_of(0.056, true), host::UsageError);
+    EXPECT_FALSE(link_capacity_refusal(options(0.035, false).model));
+    EXPECT_GE(run_into_memory(options(0.035, false)).rows.size(), 56u);
+    EXPECT_TRUE(link_capacity_refusal(options(0.034, false).model));
+    EXPECT_FALSE(link_capacity_refusal(options(0.057, true).model));
+    EXPECT_GE(run_into_memory(options(0.057, true)).rows.size(), 34u);
+    const auto refusal = link_capacity_refusal(options(0.056, true).model);
+    ASSERT_TRUE(refusal);
+    EXPECT_NE(refusal->find("cannot carry 54 bytes (SAMPLE + RAW) every 56 ms"), std::string::npos) << *refusal;
 }
 
 }  // namespace
