@@ -619,7 +619,7 @@ TEST(GapEval, TwoMeanShapesTogetherAreNotSwallowedByARandomWalk) {
     o.score_first = 11;
     o.score_last = 22;
     o.pairs = {{"thermostat", "thermal_rc"}};
-    const auto cases = run_pairs(o, {{"thermostat", 0.23, {}}, {"thermal_rc", 0.19, {}}});  // docs/gap.md's a_50
+    const auto cases = run_pairs(o, {{"thermostat", 0.23, {}}, {"thermal_rc", 0.19, {}}});  // docs/gap-results.md's a_50
     ASSERT_EQ(cases.size(), 12u);
     int shape_first = 0, cycle_added = 0;
     for (const auto& c : cases) {

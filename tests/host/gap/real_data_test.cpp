@@ -42,7 +42,7 @@ TEST(RealData, Gyro2xRunsAndReportsItsGap) {
                     s.process_gain, s.process_margin, s.outsized ? ": outsized increments" : "");
     EXPECT_TRUE(std::isfinite(r.gap_before_fit));
     // What follows, up to the warm-up's sign, is a regression snapshot of what the diagnosis found on this recording
-    // (docs/gap.md, Real recordings), not an independent truth: no one knows this unit's effects. The 155 s excursion
+    // (docs/gap-results.md, Real recordings), not an independent truth: no one knows this unit's effects. The 155 s excursion
     // at 983-1139 s is beyond the two processes' own replicates, but they remain beside it: it is reported as their
     // outsized increments (JSON level_steps[]) and does not leave the log unexplained.
     const auto j = gap_to_json(r, options());
@@ -92,7 +92,7 @@ TEST(RealData, TheGaussMarkovReadingDoesNotRestOnTheExcursion) {
 // ambient_cycle at its period and about its size. This needs the stepwise refit: the Gauss-Markov process sized
 // on the log with the sinusoid in it swallows part of the line until it is fitted again beside it. The line is
 // 8 counts at 120 s, about 100 times the log's own noise power in its frequency bin; at 300 s, where that noise is
-// six times stronger, a 4-count line is not separable from it (docs/gap.md, real recordings).
+// six times stronger, a 4-count line is not separable from it (docs/gap-results.md, Real recordings).
 TEST(RealData, InjectedSinusoidIsRecoveredAtItsSize) {
     LogData log;
     sim::SimModel unit;

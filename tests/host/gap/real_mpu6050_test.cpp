@@ -45,7 +45,7 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     EXPECT_GT(r.timing.dt_jitter_rel, 0.1);
     // Block noise: accel 3-5 mg = 12-20 LSB raw, gyro 0.13 deg/s = 16.5 LSB raw, all far above the quantiser.
     for (std::size_t c = 0; c < kChannelCount; ++c) EXPECT_GT(r.base.base[c].sigma_n_counts, 5.0) << kChannelNames[c];
-    // A regression snapshot of what the diagnosis found on this recording (docs/gap.md, Real recordings), not an
+    // A regression snapshot of what the diagnosis found on this recording (docs/gap-results.md, Real recordings), not an
     // independent truth: no cell of the four channels passes the family-wise threshold, yet the held-out score exceeds
     // its bound (the gyro's excess, next test): a diffuse gap, reported and, without --search-diffuse, never searched.
     EXPECT_TRUE(r.located.empty());
