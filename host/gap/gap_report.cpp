@@ -105,6 +105,26 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
     return bands;
 }
 
+// The plots' unit: the diagnosis's physical one (deg/s; g as mg, so an accelerometer's noise does not read in
+// thousandths), through the model's converter, so a plain table's plots are in its own unit. The bands are drawn
+// from counts and scaled after: a constant factor moves no line against another.
+struct PlotUnit {
+    double per_count;
+    const char* name;
+};
+
+PlotUnit plot_unit(const GapModel& model, Channel c) {
+    const double per_count = 1.0 / counts_per_unit(model, c);
+    return c == Channel::gyro ? PlotUnit{per_count, "deg/s"} : PlotUnit{per_count * 1000.0, "mg"};
+}
+
+std::vector<double> scaled(std::vector<double> v, double k) {
+    for (double& x : v) x *= k;
+    return v;
+}
+
+Band scaled(const Band& b, double k) { return {scaled(b.low, k), scaled(b.high, k)}; }
+
 // A channel's real residual against the replicate bands of the base and of the final model, as DIR/<plot_name()>;
 // returns gap.md's link to its image.
 std::string plot_bands(const std::string& title, const std::string& x_label, const std::string& y_label, bool log_axes,
@@ -426,6 +446,13 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
           "the added effects (blue), each replicate refitted as the log is: its Allan deviation by octave, and its mean "
           "over time (where a mean shape or a step shows); for a raw-mode log also the share of rows on each raw code "
           "(where a code of the wrong width shows).\n\n";
+    std::string scales;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!r.channels[c]) continue;
+        const PlotUnit unit = plot_unit(r.base, static_cast<Channel>(c));
+        scales += std::string(scales.empty() ? "" : ", ") + significant_plain(unit.per_count, 3) + " " + unit.name + " on " + kChannelNames[c];
+    }
+    if (!scales.empty()) md << "The plots are in physical units; one count is " << scales << ".\n\n";
     const bool plots = report::gnuplot_available();
     if (!plots) md << "(gnuplot not found: plots skipped)\n";
     const std::vector<std::size_t> edges = time_bins(log.size());
@@ -449,10 +476,15 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         std::vector<double> tau(real.size());
         for (std::size_t j = 0; j < tau.size(); ++j) tau[j] = r.base.smoothing.sample_period_s * std::ldexp(1.0, static_cast<int>(j));
         const std::string channel = kChannelNames[c];
-        md << plot_bands("Residual ADEV, " + channel, "tau [s]", "ADEV of the eq. 1 residual [counts]", true, tau, real, base.adev,
-                         added ? &added->adev : nullptr, dir, plot_name("adev", channel));
-        md << plot_bands("Residual mean over time, " + channel, "t [s]", "mean of the eq. 1 residual per bin [counts]", false, bin_t,
-                         binned_mean(residual, edges), base.mean, added ? &added->mean : nullptr, dir, plot_name("mean", channel));
+        const PlotUnit unit = plot_unit(r.base, static_cast<Channel>(c));
+        const auto band_in_unit = [&](const Band& b) { return scaled(b, unit.per_count); };
+        const Band base_adev = band_in_unit(base.adev), base_mean = band_in_unit(base.mean);
+        const Band after_adev = band_in_unit(after.adev), after_mean = band_in_unit(after.mean);
+        md << plot_bands("Residual ADEV, " + channel, "tau [s]", std::string("ADEV of the eq. 1 residual [") + unit.name + "]", true, tau,
+                         scaled(real, unit.per_count), base_adev, added ? &after_adev : nullptr, dir, plot_name("adev", channel));
+        md << plot_bands("Residual mean over time, " + channel, "t [s]", std::string("mean of the eq. 1 residual per bin [") + unit.name + "]",
+                         false, bin_t, scaled(binned_mean(residual, edges), unit.per_count), base_mean, added ? &after_mean : nullptr,
+                         dir, plot_name("mean", channel));
         if (range.real) {
             std::vector<double> code(static_cast<std::size_t>(range.highest - range.lowest + 1));
             for (std::size_t j = 0; j < code.size(); ++j) code[j] = range.lowest + static_cast<double>(j);

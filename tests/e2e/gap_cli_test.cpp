@@ -249,6 +249,8 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
     EXPECT_NE(md.find("Not analysed: accel_x at 512 counts in every row"), std::string::npos) << md.substr(0, 600);
     EXPECT_NE(md.find("Saturated: accel_z in 5 rows"), std::string::npos) << md.substr(0, 900);
+    // The plots' scales, at the paper's 90 deg/s and 1 g over 512 counts; the constant channel has none.
+    EXPECT_NE(md.find("one count is 0.176 deg/s on gyro, 1.95 mg on accel_y, 1.95 mg on accel_z."), std::string::npos);
     const RunResult json = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json"}, dir.path());
     ASSERT_EQ(json.exit_code, 0) << json.output;
     const auto j = nlohmann::json::parse(json.output);

@@ -19,6 +19,9 @@
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
 #include "host/gap/sim_chain.hpp"
+#include "host/gap/spectral.hpp"
+#include "host/fit/drift_analysis.hpp"
+#include "host/util/units.hpp"
 #include "host/gap/truth.hpp"
 #include "host/report/gnuplot.hpp"
 #include "sim/effects/adc_dnl.hpp"
@@ -267,6 +270,14 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     EXPECT_EQ(bins, 50);  // 1500 outputs, about 30 per bin
     EXPECT_LT(in_base, bins / 2) << in_base << " of " << bins;
     EXPECT_GT(in_after, bins * 3 / 4) << in_after << " of " << bins;
+    // The plots are in deg/s, at the paper's 90 deg/s over 512 counts: the real residual's ADEV at the first tau is
+    // its ADEV in counts times that scale, and the report says the scale.
+    const auto adev_real = testing::plot_block(dir / "gap_adev_gyro.dat", 2);
+    ASSERT_FALSE(adev_real.empty());
+    const auto residual = fit::fit_drift(p.log.t_s, p.log.counts[channel_index(Channel::gyro)]).residual;
+    const double adev_counts = octave_oadev(residual, p.log.size() / 8).front();
+    EXPECT_NEAR(adev_real[0][1], adev_counts * kGyroDpsPerCount, 1e-4 * adev_counts * kGyroDpsPerCount);
+    EXPECT_NE(md.find("one count is 0.176 deg/s on gyro."), std::string::npos);
 }
 
 // A mode hop (0.35 counts up at 700 s, 60 % of it back at 1200 s) that a sine closes the battery's gap around: two
