@@ -256,6 +256,7 @@ void run(const GapCommandOptions& o) {
                          "tenths 0, 4, 5, 7, 9 of the log whatever the fraction: add --holdout forecast, or leave --fit-fraction out");
     refuse_writing_over_input(o.model_out, "--model-out", o.path, "log");
     refuse_writing_over_input(o.model_out, "--model-out", o.model_path, "model file");
+    refuse_file_on_output_folder(o.model_out, "--model-out", o.report_dir, "--report");
     if (!o.report_dir.empty())
         for (const std::string& file : gap::report_files(o.report_dir)) {
             refuse_writing_over_input(file, "--report", o.path, "log");

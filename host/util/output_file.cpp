@@ -19,7 +19,17 @@ std::filesystem::path resolved_path(const std::string& p) {
     const std::filesystem::path absolute = std::filesystem::absolute(p, ec);
     if (ec) return {};
     std::filesystem::path out = std::filesystem::weakly_canonical(absolute, ec);
-    return ec ? std::filesystem::path{} : out;
+    if (ec) return {};
+    return out.has_filename() ? out : out.parent_path();  // "rep/" names the folder "rep"
+}
+
+// Outputs need not exist yet, which std::filesystem::equivalent() requires: their paths are compared once resolved
+// as far as they exist (a folder's link, "."), and a hard link to an existing file by identity.
+bool same_output(const std::string& path, const std::string& other) {
+    if (path.empty() || other.empty()) return false;
+    std::error_code ec;
+    const std::filesystem::path resolved = resolved_path(path);
+    return std::filesystem::equivalent(path, other, ec) || (!resolved.empty() && resolved == resolved_path(other));
 }
 
 }  // namespace
@@ -51,14 +61,16 @@ void refuse_replacing(const std::string& path, const std::string& what, const st
 
 void refuse_two_outputs_in_one_file(const std::string& path, const std::string& option, const std::string& other,
                                     const std::string& other_option) {
-    if (path.empty() || other.empty()) return;
-    // Outputs need not exist yet, which std::filesystem::equivalent() requires: their paths are compared once
-    // resolved as far as they exist (a folder's link, "."), and a hard link to an existing file by identity.
-    std::error_code ec;
-    const std::filesystem::path resolved = resolved_path(path);
-    if (std::filesystem::equivalent(path, other, ec) || (!resolved.empty() && resolved == resolved_path(other)))
+    if (same_output(path, other))
         throw UsageError(option + ": '" + path + "' is a file " + other_option + " writes ('" + other +
                          "'); one would be written over the other");
+}
+
+void refuse_file_on_output_folder(const std::string& path, const std::string& option, const std::string& folder,
+                                  const std::string& folder_option) {
+    if (same_output(path, folder))
+        throw UsageError(option + ": '" + path + "' is the folder " + folder_option + " writes into; name a file, such as '" +
+                         (std::filesystem::path(folder) / "model.toml").string() + "'");
 }
 
 void write_output_file(const std::string& path, const std::string& text, const std::string& what) {

@@ -26,6 +26,11 @@ void refuse_replacing(const std::string& path, const std::string& what, const st
 void refuse_two_outputs_in_one_file(const std::string& path, const std::string& option, const std::string& other,
                                     const std::string& other_option);
 
+/// Throws UsageError when the file output `path` (of `option`) is the folder another option writes into, whether
+/// it exists yet or not: the file could not be written, and only after the work that fills it.
+void refuse_file_on_output_folder(const std::string& path, const std::string& option, const std::string& folder,
+                                  const std::string& folder_option);
+
 /// Writes `text` to `path` through a temporary file beside it and a rename, so that a reader never sees a part of
 /// it and an earlier file stays as it was when writing fails. Throws DeviceError as above.
 void write_output_file(const std::string& path, const std::string& text, const std::string& what);

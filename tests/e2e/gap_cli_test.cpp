@@ -537,6 +537,13 @@ TEST(GapCli, TheModelFileOutIsNoneOfTheReportsFiles) {
               std::string::npos) << fresh.output;
     EXPECT_EQ(fresh.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
     EXPECT_FALSE(std::filesystem::exists(dir.file("rep"))) << "nothing written";
+    // The report's folder itself, spelt another way: a usage error (2), not an unwritable file (4) found later.
+    const RunResult folder =
+        run_driftlab({"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out", dir.file("rep") + "/"}, dir.path());
+    EXPECT_EQ(folder.exit_code, 2) << folder.output;
+    EXPECT_NE(folder.output.find("is the folder --report writes into; name a file, such as '" + dir.file("rep") + "/model.toml'"),
+              std::string::npos) << folder.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("rep"))) << "nothing written";
 
     std::filesystem::create_directory(dir.file("rep"));
     std::filesystem::create_directory_symlink(dir.file("rep"), dir.file("alias"));
