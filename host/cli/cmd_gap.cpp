@@ -218,9 +218,10 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
         std::printf("\n");
     }
     for (const auto& s : r.level_steps)
-        std::printf("level steps on %s: %s counts at t = %.1f s, %s at %.1f s; likelihood %.1f over the model (price %.1f), "
-                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)], significant_plain(s.steps[0].size_counts, 3).c_str(),
-                    s.steps[0].t_s, significant_plain(s.steps[1].size_counts, 3).c_str(), s.steps[1].t_s, s.statistic, s.margin,
+        std::printf("level steps on %s: %s at t = %.1f s, %s at %.1f s; likelihood %.1f over the model (price %.1f), "
+                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)],
+                    gap::step_size_text(r.base, s.channel, s.steps[0].size_counts, 2).c_str(), s.steps[0].t_s,
+                    gap::step_size_text(r.base, s.channel, s.steps[1].size_counts, 2).c_str(), s.steps[1].t_s, s.statistic, s.margin,
                     s.p_value, gap::step_reading(s));
     std::printf("not identifiable from a static log:");
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "host/fit/drift_analysis.hpp"
 #include "host/fit/lm_fit.hpp"
@@ -105,17 +106,23 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
     return bands;
 }
 
-// The plots' unit: the diagnosis's physical one (deg/s; g as mg, so an accelerometer's noise does not read in
-// thousandths), through the model's converter, so a plain table's plots are in its own unit. The bands are drawn
-// from counts and scaled after: a constant factor moves no line against another.
-struct PlotUnit {
+// The unit plots and step sizes are shown in: the diagnosis's physical one (deg/s; g as mg, so an accelerometer's
+// noise does not read in thousandths), through the model's converter, so a plain table's are in its own unit. The
+// bands are drawn from counts and scaled after: a constant factor moves no line against another.
+struct DisplayUnit {
     double per_count;
     const char* name;
 };
 
-PlotUnit plot_unit(const GapModel& model, Channel c) {
+DisplayUnit display_unit(const GapModel& model, Channel c) {
     const double per_count = 1.0 / counts_per_unit(model, c);
-    return c == Channel::gyro ? PlotUnit{per_count, "deg/s"} : PlotUnit{per_count * 1000.0, "mg"};
+    return c == Channel::gyro ? DisplayUnit{per_count, "deg/s"} : DisplayUnit{per_count * 1000.0, "mg"};
+}
+
+Channel channel_named(const std::string& name) {
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (name == kChannelNames[c]) return static_cast<Channel>(c);
+    throw std::invalid_argument("no channel '" + name + "'");
 }
 
 std::vector<double> scaled(std::vector<double> v, double k) {
@@ -145,16 +152,27 @@ std::string plot_bands(const std::string& title, const std::string& x_label, con
 
 }  // namespace
 
+std::string step_size_text(const GapModel& model, Channel c, double counts, int decimals) {
+    const DisplayUnit unit = display_unit(model, c);
+    std::string out = fixed_point(counts, decimals) + " counts";
+    if (std::isfinite(unit.per_count) && unit.per_count > 0.0)
+        out += " (" + significant_plain(counts * unit.per_count, 3) + " " + unit.name + ")";
+    return out;
+}
+
 std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     for (const auto& s : r.level_steps)
         if (s.significant)
-            return std::string("a level step on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed_point(s.steps[0].size_counts, 2) +
-                   " counts at t = " + fixed_point(s.steps[0].t_s, 1) + " s; p = " + fixed_point(s.p_value, 3) +
+            return std::string("a level step on ") + kChannelNames[channel_index(s.channel)] + " (" +
+                   step_size_text(r.base, s.channel, s.steps[0].size_counts, 2) + " at t = " + fixed_point(s.steps[0].t_s, 1) +
+                   " s; p = " + fixed_point(s.p_value, 3) +
                    ") that no library effect makes; the added effects stay as partial explanations";
     for (const auto& e : r.accepted)
         if (e.shape_steps.steps_win)
-            return "a hop and a return on " + e.channel + " (" + fixed_point(e.shape_steps.steps[0].size_counts, 2) + " counts at t = " +
-                   fixed_point(e.shape_steps.steps[0].t_s, 1) + " s, " + fixed_point(e.shape_steps.steps[1].size_counts, 2) + " at " +
+            return "a hop and a return on " + e.channel + " (" +
+                   step_size_text(r.base, channel_named(e.channel), e.shape_steps.steps[0].size_counts, 2) + " at t = " +
+                   fixed_point(e.shape_steps.steps[0].t_s, 1) + " s, " +
+                   step_size_text(r.base, channel_named(e.channel), e.shape_steps.steps[1].size_counts, 2) + " at " +
                    fixed_point(e.shape_steps.steps[1].t_s, 1) + " s) describe its mean better than " + e.effect +
                    " (likelihood " + fixed_point(e.shape_steps.statistic, 1) + " over the price " + fixed_point(e.shape_steps.margin, 1) +
                    "): a level step no library effect makes; the added effects stay as partial explanations";
@@ -170,8 +188,9 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
         out += r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound";
         for (const auto& s : r.level_steps)
             if (s.outsized)
-                out += std::string("; level steps on ") + kChannelNames[channel_index(s.channel)] + " (" + fixed_point(s.steps[0].size_counts, 2) +
-                       " counts at t = " + fixed_point(s.steps[0].t_s, 1) + " s, " + fixed_point(s.steps[1].size_counts, 2) + " at " +
+                out += std::string("; level steps on ") + kChannelNames[channel_index(s.channel)] + " (" +
+                       step_size_text(r.base, s.channel, s.steps[0].size_counts, 2) + " at t = " + fixed_point(s.steps[0].t_s, 1) + " s, " +
+                       step_size_text(r.base, s.channel, s.steps[1].size_counts, 2) + " at " +
                        fixed_point(s.steps[1].t_s, 1) + " s; p = " + fixed_point(s.p_value, 3) +
                        ") are read as the processes' outsized increments: they remain beside them";
         return out;
@@ -428,8 +447,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     }
     for (const auto& s : r.level_steps) {
         md << "\nLevel-step test, " << kChannelNames[channel_index(s.channel)] << ": two steps of "
-           << fixed_point(s.steps[0].size_counts, 3) << " counts at t = " << fixed_point(s.steps[0].t_s, 1) << " s and "
-           << fixed_point(s.steps[1].size_counts, 3) << " counts at t = " << fixed_point(s.steps[1].t_s, 1)
+           << step_size_text(r.base, s.channel, s.steps[0].size_counts, 3) << " at t = " << fixed_point(s.steps[0].t_s, 1) << " s and "
+           << step_size_text(r.base, s.channel, s.steps[1].size_counts, 3) << " at t = " << fixed_point(s.steps[1].t_s, 1)
            << " s: likelihood over the explanation " << fixed_point(s.statistic, 1) << " (price " << fixed_point(s.margin, 1)
            << ", p " << fixed_point(s.rival_p, 3) << "); largest whitened impulse " << fixed_point(s.impulse, 2) << " (p "
            << fixed_point(s.impulse_p, 3) << "); combined p = " << fixed_point(s.p_value, 3)
@@ -449,7 +468,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     std::string scales;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!r.channels[c]) continue;
-        const PlotUnit unit = plot_unit(r.base, static_cast<Channel>(c));
+        const DisplayUnit unit = display_unit(r.base, static_cast<Channel>(c));
         scales += std::string(scales.empty() ? "" : ", ") + significant_plain(unit.per_count, 3) + " " + unit.name + " on " + kChannelNames[c];
     }
     if (!scales.empty()) md << "The plots are in physical units; one count is " << scales << ".\n\n";
@@ -476,7 +495,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         std::vector<double> tau(real.size());
         for (std::size_t j = 0; j < tau.size(); ++j) tau[j] = r.base.smoothing.sample_period_s * std::ldexp(1.0, static_cast<int>(j));
         const std::string channel = kChannelNames[c];
-        const PlotUnit unit = plot_unit(r.base, static_cast<Channel>(c));
+        const DisplayUnit unit = display_unit(r.base, static_cast<Channel>(c));
         const auto band_in_unit = [&](const Band& b) { return scaled(b, unit.per_count); };
         const Band base_adev = band_in_unit(base.adev), base_mean = band_in_unit(base.mean);
         const Band after_adev = band_in_unit(after.adev), after_mean = band_in_unit(after.mean);

@@ -318,6 +318,7 @@ TEST(Diagnose, AHopDrawnAsAShapeIsALevelStepNoLibraryEffectMakes) {
 // log unexplained and comes first.
 TEST(Diagnose, TheVerdictReasonReadsALevelStepAsOutsizedIncrementsOrAsNoLibraryEffect) {
     GapResult r;
+    r.base.unit = sim::paper_model();  // 90 deg/s over 512 counts: a 1.5-count step is 0.264 deg/s
     Explanation walk;
     walk.effect = "rate_random_walk";
     walk.channel = "gyro";
@@ -332,12 +333,13 @@ TEST(Diagnose, TheVerdictReasonReadsALevelStepAsOutsizedIncrementsOrAsNoLibraryE
     r.level_steps.push_back(s);
     const std::string outsized = verdict_reason(r, small_options());
     EXPECT_EQ(outsized.rfind("on gyro it removes 100 %", 0), 0u) << outsized;
-    EXPECT_NE(outsized.find("level steps on gyro (1.50 counts at t = 700.5 s, -1.50 at 1400.5 s; p = 0.012) are read as the "
+    EXPECT_NE(outsized.find("level steps on gyro (1.50 counts (0.264 deg/s) at t = 700.5 s, -1.50 counts (-0.264 deg/s) at 1400.5 s; p = 0.012) "
+                            "are read as the "
                             "processes' outsized increments"), std::string::npos) << outsized;
     r.level_steps[0].outsized = false;
     r.level_steps[0].significant = true;
     const std::string unexplained = verdict_reason(r, small_options());
-    EXPECT_EQ(unexplained.rfind("a level step on gyro (1.50 counts at t = 700.5 s; p = 0.012) that no library effect makes", 0), 0u)
+    EXPECT_EQ(unexplained.rfind("a level step on gyro (1.50 counts (0.264 deg/s) at t = 700.5 s; p = 0.012) that no library effect makes", 0), 0u)
         << unexplained;
     EXPECT_EQ(unexplained.find("outsized"), std::string::npos) << unexplained;
 }
