@@ -25,6 +25,7 @@ struct DecodeOptions {
     std::string output;
     bool overwrite = false;
     bool json = false;
+    bool strict = false;
 };
 
 /// Frames of the capture that failed their CRC check in each record, as "byte offset N" notes (a damaged copy of
@@ -133,6 +134,22 @@ bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& a
     return started;
 }
 
+/// The capture's damage that cost bytes (a frame failing its CRC, a damaged stretch, a cut last record), for
+/// --strict: "" when none.
+std::string bytes_not_decoded(const io::CaptureReader& reader, const CrcFailures& crc_failures) {
+    std::string what;
+    const auto add = [&what](const std::string& part) { what += (what.empty() ? "" : ", ") + part; };
+    if (const std::uint32_t n = crc_failures.frames())
+        add(std::to_string(n) + (n == 1 ? " frame failed its CRC check" : " frames failed their CRC check"));
+    std::uint64_t skipped = 0;
+    for (const auto& d : reader.damaged()) skipped += d.bytes;
+    if (skipped > 0)
+        add(std::to_string(skipped) + " damaged bytes skipped in " + std::to_string(reader.damaged().size()) +
+            (reader.damaged().size() == 1 ? " stretch" : " stretches"));
+    if (reader.truncated_at()) add("the last record is cut");
+    return what;
+}
+
 /// The summary as one JSON object (docs/recording.md lists the keys).
 nlohmann::json summary_json(const DecodeOptions& o, const io::CaptureReader& reader, const io::LogAssembler& assembler,
                             const CrcFailures& crc_failures, std::optional<std::uint64_t> rescued_start) {
@@ -219,6 +236,9 @@ void run_decode(const DecodeOptions& o) {
                      static_cast<unsigned long long>(s.gaps));
         if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::fprintf(summary, "%s\n", skipped.c_str());
     }
+    // After the log and the summary are written: a script is told, and no good row is lost for it.
+    if (const std::string lost = o.strict ? bytes_not_decoded(*reader, *crc_failures) : ""; !lost.empty())
+        throw DataError(o.capture, 0, "--strict: " + lost + " (the log holds every good row)");
 }
 
 }  // namespace
@@ -233,9 +253,12 @@ void register_decode(CLI::App& app) {
     cmd->add_flag("--json", o->json,
                   "Print the summary as JSON (keys: rows, frames_received, frames_lost, crc_errors, crc_failures, "
                   "damaged, truncated_at, ...; docs/recording.md)");
+    cmd->add_flag("--strict", o->strict,
+                  "Exit 3 when bytes were not decoded (frames failing their CRC, damaged stretches skipped, a cut last "
+                  "record); the log still holds every good row");
     cmd->footer("Damage in the capture (a cut last record, skipped stretches, frames failing their CRC) is warned of "
-                "with byte offsets on standard error; the log is still written, and the exit code is 0. Exit 3: no "
-                "log can be rebuilt (not a capture, no recording start).");
+                "with byte offsets on standard error; the log is still written, and the exit code is 0 (3 with "
+                "--strict). Exit 3: no log can be rebuilt (not a capture, no recording start).");
     cmd->callback([o] { run_decode(*o); });
 }
 

@@ -1,5 +1,5 @@
 // `driftlab decode` on captures written here record by record, so every byte offset a summary names is known:
-// `--json` (the summary as one object on standard output).
+// `--json` (the summary as one object on standard output) and `--strict` (exit 3 when bytes were not decoded).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -132,6 +132,30 @@ TEST(DecodeCli, JsonWithTheLogOnStandardOutputIsRefused) {
     EXPECT_NE(r.output.find("--json: the log goes to standard output (-o -); write it to a file"), std::string::npos)
         << r.output;
     EXPECT_EQ(read_text(out), "");
+}
+
+// --strict fails a capture with bytes it could not decode (exit 3, naming each kind), after writing the same log
+// as without it; an intact capture passes. Without it the same damage had been a warning with exit 0 only.
+TEST(DecodeCli, StrictExitsThreeOnUndecodedBytesAndStillWritesEveryGoodRow) {
+    TempDir dir("decodestrict");
+    const std::string cap = dir.file("d.cap");
+    write_capture(cap, true);
+    ASSERT_EQ(run_driftlab({"decode", cap, "-o", dir.file("lenient.csv")}, dir.path()).exit_code, 0);
+    const RunResult strict = run_driftlab({"decode", cap, "-o", dir.file("strict.csv"), "--strict"}, dir.path());
+    EXPECT_EQ(strict.exit_code, 3) << strict.output;
+    EXPECT_NE(strict.output.find(cap + ": --strict: 1 frame failed its CRC check, " + std::to_string(kGarbageBytes) +
+                                 " damaged bytes skipped in 1 stretch, the last record is cut (the log holds every "
+                                 "good row)"),
+              std::string::npos)
+        << strict.output;
+    EXPECT_NE(strict.output.find("decoded " + std::to_string(kSamples - 1) + " rows"), std::string::npos) << strict.output;
+    EXPECT_EQ(read_text(dir.file("strict.csv")), read_text(dir.file("lenient.csv")));
+
+    const std::string intact = dir.file("intact.cap");
+    write_capture(intact, false);
+    const RunResult clean = run_driftlab({"decode", intact, "-o", dir.file("intact.csv"), "--strict"}, dir.path());
+    EXPECT_EQ(clean.exit_code, 0) << clean.output;
+    EXPECT_EQ(host::read_log(dir.file("intact.csv")).t_s.size(), static_cast<std::size_t>(kSamples));
 }
 
 }  // namespace
