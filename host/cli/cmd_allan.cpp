@@ -294,7 +294,10 @@ void register_allan(CLI::App& app) {
         ->check(positive_number());
     cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, dps, mdps, deg/h, rad/s, g, mg, m/s^2, cm/s^2, mm/s^2, or any name: then no physical terms)");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
-    cmd->add_option("--per-decade", o->per_decade, "Points per decade for --grid log (default 10)")->check(positive_number());
+    // A whole number: the grid is 10^(k / per_decade), which puts every power of ten on it. 1000 is more than the
+    // distinct m of the first three decades; --grid all is every m. CLI11 had refused 2.5 as a failed conversion.
+    cmd->add_option("--per-decade", o->per_decade, "Taus per decade for --grid log, a whole number (default 10)")
+        ->check(whole_number_in(1, 1000));
     cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")->capture_default_str();
     auto* keep = cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
     cmd->add_flag("--remove-drift", o->remove_drift,

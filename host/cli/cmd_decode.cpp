@@ -1,7 +1,9 @@
 // `driftlab decode`: rebuilds a recording's log from its raw capture, through the same assembler the recorder
 // used, so the result equals the recorded log (host/io/capture, host/io/log_assembler).
+#include <algorithm>
 #include <bitset>
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -10,6 +12,7 @@
 #include "host/io/capture.hpp"
 #include "host/io/log_assembler.hpp"
 #include "host/io/status_line.hpp"
+#include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
@@ -21,36 +24,46 @@ struct DecodeOptions {
     std::string capture;
     std::string output;
     bool overwrite = false;
+    bool json = false;
+    bool strict = false;
 };
 
 /// Frames of the capture that failed their CRC check in each record, as "byte offset N" notes (a damaged copy of
-/// the file, or a noisy link the live log lost them to as well); the first few named, the rest counted.
+/// the file, or a noisy link the live log lost them to as well): the warning names the first few records and counts
+/// the rest, --json lists them all.
 class CrcFailures {
 public:
     void after_record(std::uint32_t bad_crc_so_far, std::uint64_t record_offset) {
-        if (bad_crc_so_far > seen_ && offsets_.size() < kNamed) {
-            offsets_.push_back(record_offset);
-            named_ = bad_crc_so_far;
-        }
+        if (bad_crc_so_far > seen_) records_.push_back({record_offset, bad_crc_so_far - seen_});
         seen_ = bad_crc_so_far;
     }
     void warn(const std::string& capture) const {
         if (seen_ == 0) return;
+        const std::size_t named = std::min(records_.size(), kNamed);
         std::string where;
-        for (const std::uint64_t o : offsets_) where += (where.empty() ? "" : ", ") + std::to_string(o);
+        for (std::size_t i = 0; i < named; ++i) where += (where.empty() ? "" : ", ") + std::to_string(records_[i].offset);
         const bool one = seen_ == 1;
         std::fprintf(stderr, "driftlab: warning: %s: %u %s CRC check and %s as lost (in the %s at byte %s %s%s)\n",
                      capture.c_str(), static_cast<unsigned>(seen_), one ? "frame failed its" : "frames failed their",
-                     one ? "counts" : "count", offsets_.size() == 1 ? "record" : "records",
-                     offsets_.size() == 1 ? "offset" : "offsets", where.c_str(),
-                     seen_ > named_ ? " and later ones" : "");
+                     one ? "counts" : "count", named == 1 ? "record" : "records", named == 1 ? "offset" : "offsets",
+                     where.c_str(), records_.size() > named ? " and later ones" : "");
     }
+    /// [{"offset": record's byte offset, "frames": failures in it}, ...] in file order.
+    nlohmann::json json() const {
+        nlohmann::json out = nlohmann::json::array();
+        for (const Located& r : records_) out.push_back({{"offset", r.offset}, {"frames", r.frames}});
+        return out;
+    }
+    std::uint32_t frames() const { return seen_; }
 
 private:
     static constexpr std::size_t kNamed = 5;
+    struct Located {
+        std::uint64_t offset = 0;  ///< of the record whose bytes completed the failing frames
+        std::uint32_t frames = 0;
+    };
     std::uint32_t seen_ = 0;
-    std::uint32_t named_ = 0;  ///< of seen_, those in the records named
-    std::vector<std::uint64_t> offsets_;
+    std::vector<Located> records_;
 };
 
 /// True when `text` is "start" with one bit flipped.
@@ -121,7 +134,56 @@ bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& a
     return started;
 }
 
+/// The capture's damage that cost bytes (a frame failing its CRC, a damaged stretch, a cut last record), for
+/// --strict: "" when none.
+std::string bytes_not_decoded(const io::CaptureReader& reader, const CrcFailures& crc_failures) {
+    std::string what;
+    const auto add = [&what](const std::string& part) { what += (what.empty() ? "" : ", ") + part; };
+    if (const std::uint32_t n = crc_failures.frames())
+        add(std::to_string(n) + (n == 1 ? " frame failed its CRC check" : " frames failed their CRC check"));
+    std::uint64_t skipped = 0;
+    for (const auto& d : reader.damaged()) skipped += d.bytes;
+    if (skipped > 0)
+        add(std::to_string(skipped) + " damaged bytes skipped in " + std::to_string(reader.damaged().size()) +
+            (reader.damaged().size() == 1 ? " stretch" : " stretches"));
+    if (reader.truncated_at()) add("the last record is cut");
+    return what;
+}
+
+/// The summary as one JSON object (docs/recording.md lists the keys).
+nlohmann::json summary_json(const DecodeOptions& o, const io::CaptureReader& reader, const io::LogAssembler& assembler,
+                            const CrcFailures& crc_failures, std::optional<std::uint64_t> rescued_start) {
+    const io::AssemblyStats& s = assembler.stats();
+    const proto::DecoderCounters& d = assembler.decoder_counters();
+    nlohmann::json damaged = nlohmann::json::array();
+    for (const auto& stretch : reader.damaged()) damaged.push_back({{"offset", stretch.offset}, {"bytes", stretch.bytes}});
+    const auto offset_or_null = [](const std::optional<std::uint64_t>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
+    return {{"capture", o.capture},
+            {"log", o.output},
+            {"rows", s.rows},
+            {"frames_received", s.frames},
+            {"frames_lost", s.lost_frames},
+            {"loss_percent", io::loss_percent(s)},
+            {"duplicate_frames", s.duplicate_frames},
+            {"reordered_frames", s.reordered_frames},
+            {"gaps", s.gaps},
+            {"firmware_restarts", s.firmware_restarts},
+            {"rows_missing_raw", s.raw_missing},
+            {"skipped_samples",
+             {{"repeated", s.stale_samples}, {"beyond_converter", s.unreachable_samples}, {"empty_window", s.empty_samples}}},
+            {"crc_errors", d.bad_crc},
+            {"bad_length", d.bad_length},
+            {"resync_bytes", d.resync_bytes},
+            {"crc_failures", crc_failures.json()},
+            {"damaged", damaged},
+            {"retimed", reader.retimed()},
+            {"truncated_at", offset_or_null(reader.truncated_at())},
+            {"start_read_at", offset_or_null(rescued_start)}};
+}
+
 void run_decode(const DecodeOptions& o) {
+    // Two documents cannot share one stream.
+    if (o.output == "-" && o.json) throw UsageError("--json: the log goes to standard output (-o -); write it to a file");
     refuse_writing_over_input(o.output, "-o", o.capture, "capture");
     // The recorded log usually sits beside its capture: `decode run.csv.cap -o run.csv` of a damaged capture had
     // replaced an intact recording with fewer rows.
@@ -133,7 +195,8 @@ void run_decode(const DecodeOptions& o) {
     auto crc_failures = std::make_unique<CrcFailures>();
     bool started = feed(o, *reader, *assembler, std::nullopt, *crc_failures);
     // Only a capture without a start is read again, for a damaged one (the assembler wrote nothing without it).
-    if (const auto rescued_start = started ? std::nullopt : damaged_start(o.capture)) {
+    const std::optional<std::uint64_t> rescued_start = started ? std::nullopt : damaged_start(o.capture);
+    if (rescued_start) {
         reader = std::make_unique<io::CaptureReader>(o.capture);
         assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
         crc_failures = std::make_unique<CrcFailures>();
@@ -161,14 +224,21 @@ void run_decode(const DecodeOptions& o) {
                      o.capture.c_str(), static_cast<unsigned long long>(*reader->truncated_at()));
     }
     const io::AssemblyStats& s = assembler->stats();
-    // With the log on standard output, the summary goes beside the warnings rather than after its last row.
-    std::FILE* summary = o.output == "-" ? stderr : stdout;
-    std::fprintf(summary, "decoded %llu rows to %s; frames %llu, lost %llu (%.3f %%; crc errors %u), gaps %llu\n",
-                static_cast<unsigned long long>(s.rows), o.output == "-" ? "standard output" : o.output.c_str(),
-                static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.lost_frames),
-                io::loss_percent(s), static_cast<unsigned>(assembler->decoder_counters().bad_crc),
-                static_cast<unsigned long long>(s.gaps));
-    if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::fprintf(summary, "%s\n", skipped.c_str());
+    if (o.json) {
+        report::write_json(std::cout, summary_json(o, *reader, *assembler, *crc_failures, rescued_start));
+    } else {
+        // With the log on standard output, the summary goes beside the warnings rather than after its last row.
+        std::FILE* summary = o.output == "-" ? stderr : stdout;
+        std::fprintf(summary, "decoded %llu rows to %s; frames %llu, lost %llu (%.3f %%; crc errors %u), gaps %llu\n",
+                     static_cast<unsigned long long>(s.rows), o.output == "-" ? "standard output" : o.output.c_str(),
+                     static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.lost_frames),
+                     io::loss_percent(s), static_cast<unsigned>(assembler->decoder_counters().bad_crc),
+                     static_cast<unsigned long long>(s.gaps));
+        if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::fprintf(summary, "%s\n", skipped.c_str());
+    }
+    // After the log and the summary are written: a script is told, and no good row is lost for it.
+    if (const std::string lost = o.strict ? bytes_not_decoded(*reader, *crc_failures) : ""; !lost.empty())
+        throw DataError(o.capture, 0, "--strict: " + lost + " (the log holds every good row)");
 }
 
 }  // namespace
@@ -180,9 +250,15 @@ void register_decode(CLI::App& app) {
     cmd->add_option("-o,--output", o->output, "Log file to write (its folder is made; - for standard output)")
         ->required();
     cmd->add_flag("--overwrite", o->overwrite, "Replace a file already at -o (refused otherwise)");
+    cmd->add_flag("--json", o->json,
+                  "Print the summary as JSON (keys: rows, frames_received, frames_lost, crc_errors, crc_failures, "
+                  "damaged, truncated_at, ...; docs/recording.md)");
+    cmd->add_flag("--strict", o->strict,
+                  "Exit 3 when bytes were not decoded (frames failing their CRC, damaged stretches skipped, a cut last "
+                  "record); the log still holds every good row");
     cmd->footer("Damage in the capture (a cut last record, skipped stretches, frames failing their CRC) is warned of "
-                "with byte offsets on standard error; the log is still written, and the exit code is 0. Exit 3: no "
-                "log can be rebuilt (not a capture, no recording start).");
+                "with byte offsets on standard error; the log is still written, and the exit code is 0 (3 with "
+                "--strict). Exit 3: no log can be rebuilt (not a capture, no recording start).");
     cmd->callback([o] { run_decode(*o); });
 }
 

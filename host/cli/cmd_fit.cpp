@@ -35,7 +35,7 @@ std::string interval(const fit::Estimate& e, const std::array<double, 2>& ci) {
 }
 
 /// Rows of cells in columns as wide as their widest cell: a value such as -6.92737e+11 or the status
-/// iteration_limit had pushed the rest of its row out of line under fixed widths. A row of two cells (a series
+/// "not converged (iteration limit)" had pushed the rest of its row out of line under fixed widths. A row of two cells (a series
 /// that failed) keeps its second cell whole, beside the first column.
 void print_columns(const std::vector<std::vector<std::string>>& rows) {
     std::vector<std::size_t> width(rows.front().size(), 0);
@@ -84,7 +84,7 @@ void print_table(const fit::FileAnalysis& file) {
             if (c2_known) c2 += " (" + physical(a.plain.c2, level_to_physical(c, a.plain.c2.value)) + " " + name + ")";
         }
         rows.push_back({s.name, c1, c2, c1_t ? at_precision(a.plain.t_s, a.plain.t_s.value) : fit::kNotDetermined,
-                        fit::fit_status_name(a.fit.status), significant(a.fit.rms, 4),
+                        fit::fit_status_words(a.fit.status), significant(a.fit.rms, 4),
                         a.whiteness.white ? "white" : "NOT white"});
         if (!c1_t) undetermined.push_back(s.name + ": " + fit::kNotDetermined + ": " + a.undetermined_reason());
     }

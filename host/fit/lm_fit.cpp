@@ -77,6 +77,11 @@ const char* fit_status_name(FitStatus s) {
     return "unknown";
 }
 
+const char* fit_status_words(FitStatus s) {
+    // The JSON spelling iteration_limit read as a name in fit's table, not as a fit that stopped short.
+    return s == FitStatus::iteration_limit ? "not converged (iteration limit)" : fit_status_name(s);
+}
+
 FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& data, const FitOptions& options) {
     const std::size_t n = t_s.size();
     if (n < 4 || data.size() != n) throw UsageError("fit_drift: need at least 4 samples with one time each");

@@ -25,6 +25,9 @@ enum class FitStatus {
 /// "converged", "iteration_limit", "singular" (the JSON spelling).
 const char* fit_status_name(FitStatus s);
 
+/// The status in words for a person at a terminal: "converged", "not converged (iteration limit)", "singular".
+const char* fit_status_words(FitStatus s);
+
 struct FitOptions {
     int max_function_evaluations = 400;  ///< MINPACK maxfev
     double tolerance = 1e-10;            ///< relative ftol and xtol

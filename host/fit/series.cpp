@@ -103,11 +103,14 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 }
 
 bool is_canonical_log(const std::string& path) {
+    // One open for both heads: the capture's magic is its first line, the log's the first line that is not blank.
     std::ifstream in = open_input_file(path);
     // Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number").
-    if (io::is_capture_file(path))
+    if (io::starts_as_capture(in))
         throw DataError(path, 1, "a raw capture from `driftlab record`, not a log: rebuild its log with `driftlab decode " +
                                      path + " -o LOG.csv` and analyse that");
+    in.clear();
+    in.seekg(0);
     return starts_as_log(in);
 }
 

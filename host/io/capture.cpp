@@ -202,8 +202,7 @@ std::optional<CaptureRecord> CaptureReader::next() {
     return next();
 }
 
-bool is_capture_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
+bool starts_as_capture(std::istream& in) {
     std::string first;
     return std::getline(in, first) && first.rfind(kMagicKey, 0) == 0;
 }

@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <istream>
 #include <optional>
 #include <string>
 #include <utility>
@@ -103,8 +104,8 @@ private:
     std::vector<std::uint64_t> retimed_;
 };
 
-/// True when the file at `path` opens with a capture's magic line, of any format version: analysis commands name
-/// `decode` for it rather than failing on its header as a table's.
-bool is_capture_file(const std::string& path);
+/// True when `in` opens with a capture's magic line, of any format version: analysis commands name `decode` for it
+/// rather than failing on its header as a table's. Reads the first line from the stream's position.
+bool starts_as_capture(std::istream& in);
 
 }  // namespace driftlab::host::io

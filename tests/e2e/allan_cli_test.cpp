@@ -8,6 +8,8 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "e2e_support.hpp"
 #include "host/fit/file_analysis.hpp"
@@ -175,6 +177,29 @@ TEST(AllanCli, PackingIsWarnedWhereItCanBiasTheCurve) {
     const auto gx = nlohmann::json::parse(steady.output)["channels"]["gx"];
     EXPECT_GT(gx["packed_samples"].get<int>(), 0);
     EXPECT_TRUE(gx["packing_warning"].is_null()) << steady.output;
+}
+
+// --per-decade counts taus in a decade: a whole number. 2.5 had failed in the parser's words ("Could not convert");
+// 3 gives m = round(10^(k/3)) up to the largest overlapping factor floor(2000 / 4) = 500 of 2000 rate samples.
+TEST(AllanCli, PerDecadeIsAWholeNumberOfTausNamedWithItsRange) {
+    TempDir dir("allandecade");
+    const std::string table = table_at_50_hz(dir);
+    for (const char* bad : {"2.5", "0", "1001"}) {
+        const RunResult r =
+            run_driftlab({"allan", table, "--kind", "rate", "--tau0", "0.02", "--grid", "log", "--per-decade", bad}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find(std::string("--per-decade: expected a whole number in [1, 1000], got '") + bad + "'"),
+                  std::string::npos)
+            << r.output;
+    }
+    const RunResult r = run_driftlab({"allan", table, "--kind", "rate", "--tau0", "0.02", "--grid", "log",
+                                      "--per-decade", "3", "--deviation", "oadev", "--json"},
+                                     dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::vector<double> tau = nlohmann::json::parse(r.output)["channels"]["gx"]["tau"].get<std::vector<double>>();
+    const std::vector<int> m = {1, 2, 5, 10, 22, 46, 100, 215, 464};
+    ASSERT_EQ(tau.size(), m.size()) << r.output;
+    for (std::size_t i = 0; i < m.size(); ++i) EXPECT_NEAR(tau[i], 0.02 * m[i], 1e-9) << i;
 }
 
 TEST(AllanCli, TheTimeColumnIsNotASeries) {

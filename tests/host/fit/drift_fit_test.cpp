@@ -131,6 +131,21 @@ TEST(DriftFit, DataWithoutCurvatureIsFlaggedNotMisreported) {
     EXPECT_NEAR(a.fit.parameters.c1 / a.fit.parameters.t_s, 1e-3, 1e-4);
 }
 
+// A fit whose evaluation budget runs out reads as such in fit's table; the JSON keeps the key's spelling. The
+// table had printed iteration_limit, a name rather than words.
+TEST(DriftFit, AnExhaustedBudgetReadsNotConvergedInWordsAndIterationLimitInJson) {
+    const Series s = simulate({-28.0, 622.0, 1050.0}, 3000, 1.0, 0.5, 0.0, 5);
+    FitOptions two_evaluations;
+    two_evaluations.max_function_evaluations = 2;
+    const FitResult f = fit_drift(s.t_s, s.values, two_evaluations);
+    ASSERT_EQ(f.status, FitStatus::iteration_limit) << f.solver_stop;
+    EXPECT_STREQ(fit_status_words(f.status), "not converged (iteration limit)");
+    EXPECT_STREQ(fit_status_name(f.status), "iteration_limit");
+    // The other statuses are words already, the same in both.
+    for (const FitStatus other : {FitStatus::converged, FitStatus::singular})
+        EXPECT_STREQ(fit_status_words(other), fit_status_name(other));
+}
+
 // Time stamps far from power-on (Unix time, or a clock started long before) leave the columns of J dependent to
 // ~1e-12 and below: the fit is singular with unbounded intervals. Computed from J^T J, the condition number had
 // topped out near 1e8: status converged, and standard errors of a few counts (or exactly 0) where the exact ones

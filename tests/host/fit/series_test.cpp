@@ -45,5 +45,22 @@ TEST(Series, ARawCaptureIsRefusedNamingDecode) {
     std::filesystem::remove(path);
 }
 
+// is_canonical_log reads the head once for both checks: a log whose magic is its first line (which the capture
+// check has already read) and one after blank lines are logs; a table is not; a missing file is named.
+TEST(Series, OneOpenOfTheHeadTellsALogFromATable) {
+    const std::string path =
+        (std::filesystem::temp_directory_path() / ("driftlab_head_" + std::to_string(::getpid()) + ".csv")).string();
+    const auto head_of = [&path](const std::string& text) {
+        std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+        return is_canonical_log(path);
+    };
+    EXPECT_TRUE(head_of("# driftlab-log: 1\nt_s,seq\n"));
+    EXPECT_TRUE(head_of("\n  \r\n# driftlab-log: 1\n"));
+    EXPECT_FALSE(head_of("t_s gyro\n0 1\n"));
+    EXPECT_FALSE(head_of("# driftlab-capture: 1\n"));  // a comment, not a capture's magic: a table's
+    std::filesystem::remove(path);
+    EXPECT_THROW(is_canonical_log(path), DataError);
+}
+
 }  // namespace
 }  // namespace driftlab::host::fit

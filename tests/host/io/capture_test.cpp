@@ -95,7 +95,8 @@ TEST(Capture, NotACaptureIsADataErrorAndATailOfNoRecordIsDamage) {
     const std::string path = temp_file("bad.cap");
     std::ofstream(path) << "# driftlab-log: 1\n";
     EXPECT_THROW(CaptureReader{path}, DataError);
-    EXPECT_FALSE(is_capture_file(path));
+    std::ifstream log_head(path);
+    EXPECT_FALSE(starts_as_capture(log_head));
     std::ofstream(path, std::ios::binary) << "driftlab-capture: 1\n\nX00000000000000";
     CaptureReader r(path);
     EXPECT_FALSE(r.next());
@@ -105,7 +106,8 @@ TEST(Capture, NotACaptureIsADataErrorAndATailOfNoRecordIsDamage) {
     EXPECT_EQ(r.damaged()[0].bytes, 15u);
     // A later format is named as such, as a log's version is, not as something else.
     std::ofstream(path, std::ios::binary) << "driftlab-capture: 2\n\n";
-    EXPECT_TRUE(is_capture_file(path));
+    std::ifstream later_head(path);
+    EXPECT_TRUE(starts_as_capture(later_head));
     try {
         CaptureReader{path};
         ADD_FAILURE() << "format version 2 was read";
