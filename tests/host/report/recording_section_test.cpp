@@ -35,6 +35,10 @@ std::string write_log(const TempDir& dir, const std::string& header, int rows, d
     return path;
 }
 
+/// The channels row of a log with all four channels: 90/512 deg/s and 19.14 mm/s^2 per count (host/util/units.hpp).
+const std::string kFourChannels =
+    "gyro, accel_x, accel_y, accel_z [counts]; a count is 0.17578 deg/s (gyro), 19.14 mm/s^2 (accelerometer)";
+
 fit::FileAnalysis analyse(const std::string& path) {
     fit::FileAnalysisRequest request;
     request.path = path;
@@ -61,8 +65,7 @@ TEST(RecordingSection, ARecordedLogShowsItsBoardFirmwareRateAndSmoothing) {
         {"output rate", "10 Hz (sample_period_s 0.1 s, stream mode)"},
         {"smoothing", "on-board least squares of order 1 (a line) over 16 conversions, 16 conversions per output"},
         {"converter", "10-bit, 5 V reference, 250000 Hz tick"},
-        {"channels", "gyro, accel_x, accel_y, accel_z [counts]; a count is 0.17578 deg/s (gyro), 19.14 mm/s^2 "
-                     "(accelerometer)"},
+        {"channels", kFourChannels},
     };
     EXPECT_EQ(recording_rows(*file.log), expected);
 }
@@ -77,8 +80,7 @@ TEST(RecordingSection, ASparseHeaderGivesOnlyTheRowsTheDataGive) {
         {"duration", "1198 s (19 min 58 s), t_s 1 to 1199 s after power-on"},
         {"samples", "600"},
         {"output rate", "0.5 Hz (the rows' mean spacing; the header names no sample_period_s)"},
-        {"channels", "gyro, accel_x, accel_y, accel_z [counts]; a count is 0.17578 deg/s (gyro), 19.14 mm/s^2 "
-                     "(accelerometer)"},
+        {"channels", kFourChannels},
     };
     EXPECT_EQ(recording_rows(*file.log), expected);
     ReportOptions options;
