@@ -16,7 +16,6 @@
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
-#include "host/util/units.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -37,24 +36,6 @@ struct AllanCommandOptions {
     bool json = false;
     std::string plot_dir;
 };
-
-/// How the series' unit converts to SI for physical terms and Kalibr densities.
-struct UnitInfo {
-    std::string name;
-    stats::RateQuantity quantity = stats::RateQuantity::unknown;
-    double si_per_unit = 1.0;  ///< to rad/s or m/s^2
-};
-
-UnitInfo unit_of_channel(Channel c) {
-    const PhysicalUnit physical = physical_unit(c);
-    const auto unit = stats::rate_unit(physical.name);  // deg/s or mm/s^2, both in the table (test RateUnit.*)
-    return {"counts", unit->quantity, physical.per_count * unit->si_per_unit};
-}
-
-UnitInfo unit_of_name(const std::string& name) {
-    if (const auto u = stats::rate_unit(name)) return {u->name, u->quantity, u->si_per_unit};
-    return {name.empty() ? "unit" : name, stats::RateQuantity::unknown, 1.0};
-}
 
 std::vector<stats::Deviation> parse_deviations(const std::string& s) {
     if (s == "all") return {stats::Deviation::oadev, stats::Deviation::mdev, stats::Deviation::ohdev};
@@ -78,7 +59,7 @@ json curve_json(const stats::AnalysedCurve& c, const char* dev_key) {
     return j;
 }
 
-json terms_json(const stats::NoiseTermFit& t, const UnitInfo& u) {
+json terms_json(const stats::NoiseTermFit& t, const stats::SampleUnit& u) {
     if (!t.ok) return nullptr;
     const std::string& U = u.name;
     const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", "", "/sqrt(s)", "/s"};
@@ -100,7 +81,7 @@ json terms_json(const stats::NoiseTermFit& t, const UnitInfo& u) {
     return j;
 }
 
-json version_json(const stats::AllanCurves& v, const UnitInfo& u) {
+json version_json(const stats::AllanCurves& v, const stats::SampleUnit& u) {
     json j = curve_json(v.curves.front(), "adev");
     if (const auto* m = v.find(stats::Deviation::mdev)) j["mdev"] = curve_json(*m, "dev");
     if (const auto* h = v.find(stats::Deviation::ohdev)) j["hdev"] = curve_json(*h, "dev");
@@ -138,7 +119,7 @@ void print_skipped_note(const stats::DeviationCurve& c, double longest_gap_free_
                 c.tau_s[first], 100.0 * share(most), c.tau_s[most], longest_gap_free_s);
 }
 
-void print_version(const char* title, const stats::AllanCurves& v, const UnitInfo& u, double longest_gap_free_s) {
+void print_version(const char* title, const stats::AllanCurves& v, const stats::SampleUnit& u, double longest_gap_free_s) {
     std::printf("  %s\n", title);
     for (const auto& c : v.curves) {
         std::printf("    %-6s %12s %10s %5s %12s %12s %12s\n", std::string(stats::deviation_name(c.curve.type)).c_str(),
@@ -164,7 +145,7 @@ void print_version(const char* title, const stats::AllanCurves& v, const UnitInf
     for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) print_named("kalibr ", nv);
 }
 
-report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, const UnitInfo& u) {
+report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, const stats::SampleUnit& u) {
     report::Plot p;
     p.title = "Allan deviation: " + name;
     p.x_label = "tau [s]";
@@ -252,7 +233,8 @@ void run(const AllanCommandOptions& o) {
         } catch (const std::invalid_argument& e) {
             throw DataError(o.path, 0, "series '" + s.name + "': " + e.what());
         }
-        const UnitInfo u = s.channel ? unit_of_channel(*s.channel) : unit_of_name(o.unit);
+        const stats::SampleUnit u =
+            s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(o.unit.empty() ? "unit" : o.unit);
         const std::optional<std::string> packing = stats::packing_caveat(r, r.primary().curves.front());
         if (o.json) {
             json c = version_json(r.primary(), u);

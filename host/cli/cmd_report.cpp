@@ -3,12 +3,15 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "host/cli/commands.hpp"
 #include "host/fit/file_analysis.hpp"
 #include "host/report/analysis_json.hpp"
 #include "host/report/html_report.hpp"
 #include "host/report/json_out.hpp"
+#include "host/stats/rate_unit.hpp"
 #include "host/util/error.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
@@ -21,12 +24,37 @@ struct ReportCommandOptions {
     std::string output = "report.html";
     bool json = false;
     bool no_plots = false;
+    std::vector<std::string> units;  ///< --unit [COLUMN:]UNIT, plain tables
 };
+
+/// Gives the plain table's analysed columns the units of --unit, so that the page reads in them (Allan headers,
+/// noise terms in navigation units). A column --unit names that is not among them is refused, naming the columns.
+void assign_units(const stats::UnitAssignment& units, fit::FileAnalysis& file) {
+    for (const stats::ColumnUnit& u : units.units) {
+        if (u.column.empty()) continue;
+        std::string columns;
+        bool found = false;
+        for (const auto& s : file.series) {
+            found |= s.name == u.column;
+            columns += (columns.empty() ? "" : ", ") + s.name;
+        }
+        if (!found)
+            throw UsageError("--unit '" + u.argument + "': " + file.path + " has no column '" + u.column +
+                             "' among those analysed (" + columns + ")");
+    }
+    for (auto& s : file.series)
+        if (const auto unit = units.for_column(s.name); unit && s.analysis) s.analysis->data.unit = unit->name;
+}
 
 void run(const ReportCommandOptions& opts) {
     refuse_writing_over_input(opts.output, "-o", opts.request.path, "log");
+    const stats::UnitAssignment units = stats::parse_unit_assignment(opts.units, "--unit");
+    if (!opts.units.empty() && fit::is_canonical_log(opts.request.path))
+        throw UsageError("--unit: " + opts.request.path +
+                         " is a driftlab log: its channels are in counts, whose physical units are known");
     make_folder_of(opts.output, "report");  // before the work, as --plot does
-    const fit::FileAnalysis file = fit::analyse_file(opts.request);
+    fit::FileAnalysis file = fit::analyse_file(opts.request);
+    assign_units(units, file);
     // A page of empty tables had been written where no series could be analysed; one that failed is shown there.
     if (file.failures() == file.series.size()) throw_if_failed(file, false);
     report::ReportOptions ropts;
@@ -57,6 +85,12 @@ void register_report(CLI::App& app) {
     cmd->add_option("-o,--output", opts->output, "HTML file to write (default report.html)");
     cmd->add_flag("--json", opts->json, "Also print the fit results as JSON (same keys as `fit --json`)");
     cmd->add_flag("--no-plots", opts->no_plots, "Leave the figures out (no gnuplot needed)");
+    cmd->add_option("--unit", opts->units,
+                    "Plain tables: [COLUMN:]UNIT, the unit of a column's samples (of every other column without "
+                    "COLUMN:), for noise terms in navigation units: " +
+                        stats::rate_unit_names(stats::RateQuantity::angular_rate) + ", " +
+                        stats::rate_unit_names(stats::RateQuantity::acceleration) + "; repeat for several columns")
+        ->allow_extra_args(false);  // one value an occurrence: `--unit mg LOG` had taken the log for a unit
     cmd->callback([opts] { run(*opts); });
 }
 

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "host/log/log_reader.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -43,6 +44,19 @@ void check_time_column(const std::string& column, FileAnalysis& out) {
         refuse_or_note_unused("--time-column " + column, column == "t_s", own_time_of(out), "plain tables", out);
 }
 
+LogOverview overview_of(const LogData& log) {
+    LogOverview o;
+    o.metadata = log.metadata;
+    o.rows = log.size();
+    o.first_t_s = log.t_s.front();  // a log has rows (read_log refuses one without)
+    o.last_t_s = log.t_s.back();
+    o.gap_events = log.gaps.size();
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (log.recorded[c]) o.channels.emplace_back(kChannelNames[c]);
+    for (const auto& column : log.optional_columns) o.raw_codes |= is_raw_code_column(column.first);
+    return o;
+}
+
 }  // namespace
 
 std::size_t FileAnalysis::failures() const {
@@ -76,8 +90,15 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
     out.path = request.path;
     out.canonical_log = is_canonical_log(request.path);
     if (!request.time_column.empty()) check_time_column(request.time_column, out);
-    const std::vector<Series> all =
-        load_series(request.path, request.names, request.time_column, request.sample_period_s.value_or(1.0));
+    std::vector<Series> all;
+    if (out.canonical_log) {
+        // Read here rather than through load_series: the report shows the log as a whole beside the analysis.
+        const LogData log = read_log(request.path);
+        out.log = overview_of(log);
+        all = series_from_log(log, request.names);
+    } else {
+        all = load_series(request.path, request.names, request.time_column, request.sample_period_s.value_or(1.0));
+    }
     if (request.sample_period_s) check_sample_period(all, *request.sample_period_s, out);
     for (const Series& s : all) {
         SeriesOutcome o;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "host/fit/drift_analysis.hpp"
+#include "host/log/log_metadata.hpp"
 
 namespace driftlab::host::fit {
 
@@ -23,6 +24,18 @@ struct FileAnalysisRequest {
     AnalysisOptions options;
 };
 
+/// A canonical log as a whole, before the time range and the channel choice: what the report's recording table
+/// shows (host/report/recording_section.hpp).
+struct LogOverview {
+    LogMetadata metadata;
+    std::size_t rows = 0;
+    double first_t_s = 0.0;              ///< [s since power-on]
+    double last_t_s = 0.0;               ///< [s since power-on]
+    std::size_t gap_events = 0;          ///< `# gap:` lines: the recorder lost the link
+    std::vector<std::string> channels;   ///< the channels the source really has, in Channel order
+    bool raw_codes = false;              ///< raw_<channel> columns beside the smoothed values
+};
+
 struct SeriesOutcome {
     std::string name;
     std::optional<DriftAnalysis> analysis;  ///< set on success
@@ -34,6 +47,7 @@ struct FileAnalysis {
     bool canonical_log = false;
     std::vector<SeriesOutcome> series;
     std::vector<std::string> notes;  ///< about the whole file (an option it does not use), printed once
+    std::optional<LogOverview> log;  ///< set for a canonical log
     /// Number of series without a result.
     std::size_t failures() const;
     /// "file: series 'x': why; series 'y': why" for the failures.

@@ -26,7 +26,7 @@ Estimate estimate(double value, double scaled_variance, double inflation, double
 std::string with_error(const Estimate& e) {
     // A singular fit has no standard errors: "+- inf" had been printed as if it were one.
     if (!std::isfinite(e.stderr_)) return to_precision_of(e.value, e.stderr_) + " (no interval: the fit is singular)";
-    return to_precision_of(e.value, e.stderr_) + " +- " + to_precision_of(e.stderr_, e.stderr_);
+    return value_with_error(e.value, e.stderr_, "+-");
 }
 
 ParameterIntervals parameter_intervals(const FitResult& fit, double tau) {

@@ -7,7 +7,9 @@
 #include "host/report/analysis_plots.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/report/html.hpp"
+#include "host/report/recording_section.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 #include "host/util/units.hpp"
 
 namespace driftlab::host::report {
@@ -16,7 +18,7 @@ namespace {
 constexpr const char* kStyle =
     "body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
     "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}"
-    "th{background:#eee}td:first-child{text-align:left}.bad{color:#b00}.good{color:#070}"
+    "th{background:#eee}td:first-child,.recording td,.recording th{text-align:left}.bad{color:#b00}.good{color:#070}"
     ".warn{background:#fff4e0;border-left:4px solid #e0a000;padding:4px 8px;margin:4px 0}"
     "figure{margin:1em 0}figcaption{font-size:90%;color:#555}svg{max-width:100%;height:auto}";
 
@@ -53,11 +55,13 @@ struct Figures {
     }
 };
 
-std::string estimate_cell(const fit::Estimate& e, int digits) {
-    return sig(e.value, digits) + " &plusmn; " + sig(e.stderr_, 2);
-}
+// Values carry the digits their standard error justifies (two on the error), not a fixed count: 12.342 +- 0.051,
+// not 12.3417 +- 0.0512.
+std::string estimate_cell(const fit::Estimate& e) { return value_with_error(e.value, e.stderr_, "&plusmn;"); }
 
-std::string ci_cell(const std::array<double, 2>& ci) { return "[" + sig(ci[0], 5) + ", " + sig(ci[1], 5) + "]"; }
+std::string ci_cell(const fit::Estimate& e) {
+    return "[" + to_precision_of(e.ci95[0], e.stderr_) + ", " + to_precision_of(e.ci95[1], e.stderr_) + "]";
+}
 
 }  // namespace
 
@@ -75,6 +79,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     h += "<h1>Drift analysis</h1>\n<p>File <code>" + html_escape(file.path) + "</code> (" +
          (file.canonical_log ? "driftlab log" : "plain table") + "), generated " + stamp + " by driftlab.</p>\n";
     for (const auto& note : file.notes) h += "<p>Note: " + html_escape(note) + "</p>\n";
+    if (file.log) h += recording_section(*file.log);
 
     // Table 1 equivalent.
     h += "<h2>Turn-on drift, eq. 1: C1 (1 &minus; exp(&minus;t/T)) + C2</h2>\n";
@@ -91,17 +96,23 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
         const fit::DriftAnalysis& a = *s.analysis;
         // The fit's values of parameters the data do not determine are arbitrary (C1 = -6.9e11 counts on a warm log).
         const bool c1_t = a.c1_and_t_determined(), c2_known = a.c2_determined();
-        std::string c1 = c1_t ? sig(a.plain.c1.value, 5) : fit::kNotDetermined;
-        std::string c2 = c2_known ? sig(a.plain.c2.value, 6) : fit::kNotDetermined;
+        const fit::Estimate &c1_e = a.plain.c1, &c2_e = a.plain.c2;
+        std::string c1 = c1_t ? to_precision_of(c1_e.value, c1_e.stderr_) : fit::kNotDetermined;
+        std::string c2 = c2_known ? to_precision_of(c2_e.value, c2_e.stderr_) : fit::kNotDetermined;
         if (a.data.channel) {
             const Channel c = *a.data.channel;
             const std::string unit = physical_unit(c).name;
             accel_shown |= c != Channel::gyro;
-            if (c1_t) c1 += " (" + sig(counts_to_physical(c, a.plain.c1.value), 4) + " " + unit + ")";
-            if (c2_known) c2 += " (" + sig(level_to_physical(c, a.plain.c2.value), 4) + " " + unit + " from mid-scale)";
+            // A standard error in counts is one in the physical unit too, scaled alike.
+            const auto physical = [c](double v, const fit::Estimate& e) {
+                return to_precision_of(v, counts_to_physical(c, e.stderr_));
+            };
+            if (c1_t) c1 += " (" + physical(counts_to_physical(c, c1_e.value), c1_e) + " " + unit + ")";
+            if (c2_known)
+                c2 += " (" + physical(level_to_physical(c, c2_e.value), c2_e) + " " + unit + " from mid-scale)";
         }
         h += "<tr><td>" + html_escape(s.name) + "</td><td>" + c1 + "</td><td>" + c2 + "</td><td>" +
-             (c1_t ? sig(a.plain.t_s.value, 5) : fit::kNotDetermined) + "</td><td>" +
+             (c1_t ? to_precision_of(a.plain.t_s.value, a.plain.t_s.stderr_) : fit::kNotDetermined) + "</td><td>" +
              html_escape(a.data.unit.empty() ? "-" : a.data.unit) + "</td><td>" + fit::fit_status_name(a.fit.status) +
              "</td><td>" + std::to_string(a.fit.n) + "</td><td>" + sig(a.fit.rms, 3) + "</td></tr>\n";
         if (!c1_t)
@@ -119,8 +130,8 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     for (const fit::DriftAnalysis* a : ok) {
         const auto row = [&](const char* p, const fit::Estimate& e, const fit::Estimate& w, bool determined) {
             h += "<tr><td>" + html_escape(a->data.name) + "</td><td>" + p + "</td>" +
-                 (determined ? "<td>" + estimate_cell(e, 6) + "</td><td>" + ci_cell(e.ci95) + "</td><td>" +
-                                   ci_cell(w.ci95) + "</td>"
+                 (determined ? "<td>" + estimate_cell(e) + "</td><td>" + ci_cell(e) + "</td><td>" + ci_cell(w) +
+                                   "</td>"
                              : "<td colspan=\"3\">" + std::string(fit::kNotDetermined) + "</td>") +
                  "</tr>\n";
         };

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "host/stats/rate_unit.hpp"
+
 namespace driftlab::host::stats {
 namespace {
 
@@ -193,7 +195,6 @@ std::vector<NamedValue> physical_terms(const NoiseTermFit& fit, RateQuantity qua
                 term_value("R_deg_per_s2", fit, r, si_per_unit, deg),
                 term_value("R_deg_per_h2", fit, r, si_per_unit, [](double x) { return x * kDegPerRad * kHourS * kHourS; })};
     }
-    constexpr double kStandardGravity = 9.80665;
     return {term_value("Q_m_per_s", fit, q, si_per_unit, si),
             term_value("N_m_per_s2_per_sqrt_hz", fit, n, si_per_unit, si),
             term_value("N_m_per_s_per_sqrt_h", fit, n, si_per_unit, [](double x) { return x * kSqrtHourS; }),

@@ -4,6 +4,9 @@
 #include <array>
 #include <numbers>
 
+#include "host/util/error.hpp"
+#include "host/util/units.hpp"
+
 namespace driftlab::host::stats {
 
 namespace {
@@ -45,6 +48,50 @@ std::string rate_unit_names(RateQuantity quantity) {
     for (const Entry& e : kUnits)
         if (e.quantity == quantity) names += (names.empty() ? "" : ", ") + std::string(e.spelling);
     return names;
+}
+
+std::optional<RateUnit> UnitAssignment::for_column(const std::string& column) const {
+    std::optional<RateUnit> every;
+    for (const ColumnUnit& u : units) {
+        if (u.column == column) return u.unit;
+        if (u.column.empty()) every = u.unit;
+    }
+    return every;
+}
+
+UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option) {
+    UnitAssignment out;
+    for (const std::string& value : values) {
+        const std::string named = option + " '" + value + "'";
+        // A unit holds no colon (m/s^2, deg/s), so the last one ends a column name.
+        const auto colon = value.rfind(':');
+        const std::string column = colon == std::string::npos ? "" : value.substr(0, colon);
+        const std::string name = colon == std::string::npos ? value : value.substr(colon + 1);
+        if (colon != std::string::npos && column.empty())
+            throw UsageError(named + ": no column before ':' (COLUMN:UNIT, or UNIT alone for every column)");
+        const auto unit = rate_unit(name);
+        if (!unit)
+            throw UsageError(named + ": " + (name.empty() ? "no unit" : "unknown unit '" + name + "'") +
+                             "; angular rate: " + rate_unit_names(RateQuantity::angular_rate) +
+                             "; acceleration: " + rate_unit_names(RateQuantity::acceleration));
+        for (const ColumnUnit& earlier : out.units)
+            if (earlier.column == column)
+                throw UsageError(named + ": " + (column.empty() ? "every column" : "column '" + column + "'") +
+                                 " already has a unit (" + option + " '" + earlier.argument + "')");
+        out.units.push_back({column, *unit, value});
+    }
+    return out;
+}
+
+SampleUnit unit_of_channel(Channel c) {
+    const PhysicalUnit physical = physical_unit(c);
+    const auto unit = rate_unit(physical.name);  // deg/s or mm/s^2, both in the table (test RateUnit.*)
+    return {"counts", unit->quantity, physical.per_count * unit->si_per_unit};
+}
+
+SampleUnit unit_of_name(const std::string& name) {
+    if (const auto u = rate_unit(name)) return {u->name, u->quantity, u->si_per_unit};
+    return {name, RateQuantity::unknown, 1.0};
 }
 
 }  // namespace driftlab::host::stats

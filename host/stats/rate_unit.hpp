@@ -5,7 +5,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "driftlab/channels.hpp"
 #include "host/stats/noise_terms.hpp"
 
 namespace driftlab::host::stats {
@@ -22,6 +24,38 @@ std::optional<RateUnit> rate_unit(std::string_view name);
 
 /// The spellings rate_unit() knows for `quantity`, comma-separated, for a message.
 std::string rate_unit_names(RateQuantity quantity);
+
+/// What a series' samples are, for its noise terms in physical units (physical_terms, kalibr_densities).
+struct SampleUnit {
+    std::string name;                                ///< the samples' unit, for labels
+    RateQuantity quantity = RateQuantity::unknown;   ///< unknown: the unit only labels
+    double si_per_unit = 1.0;                        ///< rad/s or m/s^2 per unit
+};
+
+/// A log channel's samples: counts, at the channel's physical scale (host/util/units.hpp).
+SampleUnit unit_of_channel(Channel c);
+
+/// Samples in the unit `name`: one rate_unit() knows, or another name (or none) that only labels them.
+SampleUnit unit_of_name(const std::string& name);
+
+/// One `[COLUMN:]UNIT` value of a --unit option.
+struct ColumnUnit {
+    std::string column;    ///< "" for every column without its own
+    RateUnit unit;
+    std::string argument;  ///< the value as given, for messages
+};
+
+/// The units `--unit [COLUMN:]UNIT` values give the columns of a plain table.
+struct UnitAssignment {
+    std::vector<ColumnUnit> units;
+    /// `column`'s own unit, else the one for every column; none when neither is given.
+    std::optional<RateUnit> for_column(const std::string& column) const;
+};
+
+/// Parses the values of `option` (e.g. "--unit"), each `UNIT` or `COLUMN:UNIT` with UNIT one rate_unit() knows.
+/// Throws UsageError naming the value for an unknown unit (listing the known ones), an empty column or unit, and a
+/// column (or every column) given a unit twice.
+UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option);
 
 /// Standard gravity [m/s^2 per g] (CGPM 1901), which g and mg stand for.
 inline constexpr double kStandardGravity = 9.80665;

@@ -63,6 +63,11 @@ std::string to_precision_of(double value, double uncertainty) {
     return buf;
 }
 
+std::string value_with_error(double value, double error, const std::string& plus_minus) {
+    if (!std::isfinite(error) || error < 0.0) return to_precision_of(value, error);
+    return to_precision_of(value, error) + " " + plus_minus + " " + to_precision_of(error, error);
+}
+
 std::string significant_plain(double value, int digits) {
     if (value == 0.0) return "0";
     if (!std::isfinite(value) || digits < 1) return significant(value, digits);

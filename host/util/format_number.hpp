@@ -19,6 +19,12 @@ void append_double(std::string& out, double value);
 /// A negative value that rounds to zero is written unsigned ("0.00", not "-0.00"), here and in fixed_point().
 std::string to_precision_of(double value, double uncertainty);
 
+/// "value ± error" for people: the value to_precision_of() its error, the error to two significant digits
+/// (12.3417 and 0.0512 -> "12.342 ± 0.051"), `plus_minus` between them ("+-" for a terminal, "&plusmn;" for HTML).
+/// A zero error reads "± 0" after the value to six digits; a negative or non-finite one (no error known) leaves
+/// the value alone, to six digits, for the caller to say why.
+std::string value_with_error(double value, double error, const std::string& plus_minus);
+
 /// `value` to `digits` significant digits (printf %g): a spacing or a p-value in a sentence, not a number to read back.
 std::string significant(double value, int digits);
 

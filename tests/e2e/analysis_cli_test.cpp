@@ -235,5 +235,60 @@ TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
         << empty.output;
 }
 
+// report on a `hil` log opens with what was recorded, from the log's header: the simulation and its seed, the
+// firmware, the rate and the on-board smoothing.
+TEST(AnalysisCli, ReportOpensWithTheRecordingOfAHilLog) {
+    TempDir dir("reportrecording");
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "60", "--seed", "7", "-o", log}, dir.path()).exit_code, 0);
+    const std::string html = dir.file("r.html");
+    ASSERT_EQ(run_driftlab({"report", log, "-o", html, "--no-plots"}, dir.path()).exit_code, 0);
+    const std::string page = read_text(html);
+    for (const char* row : {"<tr><th>source</th><td>hil: simulated sensor, firmware in the loop</td></tr>",
+                            "<tr><th>simulation</th><td>target native, model paper, model file paper (built in), "
+                            "preset fig3, seed 7, effects none</td></tr>",
+                            "<tr><th>firmware</th><td>version 0.1.0, protocol 1</td></tr>",
+                            "<tr><th>samples</th><td>60</td></tr>",
+                            "<tr><th>output rate</th><td>1 Hz (sample_period_s 1 s, poll mode)</td></tr>",
+                            "<tr><th>smoothing</th><td>on-board least squares of order 0 (a mean) over 25 conversions, "
+                            "25 conversions per output</td></tr>"})
+        EXPECT_NE(page.find(row), std::string::npos) << row << "\n" << page;
+    EXPECT_EQ(page.find("<th>start</th>"), std::string::npos);  // hil runs in virtual time: no start to show
+}
+
+// report --unit puts a plain table's columns in physical units (the noise terms in navigation units follow, and the
+// JSON's unit); each bad value is refused naming itself (exit 2) before a page is written, and a log takes none.
+TEST(AnalysisCli, ReportUnitsForAPlainTable) {
+    TempDir dir("reportunit");
+    const std::string table = table_with_gap(dir);  // its one column: gyro
+    const std::string html = dir.file("r.html");
+    const std::string json_file = dir.file("out.json");
+    std::ofstream(json_file).close();  // run_driftlab_stdout_to opens it, it does not make it
+    const RunResult ok = run_driftlab_stdout_to({"report", table, "--unit", "gyro:deg/s", "-o", html, "--no-plots",
+                                                 "--json"}, json_file, dir.path());
+    ASSERT_EQ(ok.exit_code, 0) << ok.output;
+    EXPECT_EQ(nlohmann::json::parse(read_text(json_file))["channels"]["gyro"]["unit"], "deg/s");
+    const std::string page = read_text(html);
+    EXPECT_NE(page.find("<th>B [deg/s]</th>"), std::string::npos) << page;
+    EXPECT_NE(page.find("Rate gyros: noise terms in navigation units"), std::string::npos) << page;
+
+    const std::string refused = dir.file("refused.html");
+    const auto error_of = [&](const std::string& input, const std::string& unit) {
+        const RunResult r = run_driftlab({"report", input, "--unit", unit, "-o", refused, "--no-plots"}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        return r.output;
+    };
+    EXPECT_NE(error_of(table, "gyro:deg/sec").find("--unit 'gyro:deg/sec': unknown unit 'deg/sec'; angular rate: "
+                                                   "deg/s, dps, mdps, deg/h, rad/s; acceleration: g, mg"),
+              std::string::npos);
+    EXPECT_NE(error_of(table, "gx:deg/s").find("--unit 'gx:deg/s': " + table + " has no column 'gx' among those "
+                                               "analysed (gyro)"),
+              std::string::npos);
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "60", "-o", log}, dir.path()).exit_code, 0);
+    EXPECT_NE(error_of(log, "mg").find("--unit: " + log + " is a driftlab log"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(refused));
+}
+
 }  // namespace
 }  // namespace driftlab::e2e

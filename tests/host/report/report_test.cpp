@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <iterator>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -142,12 +143,45 @@ TEST(Report, HtmlIsSelfContainedWithTablesVerdictsAllanAndFigures) {
     EXPECT_EQ(html.find("src="), std::string::npos);
     EXPECT_EQ(html.find("href=\"http"), std::string::npos);
     EXPECT_EQ(html.find("<link"), std::string::npos);
+    // A log's channels are counts, of a known quantity: both navigation tables, the gyro's and the accelerometers'.
+    EXPECT_NE(html.find("<th>B [counts]</th>"), std::string::npos);
+    EXPECT_NE(html.find("Rate gyros: noise terms in navigation units"), std::string::npos);
+    EXPECT_NE(html.find("<th>bias instability B [mg]</th>"), std::string::npos);
     if (options.plots) {
         // Fig. 2 (raw columns present), 3 and 4 per channel plus one Allan plot per channel.
         std::size_t svgs = 0;
         for (std::size_t pos = 0; (pos = html.find("<svg", pos)) != std::string::npos; ++pos) ++svgs;
         EXPECT_EQ(svgs, 4u * 4u);
     }
+}
+
+// The intervals table writes each value to the digit its standard error justifies: the error to two significant
+// digits and the value to the same last digit (C2 = 505.08 +- 0.11, not 505.083 +- 0.11 or 505 +- 0.1).
+TEST(Report, ValuesAreRoundedToTheirStandardError) {
+    const TempDir dir("report_rounding");
+    fit::FileAnalysisRequest request;
+    request.path = write_log(dir);
+    request.names = {"gyro"};
+    const fit::FileAnalysis file = fit::analyse_file(request);
+    ASSERT_EQ(file.failures(), 0u);
+    ReportOptions options;
+    options.plots = false;
+    const std::string html = render_html_report(file, options);
+    const std::string row = "<tr><td>gyro</td><td>C2</td><td>";
+    const auto at = html.find(row);
+    ASSERT_NE(at, std::string::npos) << html;
+    const std::string cell = html.substr(at + row.size(), html.find("</td>", at + row.size()) - at - row.size());
+    const auto pm = cell.find(" &plusmn; ");
+    ASSERT_NE(pm, std::string::npos) << cell;
+    const std::string value = cell.substr(0, pm), error = cell.substr(pm + 10);
+    const double se = file.series[0].analysis->plain.c2.stderr_;
+    ASSERT_LT(se, 1.0);  // the digits after the point are the ones to count
+    const auto decimals = [](const std::string& text) { return text.size() - text.find('.') - 1; };
+    const auto wanted = static_cast<std::size_t>(1 - std::floor(std::log10(se)));
+    EXPECT_EQ(decimals(value), wanted) << cell;
+    EXPECT_EQ(decimals(error), wanted) << cell;
+    EXPECT_NEAR(std::stod(error), se, 0.051 * se) << cell;  // two significant digits: within half a unit of the second
+    EXPECT_NEAR(std::stod(value), file.series[0].analysis->plain.c2.value, 0.051 * se) << cell;
 }
 
 /// A plain table `name` in `dir` of white noise at the times `t_s`.
@@ -229,6 +263,51 @@ TEST(Report, AllanPackingThatCanBiasTheCurveIsWarned) {
     EXPECT_NE(section.html.find("<b>gx:</b> 5996 samples came faster than tau0 (bursts, or a record that changes its "
                                 "rate) and were placed up to 1000 slots (1000 s) after their time"),
               std::string::npos) << section.html;
+}
+
+/// The number in the first cell after `<tr><td>name</td>` that follows `heading` in `html`; NaN when absent.
+double cell_after(const std::string& html, const std::string& heading, const std::string& name) {
+    const auto table = html.find(heading);
+    if (table == std::string::npos) return std::nan("");
+    const std::string row = "<tr><td>" + name + "</td><td>";
+    const auto cell = html.find(row, table);
+    return cell == std::string::npos ? std::nan("") : std::stod(html.substr(cell + row.size()));
+}
+
+// The Allan tables carry units: a plain table's columns given deg/s and mg (report --unit) differ, so the headers
+// say U and a column gives each row's; the noise terms come again in navigation units, against the white noise's
+// own: sigma per sample at tau0 is N / sqrt(tau0), so 0.1 deg/s at 100 Hz is N = 0.01 deg/s/sqrt(Hz) = 0.6 deg/sqrt(h)
+// (ARW), and 1 mg is N = 0.1 mg/sqrt(Hz) = 0.1 x 9.80665e-3 x 60 = 0.0588 m/s/sqrt(h) (VRW).
+TEST(Report, AllanTermsInNavigationUnitsWhereTheQuantityIsKnown) {
+    const TempDir dir("report_allan_units");
+    const std::string path = dir.file("imu.csv");
+    std::ofstream out(path);
+    out << "t_s,gx,ax\n";
+    sim::Rng rng(21, 1);
+    for (int k = 0; k < 40000; ++k) out << 0.01 * k << ',' << 0.1 * rng.normal() << ',' << rng.normal() << '\n';
+    out.close();
+    fit::FileAnalysisRequest request;
+    request.path = path;
+    fit::FileAnalysis file = fit::analyse_file(request);
+    ASSERT_EQ(file.failures(), 0u);
+    file.series[0].analysis->data.unit = "deg/s";
+    file.series[1].analysis->data.unit = "mg";
+    const std::string html = allan_section({&*file.series[0].analysis, &*file.series[1].analysis}).html;
+    EXPECT_NE(html.find("<th>U</th><th>&tau;0 [s]</th><th>OADEV &sigma;(&tau;0) raw [U]</th>"), std::string::npos)
+        << html;
+    EXPECT_NE(html.find("<th>N [U/&radic;Hz]</th>"), std::string::npos) << html;
+    EXPECT_NE(html.find("<tr><td>gx</td><td>deg/s</td>"), std::string::npos) << html;
+    EXPECT_NEAR(cell_after(html, "<th>angle random walk N [&deg;/&radic;h]</th>", "gx"), 0.6, 0.03) << html;
+    EXPECT_NEAR(cell_after(html, "<th>velocity random walk N [m/s/&radic;h]</th>", "ax"), 0.0588, 0.003) << html;
+    // One unit: named in the headers, no unit column. A unit the table does not know gives no navigation table.
+    const std::string gx_only = allan_section({&*file.series[0].analysis}).html;
+    EXPECT_NE(gx_only.find("<th>channel</th><th>&tau;0 [s]</th><th>OADEV &sigma;(&tau;0) raw [deg/s]</th>"),
+              std::string::npos) << gx_only;
+    EXPECT_EQ(gx_only.find("Accelerometers"), std::string::npos) << gx_only;
+    file.series[0].analysis->data.unit = "";
+    const std::string plain = allan_section({&*file.series[0].analysis}).html;
+    EXPECT_NE(plain.find("<th>B [data unit]</th>"), std::string::npos) << plain;
+    EXPECT_EQ(plain.find("navigation units"), std::string::npos) << plain;
 }
 
 // The report's expected share of lags inside +-2 sigma for a white residual is what this estimator gives: the

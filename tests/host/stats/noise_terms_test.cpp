@@ -6,10 +6,12 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "host/stats/allan_analysis.hpp"
 #include "host/stats/phase_record.hpp"
+#include "host/stats/rate_unit.hpp"
 
 namespace driftlab::host::stats {
 namespace {
@@ -183,6 +185,29 @@ TEST(NoiseTerms, PhysicalUnitsForAGyroInDegPerSecond) {
     EXPECT_NEAR(k[0].value, rad_per_deg, 1e-15);
     EXPECT_EQ(k[1].key, "gyroscope_random_walk");
     EXPECT_TRUE(physical_terms(fit, RateQuantity::unknown, 1.0).empty());
+}
+
+// The navigation units of the report's tables, against hand-computed values: N = 0.01 (deg/s)/sqrt(Hz) is
+// 0.01 deg/sqrt(s) x 60 sqrt(s)/sqrt(h) = 0.6 deg/sqrt(h); B = 1e-3 deg/s x 3600 s/h = 3.6 deg/h. In mg data
+// (9.80665e-3 m/s^2 each): N = 0.1 mg/sqrt(Hz) is 0.1 x 9.80665e-3 x 60 = 0.0588399 m/s/sqrt(h), and B = 0.05 mg
+// comes back as 0.05 mg through m/s^2, one standard gravity both ways.
+TEST(NoiseTerms, NavigationUnitsAgainstHandComputedValues) {
+    NoiseTermFit fit;
+    fit.ok = true;
+    fit.value = {0.0, 0.01, 1e-3, 0.0, 0.0};
+    const auto value = [](const std::vector<NamedValue>& values, const std::string& key) {
+        for (const auto& nv : values)
+            if (nv.key == key) return nv.value;
+        ADD_FAILURE() << "missing " << key;
+        return 0.0;
+    };
+    const auto gyro = physical_terms(fit, RateQuantity::angular_rate, std::numbers::pi / 180.0);
+    EXPECT_NEAR(value(gyro, "N_deg_per_sqrt_h"), 0.6, 1e-12);
+    EXPECT_NEAR(value(gyro, "B_deg_per_h"), 3.6, 1e-12);
+    fit.value = {0.0, 0.1, 0.05, 0.0, 0.0};
+    const auto accel = physical_terms(fit, RateQuantity::acceleration, rate_unit("mg")->si_per_unit);
+    EXPECT_NEAR(value(accel, "N_m_per_s_per_sqrt_h"), 0.0588399, 1e-12);
+    EXPECT_NEAR(value(accel, "B_mg"), 0.05, 1e-15);
 }
 
 // An unresolved term has no value in any unit: a 0 would read as a measured zero density and be pasted into a

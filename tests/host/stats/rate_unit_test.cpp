@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "host/util/error.hpp"
 #include "host/util/units.hpp"
 
 namespace driftlab::host::stats {
@@ -54,6 +57,37 @@ TEST(RateUnit, AMessageListsTheSpellingsOfOneQuantity) {
     EXPECT_EQ(rate_unit_names(RateQuantity::angular_rate), "deg/s, dps, mdps, deg/h, rad/s");
     EXPECT_EQ(rate_unit_names(RateQuantity::acceleration), "g, mg, m/s^2, m/s2, cm/s^2, cm/s2, mm/s^2, mm/s2");
     EXPECT_EQ(rate_unit_names(RateQuantity::unknown), "");
+}
+
+// report --unit: a column's own unit wins over the one for every column; a column without either has none.
+TEST(UnitAssignment, AColumnsOwnUnitWinsOverTheOneForEveryColumn) {
+    const UnitAssignment a = parse_unit_assignment({"gyro:deg/s", "mg", "ax:m/s2"}, "--unit");
+    EXPECT_EQ(a.for_column("gyro")->name, "deg/s");
+    EXPECT_EQ(a.for_column("ax")->name, "m/s^2");
+    EXPECT_EQ(a.for_column("ay")->name, "mg");
+    EXPECT_EQ(a.for_column("ay")->quantity, RateQuantity::acceleration);
+    EXPECT_FALSE(parse_unit_assignment({"gyro:dps"}, "--unit").for_column("ay"));
+    EXPECT_TRUE(parse_unit_assignment({}, "--unit").units.empty());
+}
+
+// Each refusal names the value as given; an unknown unit lists the ones the table knows.
+TEST(UnitAssignment, BadValuesAreRefusedNamingThem) {
+    const auto message = [](const std::vector<std::string>& values) {
+        try {
+            parse_unit_assignment(values, "--unit");
+        } catch (const UsageError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(message({"gyro:deg/sec"}),
+              "--unit 'gyro:deg/sec': unknown unit 'deg/sec'; angular rate: deg/s, dps, mdps, deg/h, rad/s; "
+              "acceleration: g, mg, m/s^2, m/s2, cm/s^2, cm/s2, mm/s^2, mm/s2");
+    EXPECT_EQ(message({"gyro:"}).rfind("--unit 'gyro:': no unit; angular rate: deg/s", 0), 0u) << message({"gyro:"});
+    EXPECT_EQ(message({":deg/s"}), "--unit ':deg/s': no column before ':' (COLUMN:UNIT, or UNIT alone for every column)");
+    EXPECT_EQ(message({"gyro:deg/s", "gyro:rad/s"}),
+              "--unit 'gyro:rad/s': column 'gyro' already has a unit (--unit 'gyro:deg/s')");
+    EXPECT_EQ(message({"g", "mg"}), "--unit 'mg': every column already has a unit (--unit 'g')");
 }
 
 }  // namespace

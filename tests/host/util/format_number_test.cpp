@@ -52,6 +52,24 @@ TEST(ToPrecisionOf, WithoutAFiniteUncertaintySixSignificantDigits) {
     EXPECT_EQ(to_precision_of(inf, 1.0), "inf");
 }
 
+// The report's fit table: a value carries the digits its standard error justifies and no more, the error two.
+TEST(ValueWithError, TheValueStopsAtTheErrorsSecondDigit) {
+    EXPECT_EQ(value_with_error(12.3417, 0.0512, "+-"), "12.342 +- 0.051");
+    EXPECT_EQ(value_with_error(-12.3417, 0.0512, "&plusmn;"), "-12.342 &plusmn; 0.051");  // the sign stays
+    EXPECT_EQ(value_with_error(-0.00021813, 0.0000482, "+-"), "-0.000218 +- 0.000048");
+    // An error larger than the value: the value keeps no digit below the error's second.
+    EXPECT_EQ(value_with_error(0.3, 12.0, "+-"), "0 +- 12");
+    EXPECT_EQ(value_with_error(-0.004, 0.35, "+-"), "0.00 +- 0.35");  // rounds to zero: no "-0.00"
+}
+
+TEST(ValueWithError, WithoutAUsableErrorTheValueHasSixDigits) {
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(value_with_error(4.5447311, 0.0, "+-"), "4.54473 +- 0");  // an exact value: said so, not hidden
+    EXPECT_EQ(value_with_error(4.5447311, inf, "+-"), "4.54473");
+    EXPECT_EQ(value_with_error(4.5447311, std::nan(""), "+-"), "4.54473");
+    EXPECT_EQ(value_with_error(4.5447311, -0.1, "+-"), "4.54473");
+}
+
 // A small negative value rounded to zero had kept its sign: gap's candidate table read "shrink -0%" and "gain -0.0"
 // where nothing changed. A negative value that does not round to zero keeps it.
 TEST(FixedPoint, AValueThatRoundsToZeroHasNoSign) {
