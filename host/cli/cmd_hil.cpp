@@ -340,6 +340,7 @@ void run_hil_command(const HilCliOptions& o) {
             {"samples_received", s.host.samples_received},
             {"rows", s.host.rows},
             {"rows_missing_raw", s.host.rows_missing_raw},
+            {"empty_samples", s.host.empty_samples},
             {"retries", s.host.retries},
             {"link", {{"to_host", link_json(s.to_host)}, {"to_firmware", link_json(s.to_firmware)}}},
             {"firmware",
@@ -378,6 +379,8 @@ void run_hil_command(const HilCliOptions& o) {
     if (!effects.empty()) out << "effects simulated: " << effects << "\n";
     out << "wrote " << s.host.rows << " rows to " << path;
     if (s.host.rows_missing_raw > 0) out << " (" << s.host.rows_missing_raw << " samples not logged: their RAW frame was lost)";
+    if (s.host.empty_samples > 0)
+        out << " (" << s.host.empty_samples << " samples not logged: n_window 0, no estimate behind their values)";
     out << "\n"
               << "frames: sent " << s.to_host.packets_sent << ", received " << s.host.frames_received << ", lost "
               << s.host.frames_lost << " (crc errors " << s.decoder.bad_crc << ")\n"
