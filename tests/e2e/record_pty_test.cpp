@@ -112,6 +112,14 @@ std::pair<pid_t, std::string> serve_hil_pty(const std::vector<std::string>& args
     return {hil, path};
 }
 
+// `driftlab record ARGS` against the `hil --pty` process `hil` (its output in DIR/hil.out), which is then ended.
+RunResult record_then_end_hil(const std::vector<std::string>& args, pid_t hil, const TempDir& dir) {
+    const RunResult r = run_driftlab(args, dir.path());
+    ::kill(hil, SIGTERM);
+    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    return r;
+}
+
 }  // namespace
 
 TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog) {
@@ -359,10 +367,8 @@ TEST(RecordPty, HilPtyLinkPrintsTheLinkAndTheTerminalItPointsTo) {
     EXPECT_EQ(pts.rfind("/dev/pts/", 0), 0u) << line;
     EXPECT_EQ(std::filesystem::read_symlink(link).string(), pts);
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", pts, "--stream", "0.1", "--duration", "2", "-o", log},
-                                     dir.path());
-    ::kill(hil, SIGTERM);
-    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    const RunResult r = record_then_end_hil({"record", "--port", pts, "--stream", "0.1", "--duration", "2", "-o", log},
+                                            hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_EQ(host::read_log(log).metadata.get("port"), pts);
 }
@@ -379,11 +385,9 @@ TEST(RecordPty, HilPtyServesAModelWhoseSimulatedLinkCouldNotCarryItsOutputs) {
     const auto [hil, path] = serve_hil_pty({"--model", model, "--speed", "4", "--duration", "60"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", path, "--stream", "0.02", "--conversions", "5", "--window",
-                                      "5", "--duration", "1", "-o", log},
-                                     dir.path());
-    ::kill(hil, SIGTERM);
-    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    const RunResult r = record_then_end_hil({"record", "--port", path, "--stream", "0.02", "--conversions", "5", "--window",
+                                            "5", "--duration", "1", "-o", log},
+                                            hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const host::LogData rec = host::read_log(log);
     ASSERT_GT(rec.size(), 1u);
@@ -397,10 +401,8 @@ TEST(RecordPty, HilPtyServesTheSimulatedBoardToTheRecorder) {
     const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "120"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log},
-                                     dir.path());
-    ::kill(hil, SIGTERM);
-    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    const RunResult r = record_then_end_hil({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log},
+                                            hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const host::LogData rec = host::read_log(log);
     // The recorder stops once its rows span 10 s: outputs 0.1 s apart span at least 101 frames by sequence number.
@@ -423,10 +425,8 @@ TEST(RecordPty, GapReadsAPolledRecordingOfABoardPacedFasterThanTheRecorder) {
     const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "500"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", path, "--poll", "0.1", "--duration", "440", "-q", "-o", log},
-                                     dir.path());
-    ::kill(hil, SIGTERM);
-    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    const RunResult r = record_then_end_hil({"record", "--port", path, "--poll", "0.1", "--duration", "440", "-q", "-o", log},
+                                            hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     ASSERT_EQ(host::read_log(log).metadata.get_double("sample_period_s"), 0.1);
 
