@@ -38,7 +38,8 @@ CommandOutcome decide_config_set(uint8_t type_id, uint16_t seq, const uint8_t* p
 
 }  // namespace
 
-CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len) {
+CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len,
+                      proto::OutputMode mode) {
   proto::MsgSpec spec = {};
   if (!proto::find_spec(type_id, &spec)) {
     return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);
@@ -57,6 +58,10 @@ CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uin
     case proto::MsgType::config_set:
       return decide_config_set(type_id, seq, payload, payload_len);
     case proto::MsgType::poll:
+      // A streaming board answers on its output grid only: an extra SAMPLE would make the log's spacing irregular.
+      if (mode == proto::OutputMode::stream) {
+        return nak(type_id, seq, proto::Status::not_allowed, proto::kNakFieldNone);
+      }
       return reply(Reply::sample);
     case proto::MsgType::status_get:
       return reply(Reply::status);

@@ -16,7 +16,7 @@ namespace fw {
 enum class Reply : uint8_t {
   version,  ///< HELLO -> VERSION
   config,   ///< CONFIG_GET -> CONFIG
-  sample,   ///< POLL -> SAMPLE (+ RAW in raw mode); in stream mode too, as an extra SAMPLE off the output grid
+  sample,   ///< POLL in poll mode -> SAMPLE (+ RAW in raw mode)
   status,   ///< STATUS_GET -> STATUS
   ack,      ///< CONFIG_SET accepted: apply `config`, then ACK
   nak,      ///< refused: send `nak`, change nothing
@@ -29,10 +29,13 @@ struct CommandOutcome {
   proto::NakPayload nak;    ///< meaningful for Reply::nak
 };
 
-/// Decides the answer to a frame of type `type_id` and sequence `seq` carrying `payload_len` bytes. Checks, in
-/// order: the type is known (else NAK unknown_type), host-to-firmware (else not_allowed), the length is the
-/// type's fixed length (else bad_length), then CONFIG_SET's fields (out_of_range with the field index).
-DRIFTLAB_NODISCARD CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len);
+/// Decides the answer to a frame of type `type_id` and sequence `seq` carrying `payload_len` bytes while the
+/// firmware runs in `mode`. Checks, in order: the type is known (else NAK unknown_type), host-to-firmware (else
+/// not_allowed), the length is the type's fixed length (else bad_length), then CONFIG_SET's fields (out_of_range
+/// with the field index), and a POLL's mode: in stream mode it is NAKed not_allowed, so no SAMPLE lands off the
+/// output grid.
+DRIFTLAB_NODISCARD CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len,
+                                         proto::OutputMode mode);
 
 }  // namespace fw
 }  // namespace driftlab

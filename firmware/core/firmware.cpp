@@ -123,7 +123,8 @@ void Firmware::on_rx_byte(uint8_t byte) {
 }
 
 void Firmware::handle_frame() {
-  const CommandOutcome outcome = decide(decoder_.type_id(), decoder_.seq(), decoder_.payload(), decoder_.payload_len());
+  const CommandOutcome outcome =
+      decide(decoder_.type_id(), decoder_.seq(), decoder_.payload(), decoder_.payload_len(), config_.mode);
   switch (outcome.reply) {
     case Reply::version:
       send_version();

@@ -10,7 +10,7 @@ namespace driftlab {
 namespace fw {
 
 constexpr uint8_t kFwMajor = 0;
-constexpr uint8_t kFwMinor = 1;
+constexpr uint8_t kFwMinor = 2;
 constexpr uint8_t kFwPatch = 0;
 
 /// Board variant: 1 = ATmega328P at 16 MHz (Arduino Uno/Nano), sensors on A0..A3 (docs/hardware.md).

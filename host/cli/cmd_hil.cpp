@@ -8,6 +8,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -93,8 +94,10 @@ void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
         return sensor.convert(c, static_cast<double>(tick) / fw::kTickHz).code;
     };
     stop_on_signals();
-    const io::PtyBoardSummary s = io::serve_pty_board(p, code, g_stop, [](const std::string& path) {
-        std::printf("%s\n", path.c_str());
+    // With --pty-link the link and the terminal it points to, "/tmp/imu -> /dev/pts/5": some tools refuse a symlink.
+    const io::PtyBoardSummary s = io::serve_pty_board(p, code, g_stop, [&o](const std::string& path) {
+        const std::string shown = o.pty_link.empty() ? path : path + " -> " + std::filesystem::read_symlink(path).string();
+        std::printf("%s\n", shown.c_str());
         std::fflush(stdout);
     });
     std::fprintf(stderr, "served %.1f s of board time: %llu frames sent, %llu bytes nobody read\n", s.virtual_s,
@@ -218,8 +221,9 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     const proto::ConfigPayload& fw = h.model.firmware;
     if (const auto refusal = sim::firmware_refusal(fw)) throw UsageError(refusal->field + ": " + refusal->reason);
     // A model file's own period, raw flag and baud that its link cannot carry are its configuration's fault; a
-    // period or raw flag from the command line (or the preset) is the command line's.
-    if (const auto refusal = sim::link_capacity_refusal(h.model)) {
+    // period or raw flag from the command line (or the preset) is the command line's. A pseudo-terminal carries the
+    // bytes as fast as they come (serve_pty_command): no baud rate is simulated there, so nothing to refuse.
+    if (const auto refusal = o.pty ? std::nullopt : sim::link_capacity_refusal(h.model)) {
         const bool options_changed = fw.output_period_ms != file_fw.output_period_ms || fw.raw != file_fw.raw;
         if (!o.model_file.empty() && !options_changed) throw ConfigError(o.model_file, "link.baud", *refusal);
         throw UsageError(*refusal);
@@ -340,6 +344,7 @@ void run_hil_command(const HilCliOptions& o) {
             {"samples_received", s.host.samples_received},
             {"rows", s.host.rows},
             {"rows_missing_raw", s.host.rows_missing_raw},
+            {"empty_samples", s.host.empty_samples},
             {"retries", s.host.retries},
             {"link", {{"to_host", link_json(s.to_host)}, {"to_firmware", link_json(s.to_firmware)}}},
             {"firmware",
@@ -378,6 +383,8 @@ void run_hil_command(const HilCliOptions& o) {
     if (!effects.empty()) out << "effects simulated: " << effects << "\n";
     out << "wrote " << s.host.rows << " rows to " << path;
     if (s.host.rows_missing_raw > 0) out << " (" << s.host.rows_missing_raw << " samples not logged: their RAW frame was lost)";
+    if (s.host.empty_samples > 0)
+        out << " (" << s.host.empty_samples << " samples not logged: n_window 0, no estimate behind their values)";
     out << "\n"
               << "frames: sent " << s.to_host.packets_sent << ", received " << s.host.frames_received << ", lost "
               << s.host.frames_lost << " (crc errors " << s.decoder.bad_crc << ")\n"
@@ -423,7 +430,7 @@ void register_hil(CLI::App& app) {
                                       "driftlab record; runs until --duration or Ctrl-C");
     cmd->add_option("--speed", opts->speed, "--pty: virtual seconds per wall second (default 1)")
         ->check(positive_number());
-    cmd->add_option("--pty-link", opts->pty_link, "--pty: also make this symlink to the pseudo-terminal");
+    cmd->add_option("--pty-link", opts->pty_link, "--pty: also make this symlink to the pseudo-terminal (printed as PATH -> /dev/pts/N)");
     cmd->add_option("--target", opts->target, "native (firmware core on the host) or avr (the real ELF in simavr)")
         ->capture_default_str();
     cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)");

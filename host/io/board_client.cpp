@@ -83,7 +83,13 @@ LinkStatus BoardClient::pump(int timeout_ms) {
         do {
             const Frame f = copy_frame(decoder_);
             static_cast<void>(seq_.accept(f.seq));
-            if (f.type == proto::MsgType::nak) ++counters_.naks;
+            if (f.type == proto::MsgType::nak) {
+                ++counters_.naks;
+                proto::NakPayload nak{};
+                if (proto::parse(f.payload.data(), f.payload_len, &nak) &&
+                    nak.nacked_type == proto::type_id(proto::MsgType::poll))
+                    poll_nak_ = nak;
+            }
             deliver(f);
         } while (decoder_.next());
     }
@@ -240,6 +246,15 @@ std::optional<proto::StatusPayload> BoardClient::status() {
         if (answer && proto::parse(answer->payload.data(), answer->payload_len, &s)) return s;
     }
     return std::nullopt;
+}
+
+std::optional<std::string> BoardClient::poll_refusal() const {
+    if (!poll_nak_) return std::nullopt;
+    std::string text = std::string("the board refused POLL (NAK ") + status_name(poll_nak_->status) + ")";
+    if (poll_nak_->status == static_cast<std::uint8_t>(proto::Status::not_allowed))
+        text += ": it is in stream mode, not the poll mode driftlab set and read back; did another program on the "
+                "port reconfigure it?";
+    return text;
 }
 
 LinkStatus BoardClient::send_poll() {

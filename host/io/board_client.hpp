@@ -84,6 +84,9 @@ public:
     LinkStatus send_poll();
     /// Reads what arrives within `timeout_ms` [ms] and delivers its frames.
     LinkStatus pump(int timeout_ms);
+    /// Why the board refused a POLL (a NAK to one has arrived), in words for the user; none while every POLL is
+    /// answered. A board in stream mode refuses them all (docs/protocol.md §3.5).
+    std::optional<std::string> poll_refusal() const;
 
     /// Drops a frame cut by a reconnect, so its start cannot join bytes of the new connection.
     void forget_partial_frame() { decoder_.reset(); }
@@ -112,6 +115,7 @@ private:
     // The version byte after the last sync pair seen, to name the version of a board that speaks another one.
     std::uint8_t sync_state_ = 0;
     std::optional<std::uint8_t> foreign_version_;
+    std::optional<proto::NakPayload> poll_nak_;  // the latest NAK of a POLL
 };
 
 /// "out_of_range" and friends, for messages.

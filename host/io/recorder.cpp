@@ -101,6 +101,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     const bool poll_mode = options.config.mode == static_cast<std::uint8_t>(proto::OutputMode::poll);
     const auto period = std::chrono::milliseconds(options.config.output_period_ms);
     auto next_poll = Clock::now();
+    std::optional<std::string> refused;  // the board refused a POLL: its rows would not be the polled log asked for
 
     while (!stop.load() && !done(assembler.stats(), options.duration_s)) {
         LinkStatus link = LinkStatus::ok;
@@ -114,6 +115,10 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
             if (link != LinkStatus::lost) {
                 const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_poll - Clock::now());
                 link = client.pump(static_cast<int>(std::clamp<std::int64_t>(wait.count(), 0, 100)));
+            }
+            if ((refused = client.poll_refusal())) {
+                capture->write_event(*refused);  // a note for whoever reads the capture
+                break;
             }
         } else {
             link = client.pump(kStreamPumpMs);
@@ -175,6 +180,10 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     summary.stopped_by_request = stop.load();
     event("stop");
     assembler.finish();
+    if (refused) {
+        throw DeviceError(options.port, *refused + " (" + options.log_path + " keeps the " +
+                                            std::to_string(assembler.stats().rows) + " rows recorded before)");
+    }
     summary.stats = assembler.stats();
     summary.polls_sent = client.counters().polls_sent;
     summary.wall_s = seconds_since(t0);

@@ -45,7 +45,8 @@ using RecordProgress = std::function<void(const AssemblyStats&, double wall_s, c
 /// Runs the session. Makes the folders of the log and the capture when missing, then opens the port. Throws
 /// DeviceError when a folder cannot be made or a file not written there (before the port is opened), when the port
 /// cannot be opened or the device is not a driftlab board of this protocol version (nothing is left behind then,
-/// not even the folders it made), UsageError/DeviceError from the log writer.
+/// not even the folders it made), UsageError/DeviceError from the log writer, and DeviceError after finishing the
+/// log and capture when the board refuses a POLL (BoardClient::poll_refusal: it is streaming after all).
 RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop, const RecordProgress& progress);
 
 /// The current UTC time as ISO 8601 with milliseconds ("2026-11-22T10:00:00.123Z").

@@ -194,6 +194,12 @@ void HostEndpoint::handle_frame(double t_s) {
 
 void HostEndpoint::handle_sample(const proto::SamplePayload& s, std::uint64_t seq) {
     ++counters_.samples_received;
+    // An empty window's 0 is no reading (a POLL before any conversion, e.g. after a firmware restart): a row of it
+    // would read as 0 counts.
+    if (s.n_window == 0) {
+        ++counters_.empty_samples;
+        return;
+    }
     HilRecord r;
     r.tick = unwrap_tick(s.tick);
     r.t_s = static_cast<double>(r.tick) / static_cast<double>(version_.tick_hz);

@@ -3,7 +3,8 @@
 //   HELLO -> VERSION, CONFIG_SET -> ACK (NAK ends the run), CONFIG_GET -> CONFIG (must equal what was set),
 //   then POLL every output period (poll mode, the paper's) or just listen (stream mode) until the duration,
 //   then, in stream mode, CONFIG_SET back to poll mode so nothing is in flight, and STATUS_GET -> STATUS.
-// Every request is retried after a timeout; losses are counted from seq gaps, never assumed.
+// Every request is retried after a timeout; losses are counted from seq gaps, never assumed. A SAMPLE with n_window
+// 0 carries zeros that are no reading (docs/protocol.md §3.6): it is counted, not logged, as `record` does.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +34,7 @@ struct HostCounters {
     std::uint64_t frames_lost = 0;       ///< sum of seq gaps between consecutive received frames
     std::uint64_t polls_sent = 0;
     std::uint64_t samples_received = 0;  ///< SAMPLE frames received while running
+    std::uint64_t empty_samples = 0;     ///< SAMPLEs with n_window 0 (no estimate behind a value): not logged
     std::uint64_t rows = 0;              ///< records handed to the sink
     std::uint64_t rows_missing_raw = 0;  ///< raw mode: SAMPLEs dropped because their RAW frame was lost
     std::uint64_t retries = 0;           ///< requests sent again after a timeout

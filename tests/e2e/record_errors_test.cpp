@@ -1,13 +1,20 @@
 // `driftlab record` refuses what is not a driftlab board of protocol v1: a clear message and exit code 4.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <thread>
 
+#include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/encoder.hpp"
+#include "driftlab/proto/messages.hpp"
+#include "driftlab/proto/status.hpp"
 #include "driftlab/proto/wire.hpp"
 #include "host/io/capture.hpp"
 #include "host/io/pty_bridge.hpp"
@@ -20,15 +27,16 @@ namespace {
 
 constexpr int kDeviceErrorExit = 4;
 
-// Something on a pseudo-terminal that answers every write with `answer(bytes_in)`.
+// Something on a pseudo-terminal that answers every write with `answer(bytes written, count)`.
 class FakeDevice {
 public:
-    explicit FakeDevice(std::function<std::vector<std::uint8_t>()> answer) : answer_(std::move(answer)) {
+    using Answer = std::function<std::vector<std::uint8_t>(const std::uint8_t*, std::size_t)>;
+    explicit FakeDevice(Answer answer) : answer_(std::move(answer)) {
         thread_ = std::thread([this] {
             std::uint8_t buf[256];
             while (!stop_.load()) {
-                if (bridge_.read(buf, sizeof buf, 10) > 0) {
-                    const auto out = answer_();
+                if (const std::size_t n = bridge_.read(buf, sizeof buf, 10); n > 0) {
+                    const auto out = answer_(buf, n);
                     bridge_.write(out.data(), out.size());
                 }
             }
@@ -42,9 +50,59 @@ public:
 
 private:
     host::io::PtyBridge bridge_;
-    std::function<std::vector<std::uint8_t>()> answer_;
+    Answer answer_;
     std::atomic<bool> stop_{false};
     std::thread thread_;
+};
+
+// A protocol v1 board that takes any configuration and reads it back, but refuses every POLL as a streaming board
+// does (docs/protocol.md §3.5): what the recorder meets when something else switched the board to stream mode.
+class PollRefusingBoard {
+public:
+    std::vector<std::uint8_t> operator()(const std::uint8_t* in, std::size_t n) {
+        std::vector<std::uint8_t> out;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!decoder_.feed(in[i])) continue;
+            do answer(out); while (decoder_.next());
+        }
+        return out;
+    }
+
+private:
+    void answer(std::vector<std::uint8_t>& out) {
+        std::uint8_t f[proto::kMaxFrameSize];
+        std::size_t size = 0;
+        const std::uint16_t seq = seq_++;
+        switch (decoder_.type()) {
+            case proto::MsgType::hello: {
+                proto::VersionPayload v{};
+                v.proto_version = proto::kProtocolVersion;
+                v.adc_bits = 10;
+                v.vref_mv = 5000;
+                v.tick_hz = 250000;
+                v.channel_count = 4;
+                size = proto::encode_version(v, seq, f, sizeof f);
+                break;
+            }
+            case proto::MsgType::status_get: size = proto::encode_status(proto::StatusPayload{}, seq, f, sizeof f); break;
+            case proto::MsgType::config_set:
+                EXPECT_TRUE(proto::parse(decoder_.payload(), decoder_.payload_len(), &config_));
+                size = proto::encode_ack({decoder_.type_id(), decoder_.seq()}, seq, f, sizeof f);
+                break;
+            case proto::MsgType::config_get: size = proto::encode_config(config_, seq, f, sizeof f); break;
+            case proto::MsgType::poll:
+                size = proto::encode_nak({decoder_.type_id(), decoder_.seq(),
+                                          static_cast<std::uint8_t>(proto::Status::not_allowed), proto::kNakFieldNone},
+                                         seq, f, sizeof f);
+                break;
+            default: break;
+        }
+        out.insert(out.end(), f, f + size);
+    }
+
+    proto::Decoder decoder_;
+    proto::ConfigPayload config_{};
+    std::uint16_t seq_ = 0;
 };
 
 void expect_refused(const RunResult& r, const std::string& words, const TempDir& dir) {
@@ -170,7 +228,7 @@ TEST(RecordErrors, ASilentDeviceIsNotADriftlabBoard) {
 TEST(RecordErrors, ADeviceAnsweringGarbageIsNotADriftlabBoard) {
     TempDir dir("garbage");
     std::mt19937 rng(7);
-    FakeDevice garbage([&] {
+    FakeDevice garbage([&](const std::uint8_t*, std::size_t) {
         std::vector<std::uint8_t> out(64);
         for (auto& b : out) b = static_cast<std::uint8_t>(rng());
         return out;
@@ -179,9 +237,33 @@ TEST(RecordErrors, ADeviceAnsweringGarbageIsNotADriftlabBoard) {
     expect_refused(r, "no valid driftlab frame", dir);
 }
 
+// A refused POLL ends the recording (exit 4) with the reason and the row count, the log and capture kept: the rows
+// of a board that streams after all would not be the polled log asked for.
+TEST(RecordErrors, ABoardRefusingPollEndsTheRecordingNamingStreamMode) {
+    TempDir dir("pollrefused");
+    FakeDevice board(PollRefusingBoard{});
+    const std::string out = dir.file("driftlab.out");
+    const pid_t pid = spawn_driftlab({"record", "--port", board.path(), "--poll", "0.1", "-o", dir.file("rec.csv")}, out);
+    // A recorder that ignored the refusals would poll until stopped: after 10 s it is (exit 0, failing below).
+    siginfo_t ended{};
+    for (int i = 0; i < 1000 && ended.si_pid != pid; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        static_cast<void>(::waitid(P_PID, static_cast<id_t>(pid), &ended, WEXITED | WNOHANG | WNOWAIT));
+    }
+    if (ended.si_pid != pid) ::kill(pid, SIGINT);
+    const RunResult r = wait_child(pid, out);
+    EXPECT_EQ(r.exit_code, kDeviceErrorExit) << r.output;
+    EXPECT_NE(r.output.find(board.path() + ": the board refused POLL (NAK not_allowed): it is in stream mode"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find(dir.file("rec.csv") + " keeps the 0 rows recorded before)"), std::string::npos) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("rec.csv")));
+    EXPECT_NE(read_text(dir.file("rec.csv.cap")).find("the board refused POLL"), std::string::npos);
+}
+
 TEST(RecordErrors, ABoardOfAnotherProtocolVersionIsRefusedByNumber) {
     TempDir dir("version");
-    FakeDevice future([] {
+    FakeDevice future([](const std::uint8_t*, std::size_t) {
         proto::VersionPayload v{};
         v.proto_version = 2;
         v.tick_hz = 250000;

@@ -96,8 +96,8 @@ void expect_decode_keeps_logs_and_names_crc_failures(const TempDir& dir, const s
     EXPECT_NE(crc.output.find("crc errors 1)"), std::string::npos) << crc.output;
 }
 
-// `driftlab hil --pty` started with `args`: its process, and the path it serves (its first output line), empty when
-// none came within 5 s.
+// `driftlab hil --pty` started with `args`: its process, and the line that names the pseudo-terminal it serves
+// ("/dev/pts/N", or "LINK -> /dev/pts/N" with --pty-link), empty when none came within 5 s.
 std::pair<pid_t, std::string> serve_hil_pty(const std::vector<std::string>& args, const std::string& output_file) {
     std::vector<std::string> all = {"hil", "--pty"};
     all.insert(all.end(), args.begin(), args.end());
@@ -106,10 +106,18 @@ std::pair<pid_t, std::string> serve_hil_pty(const std::vector<std::string>& args
     for (int i = 0; i < 500 && path.empty(); ++i) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
         std::istringstream lines(read_text(output_file));
-        std::string first;
-        if (std::getline(lines, first) && first.rfind("/dev/", 0) == 0) path = first;
+        for (std::string line; path.empty() && std::getline(lines, line) && !lines.eof();)
+            if (line.rfind("/dev/", 0) == 0 || line.find(" -> /dev/") != std::string::npos) path = line;
     }
     return {hil, path};
+}
+
+// `driftlab record ARGS` against the `hil --pty` process `hil` (its output in DIR/hil.out), which is then ended.
+RunResult record_then_end_hil(const std::vector<std::string>& args, pid_t hil, const TempDir& dir) {
+    const RunResult r = run_driftlab(args, dir.path());
+    ::kill(hil, SIGTERM);
+    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    return r;
 }
 
 }  // namespace
@@ -345,16 +353,56 @@ TEST(RecordPty, MissingFoldersOfTheLogAndTheCaptureAreMade) {
     EXPECT_TRUE(std::filesystem::is_regular_file(capture));
 }
 
+// --pty-link prints the link and the terminal it points to, so a tool that refuses symlinks gets the /dev/pts path:
+// that path is where the link points, and a recorder on it gets the board.
+TEST(RecordPty, HilPtyLinkPrintsTheLinkAndTheTerminalItPointsTo) {
+    TempDir dir("hilptylink");
+    const std::string link = dir.file("imu");
+    const auto [hil, line] = serve_hil_pty({"--pty-link", link, "--speed", "20", "--duration", "120"},
+                                           dir.file("hil.out"));
+    ASSERT_FALSE(line.empty()) << read_text(dir.file("hil.out"));
+    const std::string prefix = link + " -> ";
+    ASSERT_EQ(line.rfind(prefix, 0), 0u) << line;
+    const std::string pts = line.substr(prefix.size());
+    EXPECT_EQ(pts.rfind("/dev/pts/", 0), 0u) << line;
+    EXPECT_EQ(std::filesystem::read_symlink(link).string(), pts);
+    const std::string log = dir.file("rec.csv");
+    const RunResult r = record_then_end_hil({"record", "--port", pts, "--stream", "0.1", "--duration", "2", "-o", log},
+                                            hil, dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(host::read_log(log).metadata.get("port"), pts);
+}
+
+// A pseudo-terminal does not pace bytes at the model's link.baud, so a model whose link could not carry its outputs
+// (20 ms outputs need 1650 bytes/s, 9600 baud carry 960; refused without --pty) is served, and recorded at that rate.
+TEST(RecordPty, HilPtyServesAModelWhoseSimulatedLinkCouldNotCarryItsOutputs) {
+    TempDir dir("hilptybaud");
+    const std::string model = dir.file("fast.toml");
+    std::ofstream(model) << "[firmware]\noutput_period_ms = 20\nconversions_per_output = 5\n\n[link]\nbaud = 9600.0\n";
+    const RunResult simulated = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", dir.file("h.csv")},
+                                             dir.path());
+    ASSERT_EQ(simulated.exit_code, 5) << simulated.output;  // the check still holds where the link is simulated
+    const auto [hil, path] = serve_hil_pty({"--model", model, "--speed", "4", "--duration", "60"}, dir.file("hil.out"));
+    ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
+    const std::string log = dir.file("rec.csv");
+    const RunResult r = record_then_end_hil({"record", "--port", path, "--stream", "0.02", "--conversions", "5", "--window",
+                                            "5", "--duration", "1", "-o", log},
+                                            hil, dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const host::LogData rec = host::read_log(log);
+    ASSERT_GT(rec.size(), 1u);
+    EXPECT_GE(rec.t_s.back() - rec.t_s.front(), 1.0 - 1e-9);
+    EXPECT_EQ(rec.metadata.get_double("sample_period_s"), 0.02);
+}
+
 // `driftlab hil --pty` serves the simulated board itself: its first output line is the path a recorder opens.
 TEST(RecordPty, HilPtyServesTheSimulatedBoardToTheRecorder) {
     TempDir dir("hilpty");
     const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "120"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log},
-                                     dir.path());
-    ::kill(hil, SIGTERM);
-    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    const RunResult r = record_then_end_hil({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log},
+                                            hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const host::LogData rec = host::read_log(log);
     // The recorder stops once its rows span 10 s: outputs 0.1 s apart span at least 101 frames by sequence number.
@@ -377,10 +425,8 @@ TEST(RecordPty, GapReadsAPolledRecordingOfABoardPacedFasterThanTheRecorder) {
     const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "500"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", path, "--poll", "0.1", "--duration", "440", "-q", "-o", log},
-                                     dir.path());
-    ::kill(hil, SIGTERM);
-    static_cast<void>(wait_child(hil, dir.file("hil.out")));
+    const RunResult r = record_then_end_hil({"record", "--port", path, "--poll", "0.1", "--duration", "440", "-q", "-o", log},
+                                            hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     ASSERT_EQ(host::read_log(log).metadata.get_double("sample_period_s"), 0.1);
 

@@ -20,6 +20,7 @@ namespace {
 using proto::ConfigField;
 using proto::ConfigPayload;
 using proto::MsgType;
+using proto::OutputMode;
 using proto::Status;
 
 constexpr uint8_t kConfigSet = static_cast<uint8_t>(MsgType::config_set);
@@ -30,7 +31,7 @@ ConfigPayload valid_config() { return ConfigPayload{100, 25, 25, 0, 0, 0}; }
 CommandOutcome decide_config(const ConfigPayload& p, uint16_t seq = 7) {
   uint8_t bytes[proto::kConfigPayloadSize] = {};
   EXPECT_EQ(proto::serialize(p, bytes, sizeof bytes), proto::kConfigPayloadSize);
-  return decide(kConfigSet, seq, bytes, proto::kConfigPayloadSize);
+  return decide(kConfigSet, seq, bytes, proto::kConfigPayloadSize, OutputMode::poll);
 }
 
 void expect_nak(const CommandOutcome& out, uint8_t type, uint16_t seq, Status status, uint8_t field) {
@@ -144,16 +145,16 @@ TEST(Commands, WrongLengthIsBadLengthForEveryHostType) {
   const uint8_t payload[proto::kMaxPayload] = {};
   for (MsgType type : {MsgType::hello, MsgType::config_get, MsgType::poll, MsgType::status_get}) {
     const uint8_t id = proto::type_id(type);
-    expect_nak(decide(id, 3, payload, 1), id, 3, Status::bad_length, proto::kNakFieldNone);
+    expect_nak(decide(id, 3, payload, 1, OutputMode::poll), id, 3, Status::bad_length, proto::kNakFieldNone);
   }
   for (uint8_t len : {uint8_t{0}, uint8_t{6}, uint8_t{8}}) {
-    expect_nak(decide(kConfigSet, 4, payload, len), kConfigSet, 4, Status::bad_length, proto::kNakFieldNone);
+    expect_nak(decide(kConfigSet, 4, payload, len, OutputMode::poll), kConfigSet, 4, Status::bad_length, proto::kNakFieldNone);
   }
 }
 
 TEST(Commands, UnknownTypeIsUnknownType) {
   for (uint8_t id : {uint8_t{0x00}, uint8_t{0x0D}, uint8_t{0x7F}, uint8_t{0xFF}}) {
-    expect_nak(decide(id, 5, nullptr, 0), id, 5, Status::unknown_type, proto::kNakFieldNone);
+    expect_nak(decide(id, 5, nullptr, 0, OutputMode::poll), id, 5, Status::unknown_type, proto::kNakFieldNone);
   }
 }
 
@@ -162,16 +163,28 @@ TEST(Commands, FirmwareToHostTypesAreNotAllowed) {
   for (MsgType type : {MsgType::version, MsgType::config, MsgType::sample, MsgType::raw, MsgType::ack, MsgType::nak,
                        MsgType::status}) {
     const uint8_t id = proto::type_id(type);
-    expect_nak(decide(id, 6, payload, proto::payload_len_of(type)), id, 6, Status::not_allowed,
+    expect_nak(decide(id, 6, payload, proto::payload_len_of(type), OutputMode::poll), id, 6, Status::not_allowed,
                proto::kNakFieldNone);
   }
 }
 
-TEST(Commands, QueriesGetTheirReplies) {
-  EXPECT_EQ(decide(proto::type_id(MsgType::hello), 0, nullptr, 0).reply, Reply::version);
-  EXPECT_EQ(decide(proto::type_id(MsgType::config_get), 0, nullptr, 0).reply, Reply::config);
-  EXPECT_EQ(decide(proto::type_id(MsgType::poll), 0, nullptr, 0).reply, Reply::sample);
-  EXPECT_EQ(decide(proto::type_id(MsgType::status_get), 0, nullptr, 0).reply, Reply::status);
+TEST(Commands, QueriesGetTheirRepliesInPollMode) {
+  EXPECT_EQ(decide(proto::type_id(MsgType::hello), 0, nullptr, 0, OutputMode::poll).reply, Reply::version);
+  EXPECT_EQ(decide(proto::type_id(MsgType::config_get), 0, nullptr, 0, OutputMode::poll).reply, Reply::config);
+  EXPECT_EQ(decide(proto::type_id(MsgType::poll), 0, nullptr, 0, OutputMode::poll).reply, Reply::sample);
+  EXPECT_EQ(decide(proto::type_id(MsgType::status_get), 0, nullptr, 0, OutputMode::poll).reply, Reply::status);
+}
+
+// docs/protocol.md §3.5: a streaming board refuses POLL (not_allowed, no field) and answers every other query.
+TEST(Commands, PollInStreamModeIsNotAllowedAndOtherQueriesAreAnswered) {
+  const uint8_t poll = proto::type_id(MsgType::poll);
+  expect_nak(decide(poll, 11, nullptr, 0, OutputMode::stream), poll, 11, Status::not_allowed, proto::kNakFieldNone);
+  EXPECT_EQ(decide(proto::type_id(MsgType::hello), 0, nullptr, 0, OutputMode::stream).reply, Reply::version);
+  EXPECT_EQ(decide(proto::type_id(MsgType::config_get), 0, nullptr, 0, OutputMode::stream).reply, Reply::config);
+  EXPECT_EQ(decide(proto::type_id(MsgType::status_get), 0, nullptr, 0, OutputMode::stream).reply, Reply::status);
+  // A POLL of the wrong length is still a length error first: the mode is the last check.
+  const uint8_t payload[1] = {};
+  expect_nak(decide(poll, 12, payload, 1, OutputMode::stream), poll, 12, Status::bad_length, proto::kNakFieldNone);
 }
 
 TEST(Config, DefaultsAreValidAndGiveAnExactHundredMillisecondOutput) {

@@ -158,24 +158,51 @@ TEST(Firmware, PollWithEmptyWindowsAnswersZerosFlaggedByNWindowZero) {
   EXPECT_EQ(empty_answer_tick(), 10 * kPeriodTicks);
 }
 
-// docs/protocol.md §3.5: the mode is not checked, so a POLL in stream mode adds a SAMPLE off the output grid, at the
-// newest conversion's tick, taking a sequence number between two streamed ones; the stream's cadence is unchanged.
-TEST(Firmware, PollInStreamModeAddsOneSampleOffTheGridAndLeavesTheCadence) {
+// docs/protocol.md §3.5: in stream mode a POLL is refused with NAK not_allowed naming it, and no SAMPLE is sent: the
+// streamed SAMPLEs stay on the output grid with consecutive seqs around the NAK, and the cadence is unchanged.
+TEST(Firmware, PollInStreamModeIsRefusedAndTheStreamStaysOnItsGrid) {
+  NativeRig rig;
+  proto::ConfigPayload config = default_payload();
+  config.mode = 1;
+  config.raw = 1;  // nor a RAW: a refused POLL sends nothing but the NAK
+  rig.send_config(config);
+  rig.run_until(kOutputTicks + 5 * kPeriodTicks + 10, [](Channel, uint64_t) -> uint16_t { return 512; });
+  const uint16_t poll_seq = rig.next_host_seq();
+  rig.send_empty(MsgType::poll);
+  rig.run_until(2 * kOutputTicks + 10, [](Channel, uint64_t) -> uint16_t { return 512; });
+  const std::vector<Frame> frames = rig.receive();
+  ASSERT_EQ(frames.size(), 6U);  // ACK, SAMPLE + RAW, NAK, SAMPLE + RAW
+  ASSERT_TRUE(is(frames[3], MsgType::nak));
+  const auto nak = parse_as<proto::NakPayload>(frames[3]);
+  EXPECT_EQ(nak.nacked_type, proto::type_id(MsgType::poll));
+  EXPECT_EQ(nak.nacked_seq, poll_seq);
+  EXPECT_EQ(nak.status, static_cast<uint8_t>(proto::Status::not_allowed));
+  EXPECT_EQ(nak.field, proto::kNakFieldNone);
+  const size_t samples[] = {1, 4};
+  for (size_t k = 0; k < 2; ++k) {
+    const Frame& f = frames[samples[k]];
+    ASSERT_TRUE(is(f, MsgType::sample)) << k;
+    ASSERT_TRUE(is(frames[samples[k] + 1], MsgType::raw)) << k;
+    EXPECT_EQ(parse_as<proto::SamplePayload>(f).tick, kOutputTicks * (k + 1)) << k;
+  }
+  for (size_t k = 0; k < frames.size(); ++k) EXPECT_EQ(frames[k].seq, k);
+}
+
+// Back in poll mode the same POLL is answered again: the refusal follows the mode in force, not a latched state.
+TEST(Firmware, PollIsAnsweredAgainOnceStreamModeEnds) {
   NativeRig rig;
   proto::ConfigPayload config = default_payload();
   config.mode = 1;
   rig.send_config(config);
-  rig.run_until(kOutputTicks + 5 * kPeriodTicks + 10, [](Channel, uint64_t) -> uint16_t { return 512; });
+  rig.run_until(kOutputTicks + 10, [](Channel, uint64_t) -> uint16_t { return 512; });
+  config.mode = 0;
+  rig.send_config(config);  // only the mode changes: the windows are kept
+  rig.receive();
   rig.send_empty(MsgType::poll);
-  rig.run_until(2 * kOutputTicks + 10, [](Channel, uint64_t) -> uint16_t { return 512; });
   const std::vector<Frame> frames = rig.receive();
-  ASSERT_EQ(frames.size(), 4U);  // ACK, streamed, polled, streamed
-  const uint32_t expected_ticks[] = {kOutputTicks, kOutputTicks + 5 * kPeriodTicks, 2 * kOutputTicks};
-  for (size_t k = 1; k < frames.size(); ++k) {
-    ASSERT_TRUE(is(frames[k], MsgType::sample)) << k;
-    EXPECT_EQ(frames[k].seq, k);
-    EXPECT_EQ(parse_as<proto::SamplePayload>(frames[k]).tick, expected_ticks[k - 1]) << k;
-  }
+  ASSERT_EQ(frames.size(), 1U);
+  ASSERT_TRUE(is(frames[0], MsgType::sample));
+  EXPECT_EQ(parse_as<proto::SamplePayload>(frames[0]).n_window, 25);
 }
 
 TEST(Firmware, RawModeFollowsEachSampleWithTheNewestCodes) {

@@ -37,6 +37,9 @@ class NativeRig {
     }
   }
 
+  /// Seq the next frame sent to the firmware carries.
+  uint16_t next_host_seq() const { return host_seq_; }
+
   void send_empty(proto::MsgType type) {
     uint8_t frame[proto::kMaxFrameSize];
     size_t n = proto::encode_frame(proto::type_id(type), host_seq_++, nullptr, 0, frame, sizeof frame);

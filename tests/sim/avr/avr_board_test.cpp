@@ -224,5 +224,39 @@ TEST_F(AvrTwin, MalformedAndOutOfRangeCommandsAreNakedAndChangeNothing) {
     EXPECT_EQ(config.raw, expect.raw);
 }
 
+// A POLL to a streaming board is refused on both builds alike: the same NAKs in the same places, and the SAMPLEs
+// around them still on the 100 ms grid (docs/protocol.md §3.5).
+TEST_F(AvrTwin, PollsInStreamModeAreNakedByteIdentically) {
+    proto::ConfigPayload stream = default_config();
+    stream.mode = 1;
+    std::vector<HostSend> script = {{0.01, config_set_frame(stream, 0)}};
+    std::uint16_t seq = 1;
+    for (int k = 1; k < 50; ++k) script.push_back({0.1 * k + 0.037, empty_frame(proto::MsgType::poll, seq++)});
+    AvrBoard board(AvrBoardOptions{avr_elf()}, millivolts_from(hashed_code));
+    const auto avr = run_avr(board, script, 5.0 + kAvrTailS);
+    const auto native = run_native(script, 5.0, hashed_code);
+    expect_same_stream(avr, native);
+    std::size_t naks = 0;
+    std::uint32_t previous_tick = 0;
+    for (const DecodedFrame& f : decode_all(native)) {
+        if (f.type == proto::MsgType::nak) {
+            proto::NakPayload nak{};
+            ASSERT_TRUE(proto::parse(f.payload.data(), f.payload.size(), &nak));
+            EXPECT_EQ(nak.nacked_type, proto::type_id(proto::MsgType::poll));
+            EXPECT_EQ(nak.status, static_cast<std::uint8_t>(proto::Status::not_allowed));
+            EXPECT_EQ(nak.nacked_seq, naks + 1);
+            ++naks;
+        } else if (f.type == proto::MsgType::sample) {
+            proto::SamplePayload sample{};
+            ASSERT_TRUE(proto::parse(f.payload.data(), f.payload.size(), &sample));
+            if (previous_tick != 0) {
+                EXPECT_EQ(sample.tick - previous_tick, 25000U);  // one output period apart
+            }
+            previous_tick = sample.tick;
+        }
+    }
+    EXPECT_EQ(naks, 49U);
+}
+
 }  // namespace
 }  // namespace driftlab::sim::avr::test
