@@ -45,7 +45,7 @@ void run_record(const RecordCliOptions& o) {
     r.duration_s = o.duration_s;
     r.log_path = o.output;
     r.capture_path = o.capture;
-    r.recorder_name = "driftlab 0.1.0";
+    r.recorder_name = kProgramVersion;
     r.overwrite = o.overwrite;
     const bool stream = o.stream_s > 0.0;
     r.config.output_period_ms = output_period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1),

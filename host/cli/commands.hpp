@@ -20,6 +20,9 @@ enum class Holdout;
 
 namespace driftlab::host::cli {
 
+/// What `--version` prints and a recording's header names as its recorder; the version is the CMake project's.
+inline constexpr const char* kProgramVersion = "driftlab " DRIFTLAB_VERSION;
+
 /// Registers one subcommand (its options struct, flags and callback) on the top-level app.
 using RegisterFn = void (*)(CLI::App& app);
 

@@ -31,7 +31,7 @@ constexpr driftlab::host::cli::RegisterFn kCommands[] = {
 int main(int argc, char** argv) {
     CLI::App app{"driftlab: firmware, simulator and analysis tools for a low-cost IMU"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "driftlab 0.1.0");
+    app.set_version_flag("--version", driftlab::host::cli::kProgramVersion);
     app.formatter(driftlab::host::cli::help_formatter());  // before the subcommands, which take it when added
     for (auto reg : kCommands) reg(app);
     // The parser's refusals read like every other error, and say whose help lists the options.

@@ -40,9 +40,8 @@ std::string describe_config_difference(const proto::ConfigPayload& want, const p
 }  // namespace
 
 const char* status_name(std::uint8_t status) {
-    constexpr const char* kNames[] = {"ok", "bad_length", "unknown_type", "out_of_range",
-                                      "bad_version", "not_allowed", "busy"};
-    return status < proto::kStatusCount ? kNames[status] : "unknown status";
+    const char* name = proto::status_name(static_cast<proto::Status>(status));
+    return name ? name : "unknown status";
 }
 
 BoardClient::BoardClient(ByteLink& link, ClientOptions options) : link_(link), options_(options) {}

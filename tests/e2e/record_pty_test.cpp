@@ -147,6 +147,11 @@ TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog
     EXPECT_EQ(rec.metadata.get_int("fit_order"), 1);
     EXPECT_EQ(rec.metadata.get_int("tick_hz"), 250000);
     EXPECT_EQ(rec.metadata.get("port"), board.path());
+    // The header names the recorder as --version does (both the CMake project's version, not a copy of it).
+    const RunResult version = run_driftlab({"--version"}, dir.path());
+    ASSERT_EQ(version.exit_code, 0) << version.output;
+    EXPECT_EQ(rec.metadata.get("recorder").value_or("") + "\n", version.output);
+    EXPECT_EQ(version.output.rfind("driftlab ", 0), 0u) << version.output;
     expect_rows_in_truth(rec, truth);
     // Consecutive rows are consecutive outputs of the firmware: one period apart, seq +1.
     for (std::size_t i = 1; i < rec.size(); ++i) {

@@ -13,7 +13,7 @@ enum class Status : uint8_t {
   unknown_type = 2,  ///< type not in the message table
   out_of_range = 3,  ///< a field outside its documented range (NAK.field names it)
   bad_version = 4,   ///< frame version byte is not kProtocolVersion
-  not_allowed = 5,   ///< a firmware-to-host type was sent to the firmware
+  not_allowed = 5,   ///< not in this state: a firmware-to-host type sent to the firmware, or POLL in stream mode
   busy = 6,          ///< reserved: valid request the firmware cannot serve now; firmware v1 never sends it
 };
 
