@@ -113,7 +113,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
         }
         h += "<tr><td>" + html_escape(s.name) + "</td><td>" + c1 + "</td><td>" + c2 + "</td><td>" +
              (c1_t ? to_precision_of(a.plain.t_s.value, a.plain.t_s.stderr_) : fit::kNotDetermined) + "</td><td>" +
-             html_escape(a.data.unit.empty() ? "-" : a.data.unit) + "</td><td>" + fit::fit_status_name(a.fit.status) +
+             html_escape(a.data.unit.empty() ? "-" : a.data.unit) + "</td><td>" + fit::fit_status_words(a.fit.status) +
              "</td><td>" + std::to_string(a.fit.n) + "</td><td>" + sig(a.fit.rms, 3) + "</td></tr>\n";
         if (!c1_t)
             undetermined += "<p><b>" + html_escape(s.name) + ":</b> " + fit::kNotDetermined + ": " +

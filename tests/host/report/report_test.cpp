@@ -199,6 +199,21 @@ std::string write_table(const TempDir& dir, const std::string& name, const std::
 // gaps and the curve had ended at 16 ms. A 1 s record with a reconnect that lost 30 % keeps tau0 = 1 s and warns.
 // The fit's values of what the data do not determine are arbitrary (C1 = -6.9e11 counts on a warm log): the page
 // says "not determined", why, and gives the initial slope C1/T the record does determine.
+// A fit whose evaluation budget ran out reads so in the fit table, not as the JSON's name iteration_limit.
+TEST(Report, AFitThatStoppedShortSaysSoInWords) {
+    const TempDir dir("report_stopped_short");  // a name without the words looked for
+    fit::FileAnalysisRequest request;
+    request.path = write_log(dir);
+    request.names = {"gyro"};
+    request.options.fit.max_function_evaluations = 2;
+    const fit::FileAnalysis file = fit::analyse_file(request);
+    ReportOptions options;
+    options.plots = false;
+    const std::string html = render_html_report(file, options);
+    EXPECT_NE(html.find("<td>not converged (iteration limit)</td>"), std::string::npos) << html;
+    EXPECT_EQ(html.find("iteration_limit"), std::string::npos) << html;
+}
+
 TEST(Report, WhatTheDataDoNotDetermineReadsNotDetermined) {
     const TempDir dir("report_undetermined");
     fit::FileAnalysisRequest request;
