@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "e2e_support.hpp"
+#include "firmware/core/version.hpp"
 
 namespace driftlab::e2e {
 namespace {
@@ -247,12 +248,15 @@ TEST(AnalysisCli, ReportOpensWithTheRecordingOfAHilLog) {
     for (const char* row : {"<tr><th>source</th><td>hil: simulated sensor, firmware in the loop</td></tr>",
                             "<tr><th>simulation</th><td>target native, model paper, model file paper (built in), "
                             "preset fig3, seed 7, effects none</td></tr>",
-                            "<tr><th>firmware</th><td>version 0.1.0, protocol 1</td></tr>",
                             "<tr><th>samples</th><td>60</td></tr>",
                             "<tr><th>output rate</th><td>1 Hz (sample_period_s 1 s, poll mode)</td></tr>",
                             "<tr><th>smoothing</th><td>on-board least squares of order 0 (a mean) over 25 conversions, "
                             "25 conversions per output</td></tr>"})
         EXPECT_NE(page.find(row), std::string::npos) << row << "\n" << page;
+    // The firmware in the loop reports its own version in VERSION, which the log keeps.
+    const std::string firmware = "<tr><th>firmware</th><td>version " + std::to_string(fw::kFwMajor) + "." +
+                                 std::to_string(fw::kFwMinor) + "." + std::to_string(fw::kFwPatch) + ", protocol 1</td></tr>";
+    EXPECT_NE(page.find(firmware), std::string::npos) << firmware << "\n" << page;
     EXPECT_EQ(page.find("<th>start</th>"), std::string::npos);  // hil runs in virtual time: no start to show
 }
 
