@@ -214,12 +214,20 @@ sim::HilOptions build_options(const HilCliOptions& o) {
         h.model = sim::paper_model();
         adjust(h.model.firmware);
     } else {
-        h.model = sim::load_model_file(o.model_file, adjust);
+        // With --pty the board boots with the firmware's defaults and the recorder's CONFIG replaces them: the
+        // file's, the preset's and the options' fields never reach a firmware, which therefore has nothing to refuse.
+        h.model = sim::load_model_file(o.model_file, {adjust, !o.pty});
     }
     h.seed = o.seed;
     sim::apply_preset_run(*preset, h);
     const proto::ConfigPayload& fw = h.model.firmware;
-    if (const auto refusal = sim::firmware_refusal(fw)) throw UsageError(refusal->field + ": " + refusal->reason);
+    if (const auto refusal = o.pty ? std::nullopt : sim::firmware_refusal(fw))
+        throw UsageError(refusal->field + ": " + refusal->reason);
+    // Unused there, but a [firmware] section the firmware would refuse is likely a mistake: say so rather than stop.
+    if (const auto refusal = o.pty && !o.model_file.empty() ? sim::firmware_refusal(file_fw) : std::nullopt)
+        std::fprintf(stderr, "note: %s: [firmware] is not applied with --pty (the board starts with the firmware's "
+                             "defaults and the recorder configures it); as written the firmware would refuse it: "
+                             "%s: %s\n", o.model_file.c_str(), refusal->field.c_str(), refusal->reason.c_str());
     // A model file's own period, raw flag and baud that its link cannot carry are its configuration's fault; a
     // period or raw flag from the command line (or the preset) is the command line's. A pseudo-terminal carries the
     // bytes as fast as they come (serve_pty_command): no baud rate is simulated there, so nothing to refuse.
@@ -234,7 +242,8 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     if (h.duration_s > 1e9) {
         throw UsageError("--duration: at most 1e9 s, got " + significant(h.duration_s, 6));
     }
-    if (h.duration_s < fw.output_period_ms / 1000.0)
+    // With --pty the output period is the recorder's, and --duration only bounds how long the board is served.
+    if (!o.pty && h.duration_s < fw.output_period_ms / 1000.0)
         throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
     if (o.target == "avr") {
 #ifdef DRIFTLAB_HAVE_SIM_AVR

@@ -196,13 +196,13 @@ void read_firmware(TableReader& r, proto::ConfigPayload& fw, const FirmwareAdjus
     r.boolean("raw", raw);
     fw.raw = raw ? 1 : 0;
     r.finish();
-    if (adjust) adjust(fw);
+    if (adjust.change) adjust.change(fw);
     // The firmware's own check too, whose limits join fields (a conversion rate too fast for the output period):
     // refused here, not by the board after the handshake; on the configuration that will run (the command line's
     // options over the file's).
-    if (const auto refusal = firmware_refusal(fw)) {
+    if (const auto refusal = adjust.check ? firmware_refusal(fw) : std::nullopt) {
         throw ConfigError(r.full(refusal->field), r.line(refusal->field),
-                          refusal->reason + (adjust ? std::string(" (") + kAdjustedConfig + ")" : ""));
+                          refusal->reason + (adjust.change ? std::string(" (") + kAdjustedConfig + ")" : ""));
     }
 }
 
@@ -331,10 +331,10 @@ SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& a
     if (const toml::table* t = r.table("firmware")) {
         TableReader sub(*t, "firmware");
         read_firmware(sub, m.firmware, adjust);
-    } else if (adjust) {
-        adjust(m.firmware);
+    } else if (adjust.change) {
+        adjust.change(m.firmware);
     }
-    check_clock_jitter(root, m.firmware, static_cast<bool>(adjust));
+    check_clock_jitter(root, m.firmware, static_cast<bool>(adjust.change));
     if (const toml::table* t = r.table("link")) {
         TableReader sub(*t, "link");
         read_link(sub, m.link);

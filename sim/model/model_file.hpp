@@ -22,8 +22,12 @@ struct FirmwareRefusal {
 std::optional<FirmwareRefusal> firmware_refusal(const proto::ConfigPayload& fw);
 
 /// Changes to the file's firmware CONFIG (a command line's --period, --conversions...), made before the firmware's
-/// own check of the joined fields, so that the configuration checked is the one that will run.
-using FirmwareAdjust = std::function<void(proto::ConfigPayload&)>;
+/// own check of the joined fields, so that the configuration checked is the one that will run; `check` false when
+/// none will (hil --pty: the recorder configures the board).
+struct FirmwareAdjust {
+    std::function<void(proto::ConfigPayload&)> change;
+    bool check = true;
+};
 
 /// Reads `path`. Throws host::ConfigError ("file:line: key: what") on any bad content, and when the file cannot
 /// be read.

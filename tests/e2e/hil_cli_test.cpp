@@ -112,6 +112,33 @@ TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
               std::string::npos) << too_many.output;
 }
 
+// With --pty the recorder configures the board, which boots with the firmware's defaults: a model file's [firmware]
+// never reaches it, so one the firmware would refuse (10 ms outputs with the paper's 25 conversions) is served,
+// with a note, and --duration bounds the serving, whatever the model's output period (the paper's 1 s).
+TEST(HilCli, PtyServesWhateverTheModelsFirmwareSectionAndOutputPeriodSay) {
+    TempDir dir("hilptyfw");
+    const std::string model = dir.file("ten_ms.toml");
+    std::ofstream(model) << "[firmware]\noutput_period_ms = 10\n\n[link]\nbaud = 115200.0\n";
+    const RunResult simulated = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", dir.file("h.csv")},
+                                             dir.path());
+    ASSERT_EQ(simulated.exit_code, 5) << simulated.output;  // the check still holds where the file configures the board
+    const RunResult served = run_driftlab({"hil", "--pty", "--model", model, "--speed", "10", "--duration", "1"},
+                                          dir.path());
+    EXPECT_EQ(served.exit_code, 0) << served.output;
+    EXPECT_NE(served.output.find("note: " + model + ": [firmware] is not applied with --pty"), std::string::npos)
+        << served.output;
+    EXPECT_NE(served.output.find("would refuse it: conversions_per_output:"), std::string::npos) << served.output;
+    EXPECT_NE(served.output.find("served 1.0 s of board time"), std::string::npos) << served.output;
+
+    // Half a second is shorter than the paper's 1 s output period: refused for a run, served with --pty.
+    const RunResult short_run = run_driftlab({"hil", "--duration", "0.5", "-o", dir.file("h.csv")}, dir.path());
+    ASSERT_EQ(short_run.exit_code, 2) << short_run.output;
+    const RunResult short_serve = run_driftlab({"hil", "--pty", "--speed", "10", "--duration", "0.5"}, dir.path());
+    EXPECT_EQ(short_serve.exit_code, 0) << short_serve.output;
+    EXPECT_NE(short_serve.output.find("served 0.5 s of board time"), std::string::npos) << short_serve.output;
+    EXPECT_EQ(short_serve.output.find("note:"), std::string::npos) << short_serve.output;  // the paper's model is fine
+}
+
 // 10 ms of jitter on 40 ms per channel reordered conversions: the gyro read code 0 on every row and hil exited 0.
 TEST(HilCli, JitterThatWouldReorderConversionsIsAConfigurationErrorNamingTheFile) {
     TempDir dir("hiljitter");
