@@ -88,16 +88,19 @@ std::string FileAnalysis::failure_summary() const {
 FileAnalysis analyse_file(const FileAnalysisRequest& request) {
     FileAnalysis out;
     out.path = request.path;
-    out.canonical_log = is_canonical_log(request.path);
+    // Opened once: sniffed, then (after the options are checked against what it is) read from the same stream.
+    OpenedSource source = open_source(request.path);
+    out.canonical_log = source.canonical_log;
     if (!request.time_column.empty()) check_time_column(request.time_column, out);
     std::vector<Series> all;
     if (out.canonical_log) {
         // Read here rather than through load_series: the report shows the log as a whole beside the analysis.
-        const LogData log = read_log(request.path);
+        const LogData log = parse_log(source.in, request.path);
         out.log = overview_of(log);
         all = series_from_log(log, request.names);
     } else {
-        all = load_series(request.path, request.names, request.time_column, request.sample_period_s.value_or(1.0));
+        all = series_from_table(parse_numeric_table(source.in, request.path), request.names, request.time_column,
+                                request.sample_period_s.value_or(1.0));
     }
     if (request.sample_period_s) check_sample_period(all, *request.sample_period_s, out);
     for (const Series& s : all) {

@@ -102,22 +102,29 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
     return out;
 }
 
-bool is_canonical_log(const std::string& path) {
+OpenedSource open_source(const std::string& path) {
     // One open for both heads: the capture's magic is its first line, the log's the first line that is not blank.
-    std::ifstream in = open_input_file(path);
+    OpenedSource source{open_input_file(path)};
+    std::ifstream& in = source.in;
     // Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number").
     if (io::starts_as_capture(in))
         throw DataError(path, 1, "a raw capture from `driftlab record`, not a log: rebuild its log with `driftlab decode " +
                                      path + " -o LOG.csv` and analyse that");
     in.clear();
     in.seekg(0);
-    return starts_as_log(in);
+    source.canonical_log = starts_as_log(in);
+    in.clear();
+    in.seekg(0);
+    return source;
 }
+
+bool is_canonical_log(const std::string& path) { return open_source(path).canonical_log; }
 
 std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names,
                                 const std::string& time_column, double sample_period_s) {
-    if (is_canonical_log(path)) return series_from_log(read_log(path), names);
-    return series_from_table(read_numeric_table(path), names, time_column, sample_period_s);
+    OpenedSource source = open_source(path);
+    if (source.canonical_log) return series_from_log(parse_log(source.in, path), names);
+    return series_from_table(parse_numeric_table(source.in, path), names, time_column, sample_period_s);
 }
 
 }  // namespace driftlab::host::fit

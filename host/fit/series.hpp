@@ -2,6 +2,7 @@
 // docs/analysis.md §1.
 #pragma once
 
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,5 +44,13 @@ std::vector<Series> load_series(const std::string& path, const std::vector<std::
 /// naming the file when it cannot be opened, so that a missing file is not mistaken for a table missing its options.
 /// A raw capture is refused there too, naming `driftlab decode`.
 bool is_canonical_log(const std::string& path);
+
+/// A file opened once for both the sniffing and the reading: whether it is a canonical log (is_canonical_log(), with
+/// its errors), and the stream back at its start, for parse_log() or parse_numeric_table().
+struct OpenedSource {
+    std::ifstream in;
+    bool canonical_log = false;
+};
+OpenedSource open_source(const std::string& path);
 
 }  // namespace driftlab::host::fit

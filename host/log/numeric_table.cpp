@@ -38,6 +38,10 @@ bool is_name_line(const std::vector<std::string_view>& fields) {
 
 NumericTable read_numeric_table(const std::string& path) {
     std::ifstream in = open_input_file(path);
+    return parse_numeric_table(in, path);
+}
+
+NumericTable parse_numeric_table(std::istream& in, const std::string& path) {
     NumericTable table;
     table.source_name = path;
     std::string text;

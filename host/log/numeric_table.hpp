@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 #include <cstdint>
+#include <istream>
 #include <vector>
 
 namespace driftlab::host {
@@ -29,5 +30,8 @@ struct NumericTable {
 /// like gyro2_x.txt); otherwise every data line must have the same number of fields. Throws DataError
 /// (file, line) on a non-numeric, NaN or infinite value, a ragged row, an empty file.
 NumericTable read_numeric_table(const std::string& path);
+
+/// read_numeric_table() of a file already open (from its start); `path` names it in messages.
+NumericTable parse_numeric_table(std::istream& in, const std::string& path);
 
 }  // namespace driftlab::host
