@@ -124,6 +124,7 @@ TEST(AllanCli, UnitsAreReportsColumnUnitsAndAMisspeltOneIsRefused) {
     const std::string table = dir.file("two.txt");
     {
         std::ofstream out(table);
+        out.precision(17);  // ax exactly twice gx as read back, not each rounded to 6 digits on its own
         out << "t_s gx ax\n";
         for (int k = 0; k < 2000; ++k) {
             const double z = std::sin(0.7 * k) + 0.1 * (k % 7);
