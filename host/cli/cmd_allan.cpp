@@ -27,7 +27,7 @@ struct AllanCommandOptions {
     std::vector<std::string> channels;  ///< empty or "all" = every channel / column
     std::string kind;                   ///< plain files: rate | phase (required); logs: rate only
     double tau0_s = 0.0;                ///< plain files: required; logs: default stats::grid_period_s
-    std::string unit;                   ///< plain files: the data's rate unit (deg/s, rad/s, m/s^2, g, ...)
+    std::vector<std::string> units;     ///< plain files: --unit [COLUMN:]UNIT, as report takes it
     std::string grid = "octave";
     int per_decade = 10;
     std::string deviation = "oadev";
@@ -187,6 +187,7 @@ void run(const AllanCommandOptions& o) {
     }
     req.grid.points_per_decade = o.per_decade;
     req.remove_drift = !o.keep_drift;
+    const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit");
 
     const bool log = fit::is_canonical_log(o.path);
     std::vector<std::string> names = o.channels;
@@ -194,7 +195,7 @@ void run(const AllanCommandOptions& o) {
     std::vector<fit::Series> series;
     if (log) {
         if (!o.kind.empty() && o.kind != "rate") throw UsageError("--kind: a canonical log holds rate samples (counts)");
-        if (!o.unit.empty()) throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
+        if (!o.units.empty()) throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
         series = fit::load_series(o.path, names);
     } else {
         if (o.kind.empty() || o.tau0_s <= 0.0) {
@@ -212,6 +213,9 @@ void run(const AllanCommandOptions& o) {
                                     : "not removed: a plain file is analysed as given";
         series = fit::load_series(o.path, names, "", o.tau0_s);
     }
+    std::vector<std::string> columns;
+    for (const fit::Series& s : series) columns.push_back(s.name);
+    stats::refuse_unknown_columns(units, columns, o.path);
 
     json out = {{"file", o.path}, {"kind", req.kind == stats::InputKind::rate ? "rate" : "phase"},
                 {"grid", o.grid}, {"confidence", req.confidence}, {"channels", json::object()}};
@@ -233,8 +237,9 @@ void run(const AllanCommandOptions& o) {
         } catch (const std::invalid_argument& e) {
             throw DataError(o.path, 0, "series '" + s.name + "': " + e.what());
         }
+        const auto unit = units.for_column(s.name);
         const stats::SampleUnit u =
-            s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(o.unit.empty() ? "unit" : o.unit);
+            s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(unit ? unit->name : "unit");
         const std::optional<std::string> packing = stats::packing_caveat(r, r.primary().curves.front());
         if (o.json) {
             json c = version_json(r.primary(), u);
@@ -245,13 +250,13 @@ void run(const AllanCommandOptions& o) {
             c["packed_most_slots"] = r.packed_most_slots;
             c["packing_warning"] = packing ? json(*packing) : json(nullptr);
             c["drift_removed"] = r.drift_removed.has_value();
-            c["drift_status"] = r.drift_status;
+            c["drift_status"] = r.drift_status_name();
             if (r.drift) c["drift"] = {{"C1", r.drift->c1}, {"C2", r.drift->c2}, {"T_s", r.drift->t_s}};
             if (r.drift_removed) c["raw"] = version_json(r.raw, u);
             out["channels"][s.name] = c;
         } else {
             std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(), s.name.c_str(),
-                        tau0, r.samples, r.gap_samples, r.drift_removed ? "removed (eq. 1)" : r.drift_status.c_str());
+                        tau0, r.samples, r.gap_samples, r.drift_removed ? "removed (eq. 1)" : r.drift_status_words().c_str());
             if (packing) std::printf("  warning: %s\n", packing->c_str());
             if (r.drift_removed) print_version("drift removed", *r.drift_removed, u, r.longest_gap_free_s);
             print_version(r.drift_removed ? "raw" : "as given", r.raw, u, r.longest_gap_free_s);
@@ -274,7 +279,7 @@ void register_allan(CLI::App& app) {
                     "Sample period [s]; required for plain files, logs default to the rows' median spacing (their "
                     "mean for rows in bursts, as report)")
         ->check(positive_number());
-    cmd->add_option("--unit", o->unit, "Plain files: the rate's unit (deg/s, dps, mdps, deg/h, rad/s, g, mg, m/s^2, cm/s^2, mm/s^2, or any name: then no physical terms)");
+    add_unit_option(cmd, o->units);
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
     // A whole number: the grid is 10^(k / per_decade), which puts every power of ten on it. 1000 is more than the
     // distinct m of the first three decades; --grid all is every m. CLI11 had refused 2.5 as a failed conversion.

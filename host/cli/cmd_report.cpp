@@ -30,18 +30,9 @@ struct ReportCommandOptions {
 /// Gives the plain table's analysed columns the units of --unit, so that the page reads in them (Allan headers,
 /// noise terms in navigation units). A column --unit names that is not among them is refused, naming the columns.
 void assign_units(const stats::UnitAssignment& units, fit::FileAnalysis& file) {
-    for (const stats::ColumnUnit& u : units.units) {
-        if (u.column.empty()) continue;
-        std::string columns;
-        bool found = false;
-        for (const auto& s : file.series) {
-            found |= s.name == u.column;
-            columns += (columns.empty() ? "" : ", ") + s.name;
-        }
-        if (!found)
-            throw UsageError("--unit '" + u.argument + "': " + file.path + " has no column '" + u.column +
-                             "' among those analysed (" + columns + ")");
-    }
+    std::vector<std::string> columns;
+    for (const auto& s : file.series) columns.push_back(s.name);
+    stats::refuse_unknown_columns(units, columns, file.path);
     for (auto& s : file.series)
         if (const auto unit = units.for_column(s.name); unit && s.analysis) s.analysis->data.unit = unit->name;
 }
@@ -78,6 +69,15 @@ void run(const ReportCommandOptions& opts) {
 
 }  // namespace
 
+void add_unit_option(CLI::App* cmd, std::vector<std::string>& units) {
+    cmd->add_option("--unit", units,
+                    "Plain tables: [COLUMN:]UNIT, the unit of a column's samples (of every other column without "
+                    "COLUMN:), for noise terms in navigation units: " +
+                        stats::rate_unit_names(stats::RateQuantity::angular_rate) + ", " +
+                        stats::rate_unit_names(stats::RateQuantity::acceleration) + "; repeat for several columns")
+        ->allow_extra_args(false);  // one value an occurrence: `--unit mg LOG` had taken the log for a unit
+}
+
 void register_report(CLI::App& app) {
     auto opts = std::make_shared<ReportCommandOptions>();
     CLI::App* cmd = app.add_subcommand("report", "Write one self-contained HTML report (fit, whiteness, Allan, figures)");
@@ -85,12 +85,7 @@ void register_report(CLI::App& app) {
     cmd->add_option("-o,--output", opts->output, "HTML file to write (default report.html)");
     cmd->add_flag("--json", opts->json, "Also print the fit results as JSON (same keys as `fit --json`)");
     cmd->add_flag("--no-plots", opts->no_plots, "Leave the figures out (no gnuplot needed)");
-    cmd->add_option("--unit", opts->units,
-                    "Plain tables: [COLUMN:]UNIT, the unit of a column's samples (of every other column without "
-                    "COLUMN:), for noise terms in navigation units: " +
-                        stats::rate_unit_names(stats::RateQuantity::angular_rate) + ", " +
-                        stats::rate_unit_names(stats::RateQuantity::acceleration) + "; repeat for several columns")
-        ->allow_extra_args(false);  // one value an occurrence: `--unit mg LOG` had taken the log for a unit
+    add_unit_option(cmd, opts->units);
     cmd->callback([opts] { run(*opts); });
 }
 

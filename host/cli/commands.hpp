@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -42,6 +43,10 @@ void register_gap_eval(CLI::App& app);
 
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
+
+/// `--unit [COLUMN:]UNIT`, repeatable, for a plain table's columns: report and allan take it alike (cmd_report.cpp;
+/// parse with stats::parse_unit_assignment).
+void add_unit_option(CLI::App* cmd, std::vector<std::string>& units);
 
 /// A series' analysis warnings, one "  warning: ..." line each, as fit and whiteness print them (cmd_fit.cpp).
 void print_analysis_warnings(const fit::DriftAnalysis& analysis);

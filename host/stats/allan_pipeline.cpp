@@ -52,18 +52,24 @@ const AnalysedCurve* AllanCurves::find(Deviation d) const {
     return nullptr;
 }
 
-std::optional<fit::DriftParameters> fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
-                                                      std::string& status) {
+std::string AllanResult::drift_status_name() const {
+    return drift_fit_status ? fit::fit_status_name(*drift_fit_status) : drift_not_fitted;
+}
+
+std::string AllanResult::drift_status_words() const {
+    return drift_fit_status ? fit::fit_status_words(*drift_fit_status) : drift_not_fitted;
+}
+
+void fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
+                       const fit::FitOptions& options, AllanResult& out) {
     try {
-        const fit::FitResult r = fit::fit_drift(t_s, values);
-        status = fit::fit_status_name(r.status);
+        const fit::FitResult r = fit::fit_drift(t_s, values, options);
+        out.drift_fit_status = r.status;
         // A singular fit (T far beyond the record: only the slope C1/T is seen) still gives the least-squares
         // curve, which is what is removed; only a fit that ran off is not.
-        if (r.status == fit::FitStatus::iteration_limit || !std::isfinite(r.scaled_rss)) return std::nullopt;
-        return r.parameters;
+        if (r.status != fit::FitStatus::iteration_limit && std::isfinite(r.scaled_rss)) out.drift = r.parameters;
     } catch (const std::exception& e) {
-        status = e.what();
-        return std::nullopt;
+        out.drift_not_fitted = e.what();
     }
 }
 
@@ -97,14 +103,14 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
     out.longest_gap_free_s = static_cast<double>(record.longest_segment().size() - 1) * tau0_s;
 
     if (!request.remove_drift) {
-        out.drift_status = request.kept_drift_status;
+        out.drift_not_fitted = request.kept_drift_status;
         return out;
     }
     if (request.kind != InputKind::rate) {
-        out.drift_status = "not applicable to phase input";
+        out.drift_not_fitted = "not applicable to phase input";
         return out;
     }
-    out.drift = fit_turn_on_drift(t_s, values, out.drift_status);
+    fit_turn_on_drift(t_s, values, request.drift_fit, out);
     if (!out.drift) return out;
     std::vector<double> residual(grid.values.size());
     for (std::size_t i = 0; i < residual.size(); ++i) {

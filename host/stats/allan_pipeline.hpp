@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "host/fit/drift_model.hpp"
+#include "host/fit/lm_fit.hpp"
 #include "host/stats/allan_analysis.hpp"
 #include "host/stats/noise_terms.hpp"
 
@@ -18,7 +19,8 @@ struct AllanRequest {
     TauGridOptions grid;
     std::vector<Deviation> deviations = {Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
     bool remove_drift = true;   ///< fit eq. 1 and also analyse the residual (rate input only)
-    std::string kept_drift_status = "not requested";  ///< drift_status when remove_drift is false: the caller's reason
+    std::string kept_drift_status = "not requested";  ///< drift_not_fitted when remove_drift is false: the caller's reason
+    fit::FitOptions drift_fit;  ///< the eq. 1 fit's options
     double confidence = kOneSigmaConfidence;
 };
 
@@ -39,7 +41,12 @@ struct AllanResult {
     AllanCurves raw;
     std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
     std::optional<fit::DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]
-    std::string drift_status;                   ///< why no drift was removed, or the fit status
+    std::optional<fit::FitStatus> drift_fit_status;  ///< the eq. 1 fit's status, when it ran
+    std::string drift_not_fitted;                    ///< else why not (not requested, phase input, the fit's error)
+    /// JSON's drift_status: the fit's status as fit --json spells it (iteration_limit), else drift_not_fitted.
+    std::string drift_status_name() const;
+    /// The same for a terminal, in the words of fit's table (fit::fit_status_words: "not converged (iteration limit)").
+    std::string drift_status_words() const;
     /// The curves the result is read from: drift removed when it was, else raw.
     const AllanCurves& primary() const { return drift_removed ? *drift_removed : raw; }
 };
@@ -58,9 +65,9 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
 /// stretch gained) does not. Nothing either without packing or without a curve.
 std::optional<std::string> packing_caveat(const AllanResult& r, const AnalysedCurve& curve);
 
-/// The one place the turn-on drift enters the Allan analysis: fits eq. 1 to (t_s, values); nothing (and the
-/// reason in `status`) when the fit fails or does not converge.
-std::optional<fit::DriftParameters> fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
-                                                      std::string& status);
+/// The one place the turn-on drift enters the Allan analysis: fits eq. 1 to (t_s, values) and sets `out`'s drift
+/// (none when the fit fails or does not converge), drift_fit_status and, for a fit that threw, drift_not_fitted.
+void fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
+                       const fit::FitOptions& options, AllanResult& out);
 
 }  // namespace driftlab::host::stats

@@ -1,6 +1,7 @@
 // Rate units by name; see rate_unit.hpp.
 #include "host/stats/rate_unit.hpp"
 
+#include <algorithm>
 #include <array>
 #include <numbers>
 
@@ -81,6 +82,17 @@ UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, con
         out.units.push_back({column, *unit, value});
     }
     return out;
+}
+
+void refuse_unknown_columns(const UnitAssignment& units, const std::vector<std::string>& columns,
+                            const std::string& path) {
+    for (const ColumnUnit& u : units.units) {
+        if (u.column.empty() || std::find(columns.begin(), columns.end(), u.column) != columns.end()) continue;
+        std::string listed;
+        for (const std::string& c : columns) listed += (listed.empty() ? "" : ", ") + c;
+        throw UsageError("--unit '" + u.argument + "': " + path + " has no column '" + u.column +
+                         "' among those analysed (" + listed + ")");
+    }
 }
 
 SampleUnit unit_of_channel(Channel c) {

@@ -1,5 +1,5 @@
 // The units a user may name for a gyro's or an accelerometer's samples, with their SI value: one table for every
-// command that reads a plain recording (allan --unit, gap --as ...:UNIT), so that they accept the same spellings.
+// command that reads a plain recording (allan and report --unit, gap --as ...:UNIT), so that they accept the same spellings.
 #pragma once
 
 #include <optional>
@@ -56,6 +56,11 @@ struct UnitAssignment {
 /// Throws UsageError naming the value for an unknown unit (listing the known ones), an empty column or unit, and a
 /// column (or every column) given a unit twice.
 UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option);
+
+/// Throws UsageError for a `COLUMN:UNIT` whose column is not among `columns` (the series of `path` analysed),
+/// naming the value and those columns.
+void refuse_unknown_columns(const UnitAssignment& units, const std::vector<std::string>& columns,
+                            const std::string& path);
 
 /// Standard gravity [m/s^2 per g] (CGPM 1901), which g and mg stand for.
 inline constexpr double kStandardGravity = 9.80665;

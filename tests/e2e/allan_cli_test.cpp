@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <string>
@@ -111,6 +112,51 @@ TEST(AllanCli, UnresolvedTermsAreNullInJsonAndMarkedInTextInEveryUnit) {
         EXPECT_EQ(kalibr[key].is_null(), unresolved) << key << " = " << kalibr[key];
         EXPECT_EQ(text_line(key).find("not resolved (<= ") != std::string::npos, unresolved) << text_line(key);
     }
+}
+
+// allan --unit takes report's [COLUMN:]UNIT from the one unit table: a column's own unit, the others the one for
+// every column, and the Kalibr densities follow each in SI. ax is gx doubled (exact: a power of two), so its density
+// in mg is 2 x 9.80665e-3 m/s^2 per deg/s's pi/180 rad/s times gx's. A misspelt unit had been taken for a label that
+// silently dropped the physical terms: it is refused (exit 2) naming itself and the known units, as is a column the
+// file does not have.
+TEST(AllanCli, UnitsAreReportsColumnUnitsAndAMisspeltOneIsRefused) {
+    TempDir dir("allanunit");
+    const std::string table = dir.file("two.txt");
+    {
+        std::ofstream out(table);
+        out.precision(17);  // ax exactly twice gx as read back, not each rounded to 6 digits on its own
+        out << "t_s gx ax\n";
+        for (int k = 0; k < 2000; ++k) {
+            const double z = std::sin(0.7 * k) + 0.1 * (k % 7);
+            out << 0.02 * k << ' ' << z << ' ' << 2.0 * z << '\n';
+        }
+    }
+    const std::vector<std::string> base = {"allan", table, "--kind", "rate", "--tau0", "0.02"};
+    const auto run_with = [&](const std::vector<std::string>& extra) {
+        std::vector<std::string> args = base;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return run_driftlab(args, dir.path());
+    };
+    const RunResult r = run_with({"--unit", "gx:dps", "--unit", "mg", "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto channels = nlohmann::json::parse(r.output)["channels"];
+    EXPECT_EQ(channels["gx"]["terms"]["unit"], "deg/s");
+    EXPECT_EQ(channels["ax"]["terms"]["unit"], "mg");
+    const double gyro = channels["gx"]["kalibr"]["gyroscope_noise_density"].get<double>();
+    const double accel = channels["ax"]["kalibr"]["accelerometer_noise_density"].get<double>();
+    EXPECT_NEAR(accel / gyro, 2.0 * 9.80665e-3 / (std::numbers::pi / 180.0), 1e-9);
+
+    const auto error_of = [&](const std::string& unit) {
+        const RunResult refused = run_with({"--unit", unit});
+        EXPECT_EQ(refused.exit_code, 2) << refused.output;
+        return refused.output;
+    };
+    EXPECT_NE(error_of("deg/sec").find("--unit 'deg/sec': unknown unit 'deg/sec'; angular rate: deg/s, dps, mdps, "
+                                       "deg/h, rad/s; acceleration: g, mg"),
+              std::string::npos);
+    EXPECT_NE(error_of("gz:deg/s").find("--unit 'gz:deg/s': " + table + " has no column 'gz' among those analysed "
+                                        "(gx, ax)"),
+              std::string::npos);
 }
 
 // A log whose rows come in bursts (5 rows 2 ms apart every 50 ms, 100 a second, as the MPU6050 recording) gets the

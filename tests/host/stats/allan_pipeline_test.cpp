@@ -155,7 +155,7 @@ TEST(AllanPipeline, RemovingTheTurnOnDriftRestoresTheWhiteNoiseCurve) {
     req.deviations = {Deviation::oadev, Deviation::mdev};
     req.confidence = 0.999;  // every tau inside its interval with high probability (one fixed seed)
     const AllanResult r = analyse_allan(t, y, tau0, req);
-    ASSERT_TRUE(r.drift_removed.has_value()) << r.drift_status;
+    ASSERT_TRUE(r.drift_removed.has_value()) << r.drift_status_name();
     ASSERT_TRUE(r.drift.has_value());
     EXPECT_NEAR(r.drift->t_s / 300.0, 1.0, 0.05);
     const AnalysedCurve& clean = r.drift_removed->curves.front();
@@ -171,6 +171,38 @@ TEST(AllanPipeline, RemovingTheTurnOnDriftRestoresTheWhiteNoiseCurve) {
     EXPECT_GT(raw.curve.dev.back(), 3.0 * clean.curve.dev.back());
     EXPECT_TRUE(r.drift_removed->terms.ok);
     EXPECT_NEAR(r.drift_removed->terms.value[1] / (sigma * std::sqrt(tau0)), 1.0, 0.05);
+}
+
+// A drift fit whose evaluation budget ran out removes nothing and says why: in fit's table's words on a terminal,
+// as fit --json spells it in JSON (drift_status). allan's text had printed the JSON name iteration_limit. A fit that
+// converged reads "converged" in both; a reason no fit ran is the same in both.
+TEST(AllanPipeline, AnExhaustedDriftFitReadsInWordsOnATerminalAndAsANameInJson) {
+    std::mt19937_64 rng(33);
+    std::normal_distribution<double> g(0.0, 0.5);
+    std::vector<double> t, y;
+    for (int k = 0; k < 3000; ++k) {
+        t.push_back(k * 1.0);
+        y.push_back(500.0 + 40.0 * (1.0 - std::exp(-k / 300.0)) + g(rng));
+    }
+    AllanRequest req;
+    req.drift_fit.max_function_evaluations = 2;
+    const AllanResult stopped = analyse_allan(t, y, 1.0, req);
+    ASSERT_EQ(stopped.drift_fit_status, fit::FitStatus::iteration_limit);
+    EXPECT_FALSE(stopped.drift_removed.has_value());
+    EXPECT_EQ(stopped.drift_status_words(), "not converged (iteration limit)");
+    EXPECT_EQ(stopped.drift_status_name(), "iteration_limit");
+
+    const AllanResult removed = analyse_allan(t, y, 1.0, AllanRequest{});
+    ASSERT_TRUE(removed.drift_removed.has_value()) << removed.drift_status_name();
+    EXPECT_EQ(removed.drift_status_words(), "converged");
+    EXPECT_EQ(removed.drift_status_name(), "converged");
+
+    req.remove_drift = false;
+    req.kept_drift_status = "kept on request";
+    const AllanResult kept = analyse_allan(t, y, 1.0, req);
+    EXPECT_FALSE(kept.drift_fit_status.has_value());
+    EXPECT_EQ(kept.drift_status_words(), "kept on request");
+    EXPECT_EQ(kept.drift_status_name(), "kept on request");
 }
 
 TEST(AllanPipeline, TimeGapIsCountedAndNotBridged) {
