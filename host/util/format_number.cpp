@@ -22,14 +22,9 @@ std::string without_negative_zero(const char* text) {
 }
 
 // `value` fixed-point with its last digit at 10^last, where that reads plainly: a last digit from 1e-12 up and a
-// magnitude below 1e9 (a wider value is clearer with an exponent). A last digit left of the point is rounded there
-// too (1052485 to hundreds is 1052500): %.0f alone had written the units' digits an error of 2300 does not justify.
+// magnitude below 1e9 (a wider value is clearer with an exponent).
 std::optional<std::string> plain_to_digit(double value, int last) {
     if (last < -12 || !(std::fabs(value) < 1e9)) return std::nullopt;
-    if (last > 0) {
-        const double step = std::pow(10.0, last);  // exact up to 1e22
-        value = std::round(value / step) * step;
-    }
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -last), value);
     return without_negative_zero(buf);
