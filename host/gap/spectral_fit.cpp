@@ -79,22 +79,19 @@ OutputSpectrum model_spectrum(const std::vector<std::string>& effects, Channel c
 SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, const GapModel& model,
                          const PartPeriodogram& p, const std::vector<double>& known) {
     const std::vector<double> floor_acov = white_floor_autocovariance(model.smoothing);
-    OutputSpectrum floor_alone;
-    floor_alone.white = 1.0;
-    const std::vector<double> unit_floor = expected_periodogram(floor_alone, floor_acov, p);
+    ExpectedPeriodogram expected(floor_acov, p);
+    const std::vector<double> unit_floor = expected({1.0, {}, 0.0});
     SpectralFit out;
     out.effects = effects;
     const HeldNoise& held = model.held[channel_index(c)];
     if (effects.empty() && held.gauss_markov.empty() && held.walk_counts2_per_s == 0.0) {
         out.white = floor_only_white(p, unit_floor, 0);
-        std::vector<double> e = unit_floor;
-        for (double& v : e) v *= out.white;
-        out.nll = whittle_nll(p, e);
+        out.nll = whittle_nll(p, expected({out.white, {}, 0.0}));
         return out;
     }
     if (effects.empty()) {  // the floor beside the model file's processes
         const auto nll_at = [&](const std::vector<double>& ln_white) {
-            return whittle_nll(p, expected_periodogram(model_spectrum({}, c, {}, model, std::exp(ln_white[0])), floor_acov, p));
+            return whittle_nll(p, expected(model_spectrum({}, c, {}, model, std::exp(ln_white[0]))));
         };
         const auto nm = nelder_mead(nll_at, {std::log(floor_only_white(p, unit_floor, p.power.size() / 2))}, {0.5},
                                     kRefineEvaluationsPerParameter);
@@ -123,7 +120,7 @@ SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, con
         return q;
     };
     auto nll_at = [&](const std::vector<double>& x) {
-        return whittle_nll(p, expected_periodogram(model_spectrum(effects, c, params_of(x), model, std::exp(x[0])), floor_acov, p));
+        return whittle_nll(p, expected(model_spectrum(effects, c, params_of(x), model, std::exp(x[0]))));
     };
     std::vector<double> earlier;  // log-parameters of all effects but the last
     for (std::size_t e = 0, k = 0; e + 1 < effects.size(); ++e) {

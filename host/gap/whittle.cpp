@@ -205,8 +205,12 @@ std::vector<double> differenced_density(const OutputSpectrum& model, const std::
     return s;
 }
 
-std::vector<double> expected_periodogram(const OutputSpectrum& model, const std::vector<double>& floor_acov,
-                                         const PartPeriodogram& p) {
+namespace {
+
+// The expected periodogram of one component's covariance (expected_periodogram() without the floor at 1e-300): it is
+// linear in the covariance, so a model's is the sum of its components'.
+std::vector<double> component_periodogram(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                          const PartPeriodogram& p) {
     std::vector<double> b = differenced_autocovariance(model, floor_acov, p.length);
     for (std::size_t tau = 0; tau < p.length; ++tau) b[tau] *= p.mask_overlap[tau];
     // sum over tau = -(n-1)..n-1 of b(|tau|) e^{-i w tau} = 2 Re FFT(b)_j - b(0).
@@ -242,8 +246,58 @@ std::vector<double> expected_periodogram(const OutputSpectrum& model, const std:
             out[j] += (quadratic - 2.0 * cross) / p.taper_energy;
         }
     }
+    return out;
+}
+
+// A fit's evaluations change a few AR(1) components at most; a few more than a wide flicker has are kept.
+constexpr std::size_t kKeptComponents = 24;
+
+}  // namespace
+
+ExpectedPeriodogram::ExpectedPeriodogram(const std::vector<double>& floor_acov, const PartPeriodogram& p)
+    : floor_acov_(&floor_acov), p_(&p) {}
+
+const std::vector<double>& ExpectedPeriodogram::unit_floor() {
+    if (floor_.empty()) floor_ = component_periodogram({1.0, {}, 0.0}, *floor_acov_, *p_);
+    return floor_;
+}
+
+const std::vector<double>& ExpectedPeriodogram::unit_walk() {
+    if (walk_.empty()) walk_ = component_periodogram({0.0, {}, 1.0}, *floor_acov_, *p_);
+    return walk_;
+}
+
+const std::vector<double>& ExpectedPeriodogram::unit_ar1(double phi) {
+    ++clock_;
+    for (Kept& k : ar1_)
+        if (k.phi == phi) {
+            k.last_use = clock_;
+            return k.values;
+        }
+    if (ar1_.size() == kKeptComponents)
+        ar1_.erase(std::min_element(ar1_.begin(), ar1_.end(), [](const Kept& a, const Kept& b) { return a.last_use < b.last_use; }));
+    OutputSpectrum unit;
+    unit.ar1.push_back({1.0, phi});
+    ar1_.push_back({phi, clock_, component_periodogram(unit, *floor_acov_, *p_)});
+    return ar1_.back().values;
+}
+
+std::vector<double> ExpectedPeriodogram::operator()(const OutputSpectrum& model) {
+    std::vector<double> out(p_->power.size(), 0.0);
+    const auto add = [&](double weight, const std::vector<double>& unit) {
+        for (std::size_t j = 0; j < out.size(); ++j) out[j] += weight * unit[j];
+    };
+    if (model.white != 0.0) add(model.white, unit_floor());
+    for (const auto& a : model.ar1)
+        if (a.variance != 0.0) add(a.variance, unit_ar1(a.phi));
+    if (model.walk_increment_variance != 0.0) add(model.walk_increment_variance, unit_walk());
     for (double& v : out) v = std::max(v, 1e-300);
     return out;
+}
+
+std::vector<double> expected_periodogram(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                         const PartPeriodogram& p) {
+    return ExpectedPeriodogram(floor_acov, p)(model);
 }
 
 double whittle_nll(const PartPeriodogram& p, const std::vector<double>& expected, std::vector<double>* terms) {

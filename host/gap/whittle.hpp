@@ -10,6 +10,7 @@
 
 #include <complex>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -97,6 +98,34 @@ std::vector<double> differenced_density(const OutputSpectrum& model, const std::
 /// -2 Re sum_k conj(alpha_k) F(C b_k) + alpha^H B'CB alpha, over the taper energy).
 std::vector<double> expected_periodogram(const OutputSpectrum& model, const std::vector<double>& floor_acov,
                                          const PartPeriodogram& p);
+
+/// expected_periodogram() of many models on one part, as a fit evaluates them. The expected periodogram is linear in
+/// the covariance, so a model's is the sum of its components' (the floor's, the walk's and each AR(1)'s) at unit
+/// size, weighted by their sizes: each unit component is computed once and kept (the AR(1)s by their phi, the 24
+/// used last), and an evaluation that changes sizes only, or one Gauss-Markov component, costs one pass per
+/// component instead of the FFTs of all of them. One object per thread: it is not safe to share.
+class ExpectedPeriodogram {
+public:
+    /// Both are referenced, not copied: they must outlive the object.
+    ExpectedPeriodogram(const std::vector<double>& floor_acov, const PartPeriodogram& p);
+    std::vector<double> operator()(const OutputSpectrum& model);
+
+private:
+    const std::vector<double>& unit_floor();
+    const std::vector<double>& unit_walk();
+    const std::vector<double>& unit_ar1(double phi);
+
+    struct Kept {
+        double phi;
+        std::uint64_t last_use;
+        std::vector<double> values;
+    };
+    const std::vector<double>* floor_acov_;
+    const PartPeriodogram* p_;
+    std::vector<double> floor_, walk_;
+    std::vector<Kept> ar1_;
+    std::uint64_t clock_ = 0;
+};
 
 /// Whittle negative log-likelihood sum_j ln E_j + I_j / E_j (constants dropped); per-frequency terms if `terms`.
 double whittle_nll(const PartPeriodogram& p, const std::vector<double>& expected, std::vector<double>* terms = nullptr);

@@ -1,6 +1,7 @@
 // The debiased Whittle machinery against closed forms and against Monte Carlo: the expected periodogram of a
 // masked, tapered series is what the average periodogram of many realisations converges to.
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <random>
 
@@ -190,6 +191,54 @@ TEST(Whittle, ExpectedPeriodogramOfAFittedResidualKnowsWhatTheFitAbsorbed) {
     EXPECT_LT(aware, 0.25 * plain_misfit) << aware << " vs " << plain_misfit;
 }
 
+
+// Without a fitted span the expected periodogram is the masked covariance's Fourier sum, sum over tau = -(n-1)..n-1 of
+// mask_overlap(|tau|) c(|tau|) cos(w_j tau): summed directly here, where expected_periodogram() adds its components'
+// FFTs.
+TEST(Whittle, ExpectedPeriodogramIsTheMaskedCovariancesFourierSum) {
+    const std::size_t n = 300;
+    std::vector<double> e(n);
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> n01;
+    for (double& v : e) v = n01(rng);
+    const PartPeriodogram p = part_periodogram(e, even_tenths(n));
+    const std::vector<double> floor = white_floor_autocovariance({1.0, 4, 8, 0});
+    OutputSpectrum m;
+    m.white = 2.0;
+    m.ar1 = {{3.0, 0.9}, {0.5, 0.99}};
+    m.walk_increment_variance = 0.02;
+    const std::vector<double> c = differenced_autocovariance(m, floor, p.length);
+    const auto expected = expected_periodogram(m, floor, p);
+    ASSERT_EQ(expected.size(), p.power.size());
+    for (std::size_t j = 0; j < expected.size(); ++j) {
+        const double w = 2.0 * std::numbers::pi * static_cast<double>(j + 1) / static_cast<double>(p.length);
+        double sum = c[0] * p.mask_overlap[0];
+        for (std::size_t tau = 1; tau < p.length; ++tau) sum += 2.0 * c[tau] * p.mask_overlap[tau] * std::cos(w * static_cast<double>(tau));
+        EXPECT_NEAR(expected[j], sum, 1e-10 * std::abs(sum) + 1e-12) << "ordinate " << j + 1;
+    }
+}
+
+// A fit's evaluator keeps the unit components it has computed: after more Gauss-Markov correlation times than it
+// keeps (some evicted, some kept), every model it evaluates is the same, to the bit, as a fresh evaluator's, on a
+// fitted residual's part.
+TEST(Whittle, AFitsEvaluatorGivesWhatAFreshOneGives) {
+    const std::size_t n = 400;
+    std::vector<double> e(n), t(n);
+    std::mt19937_64 rng(12);
+    std::normal_distribution<double> n01;
+    for (std::size_t i = 0; i < n; ++i) e[i] = n01(rng), t[i] = static_cast<double>(i + 1);
+    const Eigen::MatrixXd x = eq1_tangent(t, 150.0);
+    const PartPeriodogram p = part_periodogram(e, even_tenths(n), &x);
+    const std::vector<double> floor = white_floor_autocovariance({1.0, 8, 8, 1});
+    ExpectedPeriodogram reused(floor, p);
+    for (int k = 0; k < 40; ++k) {
+        OutputSpectrum m;
+        m.white = 1.0 + 0.01 * k;
+        m.ar1 = {{0.3, 0.5}, {0.2 + 0.05 * k, std::exp(-1.0 / (2.0 + 3.0 * (k % 30)))}};
+        m.walk_increment_variance = k % 3 == 0 ? 0.0 : 1e-3 * k;
+        EXPECT_EQ(reused(m), expected_periodogram(m, floor, p)) << "model " << k;
+    }
+}
 
 TEST(Whittle, TooFewDifferencesInThePartAreRefused) {
     std::vector<double> e(100, 1.0);
