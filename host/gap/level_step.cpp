@@ -12,6 +12,7 @@
 #include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
+#include "host/util/fft_length.hpp"
 #include "host/util/thread_fft.hpp"
 
 namespace driftlab::host::gap {

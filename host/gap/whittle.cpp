@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "host/util/fft_length.hpp"
 #include "host/util/thread_fft.hpp"
 
 namespace driftlab::host::gap {
@@ -16,21 +17,7 @@ namespace {
 constexpr std::size_t kMinDifferences = 16;
 constexpr double kTaperFraction = 0.5;  // share of each run inside the cosine ramps (Tukey 1967)
 
-std::size_t smooth_length_at_least(std::size_t n) {
-    std::size_t m = n;
-    while (smooth_length_at_most(m) != m) ++m;
-    return m;
-}
-
 }  // namespace
-
-std::size_t smooth_length_at_most(std::size_t n) {
-    std::size_t best = 1;
-    for (std::size_t p2 = 1; p2 <= n; p2 *= 2)
-        for (std::size_t p3 = p2; p3 <= n; p3 *= 3)
-            for (std::size_t p5 = p3; p5 <= n; p5 *= 5) best = std::max(best, p5);
-    return best;
-}
 
 Eigen::MatrixXd orthonormal_basis(const Eigen::MatrixXd& x) {
     return Eigen::HouseholderQR<Eigen::MatrixXd>(x).householderQ() * Eigen::MatrixXd::Identity(x.rows(), x.cols());

@@ -52,9 +52,6 @@ PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector
 /// near-collinearity of eq. 1's exponentials.
 Eigen::MatrixXd orthonormal_basis(const Eigen::MatrixXd& x);
 
-/// Largest length <= n whose prime factors are 2, 3 and 5 (an FFT length).
-std::size_t smooth_length_at_most(std::size_t n);
-
 /// Autocovariance at output lags 0, 1, ... of the smoother's output for unit-variance white conversions:
 /// r_m = sum_x h_x h_{x + m D}, with the LS weights h of fw::LsWindow (order 0: 1/N; order 1 evaluated at the
 /// newest conversion: (6x - 2(N - 2)) / (N (N + 1)), x = 0 oldest) and D conversions per row (per output, times

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <complex>
 
+#include "host/util/fft_length.hpp"
 #include "host/util/thread_fft.hpp"
 
 namespace driftlab::host::stats {
@@ -12,9 +13,10 @@ std::vector<double> biased_autocovariance(const std::vector<double>& w, std::siz
     const std::size_t n = w.size();
     if (n == 0) return {};
     max_lag = std::min(max_lag, n - 1);
-    // Zero-pad to at least 2N so the circular correlation equals the linear one.
-    std::size_t size = 1;
-    while (size < 2 * n) size <<= 1;
+    // Zero-padded to N + max_lag, the circular correlation equals the linear one up to max_lag; a 2-3-5 length is
+    // close above it (a power of two >= 2N was up to four times as long), and an even one keeps the real
+    // transform at half length.
+    const std::size_t size = 2 * smooth_length_at_least((n + max_lag + 1) / 2);
     std::vector<double> padded(size, 0.0);
     std::copy(w.begin(), w.end(), padded.begin());
     Eigen::FFT<double>& fft = thread_fft();
