@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@
 #include "host/log/numeric_table.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/log/log_window.hpp"
+#include "host/util/channel_name.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
@@ -87,10 +89,9 @@ TimeWindow parse_exclude(const std::string& text) {
 std::array<bool, kChannelCount> channels_named(const GapCommandOptions& o) {
     std::array<bool, kChannelCount> out{};
     for (const std::string& name : o.channels) {
-        bool found = false;
-        for (std::size_t c = 0; c < kChannelCount; ++c)
-            if (name == kChannelNames[c]) out[c] = found = true;
-        if (!found) throw UsageError("--channel: unknown channel '" + name + "' (gyro, accel_x, accel_y, accel_z)");
+        const std::optional<Channel> c = channel_named(name);
+        if (!c) throw UsageError("--channel: unknown channel '" + name + "' (" + channel_name_list() + ")");
+        out[channel_index(*c)] = true;
     }
     return out;
 }

@@ -6,6 +6,7 @@
 
 #include "host/io/capture.hpp"
 #include "host/log/log_reader.hpp"
+#include "host/util/channel_name.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/input_file.hpp"
@@ -24,11 +25,8 @@ double units_per_second(const std::string& name) {
 }  // namespace
 
 std::vector<Series> series_from_log(const LogData& log, const std::vector<std::string>& names) {
-    for (const auto& name : names) {
-        const bool known = std::any_of(std::begin(kChannelNames), std::end(kChannelNames),
-                                       [&](const char* c) { return name == c; });
-        if (!known) throw UsageError("unknown channel '" + name + "' (channels: gyro, accel_x, accel_y, accel_z)");
-    }
+    for (const auto& name : names)
+        if (!channel_named(name)) throw UsageError("unknown channel '" + name + "' (channels: " + channel_name_list() + ")");
     std::vector<Series> out;
     for (std::uint8_t c = 0; c < kChannelCount; ++c) {
         const std::string name = kChannelNames[c];

@@ -16,6 +16,7 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
 #include "host/gap/whittle.hpp"
+#include "host/util/channel_name.hpp"
 #include "host/util/parallel_for.hpp"
 
 namespace driftlab::host::gap {
@@ -599,8 +600,7 @@ struct Search {
         for (const auto& [k, params] : o.refits)
             for (std::size_t p = 0; p < params.size(); ++p) path.result.accepted[k].params[p].second = params[p];
         path.result.accepted.push_back(o.ex);
-        for (std::size_t i = 0; i < kChannelCount; ++i)
-            if (kChannelNames[i] == o.ex.channel) path.used[i].push_back(o.ex.effect);
+        if (const std::optional<Channel> c = channel_named(o.ex.channel)) path.used[channel_index(*c)].push_back(o.ex.effect);
         return path;
     }
 
@@ -674,8 +674,7 @@ struct Search {
         ExplainResult process_first = run(with(path, best->best), step + 1);
         if (!best->shape) return process_first;
         ExplainResult shape_first = run(with(path, *best->shape), step + 1);
-        std::size_t i = 0;
-        while (kChannelNames[i] != best->best.ex.channel) ++i;
+        const std::size_t i = channel_index(channel_named(best->best.ex.channel).value());
         PathChoice choice{step, best->best.ex.channel, best->best.ex.effect, best->shape->ex.effect,
                           criterion(process_first, i), criterion(shape_first, i), false};
         choice.shape_kept = choice.criterion_shape + options.shape_path_margin < choice.criterion_process;
@@ -758,8 +757,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
     if (options.given) {
         start.result.accepted = options.given->refitted;
         for (const Explanation& e : options.given->refitted)
-            for (std::size_t i = 0; i < kChannelCount; ++i)
-                if (e.channel == kChannelNames[i]) start.used[i].push_back(e.effect);
+            if (const std::optional<Channel> c = channel_named(e.channel)) start.used[channel_index(*c)].push_back(e.effect);
         // A kept spikes or adc_dnl is not tried again on any channel: both would draw the same numbers (spikes) or
         // hold one converter's table twice. (What a refitted effect keeps gives the channels not analysed only.)
         for (const std::string& name : options.given->kept) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -17,6 +18,7 @@
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/spectral.hpp"
 #include "host/report/gnuplot.hpp"
+#include "host/util/channel_name.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
@@ -119,9 +121,9 @@ DisplayUnit display_unit(const GapModel& model, Channel c) {
     return c == Channel::gyro ? DisplayUnit{per_count, "deg/s"} : DisplayUnit{per_count * 1000.0, "mg"};
 }
 
-Channel channel_named(const std::string& name) {
-    for (std::size_t c = 0; c < kChannelCount; ++c)
-        if (name == kChannelNames[c]) return static_cast<Channel>(c);
+// An accepted effect's channel: explain() names it from kChannelNames, so another name is a bug.
+Channel explained_channel(const std::string& name) {
+    if (const std::optional<Channel> c = channel_named(name)) return *c;
     throw std::invalid_argument("no channel '" + name + "'");
 }
 
@@ -170,9 +172,9 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
     for (const auto& e : r.accepted)
         if (e.shape_steps.steps_win)
             return "a hop and a return on " + e.channel + " (" +
-                   step_size_text(r.base, channel_named(e.channel), e.shape_steps.steps[0].size_counts, 2) + " at t = " +
+                   step_size_text(r.base, explained_channel(e.channel), e.shape_steps.steps[0].size_counts, 2) + " at t = " +
                    fixed_point(e.shape_steps.steps[0].t_s, 1) + " s, " +
-                   step_size_text(r.base, channel_named(e.channel), e.shape_steps.steps[1].size_counts, 2) + " at " +
+                   step_size_text(r.base, explained_channel(e.channel), e.shape_steps.steps[1].size_counts, 2) + " at " +
                    fixed_point(e.shape_steps.steps[1].t_s, 1) + " s) describe its mean better than " + e.effect +
                    " (likelihood " + fixed_point(e.shape_steps.statistic, 1) + " over the price " + fixed_point(e.shape_steps.margin, 1) +
                    "): a level step no library effect makes; the added effects stay as partial explanations";

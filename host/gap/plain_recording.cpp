@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "host/fit/series.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
+#include "host/util/channel_name.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 
@@ -33,10 +35,9 @@ ColumnMapping parse_column_mapping(const std::string& text) {
         throw UsageError("--as: expected CHANNEL=COLUMN:LSB[:UNIT] (e.g. gyro=col1:0.00875), got '" + text + "'");
     ColumnMapping m;
     const std::string channel = text.substr(0, eq);
-    bool found = false;
-    for (std::size_t c = 0; c < kChannelCount; ++c)
-        if (channel == kChannelNames[c]) m.channel = static_cast<Channel>(c), found = true;
-    if (!found) throw UsageError("--as: unknown channel '" + channel + "' (gyro, accel_x, accel_y, accel_z)");
+    const std::optional<Channel> named = channel_named(channel);
+    if (!named) throw UsageError("--as: unknown channel '" + channel + "' (" + channel_name_list() + ")");
+    m.channel = *named;
     // The last field is a unit when it does not start like a number (a column name may hold neither ':' nor one).
     const std::string last = text.substr(colon + 1);
     if (!last.empty() && std::isalpha(static_cast<unsigned char>(last.front()))) {

@@ -98,6 +98,14 @@ RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std
     return wait_child(spawn_driftlab(args, err, stdout_file), err);
 }
 
+PlainHilRun plain_hil_with_model(const TempDir& dir, const std::string& name, const std::string& toml) {
+    PlainHilRun r;
+    r.model = dir.file(name);
+    std::ofstream(r.model) << toml;
+    r.hil = run_driftlab({"hil", "--model", r.model, "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
+    return r;
+}
+
 std::string read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::stringstream s;

@@ -65,6 +65,16 @@ RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std
 
 using test_support::TempDir;
 
+/// A model file and what plain `driftlab hil` (no --pty) made of it.
+struct PlainHilRun {
+    std::string model;  ///< the model file's path
+    RunResult hil;      ///< `hil --model MODEL --duration 1 -o DIR/h.csv`: exit 5 when the file's configuration is refused
+};
+
+/// Writes `toml` as the model file `name` in `dir` and runs plain `hil` on it, for a test whose model plain hil
+/// refuses (a [firmware] or [link] the firmware or the simulated link cannot meet) to check that refusal first.
+PlainHilRun plain_hil_with_model(const TempDir& dir, const std::string& name, const std::string& toml);
+
 std::string read_text(const std::string& path);
 std::vector<std::string> lines_of(const std::string& text);
 

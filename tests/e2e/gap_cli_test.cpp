@@ -203,6 +203,11 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
                                               dir.path());
     EXPECT_EQ(unrecorded.exit_code, 2) << unrecorded.output;
     EXPECT_NE(unrecorded.output.find("--channel accel_x: " + table + " does not record it"), std::string::npos) << unrecorded.output;
+    const RunResult unknown = run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--channel", "accel"},
+                                           dir.path());
+    EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+    EXPECT_NE(unknown.output.find("--channel: unknown channel 'accel' (gyro, accel_x, accel_y, accel_z)"), std::string::npos)
+        << unknown.output;
 
     const RunResult unmapped = run_driftlab({"gap", table}, dir.path());
     EXPECT_EQ(unmapped.exit_code, 2);

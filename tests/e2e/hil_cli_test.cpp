@@ -88,17 +88,19 @@ TEST(HilCli, TooManyConversionsForThePeriodIsRefusedByField) {
     EXPECT_NE(r.output.find("conversions_per_output"), std::string::npos) << r.output;
 }
 
+// 10 ms outputs with the paper's 25 conversions per output, on a link fast enough for them: the firmware refuses
+// this [firmware] (at most 12 conversions fit in 10 ms).
+constexpr const char* kTenMsOutputsModel = "[firmware]\noutput_period_ms = 10\n\n[link]\nbaud = 115200.0\n";
+
 // A model file's firmware CONFIG is checked with the command line's options over it: 10 ms outputs with the paper's
 // 25 conversions are refused by the firmware, with --conversions 12 they run; --conversions 30 is refused again, and
 // the message says the options took part.
 TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
     TempDir dir("hilmodelopts");
-    const std::string model = dir.file("ten_ms.toml");
-    std::ofstream(model) << "[firmware]\noutput_period_ms = 10\n\n[link]\nbaud = 115200.0\n";
-    const std::string out = dir.file("h.csv");
-    const RunResult alone = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", out}, dir.path());
+    const auto [model, alone] = plain_hil_with_model(dir, "ten_ms.toml", kTenMsOutputsModel);
     EXPECT_EQ(alone.exit_code, 5) << alone.output;
     EXPECT_NE(alone.output.find("ten_ms.toml"), std::string::npos) << alone.output;
+    const std::string out = dir.file("h.csv");
     const RunResult fits =
         run_driftlab({"hil", "--model", model, "--conversions", "12", "--duration", "1", "-o", out}, dir.path());
     EXPECT_EQ(fits.exit_code, 0) << fits.output;
@@ -117,10 +119,7 @@ TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
 // with a note, and --duration bounds the serving, whatever the model's output period (the paper's 1 s).
 TEST(HilCli, PtyServesWhateverTheModelsFirmwareSectionAndOutputPeriodSay) {
     TempDir dir("hilptyfw");
-    const std::string model = dir.file("ten_ms.toml");
-    std::ofstream(model) << "[firmware]\noutput_period_ms = 10\n\n[link]\nbaud = 115200.0\n";
-    const RunResult simulated = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", dir.file("h.csv")},
-                                             dir.path());
+    const auto [model, simulated] = plain_hil_with_model(dir, "ten_ms.toml", kTenMsOutputsModel);
     ASSERT_EQ(simulated.exit_code, 5) << simulated.output;  // the check still holds where the file configures the board
     const RunResult served = run_driftlab({"hil", "--pty", "--model", model, "--speed", "10", "--duration", "1"},
                                           dir.path());
@@ -153,9 +152,8 @@ TEST(HilCli, JitterThatWouldReorderConversionsIsAConfigurationErrorNamingTheFile
 // configuration (exit 5, naming it; it had been a usage error naming nothing), from --period the command line's.
 TEST(HilCli, AnOutputRateTheLinkCannotCarryIsBlamedOnWhereThePeriodCameFrom) {
     TempDir dir("hillink");
-    const std::string model = dir.file("fast.toml");
-    std::ofstream(model) << "[firmware]\noutput_period_ms = 20\nconversions_per_output = 5\n";
-    const RunResult file = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
+    const RunResult file =
+        plain_hil_with_model(dir, "fast.toml", "[firmware]\noutput_period_ms = 20\nconversions_per_output = 5\n").hil;
     EXPECT_EQ(file.exit_code, 5) << file.output;
     EXPECT_NE(file.output.find("fast.toml: link.baud: the link (link.baud 9600"), std::string::npos) << file.output;
     const std::string slow = dir.file("slow.toml");

@@ -382,10 +382,8 @@ TEST(RecordPty, HilPtyLinkPrintsTheLinkAndTheTerminalItPointsTo) {
 // (20 ms outputs need 1650 bytes/s, 9600 baud carry 960; refused without --pty) is served, and recorded at that rate.
 TEST(RecordPty, HilPtyServesAModelWhoseSimulatedLinkCouldNotCarryItsOutputs) {
     TempDir dir("hilptybaud");
-    const std::string model = dir.file("fast.toml");
-    std::ofstream(model) << "[firmware]\noutput_period_ms = 20\nconversions_per_output = 5\n\n[link]\nbaud = 9600.0\n";
-    const RunResult simulated = run_driftlab({"hil", "--model", model, "--duration", "1", "-o", dir.file("h.csv")},
-                                             dir.path());
+    const auto [model, simulated] = plain_hil_with_model(
+        dir, "fast.toml", "[firmware]\noutput_period_ms = 20\nconversions_per_output = 5\n\n[link]\nbaud = 9600.0\n");
     ASSERT_EQ(simulated.exit_code, 5) << simulated.output;  // the check still holds where the link is simulated
     const auto [hil, path] = serve_hil_pty({"--model", model, "--speed", "4", "--duration", "60"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));

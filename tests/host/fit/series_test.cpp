@@ -29,6 +29,15 @@ TEST(Series, NamingTheTimeColumnIsRefused) {
     }
 }
 
+TEST(Series, AnUnknownChannelOfALogIsRefusedListingTheChannels) {
+    try {
+        series_from_log(LogData{}, {"gyro", "accel_w"});
+        ADD_FAILURE() << "accel_w was taken as a channel";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()), "unknown channel 'accel_w' (channels: gyro, accel_x, accel_y, accel_z)");
+    }
+}
+
 // Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number"): every analysis
 // command now names `decode`, whose input it is.
 TEST(Series, ARawCaptureIsRefusedNamingDecode) {

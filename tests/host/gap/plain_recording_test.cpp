@@ -129,6 +129,12 @@ TEST(PlainRecording, BadMappingsAndTablesAreRefusedSayingWhy) {
     EXPECT_EQ(parse_column_mapping("accel_y=a y:2e-3").column, "a y");
     for (const char* bad : {"gyro", "gyro=col1", "yaw=col1:1", "gyro=:1", "gyro=col1:0", "gyro=col1:-1", "gyro=col1:x"})
         EXPECT_THROW(parse_column_mapping(bad), UsageError) << bad;
+    try {
+        parse_column_mapping("Gyro=col1:1");
+        ADD_FAILURE() << "a channel name in the wrong case was accepted";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()), "--as: unknown channel 'Gyro' (gyro, accel_x, accel_y, accel_z)");
+    }
     const NumericTable t = table({"col1"}, {{0.0, 1.0, 2.0, 2000.0}});
     PlainRecording how;
     how.columns = {parse_column_mapping("gyro=col1:1")};
