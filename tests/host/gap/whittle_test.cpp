@@ -247,11 +247,5 @@ TEST(Whittle, TooFewDifferencesInThePartAreRefused) {
     EXPECT_THROW(part_periodogram(e, part), std::invalid_argument);
 }
 
-TEST(Whittle, SmoothLengthsHaveOnlyFactorsTwoThreeFive) {
-    EXPECT_EQ(smooth_length_at_most(1499), 1458u);  // 2 * 3^6
-    EXPECT_EQ(smooth_length_at_most(1500), 1500u);
-    EXPECT_EQ(smooth_length_at_most(7), 6u);
-}
-
 }  // namespace
 }  // namespace driftlab::host::gap
