@@ -55,9 +55,10 @@ std::string short_number(double v) { return significant(v, 3); }
 
 std::string seconds_label(double s) { return short_number(s) + "s"; }
 
-// A cell's seconds for people (Cell::text): a window's ends to the digits its length warrants (t=1201s..1350s), a lag
-// or a tau, a whole multiple of the sample period, as it is.
-std::string window_seconds_text(double s, double length_s) { return to_precision_of(s, length_s) + "s"; }
+// A cell's seconds for people (Cell::text): a window's ends to the digits its length warrants, and at least to the
+// second (t=1201s..1350s: a label, where t=1200s..1350s would name other samples); a lag or a tau, a whole multiple of
+// the sample period, as it is.
+std::string window_seconds_text(double s, double length_s) { return to_precision_of(s, std::min(length_s, 10.0)) + "s"; }
 std::string multiple_seconds_text(double s) { return significant(s, 6) + "s"; }
 
 double log_floor(double v) { return std::log(std::max(v, 1e-300)); }

@@ -22,9 +22,14 @@ std::string without_negative_zero(const char* text) {
 }
 
 // `value` fixed-point with its last digit at 10^last, where that reads plainly: a last digit from 1e-12 up and a
-// magnitude below 1e9 (a wider value is clearer with an exponent).
+// magnitude below 1e9 (a wider value is clearer with an exponent). A last digit left of the point rounds there too:
+// %.0f alone wrote every digit, "3 ± 120" for 0 ± 120.
 std::optional<std::string> plain_to_digit(double value, int last) {
     if (last < -12 || !(std::fabs(value) < 1e9)) return std::nullopt;
+    if (last > 0) {
+        const double unit = std::pow(10.0, last);
+        value = std::round(value / unit) * unit;
+    }
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -last), value);
     return without_negative_zero(buf);

@@ -112,7 +112,7 @@ TEST(GapReport, ANoneVerdictSaysWhenEq1IsSlowEnoughToAbsorbASlowEffect) {
 TEST(GapReport, ALocatedCellShowsTheDigitsItsIntervalWarrants) {
     LocatedCell wide;
     wide.ratio = 173.285, wide.interval_low = 27.075, wide.interval_high = 1109.073;
-    EXPECT_EQ(located_value_text(wide), "ratio 173 [27, 1109]");
+    EXPECT_EQ(located_value_text(wide), "ratio 170 [30, 1110]");  // the half-width 541: a last digit at 10
     LocatedCell narrow;
     narrow.ratio = std::nan(""), narrow.difference = 0.3063, narrow.interval_low = 0.2957, narrow.interval_high = 0.3169;
     EXPECT_EQ(located_value_text(narrow), "diff 0.306 [0.296, 0.317]");

@@ -33,7 +33,8 @@ TEST(ToPrecisionOf, TheLastDigitIsTheUncertaintysSecond) {
     EXPECT_EQ(to_precision_of(0.0000482, 0.0000482), "0.000048");
     EXPECT_EQ(to_precision_of(505.083426, 0.0537), "505.083");
     EXPECT_EQ(to_precision_of(397.7146, 1.43), "397.7");
-    EXPECT_EQ(to_precision_of(1052485.26, 23553.79), "1052485");
+    EXPECT_EQ(to_precision_of(1052485.26, 23553.79), "1052000");  // a last digit left of the point rounds there
+    EXPECT_EQ(to_precision_of(23553.79, 23553.79), "24000");
     EXPECT_EQ(to_precision_of(-30.0514, 0.099), "-30.051");  // 0.099: its second digit is at 1e-3
 }
 
@@ -59,6 +60,8 @@ TEST(ValueWithError, TheValueStopsAtTheErrorsSecondDigit) {
     EXPECT_EQ(value_with_error(-0.00021813, 0.0000482, "+-"), "-0.000218 +- 0.000048");
     // An error larger than the value: the value keeps no digit below the error's second.
     EXPECT_EQ(value_with_error(0.3, 12.0, "+-"), "0 +- 12");
+    EXPECT_EQ(value_with_error(3.0, 120.0, "+-"), "0 +- 120");
+    EXPECT_EQ(value_with_error(-1264.7, 123.4, "+-"), "-1260 +- 120");
     EXPECT_EQ(value_with_error(-0.004, 0.35, "+-"), "0.00 +- 0.35");  // rounds to zero: no "-0.00"
 }
 
