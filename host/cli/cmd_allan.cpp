@@ -189,14 +189,15 @@ void run(const AllanCommandOptions& o) {
     req.remove_drift = !o.keep_drift;
     const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit");
 
-    const bool log = fit::is_canonical_log(o.path);
+    fit::OpenedSource source = fit::open_source(o.path);
+    const bool log = source.canonical_log;
     std::vector<std::string> names = o.channels;
     if (names.size() == 1 && names[0] == "all") names.clear();
     std::vector<fit::Series> series;
     if (log) {
         if (!o.kind.empty() && o.kind != "rate") throw UsageError("--kind: a canonical log holds rate samples (counts)");
         if (!o.units.empty()) throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
-        series = fit::load_series(o.path, names);
+        series = fit::load_series(std::move(source), o.path, names);
     } else {
         if (o.kind.empty() || o.tau0_s <= 0.0) {
             throw UsageError("a plain numeric file needs --kind rate|phase and --tau0 SECONDS (the input kind is "
@@ -211,7 +212,7 @@ void run(const AllanCommandOptions& o) {
         req.kept_drift_status = req.kind == stats::InputKind::rate
                                     ? "not removed: a plain file is analysed as given; --remove-drift fits eq. 1 first"
                                     : "not removed: a plain file is analysed as given";
-        series = fit::load_series(o.path, names, "", o.tau0_s);
+        series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
     std::vector<std::string> columns;
     for (const fit::Series& s : series) columns.push_back(s.name);

@@ -117,10 +117,10 @@ LogData in_window(const GapCommandOptions& o, LogData log) {
 
 // A canonical log the simulator can stand beside: its converter, and the smoothing the replicates must repeat (a
 // window of 1 assumed for a missing one makes every averaged log look broken).
-LogData read_canonical(const std::string& path, const sim::SimModel& unit) {
+LogData read_canonical(std::istream& in, const std::string& path, const sim::SimModel& unit) {
     ReadOptions options;
     options.assumed_adc_bits = unit.adc.bits;
-    LogData log = read_log(path, options);
+    LogData log = parse_log(in, path, options);
     if (const auto bits = log.metadata.get_int("adc_bits"); bits && *bits != unit.adc.bits)
         throw DataError(path, log.metadata.line_of("adc_bits"),
                         "adc_bits is " + std::to_string(*bits) + ", but the simulator's converter has " +
@@ -139,10 +139,11 @@ LogData read_canonical(const std::string& path, const sim::SimModel& unit) {
 // (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to and --exclude.
 Loaded load(const GapCommandOptions& o) {
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
-    if (fit::is_canonical_log(o.path)) {
+    fit::OpenedSource source = fit::open_source(o.path);
+    if (source.canonical_log) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        return {in_window(o, read_canonical(o.path, unit)), unit};
+        return {in_window(o, read_canonical(source.in, o.path, unit)), unit};
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -151,7 +152,7 @@ Loaded load(const GapCommandOptions& o) {
     for (const auto& m : o.mappings) how.columns.push_back(gap::parse_column_mapping(m));
     how.sample_period_s = o.tau0_s;
     how.block = o.block;
-    LogData log = gap::log_from_table(read_numeric_table(o.path), how);
+    LogData log = gap::log_from_table(parse_numeric_table(source.in, o.path), how);
     sim::SimModel scaled = gap::unit_of_recording(unit, how, log);
     return {in_window(o, std::move(log)), std::move(scaled)};
 }

@@ -118,11 +118,15 @@ OpenedSource open_source(const std::string& path) {
 
 bool is_canonical_log(const std::string& path) { return open_source(path).canonical_log; }
 
-std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names,
+std::vector<Series> load_series(OpenedSource source, const std::string& path, const std::vector<std::string>& names,
                                 const std::string& time_column, double sample_period_s) {
-    OpenedSource source = open_source(path);
     if (source.canonical_log) return series_from_log(parse_log(source.in, path), names);
     return series_from_table(parse_numeric_table(source.in, path), names, time_column, sample_period_s);
+}
+
+std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names,
+                                const std::string& time_column, double sample_period_s) {
+    return load_series(open_source(path), path, names, time_column, sample_period_s);
 }
 
 }  // namespace driftlab::host::fit

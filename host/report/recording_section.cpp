@@ -99,7 +99,10 @@ Rows recording_rows(const fit::LogOverview& log) {
         if (!text.empty()) rows.emplace_back(label, text);
     };
     if (const auto source = m.get("source")) add("source", source_text(*source));
-    add("board", parts_text(m, {{"board_id", "id ", ""}, {"port", "port ", ""}, {"baud", "", " baud"}}));
+    // Under hil the emulated firmware reports the board variant it was built for; no board took part.
+    const bool emulated = m.get("source") == std::optional<std::string>("hil");
+    add(emulated ? "board (emulated)" : "board",
+        parts_text(m, {{"board_id", emulated ? "firmware built for id " : "id ", ""}, {"port", "port ", ""}, {"baud", "", " baud"}}));
     add("simulation", parts_text(m, {{"target", "target ", ""}, {"model_name", "model ", ""}, {"model", "model file ", ""},
                                      {"preset", "preset ", ""}, {"seed", "seed ", ""}, {"effects", "effects ", ""}}));
     add("firmware", parts_text(m, {{"firmware_version", "version ", ""}, {"protocol_version", "protocol ", ""}}));

@@ -70,6 +70,18 @@ TEST(RecordingSection, ARecordedLogShowsItsBoardFirmwareRateAndSmoothing) {
     EXPECT_EQ(recording_rows(*file.log), expected);
 }
 
+// Under hil no board takes part: the id is the one the emulated firmware was built for, and the row says so.
+TEST(RecordingSection, AHilLogsBoardRowSaysTheBoardIsEmulated) {
+    fit::LogOverview log;
+    log.metadata.set("source", std::string("hil"));
+    log.metadata.set("board_id", static_cast<std::int64_t>(1));
+    log.rows = 2;
+    log.last_t_s = 1.0;
+    const Rows rows = recording_rows(log);
+    ASSERT_GE(rows.size(), 2u);
+    EXPECT_EQ(rows[1], (std::pair<std::string, std::string>("board (emulated)", "firmware built for id 1")));
+}
+
 // A log with only its magic line: the rows its data give and nothing padded; the rate is measured, and says so.
 TEST(RecordingSection, ASparseHeaderGivesOnlyTheRowsTheDataGive) {
     const TempDir dir("recording_sparse");
