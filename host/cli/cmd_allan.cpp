@@ -187,8 +187,6 @@ void run(const AllanCommandOptions& o) {
     }
     req.grid.points_per_decade = o.per_decade;
     req.remove_drift = !o.keep_drift;
-    const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit");
-
     fit::OpenedSource source = fit::open_source(o.path);
     const bool log = source.canonical_log;
     std::vector<std::string> names = o.channels;
@@ -214,6 +212,8 @@ void run(const AllanCommandOptions& o) {
                                     : "not removed: a plain file is analysed as given";
         series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
+    // Phase samples are in their integral's unit (deg for deg/s); the assignment holds the deviations' (the rate's).
+    const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit", req.kind);
     std::vector<std::string> columns;
     for (const fit::Series& s : series) columns.push_back(s.name);
     stats::refuse_unknown_columns(units, columns, o.path);
@@ -280,7 +280,7 @@ void register_allan(CLI::App& app) {
                     "Sample period [s]; required for plain files, logs default to the rows' median spacing (their "
                     "mean for rows in bursts, as report)")
         ->check(positive_number());
-    add_unit_option(cmd, o->units);
+    add_unit_option(cmd, o->units, true);
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
     // A whole number: the grid is 10^(k / per_decade), which puts every power of ten on it. 1000 is more than the
     // distinct m of the first three decades; --grid all is every m. CLI11 had refused 2.5 as a failed conversion.

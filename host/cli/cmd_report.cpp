@@ -69,12 +69,14 @@ void run(const ReportCommandOptions& opts) {
 
 }  // namespace
 
-void add_unit_option(CLI::App* cmd, std::vector<std::string>& units) {
+void add_unit_option(CLI::App* cmd, std::vector<std::string>& units, bool takes_phase) {
     cmd->add_option("--unit", units,
                     "Plain tables: [COLUMN:]UNIT, the unit of a column's samples (of every other column without "
                     "COLUMN:), for noise terms in navigation units: " +
                         stats::rate_unit_names(stats::RateQuantity::angular_rate) + ", " +
-                        stats::rate_unit_names(stats::RateQuantity::acceleration) + "; repeat for several columns")
+                        stats::rate_unit_names(stats::RateQuantity::acceleration) +
+                        (takes_phase ? "; with --kind phase, the integral's (" + stats::phase_unit_names() + ")" : "") +
+                        "; repeat for several columns")
         ->allow_extra_args(false);  // one value an occurrence: `--unit mg LOG` had taken the log for a unit
 }
 

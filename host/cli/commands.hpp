@@ -45,8 +45,8 @@ void register_gap_eval(CLI::App& app);
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
 
 /// `--unit [COLUMN:]UNIT`, repeatable, for a plain table's columns: report and allan take it alike (cmd_report.cpp;
-/// parse with stats::parse_unit_assignment).
-void add_unit_option(CLI::App* cmd, std::vector<std::string>& units);
+/// parse with stats::parse_unit_assignment); `takes_phase`: allan, whose phase samples name their integral's unit.
+void add_unit_option(CLI::App* cmd, std::vector<std::string>& units, bool takes_phase = false);
 
 /// A series' analysis warnings, one "  warning: ..." line each, as fit and whiteness print them (cmd_fit.cpp).
 void print_analysis_warnings(const fit::DriftAnalysis& analysis);

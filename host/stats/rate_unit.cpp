@@ -36,7 +36,42 @@ constexpr std::array<Entry, 13> kUnits{{
     {"mm/s2", "mm/s^2", RateQuantity::acceleration, 1e-3},
 }};
 
+// Phase samples by their unit, with the unit of their rate (a spelling of kUnits, or a clock's fractional frequency).
+struct PhaseEntry {
+    std::string_view spelling;
+    std::string_view rate;
+    std::string_view quantity;  ///< for a message
+};
+
+constexpr std::array<PhaseEntry, 11> kPhaseUnits{{
+    {"deg", "deg/s", "angle"}, {"mdeg", "mdps", "angle"}, {"rad", "rad/s", "angle"},
+    {"m/s", "m/s^2", "velocity"}, {"cm/s", "cm/s^2", "velocity"}, {"mm/s", "mm/s^2", "velocity"},
+    {"s", "s/s", "time"}, {"ms", "ms/s", "time"}, {"us", "us/s", "time"}, {"ns", "ns/s", "time"}, {"ps", "ps/s", "time"},
+}};
+
 }  // namespace
+
+std::string phase_unit_names() {
+    std::string names;
+    std::string_view quantity;
+    for (const PhaseEntry& e : kPhaseUnits) {
+        if (e.quantity != quantity) names += (names.empty() ? "" : "; ") + std::string(e.quantity) + ": ";
+        else names += ", ";
+        names += e.spelling;
+        quantity = e.quantity;
+    }
+    return names;
+}
+
+
+std::optional<RateUnit> rate_unit_of_phase(std::string_view name) {
+    for (const PhaseEntry& e : kPhaseUnits) {
+        if (e.spelling != name) continue;
+        if (const auto rate = rate_unit(e.rate)) return rate;
+        return RateUnit{std::string(e.rate), RateQuantity::unknown, 1.0};  // a clock's: no navigation terms
+    }
+    return std::nullopt;
+}
 
 std::optional<RateUnit> rate_unit(std::string_view name) {
     for (const Entry& e : kUnits)
@@ -60,7 +95,7 @@ std::optional<RateUnit> UnitAssignment::for_column(const std::string& column) co
     return every;
 }
 
-UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option) {
+UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option, InputKind kind) {
     UnitAssignment out;
     for (const std::string& value : values) {
         const std::string named = option + " '" + value + "'";
@@ -70,7 +105,13 @@ UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, con
         const std::string name = colon == std::string::npos ? value : value.substr(colon + 1);
         if (colon != std::string::npos && column.empty())
             throw UsageError(named + ": no column before ':' (COLUMN:UNIT, or UNIT alone for every column)");
-        const auto unit = rate_unit(name);
+        const bool phase = kind == InputKind::phase;
+        const auto unit = phase ? rate_unit_of_phase(name) : rate_unit(name);
+        if (!unit && phase)
+            // A rate's unit had been the only kind --unit knew; for phase samples it is their integral's.
+            throw UsageError(named + ": " + (name.empty() ? "no unit" : "unknown unit '" + name + "'") + " for phase samples" +
+                             (rate_unit(name) ? " ('" + name + "' is a rate's: give its integral's, e.g. deg for deg/s)" : "") +
+                             "; " + phase_unit_names());
         if (!unit)
             throw UsageError(named + ": " + (name.empty() ? "no unit" : "unknown unit '" + name + "'") +
                              "; angular rate: " + rate_unit_names(RateQuantity::angular_rate) +

@@ -9,6 +9,7 @@
 
 #include "driftlab/channels.hpp"
 #include "host/stats/noise_terms.hpp"
+#include "host/stats/phase_record.hpp"
 
 namespace driftlab::host::stats {
 
@@ -24,6 +25,14 @@ std::optional<RateUnit> rate_unit(std::string_view name);
 
 /// The spellings rate_unit() knows for `quantity`, comma-separated, for a message.
 std::string rate_unit_names(RateQuantity quantity);
+
+/// The unit of the rate whose phase (integral) samples are in `name`, which their deviations are in: an angle (deg,
+/// mdeg, rad) gives an angular rate, a velocity (m/s, cm/s, mm/s) an acceleration, a time (s, ms, us, ns, ps) a
+/// clock's fractional frequency labelled by its scale (ns/s: 1e-9), with no navigation quantity; none when unknown.
+std::optional<RateUnit> rate_unit_of_phase(std::string_view name);
+
+/// The spellings rate_unit_of_phase() knows, by quantity, for a message ("angle: deg, mdeg, rad; velocity: ...").
+std::string phase_unit_names();
 
 /// What a series' samples are, for its noise terms in physical units (physical_terms, kalibr_densities).
 struct SampleUnit {
@@ -52,10 +61,12 @@ struct UnitAssignment {
     std::optional<RateUnit> for_column(const std::string& column) const;
 };
 
-/// Parses the values of `option` (e.g. "--unit"), each `UNIT` or `COLUMN:UNIT` with UNIT one rate_unit() knows.
-/// Throws UsageError naming the value for an unknown unit (listing the known ones), an empty column or unit, and a
-/// column (or every column) given a unit twice.
-UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option);
+/// Parses the values of `option` (e.g. "--unit"), each `UNIT` or `COLUMN:UNIT` with UNIT the samples' unit: one
+/// rate_unit() knows for rate samples, one rate_unit_of_phase() knows for phase samples (whose assignment then holds
+/// the rate's unit). Throws UsageError naming the value for an unknown unit (listing the known ones, and for phase
+/// samples given a rate's unit, the phase's), an empty column or unit, and a column (or every column) given a unit twice.
+UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option,
+                                     InputKind kind = InputKind::rate);
 
 /// Throws UsageError for a `COLUMN:UNIT` whose column is not among `columns` (the series of `path` analysed),
 /// naming the value and those columns.

@@ -159,6 +159,61 @@ TEST(AllanCli, UnitsAreReportsColumnUnitsAndAMisspeltOneIsRefused) {
               std::string::npos);
 }
 
+// Phase samples name their integral's unit: an angle in deg is the integral of a rate in deg/s, so the same noise
+// given as its rate (deg/s) and as that rate summed times tau0 (deg) has the same deviations, terms and Kalibr
+// densities. A time (ns) gives a clock's fractional frequency, in ns/s, with no navigation terms. A rate's unit for
+// phase samples had been the only kind accepted, and `--unit deg` or `--unit ns` refused; now a rate's unit there is
+// refused, naming the integral's.
+TEST(AllanCli, PhaseSamplesNameTheirIntegralsUnit) {
+    TempDir dir("allanphase");
+    const std::string rate = dir.file("rate.txt"), phase = dir.file("phase.txt");
+    {
+        std::ofstream r(rate), p(phase);
+        r.precision(17), p.precision(17);
+        std::mt19937_64 rng(11);
+        std::normal_distribution<double> g(0.0, 0.05);
+        std::vector<double> y(4000);
+        double mean = 0.0;
+        for (double& v : y) mean += (v = 0.3 + g(rng)) / static_cast<double>(y.size());
+        // The pipeline's own phase of a rate: x_0 = 0, x_{k+1} = x_k + (y_k - mean) tau0 (docs/allan.md §2).
+        double x = 0.0;
+        p << x << '\n';
+        for (double v : y) {
+            r << v << '\n';
+            p << (x += (v - mean) * 0.01) << '\n';
+        }
+    }
+    const auto json_of = [&](const std::vector<std::string>& args) {
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        return nlohmann::json::parse(r.output)["channels"]["col1"];
+    };
+    const auto from_rate = json_of({"allan", rate, "--kind", "rate", "--tau0", "0.01", "--unit", "deg/s", "--json"});
+    const auto from_phase = json_of({"allan", phase, "--kind", "phase", "--tau0", "0.01", "--unit", "deg", "--json"});
+    EXPECT_EQ(from_phase["terms"]["unit"], "deg/s");
+    ASSERT_EQ(from_phase["adev"].size(), from_rate["adev"].size());
+    for (std::size_t i = 0; i < from_rate["adev"].size(); ++i)
+        EXPECT_NEAR(from_phase["adev"][i].get<double>() / from_rate["adev"][i].get<double>(), 1.0, 1e-9) << i;
+    const double n_rate = from_rate["kalibr"]["gyroscope_noise_density"].get<double>();
+    EXPECT_NEAR(from_phase["kalibr"]["gyroscope_noise_density"].get<double>() / n_rate, 1.0, 1e-9);
+    // White rate noise of 0.05 deg/s at 100 Hz: N = 0.05 x sqrt(0.01 s) deg/s/sqrt(Hz), in rad/s/sqrt(Hz).
+    EXPECT_NEAR(n_rate / (0.05 * 0.1 * std::numbers::pi / 180.0), 1.0, 0.1);
+
+    const auto clock = json_of({"allan", phase, "--kind", "phase", "--tau0", "0.01", "--unit", "ns", "--json"});
+    EXPECT_EQ(clock["terms"]["unit"], "ns/s");
+    EXPECT_TRUE(clock["kalibr"].is_null()) << clock["kalibr"];
+    EXPECT_TRUE(clock["terms"]["physical"].empty()) << clock["terms"]["physical"];
+    EXPECT_FALSE(from_phase["terms"]["physical"].empty());
+
+    const RunResult refused = run_driftlab({"allan", phase, "--kind", "phase", "--tau0", "0.01", "--unit", "deg/s"}, dir.path());
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("--unit 'deg/s': unknown unit 'deg/s' for phase samples ('deg/s' is a rate's: give its "
+                                  "integral's, e.g. deg for deg/s); angle: deg, mdeg, rad; velocity: m/s, cm/s, mm/s; "
+                                  "time: s, ms, us, ns, ps"),
+              std::string::npos)
+        << refused.output;
+}
+
 // A log whose rows come in bursts (5 rows 2 ms apart every 50 ms, 100 a second, as the MPU6050 recording) gets the
 // report's tau0 from `allan` too: the mean spacing, (1199 x 0.05 + 0.008) s / 5999 = 9.995 ms, and as the report's
 // Allan section computes it. At the median, 2 ms, `allan` had made a grid 80 % gaps with a curve ending at 16 ms.

@@ -59,6 +59,42 @@ TEST(RateUnit, AMessageListsTheSpellingsOfOneQuantity) {
     EXPECT_EQ(rate_unit_names(RateQuantity::unknown), "");
 }
 
+// Phase samples in an angle, a velocity or a time have their deviations in the rate's unit: deg -> deg/s (the
+// table's entry, so its SI value), m/s -> m/s^2, ns -> ns/s (a clock's fractional frequency: no navigation quantity).
+TEST(RateUnitOfPhase, EachPhaseUnitGivesItsRatesUnit) {
+    const auto deg = rate_unit_of_phase("deg");
+    ASSERT_TRUE(deg);
+    EXPECT_EQ(deg->name, "deg/s");
+    EXPECT_EQ(deg->quantity, RateQuantity::angular_rate);
+    EXPECT_EQ(deg->si_per_unit, rate_unit("deg/s")->si_per_unit);
+    EXPECT_EQ(rate_unit_of_phase("mdeg")->name, "mdps");
+    EXPECT_EQ(rate_unit_of_phase("rad")->name, "rad/s");
+    const auto velocity = rate_unit_of_phase("cm/s");
+    ASSERT_TRUE(velocity);
+    EXPECT_EQ(velocity->name, "cm/s^2");
+    EXPECT_EQ(velocity->quantity, RateQuantity::acceleration);
+    const auto ns = rate_unit_of_phase("ns");
+    ASSERT_TRUE(ns);
+    EXPECT_EQ(ns->name, "ns/s");
+    EXPECT_EQ(ns->quantity, RateQuantity::unknown);
+    for (const char* unknown : {"", "deg/s", "g", "sec", "DEG"}) EXPECT_FALSE(rate_unit_of_phase(unknown)) << unknown;
+    EXPECT_EQ(phase_unit_names(), "angle: deg, mdeg, rad; velocity: m/s, cm/s, mm/s; time: s, ms, us, ns, ps");
+}
+
+TEST(UnitAssignment, PhaseSamplesTakeTheirIntegralsUnitAndHoldTheRates) {
+    const UnitAssignment a = parse_unit_assignment({"gx:deg", "m/s"}, "--unit", InputKind::phase);
+    EXPECT_EQ(a.for_column("gx")->name, "deg/s");
+    EXPECT_EQ(a.for_column("ax")->name, "m/s^2");
+    try {
+        parse_unit_assignment({"gx:deg/s"}, "--unit", InputKind::phase);
+        ADD_FAILURE() << "a rate's unit was taken for phase samples";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("--unit 'gx:deg/s': unknown unit 'deg/s' for phase samples ('deg/s' is a "
+                                              "rate's: give its integral's, e.g. deg for deg/s); angle: deg", 0), 0u)
+            << e.what();
+    }
+}
+
 // report --unit: a column's own unit wins over the one for every column; a column without either has none.
 TEST(UnitAssignment, AColumnsOwnUnitWinsOverTheOneForEveryColumn) {
     const UnitAssignment a = parse_unit_assignment({"gyro:deg/s", "mg", "ax:m/s2"}, "--unit");
