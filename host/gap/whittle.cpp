@@ -156,8 +156,11 @@ std::vector<double> differenced_covariance_times(const OutputSpectrum& model, co
     const std::size_t n = v.size();
     std::vector<double> out(n, model.walk_increment_variance);
     for (std::size_t t = 0; t < n; ++t) out[t] *= v[t];
-    // The floor's differences are a short moving average: its few lags directly.
-    const std::vector<double> c_floor = differenced_autocovariance({model.white, {}, 0.0}, floor_acov, floor_acov.size() + 1);
+    // The floor's differences are a short moving average: its few lags directly (none for a unit AR(1) or walk
+    // component, whose floor is zero: ExpectedPeriodogram's).
+    const std::vector<double> c_floor =
+        model.white != 0.0 ? differenced_autocovariance({model.white, {}, 0.0}, floor_acov, floor_acov.size() + 1)
+                           : std::vector<double>{};
     for (std::size_t t = 0; t < n; ++t)
         for (std::size_t lag = 0; lag < c_floor.size(); ++lag) {
             if (lag == 0) {
