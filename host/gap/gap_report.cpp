@@ -22,6 +22,7 @@
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/units.hpp"
 
 namespace driftlab::host::gap {
 
@@ -111,14 +112,9 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
 // The unit plots and step sizes are shown in: the diagnosis's physical one (deg/s; g as mg, so an accelerometer's
 // noise does not read in thousandths), through the model's converter, so a plain table's are in its own unit. The
 // bands are drawn from counts and scaled after: a constant factor moves no line against another.
-struct DisplayUnit {
-    double per_count;
-    const char* name;
-};
-
-DisplayUnit display_unit(const GapModel& model, Channel c) {
+PhysicalUnit display_unit(const GapModel& model, Channel c) {
     const double per_count = 1.0 / counts_per_unit(model, c);
-    return c == Channel::gyro ? DisplayUnit{per_count, "deg/s"} : DisplayUnit{per_count * 1000.0, "mg"};
+    return c == Channel::gyro ? PhysicalUnit{per_count, "deg/s"} : PhysicalUnit{per_count * 1000.0, "mg"};
 }
 
 // An accepted effect's channel: explain() names it from kChannelNames, so another name is a bug.
@@ -155,7 +151,7 @@ std::string plot_bands(const std::string& title, const std::string& x_label, con
 }  // namespace
 
 std::string step_size_text(const GapModel& model, Channel c, double counts, int decimals) {
-    const DisplayUnit unit = display_unit(model, c);
+    const PhysicalUnit unit = display_unit(model, c);
     std::string out = fixed_point(counts, decimals) + " counts";
     if (std::isfinite(unit.per_count) && unit.per_count > 0.0)
         out += " (" + significant_plain(counts * unit.per_count, 3) + " " + unit.name + ")";
@@ -470,7 +466,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     std::string scales;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!r.channels[c]) continue;
-        const DisplayUnit unit = display_unit(r.base, static_cast<Channel>(c));
+        const PhysicalUnit unit = display_unit(r.base, static_cast<Channel>(c));
         scales += std::string(scales.empty() ? "" : ", ") + significant_plain(unit.per_count, 3) + " " + unit.name + " on " + kChannelNames[c];
     }
     if (!scales.empty()) md << "The plots are in physical units; one count is " << scales << ".\n\n";
@@ -497,7 +493,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         std::vector<double> tau(real.size());
         for (std::size_t j = 0; j < tau.size(); ++j) tau[j] = r.base.smoothing.sample_period_s * std::ldexp(1.0, static_cast<int>(j));
         const std::string channel = kChannelNames[c];
-        const DisplayUnit unit = display_unit(r.base, static_cast<Channel>(c));
+        const PhysicalUnit unit = display_unit(r.base, static_cast<Channel>(c));
         const auto band_in_unit = [&](const Band& b) { return scaled(b, unit.per_count); };
         const Band base_adev = band_in_unit(base.adev), base_mean = band_in_unit(base.mean);
         const Band after_adev = band_in_unit(after.adev), after_mean = band_in_unit(after.mean);
