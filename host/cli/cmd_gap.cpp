@@ -182,7 +182,7 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
         const auto& l = r.located[i];
         const auto& c = r.layout[l.index];
         std::printf("  %-5s %-16s %-28s %-7s z %7.1f  %s\n", c.statistic.c_str(), c.channel.c_str(), c.shown().c_str(),
-                    gap::segment_name(c.segment), l.z, gap::located_value_text(l).c_str());
+                    gap::segment_name(c.segment), l.z, gap::located_cell_text(r, l).c_str());
     }
     if (r.located.size() > kCellsShown)
         std::printf("  ... and %zu more with smaller |z| (--json and --report list them)\n", r.located.size() - kCellsShown);

@@ -117,7 +117,7 @@ PhysicalUnit display_unit(const GapModel& model, Channel c) {
     return c == Channel::gyro ? PhysicalUnit{per_count, "deg/s"} : PhysicalUnit{per_count * 1000.0, "mg"};
 }
 
-// An accepted effect's channel: explain() names it from kChannelNames, so another name is a bug.
+// An accepted effect's or a mean cell's channel: both are named from kChannelNames, so another name is a bug.
 Channel explained_channel(const std::string& name) {
     if (const std::optional<Channel> c = channel_named(name)) return *c;
     throw std::invalid_argument("no channel '" + name + "'");
@@ -314,6 +314,15 @@ std::string located_value_text(const LocatedCell& l) {
            to_precision_of(l.interval_low, half_width) + ", " + to_precision_of(l.interval_high, half_width) + "]";
 }
 
+std::string located_cell_text(const GapResult& r, const LocatedCell& l) {
+    const std::string text = located_value_text(l);
+    const Cell& c = r.layout[l.index];
+    if (c.statistic != "mean") return text;
+    const PhysicalUnit unit = display_unit(r.base, explained_channel(c.channel));
+    if (!(std::isfinite(unit.per_count) && unit.per_count > 0.0)) return text + " counts";
+    return text + " counts (" + significant_plain(l.difference * unit.per_count, 3) + " " + unit.name + ")";
+}
+
 std::vector<std::string> report_files(const std::string& dir) {
     std::vector<std::string> out{dir + "/gap.md"};
     for (const char* channel : kChannelNames)
@@ -406,7 +415,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         for (const auto& l : r.located) {
             const auto& c = r.layout[l.index];
             md << "| " << c.statistic << " | " << c.channel << " | " << c.shown() << " | " << segment_name(c.segment) << " | "
-               << fixed_point(l.z, 1) << " | " << located_value_text(l) << " |\n";
+               << fixed_point(l.z, 1) << " | " << located_cell_text(r, l) << " |\n";
         }
         md << "\n" << counted(r.located.size(), "cell") << " located before, " << r.located_after.size() << " after.\n\n";
     }

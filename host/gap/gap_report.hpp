@@ -71,6 +71,10 @@ std::vector<const Explanation*> candidates_in_table_order(const GapResult& resul
 /// warrants: "ratio 173 [27, 1109]", "diff 0.306 [0.296, 0.317]".
 std::string located_value_text(const LocatedCell& cell);
 
+/// located_value_text() as the terminal and the report show it: a `mean` cell's difference, in counts, also in the
+/// channel's unit ("diff 0.783 [0.744, 0.823] counts (0.138 deg/s)"); other cells' values have no unit.
+std::string located_cell_text(const GapResult& result, const LocatedCell& cell);
+
 /// Every file write_gap_report() may write into `dir`, whichever channels it plots: an input among them is refused.
 std::vector<std::string> report_files(const std::string& dir);
 

@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include "gap_fixtures.hpp"
 #include "host/gap/gap_report.hpp"
 #include "host/gap/statistics.hpp"
+#include "host/util/units.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -116,6 +118,24 @@ TEST(GapReport, ALocatedCellShowsTheDigitsItsIntervalWarrants) {
     LocatedCell narrow;
     narrow.ratio = std::nan(""), narrow.difference = 0.3063, narrow.interval_low = 0.2957, narrow.interval_high = 0.3169;
     EXPECT_EQ(located_value_text(narrow), "diff 0.306 [0.296, 0.317]");
+}
+
+// A mean cell's difference is in counts, which a user reads in the channel's unit: the paper's gyro has 90/512 deg/s
+// per count. Other cells (an autocorrelation, a ratio) have no unit.
+TEST(GapReport, AMeanCellsDifferenceIsAlsoInTheChannelsUnit) {
+    GapResult r;
+    r.base = testing::paper_gyro_model(8);
+    Cell mean;
+    mean.statistic = "mean", mean.channel = "gyro";
+    Cell acf = mean;
+    acf.statistic = "acf";
+    r.layout = {mean, acf};
+    LocatedCell l;
+    l.index = 0, l.ratio = std::nan(""), l.difference = 0.783, l.interval_low = 0.744, l.interval_high = 0.823;
+    EXPECT_NEAR(0.783 * kGyroDpsPerCount, 0.1376, 1e-4);  // to three digits 0.138
+    EXPECT_EQ(located_cell_text(r, l), "diff 0.783 [0.744, 0.823] counts (0.138 deg/s)");
+    l.index = 1;
+    EXPECT_EQ(located_cell_text(r, l), "diff 0.783 [0.744, 0.823]");
 }
 
 // The JSON's cell keys keep their three significant digits; the text shows no exponent and a band of one lag as that lag.
