@@ -19,10 +19,12 @@ Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<dou
                                     int threads, const ReplicateSummary& summary, const ReplicateExtra& extra,
                                     bool raw_codes) {
     std::vector<std::vector<double>> rows(static_cast<std::size_t>(replicates));
+    const std::optional<DriftAtConversions> drift = drift_at_conversions(model, t_s, channels);
     parallel_for(rows.size(), threads, [&](std::size_t r) {
         SimRequest request;
         request.t_s = &t_s;
         request.channels = channels;
+        if (drift) request.drift = &*drift;
         const std::uint64_t rs = replicate_seed(seed, static_cast<int>(r));
         if (extra) extra(rs, request);
         SimOutput raw;

@@ -1,6 +1,7 @@
 // One simulated log of the calibrated model; see sim_chain.hpp.
 #include "host/gap/sim_chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -32,7 +33,43 @@ std::array<EffectList, 4> build_effects(const GapModel& model, std::uint64_t see
     return by_stage;
 }
 
+// Calls conversion(k, nominal_s) for each conversion instant that can change an output, in time order, and output(k)
+// after output k's: the window holds the last N conversions, and older ones cannot change the output, so only those
+// are simulated (all of them when N exceeds the conversions per output).
+template <class Conversion, class Output>
+void for_each_conversion(const std::vector<double>& t_s, const Smoothing& sm, Conversion conversion, Output output) {
+    const double conversion_period_s = sm.conversion_period_s();
+    double last_instant_s = -1e300;
+    for (std::size_t k = 0; k < t_s.size(); ++k) {
+        for (int j = sm.window - 1; j >= 0; --j) {
+            const double nominal_s = t_s[k] - j * conversion_period_s;
+            if (nominal_s <= last_instant_s) continue;
+            last_instant_s = nominal_s;
+            conversion(k, nominal_s);
+        }
+        output(k);
+    }
+}
+
 }  // namespace
+
+std::optional<DriftAtConversions> drift_at_conversions(const GapModel& model, const std::vector<double>& t_s,
+                                                       const std::array<bool, kChannelCount>& channels) {
+    for (const sim::EffectSpec& spec : model.effects)
+        if (sim::make_effect(spec.name, spec.table, "effects." + spec.name)->stage() == sim::Stage::timing) return std::nullopt;
+    const double mid_counts = std::ldexp(1.0, model.unit.adc.bits - 1);
+    DriftAtConversions out;
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        if (!channels[i]) continue;
+        const sim::Drift drift(model.base[i].drift);
+        std::vector<double>& d = out[i];
+        d.reserve(t_s.size() * static_cast<std::size_t>(std::max(1, std::min(model.smoothing.window, model.smoothing.conversions_per_output))));
+        for_each_conversion(
+            t_s, model.smoothing, [&](std::size_t, double nominal_s) { d.push_back(drift.at_counts(nominal_s) - mid_counts); },
+            [](std::size_t) {});
+    }
+    return out;
+}
 
 SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64_t seed) {
     SimOutput out;
@@ -40,7 +77,6 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
     const sim::Adc adc(model.unit.adc);
     const double mid_counts = std::ldexp(1.0, model.unit.adc.bits - 1);
     const Smoothing& sm = model.smoothing;
-    const double conversion_period_s = sm.conversion_period_s();
     const auto order = sm.fit_order == 1 ? fw::FitOrder::line : fw::FitOrder::mean;
     auto effects = build_effects(model, seed);
     const auto& physical = effects[static_cast<std::size_t>(sim::Stage::physical)];
@@ -58,9 +94,10 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
         sim::Rng noise(seed, sim::kNoiseStreamBase + i);
         const std::vector<double>& added = request.added_counts[i];
         const Quantiser& quantiser = request.quantiser[i];
+        const std::vector<double>* cached_drift = request.drift && !(*request.drift)[i].empty() ? &(*request.drift)[i] : nullptr;
+        std::size_t conversion_index = 0;
         fw::LsWindow window;
         window.reset(static_cast<std::uint8_t>(sm.window));
-        double last_instant_s = -1e300;
         double last_actual_s = 0.0;
         bool started = false;
         std::vector<double>& y = out[i];
@@ -68,13 +105,9 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
         std::vector<double>* raw = request.raw_codes ? &(*request.raw_codes)[i] : nullptr;
         if (raw) raw->resize(t_s.size());
         double newest = 0.0;
-        for (std::size_t k = 0; k < t_s.size(); ++k) {
-            // The window holds the last N conversions; older ones cannot change the output, so only those are
-            // simulated (all of them when N exceeds the conversions per output).
-            for (int j = sm.window - 1; j >= 0; --j) {
-                const double nominal_s = t_s[k] - j * conversion_period_s;
-                if (nominal_s <= last_instant_s) continue;
-                last_instant_s = nominal_s;
+        for_each_conversion(
+            t_s, sm,
+            [&](std::size_t k, double nominal_s) {
                 sim::EffectContext ctx;
                 ctx.channel = c;
                 ctx.t_s = nominal_s;
@@ -88,8 +121,9 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
                 for (auto& e : physical) e->apply(values, ctx);
                 values[i] = fe.amplifier_v(fe.sensor_v(values[i]));
                 for (auto& e : analog) e->apply(values, ctx);
-                values[i] = adc.counts_from_volts(values[i]) + (drift.at_counts(ctx.t_s) - mid_counts) +
-                            sigma * noise.normal() + (added.empty() ? 0.0 : added[k]);
+                const double drift_counts = cached_drift ? (*cached_drift)[conversion_index++] : drift.at_counts(ctx.t_s) - mid_counts;
+                values[i] = adc.counts_from_volts(values[i]) + drift_counts + sigma * noise.normal() +
+                            (added.empty() ? 0.0 : added[k]);
                 std::uint16_t code = 0;
                 if (quantiser) {
                     code = static_cast<std::uint16_t>(quantiser(values[i]));
@@ -99,10 +133,11 @@ SimOutput simulate(const GapModel& model, const SimRequest& request, std::uint64
                 }
                 window.push(code);
                 newest = code;
-            }
-            y[k] = window.estimate_q8(order) / 256.0;
-            if (raw) (*raw)[k] = newest;
-        }
+            },
+            [&](std::size_t k) {
+                y[k] = window.estimate_q8(order) / 256.0;
+                if (raw) (*raw)[k] = newest;
+            });
     }
     return out;
 }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "host/gap/gap_model.hpp"
@@ -17,6 +18,15 @@ namespace driftlab::host::gap {
 /// A converter that replaces the model's converter effects and 10-bit quantiser (gap-eval's converter truth): the
 /// code of a converter input [counts].
 using Quantiser = std::function<int(double input_counts)>;
+
+/// Eq. 1's drift less mid-scale [counts] at each conversion instant simulate() visits, in its order, per channel
+/// (empty for channels not asked for): the same for every replicate of one model.
+using DriftAtConversions = std::array<std::vector<double>, kChannelCount>;
+
+/// The drift of `model` at its conversion instants for the output instants `t_s`, for its replicates to share; none
+/// where a timing effect moves the instants (they then differ by seed).
+std::optional<DriftAtConversions> drift_at_conversions(const GapModel& model, const std::vector<double>& t_s,
+                                                       const std::array<bool, kChannelCount>& channels);
 
 /// What to simulate: the output instants and, for the withheld-effect benchmark, signals added at the converter
 /// input (a truth generator's output, held over each output period).
@@ -28,6 +38,9 @@ struct SimRequest {
     /// Optional: receives per requested channel the newest conversion's code at each output instant, the raw
     /// column of a raw-mode log [counts].
     std::array<std::vector<double>, kChannelCount>* raw_codes = nullptr;
+    /// Optional: drift_at_conversions() of the model simulated and these t_s and channels, instead of eq. 1 per
+    /// conversion (about a tenth of a replicate's time on a long log).
+    const DriftAtConversions* drift = nullptr;
 };
 
 /// Smoothed outputs [counts] per channel (empty for channels not requested).

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "host/gap/candidates.hpp"
 #include "host/gap/sim_chain.hpp"
+#include "sim/model/drift.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -125,6 +127,37 @@ TEST(SimChain, SameSeedGivesSameLogAndAddedSignalShiftsIt) {
     req.added_counts[0].assign(t.size(), 10.0);
     const SimOutput b = simulate(m, req, 9);
     for (std::size_t k = 0; k < t.size(); ++k) EXPECT_DOUBLE_EQ(b[0][k], a[0][k] + 10.0);
+}
+
+// Replicates of one model share eq. 1 at the conversion instants (drift_at_conversions()): a window of 8 over 4
+// conversions per output visits 8 instants for the first output and 4 new ones for each later one, eq. 1 at each, and
+// a replicate given them is the replicate that computes them, byte for byte, beside a physical effect. A timing
+// effect moves the instants by seed: then there is nothing to share.
+TEST(SimChain, SharedDriftAtTheConversionsGivesTheSameReplicate) {
+    GapModel m = flat_model(0.0, 1.5, 8, 1);
+    m.smoothing = {1.0, 4, 8, 1};
+    m.base[0].drift = {40.0, 505.0, 300.0};
+    m.effects.push_back(make_candidate_effect("gauss_markov", Channel::gyro, {0.05, 20.0}, m));
+    const auto t = instants(400);
+    const std::array<bool, kChannelCount> gyro{true, false, false, false};
+    const auto drift = drift_at_conversions(m, t, gyro);
+    ASSERT_TRUE(drift);
+    ASSERT_EQ((*drift)[0].size(), 8u + 4u * 399u);
+    EXPECT_TRUE((*drift)[1].empty());
+    const sim::Drift eq1(m.base[0].drift);
+    EXPECT_EQ((*drift)[0][0], eq1.at_counts(1.0 - 7 * 0.25) - 512.0);      // the first output's oldest conversion
+    EXPECT_EQ((*drift)[0].back(), eq1.at_counts(400.0) - 512.0);           // the last output's newest
+    SimRequest req;
+    req.t_s = &t;
+    req.channels = gyro;
+    const SimOutput own = simulate(m, req, 21);
+    req.drift = &*drift;
+    EXPECT_EQ(simulate(m, req, 21)[0], own[0]);
+
+    sim::EffectSpec jitter{"clock_jitter", {}};
+    jitter.table.insert("jitter_s", 1e-3);
+    m.effects.push_back(jitter);
+    EXPECT_FALSE(drift_at_conversions(m, t, gyro));
 }
 
 }  // namespace
