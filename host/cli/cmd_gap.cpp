@@ -54,6 +54,7 @@ struct GapCommandOptions {
     gap::Holdout holdout = gap::BatteryOptions{}.holdout;
     bool locate_only = false;
     bool search_diffuse = false;
+    int max_effects = gap::ExplainOptions{}.max_effects;
     std::vector<std::string> mappings;  ///< plain recordings: CHANNEL=COLUMN:LSB
     double tau0_s = 0.0;                ///< plain recordings: the raw sample period
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
@@ -279,6 +280,7 @@ void run(const GapCommandOptions& o) {
     options.holdout = o.holdout;
     options.explain = !o.locate_only;
     options.search_diffuse = o.search_diffuse;
+    options.explain_options.max_effects = o.max_effects;
     const bool tty = ::isatty(STDERR_FILENO) != 0;
     const auto started = std::chrono::steady_clock::now();
     if (tty)
@@ -375,6 +377,10 @@ void register_gap(CLI::App& app) {
     cmd->add_flag("--search-diffuse", o->search_diffuse,
                   "Also fit candidates when no cell is located but the held-out gap score exceeds its bound (a diffuse "
                   "gap); off by default, as gap-eval scores it");
+    cmd->add_option("--max-effects", o->max_effects,
+                    "Effects added stepwise at most (default 3); 1 stops after the first, for a log known to lack one "
+                    "effect: later steps can add a wrong second effect beside the right one (docs/gap.md)")
+        ->check(whole_number_in(1, gap::ExplainOptions{}.max_effects));
     std::string keys;
     for (const char* k : gap::kGapJsonKeys) keys += (keys.empty() ? "" : ", ") + std::string(k);
     cmd->add_flag("--json", o->json, "Print JSON (keys: " + keys + "; stability with --stability)");

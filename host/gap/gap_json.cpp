@@ -167,6 +167,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["replicates"] = options.replicates;
     j["holdout"] = options.holdout == Holdout::forecast ? "forecast" : "interleaved";
     j["fit_fraction"] = options.fit_fraction;
+    j["max_effects"] = options.explain_options.max_effects;
     j["threshold_z"] = report::json_number(r.before.threshold);
     j["cells"] = r.layout.size();
     return j;

@@ -604,6 +604,44 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
 
 // --fit-fraction sets the forecast design's split; under the default interleaved design it had been ignored without
 // a word, the report and the JSON still saying 0.6.
+// --max-effects 1 on the real gyro, whose default search adds a second effect after the first: the limited run
+// stops after the first step, and that step is the default run's first: the same effect, judged the same (a step's
+// decision does not depend on later ones; its parameters do, as later steps refit it beside what they add).
+TEST(GapCli, MaxEffectsStopsTheStepwiseSearchAfterThatManyEffects) {
+    const std::string real = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt";
+    if (!std::filesystem::exists(real)) GTEST_SKIP() << real << " not found (../shared is absent)";
+    TempDir dir("gapmaxeffects");
+    const std::vector<std::string> args{"gap", real, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40", "--replicates", "16", "--json"};
+    const auto added = [](const nlohmann::json& j) {
+        std::vector<nlohmann::json> out;
+        for (const auto& e : j["explanations"])
+            if (e["added"].get<bool>()) out.push_back(e);
+        return out;
+    };
+    const RunResult whole = run_driftlab(args, dir.path());
+    ASSERT_EQ(whole.exit_code, 0) << whole.output;
+    const auto jw = nlohmann::json::parse(whole.output);
+    EXPECT_EQ(jw["max_effects"], 3);
+    ASSERT_GE(added(jw).size(), 2u) << "the default adds a second effect on this log, so the limit has one to stop";
+    std::vector<std::string> limited_args = args;
+    limited_args.insert(limited_args.end(), {"--max-effects", "1"});
+    const RunResult limited = run_driftlab(limited_args, dir.path());
+    ASSERT_EQ(limited.exit_code, 0) << limited.output;
+    const auto jl = nlohmann::json::parse(limited.output);
+    EXPECT_EQ(jl["max_effects"], 1);
+    const auto first = added(jl);
+    ASSERT_EQ(first.size(), 1u) << jl["explanations"].dump();
+    EXPECT_EQ(jl["verdict"], jw["verdict"]);
+    const auto by_default = added(jw);
+    for (const char* key : {"effect", "channel", "heldout_before", "heldout_after", "step"})
+        EXPECT_EQ(first.front()[key], by_default.front()[key]) << key;
+    for (const char* bad : {"0", "4"}) {
+        const RunResult refused = run_driftlab({"gap", real, "--max-effects", bad}, dir.path());
+        EXPECT_EQ(refused.exit_code, 2) << refused.output;
+        EXPECT_NE(refused.output.find("--max-effects"), std::string::npos) << refused.output;
+    }
+}
+
 TEST(GapCli, FitFractionIsRefusedWithoutTheForecastDesign) {
     TempDir dir("gapfitfraction");
     for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "0.7"},

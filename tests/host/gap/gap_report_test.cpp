@@ -40,6 +40,28 @@ TEST(GapReport, TheVerdictSaysWhoseHeldOutScoreItShrinksAndHow) {
         << reason;
 }
 
+// A gap left open at the step limit: the verdict says the search stopped there, and whether --max-effects or the
+// search's own limit did; a gap left open below the limit says nothing of it (no step was refused by the limit).
+TEST(GapReport, AGapLeftOpenAtTheStepLimitSaysTheSearchStoppedThere) {
+    GapResult r;
+    Explanation walk = candidate("rate_random_walk", 1, true, 0.8);
+    walk.heldout_before = 9.0, walk.heldout_after = 2.6;
+    r.accepted.push_back(walk);
+    r.gap_after_heldout = 2.6, r.gap_bound_after = 1.3;
+    GapOptions one;
+    one.explain_options.max_effects = 1;
+    EXPECT_NE(verdict_reason(r, one).find("; the held-out gap stays above its bound after 1 effect, the most --max-effects allows"),
+              std::string::npos) << verdict_reason(r, one);
+    const std::string below_limit = verdict_reason(r, GapOptions{});
+    EXPECT_NE(below_limit.find("; the held-out gap stays above its bound"), std::string::npos) << below_limit;
+    EXPECT_EQ(below_limit.find(" the most "), std::string::npos) << below_limit;
+    for (int k = 2; k <= 3; ++k) r.accepted.push_back(candidate("flicker", k, true, 0.5));
+    EXPECT_NE(verdict_reason(r, GapOptions{}).find("stays above its bound after 3 effects, the most the search adds"), std::string::npos)
+        << verdict_reason(r, GapOptions{});
+    r.gap_after_heldout = 1.1;  // closed: no limit to speak of
+    EXPECT_EQ(verdict_reason(r, GapOptions{}).find(" the most "), std::string::npos) << verdict_reason(r, GapOptions{});
+}
+
 // The diagnosis holds its candidates passed first, then by shrink (a step-3 effect above a step-2 one); the table
 // lists the added in step order, then the others by step, each step's as the diagnosis held them.
 TEST(GapReport, TheCandidateTableListsTheAddedInStepOrderThenTheOthersByStep) {
