@@ -26,14 +26,21 @@ Explanation candidate(const std::string& effect, int step, bool accepted, double
     return e;
 }
 
+// A diagnosis that added one effect on the gyro, with its channel's held-out scores and the whole log's after it.
+GapResult one_added(const std::string& effect, double shrink, double heldout_before, double heldout_after, double gap_after,
+                    double bound) {
+    GapResult r;
+    Explanation e = candidate(effect, 1, true, shrink);
+    e.heldout_before = heldout_before, e.heldout_after = heldout_after;
+    r.accepted.push_back(e);
+    r.gap_after_heldout = gap_after, r.gap_bound_after = bound;
+    return r;
+}
+
 // The reviewer's log: the verdict's "100 % (248.17 -> 2.13)" stood beside the gap table's whole-log 47.82 -> 0.99
 // without saying it was the gyro's own score, or what the share is of.
 TEST(GapReport, TheVerdictSaysWhoseHeldOutScoreItShrinksAndHow) {
-    GapResult r;
-    Explanation cycle = candidate("ambient_cycle", 1, true, 0.9946);
-    cycle.heldout_before = 248.17, cycle.heldout_after = 2.13;
-    r.accepted.push_back(cycle);
-    r.gap_after_heldout = 0.99, r.gap_bound_after = 1.24;
+    const GapResult r = one_added("ambient_cycle", 0.9946, 248.17, 2.13, 0.99, 1.24);
     const std::string reason = verdict_reason(r, GapOptions{});
     EXPECT_EQ(reason.rfind("on gyro it removes 99 % of gyro's own held-out gap excess (gyro's held-out score 248.17 -> 2.13; "
                            "shrink = (before - after) / (before - 1); the whole log's scores are below); the gap closes", 0), 0u)
@@ -43,11 +50,7 @@ TEST(GapReport, TheVerdictSaysWhoseHeldOutScoreItShrinksAndHow) {
 // A gap left open at the step limit: the verdict says the search stopped there, and whether --max-effects or the
 // search's own limit did; a gap left open below the limit says nothing of it (no step was refused by the limit).
 TEST(GapReport, AGapLeftOpenAtTheStepLimitSaysTheSearchStoppedThere) {
-    GapResult r;
-    Explanation walk = candidate("rate_random_walk", 1, true, 0.8);
-    walk.heldout_before = 9.0, walk.heldout_after = 2.6;
-    r.accepted.push_back(walk);
-    r.gap_after_heldout = 2.6, r.gap_bound_after = 1.3;
+    GapResult r = one_added("rate_random_walk", 0.8, 9.0, 2.6, 2.6, 1.3);
     GapOptions one;
     one.explain_options.max_effects = 1;
     EXPECT_NE(verdict_reason(r, one).find("; the held-out gap stays above its bound after 1 effect, the most --max-effects allows"),
