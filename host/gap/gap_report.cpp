@@ -381,6 +381,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)
+       << "; at most " << counted(static_cast<std::size_t>(options.explain_options.max_effects), "effect") << " added stepwise"
        << ". A held-out score within its bound (level " << options.alpha << ") is a closed gap."
        << "\n\n| | fitting part | held-out part | held-out bound |\n|---|---|---|---|\n";
     md << "| base simulator | " << fixed_point(r.gap_before_fit, 2) << " | " << fixed_point(r.gap_before_heldout, 2) << " | "

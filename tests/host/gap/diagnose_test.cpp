@@ -247,6 +247,8 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     const auto guide = md.find("## How to read this report");
     ASSERT_NE(guide, std::string::npos) << md.substr(0, 600);
     EXPECT_LT(guide, md.find("| | fitting part |"));
+    // The settings a reader needs to repeat it, the step limit among them (small_options(): one effect).
+    EXPECT_NE(md.find("judged on tenths 1, 2, 3, 6, 8; at most 1 effect added stepwise. "), std::string::npos) << md.substr(0, 1500);
     const auto explanation = md.find("## Explanation");
     ASSERT_NE(explanation, std::string::npos);
     EXPECT_NE(md.find("| 1 | thermal_second_tc | gyro | c3_dps=", explanation), std::string::npos);
