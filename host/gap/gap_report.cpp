@@ -183,10 +183,11 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
                           fixed_point(e.heldout_after, 2) + "; " + kShrinkDefinition + "; the whole log's scores are below)";
         for (std::size_t k = 1; k < r.accepted.size(); ++k)
             out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel;
-        out += r.gap_after_heldout <= r.gap_bound_after ? "; the gap closes" : "; the held-out gap stays above its bound";
+        const bool closed = r.gap_after_heldout <= r.gap_bound_after;
+        out += closed ? "; the gap closes" : "; the held-out gap stays above its bound";
         // Not closed at the limit: no further step was tried, so say that the search, not the library, stopped.
         const int limit = options.explain_options.max_effects;
-        if (r.gap_after_heldout > r.gap_bound_after && r.accepted.size() >= static_cast<std::size_t>(limit))
+        if (!closed && r.accepted.size() >= static_cast<std::size_t>(limit))
             out += " after " + counted(r.accepted.size(), "effect") +
                    (limit < ExplainOptions{}.max_effects ? ", the most --max-effects allows" : ", the most the search adds");
         for (const auto& s : r.level_steps)

@@ -602,8 +602,6 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
     EXPECT_EQ(read_text(log).rfind("# driftlab-log", 0), 0u) << "the log in the report's folder is left as it was";
 }
 
-// --fit-fraction sets the forecast design's split; under the default interleaved design it had been ignored without
-// a word, the report and the JSON still saying 0.6.
 // --max-effects 1 on the real gyro, whose default search adds a second effect after the first: the limited run
 // stops after the first step, and that step is the default run's first: the same effect, judged the same (a step's
 // decision does not depend on later ones; its parameters do, as later steps refit it beside what they add).
@@ -622,7 +620,8 @@ TEST(GapCli, MaxEffectsStopsTheStepwiseSearchAfterThatManyEffects) {
     ASSERT_EQ(whole.exit_code, 0) << whole.output;
     const auto jw = nlohmann::json::parse(whole.output);
     EXPECT_EQ(jw["max_effects"], 3);
-    ASSERT_GE(added(jw).size(), 2u) << "the default adds a second effect on this log, so the limit has one to stop";
+    const auto by_default = added(jw);
+    ASSERT_GE(by_default.size(), 2u) << "the default adds a second effect on this log, so the limit has one to stop";
     std::vector<std::string> limited_args = args;
     limited_args.insert(limited_args.end(), {"--max-effects", "1"});
     const RunResult limited = run_driftlab(limited_args, dir.path());
@@ -632,7 +631,6 @@ TEST(GapCli, MaxEffectsStopsTheStepwiseSearchAfterThatManyEffects) {
     const auto first = added(jl);
     ASSERT_EQ(first.size(), 1u) << jl["explanations"].dump();
     EXPECT_EQ(jl["verdict"], jw["verdict"]);
-    const auto by_default = added(jw);
     for (const char* key : {"effect", "channel", "heldout_before", "heldout_after", "step"})
         EXPECT_EQ(first.front()[key], by_default.front()[key]) << key;
     for (const char* bad : {"0", "4"}) {
@@ -642,6 +640,8 @@ TEST(GapCli, MaxEffectsStopsTheStepwiseSearchAfterThatManyEffects) {
     }
 }
 
+// --fit-fraction sets the forecast design's split; under the default interleaved design it had been ignored without
+// a word, the report and the JSON still saying 0.6.
 TEST(GapCli, FitFractionIsRefusedWithoutTheForecastDesign) {
     TempDir dir("gapfitfraction");
     for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "0.7"},
