@@ -192,8 +192,9 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
         std::printf("explanation (effects added in order; heldout: the channel's held-out score before -> after the step, %s; "
                     "parameters estimated on the whole log beside them all):\n", gap::kShrinkDefinition);
     for (const auto& e : r.accepted) {
-        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %s%%)  %s", e.step, e.effect.c_str(), e.channel.c_str(),
-                    e.heldout_before, e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), gap::estimate_text(e, log.t_s.back()).c_str());
+        const std::string within = e.within_bound_before() ? std::string("; ") + gap::kWithinBoundNote + " " + fixed_point(e.heldout_bound, 2) : "";
+        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %s%%%s)  %s", e.step, e.effect.c_str(), e.channel.c_str(), e.heldout_before,
+                    e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), within.c_str(), gap::estimate_text(e, log.t_s.back()).c_str());
         if (e.replaces_given) std::printf("  in place of the model's");
         std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());

@@ -103,6 +103,11 @@ std::vector<PairScore> score_pairs(const std::vector<PairCase>& cases) {
         const bool all = found == static_cast<int>(truths.size());
         it->all += all;
         it->wrong += !std::all_of(c.added.begin(), c.added.end(), is_truth);
+        for (std::size_t k = 0; k < c.added.size(); ++k)
+            if (c.within_bound.at(k)) {
+                ++it->within_bound_added;
+                it->within_bound_true += is_truth(c.added[k]);
+            }
         if (all && c.heldout_before > 1.0)
             shrinks[static_cast<std::size_t>(it - out.begin())].push_back((c.heldout_before - c.heldout_after) /
                                                                           (c.heldout_before - 1.0));
@@ -251,9 +256,10 @@ std::string scores_markdown(const EvalScores& s) {
               "added (`or pair`: or declared as an added effect's close call); `F1`, their harmonic mean. `one`: "
               "verdicts (the first effect added) naming a truth effect; `all`: logs given every truth effect; `wrong`: "
               "logs given an effect no truth stands for. Held-out shrink: median (before - after) / (before - 1) of "
-              "the final model on the logs given every truth effect.\n\n"
-              "| generators (effects) | n | detected | one | all | wrong | unexplained | precision | recall | or pair | F1 | held-out shrink |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+              "the final model on the logs given every truth effect. `within bound`: effects added with the channel's "
+              "held-out score already within its Monte Carlo bound, true / added.\n\n"
+              "| generators (effects) | n | detected | one | all | wrong | unexplained | precision | recall | or pair | F1 | within bound | held-out shrink |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const auto& z : s.pairs) {
             md << "| " << z.first;
             if (z.second == "none")
@@ -262,8 +268,16 @@ std::string scores_markdown(const EvalScores& s) {
                 md << " + " << z.second << " (" << z.first_effect << " + " << z.second_effect << ")";
             md << " | " << z.logs << " | " << z.detected << " | " << z.verdict_one << " | " << z.all << " | " << z.wrong << " | "
                << z.unexplained << " | " << fixed_point(z.precision, 2) << " | " << fixed_point(z.recall, 2) << " | "
-               << fixed_point(z.recall_or_pair, 2) << " | " << fixed_point(z.f1, 2) << " | " << fixed_or_dash(z.shrink) << " |\n";
+               << fixed_point(z.recall_or_pair, 2) << " | " << fixed_point(z.f1, 2) << " | " << z.within_bound_true << " / "
+               << z.within_bound_added << " | " << fixed_or_dash(z.shrink) << " |\n";
         }
+        int within_added = 0, within_true = 0, added = 0, found = 0;
+        for (const auto& z : s.pairs) {
+            within_added += z.within_bound_added, within_true += z.within_bound_true;
+            added += z.added, found += z.found;
+        }
+        md << "\nOver these rows, effects added with the held-out score already within its bound: " << within_true << " of "
+           << within_added << " true; the others: " << found - within_true << " of " << added - within_added << ".\n";
     }
     return md.str();
 }
@@ -339,6 +353,8 @@ nlohmann::json scores_json(const EvalScores& s) {
                          {"found", z.found},
                          {"truths", z.truths},
                          {"found_or_pair", z.found_or_pair},
+                         {"within_bound_added", z.within_bound_added},
+                         {"within_bound_true", z.within_bound_true},
                          {"precision", report::json_number(z.precision)},
                          {"recall", report::json_number(z.recall)},
                          {"recall_or_pair", report::json_number(z.recall_or_pair)},

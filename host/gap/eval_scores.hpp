@@ -44,6 +44,9 @@ struct PairScore {
     int found = 0;         ///< true effects added, over the logs (at most 2 per log)
     int truths = 0;        ///< truth effects planted, over the logs
     int found_or_pair = 0; ///< true effects added or declared as an added effect's close call
+    /// Effects added with the held-out score already within its bound (Explanation::within_bound_before()), and how
+    /// many of them a truth stands for: how far such a step is to be trusted, beside `added` and `found` for all.
+    int within_bound_added = 0, within_bound_true = 0;
     double precision = 0.0, recall = 0.0, f1 = 0.0, recall_or_pair = 0.0;
     /// Median held-out shrink, (before - after) / (before - 1), of the final model on the logs given every truth effect.
     std::optional<double> shrink;
@@ -92,6 +95,7 @@ std::string scores_markdown(const EvalScores& s);
 /// `detected`, `top1`, `or_pair`, `shrink` {`predicted`, `remeasured`, `oracle`, `abs_error`}), `targets[]` (`target`,
 /// `count`, `logs`, `rate`, `interval`, `bound`, `at_most`, `met`, `settled`), `pairs[]` (`generators`, `effects`,
 /// `level`, `logs`, `detected`, `verdict_one`, `all`, `wrong`, `unexplained`, `added`, `found`, `truths`, `found_or_pair`,
+/// `within_bound_added`, `within_bound_true`,
 /// `precision`, `recall`, `recall_or_pair`, `f1`, `shrink`).
 nlohmann::json scores_json(const EvalScores& s);
 

@@ -284,6 +284,7 @@ PairCase run_pair_case(const std::string& first, const std::string& second, doub
     for (const auto& e : r.accepted) {
         c.added.push_back(e.effect);
         c.close_calls.push_back(e.ambiguous_with);
+        c.within_bound.push_back(e.within_bound_before());
     }
     c.heldout_before = r.gap_before_heldout;
     c.heldout_after = r.gap_after_heldout;

@@ -100,6 +100,7 @@ struct PairCase {
     std::string verdict;                ///< the diagnosis's verdict: its first added effect, "none" or "unexplained"
     std::vector<std::string> added;     ///< every effect added stepwise, in order
     std::vector<std::string> close_calls;  ///< per added effect, its declared close call ("" for none)
+    std::vector<bool> within_bound;        ///< per added effect, Explanation::within_bound_before()
     double heldout_before = 1.0, heldout_after = 1.0;  ///< held-out gap score of the base and of the final model
 };
 

@@ -64,6 +64,9 @@ struct Explanation {
     double heldout_before = 1.0;    ///< on the held-out part, base only
     double heldout_after = 1.0;     ///< ... with the candidate
     double heldout_shrink = 0.0;    ///< 1 - (after - 1) / (before - 1): fraction of the held-out excess removed
+    /// The level-0.05 Monte Carlo bound of the channel's held-out score under the model before this step: a score
+    /// within it is one the model leaves by chance (the bound the verdict's "the gap closes" reads, per channel).
+    double heldout_bound = 0.0;
     double loss_gain = 0.0;         ///< synthetic log-likelihood gain on all cells (x2), parameters from the fitting part
     double penalty = 0.0;           ///< parameters x ln(cells): the BIC price before penalty_per_param
     double heldout_loss_gain = 0.0; ///< synthetic log-likelihood gain on the held-out cells (x2)
@@ -85,6 +88,10 @@ struct Explanation {
     std::vector<std::pair<std::string, double>> whole_log_params;
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
     std::string settle;             ///< the experiment that would separate them
+
+    /// Tried while the channel's held-out score lay within its bound: a later step can still add an effect then (cells
+    /// of the fitting part located, or an excess over 0.2 left), on weaker evidence than a gap the model cannot leave.
+    bool within_bound_before() const { return heldout_before <= heldout_bound; }
 
     /// The parameters the diagnosis reports: the whole log's where there are, else the fitting part's.
     const std::vector<std::pair<std::string, double>>& estimate() const { return whole_log_params.empty() ? params : whole_log_params; }

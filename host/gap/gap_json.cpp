@@ -55,6 +55,8 @@ json explanation_json(const Explanation& e, InformationCriterion ic, bool added)
             {"heldout_before", report::json_number(e.heldout_before)},
             {"heldout_after", report::json_number(e.heldout_after)},
             {"heldout_shrink", report::json_number(e.heldout_shrink)},
+            {"heldout_bound", report::json_number(e.heldout_bound)},
+            {"within_bound_before", e.within_bound_before()},
             {"likelihood_gain", report::json_number(e.loss_gain)},
             {"penalty", report::json_number(e.penalty)},
             {"delta_ic", has_delta_ic(e) ? report::json_number(delta_ic(e, ic)) : json(nullptr)},

@@ -182,7 +182,8 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
                           "'s own held-out gap excess (" + e.channel + "'s held-out score " + fixed_point(e.heldout_before, 2) + " -> " +
                           fixed_point(e.heldout_after, 2) + "; " + kShrinkDefinition + "; the whole log's scores are below)";
         for (std::size_t k = 1; k < r.accepted.size(); ++k)
-            out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel;
+            out += (k == 1 ? "; then " : ", ") + r.accepted[k].effect + " on " + r.accepted[k].channel +
+                   (r.accepted[k].within_bound_before() ? std::string(" (") + kWithinBoundNote + ")" : "");
         const bool closed = r.gap_after_heldout <= r.gap_bound_after;
         out += closed ? "; the gap closes" : "; the held-out gap stays above its bound";
         // Not closed at the limit: no further step was tried, so say that the search, not the library, stopped.
@@ -398,7 +399,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
         for (const auto& e : r.accepted)
             md << "| " << e.step << " | " << e.effect << (e.replaces_given ? " (in place of the model's)" : "") << " | " << e.channel
                << " | " << estimate_text(e, log.t_s.back()) << " | " << fixed_point(e.heldout_before, 2) << " -> "
-               << fixed_point(e.heldout_after, 2) << " | " << fixed_point(100 * e.heldout_shrink, 0) << " % | "
+               << fixed_point(e.heldout_after, 2) << (e.within_bound_before() ? " (within its bound " + fixed_point(e.heldout_bound, 2) + " before)" : "")
+               << " | " << fixed_point(100 * e.heldout_shrink, 0) << " % | "
                << (e.ambiguous_with.empty() ? "-" : "ambiguous with " + e.ambiguous_with) << " | " << e.settle << " |\n";
         md << "\n";
     }

@@ -63,6 +63,10 @@ std::string left_out_sentence(const GapResult& result);
 /// of the score's excess over 1 (a consistent simulator's score) that an effect removes.
 inline constexpr const char* kShrinkDefinition = "shrink = (before - after) / (before - 1)";
 
+/// Said of an added effect where Explanation::within_bound_before(): a step on a gap the model could have left by
+/// chance, on weaker evidence than the first (docs/gap.md §Stepwise has how often such steps were right).
+inline constexpr const char* kWithinBoundNote = "added with the held-out score already within its bound";
+
 /// The candidates tried as the terminal and the report list them: the added effects in step order, then the others
 /// by step (within a step as GapResult::tried holds them: those that passed first, then by held-out shrink).
 std::vector<const Explanation*> candidates_in_table_order(const GapResult& result);

@@ -633,11 +633,40 @@ TEST(GapCli, MaxEffectsStopsTheStepwiseSearchAfterThatManyEffects) {
     EXPECT_EQ(jl["verdict"], jw["verdict"]);
     for (const char* key : {"effect", "channel", "heldout_before", "heldout_after", "step"})
         EXPECT_EQ(first.front()[key], by_default.front()[key]) << key;
+    // The first step is taken on a held-out score beyond its bound, the second on one already within it.
+    EXPECT_FALSE(by_default[0]["within_bound_before"].get<bool>());
+    EXPECT_GT(by_default[0]["heldout_before"].get<double>(), by_default[0]["heldout_bound"].get<double>());
+    EXPECT_TRUE(by_default[1]["within_bound_before"].get<bool>());
+    EXPECT_LE(by_default[1]["heldout_before"].get<double>(), by_default[1]["heldout_bound"].get<double>());
+    EXPECT_GT(by_default[1]["heldout_bound"].get<double>(), 1.0) << "a bound on a score whose null mean is 1";
     for (const char* bad : {"0", "4"}) {
         const RunResult refused = run_driftlab({"gap", real, "--max-effects", bad}, dir.path());
         EXPECT_EQ(refused.exit_code, 2) << refused.output;
         EXPECT_NE(refused.output.find("--max-effects"), std::string::npos) << refused.output;
     }
+}
+
+// On the real gyro the default's second step is taken with the held-out score already within its bound: the terminal
+// and the report say so beside that step, and the verdict beside its name.
+TEST(GapCli, AStepTakenWithinTheBoundIsSaidSoOnTheTerminalAndInTheReport) {
+    const std::string real = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt";
+    if (!std::filesystem::exists(real)) GTEST_SKIP() << real << " not found (../shared is absent)";
+    TempDir dir("gapwithinbound");
+    const RunResult r = run_driftlab({"gap", real, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40", "--replicates",
+                                      "16", "--report", dir.file("rep")},
+                                     dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::string note = "added with the held-out score already within its bound";
+    const std::size_t verdict_end = r.output.find('\n');
+    EXPECT_NE(r.output.substr(0, verdict_end).find(" on gyro (" + note + ")"), std::string::npos) << r.output.substr(0, verdict_end);
+    const std::size_t table = r.output.find("explanation (effects added in order");
+    ASSERT_NE(table, std::string::npos) << r.output;
+    const std::size_t step1 = r.output.find("\n  1 ", table), step2 = r.output.find("\n  2 ", table);
+    ASSERT_NE(step2, std::string::npos) << r.output;
+    EXPECT_EQ(r.output.substr(step1, step2 - step1).find(note), std::string::npos) << "the first step is taken beyond the bound";
+    EXPECT_NE(r.output.substr(step2, r.output.find('\n', step2 + 1) - step2).find(note), std::string::npos) << r.output;
+    const std::string md = read_text(dir.file("rep/gap.md"));
+    EXPECT_NE(md.find(" (within its bound "), std::string::npos) << md;
 }
 
 // --fit-fraction sets the forecast design's split; under the default interleaved design it had been ignored without

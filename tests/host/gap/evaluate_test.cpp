@@ -519,22 +519,24 @@ TEST(GapEval, TruthGeneratorsHaveTheirRequestedSize) {
 }
 
 // Two-effect logs are scored as sets: each log's added effects against the pair's two truth effects, pooled over the
-// logs (precision, recall, F1), with a declared close call counted in `or pair` only.
+// logs (precision, recall, F1), with a declared close call counted in `or pair` only, and the effects added with the
+// held-out score already within its bound counted apart (true / added).
 TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
-    auto make = [](std::vector<std::string> added, std::vector<std::string> close, std::string verdict, double before,
-                   double after) {
+    auto make = [](std::vector<std::string> added, std::vector<std::string> close, std::vector<bool> within, std::string verdict,
+                   double before, double after) {
         PairCase c;
         c.first = "thermostat", c.second = "kasdin_flicker", c.level = 2.0, c.detected = true;
-        c.added = std::move(added), c.close_calls = std::move(close), c.verdict = std::move(verdict);
+        c.added = std::move(added), c.close_calls = std::move(close), c.within_bound = std::move(within);
+        c.verdict = std::move(verdict);
         c.heldout_before = before, c.heldout_after = after;
         return c;
     };
     const std::vector<PairCase> cases{
-        make({"ambient_cycle", "flicker"}, {"", ""}, "ambient_cycle", 11.0, 2.0),         // both: shrink 0.9
-        make({"gauss_markov", "ambient_cycle"}, {"flicker", ""}, "gauss_markov", 5.0, 1.0),  // one, one by close call
-        make({"flicker"}, {""}, "flicker", 21.0, 1.0),                                       // one of two
-        make({"ambient_cycle", "flicker", "spikes"}, {"", "", ""}, "ambient_cycle", 3.0, 2.0),  // both, one wrong: 0.5
-        make({}, {}, "unexplained", 4.0, 4.0)};
+        make({"ambient_cycle", "flicker"}, {"", ""}, {false, false}, "ambient_cycle", 11.0, 2.0),  // both: shrink 0.9
+        make({"gauss_markov", "ambient_cycle"}, {"flicker", ""}, {false, true}, "gauss_markov", 5.0, 1.0),  // one, one by close call
+        make({"flicker"}, {""}, {false}, "flicker", 21.0, 1.0),                                               // one of two
+        make({"ambient_cycle", "flicker", "spikes"}, {"", "", ""}, {false, false, true}, "ambient_cycle", 3.0, 2.0),  // both, one wrong: 0.5
+        make({}, {}, {}, "unexplained", 4.0, 4.0)};
     const EvalScores s = score({}, Thresholds{}, EvalOptions{}, {}, cases);
     ASSERT_EQ(s.pairs.size(), 1u);
     const PairScore& z = s.pairs.front();
@@ -549,6 +551,8 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     EXPECT_EQ(z.added, 8);
     EXPECT_EQ(z.found, 6);
     EXPECT_EQ(z.found_or_pair, 7);
+    EXPECT_EQ(z.within_bound_added, 2);  // ambient_cycle (true) and spikes (wrong)
+    EXPECT_EQ(z.within_bound_true, 1);
     EXPECT_DOUBLE_EQ(z.precision, 6.0 / 8.0);
     EXPECT_DOUBLE_EQ(z.recall, 6.0 / 10.0);
     EXPECT_DOUBLE_EQ(z.recall_or_pair, 7.0 / 10.0);
@@ -558,16 +562,19 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     const auto j = scores_json(s);
     ASSERT_EQ(j["pairs"].size(), 1u);
     EXPECT_EQ(j["pairs"][0]["found_or_pair"], 7);
+    EXPECT_EQ(j["pairs"][0]["within_bound_added"], 2);
+    EXPECT_EQ(j["pairs"][0]["within_bound_true"], 1);
     EXPECT_EQ(j["pairs"][0]["effects"].size(), 2u);
     EXPECT_NEAR(j["pairs"][0]["f1"].get<double>(), z.f1, 1e-12);
-    EXPECT_NE(scores_markdown(s).find("| thermostat + kasdin_flicker (ambient_cycle + flicker) | 5 | 5 | 3 | 2 | 2 | 1 | 0.75 | 0.60 | 0.70 | 0.67 | 0.90 |"),
+    EXPECT_NE(scores_markdown(s).find("| thermostat + kasdin_flicker (ambient_cycle + flicker) | 5 | 5 | 3 | 2 | 2 | 1 | 0.75 | 0.60 | 0.70 | 0.67 | 1 / 2 | 0.90 |"),
               std::string::npos)
         << scores_markdown(s);
+    EXPECT_NE(scores_markdown(s).find("within its bound: 1 of 2 true; the others: 5 of 6."), std::string::npos) << scores_markdown(s);
 
     // A generator planted alone ("none" second) has one truth effect: an extra effect beside it costs precision only.
-    std::vector<PairCase> alone(2, make({"flicker", "gauss_markov"}, {"", ""}, "flicker", 5.0, 1.0));
+    std::vector<PairCase> alone(2, make({"flicker", "gauss_markov"}, {"", ""}, {false, true}, "flicker", 5.0, 1.0));
     for (auto& c : alone) c.first = "kasdin_flicker", c.second = "none";
-    alone[1].added = {"flicker"}, alone[1].close_calls = {""};
+    alone[1].added = {"flicker"}, alone[1].close_calls = {""}, alone[1].within_bound = {false};
     const PairScore a = score({}, Thresholds{}, EvalOptions{}, {}, alone).pairs.at(0);
     EXPECT_EQ(a.second_effect, "");
     EXPECT_EQ(a.truths, 2);
@@ -577,7 +584,7 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     EXPECT_DOUBLE_EQ(a.precision, 2.0 / 3.0);
     const EvalScores sa = score({}, Thresholds{}, EvalOptions{}, {}, alone);
     EXPECT_EQ(scores_json(sa)["pairs"][0]["effects"], nlohmann::json::array({"flicker"}));
-    EXPECT_NE(scores_markdown(sa).find("| kasdin_flicker alone (flicker) | 2 | 2 | 2 | 2 | 1 | 0 | 0.67 | 1.00 | 1.00 | 0.80 |"),
+    EXPECT_NE(scores_markdown(sa).find("| kasdin_flicker alone (flicker) | 2 | 2 | 2 | 2 | 1 | 0 | 0.67 | 1.00 | 1.00 | 0.80 | 0 / 1 |"),
               std::string::npos)
         << scores_markdown(sa);
 }

@@ -65,6 +65,24 @@ TEST(GapReport, AGapLeftOpenAtTheStepLimitSaysTheSearchStoppedThere) {
     EXPECT_EQ(verdict_reason(r, GapOptions{}).find(" the most "), std::string::npos) << verdict_reason(r, GapOptions{});
 }
 
+// A later step taken while the channel's held-out score lay within its bound is said so in the verdict, where the
+// first, taken on a score beyond it, is not: a score at the bound counts as within it.
+TEST(GapReport, AStepTakenWithTheHeldOutScoreWithinItsBoundIsMarkedSo) {
+    GapResult r = one_added("gauss_markov", 0.97, 28.26, 1.70, 1.32, 3.44);
+    r.accepted.front().heldout_bound = 2.9;
+    Explanation second = candidate("thermal_second_tc", 2, true, 0.54);
+    second.heldout_before = 1.70, second.heldout_after = 1.32, second.heldout_bound = 2.80;
+    r.accepted.push_back(second);
+    const std::string marked = "; then thermal_second_tc on gyro (added with the held-out score already within its bound); the gap closes";
+    const std::string reason = verdict_reason(r, GapOptions{});
+    EXPECT_NE(reason.find(marked), std::string::npos) << reason;
+    EXPECT_GT(reason.find("within its bound"), reason.find(marked)) << "the first step is not marked: " << reason;
+    r.accepted.back().heldout_bound = 1.70;
+    EXPECT_NE(verdict_reason(r, GapOptions{}).find(marked), std::string::npos) << "at the bound";
+    r.accepted.back().heldout_bound = 1.69;
+    EXPECT_EQ(verdict_reason(r, GapOptions{}).find("within its bound"), std::string::npos) << verdict_reason(r, GapOptions{});
+}
+
 // The diagnosis holds its candidates passed first, then by shrink (a step-3 effect above a step-2 one); the table
 // lists the added in step order, then the others by step, each step's as the diagnosis held them.
 TEST(GapReport, TheCandidateTableListsTheAddedInStepOrderThenTheOthersByStep) {
