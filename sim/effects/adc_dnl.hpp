@@ -56,7 +56,7 @@ struct AdcDnlParams {
     }
 };
 
-class AdcDnl : public EffectWith<AdcDnlParams> {
+class AdcDnl : public EffectWith<AdcDnl, AdcDnlParams> {
 public:
     using Params = AdcDnlParams;
     static constexpr std::string_view kName = "adc_dnl";
@@ -66,8 +66,6 @@ public:
     static constexpr int kCodeCount = 1024;
 
     explicit AdcDnl(const Params& params);
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

@@ -24,7 +24,7 @@ struct AdcInlParams {
     }
 };
 
-class AdcInl : public EffectWith<AdcInlParams> {
+class AdcInl : public EffectWith<AdcInl, AdcInlParams> {
 public:
     using Params = AdcInlParams;
     static constexpr std::string_view kName = "adc_inl";
@@ -33,8 +33,6 @@ public:
     static constexpr std::string_view kSummary = "ADC integral non-linearity, Legendre bow/S curve (E7)";
 
     explicit AdcInl(const Params& params) : EffectWith(params) {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

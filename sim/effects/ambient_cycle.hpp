@@ -39,7 +39,7 @@ struct AmbientCycleParams {
     }
 };
 
-class AmbientCycle : public EffectWith<AmbientCycleParams> {
+class AmbientCycle : public EffectWith<AmbientCycle, AmbientCycleParams> {
 public:
     using Params = AmbientCycleParams;
     static constexpr std::string_view kName = "ambient_cycle";
@@ -48,8 +48,6 @@ public:
     static constexpr std::string_view kSummary = "ambient (HVAC) temperature cycling through a thermal lag (E2)";
 
     explicit AmbientCycle(const Params& params) : EffectWith(params), sine_(params.waveform == "sine") {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

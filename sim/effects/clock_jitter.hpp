@@ -32,7 +32,7 @@ struct ClockJitterParams {
     }
 };
 
-class ClockJitter : public EffectWith<ClockJitterParams> {
+class ClockJitter : public EffectWith<ClockJitter, ClockJitterParams> {
 public:
     using Params = ClockJitterParams;
     static constexpr std::string_view kName = "clock_jitter";
@@ -41,8 +41,6 @@ public:
     static constexpr std::string_view kSummary = "sample-clock drift (ppm) and sample-time jitter (E13)";
 
     explicit ClockJitter(const Params& params) : EffectWith(params) { reset(0); }
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t seed) override;
     void apply(ChannelValues&, const EffectContext&) override {}
     double actual_instant_s(double nominal_s, const EffectContext& ctx) override;

@@ -21,7 +21,7 @@ struct CrossAxisParams {
     }
 };
 
-class CrossAxis : public EffectWith<CrossAxisParams> {
+class CrossAxis : public EffectWith<CrossAxis, CrossAxisParams> {
 public:
     using Params = CrossAxisParams;
     static constexpr std::string_view kName = "cross_axis";
@@ -30,8 +30,6 @@ public:
     static constexpr std::string_view kSummary = "accelerometer cross-axis coupling matrix (E9)";
 
     explicit CrossAxis(const Params& params) : EffectWith(params) {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 };

@@ -40,7 +40,7 @@ struct FlickerParams {
     }
 };
 
-class Flicker : public EffectWith<FlickerParams> {
+class Flicker : public EffectWith<Flicker, FlickerParams> {
 public:
     using Params = FlickerParams;
     static constexpr std::string_view kName = "flicker";
@@ -50,8 +50,6 @@ public:
     static constexpr std::string_view kSummary = "bias instability, 1/f noise, ADEV plateau 0.664 B (E3)";
 
     explicit Flicker(const Params& params);
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t seed) override;
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

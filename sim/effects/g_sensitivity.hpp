@@ -22,7 +22,7 @@ struct GSensitivityParams {
     }
 };
 
-class GSensitivity : public EffectWith<GSensitivityParams> {
+class GSensitivity : public EffectWith<GSensitivity, GSensitivityParams> {
 public:
     using Params = GSensitivityParams;
     static constexpr std::string_view kName = "g_sensitivity";
@@ -31,8 +31,6 @@ public:
     static constexpr std::string_view kSummary = "gyro g-sensitivity and vibration rectification (E10)";
 
     explicit GSensitivity(const Params& params) : EffectWith(params) {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 };

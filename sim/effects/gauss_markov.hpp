@@ -29,7 +29,7 @@ struct GaussMarkovParams {
     }
 };
 
-class GaussMarkov : public EffectWith<GaussMarkovParams> {
+class GaussMarkov : public EffectWith<GaussMarkov, GaussMarkovParams> {
 public:
     using Params = GaussMarkovParams;
     static constexpr std::string_view kName = "gauss_markov";
@@ -38,8 +38,6 @@ public:
     static constexpr std::string_view kSummary = "first-order Gauss-Markov bias (E5)";
 
     explicit GaussMarkov(const Params& params) : EffectWith(params) { reset(0); }
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t seed) override;
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

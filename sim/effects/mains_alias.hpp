@@ -32,7 +32,7 @@ struct MainsAliasParams {
     }
 };
 
-class MainsAlias : public EffectWith<MainsAliasParams> {
+class MainsAlias : public EffectWith<MainsAlias, MainsAliasParams> {
 public:
     using Params = MainsAliasParams;
     static constexpr std::string_view kName = "mains_alias";
@@ -41,8 +41,6 @@ public:
     static constexpr std::string_view kSummary = "mains pickup and harmonics, aliased by the sampling (E12)";
 
     explicit MainsAlias(const Params& params) : EffectWith(params) {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

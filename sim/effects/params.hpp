@@ -161,11 +161,14 @@ Params params_from_toml(const toml::table& table, std::string_view key_path) {
     return p;
 }
 
-/// Base for effects with a parameter struct: stores it, exposes it, writes it back to TOML.
-template <class Params>
+/// Base for effects with a parameter struct: stores it, exposes it, writes it back to TOML; names the effect and its
+/// stage from the derived class's kName and kStage (an effect whose stage is a parameter overrides stage()).
+template <class Derived, class Params>
 class EffectWith : public Effect {
 public:
     explicit EffectWith(const Params& params) : p_(params) {}
+    std::string_view name() const override { return Derived::kName; }
+    Stage stage() const override { return Derived::kStage; }
     const Params& params() const { return p_; }
     toml::table parameters() const override { return params_to_toml(p_); }
 

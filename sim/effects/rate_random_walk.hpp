@@ -28,7 +28,7 @@ struct RateRandomWalkParams {
     }
 };
 
-class RateRandomWalk : public EffectWith<RateRandomWalkParams> {
+class RateRandomWalk : public EffectWith<RateRandomWalk, RateRandomWalkParams> {
 public:
     using Params = RateRandomWalkParams;
     static constexpr std::string_view kName = "rate_random_walk";
@@ -37,8 +37,6 @@ public:
     static constexpr std::string_view kSummary = "Brownian bias, rate random walk K (E4)";
 
     explicit RateRandomWalk(const Params& params) : EffectWith(params) { reset(0); }
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t seed) override;
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

@@ -37,7 +37,7 @@ struct SaturationParams {
     void validate(const TomlReader& r) const;
 };
 
-class Saturation : public EffectWith<SaturationParams> {
+class Saturation : public EffectWith<Saturation, SaturationParams> {
 public:
     using Params = SaturationParams;
     static constexpr std::string_view kName = "saturation";
@@ -46,7 +46,6 @@ public:
     static constexpr std::string_view kSummary = "sensor range or amplifier rail clipping (E14)";
 
     explicit Saturation(const Params& params) : EffectWith(params), analog_(params.stage == "analog") {}
-    std::string_view name() const override { return kName; }
     Stage stage() const override { return analog_ ? Stage::analog : Stage::physical; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;

@@ -39,7 +39,7 @@ struct SpikesParams {
     void validate(const TomlReader& r) const;
 };
 
-class Spikes : public EffectWith<SpikesParams> {
+class Spikes : public EffectWith<Spikes, SpikesParams> {
 public:
     using Params = SpikesParams;
     static constexpr std::string_view kName = "spikes";
@@ -48,7 +48,6 @@ public:
     static constexpr std::string_view kSummary = "random impulsive outliers, Poisson in time (E15)";
 
     explicit Spikes(const Params& params);
-    std::string_view name() const override { return kName; }
     Stage stage() const override { return analog_ ? Stage::analog : Stage::converter; }
     void reset(std::uint64_t seed) override;
     void apply(ChannelValues& values, const EffectContext& ctx) override;

@@ -41,7 +41,7 @@ struct SupplyCouplingParams {
     }
 };
 
-class SupplyCoupling : public EffectWith<SupplyCouplingParams> {
+class SupplyCoupling : public EffectWith<SupplyCoupling, SupplyCouplingParams> {
 public:
     using Params = SupplyCouplingParams;
     static constexpr std::string_view kName = "supply_coupling";
@@ -50,8 +50,6 @@ public:
     static constexpr std::string_view kSummary = "supply drift/ripple through ratiometric mismatch and pickup (E8)";
 
     explicit SupplyCoupling(const Params& params) : EffectWith(params) {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 

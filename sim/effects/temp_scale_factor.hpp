@@ -24,7 +24,7 @@ struct TempScaleFactorParams {
     }
 };
 
-class TempScaleFactor : public EffectWith<TempScaleFactorParams> {
+class TempScaleFactor : public EffectWith<TempScaleFactor, TempScaleFactorParams> {
 public:
     using Params = TempScaleFactorParams;
     static constexpr std::string_view kName = "temp_scale_factor";
@@ -33,8 +33,6 @@ public:
     static constexpr std::string_view kSummary = "temperature-dependent scale factor on the true input";
 
     explicit TempScaleFactor(const Params& params) : EffectWith(params) {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 };

@@ -25,7 +25,7 @@ struct ThermalSecondTcParams {
     }
 };
 
-class ThermalSecondTc : public EffectWith<ThermalSecondTcParams> {
+class ThermalSecondTc : public EffectWith<ThermalSecondTc, ThermalSecondTcParams> {
 public:
     using Params = ThermalSecondTcParams;
     static constexpr std::string_view kName = "thermal_second_tc";
@@ -34,8 +34,6 @@ public:
     static constexpr std::string_view kSummary = "second thermal time constant of the warm-up (E1)";
 
     explicit ThermalSecondTc(const Params& params) : EffectWith(params) {}
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     void reset(std::uint64_t) override {}
     void apply(ChannelValues& values, const EffectContext& ctx) override;
 };

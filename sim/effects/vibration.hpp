@@ -52,7 +52,7 @@ struct VibrationParams {
     void validate(const TomlReader& r) const;
 };
 
-class Vibration : public EffectWith<VibrationParams> {
+class Vibration : public EffectWith<Vibration, VibrationParams> {
 public:
     using Params = VibrationParams;
     static constexpr std::string_view kName = "vibration";
@@ -62,8 +62,6 @@ public:
     static constexpr std::string_view kSummary = "table vibration: tones and band-limited random motion (E11)";
 
     explicit Vibration(const Params& params) : EffectWith(params) { reset(0); }
-    std::string_view name() const override { return kName; }
-    Stage stage() const override { return kStage; }
     bool is_input() const override { return true; }
     void reset(std::uint64_t seed) override;
     void apply(ChannelValues& values, const EffectContext& ctx) override;
