@@ -89,8 +89,9 @@ struct Explanation {
     std::string ambiguous_with;     ///< a candidate nearly as good, or ""
     std::string settle;             ///< the experiment that would separate them
 
-    /// Tried while the channel's held-out score lay within its bound: a later step can still add an effect then (cells
-    /// of the fitting part located, or an excess over 0.2 left), on weaker evidence than a gap the model cannot leave.
+    /// Tried while the channel's held-out score lay within its bound: a step can still add an effect then (a cell of
+    /// either part located, or after the first step an excess over 0.2 left), on weaker evidence than a gap the model
+    /// cannot leave.
     bool within_bound_before() const { return heldout_before <= heldout_bound; }
 
     /// The parameters the diagnosis reports: the whole log's where there are, else the fitting part's.
