@@ -238,6 +238,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         }
         ExplainOptions eo = options.explain_options;
         if (options.search_diffuse) eo.diffuse_alpha = options.alpha;
+        eo.alpha = options.alpha;
         eo.seed = options.seed;
         eo.threads = options.threads;
         eo.eval_replicates = options.replicates;

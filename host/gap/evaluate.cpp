@@ -226,7 +226,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     const auto held = [](const Cell& cell) { return cell.segment == Segment::heldout; };
     const std::uint64_t fresh = go.seed + 1000003;
     auto heldout_gap = [&](const GapModel& m, const ReplicateExtra& extra) {
-        return gap_score(compare(real, run_replicates(m, log.t_s, b, go.replicates, fresh, go.threads, extra), 0.05),
+        return gap_score(compare(real, run_replicates(m, log.t_s, b, go.replicates, fresh, go.threads, extra), go.alpha),
                          layout, held);
     };
     const double before = heldout_gap(r.base, {});

@@ -23,7 +23,6 @@ namespace driftlab::host::gap {
 
 namespace {
 
-constexpr double kAlpha = 0.05;
 // A held-out gap-score excess below this is no gap to shrink (the score is about 1 when the model explains the log).
 constexpr double kMinHeldoutExcess = 0.2;
 
@@ -62,9 +61,10 @@ struct Judge {
     std::uint64_t seed;
     int threads;
     const std::vector<double>* raw = nullptr;  ///< this channel's raw codes (raw-mode log), or null
+    double alpha = 0.0;             ///< ExplainOptions::alpha
 
     Comparison evaluate(const GapModel& m, int replicates) const {
-        return compare(real, run_replicates(m, t_s, battery, replicates, seed, threads), kAlpha);
+        return compare(real, run_replicates(m, t_s, battery, replicates, seed, threads), alpha);
     }
 };
 
@@ -286,7 +286,7 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
     ex.gap_after = gap_score(cmp, judge.layout, in_segment(Segment::fit));
     ex.heldout_before = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout));
     ex.heldout_after = gap_score(cmp, judge.layout, in_segment(Segment::heldout));
-    ex.heldout_bound = gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), kAlpha);
+    ex.heldout_bound = gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), options.alpha);
     const double excess = ex.heldout_before - 1.0;
     ex.heldout_shrink = excess > 0.0 ? (ex.heldout_before - ex.heldout_after) / excess : 0.0;
     ex.heldout_loss_gain =
@@ -463,7 +463,7 @@ struct Search {
     // and short-lag spread.
     Judge judge_for(std::size_t i, const std::vector<bool>& part) const {
         Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, part, options.seed, options.threads,
-                    battery.raw_codes[i] ? raw[i] : nullptr};
+                    battery.raw_codes[i] ? raw[i] : nullptr, options.alpha};
         judge.battery.channels = {};
         judge.battery.channels[i] = true;
         judge.battery.raw_codes = {};
@@ -608,7 +608,8 @@ struct Search {
     // The full-log spectral information criterion of channel `i` under `r`'s model: its Gaussian processes fitted
     // again on the whole log beside its mean shapes, charged for those and for the shapes' parameters.
     double criterion(const ExplainResult& r, std::size_t i) const {
-        const Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, everywhere, options.seed, options.threads, nullptr};
+        const Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, everywhere, options.seed, options.threads, nullptr,
+                          options.alpha};
         const std::vector<Earlier> earlier = processes(r, i);
         int shape_parameters = 0;
         for (const Explanation& e : r.accepted)
@@ -732,6 +733,7 @@ GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec
     // The mean shapes after everything kept, in the order of `refitted` (explain() finds them there).
     const std::vector<bool> everywhere(t_s.size(), true);
     for (std::size_t i = 0; i < kChannelCount; ++i) {
+        // Deterministic shapes are fitted by least squares: this judge runs no replicates, so has no level.
         const Judge judge{t_s, *y[i], static_cast<Channel>(i), {}, {}, {}, {}, 0.0, everywhere, seed, 1, nullptr};
         for (const std::string& effect : shapes[i]) {
             Fitted f = fit_deterministic(effect, base, judge, everywhere);

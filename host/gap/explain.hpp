@@ -31,6 +31,9 @@ struct ExplainOptions {
     double min_heldout_shrink = 0.4; ///< the held-out gap excess must shrink by at least this fraction (tuned)
     double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
     double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
+    /// Family-wise level of the cells a candidate leaves located, and of the held-out bound a step is marked
+    /// against (Explanation::heldout_bound); diagnose() sets it from GapOptions::alpha.
+    double alpha = 0.05;
     InformationCriterion information_criterion = InformationCriterion::aic;  ///< choice among Gaussian candidates (tuned)
     /// Where a Gaussian process is chosen over an accepted mean shape, the path that takes the shape instead is
     /// searched too, and kept when its final model's spectral criterion is lower by more than this (2 x nll units).

@@ -225,6 +225,24 @@ TEST(Diagnose, TheResultDoesNotDependOnTheThreadCount) {
     EXPECT_EQ(gap_to_json(diagnose(p.log, sim::paper_model(), one), one).dump(), gap_to_json(p.result, small_options()).dump());
 }
 
+// A step is marked against its channel's held-out bound at the diagnosis's level (GapOptions::alpha), as the gap
+// table's bound is: a higher level is a lower order statistic of the same replicates' scores, while the score itself
+// does not depend on the level.
+TEST(Diagnose, TheHeldOutBoundAStepIsMarkedAgainstIsAtTheDiagnosisLevel) {
+    const Planted& p = planted_second_time_constant();
+    GapOptions loose = small_options();
+    loose.alpha = 0.25;
+    const GapResult r = diagnose(p.log, sim::paper_model(), loose);
+    ASSERT_FALSE(r.accepted.empty());
+    ASSERT_FALSE(p.result.accepted.empty());
+    const Explanation& at_default = p.result.accepted[0];
+    const Explanation& at_loose = r.accepted[0];
+    EXPECT_EQ(at_loose.effect, at_default.effect);
+    EXPECT_DOUBLE_EQ(at_loose.heldout_before, at_default.heldout_before);
+    EXPECT_LT(at_loose.heldout_bound, at_default.heldout_bound);
+    EXPECT_LT(r.gap_bound_before, p.result.gap_bound_before);
+}
+
 std::string read_text(const std::filesystem::path& path) {
     std::ifstream in(path);
     std::stringstream ss;
