@@ -71,6 +71,15 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_EQ(folder.exit_code, 3) << command << ": " << folder.output;
         EXPECT_NE(folder.output.find(dir.path().string() + ": is a folder, not a file"), std::string::npos) << folder.output;
     }
+    // An empty file had been refused as a plain table without --tau0 and --as (gap) or --kind (allan): exit 2,
+    // asking for options that would not have helped.
+    const std::string empty = dir.file("empty.csv");
+    std::ofstream{empty};
+    for (const char* command : {"gap", "fit", "allan"}) {
+        const RunResult r = run_driftlab({command, empty}, dir.path());
+        EXPECT_EQ(r.exit_code, 3) << command << ": " << r.output;
+        EXPECT_NE(r.output.find(empty + ": empty file"), std::string::npos) << command << ": " << r.output;
+    }
     EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
 }
