@@ -105,7 +105,12 @@ OpenedSource open_source(const std::string& path) {
     OpenedSource source{open_input_file(path)};
     std::ifstream& in = source.in;
     // Said first: a command would otherwise ask for the options of a plain table it cannot see is empty.
-    if (in.peek() == std::ifstream::traits_type::eof()) throw DataError(path, 0, "empty file");
+    const bool zero_bytes = in.peek() == std::ifstream::traits_type::eof();
+    in >> std::ws;
+    if (in.peek() == std::ifstream::traits_type::eof())
+        throw DataError(path, 0, zero_bytes ? "empty file" : "empty file (blank lines only)");
+    in.clear();
+    in.seekg(0);
     // Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number").
     if (io::starts_as_capture(in))
         throw DataError(path, 1, "a raw capture from `driftlab record`, not a log: rebuild its log with `driftlab decode " +

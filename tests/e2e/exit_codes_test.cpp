@@ -73,13 +73,15 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     }
     // An empty file had been refused as a plain table without --tau0 and --as (gap) or --kind (allan): exit 2,
     // asking for options that would not have helped.
-    const std::string empty = dir.file("empty.csv");
+    const std::string empty = dir.file("empty.csv"), blank = dir.file("blank.csv");
     std::ofstream{empty};
-    for (const char* command : {"gap", "fit", "allan"}) {
-        const RunResult r = run_driftlab({command, empty}, dir.path());
-        EXPECT_EQ(r.exit_code, 3) << command << ": " << r.output;
-        EXPECT_NE(r.output.find(empty + ": empty file"), std::string::npos) << command << ": " << r.output;
-    }
+    std::ofstream{blank} << "\n  \n\t\n";
+    for (const std::string& file : {empty, blank})
+        for (const char* command : {"gap", "fit", "allan"}) {
+            const RunResult r = run_driftlab({command, file}, dir.path());
+            EXPECT_EQ(r.exit_code, 3) << command << ": " << r.output;
+            EXPECT_NE(r.output.find(file + ": empty file"), std::string::npos) << command << ": " << r.output;
+        }
     EXPECT_EQ(run_driftlab({"gap"}, dir.path()).exit_code, 2);  // a required argument missing
     EXPECT_EQ(run_driftlab({}, dir.path()).exit_code, 2);       // no command
 }
