@@ -54,16 +54,22 @@ void for_each_conversion(const std::vector<double>& t_s, const Smoothing& sm, Co
 }  // namespace
 
 std::optional<DriftAtConversions> drift_at_conversions(const GapModel& model, const std::vector<double>& t_s,
-                                                       const std::array<bool, kChannelCount>& channels) {
+                                                       const std::array<bool, kChannelCount>& channels,
+                                                       std::size_t max_bytes) {
     for (const sim::EffectSpec& spec : model.effects)
         if (sim::make_effect(spec.name, spec.table, "effects." + spec.name)->stage() == sim::Stage::timing) return std::nullopt;
+    // About as many conversions per channel as outputs times the new conversions per output (a window's at most).
+    const std::size_t per_channel =
+        t_s.size() * static_cast<std::size_t>(std::max(1, std::min(model.smoothing.window, model.smoothing.conversions_per_output)));
+    const auto requested = static_cast<std::size_t>(std::count(channels.begin(), channels.end(), true));
+    if (requested * per_channel * sizeof(double) > max_bytes) return std::nullopt;
     const double mid_counts = std::ldexp(1.0, model.unit.adc.bits - 1);
     DriftAtConversions out;
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         if (!channels[i]) continue;
         const sim::Drift drift(model.base[i].drift);
         std::vector<double>& d = out[i];
-        d.reserve(t_s.size() * static_cast<std::size_t>(std::max(1, std::min(model.smoothing.window, model.smoothing.conversions_per_output))));
+        d.reserve(per_channel);
         for_each_conversion(
             t_s, model.smoothing, [&](std::size_t, double nominal_s) { d.push_back(drift.at_counts(nominal_s) - mid_counts); },
             [](std::size_t) {});

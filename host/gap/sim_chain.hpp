@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -23,10 +24,16 @@ using Quantiser = std::function<int(double input_counts)>;
 /// (empty for channels not asked for): the same for every replicate of one model.
 using DriftAtConversions = std::array<std::vector<double>, kChannelCount>;
 
+/// What the shared drift may hold: 128 MiB, the four channels of about 1.4 h at 100 Hz with 8 conversions per output.
+/// Sharing saves about a tenth of a replicate's time; on a longer log that is not worth a block growing with it.
+inline constexpr std::size_t kSharedDriftBytes = std::size_t{128} << 20;
+
 /// The drift of `model` at its conversion instants for the output instants `t_s`, for its replicates to share; none
-/// where a timing effect moves the instants (they then differ by seed).
+/// where a timing effect moves the instants (they then differ by seed), or where it would exceed `max_bytes`
+/// (each replicate then evaluates eq. 1 itself, to the same values).
 std::optional<DriftAtConversions> drift_at_conversions(const GapModel& model, const std::vector<double>& t_s,
-                                                       const std::array<bool, kChannelCount>& channels);
+                                                       const std::array<bool, kChannelCount>& channels,
+                                                       std::size_t max_bytes = kSharedDriftBytes);
 
 /// What to simulate: the output instants and, for the withheld-effect benchmark, signals added at the converter
 /// input (a truth generator's output, held over each output period).

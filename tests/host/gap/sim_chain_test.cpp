@@ -153,6 +153,11 @@ TEST(SimChain, SharedDriftAtTheConversionsGivesTheSameReplicate) {
     const SimOutput own = simulate(m, req, 21);
     req.drift = &*drift;
     EXPECT_EQ(simulate(m, req, 21)[0], own[0]);
+    // Beyond its budget the drift is not shared (the replicate then computes it, as `own` did).
+    const std::size_t bytes = (*drift)[0].size() * sizeof(double);
+    EXPECT_TRUE(drift_at_conversions(m, t, gyro, bytes));
+    EXPECT_FALSE(drift_at_conversions(m, t, gyro, bytes / 2));
+    EXPECT_FALSE(drift_at_conversions(m, t, {true, true, false, false}, bytes));  // two channels, twice the block
 
     sim::EffectSpec jitter{"clock_jitter", {}};
     jitter.table.insert("jitter_s", 1e-3);
