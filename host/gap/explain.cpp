@@ -286,7 +286,7 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
     ex.gap_after = gap_score(cmp, judge.layout, in_segment(Segment::fit));
     ex.heldout_before = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout));
     ex.heldout_after = gap_score(cmp, judge.layout, in_segment(Segment::heldout));
-    ex.heldout_bound = gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), options.alpha);
+    ex.heldout_bound = gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), judge.alpha);
     const double excess = ex.heldout_before - 1.0;
     ex.heldout_shrink = excess > 0.0 ? (ex.heldout_before - ex.heldout_after) / excess : 0.0;
     ex.heldout_loss_gain =

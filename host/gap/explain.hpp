@@ -67,8 +67,9 @@ struct Explanation {
     double heldout_before = 1.0;    ///< on the held-out part, base only
     double heldout_after = 1.0;     ///< ... with the candidate
     double heldout_shrink = 0.0;    ///< 1 - (after - 1) / (before - 1): fraction of the held-out excess removed
-    /// The level-0.05 Monte Carlo bound of the channel's held-out score under the model before this step: a score
-    /// within it is one the model leaves by chance (the bound the verdict's "the gap closes" reads, per channel).
+    /// The level-alpha (ExplainOptions::alpha) Monte Carlo bound of the channel's held-out score under the model
+    /// before this step: a score within it is one the model leaves by chance (the bound the verdict's "the gap
+    /// closes" reads, per channel).
     double heldout_bound = 0.0;
     double loss_gain = 0.0;         ///< synthetic log-likelihood gain on all cells (x2), parameters from the fitting part
     double penalty = 0.0;           ///< parameters x ln(cells): the BIC price before penalty_per_param
