@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string_view>
@@ -109,9 +110,7 @@ public:
             std::string inner = e.what();
             const std::string prefix = log_.source_name + ":" + std::to_string(number) + ": ";
             if (inner.rfind(prefix, 0) == 0) inner.erase(0, prefix.size());
-            throw DataError(log_.source_name, number,
-                            "truncated last line (no newline at the end of the file; the writer was probably "
-                            "interrupted): " + inner + "; delete that line to use the rest");
+            refuse_truncated_tail(number, "): " + inner);
         }
         if (!terminated) {
             if (options_.drop_truncated_tail) {
@@ -119,9 +118,7 @@ public:
                 log_.truncated_tail_dropped = true;
                 return;
             }
-            throw DataError(log_.source_name, number,
-                            "truncated last line (no newline at the end of the file; the writer was probably "
-                            "interrupted, so its last value may be cut); delete that line to use the rest");
+            refuse_truncated_tail(number, ", so its last value may be cut)");
         }
     }
 
@@ -135,6 +132,19 @@ public:
     }
 
 private:
+    /// A last line without '\n': a writer killed mid-line. The recorder writes each frame to its capture before the
+    /// log, so a capture beside the log under record's default name holds that row whole: say how to get it back.
+    [[noreturn]] void refuse_truncated_tail(std::uint64_t number, const std::string& why) const {
+        std::string remedy = "delete that line to use the rest";
+        const std::string capture = log_.source_name + ".cap";
+        std::error_code ignored;
+        if (std::filesystem::is_regular_file(capture, ignored))
+            remedy += ", or rebuild the whole log from its capture: `driftlab decode " + capture + " -o LOG.csv`";
+        throw DataError(log_.source_name, number,
+                        "truncated last line (no newline at the end of the file; the writer was probably "
+                        "interrupted" + why + "; " + remedy);
+    }
+
     void magic(std::string_view text, std::uint64_t number) {
         seen_magic_ = true;
         const auto kv = magic_key_value(text);

@@ -2,6 +2,7 @@
 // `--json` (the summary as one object on standard output) and `--strict` (exit 3 when bytes were not decoded).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -156,6 +157,44 @@ TEST(DecodeCli, StrictExitsThreeOnUndecodedBytesAndStillWritesEveryGoodRow) {
     const RunResult clean = run_driftlab({"decode", intact, "-o", dir.file("intact.csv"), "--strict"}, dir.path());
     EXPECT_EQ(clean.exit_code, 0) << clean.output;
     EXPECT_EQ(host::read_log(dir.file("intact.csv")).t_s.size(), static_cast<std::size_t>(kSamples));
+}
+
+// A log whose writer was killed mid-line is refused (its last value may be cut); when the recording's capture sits
+// beside it under record's default name, the refusal names the decode command that gets that row back whole.
+TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
+    TempDir dir("decodecutlog");
+    const std::string log = dir.file("rec.csv");
+    const std::string cap = log + ".cap";
+    write_capture(cap, false);
+    ASSERT_EQ(run_driftlab({"decode", cap, "-o", log}, dir.path()).exit_code, 0);
+    std::string text = read_text(log);
+    ASSERT_EQ(text.back(), '\n');
+    text.resize(text.size() - 4);  // the last row loses its newline and the tail of its last value
+    std::ofstream(log, std::ios::binary | std::ios::trunc) << text;
+    const auto last_line = std::to_string(std::count(text.begin(), text.end(), '\n') + 1);
+
+    const RunResult cut = run_driftlab({"fit", log}, dir.path());
+    EXPECT_EQ(cut.exit_code, 3) << cut.output;
+    EXPECT_NE(cut.output.find(log + ":" + last_line + ": truncated last line"), std::string::npos) << cut.output;
+    const std::string command = "`driftlab decode " + cap + " -o LOG.csv`";
+    EXPECT_NE(cut.output.find("delete that line to use the rest, or rebuild the whole log from its capture: " + command),
+              std::string::npos)
+        << cut.output;
+
+    // The command it names rebuilds every row, the cut one included, where dropping the line keeps one fewer.
+    const std::string rebuilt = dir.file("rebuilt.csv");
+    ASSERT_EQ(run_driftlab({"decode", cap, "-o", rebuilt}, dir.path()).exit_code, 0);
+    EXPECT_EQ(host::read_log(rebuilt).t_s.size(), static_cast<std::size_t>(kSamples));
+    host::ReadOptions drop;
+    drop.drop_truncated_tail = true;
+    EXPECT_EQ(host::read_log(log, drop).t_s.size(), static_cast<std::size_t>(kSamples - 1));
+
+    // Without the capture there is nothing to rebuild from, and the refusal does not send the user looking for it.
+    std::filesystem::remove(cap);
+    const RunResult alone = run_driftlab({"fit", log}, dir.path());
+    EXPECT_EQ(alone.exit_code, 3) << alone.output;
+    EXPECT_NE(alone.output.find("delete that line to use the rest"), std::string::npos) << alone.output;
+    EXPECT_EQ(alone.output.find("driftlab decode"), std::string::npos) << alone.output;
 }
 
 }  // namespace
