@@ -202,6 +202,8 @@ std::optional<CaptureRecord> CaptureReader::next() {
     return next();
 }
 
+std::string default_capture_path(const std::string& log_path) { return log_path + ".cap"; }
+
 bool starts_as_capture(std::istream& in) {
     std::string first;
     return std::getline(in, first) && first.rfind(kMagicKey, 0) == 0;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string_view>
 
+#include "host/io/capture.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/input_file.hpp"
@@ -136,7 +137,7 @@ private:
     /// log, so a capture beside the log under record's default name holds that row whole: say how to get it back.
     [[noreturn]] void refuse_truncated_tail(std::uint64_t number, const std::string& why) const {
         std::string remedy = "delete that line to use the rest";
-        const std::string capture = log_.source_name + ".cap";
+        const std::string capture = io::default_capture_path(log_.source_name);
         std::error_code ignored;
         if (std::filesystem::is_regular_file(capture, ignored))
             remedy += ", or rebuild the whole log from its capture: `driftlab decode " + capture + " -o LOG.csv`";
