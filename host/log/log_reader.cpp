@@ -7,6 +7,7 @@
 #include <fstream>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "host/io/capture.hpp"
 #include "host/util/error.hpp"
@@ -134,16 +135,30 @@ public:
 
 private:
     /// A last line without '\n': a writer killed mid-line. The recorder writes each frame to its capture before the
-    /// log, so a capture beside the log under record's default name holds that row whole: say how to get it back.
+    /// log, so the recording's capture holds that row whole: say how to get it back.
     [[noreturn]] void refuse_truncated_tail(std::uint64_t number, const std::string& why) const {
-        std::string remedy = "delete that line to use the rest";
-        const std::string capture = io::default_capture_path(log_.source_name);
-        std::error_code ignored;
-        if (std::filesystem::is_regular_file(capture, ignored))
-            remedy += ", or rebuild the whole log from its capture: `driftlab decode " + capture + " -o LOG.csv`";
         throw DataError(log_.source_name, number,
                         "truncated last line (no newline at the end of the file; the writer was probably "
-                        "interrupted" + why + "; " + remedy);
+                        "interrupted" + why + "; delete that line to use the rest" + capture_remedy());
+    }
+
+    /// Where the capture is found: the file the metadata's `capture` key names (record writes its file name there,
+    /// --capture or not) beside the log, else record's default name. One written to another folder is named as the
+    /// metadata names it, for the user who put it there; with no capture known the remedy says nothing of one.
+    std::string capture_remedy() const {
+        const std::optional<std::string> named = log_.metadata.get("capture");
+        const std::filesystem::path folder = std::filesystem::path(log_.source_name).parent_path();
+        std::vector<std::string> places;
+        if (named && !named->empty()) places.push_back((folder / std::filesystem::path(*named).filename()).string());
+        places.push_back(io::default_capture_path(log_.source_name));
+        for (const std::string& capture : places) {
+            std::ifstream file(capture, std::ios::binary);  // a capture by its magic line, not any file of that name
+            if (file && io::starts_as_capture(file))
+                return ", or rebuild the whole log from its capture: `driftlab decode " + capture + " -o LOG.csv`";
+        }
+        if (!named || named->empty()) return "";
+        return ", or rebuild the whole log with `driftlab decode CAPTURE -o LOG.csv` from its capture, which the "
+               "metadata names '" + *named + "' and is not beside the log";
     }
 
     void magic(std::string_view text, std::uint64_t number) {

@@ -6,7 +6,8 @@
 // Rejected, with the line number: a missing or repeated header, a wrong field count, a value that is not
 // a finite number, a t_s not strictly after the previous row's, a non-integer seq, an empty file, a log
 // without rows, and an unterminated last line (unless ReadOptions::drop_truncated_tail; the refusal names the
-// `driftlab decode` command when the recording's capture sits beside the log).
+// `driftlab decode` command of the recording's capture, found beside the log by its metadata's `capture` name or
+// record's default name).
 #pragma once
 
 #include <istream>

@@ -34,12 +34,15 @@ struct Layout {
 /// A recording as the recorder captures it: VERSION and CONFIG received, the start event, then kSamples SAMPLEs of
 /// a board at mid-scale, one record each. With `damaged`: the frame of sample kBadCrcSample fails its CRC,
 /// kGarbageBytes of 0xff stand in front of sample kGarbageBefore's record, and one more SAMPLE record is cut.
-Layout write_capture(const std::string& path, bool damaged) {
+/// A `capture_name` goes into the header as record writes it, the capture's file name, which decode puts in the log.
+Layout write_capture(const std::string& path, bool damaged, const std::string& capture_name = "") {
     Layout at;
     std::vector<std::uint64_t> sample_offsets;
     std::uint16_t seq = 0;
     {
-        host::io::CaptureWriter w(path, {{"port", "/dev/pts/3"}, {"baud", "115200"}});
+        host::io::CaptureHeader header = {{"port", "/dev/pts/3"}, {"baud", "115200"}};
+        if (!capture_name.empty()) header.emplace_back("capture", capture_name);
+        host::io::CaptureWriter w(path, header);
         std::uint8_t buf[64];
         const auto receive = [&](std::size_t n) {
             ASSERT_GT(n, 0u);
@@ -159,6 +162,16 @@ TEST(DecodeCli, StrictExitsThreeOnUndecodedBytesAndStillWritesEveryGoodRow) {
     EXPECT_EQ(host::read_log(dir.file("intact.csv")).t_s.size(), static_cast<std::size_t>(kSamples));
 }
 
+/// Cuts the log's last row as a kill inside write(2) would: it loses its newline and the tail of its last value.
+/// Returns that line's number.
+std::string cut_last_row(const std::string& log) {
+    std::string text = read_text(log);
+    EXPECT_EQ(text.back(), '\n');
+    text.resize(text.size() - 4);
+    std::ofstream(log, std::ios::binary | std::ios::trunc) << text;
+    return std::to_string(std::count(text.begin(), text.end(), '\n') + 1);
+}
+
 // A log whose writer was killed mid-line is refused (its last value may be cut); when the recording's capture sits
 // beside it under record's default name, the refusal names the decode command that gets that row back whole.
 TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
@@ -167,11 +180,7 @@ TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
     const std::string cap = log + ".cap";
     write_capture(cap, false);
     ASSERT_EQ(run_driftlab({"decode", cap, "-o", log}, dir.path()).exit_code, 0);
-    std::string text = read_text(log);
-    ASSERT_EQ(text.back(), '\n');
-    text.resize(text.size() - 4);  // the last row loses its newline and the tail of its last value
-    std::ofstream(log, std::ios::binary | std::ios::trunc) << text;
-    const auto last_line = std::to_string(std::count(text.begin(), text.end(), '\n') + 1);
+    const std::string last_line = cut_last_row(log);
 
     const RunResult cut = run_driftlab({"fit", log}, dir.path());
     EXPECT_EQ(cut.exit_code, 3) << cut.output;
@@ -195,6 +204,40 @@ TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
     EXPECT_EQ(alone.exit_code, 3) << alone.output;
     EXPECT_NE(alone.output.find("delete that line to use the rest"), std::string::npos) << alone.output;
     EXPECT_EQ(alone.output.find("driftlab decode"), std::string::npos) << alone.output;
+}
+
+// A capture recorded under another name (record --capture) is found by the name the log's metadata gives it: beside
+// the log, its decode command is named with its path; moved elsewhere, it is named as the metadata names it.
+TEST(DecodeCli, ACutLogFindsTheCaptureItsMetadataNames) {
+    TempDir dir("decodecutnamed");
+    const std::string log = dir.file("rec.csv");
+    const std::string cap = dir.file("raw-run.bin");
+    write_capture(cap, false, "raw-run.bin");
+    ASSERT_EQ(run_driftlab({"decode", cap, "-o", log}, dir.path()).exit_code, 0);
+    ASSERT_EQ(host::read_log(log).metadata.get("capture"), "raw-run.bin");
+    const std::string last_line = cut_last_row(log);
+
+    const RunResult beside = run_driftlab({"fit", log}, dir.path());
+    EXPECT_EQ(beside.exit_code, 3) << beside.output;
+    EXPECT_NE(beside.output.find(log + ":" + last_line + ": truncated last line"), std::string::npos) << beside.output;
+    EXPECT_NE(beside.output.find("rebuild the whole log from its capture: `driftlab decode " + cap + " -o LOG.csv`"),
+              std::string::npos)
+        << beside.output;
+
+    const std::string away = dir.file("elsewhere");
+    std::filesystem::create_directory(away);
+    std::filesystem::rename(cap, away + "/raw-run.bin");
+    const RunResult moved = run_driftlab({"fit", log}, dir.path());
+    EXPECT_EQ(moved.exit_code, 3) << moved.output;
+    EXPECT_NE(moved.output.find("which the metadata names 'raw-run.bin' and is not beside the log"), std::string::npos)
+        << moved.output;
+    EXPECT_EQ(moved.output.find(cap), std::string::npos) << moved.output;  // no path where the capture is not
+
+    // A file of that name that is not a capture is not sent to decode, which would refuse it.
+    std::ofstream(cap) << "t_s,gyro\n0,1\n";
+    const RunResult impostor = run_driftlab({"fit", log}, dir.path());
+    EXPECT_EQ(impostor.exit_code, 3) << impostor.output;
+    EXPECT_EQ(impostor.output.find(cap), std::string::npos) << impostor.output;
 }
 
 }  // namespace
