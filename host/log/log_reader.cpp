@@ -146,19 +146,19 @@ private:
     /// --capture or not) beside the log, else record's default name. One written to another folder is named as the
     /// metadata names it, for the user who put it there; with no capture known the remedy says nothing of one.
     std::string capture_remedy() const {
-        const std::optional<std::string> named = log_.metadata.get("capture");
+        const std::string named = log_.metadata.get("capture").value_or("");
         const std::filesystem::path folder = std::filesystem::path(log_.source_name).parent_path();
         std::vector<std::string> places;
-        if (named && !named->empty()) places.push_back((folder / std::filesystem::path(*named).filename()).string());
+        if (!named.empty()) places.push_back((folder / std::filesystem::path(named).filename()).string());
         places.push_back(io::default_capture_path(log_.source_name));
         for (const std::string& capture : places) {
             std::ifstream file(capture, std::ios::binary);  // a capture by its magic line, not any file of that name
             if (file && io::starts_as_capture(file))
                 return ", or rebuild the whole log from its capture: `driftlab decode " + capture + " -o LOG.csv`";
         }
-        if (!named || named->empty()) return "";
+        if (named.empty()) return "";
         return ", or rebuild the whole log with `driftlab decode CAPTURE -o LOG.csv` from its capture, which the "
-               "metadata names '" + *named + "' and is not beside the log";
+               "metadata names '" + named + "' and is not beside the log";
     }
 
     void magic(std::string_view text, std::uint64_t number) {
