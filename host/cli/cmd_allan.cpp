@@ -10,6 +10,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/fit/series.hpp"
+#include "host/log/log_reader.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/report/json_out.hpp"
 #include "host/stats/allan_pipeline.hpp"
@@ -33,6 +34,7 @@ struct AllanCommandOptions {
     std::string deviation = "oadev";
     bool keep_drift = false;
     bool remove_drift = false;          ///< plain rate files: fit and remove eq. 1 as for logs
+    bool drop_cut_line = false;         ///< logs: a cut last line is dropped (and noted), not refused
     bool json = false;
     std::string plot_dir;
 };
@@ -189,13 +191,16 @@ void run(const AllanCommandOptions& o) {
     req.remove_drift = !o.keep_drift;
     fit::OpenedSource source = fit::open_source(o.path);
     const bool log = source.canonical_log;
+    const ReadOptions read = fit::cut_line_options(source, o.path, o.drop_cut_line);
     std::vector<std::string> names = o.channels;
     if (names.size() == 1 && names[0] == "all") names.clear();
     std::vector<fit::Series> series;
     if (log) {
         if (!o.kind.empty() && o.kind != "rate") throw UsageError("--kind: a canonical log holds rate samples (counts)");
         if (!o.units.empty()) throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
-        series = fit::load_series(std::move(source), o.path, names);
+        const LogData data = parse_log(source.in, o.path, read);
+        print_note(dropped_cut_line_note(data), o.json);
+        series = fit::series_from_log(data, names);
     } else {
         if (o.kind.empty() || o.tau0_s <= 0.0) {
             throw UsageError("a plain numeric file needs --kind rate|phase and --tau0 SECONDS (the input kind is "
@@ -281,6 +286,7 @@ void register_allan(CLI::App& app) {
                     "mean for rows in bursts, as report)")
         ->check(positive_number());
     add_unit_option(cmd, o->units, true);
+    add_drop_cut_line_flag(cmd, o->drop_cut_line);
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
     // A whole number: the grid is 10^(k / per_decade), which puts every power of ten on it. 1000 is more than the
     // distinct m of the first three decades; --grid all is every m. CLI11 had refused 2.5 as a failed conversion.

@@ -159,9 +159,13 @@ void print_analysis_warnings(const fit::DriftAnalysis& analysis) {
     for (const auto& warning : analysis.warnings) std::cout << "  warning: " << warning << "\n";
 }
 
+void print_note(const std::string& note, bool json) {
+    // Beside JSON it goes to the error output, which keeps the standard output one document.
+    if (!note.empty()) (json ? std::cerr : std::cout) << "note: " << note << "\n";
+}
+
 void print_file_notes(const fit::FileAnalysis& file, bool json) {
-    // Beside JSON they go to the error output, which keeps the standard output one document.
-    for (const auto& note : file.notes) (json ? std::cerr : std::cout) << "note: " << note << "\n";
+    for (const auto& note : file.notes) print_note(note, json);
 }
 
 void throw_if_failed(const fit::FileAnalysis& file, bool reasons_printed) {
@@ -172,6 +176,12 @@ void throw_if_failed(const fit::FileAnalysis& file, bool reasons_printed) {
     for (const auto& s : file.series)
         if (!s.analysis) names += (names.empty() ? "" : ", ") + s.name;
     throw DataError(file.path, 0, "not analysed: " + names + " (the reasons are above)");
+}
+
+void add_drop_cut_line_flag(CLI::App* cmd, bool& drop) {
+    cmd->add_flag("--drop-cut-line", drop,
+                  "Driftlab logs: leave out a last line cut without a newline (a killed writer) and say so, rather "
+                  "than refuse the log");
 }
 
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
@@ -188,6 +198,7 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
     cmd->add_option("--sample-period,--tau0", r.sample_period_s,
                     "Plain tables without a time column: sample period [s] (default 1 s per row)")
         ->check(positive_number());
+    add_drop_cut_line_flag(cmd, r.drop_cut_line);
     cmd->add_option("--sequences", r.options.whiteness.sequences, "Whiteness: number M of sequences (paper: 10)")
         ->check(positive_number());
     cmd->add_option("--sequence-length", r.options.whiteness.sequence_length_s,

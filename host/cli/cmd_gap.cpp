@@ -62,6 +62,7 @@ struct GapCommandOptions {
     double to_s = INFINITY;
     std::vector<std::string> excluded;  ///< FROM:TO stretches left out
     double saturated_margin_s = -1.0;   ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
+    bool drop_cut_line = false;         ///< canonical logs: a cut last line is dropped (and noted), not refused
 
     bool windowed() const { return from_s != -INFINITY || to_s != INFINITY; }
 };
@@ -118,8 +119,7 @@ LogData in_window(const GapCommandOptions& o, LogData log) {
 
 // A canonical log the simulator can stand beside: its converter, and the smoothing the replicates must repeat (a
 // window of 1 assumed for a missing one makes every averaged log look broken).
-LogData read_canonical(std::istream& in, const std::string& path, const sim::SimModel& unit) {
-    ReadOptions options;
+LogData read_canonical(std::istream& in, const std::string& path, ReadOptions options, const sim::SimModel& unit) {
     options.assumed_adc_bits = unit.adc.bits;
     LogData log = parse_log(in, path, options);
     if (const auto bits = log.metadata.get_int("adc_bits"); bits && *bits != unit.adc.bits)
@@ -141,10 +141,11 @@ LogData read_canonical(std::istream& in, const std::string& path, const sim::Sim
 Loaded load(const GapCommandOptions& o) {
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     fit::OpenedSource source = fit::open_source(o.path);
+    const ReadOptions read = fit::cut_line_options(source, o.path, o.drop_cut_line);
     if (source.canonical_log) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        return {in_window(o, read_canonical(source.in, o.path, unit)), unit};
+        return {in_window(o, read_canonical(source.in, o.path, read, unit)), unit};
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -269,6 +270,7 @@ void run(const GapCommandOptions& o) {
             refuse_two_outputs_in_one_file(o.model_out, "--model-out", file, "--report");
         }
     const auto [log, unit] = load(o);
+    print_note(dropped_cut_line_note(log), o.json);  // the rows analysed end where the line was cut
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {
         check_output_file(o.model_out, "model file");
@@ -365,6 +367,7 @@ void register_gap(CLI::App& app) {
                     "Leave out every stretch of rows whose sat_flags flag an analysed channel, with SECONDS more on either side "
                     "(e.g. 0.5 for what a shock leaves after the rail), joined as with --exclude")
         ->check(non_negative_number());
+    add_drop_cut_line_flag(cmd, o->drop_cut_line);
     cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(whole_number_in(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)")->check(seed_number());

@@ -44,6 +44,10 @@ void register_gap_eval(CLI::App& app);
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
 
+/// `--drop-cut-line`: every command that reads a driftlab log takes it alike (cmd_fit.cpp; read with
+/// fit::cut_line_options and say host::dropped_cut_line_note).
+void add_drop_cut_line_flag(CLI::App* cmd, bool& drop);
+
 /// `--unit [COLUMN:]UNIT`, repeatable, for a plain table's columns: report and allan take it alike (cmd_report.cpp;
 /// parse with stats::parse_unit_assignment); `takes_phase`: allan, whose phase samples name their integral's unit.
 void add_unit_option(CLI::App* cmd, std::vector<std::string>& units, bool takes_phase = false);
@@ -51,8 +55,10 @@ void add_unit_option(CLI::App* cmd, std::vector<std::string>& units, bool takes_
 /// A series' analysis warnings, one "  warning: ..." line each, as fit and whiteness print them (cmd_fit.cpp).
 void print_analysis_warnings(const fit::DriftAnalysis& analysis);
 
-/// The file's notes (an option it does not use), "note: ..." each: on the standard output, or on the error output
-/// beside JSON (cmd_fit.cpp).
+/// "note: ...": on the standard output, or on the error output beside JSON; nothing for "" (cmd_fit.cpp).
+void print_note(const std::string& note, bool json);
+
+/// The file's notes (an option it does not use, a cut last line dropped), with print_note() (cmd_fit.cpp).
 void print_file_notes(const fit::FileAnalysis& file, bool json);
 
 /// The non-zero exit (DataError) for series that could not be analysed. With `reasons_printed` (a text table gave

@@ -92,10 +92,12 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
     OpenedSource source = open_source(request.path);
     out.canonical_log = source.canonical_log;
     if (!request.time_column.empty()) check_time_column(request.time_column, out);
+    const ReadOptions read = cut_line_options(source, request.path, request.drop_cut_line);
     std::vector<Series> all;
     if (out.canonical_log) {
         // Read here rather than through load_series: the report shows the log as a whole beside the analysis.
-        const LogData log = parse_log(source.in, request.path);
+        const LogData log = parse_log(source.in, request.path, read);
+        if (const std::string note = dropped_cut_line_note(log); !note.empty()) out.notes.push_back(note);
         out.log = overview_of(log);
         all = series_from_log(log, request.names);
     } else {

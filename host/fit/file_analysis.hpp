@@ -22,6 +22,8 @@ struct FileAnalysisRequest {
     /// a table's time column) is refused it when the rows' spacing disagrees, and told it is not used otherwise.
     std::optional<double> sample_period_s;
     AnalysisOptions options;
+    /// Canonical logs: a cut last line (no newline) is dropped and noted rather than refused (--drop-cut-line).
+    bool drop_cut_line = false;
 };
 
 /// A canonical log as a whole, before the time range and the channel choice: what the report's recording table

@@ -123,6 +123,15 @@ OpenedSource open_source(const std::string& path) {
     return source;
 }
 
+ReadOptions cut_line_options(const OpenedSource& source, const std::string& path, bool drop_cut_line) {
+    if (drop_cut_line && !source.canonical_log)
+        throw UsageError("--drop-cut-line is for driftlab logs; " + path +
+                         " is a plain table, which is read whole (its last line needs no newline)");
+    ReadOptions options;
+    options.drop_truncated_tail = drop_cut_line;
+    return options;
+}
+
 bool is_canonical_log(const std::string& path) { return open_source(path).canonical_log; }
 
 std::vector<Series> load_series(OpenedSource source, const std::string& path, const std::vector<std::string>& names,

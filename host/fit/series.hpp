@@ -9,6 +9,7 @@
 
 #include "driftlab/channels.hpp"
 #include "host/log/log_data.hpp"
+#include "host/log/log_reader.hpp"
 #include "host/log/numeric_table.hpp"
 
 namespace driftlab::host::fit {
@@ -52,6 +53,11 @@ struct OpenedSource {
     bool canonical_log = false;
 };
 OpenedSource open_source(const std::string& path);
+
+/// How a command with --drop-cut-line reads `source`: a canonical log with its cut last line dropped when asked (the
+/// reader refuses it otherwise). UsageError naming `path` when it is asked for a plain table, which has no such line
+/// to drop: it is read whole, a last line without newline being an ordinary table's end.
+ReadOptions cut_line_options(const OpenedSource& source, const std::string& path, bool drop_cut_line);
 
 /// load_series() of a source open_source() opened (a command that first asks what the file is reads it once).
 std::vector<Series> load_series(OpenedSource source, const std::string& path, const std::vector<std::string>& names = {},

@@ -17,6 +17,7 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/sim_chain.hpp"
 #include "host/gap/spectral.hpp"
+#include "host/log/log_reader.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/util/channel_name.hpp"
 #include "host/util/error.hpp"
@@ -380,6 +381,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     if (const std::string quiet = noise_free_sentence(r); !quiet.empty()) md << "Not analysed: " << quiet << ".\n\n";
     if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
     if (const std::string left_out = left_out_sentence(r); !left_out.empty()) md << "Left out: " << left_out << ".\n\n";
+    if (const std::string cut = dropped_cut_line_note(log); !cut.empty()) md << "Note: " << cut << ".\n\n";
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";
     md << "Gap score (mean z^2 of the battery over its replicate null; about 1 when the simulator explains the log), "
        << options.replicates << " replicates; " << holdout_description(options.holdout, options.fit_fraction)

@@ -82,7 +82,8 @@ struct LogData {
     std::map<std::string, std::vector<double>> optional_columns;  ///< e.g. "raw_gyro" -> [counts]
     std::vector<LogGap> gaps;
     std::vector<LogCut> cuts;  ///< in row order; none in a log as read
-    bool truncated_tail_dropped = false;  ///< the unterminated last line was dropped (ReadOptions)
+    /// Line number of an unterminated last line the reader dropped (ReadOptions::drop_truncated_tail); 0 = none.
+    std::uint64_t dropped_cut_line = 0;
 
     std::size_t size() const { return t_s.size(); }
     const std::vector<double>& channel(Channel c) const { return counts[channel_index(c)]; }

@@ -106,7 +106,7 @@ public:
         } catch (const DataError& e) {
             if (terminated) throw;
             if (options_.drop_truncated_tail) {
-                log_.truncated_tail_dropped = true;
+                log_.dropped_cut_line = number;
                 return;
             }
             std::string inner = e.what();
@@ -117,7 +117,7 @@ public:
         if (!terminated) {
             if (options_.drop_truncated_tail) {
                 pop_last_row();
-                log_.truncated_tail_dropped = true;
+                log_.dropped_cut_line = number;
                 return;
             }
             refuse_truncated_tail(number, ", so its last value may be cut)");
@@ -139,7 +139,7 @@ private:
     [[noreturn]] void refuse_truncated_tail(std::uint64_t number, const std::string& why) const {
         throw DataError(log_.source_name, number,
                         "truncated last line (no newline at the end of the file; the writer was probably "
-                        "interrupted" + why + "; delete that line to use the rest" + capture_remedy());
+                        "interrupted" + why + "; --drop-cut-line reads the rest without it" + capture_remedy());
     }
 
     /// Where the capture is found: the file the metadata's `capture` key names (record writes its file name there,
@@ -300,6 +300,12 @@ LogData parse_log(std::istream& in, const std::string& source_name, const ReadOp
 LogData read_log(const std::string& path, const ReadOptions& options) {
     std::ifstream in = open_input_file(path);
     return parse_log(in, path, options);
+}
+
+std::string dropped_cut_line_note(const LogData& log) {
+    if (log.dropped_cut_line == 0) return "";
+    return log.source_name + ":" + std::to_string(log.dropped_cut_line) +
+           ": the last line, cut without a newline, was left out (--drop-cut-line); its row is not analysed";
 }
 
 bool starts_as_log(std::istream& in) {

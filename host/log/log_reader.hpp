@@ -5,9 +5,9 @@
 // exactly the header's field count, `# gap: text` events and other `#` comments between rows, blank lines.
 // Rejected, with the line number: a missing or repeated header, a wrong field count, a value that is not
 // a finite number, a t_s not strictly after the previous row's, a non-integer seq, an empty file, a log
-// without rows, and an unterminated last line (unless ReadOptions::drop_truncated_tail; the refusal names the
-// `driftlab decode` command of the recording's capture, found beside the log by its metadata's `capture` name or
-// record's default name).
+// without rows, and an unterminated last line (unless ReadOptions::drop_truncated_tail, the commands'
+// --drop-cut-line; the refusal names that option, and the `driftlab decode` command of the recording's capture, found
+// beside the log by its metadata's `capture` name or record's default name).
 #pragma once
 
 #include <istream>
@@ -31,6 +31,10 @@ LogData read_log(const std::string& path, const ReadOptions& options = {});
 
 /// Parses a log from `in`; `source_name` is used in messages.
 LogData parse_log(std::istream& in, const std::string& source_name, const ReadOptions& options = {});
+
+/// What a command says when it dropped a cut last line (ReadOptions::drop_truncated_tail): "LOG:N: ..." naming the
+/// line, so that the row left out is never a silent loss; "" when the log had none.
+std::string dropped_cut_line_note(const LogData& log);
 
 /// Whether `in` holds a canonical log: its first line that is not blank is the magic line as read_log() takes it
 /// (`# driftlab-log: N`, any version, blanks around the key allowed), or a comment naming `driftlab-log` (a damaged

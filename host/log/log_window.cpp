@@ -27,7 +27,7 @@ LogData keep_runs(const LogData& log, const std::vector<RowRun>& runs) {
     out.source_name = log.source_name;
     out.metadata = log.metadata;
     out.recorded = log.recorded;
-    out.truncated_tail_dropped = log.truncated_tail_dropped && !runs.empty() && runs.back().last == log.size();
+    out.dropped_cut_line = !runs.empty() && runs.back().last == log.size() ? log.dropped_cut_line : 0;
     out.t_s = cut(log.t_s);
     out.seq = cut(log.seq);
     for (std::size_t c = 0; c < kChannelCount; ++c) out.counts[c] = cut(log.counts[c]);

@@ -162,16 +162,6 @@ TEST(DecodeCli, StrictExitsThreeOnUndecodedBytesAndStillWritesEveryGoodRow) {
     EXPECT_EQ(host::read_log(dir.file("intact.csv")).t_s.size(), static_cast<std::size_t>(kSamples));
 }
 
-/// Cuts the log's last row as a kill inside write(2) would: it loses its newline and the tail of its last value.
-/// Returns that line's number.
-std::string cut_last_row(const std::string& log) {
-    std::string text = read_text(log);
-    EXPECT_EQ(text.back(), '\n');
-    text.resize(text.size() - 4);
-    std::ofstream(log, std::ios::binary | std::ios::trunc) << text;
-    return std::to_string(std::count(text.begin(), text.end(), '\n') + 1);
-}
-
 // A log whose writer was killed mid-line is refused (its last value may be cut); when the recording's capture sits
 // beside it under record's default name, the refusal names the decode command that gets that row back whole.
 TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
@@ -186,7 +176,7 @@ TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
     EXPECT_EQ(cut.exit_code, 3) << cut.output;
     EXPECT_NE(cut.output.find(log + ":" + last_line + ": truncated last line"), std::string::npos) << cut.output;
     const std::string command = "`driftlab decode " + cap + " -o LOG.csv`";
-    EXPECT_NE(cut.output.find("delete that line to use the rest, or rebuild the whole log from its capture: " + command),
+    EXPECT_NE(cut.output.find("--drop-cut-line reads the rest without it, or rebuild the whole log from its capture: " + command),
               std::string::npos)
         << cut.output;
 
@@ -202,7 +192,7 @@ TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
     std::filesystem::remove(cap);
     const RunResult alone = run_driftlab({"fit", log}, dir.path());
     EXPECT_EQ(alone.exit_code, 3) << alone.output;
-    EXPECT_NE(alone.output.find("delete that line to use the rest"), std::string::npos) << alone.output;
+    EXPECT_NE(alone.output.find("--drop-cut-line reads the rest without it"), std::string::npos) << alone.output;
     EXPECT_EQ(alone.output.find("driftlab decode"), std::string::npos) << alone.output;
 }
 

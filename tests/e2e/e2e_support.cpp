@@ -5,6 +5,9 @@
 #include <unistd.h>
 #include <fcntl.h>
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -111,6 +114,14 @@ std::string read_text(const std::string& path) {
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+std::string cut_last_row(const std::string& log) {
+    std::string text = read_text(log);
+    EXPECT_EQ(text.back(), '\n');
+    text.resize(text.size() - 4);
+    std::ofstream(log, std::ios::binary | std::ios::trunc) << text;
+    return std::to_string(std::count(text.begin(), text.end(), '\n') + 1);
 }
 
 std::vector<std::string> lines_of(const std::string& text) {

@@ -76,6 +76,9 @@ struct PlainHilRun {
 PlainHilRun plain_hil_with_model(const TempDir& dir, const std::string& name, const std::string& toml);
 
 std::string read_text(const std::string& path);
+/// Cuts the log's last row as a kill inside write(2) would: it loses its newline and the tail of its last value.
+/// Returns that line's number.
+std::string cut_last_row(const std::string& log);
 std::vector<std::string> lines_of(const std::string& text);
 
 }  // namespace driftlab::e2e

@@ -262,10 +262,11 @@ TEST(LogIo, TruncatedLastLineIsReportedOrDroppedOnRequest) {
     drop.drop_truncated_tail = true;
     const LogData a = parse(cut, drop);
     EXPECT_EQ(a.size(), 2u);
-    EXPECT_TRUE(a.truncated_tail_dropped);
+    EXPECT_EQ(a.dropped_cut_line, 6u);
     const LogData b = parse(complete_fields, drop);
     EXPECT_EQ(b.size(), 1u);
-    EXPECT_TRUE(b.truncated_tail_dropped);
+    EXPECT_EQ(b.dropped_cut_line, 5u);
+    EXPECT_EQ(parse(kHead + "0,0,1,2,3,4\n", drop).dropped_cut_line, 0u);  // a whole last line is kept and not named
 }
 
 TEST(LogIo, CommentsBlankLinesAndCrLfAreAccepted) {
