@@ -270,7 +270,7 @@ void run(const GapCommandOptions& o) {
             refuse_two_outputs_in_one_file(o.model_out, "--model-out", file, "--report");
         }
     const auto [log, unit] = load(o);
-    print_note(dropped_cut_line_note(log), o.json);  // the rows analysed end where the line was cut
+    print_note(dropped_cut_line_note(log), o.json);  // only when the rows analysed reach it: --to before it loses nothing
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {
         check_output_file(o.model_out, "model file");
