@@ -28,12 +28,12 @@ std::vector<double> demeaned(const std::vector<double>& y) {
     return out;
 }
 
-// The octave bands of frequency index of an nfft-point transform, from Nyquist down: band j covers [hi / 2, hi) with
-// hi = nfft / 2^(j+1), while its lower index is >= min_lo. f(j, lo, hi) per band.
+// The octave bands of frequency index below Nyquist (`half` = nfft / 2 bins), from Nyquist down: band j covers
+// [hi / 2, hi) with hi = half / 2^j, while its lower index is >= min_lo. f(j, lo, hi) per band.
 template <class F>
-void for_each_octave_band(std::size_t nfft, std::size_t min_lo, F&& f) {
+void for_each_octave_band(std::size_t half, std::size_t min_lo, F&& f) {
     std::size_t j = 0;
-    for (std::size_t hi = nfft / 2; hi / 2 >= min_lo; hi /= 2) f(j++, hi / 2, hi);
+    for (std::size_t hi = half; hi / 2 >= min_lo; hi /= 2) f(j++, hi / 2, hi);
 }
 
 }  // namespace
@@ -65,6 +65,10 @@ BandSpectrum band_spectrum(const std::vector<double>& y) {
     s.length = e.size();
     Eigen::FFT<double>& fft = thread_fft();
     fft.fwd(s.bins, w);
+    // The bands use the bins below Nyquist alone (a real series' upper half mirrors them); the battery keeps eight
+    // spectra per replicate in flight, and whole transforms had doubled what they hold.
+    s.bins.resize(w.size() / 2);
+    s.bins.shrink_to_fit();
     for_each_octave_band(s.bins.size(), 2, [&](std::size_t, std::size_t lo, std::size_t hi) {
         double sum = 0.0;
         for (std::size_t k = lo; k < hi; ++k) sum += std::norm(s.bins[k]);

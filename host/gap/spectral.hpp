@@ -17,7 +17,7 @@ std::vector<double> octave_oadev(const std::vector<double>& y, std::size_t max_m
 /// The transform both band summaries start from: `y` with its mean removed, Hann window, zero-padded to a power of
 /// two. Computed once per series, it serves its own band power and its coherence with every other series.
 struct BandSpectrum {
-    std::vector<std::complex<double>> bins;  ///< FFT of the windowed series, nfft bins
+    std::vector<std::complex<double>> bins;  ///< FFT of the windowed series below Nyquist: its first nfft / 2 bins
     std::vector<double> band_energy;         ///< sum of |X_k|^2 in each band of octave_band_power()
     std::size_t length = 0;                  ///< samples of the series
 };

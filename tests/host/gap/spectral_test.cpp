@@ -1,5 +1,7 @@
-// Octave-grid ADEV, band power, band coherence and lag-band ACF against closed forms for white and AR(1) noise.
+// Octave-grid ADEV, band power, band coherence and lag-band ACF against closed forms for white and AR(1) noise; the
+// spectrum they share against a direct DFT.
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -20,6 +22,26 @@ TEST(Spectral, WhiteNoiseAdevFallsAsOneOverRootM) {
     for (std::size_t j = 0; j < dev.size(); ++j) {
         const double expected = 2.0 / std::sqrt(std::ldexp(1.0, static_cast<int>(j)));
         EXPECT_NEAR(dev[j] / expected, 1.0, 0.08) << "m = " << (1 << j);
+    }
+}
+
+// 100 samples zero-padded to 128 points: the spectrum keeps bins 0..63, the ones below Nyquist the bands use, each the
+// direct DFT of the series with its mean removed and a Hann window over its 100 samples.
+TEST(Spectral, TheSpectrumKeepsTheBinsBelowNyquistOfTheWindowedSeries) {
+    const std::size_t n = 100, nfft = 128;
+    const auto y = white(n, 1.0, 7);
+    const BandSpectrum s = band_spectrum(y);
+    EXPECT_EQ(s.length, n);
+    ASSERT_EQ(s.bins.size(), nfft / 2);
+    double mean = 0.0;
+    for (double v : y) mean += v / static_cast<double>(n);
+    for (std::size_t k = 0; k < nfft / 2; ++k) {
+        std::complex<double> direct = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double hann = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
+            direct += (y[i] - mean) * hann * std::polar(1.0, -2.0 * std::numbers::pi * static_cast<double>(k * i) / static_cast<double>(nfft));
+        }
+        EXPECT_NEAR(std::abs(s.bins[k] - direct), 0.0, 1e-10) << "bin " << k;
     }
 }
 
