@@ -26,6 +26,13 @@ constexpr driftlab::host::cli::RegisterFn kCommands[] = {
     driftlab::host::cli::register_gap_eval,
 };
 
+// What a command printed before it failed (a note, a table) goes out before the error, as it happened: into one file
+// or pipe the buffered standard output had been written at exit, after the error it led to.
+void flush_output_so_far() {
+    std::cout.flush();
+    std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -46,9 +53,11 @@ int main(int argc, char** argv) {
         // CLI11 prints the message (or the help); its own codes (105, 106, ...) would break the documented exit 2.
         return app.exit(e) == 0 ? 0 : driftlab::host::kUsageExitCode;
     } catch (const driftlab::host::Error& e) {
+        flush_output_so_far();
         std::fprintf(stderr, "driftlab: error: %s\n", e.what());
         return e.exit_code();
     } catch (const std::exception& e) {
+        flush_output_so_far();
         std::fprintf(stderr, "driftlab: internal error: %s\n", e.what());
         return 70;
     }

@@ -92,6 +92,13 @@ TEST(CutLineCli, EveryLogReaderLeavesOutTheCutRowOnRequestAndSaysWhichLine) {
                                          dir.path());
     EXPECT_EQ(early.exit_code, 0) << early.output;
     EXPECT_EQ(early.output.find(any_such_note), std::string::npos) << early.output;
+    // A note printed before the command fails comes before the error in one output file, as it was printed.
+    const RunResult too_short = run_driftlab({"gap", cut, "--drop-cut-line", "--from", "590"}, dir.path());
+    EXPECT_EQ(too_short.exit_code, 3) << too_short.output;
+    const std::size_t note_at = too_short.output.find(note), error_at = too_short.output.find("driftlab: error: ");
+    ASSERT_NE(note_at, std::string::npos) << too_short.output;
+    ASSERT_NE(error_at, std::string::npos) << too_short.output;
+    EXPECT_LT(note_at, error_at) << too_short.output;
     // A whole log loses nothing and notes nothing.
     const RunResult whole = run_driftlab({"fit", by_hand, "--drop-cut-line"}, dir.path());
     EXPECT_EQ(whole.exit_code, 0) << whole.output;
