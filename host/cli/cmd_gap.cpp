@@ -235,9 +235,9 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
     // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps. A spread below 1e-6 %
     // is the rounding of the times as written (1.51e-13 % on a hil log), not a timing to report.
     const double jitter_percent = 100.0 * r.timing.dt_jitter_rel;
-    std::printf("timing: %s (%s lost), %s; %s\n", gap::counted(r.timing.sequence_jumps, "sequence jump").c_str(),
-                gap::counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
-                gap::counted(r.timing.gap_events, "gap event").c_str(),
+    std::printf("timing: %s (%s lost), %s; %s\n", counted(r.timing.sequence_jumps, "sequence jump").c_str(),
+                counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
+                counted(r.timing.gap_events, "gap event").c_str(),
                 jitter_percent < 1e-6 ? "row spacing constant (its sd below 1e-6 % of the rows' period)"
                                       : ("row spacing varies by " + significant(jitter_percent, 3) + " % of the rows' period (sd)").c_str());
 }

@@ -42,7 +42,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     const std::size_t n = out.data.t_s.size();
     if (n < kMinAnalysisSamples)
         throw DataError(series.source, 0,
-                        where + ": " + std::to_string(n) + " samples in the selected time range" +
+                        where + ": " + counted(n, "sample") + " in the selected time range" +
                             (series.t_s.empty() ? std::string()
                                                 : " (the series spans t = " + format_double(series.t_s.front()) + " to " +
                                                       format_double(series.t_s.back()) + " s)") +

@@ -279,8 +279,6 @@ std::string noise_free_sentence(const GapResult& r) {
                                            "filtered signal, or a sensor far quieter than one count?)";
 }
 
-std::string counted(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
-
 std::string saturated_channels_sentence(const GapResult& r) {
     std::string out;
     for (const auto& s : r.saturated)

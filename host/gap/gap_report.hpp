@@ -15,9 +15,6 @@
 
 namespace driftlab::host::gap {
 
-/// "1 cell", "2 cells": a count and its noun, plural by "s".
-std::string counted(std::size_t n, const std::string& noun);
-
 /// A level step's size in counts with its value in the channel's unit (deg/s, mg) through `model`'s converter,
 /// "1.50 counts (0.264 deg/s)": a plain table's counts are its own LSB, which a reader should not have to convert.
 std::string step_size_text(const GapModel& model, Channel c, double counts, int decimals);

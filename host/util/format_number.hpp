@@ -2,6 +2,7 @@
 // written to the precision of its uncertainty, for people.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace driftlab::host {
@@ -35,5 +36,8 @@ std::string significant_plain(double value, int digits);
 
 /// `value` with `decimals` digits after the point (printf %f), for tables and sentences.
 std::string fixed_point(double value, int decimals);
+
+/// "1 cell", "2 cells": a count and its noun, plural by "s".
+std::string counted(std::size_t n, const std::string& noun);
 
 }  // namespace driftlab::host

@@ -298,6 +298,14 @@ TEST(DriftFit, TooShortOrConstantDataIsADataErrorNamingTheSeries) {
         EXPECT_NE(std::string(e.what()).find("series 'sim': 10 samples in the selected time range"), std::string::npos)
             << e.what();
     }
+    AnalysisOptions only_one;
+    only_one.t_max_s = s.t_s.front();
+    try {
+        analyse_drift(s, only_one);
+        FAIL() << "1 sample accepted";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("series 'sim': 1 sample in the selected time range ("), std::string::npos) << e.what();
+    }
     s.values.assign(s.values.size(), 512.0);
     EXPECT_THROW(analyse_drift(s), DataError);
     // Times before power-on (a plain table's clock): refused, not fitted into NaN residuals.

@@ -26,6 +26,7 @@
 #include "host/report/gnuplot.hpp"
 #include "sim/effects/adc_dnl.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
 namespace {
