@@ -391,9 +391,10 @@ void run_hil_command(const HilCliOptions& o) {
     // Every count that takes an output away from the log, so that outputs and rows add up from the text alone.
     if (!effects.empty()) out << "effects simulated: " << effects << "\n";
     out << "wrote " << s.host.rows << " rows to " << path;
-    if (s.host.rows_missing_raw > 0) out << " (" << s.host.rows_missing_raw << " samples not logged: their RAW frame was lost)";
+    if (s.host.rows_missing_raw > 0)
+        out << " (" << counted(s.host.rows_missing_raw, "sample") << " not logged: their RAW frame was lost)";
     if (s.host.empty_samples > 0)
-        out << " (" << s.host.empty_samples << " samples not logged: n_window 0, no estimate behind their values)";
+        out << " (" << counted(s.host.empty_samples, "sample") << " not logged: n_window 0, no estimate behind their values)";
     out << "\n"
               << "frames: sent " << s.to_host.packets_sent << ", received " << s.host.frames_received << ", lost "
               << s.host.frames_lost << " (crc errors " << s.decoder.bad_crc << ")\n"
