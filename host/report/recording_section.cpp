@@ -112,7 +112,7 @@ Rows recording_rows(const fit::LogOverview& log) {
                         " to " + significant_plain(log.last_t_s, 6) + " s after power-on");
     add("samples", std::to_string(log.rows) +
                        (log.gap_events == 0 ? ""
-                        : ", " + std::to_string(log.gap_events) + (log.gap_events == 1 ? " link gap" : " link gaps") +
+                        : ", " + counted(log.gap_events, "link gap") +
                               " (# gap: lines)"));
     add("output rate", output_rate_text(log));
     add("smoothing", smoothing_text(m));
