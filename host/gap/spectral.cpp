@@ -63,12 +63,10 @@ BandSpectrum band_spectrum(const std::vector<double>& y) {
         w[i] = e[i] * (0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / n));
     BandSpectrum s;
     s.length = e.size();
-    Eigen::FFT<double>& fft = thread_fft();
-    fft.fwd(s.bins, w);
     // The bands use the bins below Nyquist alone (a real series' upper half mirrors them); the battery keeps eight
     // spectra per replicate in flight, and whole transforms had doubled what they hold.
+    s.bins = half_spectrum(w);
     s.bins.resize(w.size() / 2);
-    s.bins.shrink_to_fit();
     for_each_octave_band(s.bins.size(), 2, [&](std::size_t, std::size_t lo, std::size_t hi) {
         double sum = 0.0;
         for (std::size_t k = lo; k < hi; ++k) sum += std::norm(s.bins[k]);

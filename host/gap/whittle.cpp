@@ -27,11 +27,10 @@ namespace {
 
 // sum_t m_t x_t e^{-i w_j t} at the periodogram's frequencies j = 1..(n-1)/2: x (its first n entries) under the part's
 // taper, as the part's differences are transformed.
-std::vector<std::complex<double>> tapered_transform(Eigen::FFT<double>& fft, const PartPeriodogram& p, const std::vector<double>& x) {
+std::vector<std::complex<double>> tapered_transform(const PartPeriodogram& p, const std::vector<double>& x) {
     std::vector<double> v(p.length);
     for (std::size_t t = 0; t < p.length; ++t) v[t] = p.taper[t] * x[t];
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, v);
+    const std::vector<std::complex<double>> spec = half_spectrum(v);
     return {spec.begin() + 1, spec.begin() + 1 + static_cast<std::ptrdiff_t>(p.power.size())};
 }
 
@@ -41,14 +40,13 @@ AbsorbedColumns absorbed_columns(const Eigen::MatrixXd& x, const PartPeriodogram
     const Eigen::MatrixXd q = orthonormal_basis(x);
     AbsorbedColumns a;
     a.differences = static_cast<std::size_t>(samples - 1);
-    Eigen::FFT<double>& fft = thread_fft();
     for (Eigen::Index k = 0; k < q.cols(); ++k) {
         std::vector<double> dq(p.length);
         for (std::size_t t = 0; t < p.length; ++t) {
             const auto i = static_cast<Eigen::Index>(t);
             dq[t] = q(i + 1, k) - q(i, k);
         }
-        a.alpha.push_back(tapered_transform(fft, p, dq));
+        a.alpha.push_back(tapered_transform(p, dq));
         std::vector<double> b(a.differences);
         double tail = 0.0;
         for (std::size_t j = a.differences; j-- > 0;) b[j] = tail += q(static_cast<Eigen::Index>(j + 1), k);
@@ -87,13 +85,13 @@ PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector
     if (p.count < kMinDifferences) throw std::invalid_argument("part_periodogram: too few differences in the part");
     double h2 = 0.0;
     for (double v : h) h2 += v * v;
-    Eigen::FFT<double>& fft = thread_fft();
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, d);
-    for (std::size_t j = 1; 2 * j < p.length; ++j) p.power.push_back(std::norm(spec[j]) / h2);
+    const std::vector<std::complex<double>> half = half_spectrum(d);
+    for (std::size_t j = 1; 2 * j < p.length; ++j) p.power.push_back(std::norm(half[j]) / h2);
     // Taper overlap sum_t h_t h_{t+tau}: the taper's autocorrelation, zero-padded so that it does not wrap.
     const std::size_t padded = smooth_length_at_least(2 * p.length);
     h.resize(padded, 0.0);
+    Eigen::FFT<double>& fft = thread_fft();
+    std::vector<std::complex<double>> spec;
     fft.fwd(spec, h);
     for (auto& s : spec) s = std::norm(s);
     std::vector<double> overlap;
@@ -204,9 +202,7 @@ std::vector<double> component_periodogram(const OutputSpectrum& model, const std
     std::vector<double> b = differenced_autocovariance(model, floor_acov, p.length);
     for (std::size_t tau = 0; tau < p.length; ++tau) b[tau] *= p.mask_overlap[tau];
     // sum over tau = -(n-1)..n-1 of b(|tau|) e^{-i w tau} = 2 Re FFT(b)_j - b(0).
-    Eigen::FFT<double>& fft = thread_fft();
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, b);
+    const std::vector<std::complex<double>> spec = half_spectrum(b);
     std::vector<double> out(p.power.size());
     for (std::size_t j = 0; j < out.size(); ++j) out[j] = 2.0 * spec[j + 1].real() - b[0];
     if (p.absorbed) {
@@ -217,7 +213,7 @@ std::vector<double> component_periodogram(const OutputSpectrum& model, const std
         std::vector<std::vector<double>> cb(k_count);
         for (std::size_t k = 0; k < k_count; ++k) {
             cb[k] = differenced_covariance_times(model, floor_acov, a.load[k]);
-            beta[k] = tapered_transform(fft, p, cb[k]);
+            beta[k] = tapered_transform(p, cb[k]);
         }
         for (std::size_t k = 0; k < k_count; ++k)
             for (std::size_t l = 0; l < k_count; ++l) {

@@ -4,6 +4,9 @@
 // series of the same length thousands of times per fit.
 #pragma once
 
+#include <complex>
+#include <vector>
+
 #include <unsupported/Eigen/FFT>
 
 namespace driftlab::host {
@@ -12,6 +15,23 @@ namespace driftlab::host {
 inline Eigen::FFT<double>& thread_fft() {
     thread_local Eigen::FFT<double> fft;
     return fft;
+}
+
+/// Bins 0 .. n/2 (n/2 + 1 of them, n = x.size()) of the transform of the real series x, by this thread's FFT object.
+/// The upper bins mirror these, and the transform computes these alone: a whole spectrum only adds a copy into
+/// a vector twice as long, for readers of the frequencies below Nyquist.
+inline std::vector<std::complex<double>> half_spectrum(const std::vector<double>& x) {
+    if (x.size() < 2) return {x.begin(), x.end()};  // one point is its own transform (Eigen's kissfft faults on it)
+    Eigen::FFT<double>& fft = thread_fft();
+    // The flag is the shared object's: cleared on the way out, whatever happens, so later whole transforms stay whole.
+    struct ClearOnExit {
+        Eigen::FFT<double>& fft;
+        ~ClearOnExit() { fft.ClearFlag(Eigen::FFT<double>::HalfSpectrum); }
+    } clear{fft};
+    fft.SetFlag(Eigen::FFT<double>::HalfSpectrum);
+    std::vector<std::complex<double>> bins;
+    fft.fwd(bins, x);
+    return bins;
 }
 
 }  // namespace driftlab::host
