@@ -86,6 +86,20 @@ TEST(LogIo, WriterOutputReadsBackExactlyWithMetadataGapsAndOptionalColumns) {
     std::filesystem::remove(path);
 }
 
+// The analyses hold the log for their whole run; grown row by row, 1025 rows would have held room for 2048.
+TEST(LogIo, TheColumnsReadHoldNoRoomBeyondTheirRows) {
+    std::string text = "# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro\n";
+    constexpr std::size_t kRows = 1025;
+    for (std::size_t k = 0; k < kRows; ++k) text += std::to_string(k + 1) + "," + std::to_string(k) + ",512,500,501,620,512\n";
+    const LogData log = parse(text);
+    ASSERT_EQ(log.size(), kRows);
+    EXPECT_EQ(log.t_s.capacity(), kRows);
+    EXPECT_EQ(log.seq.capacity(), kRows);
+    for (std::size_t c = 0; c < kChannelCount; ++c) EXPECT_EQ(log.counts[c].capacity(), kRows) << kChannelNames[c];
+    ASSERT_EQ(log.optional_columns.at("raw_gyro").size(), kRows);
+    EXPECT_EQ(log.optional_columns.at("raw_gyro").capacity(), kRows);
+}
+
 TEST(LogIo, WriterFlushesOnlyWholeLines) {
     const std::string path = temp_path("whole_lines.csv");
     LogMetadata meta;
