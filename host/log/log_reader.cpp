@@ -130,8 +130,8 @@ public:
             throw DataError(log_.source_name, lines,
                             "missing header: no 't_s,seq,gyro,accel_x,accel_y,accel_z' line before the end of file");
         if (log_.t_s.empty()) throw DataError(log_.source_name, lines, "log has a header but no data rows");
-        // Grown row by row, a column holds up to twice its rows (1.45 times at 360 000), and the analyses keep the
-        // log for their whole run: about 13 MB of an hour at 100 Hz.
+        // Grown row by row, a column holds room for up to twice its rows (524 288 at 360 000), and the analyses keep
+        // the log for their whole run: 16 MB of gap's peak heap on an hour at 100 Hz.
         log_.t_s.shrink_to_fit();
         log_.seq.shrink_to_fit();
         for (auto& column : log_.counts) column.shrink_to_fit();
