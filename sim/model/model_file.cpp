@@ -180,6 +180,31 @@ void check_raw_noise(const toml::table& root, const SimModel& m) {
     }
 }
 
+// Each number is finite alone, but a channel's front end multiplies and divides them: a span of 1e-308 makes the
+// amplifier's gain overflow, and the converter was handed inf times a zero offset, NaN, at the first conversion.
+// Checked, as the raw noise, once [adc] and the channel are read, at the channel table's line (else [adc]'s).
+void check_front_ends(const toml::table& root, const SimModel& m) {
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        const ChannelModel& ch = m.channels[i];
+        const FrontEnd fe(ch.front_end, m.adc.vref_v);
+        const double at_rest_v = fe.amplifier_v(fe.sensor_v(ch.input_unit));
+        const double counts_per_unit = fe.counts_per_unit(std::ldexp(1.0, m.adc.bits));
+        if (std::isfinite(fe.gain()) && fe.gain() > 0.0 && std::isfinite(at_rest_v) && std::isfinite(counts_per_unit))
+            continue;
+        const std::string table = std::string("channels.") + kChannelNames[i];
+        const std::string u = channel_unit(static_cast<Channel>(i));
+        const toml::node* here = root.at_path(table).node();
+        if (here == nullptr) here = root.get("adc");
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "its front end leaves the range of a double: amplifier gain vref_v / 2 / (sensitivity_v_per_%s x "
+                      "span_%s) = %g V/V, converter input at input_%s = %g V, %g counts per %s; each must be finite and "
+                      "the gain above 0",
+                      u.c_str(), u.c_str(), fe.gain(), u.c_str(), at_rest_v, counts_per_unit, u.c_str());
+        throw ConfigError(table, here ? line_of(*here) : 0, text);
+    }
+}
+
 // Where a FirmwareAdjust runs (hil), the firmware fields checked are not the file's alone: whose figures they are.
 constexpr const char* kAdjustedConfig =
     "on the configuration that would run: the file's firmware fields with any the preset or the command line sets "
@@ -325,6 +350,7 @@ SimModel read_model(const toml::table& root, SimModel m, const FirmwareAdjust& a
         }
         chans.finish();
     }
+    check_front_ends(root, m);
     check_raw_noise(root, m);
     if (const toml::table* t = r.table("effects")) read_effects(*t, m.effects);
     check_temperature_source(root, m);

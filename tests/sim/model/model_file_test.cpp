@@ -178,6 +178,27 @@ TEST(ModelFile, RawNoiseTooSmallToCalibrateIsRejected) {
     EXPECT_NE(span.find("m.toml:1: channels.gyro.raw_noise_std_dps: is "), std::string::npos) << span;
 }
 
+// Each number finite alone, but not what the front end makes of them: a span of 1e-308 gave the amplifier an
+// infinite gain, and the run's first conversion an internal error (NaN at the converter input, blamed on an effect).
+TEST(ModelFile, AFrontEndBeyondTheRangeOfADoubleIsRejected) {
+    const std::string tiny_span = error_of("name = \"x\"\n[channels.accel_x]\nspan_g = 1e-308\n");
+    EXPECT_NE(tiny_span.find("m.toml:2: channels.accel_x: its front end leaves the range of a double: amplifier gain "
+                             "vref_v / 2 / (sensitivity_v_per_g x span_g) = inf V/V"),
+              std::string::npos)
+        << tiny_span;
+    // A gain that underflows to 0 would stick the channel at mid-scale whatever its input.
+    const std::string huge = error_of("[channels.gyro]\nsensitivity_v_per_dps = 1e300\nspan_dps = 1e300\n");
+    EXPECT_NE(huge.find("channels.gyro: its front end leaves the range of a double: amplifier gain vref_v / 2 / "
+                        "(sensitivity_v_per_dps x span_dps) = 0 V/V"),
+              std::string::npos)
+        << huge;
+    // An input the transducer turns into more volts than a double holds.
+    const std::string input = error_of("[channels.accel_z]\nsensitivity_v_per_g = 1e200\ninput_g = 1e200\n");
+    EXPECT_NE(input.find("converter input at input_g = inf V"), std::string::npos) << input;
+    // Extreme but representable front ends still load.
+    EXPECT_NO_THROW(parse_model("[channels.gyro]\nspan_dps = 1e-6\nraw_noise_std_dps = 0\n", "m.toml"));
+}
+
 TEST(ModelFile, SyntaxErrorNamesTheLine) {
     const std::string e = error_of("name = \"a\"\n[adc\n");
     EXPECT_NE(e.find("m.toml:2"), std::string::npos) << e;
