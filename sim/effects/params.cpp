@@ -40,6 +40,14 @@ std::string first_token(std::string_view key) { return std::string(key.substr(0,
 
 }  // namespace
 
+std::string beyond_model_magnitude(double v) {
+    if (!std::isfinite(v) || std::fabs(v) <= kMaxModelMagnitude) return "";
+    std::ostringstream os;
+    os << "got " << v << ": beyond +-" << kMaxModelMagnitude
+       << ", where the simulation's arithmetic overflows (a size times counts per unit, squared for a variance)";
+    return os.str();
+}
+
 std::string TomlReader::full_key(std::string_view key) const {
     return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
 }
@@ -68,6 +76,7 @@ double TomlReader::number(const toml::node& node, std::string_view key, std::str
         os << expected << ", got " << *v;
         throw ConfigError(full_key(key), line_of(node), os.str());
     }
+    if (const std::string why = beyond_model_magnitude(*v); !why.empty()) throw ConfigError(full_key(key), line_of(node), why);
     return *v;
 }
 

@@ -19,6 +19,15 @@ namespace driftlab::sim {
 /// Range a number must lie in. All but `limit` (a clipping rail, +-inf = none) require a finite value.
 enum class Check : std::uint8_t { any, nonneg, positive, unit_interval, limit };
 
+/// The largest magnitude of a model file's finite numbers. Near the largest double, the chain's arithmetic (a size
+/// times counts per unit, squared for a variance) overflows mid-run into inf and NaN; no sensor described in these
+/// units (V, s, Hz, deg/s, g, counts, ppm) comes near it.
+inline constexpr double kMaxModelMagnitude = 1e100;
+
+/// Why `v` may not stand in a model file for its size, or empty: "got V: beyond +-1e100, ...". Infinities are left to
+/// the caller's range check.
+std::string beyond_model_magnitude(double v);
+
 /// Reads a parameter struct from a TOML table; unknown keys and bad values throw ConfigError naming the key.
 class TomlReader {
 public:

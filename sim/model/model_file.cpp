@@ -36,6 +36,7 @@ public:
         const auto v = n->value<double>();  // toml++ converts integers too
         if (!v || !n->is_number()) fail(key, *n, "expected a number");
         if (!std::isfinite(*v)) fail(key, *n, "expected a finite number");
+        if (const std::string why = beyond_model_magnitude(*v); !why.empty()) fail(key, *n, why);
         switch (range) {
         case Range::any: break;
         case Range::nonneg:

@@ -189,6 +189,14 @@ TEST(EffectRegistry, BadValuesNameTheKeyAndTheExpectedUnit) {
     EXPECT_NE(band.find("f_high_hz: expected f_high_hz > f_low_hz"), std::string::npos) << band;
     const std::string tones = error_of("vibration", "tone_hz = [1.0, 2.0]\ntone_dps = [0.1]");
     EXPECT_NE(tones.find("tone_dps: expected 2 values"), std::string::npos) << tones;
+    // Finite, but its run had ended in NaN at the converter input, reported as an internal error.
+    const std::string huge = error_of("flicker", "b_dps = 1e308");
+    EXPECT_NE(huge.find("effects.flicker.b_dps: got 1e+308: beyond +-1e+100, where the simulation's arithmetic overflows"),
+              std::string::npos)
+        << huge;
+    EXPECT_NE(error_of("vibration", "tone_hz = [1.0]\ntone_dps = [-2e100]").find("tone_dps: got -2e+100: beyond"),
+              std::string::npos);
+    EXPECT_NO_THROW(test::effect_from("flicker", "b_dps = 1e100"));
 }
 
 TEST(EffectRegistry, UnknownEffectNameIsAConfigErrorListingTheKnownOnes) {

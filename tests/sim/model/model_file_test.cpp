@@ -187,14 +187,17 @@ TEST(ModelFile, AFrontEndBeyondTheRangeOfADoubleIsRejected) {
               std::string::npos)
         << tiny_span;
     // A gain that underflows to 0 would stick the channel at mid-scale whatever its input.
-    const std::string huge = error_of("[channels.gyro]\nsensitivity_v_per_dps = 1e300\nspan_dps = 1e300\n");
+    const std::string huge = error_of("[adc]\nvref_v = 1e-300\n[channels.gyro]\nsensitivity_v_per_dps = 1e100\nspan_dps = 1e100\n");
     EXPECT_NE(huge.find("channels.gyro: its front end leaves the range of a double: amplifier gain vref_v / 2 / "
                         "(sensitivity_v_per_dps x span_dps) = 0 V/V"),
               std::string::npos)
         << huge;
     // An input the transducer turns into more volts than a double holds.
-    const std::string input = error_of("[channels.accel_z]\nsensitivity_v_per_g = 1e200\ninput_g = 1e200\n");
+    const std::string input = error_of("[channels.accel_z]\nspan_g = 1e-250\ninput_g = 1e100\n");
     EXPECT_NE(input.find("converter input at input_g = inf V"), std::string::npos) << input;
+    // A number near the largest double is refused at its key, whatever the front end makes of it.
+    const std::string c1 = error_of("[channels.gyro]\ndrift_c1_counts = -1e200\n");
+    EXPECT_NE(c1.find("m.toml:2: channels.gyro.drift_c1_counts: got -1e+200: beyond +-1e+100"), std::string::npos) << c1;
     // Extreme but representable front ends still load.
     EXPECT_NO_THROW(parse_model("[channels.gyro]\nspan_dps = 1e-6\nraw_noise_std_dps = 0\n", "m.toml"));
 }
