@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -201,7 +202,9 @@ void check_front_ends(const toml::table& root, const SimModel& m) {
                       "its front end leaves the range of a double: amplifier gain vref_v / 2 / (sensitivity_v_per_%s x "
                       "span_%s) = %g V/V, converter input at input_%s = %g V, %g counts per %s; each must be finite and "
                       "the gain above 0",
-                      u.c_str(), u.c_str(), fe.gain(), u.c_str(), at_rest_v, counts_per_unit, u.c_str());
+                      u.c_str(), u.c_str(), fe.gain(), u.c_str(),
+                      std::isnan(at_rest_v) ? std::numeric_limits<double>::quiet_NaN() : at_rest_v,  // not "-nan" (inf x 0)
+                      counts_per_unit, u.c_str());
         throw ConfigError(table, here ? line_of(*here) : 0, text);
     }
 }

@@ -183,7 +183,7 @@ TEST(ModelFile, RawNoiseTooSmallToCalibrateIsRejected) {
 TEST(ModelFile, AFrontEndBeyondTheRangeOfADoubleIsRejected) {
     const std::string tiny_span = error_of("name = \"x\"\n[channels.accel_x]\nspan_g = 1e-308\n");
     EXPECT_NE(tiny_span.find("m.toml:2: channels.accel_x: its front end leaves the range of a double: amplifier gain "
-                             "vref_v / 2 / (sensitivity_v_per_g x span_g) = inf V/V"),
+                             "vref_v / 2 / (sensitivity_v_per_g x span_g) = inf V/V, converter input at input_g = nan V"),
               std::string::npos)
         << tiny_span;
     // A gain that underflows to 0 would stick the channel at mid-scale whatever its input.
