@@ -164,6 +164,15 @@ void read_channel(TableReader& r, Channel c, ChannelModel& ch) {
     r.finish();
 }
 
+// Where a check of a channel's chain, which joins [adc] and the channel's table, points: at `key` in the channel's
+// table when the file sets it, else at the channel's table, else at [adc]; 0 when the file sets none of them.
+std::uint32_t channel_check_line(const toml::table& root, const std::string& table, const std::string& key = {}) {
+    const toml::node* here = key.empty() ? nullptr : root.at_path(table + "." + key).node();
+    if (here == nullptr) here = root.at_path(table).node();
+    if (here == nullptr) here = root.get("adc");
+    return here ? line_of(*here) : 0;
+}
+
 // The raw noise in counts depends on [adc] and the channel's front end, either of which the file may set: checked
 // for every channel once both are read, at the noise key's line, else the channel table's, else the [adc] table's.
 void check_raw_noise(const toml::table& root, const SimModel& m) {
@@ -173,10 +182,7 @@ void check_raw_noise(const toml::table& root, const SimModel& m) {
         const double raw_counts = ch.raw_noise_std_unit * FrontEnd(ch.front_end, m.adc.vref_v).counts_per_unit(std::ldexp(1.0, m.adc.bits));
         if (!(raw_counts > 0.0 && raw_counts < kMinCalibratedRawStdCounts)) continue;
         const std::string table = std::string("channels.") + kChannelNames[i];
-        const toml::node* here = root.at_path(table + "." + key).node();
-        if (here == nullptr) here = root.at_path(table).node();
-        if (here == nullptr) here = root.get("adc");
-        throw ConfigError(table + "." + key, here ? line_of(*here) : 0,
+        throw ConfigError(table + "." + key, channel_check_line(root, table, key),
                           "is " + std::to_string(raw_counts) + " counts; the calibration through the quantiser needs 0 or >= " +
                               std::to_string(kMinCalibratedRawStdCounts) + " counts");
     }
@@ -195,8 +201,6 @@ void check_front_ends(const toml::table& root, const SimModel& m) {
             continue;
         const std::string table = std::string("channels.") + kChannelNames[i];
         const std::string u = channel_unit(static_cast<Channel>(i));
-        const toml::node* here = root.at_path(table).node();
-        if (here == nullptr) here = root.get("adc");
         char text[320];
         std::snprintf(text, sizeof text,
                       "its front end leaves the range of a double: amplifier gain vref_v / 2 / (sensitivity_v_per_%s x "
@@ -205,7 +209,7 @@ void check_front_ends(const toml::table& root, const SimModel& m) {
                       u.c_str(), u.c_str(), fe.gain(), u.c_str(),
                       std::isnan(at_rest_v) ? std::numeric_limits<double>::quiet_NaN() : at_rest_v,  // not "-nan" (inf x 0)
                       counts_per_unit, u.c_str());
-        throw ConfigError(table, here ? line_of(*here) : 0, text);
+        throw ConfigError(table, channel_check_line(root, table), text);
     }
 }
 
