@@ -14,6 +14,7 @@
 #include "host/report/gnuplot.hpp"
 #include "host/report/json_out.hpp"
 #include "host/stats/allan_pipeline.hpp"
+#include "host/stats/lone_values.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
@@ -247,6 +248,7 @@ void run(const AllanCommandOptions& o) {
         const stats::SampleUnit u =
             s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(unit ? unit->name : "unit");
         const std::optional<std::string> packing = stats::packing_caveat(r, r.primary().curves.front());
+        const std::optional<std::string> lone = stats::lone_values_warning(s.t_s, s.values);
         if (o.json) {
             json c = version_json(r.primary(), u);
             c["tau0_s"] = tau0;
@@ -255,6 +257,7 @@ void run(const AllanCommandOptions& o) {
             c["packed_samples"] = r.packed_samples;
             c["packed_most_slots"] = r.packed_most_slots;
             c["packing_warning"] = packing ? json(*packing) : json(nullptr);
+            c["lone_values_warning"] = lone ? json(*lone) : json(nullptr);
             c["drift_removed"] = r.drift_removed.has_value();
             c["drift_status"] = r.drift_status_name();
             if (r.drift) c["drift"] = {{"C1", r.drift->c1}, {"C2", r.drift->c2}, {"T_s", r.drift->t_s}};
@@ -263,6 +266,7 @@ void run(const AllanCommandOptions& o) {
         } else {
             std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(), s.name.c_str(),
                         tau0, r.samples, r.gap_samples, r.drift_removed ? "removed (eq. 1)" : r.drift_status_words().c_str());
+            if (lone) std::printf("  warning: %s\n", lone->c_str());
             if (packing) std::printf("  warning: %s\n", packing->c_str());
             if (r.drift_removed) print_version("drift removed", *r.drift_removed, u, r.longest_gap_free_s);
             print_version(r.drift_removed ? "raw" : "as given", r.raw, u, r.longest_gap_free_s);

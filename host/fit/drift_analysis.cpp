@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
+#include "host/stats/lone_values.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -80,6 +82,9 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     out.plain = parameter_intervals(out.fit, 1.0);
     out.widened = out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
 
+    // First: a corrupt row is in every figure below.
+    if (auto lone = stats::lone_values_warning(out.data.t_s, out.data.values))
+        out.warnings.push_back(std::move(*lone));
     // A plain table's row index read as seconds had been printed as seconds, unremarked.
     if (out.data.index_period_s > 0.0)
         out.warnings.push_back("no time column: t is the row index x " + format_double(out.data.index_period_s) +

@@ -1,0 +1,71 @@
+#include "host/stats/lone_values.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "host/util/format_number.hpp"
+
+namespace driftlab::host::stats {
+
+namespace {
+// Rows named in a warning; the count says how many more there are.
+constexpr std::size_t kNamedRows = 5;
+// 1 / Phi^-1(3/4): the median absolute value of a zero-mean normal variable, in standard deviations.
+constexpr double kMadToSigma = 1.482602218505602;
+}  // namespace
+
+LoneValues lone_values(const std::vector<double>& x) {
+    LoneValues out;
+    if (x.size() < 3) return out;
+    // Halved differences cannot overflow, whatever finite values x holds; the tests below compare them only with
+    // each other.
+    std::vector<double> half(x.size() - 1);
+    for (std::size_t k = 1; k < x.size(); ++k) half[k - 1] = x[k] / 2.0 - x[k - 1] / 2.0;
+    std::vector<double> magnitude(half.size());
+    std::transform(half.begin(), half.end(), magnitude.begin(), [](double h) { return std::fabs(h); });
+    std::vector<double> sorted = magnitude;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    double scale = kMadToSigma * sorted[sorted.size() / 2];
+    if (scale == 0.0) {
+        // A series that mostly repeats one code: its step is the scale.
+        for (double m : magnitude)
+            if (m > 0.0 && (scale == 0.0 || m < scale)) scale = m;
+        if (scale == 0.0) return out;  // a constant series
+    }
+    const double largest = *std::max_element(magnitude.begin(), magnitude.end());
+    double total = 0.0, lone = 0.0;
+    for (double m : magnitude) total += (m / largest) * (m / largest);
+    for (std::size_t k = 1; k + 1 < x.size(); ++k) {
+        const double before = magnitude[k - 1], after = magnitude[k];
+        const double smaller = std::min(before, after);
+        if (smaller > kLoneFactor * scale && std::fabs(half[k - 1] + half[k]) < smaller / 2.0) {
+            out.indices.push_back(k);
+            lone += (before / largest) * (before / largest) + (after / largest) * (after / largest);
+        }
+    }
+    out.variance_share = total > 0.0 ? lone / total : 0.0;
+    return out;
+}
+
+std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x) {
+    const LoneValues found = lone_values(x);
+    if (found.indices.empty() || found.variance_share < kLoneShare) return std::nullopt;
+    const std::size_t n = found.indices.size();
+    std::string text = std::to_string(n) + (n == 1 ? " lone value (" : " lone values (");
+    for (std::size_t i = 0; i < std::min(n, kNamedRows); ++i) {
+        const std::size_t k = found.indices[i];
+        text += (i ? ", t = " : "t = ") + significant(t_s[k], 7) + " s: " + significant(x[k], 6);
+    }
+    if (n > kNamedRows) text += " and " + std::to_string(n - kNamedRows) + " more";
+    const bool one = n == 1;
+    text += ") " + std::string(one ? "carries " : "carry ") + significant(100.0 * found.variance_share, 3) +
+            " % of the sample-to-sample variance: " + (one ? "it lies" : "each lies") + " over " +
+            significant(kLoneFactor, 3) +
+            " robust standard deviations from both neighbours, which agree with each other, as a corrupt row does. " +
+            (one ? "It inflates" : "They inflate") +
+            " the noise level, the short-tau Allan deviation and the fit's rms: correct or remove " +
+            (one ? "that row" : "those rows");
+    return text;
+}
+
+}  // namespace driftlab::host::stats
