@@ -61,10 +61,11 @@ std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, c
     text += ") " + std::string(one ? "carries " : "carry ") + significant(100.0 * found.variance_share, 3) +
             " % of the sample-to-sample variance: " + (one ? "it lies" : "each lies") + " over " +
             significant(kLoneFactor, 3) +
-            " robust standard deviations from both neighbours, which agree with each other, as a corrupt row does. " +
+            " robust standard deviations from both neighbours, which agree with each other: a corrupt row, or an "
+            "impulse from the sensor (`driftlab gap` tests its effect `spikes`). " +
             (one ? "It inflates" : "They inflate") +
             " the noise level, the short-tau Allan deviation and the fit's rms: correct or remove " +
-            (one ? "that row" : "those rows");
+            (one ? "that row" : "those rows") + " if corrupt";
     return text;
 }
 
