@@ -11,6 +11,7 @@
 #include "host/cli/commands.hpp"
 #include "host/fit/series.hpp"
 #include "host/log/log_reader.hpp"
+#include "host/log/log_window.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/report/json_out.hpp"
 #include "host/stats/allan_pipeline.hpp"
@@ -36,6 +37,7 @@ struct AllanCommandOptions {
     bool keep_drift = false;
     bool remove_drift = false;          ///< plain rate files: fit and remove eq. 1 as for logs
     bool drop_cut_line = false;         ///< logs: a cut last line is dropped (and noted), not refused
+    std::vector<TimeWindow> excluded;   ///< --exclude: rows left out, gap slots on the grid
     bool json = false;
     std::string plot_dir;
 };
@@ -218,6 +220,8 @@ void run(const AllanCommandOptions& o) {
                                     : "not removed: a plain file is analysed as given";
         series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
+    if (!o.excluded.empty())
+        for (fit::Series& s : series) s = fit::rows_kept(s, -INFINITY, INFINITY, o.excluded);
     // Phase samples are in their integral's unit (deg for deg/s); the assignment holds the deviations' (the rate's).
     const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit", req.kind);
     std::vector<std::string> columns;
@@ -291,6 +295,8 @@ void register_allan(CLI::App& app) {
         ->check(positive_number());
     add_unit_option(cmd, o->units, true);
     add_drop_cut_line_flag(cmd, o->drop_cut_line);
+    add_exclude_option(cmd, o->excluded,
+                       "a corrupt row or a disturbance; its rows become gap slots on the tau grid, which the terms skip");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
     // A whole number: the grid is 10^(k / per_decade), which puts every power of ten on it. 1000 is more than the
     // distinct m of the first three decades; --grid all is every m. CLI11 had refused 2.5 as a failed conversion.

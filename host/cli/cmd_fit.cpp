@@ -192,6 +192,9 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
         ->check(finite_value());
     cmd->add_option("--t-max,--to", r.options.t_max_s, "Use samples with t_s <= this [s since power-on]")
         ->check(finite_value());
+    add_exclude_option(cmd, r.options.excluded,
+                       "a corrupt row or a disturbance; the fit keeps the true times, the whiteness lags join the rows "
+                       "either side");
     cmd->add_option("--time-column", r.time_column,
                     "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
                     "time, time_s, timestamp...)");

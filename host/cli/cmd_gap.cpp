@@ -60,7 +60,7 @@ struct GapCommandOptions {
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
     double from_s = -INFINITY;          ///< rows kept: from_s <= t_s <= to_s
     double to_s = INFINITY;
-    std::vector<std::string> excluded;  ///< FROM:TO stretches left out
+    std::vector<TimeWindow> excluded;  ///< --exclude: stretches left out
     double saturated_margin_s = -1.0;   ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
     bool drop_cut_line = false;         ///< canonical logs: a cut last line is dropped (and noted), not refused
 
@@ -71,21 +71,6 @@ struct Loaded {
     LogData log;
     sim::SimModel unit;
 };
-
-// --exclude FROM:TO [s since power-on].
-TimeWindow parse_exclude(const std::string& text) {
-    const auto refused = [&] { return UsageError("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '" + text + "'"); };
-    const auto number = [&](const std::string& part) {
-        const std::optional<double> v = finite_number(part);
-        if (!v) throw refused();
-        return *v;
-    };
-    const auto colon = text.find(':');
-    if (colon == std::string::npos) throw refused();
-    const TimeWindow w{number(text.substr(0, colon)), number(text.substr(colon + 1)), "--exclude"};
-    if (!(w.from_s < w.to_s)) throw UsageError("--exclude " + text + ": FROM must be before TO");
-    return w;
-}
 
 // --channel: the channels named (none named: all false, which selects every one).
 std::array<bool, kChannelCount> channels_named(const GapCommandOptions& o) {
@@ -105,8 +90,7 @@ LogData in_window(const GapCommandOptions& o, LogData log) {
         if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
         log = rows_between(log, o.from_s, o.to_s);
     }
-    std::vector<TimeWindow> windows;
-    for (const std::string& text : o.excluded) windows.push_back(parse_exclude(text));
+    std::vector<TimeWindow> windows = o.excluded;
     if (o.saturated_margin_s >= 0.0) {
         gap::GapOptions selection;
         selection.channels = channels_named(o);
@@ -360,9 +344,7 @@ void register_gap(CLI::App& app) {
         ->check(finite_value());
     cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end")
         ->check(finite_value());
-    cmd->add_option("--exclude", o->excluded,
-                    "Leave out the rows from FROM to TO [s since power-on], e.g. 600:640: a shock or a bump in the middle of "
-                    "the log; the rows either side are joined (repeat for more)");
+    add_exclude_option(cmd, o->excluded, "a shock or a bump in the middle of the log; the rows either side are joined");
     cmd->add_option("--exclude-saturated", o->saturated_margin_s,
                     "Leave out every stretch of rows whose sat_flags flag an analysed channel, with SECONDS more on either side "
                     "(e.g. 0.5 for what a shock leaves after the rail), joined as with --exclude")

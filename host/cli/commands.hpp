@@ -18,6 +18,9 @@ struct DriftAnalysis;
 namespace driftlab::host::gap {
 enum class Holdout;
 }
+namespace driftlab::host {
+struct TimeWindow;
+}
 
 namespace driftlab::host::cli {
 
@@ -94,5 +97,11 @@ std::shared_ptr<CLI::Formatter> help_formatter();
 
 /// --holdout interleaved|forecast, which gap and gap-eval share (defined in cmd_gap.cpp).
 void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout);
+
+/// --exclude FROM:TO [s since power-on], repeatable: each value parse_exclude()d into `windows` as the command line is
+/// parsed; `what_becomes_of_them` ends its help (the rows either side joined, a gap on the grid...). exclude_option.cpp.
+void add_exclude_option(CLI::App* cmd, std::vector<TimeWindow>& windows, const std::string& what_becomes_of_them);
+/// One --exclude value; UsageError unless it is two finite numbers FROM:TO with FROM before TO.
+TimeWindow parse_exclude(const std::string& text);
 
 }  // namespace driftlab::host::cli

@@ -11,23 +11,6 @@
 #include "host/util/format_number.hpp"
 
 namespace driftlab::host::fit {
-namespace {
-
-Series restrict_range(const Series& s, double t_min_s, double t_max_s) {
-    Series out = s;
-    out.t_s.clear();
-    out.values.clear();
-    out.raw_values.clear();
-    for (std::size_t k = 0; k < s.t_s.size(); ++k) {
-        if (s.t_s[k] < t_min_s || s.t_s[k] > t_max_s) continue;
-        out.t_s.push_back(s.t_s[k]);
-        out.values.push_back(s.values[k]);
-        if (!s.raw_values.empty()) out.raw_values.push_back(s.raw_values[k]);
-    }
-    return out;
-}
-
-}  // namespace
 
 std::string DriftAnalysis::undetermined_reason() const {
     if (t_beyond_record)
@@ -39,7 +22,7 @@ std::string DriftAnalysis::undetermined_reason() const {
 
 DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options) {
     DriftAnalysis out;
-    out.data = restrict_range(series, options.t_min_s, options.t_max_s);
+    out.data = rows_kept(series, options.t_min_s, options.t_max_s, options.excluded);
     const std::string where = "series '" + series.name + "'";
     const std::size_t n = out.data.t_s.size();
     if (n < kMinAnalysisSamples)

@@ -17,6 +17,7 @@ namespace driftlab::host::fit {
 struct AnalysisOptions {
     double t_min_s = -std::numeric_limits<double>::infinity();  ///< keep samples with t_s >= t_min_s
     double t_max_s = std::numeric_limits<double>::infinity();   ///< and t_s <= t_max_s
+    std::vector<TimeWindow> excluded;                            ///< and outside each of these (--exclude)
     FitOptions fit;
     stats::WhitenessOptions whiteness;
 };

@@ -145,4 +145,32 @@ std::vector<Series> load_series(const std::string& path, const std::vector<std::
     return load_series(open_source(path), path, names, time_column, sample_period_s);
 }
 
+Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded) {
+    const auto kept = [&](double t) { return t >= t_min_s && t <= t_max_s; };
+    const auto left_out = [&](double t) {
+        return std::any_of(excluded.begin(), excluded.end(), [t](const TimeWindow& w) { return t >= w.from_s && t <= w.to_s; });
+    };
+    // Each window on its own: one that holds no row is a mistaken time, as gap's --exclude says of a log.
+    for (const TimeWindow& w : excluded) {
+        if (std::any_of(s.t_s.begin(), s.t_s.end(), [&](double t) { return kept(t) && t >= w.from_s && t <= w.to_s; }))
+            continue;
+        throw DataError(s.source, 0,
+                        "series '" + s.name + "': " + w.by + " " + format_double(w.from_s) + ":" + format_double(w.to_s) +
+                            " holds no row" + (s.t_s.empty() ? std::string() : " (the series' rows run from " +
+                                                                                     format_double(s.t_s.front()) + " to " +
+                                                                                     format_double(s.t_s.back()) + " s)"));
+    }
+    Series out = s;
+    out.t_s.clear();
+    out.values.clear();
+    out.raw_values.clear();
+    for (std::size_t k = 0; k < s.t_s.size(); ++k) {
+        if (!kept(s.t_s[k]) || left_out(s.t_s[k])) continue;
+        out.t_s.push_back(s.t_s[k]);
+        out.values.push_back(s.values[k]);
+        if (!s.raw_values.empty()) out.raw_values.push_back(s.raw_values[k]);
+    }
+    return out;
+}
+
 }  // namespace driftlab::host::fit

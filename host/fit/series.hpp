@@ -10,6 +10,7 @@
 #include "driftlab/channels.hpp"
 #include "host/log/log_data.hpp"
 #include "host/log/log_reader.hpp"
+#include "host/log/log_window.hpp"
 #include "host/log/numeric_table.hpp"
 
 namespace driftlab::host::fit {
@@ -40,6 +41,11 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 /// its series (see the two functions above; `time_column` and `sample_period_s` apply to tables only).
 std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names = {},
                                 const std::string& time_column = "", double sample_period_s = 1.0);
+
+/// The rows of `s` with t_min_s <= t_s <= t_max_s and outside every window of `excluded` (both ends included), with
+/// their raw values. Throws DataError naming the series and the window when a window holds none of the rows in range:
+/// a mistaken time, not nothing to do.
+Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded = {});
 
 /// True when the file starts with `# driftlab-log:` (a canonical log rather than a plain table). Throws DataError
 /// naming the file when it cannot be opened, so that a missing file is not mistaken for a table missing its options.

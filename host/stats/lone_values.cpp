@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "host/util/format_number.hpp"
 
@@ -12,6 +13,17 @@ namespace {
 constexpr std::size_t kNamedRows = 5;
 // 1 / Phi^-1(3/4): the median absolute value of a zero-mean normal variable, in standard deviations.
 constexpr double kMadToSigma = 1.482602218505602;
+
+// The number of fewest significant digits strictly between a and b (a < b): a window's end to type.
+std::string shortest_between(double a, double b) {
+    const double mid = a / 2.0 + b / 2.0;
+    for (int digits = 1; digits < 17; ++digits) {
+        const std::string text = significant_plain(mid, digits);
+        const double v = std::stod(text);
+        if (v > a && v < b) return text;
+    }
+    return format_double(mid);
+}
 }  // namespace
 
 LoneValues lone_values(const std::vector<double>& x) {
@@ -64,8 +76,13 @@ std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, c
             " robust standard deviations from both neighbours, which agree with each other: a corrupt row, or an "
             "impulse from the sensor (`driftlab gap` tests its effect `spikes`). " +
             (one ? "It inflates" : "They inflate") +
-            " the noise level, the short-tau Allan deviation and the fit's rms: correct or remove " +
-            (one ? "that row" : "those rows") + " if corrupt";
+            " the noise level, the short-tau Allan deviation and the fit's rms: if corrupt, correct " +
+            (one ? "that row, or leave it out with" : "those rows, or leave them out with");
+    for (std::size_t i = 0; i < std::min(n, kNamedRows); ++i) {
+        const std::size_t k = found.indices[i];
+        text += " --exclude " + shortest_between(t_s[k - 1], t_s[k]) + ":" + shortest_between(t_s[k], t_s[k + 1]);
+    }
+    if (n > kNamedRows) text += " and so on";
     return text;
 }
 

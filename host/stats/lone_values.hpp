@@ -29,7 +29,8 @@ struct LoneValues {
 /// any finite values, up to the largest double.
 LoneValues lone_values(const std::vector<double>& x);
 
-/// A warning naming when (from `t_s`) and what the lone values of `x` are, when they carry kLoneShare or more of its
+/// A warning naming when (from `t_s`) and what the lone values of `x` are, and the --exclude windows that leave them
+/// out (each end the shortest number between the row and its neighbour), when they carry kLoneShare or more of its
 /// sample-to-sample variance; none otherwise.
 std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x);
 

@@ -288,8 +288,9 @@ TEST(AllanCli, PackingIsWarnedWhereItCanBiasTheCurve) {
 }
 
 // One corrupt row (a bus error's 0x7FFF) in a plain table had given a "converged" fit and an Allan deviation of its
-// size at every tau, unremarked: allan, fit and report name it, by time and value; the clean table gets no warning.
-TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReport) {
+// size at every tau, unremarked: allan, fit and report name it, by time and value, and the --exclude that leaves it
+// out; the clean table gets no warning.
+TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGiven) {
     TempDir dir("allanlone");
     const std::string clean = dir.file("clean.txt");
     const std::string corrupt = dir.file("corrupt.txt");
@@ -317,6 +318,38 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReport) {
     std::ifstream html(dir.file("r.html"));
     const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
     EXPECT_NE(page.find(named), std::string::npos);
+
+    // The window the warning gives leaves the row out: no warning, and what the clean table gives. The fit of 2999
+    // of its 3000 rows moves C2 by far less than its standard error; the Allan deviation at tau0 has one gap slot
+    // and one term fewer (of 2999), within 1 %.
+    EXPECT_NE(text.output.find("leave it out with --exclude 1233.5:1234.5"), std::string::npos) << text.output;
+    const RunResult fit_clean = run_driftlab({"fit", clean, "--json"}, dir.path());
+    const RunResult fit_left = run_driftlab({"fit", corrupt, "--exclude", "1233.5:1234.5", "--json"}, dir.path());
+    ASSERT_EQ(fit_left.exit_code, 0) << fit_left.output;
+    EXPECT_EQ(fit_left.output.find("lone value"), std::string::npos) << fit_left.output;
+    const auto c2_clean = nlohmann::json::parse(fit_clean.output)["channels"]["gx"]["C2"];
+    const auto c2_left = nlohmann::json::parse(fit_left.output)["channels"]["gx"]["C2"];
+    EXPECT_NEAR(c2_left["value"].get<double>(), c2_clean["value"].get<double>(), 0.1 * c2_clean["stderr"].get<double>());
+    const RunResult allan_clean = run_driftlab({"allan", clean, "--kind", "rate", "--tau0", "1", "--json"}, dir.path());
+    const RunResult allan_left = run_driftlab(
+        {"allan", corrupt, "--kind", "rate", "--tau0", "1", "--exclude", "1233.5:1234.5", "--json"}, dir.path());
+    ASSERT_EQ(allan_left.exit_code, 0) << allan_left.output;
+    const auto gx_clean = nlohmann::json::parse(allan_clean.output)["channels"]["gx"];
+    const auto gx_left = nlohmann::json::parse(allan_left.output)["channels"]["gx"];
+    EXPECT_TRUE(gx_left["lone_values_warning"].is_null()) << allan_left.output;
+    EXPECT_EQ(gx_left["gap_samples"].get<int>(), 1);
+    EXPECT_NEAR(gx_left["adev"][0].get<double>(), gx_clean["adev"][0].get<double>(), 0.01 * gx_clean["adev"][0].get<double>());
+
+    // A window that holds no row is a mistaken time (exit 3, naming it); one that is not FROM:TO, a usage error.
+    const RunResult missed = run_driftlab({"fit", corrupt, "--exclude", "5000:6000"}, dir.path());
+    EXPECT_EQ(missed.exit_code, 3);
+    EXPECT_NE(missed.output.find("--exclude 5000:6000 holds no row (the series' rows run from 0 to 2999 s)"),
+              std::string::npos)
+        << missed.output;
+    const RunResult malformed = run_driftlab({"allan", corrupt, "--kind", "rate", "--tau0", "1", "--exclude", "5"}, dir.path());
+    EXPECT_EQ(malformed.exit_code, 2);
+    EXPECT_NE(malformed.output.find("--exclude: expected FROM:TO in seconds since power-on"), std::string::npos)
+        << malformed.output;
 }
 
 // --per-decade counts taus in a decade: a whole number. 2.5 had failed in the parser's words ("Could not convert");

@@ -71,5 +71,30 @@ TEST(Series, OneOpenOfTheHeadTellsALogFromATable) {
     EXPECT_THROW(is_canonical_log(path), DataError);
 }
 
+// --from/--to and --exclude windows: both ends of each are taken (in range) or left out (in a window), the raw codes
+// go with their rows, overlapping windows are the union, and a window that holds no row in range names itself.
+TEST(Series, RowsKeptAreInRangeAndOutsideEveryWindowWithTheirRawCodes) {
+    Series s;
+    s.name = "gyro";
+    s.source = "log.csv";
+    for (int k = 0; k < 10; ++k) {
+        s.t_s.push_back(k);
+        s.values.push_back(100.0 + k);
+        s.raw_values.push_back(200.0 + k);
+    }
+    const Series kept = rows_kept(s, 1.0, 8.0, {{3.0, 4.0, "--exclude"}, {3.5, 5.0, "--exclude"}});
+    EXPECT_EQ(kept.t_s, (std::vector<double>{1, 2, 6, 7, 8}));
+    EXPECT_EQ(kept.values, (std::vector<double>{101, 102, 106, 107, 108}));
+    EXPECT_EQ(kept.raw_values, (std::vector<double>{201, 202, 206, 207, 208}));
+    EXPECT_EQ(rows_kept(s, -1.0, 20.0).t_s, s.t_s);
+    // Row 9 exists, but not in the range kept.
+    try {
+        rows_kept(s, 1.0, 8.0, {{8.5, 9.5, "--exclude"}});
+        ADD_FAILURE() << "a window without a row in range was taken";
+    } catch (const DataError& e) {
+        EXPECT_STREQ(e.what(), "log.csv: series 'gyro': --exclude 8.5:9.5 holds no row (the series' rows run from 0 to 9 s)");
+    }
+}
+
 }  // namespace
 }  // namespace driftlab::host::fit
