@@ -14,16 +14,18 @@ constexpr std::size_t kNamedRows = 5;
 // 1 / Phi^-1(3/4): the median absolute value of a zero-mean normal variable, in standard deviations.
 constexpr double kMadToSigma = 1.482602218505602;
 
-// The number of fewest significant digits strictly between a and b (a < b): a window's end to type.
-std::string shortest_between(double a, double b) {
-    const double mid = a / 2.0 + b / 2.0;
-    for (int digits = 1; digits < 17; ++digits) {
-        const std::string text = significant_plain(mid, digits);
+// `value` (in (a, b)) rounded to the fewest significant digits, from `least` on, that keep it strictly between a and
+// b: a time that names its row, a window's end to type.
+std::string shortest_between(double a, double b, double value, int least) {
+    for (int digits = least; digits < 17; ++digits) {
+        const std::string text = significant_plain(value, digits);
         const double v = std::stod(text);
         if (v > a && v < b) return text;
     }
-    return format_double(mid);
+    return format_double(value);
 }
+
+std::string midway(double a, double b) { return shortest_between(a, b, a / 2.0 + b / 2.0, 1); }
 }  // namespace
 
 LoneValues lone_values(const std::vector<double>& x) {
@@ -66,7 +68,11 @@ std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, c
     std::string text = std::to_string(n) + (n == 1 ? " lone value (" : " lone values (");
     for (std::size_t i = 0; i < std::min(n, kNamedRows); ++i) {
         const std::size_t k = found.indices[i];
-        text += (i ? ", t = " : "t = ") + significant(t_s[k], 7) + " s: " + significant(x[k], 6);
+        // Seven significant digits where they tell the row from its neighbours; a time since the epoch (1.7e9 s) takes
+        // more, so that it still names one row.
+        const std::string t =
+            shortest_between(t_s[k - 1] / 2.0 + t_s[k] / 2.0, t_s[k] / 2.0 + t_s[k + 1] / 2.0, t_s[k], 7);
+        text += (i ? ", t = " : "t = ") + t + " s: " + significant(x[k], 6);
     }
     if (n > kNamedRows) text += " and " + std::to_string(n - kNamedRows) + " more";
     const bool one = n == 1;
@@ -80,7 +86,7 @@ std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, c
             (one ? "that row, or leave it out with" : "those rows, or leave them out with");
     for (std::size_t i = 0; i < std::min(n, kNamedRows); ++i) {
         const std::size_t k = found.indices[i];
-        text += " --exclude " + shortest_between(t_s[k - 1], t_s[k]) + ":" + shortest_between(t_s[k], t_s[k + 1]);
+        text += " --exclude " + midway(t_s[k - 1], t_s[k]) + ":" + midway(t_s[k], t_s[k + 1]);
     }
     if (n > kNamedRows) text += " and so on";
     return text;

@@ -124,5 +124,16 @@ TEST(LoneValues, TheWarningNamesEachTimeAndValueUpToFive) {
         << *seven;
 }
 
+// Rows 10 ms apart at Unix time: the time and the window have the digits that tell the row from its neighbours.
+TEST(LoneValues, AnEpochTimeNamesOneRow) {
+    std::vector<double> t(300), x = white(300, 0.01, 12);
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = 1.7e9 + 0.01 * static_cast<double>(k);
+    x[123] = 99.0;
+    const auto warning = lone_values_warning(t, x);
+    ASSERT_TRUE(warning);
+    EXPECT_EQ(warning->rfind("1 lone value (t = 1700000001.23 s: 99)", 0), 0u) << *warning;
+    EXPECT_TRUE(warning->ends_with("--exclude 1700000001.225:1700000001.235")) << *warning;
+}
+
 }  // namespace
 }  // namespace driftlab::host::stats
