@@ -324,11 +324,16 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGi
     // and one term fewer (of 2999), within 1 %.
     EXPECT_NE(text.output.find("leave it out with --exclude 1233.5:1234.5"), std::string::npos) << text.output;
     const RunResult fit_clean = run_driftlab({"fit", clean, "--json"}, dir.path());
-    const RunResult fit_left = run_driftlab({"fit", corrupt, "--exclude", "1233.5:1234.5", "--json"}, dir.path());
+    // The note of the rows left out goes to the error output beside --json (the JSON to a file made for it).
+    std::ofstream(dir.file("left.json")).close();
+    const RunResult fit_left = run_driftlab_stdout_to({"fit", corrupt, "--exclude", "1233.5:1234.5", "--json"},
+                                                      dir.file("left.json"), dir.path());
     ASSERT_EQ(fit_left.exit_code, 0) << fit_left.output;
-    EXPECT_EQ(fit_left.output.find("lone value"), std::string::npos) << fit_left.output;
+    EXPECT_EQ(fit_left.output, "note: --exclude 1233.5:1234.5 left out 1 row\n");
+    const std::string left_json = read_text(dir.file("left.json"));
+    EXPECT_EQ(left_json.find("lone value"), std::string::npos) << left_json;
     const auto c2_clean = nlohmann::json::parse(fit_clean.output)["channels"]["gx"]["C2"];
-    const auto c2_left = nlohmann::json::parse(fit_left.output)["channels"]["gx"]["C2"];
+    const auto c2_left = nlohmann::json::parse(left_json)["channels"]["gx"]["C2"];
     EXPECT_NEAR(c2_left["value"].get<double>(), c2_clean["value"].get<double>(), 0.1 * c2_clean["stderr"].get<double>());
     const RunResult allan_clean = run_driftlab({"allan", clean, "--kind", "rate", "--tau0", "1", "--json"}, dir.path());
     const RunResult allan_left = run_driftlab(
