@@ -60,7 +60,7 @@ struct GapCommandOptions {
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
     double from_s = -INFINITY;          ///< rows kept: from_s <= t_s <= to_s
     double to_s = INFINITY;
-    std::vector<TimeWindow> excluded;  ///< --exclude: stretches left out
+    std::vector<TimeWindow> excluded;   ///< --exclude: stretches left out
     double saturated_margin_s = -1.0;   ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
     bool drop_cut_line = false;         ///< canonical logs: a cut last line is dropped (and noted), not refused
 

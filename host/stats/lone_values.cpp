@@ -1,3 +1,4 @@
+// Lone values; see lone_values.hpp.
 #include "host/stats/lone_values.hpp"
 
 #include <algorithm>
@@ -11,7 +12,7 @@ namespace driftlab::host::stats {
 namespace {
 // Rows named in a warning; the count says how many more there are.
 constexpr std::size_t kNamedRows = 5;
-// 1 / Phi^-1(3/4): the median absolute value of a zero-mean normal variable, in standard deviations.
+// 1 / Phi^-1(3/4): a zero-mean normal variable's standard deviation over its median absolute value.
 constexpr double kMadToSigma = 1.482602218505602;
 
 // `value` (in (a, b)) rounded to the fewest significant digits, from `least` on, that keep it strictly between a and
