@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "host/cli/commands.hpp"
@@ -19,6 +20,7 @@
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -37,6 +39,8 @@ struct AllanCommandOptions {
     bool keep_drift = false;
     bool remove_drift = false;          ///< plain rate files: fit and remove eq. 1 as for logs
     bool drop_cut_line = false;         ///< logs: a cut last line is dropped (and noted), not refused
+    double from_s = -INFINITY;          ///< --from/--to: rows kept, from_s <= t_s <= to_s [s since power-on]
+    double to_s = INFINITY;
     std::vector<TimeWindow> excluded;   ///< --exclude: rows left out, gap slots on the grid
     bool json = false;
     std::string plot_dir;
@@ -220,8 +224,16 @@ void run(const AllanCommandOptions& o) {
                                     : "not removed: a plain file is analysed as given";
         series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
-    if (!o.excluded.empty())
-        for (fit::Series& s : series) s = fit::rows_kept(s, -INFINITY, INFINITY, o.excluded);
+    if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
+    for (fit::Series& s : series) {
+        fit::Series kept = fit::rows_kept(s, o.from_s, o.to_s, o.excluded);
+        // The grid needs two samples: where --from/--to leave fewer, say where the rows are.
+        if (kept.t_s.size() < 2 && s.t_s.size() >= 2)
+            throw DataError(o.path, 0, "series '" + s.name + "': " + counted(kept.t_s.size(), "sample") +
+                                           " in the selected time range (its rows run from " + format_double(s.t_s.front()) +
+                                           " to " + format_double(s.t_s.back()) + " s)");
+        s = std::move(kept);
+    }
     // Phase samples are in their integral's unit (deg for deg/s); the assignment holds the deviations' (the rate's).
     const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit", req.kind);
     std::vector<std::string> columns;
@@ -295,6 +307,11 @@ void register_allan(CLI::App& app) {
         ->check(positive_number());
     add_unit_option(cmd, o->units, true);
     add_drop_cut_line_flag(cmd, o->drop_cut_line);
+    // fit and gap spell the time window --from/--to (fit also --t-min/--t-max): one spelling works in every command.
+    cmd->add_option("--from,--t-min", o->from_s,
+                    "Analyse only rows from this time on [s since power-on]: leave out the warm-up, or a disturbed start")
+        ->check(finite_value());
+    cmd->add_option("--to,--t-max", o->to_s, "Analyse only rows up to this time [s since power-on]")->check(finite_value());
     add_exclude_option(cmd, o->excluded,
                        "a corrupt row or a disturbance; its rows become gap slots on the tau grid, which the terms skip");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();

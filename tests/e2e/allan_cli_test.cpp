@@ -41,6 +41,15 @@ void write_gx_table(const std::string& path, int rows, const std::function<void(
     }
 }
 
+// 3000 samples 1 s apart of eq. 1 (C1 = 0.3, C2 = 0.1, T = 600 s) with white noise of 0.02.
+std::vector<double> warming_rate(unsigned seed) {
+    std::vector<double> v(3000);
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> g(0.0, 0.02);
+    for (std::size_t k = 0; k < v.size(); ++k) v[k] = 0.4 - 0.3 * std::exp(-static_cast<double>(k) / 600.0) + g(rng);
+    return v;
+}
+
 // A log's accelerometer noise density in SI is the simulator's noise: each 1 s output is the mean of 25 conversions
 // (the paper's preset, order 0), so N = sigma_conversion / sqrt(25) x sqrt(1 s), in m/s^2/sqrt(Hz). The host had read
 // a count as 19.14 cm/s^2 and given ten times that (docs/analysis.md §2).
@@ -294,10 +303,7 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGi
     TempDir dir("allanlone");
     const std::string clean = dir.file("clean.txt");
     const std::string corrupt = dir.file("corrupt.txt");
-    std::vector<double> v(3000);
-    std::mt19937_64 rng(11);
-    std::normal_distribution<double> g(0.0, 0.02);
-    for (std::size_t k = 0; k < v.size(); ++k) v[k] = 0.4 - 0.3 * std::exp(-static_cast<double>(k) / 600.0) + g(rng);
+    const std::vector<double> v = warming_rate(11);
     write_gx_table(clean, 3000, [&](std::ostream& row, int k) { row << k << ' ' << v[k]; });
     write_gx_table(corrupt, 3000, [&](std::ostream& row, int k) { row << k << ' ' << (k == 1234 ? 32767.0 : v[k]); });
     const std::string named = "1 lone value (t = 1234 s: 32767) carries 100 % of the sample-to-sample variance";
@@ -355,6 +361,40 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGi
     EXPECT_EQ(malformed.exit_code, 2);
     EXPECT_NE(malformed.output.find("--exclude: expected FROM:TO in seconds since power-on"), std::string::npos)
         << malformed.output;
+}
+
+// --from/--to, as fit and gap take them: the curve of a table from t = 1000 s on is the curve of the table cut there,
+// to the last bit, drift removed at its times since power-on; a range without two rows names where the rows are.
+TEST(AllanCli, FromAndToAnalyseTheRowsOfATableCutThere) {
+    TempDir dir("allanfrom");
+    const std::string whole = dir.file("whole.txt");
+    const std::string cut = dir.file("cut.txt");
+    const std::vector<double> v = warming_rate(13);
+    write_gx_table(whole, 3000, [&](std::ostream& row, int k) { row << k << ' ' << v[k]; });
+    write_gx_table(cut, 1501, [&](std::ostream& row, int k) { row << k + 1000 << ' ' << v[k + 1000]; });
+    const std::vector<std::string> allan = {"allan", "--kind", "rate", "--tau0", "1", "--remove-drift", "--json"};
+    auto with = [&](std::vector<std::string> args, std::vector<std::string> more) {
+        args.insert(args.end(), more.begin(), more.end());
+        return args;
+    };
+    const RunResult ranged = run_driftlab(with(allan, {whole, "--from", "1000", "--to", "2500"}), dir.path());
+    const RunResult alone = run_driftlab(with(allan, {cut}), dir.path());
+    ASSERT_EQ(ranged.exit_code, 0) << ranged.output;
+    ASSERT_EQ(alone.exit_code, 0) << alone.output;
+    auto ranged_gx = nlohmann::json::parse(ranged.output)["channels"]["gx"];
+    auto alone_gx = nlohmann::json::parse(alone.output)["channels"]["gx"];
+    EXPECT_EQ(ranged_gx["samples"].get<int>(), 1501);
+    EXPECT_EQ(ranged_gx["adev"], alone_gx["adev"]);
+    EXPECT_EQ(ranged_gx["drift"], alone_gx["drift"]);
+
+    const RunResult beyond = run_driftlab(with(allan, {whole, "--from", "5000"}), dir.path());
+    EXPECT_EQ(beyond.exit_code, 3);
+    EXPECT_NE(beyond.output.find("series 'gx': 0 samples in the selected time range (its rows run from 0 to 2999 s)"),
+              std::string::npos)
+        << beyond.output;
+    const RunResult reversed = run_driftlab(with(allan, {whole, "--from", "50", "--to", "40"}), dir.path());
+    EXPECT_EQ(reversed.exit_code, 2);
+    EXPECT_NE(reversed.output.find("--from must be before --to"), std::string::npos) << reversed.output;
 }
 
 // --per-decade counts taus in a decade: a whole number. 2.5 had failed in the parser's words ("Could not convert");
