@@ -307,11 +307,7 @@ void register_allan(CLI::App& app) {
         ->check(positive_number());
     add_unit_option(cmd, o->units, true);
     add_drop_cut_line_flag(cmd, o->drop_cut_line);
-    // fit and gap spell the time window --from/--to (fit also --t-min/--t-max): one spelling works in every command.
-    cmd->add_option("--from,--t-min", o->from_s,
-                    "Analyse only rows from this time on [s since power-on]: leave out the warm-up, or a disturbed start")
-        ->check(finite_value());
-    cmd->add_option("--to,--t-max", o->to_s, "Analyse only rows up to this time [s since power-on]")->check(finite_value());
+    add_time_range_options(cmd, o->from_s, o->to_s);
     add_exclude_option(cmd, o->excluded,
                        "a corrupt row or a disturbance; its rows become gap slots on the tau grid, which the terms skip");
     cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();

@@ -155,6 +155,12 @@ void run(const FitCommandOptions& opts) {
 
 }  // namespace
 
+void add_time_range_options(CLI::App* cmd, double& t_min_s, double& t_max_s) {
+    // gap spells the time window --from/--to: both spellings, so that one works in every command.
+    cmd->add_option("--t-min,--from", t_min_s, "Use samples with t_s >= this [s since power-on]")->check(finite_value());
+    cmd->add_option("--t-max,--to", t_max_s, "Use samples with t_s <= this [s since power-on]")->check(finite_value());
+}
+
 void print_analysis_warnings(const fit::DriftAnalysis& analysis) {
     for (const auto& warning : analysis.warnings) std::cout << "  warning: " << warning << "\n";
 }
@@ -187,17 +193,14 @@ void add_drop_cut_line_flag(CLI::App* cmd, bool& drop) {
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
     cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required();
     cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
-    // allan and gap spell the time window --from/--to and the period --tau0: one spelling works in every command.
-    cmd->add_option("--t-min,--from", r.options.t_min_s, "Use samples with t_s >= this [s since power-on]")
-        ->check(finite_value());
-    cmd->add_option("--t-max,--to", r.options.t_max_s, "Use samples with t_s <= this [s since power-on]")
-        ->check(finite_value());
+    add_time_range_options(cmd, r.options.t_min_s, r.options.t_max_s);
     add_exclude_option(cmd, r.options.excluded,
                        "a corrupt row or a disturbance; the fit keeps the true times, the whiteness lags join the rows "
                        "either side");
     cmd->add_option("--time-column", r.time_column,
                     "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
                     "time, time_s, timestamp...)");
+    // --tau0 as allan and gap spell the period.
     cmd->add_option("--sample-period,--tau0", r.sample_period_s,
                     "Plain tables without a time column: sample period [s] (default 1 s per row)")
         ->check(positive_number());

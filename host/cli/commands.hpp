@@ -47,6 +47,10 @@ void register_gap_eval(CLI::App& app);
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
 
+/// --t-min/--from and --t-max/--to [s since power-on], finite: the rows fit, whiteness, report and allan keep
+/// (cmd_fit.cpp; gap spells them --from/--to alone).
+void add_time_range_options(CLI::App* cmd, double& t_min_s, double& t_max_s);
+
 /// `--drop-cut-line`: every command that reads a driftlab log takes it alike (cmd_fit.cpp; read with
 /// fit::cut_line_options and say host::dropped_cut_line_note).
 void add_drop_cut_line_flag(CLI::App* cmd, bool& drop);
@@ -98,10 +102,9 @@ std::shared_ptr<CLI::Formatter> help_formatter();
 /// --holdout interleaved|forecast, which gap and gap-eval share (defined in cmd_gap.cpp).
 void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout);
 
-/// --exclude FROM:TO [s since power-on], repeatable: each value parse_exclude()d into `windows` as the command line is
-/// parsed; `what_becomes_of_them` ends its help (the rows either side joined, a gap on the grid...). exclude_option.cpp.
+/// --exclude FROM:TO [s since power-on], repeatable: each value read into `windows` as the command line is parsed
+/// (UsageError unless two finite numbers, FROM before TO); `what_becomes_of_them` ends its help (the rows either side
+/// joined, a gap on the grid...). exclude_option.cpp.
 void add_exclude_option(CLI::App* cmd, std::vector<TimeWindow>& windows, const std::string& what_becomes_of_them);
-/// One --exclude value; UsageError unless it is two finite numbers FROM:TO with FROM before TO.
-TimeWindow parse_exclude(const std::string& text);
 
 }  // namespace driftlab::host::cli

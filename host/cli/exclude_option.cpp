@@ -8,7 +8,9 @@
 #include "host/util/error.hpp"
 
 namespace driftlab::host::cli {
+namespace {
 
+// One --exclude value; UsageError unless it is two finite numbers FROM:TO with FROM before TO.
 TimeWindow parse_exclude(const std::string& text) {
     const auto refused = [&] {
         return UsageError("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '" + text + "'");
@@ -24,6 +26,8 @@ TimeWindow parse_exclude(const std::string& text) {
     if (!(w.from_s < w.to_s)) throw UsageError("--exclude " + text + ": FROM must be before TO");
     return w;
 }
+
+}  // namespace
 
 void add_exclude_option(CLI::App* cmd, std::vector<TimeWindow>& windows, const std::string& what_becomes_of_them) {
     // Parsed as the command line is, so that a mistaken window is refused before a long log is read.
