@@ -155,12 +155,6 @@ void run(const FitCommandOptions& opts) {
 
 }  // namespace
 
-void add_time_range_options(CLI::App* cmd, double& t_min_s, double& t_max_s) {
-    // gap spells the time window --from/--to: both spellings, so that one works in every command.
-    cmd->add_option("--t-min,--from", t_min_s, "Use samples with t_s >= this [s since power-on]")->check(finite_value());
-    cmd->add_option("--t-max,--to", t_max_s, "Use samples with t_s <= this [s since power-on]")->check(finite_value());
-}
-
 void print_analysis_warnings(const fit::DriftAnalysis& analysis) {
     for (const auto& warning : analysis.warnings) std::cout << "  warning: " << warning << "\n";
 }

@@ -86,10 +86,7 @@ std::array<bool, kChannelCount> channels_named(const GapCommandOptions& o) {
 // The rows --from/--to keep (all without them), less those --exclude and --exclude-saturated leave out. Only the
 // channels the diagnosis analyses count as saturated: a channel stuck at a rail is left out of it, not its rows.
 LogData in_window(const GapCommandOptions& o, LogData log) {
-    if (o.windowed()) {
-        if (!(o.from_s < o.to_s)) throw UsageError("--from must be before --to");
-        log = rows_between(log, o.from_s, o.to_s);
-    }
+    if (o.windowed()) log = rows_between(log, o.from_s, o.to_s);
     std::vector<TimeWindow> windows = o.excluded;
     if (o.saturated_margin_s >= 0.0) {
         gap::GapOptions selection;
@@ -344,6 +341,7 @@ void register_gap(CLI::App& app) {
         ->check(finite_value());
     cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end")
         ->check(finite_value());
+    refuse_reversed_time_range(cmd, o->from_s, o->to_s);
     add_exclude_option(cmd, o->excluded, "a shock or a bump in the middle of the log; the rows either side are joined");
     cmd->add_option("--exclude-saturated", o->saturated_margin_s,
                     "Leave out every stretch of rows whose sat_flags flag an analysed channel, with SECONDS more on either side "

@@ -45,6 +45,17 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_EQ(r.exit_code, 2) << args[2] << ": " << r.output;
         EXPECT_NE(r.output.find("expected a finite number, got '" + args[3] + "'"), std::string::npos) << r.output;
     }
+    // A reversed or empty time range: gap and allan had refused it only once the log was read, fit, whiteness and
+    // report as a "0 samples" error per channel (exit 3). x.csv does not exist, so exit 2 shows that nothing was read.
+    for (const char* command : {"fit", "whiteness", "report", "allan", "gap"})
+        for (const std::vector<std::string>& range :
+             {std::vector<std::string>{"--from", "50", "--to", "40"}, {"--to", "40", "--from", "50"}, {"--from", "50", "--to", "50"}}) {
+            std::vector<std::string> args = {command, "x.csv"};
+            args.insert(args.end(), range.begin(), range.end());
+            const RunResult r = run_driftlab(args, dir.path());
+            EXPECT_EQ(r.exit_code, 2) << command << " " << range[0] << ": " << r.output;
+            EXPECT_NE(r.output.find("driftlab: error: --from must be before --to"), std::string::npos) << command << ": " << r.output;
+        }
     const RunResult fraction = run_driftlab({"gap", "x.csv", "--fit-fraction", "nan"}, dir.path());
     EXPECT_EQ(fraction.exit_code, 2) << fraction.output;
     EXPECT_NE(fraction.output.find("--fit-fraction: expected a number in [0.3, 0.85], got 'nan'"), std::string::npos)
