@@ -152,6 +152,8 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
     if (const std::string quiet = gap::noise_free_sentence(r); !quiet.empty()) std::printf("not analysed: %s\n", quiet.c_str());
     if (const std::string saturated = gap::saturated_channels_sentence(r); !saturated.empty())
         std::printf("saturated: %s\n", saturated.c_str());
+    for (const auto& l : r.lone_values)
+        std::printf("warning: %s: %s\n", kChannelNames[channel_index(l.channel)], l.warning.c_str());
     if (const std::string left_out = gap::left_out_sentence(r); !left_out.empty()) std::printf("left out: %s\n", left_out.c_str());
     std::printf("located cells (|z| > %.2f and beyond the margin): %zu\n", r.before.threshold, r.located.size());
     if (r.diffuse_gap)

@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/replicates.hpp"
+#include "host/stats/lone_values.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 
@@ -92,6 +95,21 @@ std::vector<SaturatedChannel> saturated_channels(const LogData& log, const std::
             s.last_t_s = log.t_s[k];
         }
         if (s.rows > 0) out.push_back(s);
+    }
+    return out;
+}
+
+// The analysed channels whose lone values are worth a warning, with the rows named.
+std::vector<LoneValueChannel> lone_value_channels(const LogData& log, const std::array<bool, kChannelCount>& channels) {
+    std::vector<LoneValueChannel> out;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!channels[c]) continue;
+        const std::optional<std::string> warning = stats::lone_values_warning(log.t_s, log.counts[c]);
+        if (!warning) continue;
+        const stats::LoneValues found = stats::lone_values(log.counts[c]);
+        LoneValueChannel lone{static_cast<Channel>(c), {}, found.variance_share, *warning};
+        for (std::size_t k : found.indices) lone.t_s.push_back(log.t_s[k]);
+        out.push_back(std::move(lone));
     }
     return out;
 }
@@ -192,6 +210,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
     result.left_out = log.cuts;
     result.saturated = saturated_channels(log, result.channels);
+    result.lone_values = lone_value_channels(log, result.channels);
 
     BatteryOptions battery;
     battery.channels = result.channels;

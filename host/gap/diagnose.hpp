@@ -71,11 +71,22 @@ struct SaturatedChannel {
     double last_t_s = 0.0;   ///< the last one's
 };
 
+/// An analysed channel whose lone values carry enough of its sample-to-sample variance for a warning
+/// (stats::lone_values_warning): a corrupt row reads as a gap in the tails, the variance and the Allan deviation at
+/// every tau, which no effect closes; an impulse from the sensor is `spikes`' to explain.
+struct LoneValueChannel {
+    Channel channel = Channel::gyro;
+    std::vector<double> t_s;       ///< the lone rows' times
+    double variance_share = 0.0;   ///< their part of the sum of squared first differences
+    std::string warning;           ///< names the rows and the --exclude windows that leave them out (not the channel)
+};
+
 struct GapResult {
     std::array<bool, kChannelCount> channels{};
     std::vector<ConstantChannel> constant_channels;  ///< recorded (and, with GapOptions::channels, selected) ones
     std::vector<NoiseFreeChannel> noise_free;        ///< varying channels left out for want of noise to compare
     std::vector<SaturatedChannel> saturated;         ///< analysed channels with rows flagged saturated
+    std::vector<LoneValueChannel> lone_values;       ///< analysed channels with lone values worth a warning
     std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
     std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
     GapModel base;                   ///< the calibrated base (with the model file's effects: `given`)

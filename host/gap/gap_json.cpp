@@ -121,6 +121,11 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
         saturated.push_back({{"channel", kChannelNames[channel_index(s.channel)]}, {"rows", s.rows},
                              {"first_t_s", report::json_number(s.first_t_s)}, {"last_t_s", report::json_number(s.last_t_s)}});
     j["saturated"] = saturated;
+    json lone = json::array();
+    for (const auto& l : r.lone_values)
+        lone.push_back({{"channel", kChannelNames[channel_index(l.channel)]}, {"t_s", l.t_s},
+                        {"variance_share", report::json_number(l.variance_share)}, {"warning", l.warning}});
+    j["lone_values"] = lone;
     json left_out = json::array();
     for (const auto& c : r.left_out)
         left_out.push_back({{"from_s", report::json_number(c.from_s)}, {"to_s", report::json_number(c.to_s)}, {"rows", c.rows}, {"by", c.by}});

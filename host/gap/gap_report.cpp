@@ -378,6 +378,8 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     if (const std::string constant = constant_channels_sentence(r); !constant.empty()) md << "Not analysed: " << constant << ".\n\n";
     if (const std::string quiet = noise_free_sentence(r); !quiet.empty()) md << "Not analysed: " << quiet << ".\n\n";
     if (const std::string saturated = saturated_channels_sentence(r); !saturated.empty()) md << "Saturated: " << saturated << ".\n\n";
+    for (const auto& l : r.lone_values)  // no full stop after the window to copy
+        md << "Warning: " << kChannelNames[channel_index(l.channel)] << ": " << l.warning << "\n\n";
     if (const std::string left_out = left_out_sentence(r); !left_out.empty()) md << "Left out: " << left_out << ".\n\n";
     if (const std::string cut = dropped_cut_line_note(log); !cut.empty()) md << "Note: " << cut << ".\n\n";
     if (const std::string given = given_effects_sentence(r.given); !given.empty()) md << "Base: " << given << ".\n\n";

@@ -383,6 +383,82 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
         << bad.output;
 }
 
+// One corrupt row (the gyro's top code in a row of 507) is a gap no effect closes: the diagnosis says so, and warns
+// of the row with the --exclude window that leaves it out, on the terminal, in the report and in the JSON. With that
+// window the log reads as the simulator's own; the clean log draws no warning.
+TEST(GapCli, ACorruptRowIsWarnedWithTheWindowThatLeavesItOut) {
+    TempDir dir("gaplone");
+    const std::string log = dir.file("hil.csv");
+    ASSERT_EQ(run_driftlab({"hil", "--duration", "600", "--seed", "4", "-o", log}, dir.path()).exit_code, 0);
+    const std::string corrupt = dir.file("corrupt.csv");
+    double row_t = 0.0;
+    {
+        std::ifstream in(log);
+        std::ofstream out(corrupt);
+        std::string line;
+        int row = 0;
+        while (std::getline(in, line)) {
+            if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0 && row++ == 300) {
+                // Columns t_s, seq, gyro, ...
+                const std::size_t first = line.find(','), second = line.find(',', first + 1), third = line.find(',', second + 1);
+                row_t = std::stod(line.substr(0, first));
+                line.replace(second + 1, third - second - 1, "1023");
+            }
+            out << line << "\n";
+        }
+    }
+    ASSERT_GT(row_t, 0.0);
+    const std::vector<std::string> quick = {"--replicates", "10", "--locate-only", "--json"};
+    const auto gap_json = [&](const std::string& file, std::vector<std::string> more) {
+        std::vector<std::string> args = {"gap", file};
+        args.insert(args.end(), quick.begin(), quick.end());
+        args.insert(args.end(), more.begin(), more.end());
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        return nlohmann::json::parse(r.output);
+    };
+    const auto clean = gap_json(log, {});
+    EXPECT_TRUE(clean["lone_values"].empty()) << clean["lone_values"].dump();
+    EXPECT_EQ(clean["verdict"], "none");
+
+    const auto j = gap_json(corrupt, {});
+    EXPECT_EQ(j["verdict"], "unexplained");
+    EXPECT_FALSE(j["located"].empty());
+    ASSERT_EQ(j["lone_values"].size(), 1u) << j["lone_values"].dump();
+    const auto& lone = j["lone_values"][0];
+    EXPECT_EQ(lone["channel"], "gyro");
+    ASSERT_EQ(lone["t_s"].size(), 1u);
+    EXPECT_DOUBLE_EQ(lone["t_s"][0].get<double>(), row_t);
+    // The row's difference from either neighbour, about 516 counts against a noise of under one count, is nearly all of
+    // the sample-to-sample variance.
+    EXPECT_GT(lone["variance_share"].get<double>(), 0.99);
+    const std::string warning = lone["warning"];
+    EXPECT_EQ(warning.rfind("1 lone value (t = ", 0), 0u) << warning;
+    EXPECT_NE(warning.find(" s: 1023) carries "), std::string::npos) << warning;
+    const std::size_t at = warning.rfind("--exclude ");
+    ASSERT_NE(at, std::string::npos) << warning;
+    const std::string window = warning.substr(at + std::strlen("--exclude "));
+    const std::size_t colon = window.find(':');
+    ASSERT_NE(colon, std::string::npos) << window;
+    // The window holds that row and no other (rows 1 s apart).
+    EXPECT_LT(std::stod(window.substr(0, colon)), row_t);
+    EXPECT_GT(std::stod(window.substr(0, colon)), row_t - 1.0);
+    EXPECT_GT(std::stod(window.substr(colon + 1)), row_t);
+    EXPECT_LT(std::stod(window.substr(colon + 1)), row_t + 1.0);
+
+    const auto without = gap_json(corrupt, {"--exclude", window});
+    EXPECT_TRUE(without["lone_values"].empty()) << without["lone_values"].dump();
+    EXPECT_EQ(without["verdict"], "none");
+    EXPECT_TRUE(without["located"].empty()) << without["located"].dump();
+    ASSERT_EQ(without["left_out"].size(), 1u);
+    EXPECT_EQ(without["left_out"][0]["rows"], 1);
+
+    const RunResult text = run_driftlab({"gap", corrupt, "--replicates", "10", "--locate-only", "--report", dir.file("report")}, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.output;
+    EXPECT_NE(text.output.find("\nwarning: gyro: " + warning + "\n"), std::string::npos) << text.output;
+    EXPECT_NE(read_text(dir.file("report/gap.md")).find("\nWarning: gyro: " + warning + "\n"), std::string::npos);
+}
+
 TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {
     TempDir dir("gapshort");
     const std::string log = dir.file("short.csv");
