@@ -224,6 +224,8 @@ void run(const AllanCommandOptions& o) {
                                     : "not removed: a plain file is analysed as given";
         series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
+    const std::vector<std::string> selection =
+        series.empty() ? std::vector<std::string>{} : fit::selection_notes(series.front(), o.from_s, o.to_s, o.excluded);
     for (fit::Series& s : series) {
         fit::Series kept = fit::rows_kept(s, o.from_s, o.to_s, o.excluded);
         // The grid needs two samples: where --from/--to leave fewer, say where the rows are.
@@ -233,6 +235,7 @@ void run(const AllanCommandOptions& o) {
                                            " to " + format_double(s.t_s.back()) + " s)");
         s = std::move(kept);
     }
+    for (const std::string& note : selection) print_note(note, o.json);
     // Phase samples are in their integral's unit (deg for deg/s); the assignment holds the deviations' (the rate's).
     const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit", req.kind);
     std::vector<std::string> columns;
@@ -268,6 +271,8 @@ void run(const AllanCommandOptions& o) {
             json c = version_json(r.primary(), u);
             c["tau0_s"] = tau0;
             c["samples"] = r.samples;
+            c["t_first_s"] = s.t_s.front();  // as fit gives them: the rows --from/--to kept
+            c["t_last_s"] = s.t_s.back();
             c["gap_samples"] = r.gap_samples;
             c["packed_samples"] = r.packed_samples;
             c["packed_most_slots"] = r.packed_most_slots;

@@ -118,14 +118,11 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
         }
         out.series.push_back(std::move(o));
     }
-    // The rows --exclude took, said once for the file (its series share their rows): the analysis tables show only n.
-    for (const TimeWindow& w : request.options.excluded) {
-        if (all.empty()) break;
-        const std::size_t taken = rows_in(all.front(), w, request.options.t_min_s, request.options.t_max_s);
-        if (taken > 0)
-            out.notes.push_back(w.by + " " + format_double(w.from_s) + ":" + format_double(w.to_s) + " left out " +
-                                counted(taken, "row"));
-    }
+    // Said once for the file: its series share their rows.
+    if (!all.empty())
+        for (std::string& note : selection_notes(all.front(), request.options.t_min_s, request.options.t_max_s,
+                                                 request.options.excluded))
+            out.notes.push_back(std::move(note));
     return out;
 }
 

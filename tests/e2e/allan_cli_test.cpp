@@ -330,24 +330,22 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGi
     // and one term fewer (of 2999), within 1 %.
     EXPECT_NE(text.output.find("leave it out with --exclude 1233.5:1234.5"), std::string::npos) << text.output;
     const RunResult fit_clean = run_driftlab({"fit", clean, "--json"}, dir.path());
-    // The note of the rows left out goes to the error output beside --json (the JSON to a file made for it).
-    std::ofstream(dir.file("left.json")).close();
-    const RunResult fit_left = run_driftlab_stdout_to({"fit", corrupt, "--exclude", "1233.5:1234.5", "--json"},
-                                                      dir.file("left.json"), dir.path());
-    ASSERT_EQ(fit_left.exit_code, 0) << fit_left.output;
-    EXPECT_EQ(fit_left.output, "note: --exclude 1233.5:1234.5 left out 1 row\n");
-    const std::string left_json = read_text(dir.file("left.json"));
-    EXPECT_EQ(left_json.find("lone value"), std::string::npos) << left_json;
+    // The note of the rows left out goes to the error output beside --json, from fit and allan alike.
+    const SplitRun fit_left = run_driftlab_split({"fit", corrupt, "--exclude", "1233.5:1234.5", "--json"}, dir.path());
+    ASSERT_EQ(fit_left.exit_code, 0) << fit_left.err;
+    EXPECT_EQ(fit_left.err, "note: --exclude 1233.5:1234.5 left out 1 row\n");
+    EXPECT_EQ(fit_left.out.find("lone value"), std::string::npos) << fit_left.out;
     const auto c2_clean = nlohmann::json::parse(fit_clean.output)["channels"]["gx"]["C2"];
-    const auto c2_left = nlohmann::json::parse(left_json)["channels"]["gx"]["C2"];
+    const auto c2_left = nlohmann::json::parse(fit_left.out)["channels"]["gx"]["C2"];
     EXPECT_NEAR(c2_left["value"].get<double>(), c2_clean["value"].get<double>(), 0.1 * c2_clean["stderr"].get<double>());
     const RunResult allan_clean = run_driftlab({"allan", clean, "--kind", "rate", "--tau0", "1", "--json"}, dir.path());
-    const RunResult allan_left = run_driftlab(
+    const SplitRun allan_left = run_driftlab_split(
         {"allan", corrupt, "--kind", "rate", "--tau0", "1", "--exclude", "1233.5:1234.5", "--json"}, dir.path());
-    ASSERT_EQ(allan_left.exit_code, 0) << allan_left.output;
+    ASSERT_EQ(allan_left.exit_code, 0) << allan_left.err;
+    EXPECT_EQ(allan_left.err, fit_left.err);
     const auto gx_clean = nlohmann::json::parse(allan_clean.output)["channels"]["gx"];
-    const auto gx_left = nlohmann::json::parse(allan_left.output)["channels"]["gx"];
-    EXPECT_TRUE(gx_left["lone_values_warning"].is_null()) << allan_left.output;
+    const auto gx_left = nlohmann::json::parse(allan_left.out)["channels"]["gx"];
+    EXPECT_TRUE(gx_left["lone_values_warning"].is_null()) << allan_left.out;
     EXPECT_EQ(gx_left["gap_samples"].get<int>(), 1);
     EXPECT_NEAR(gx_left["adev"][0].get<double>(), gx_clean["adev"][0].get<double>(), 0.01 * gx_clean["adev"][0].get<double>());
 
@@ -377,13 +375,18 @@ TEST(AllanCli, FromAndToAnalyseTheRowsOfATableCutThere) {
         args.insert(args.end(), more.begin(), more.end());
         return args;
     };
-    const RunResult ranged = run_driftlab(with(allan, {whole, "--from", "1000", "--to", "2500"}), dir.path());
+    const SplitRun ranged = run_driftlab_split(with(allan, {whole, "--from", "1000", "--to", "2500"}), dir.path());
     const RunResult alone = run_driftlab(with(allan, {cut}), dir.path());
-    ASSERT_EQ(ranged.exit_code, 0) << ranged.output;
+    ASSERT_EQ(ranged.exit_code, 0) << ranged.err;
     ASSERT_EQ(alone.exit_code, 0) << alone.output;
-    auto ranged_gx = nlohmann::json::parse(ranged.output)["channels"]["gx"];
+    // What the range kept is said beside the JSON, and the JSON holds its ends as fit's does.
+    EXPECT_EQ(ranged.err, "note: --from 1000 --to 2500 kept 1501 of 3000 rows, t = 1000 s to 2500 s\n");
+    auto ranged_gx = nlohmann::json::parse(ranged.out)["channels"]["gx"];
     auto alone_gx = nlohmann::json::parse(alone.output)["channels"]["gx"];
     EXPECT_EQ(ranged_gx["samples"].get<int>(), 1501);
+    EXPECT_EQ(ranged_gx["t_first_s"], 1000.0);
+    EXPECT_EQ(ranged_gx["t_last_s"], 2500.0);
+    EXPECT_EQ(ranged_gx["t_first_s"], alone_gx["t_first_s"]);
     EXPECT_EQ(ranged_gx["adev"], alone_gx["adev"]);
     EXPECT_EQ(ranged_gx["drift"], alone_gx["drift"]);
 

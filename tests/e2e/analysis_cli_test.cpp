@@ -81,17 +81,25 @@ TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
         for (int k = 0; k < 1200; ++k)
             out << 3.0 * (1.0 - std::exp(-0.5 * k / 150.0)) + 505.0 + 0.2 * std::sin(2.3 * k) << '\n';
     }
-    const RunResult given =
-        run_driftlab({"fit", path, "--json", "--sample-period", "0.5", "--t-min", "20", "--t-max", "500"}, dir.path());
-    const RunResult alias =
-        run_driftlab({"fit", path, "--json", "--tau0", "0.5", "--from", "20", "--to", "500"}, dir.path());
-    ASSERT_EQ(alias.exit_code, 0) << alias.output;
-    EXPECT_EQ(alias.output, given.output);
-    EXPECT_EQ(nlohmann::json::parse(alias.output)["channels"]["col1"]["t_last_s"], 500.0);
-    EXPECT_EQ(run_driftlab({"whiteness", path, "--tau0", "0.5", "--from", "20"}, dir.path()).exit_code, 0);
+    const SplitRun given =
+        run_driftlab_split({"fit", path, "--json", "--sample-period", "0.5", "--t-min", "20", "--t-max", "500"}, dir.path());
+    const SplitRun alias =
+        run_driftlab_split({"fit", path, "--json", "--tau0", "0.5", "--from", "20", "--to", "500"}, dir.path());
+    ASSERT_EQ(alias.exit_code, 0) << alias.err;
+    EXPECT_EQ(alias.out, given.out);
+    EXPECT_EQ(nlohmann::json::parse(alias.out)["channels"]["col1"]["t_last_s"], 500.0);
+    // Beside the JSON, on the error output, what the range kept (rows 0.5 s apart from t = 0: 20 s to 500 s).
+    EXPECT_EQ(alias.err, "note: --from 20 --to 500 kept 961 of 1200 rows, t = 20 s to 500 s\n");
+    EXPECT_EQ(given.err, alias.err);
+    const RunResult whiteness = run_driftlab({"whiteness", path, "--tau0", "0.5", "--from", "20"}, dir.path());
+    EXPECT_EQ(whiteness.exit_code, 0) << whiteness.output;
+    EXPECT_NE(whiteness.output.find("note: --from 20 kept 1160 of 1200 rows, t = 20 s to 599.5 s\n"), std::string::npos)
+        << whiteness.output;
     const RunResult report =
         run_driftlab({"report", path, "--tau0", "0.5", "--to", "500", "-o", dir.file("r.html"), "--no-plots"}, dir.path());
     EXPECT_EQ(report.exit_code, 0) << report.output;
+    EXPECT_NE(report.output.find("note: --to 500 kept 1001 of 1200 rows, t = 0 s to 500 s\n"), std::string::npos)
+        << report.output;
     const RunResult help = run_driftlab({"fit", "--help"}, dir.path());
     EXPECT_NE(help.output.find("--sample-period,--tau0"), std::string::npos) << help.output;
     EXPECT_NE(help.output.find("--t-min,--from"), std::string::npos) << help.output;
@@ -117,12 +125,10 @@ TEST(AnalysisCli, ASamplePeriodOnALogIsRefusedOrNoted) {
     const RunResult agrees = run_driftlab({"fit", log, "--tau0", "1"}, dir.path());
     EXPECT_EQ(agrees.exit_code, 0) << agrees.output;
     EXPECT_NE(agrees.output.find("note: --sample-period/--tau0 1 s is not used: " + log), std::string::npos) << agrees.output;
-    const std::string json_file = dir.file("fit.json");
-    std::ofstream(json_file).close();  // run_driftlab_stdout_to opens it, it does not make it
-    const RunResult json = run_driftlab_stdout_to({"fit", log, "--tau0", "1", "--json"}, json_file, dir.path());
-    EXPECT_EQ(json.exit_code, 0) << json.output;
-    EXPECT_NE(json.output.find("note: --sample-period/--tau0 1 s is not used"), std::string::npos) << json.output;
-    EXPECT_TRUE(nlohmann::json::parse(read_text(json_file)).contains("channels"));  // the note is not in it
+    const SplitRun json = run_driftlab_split({"fit", log, "--tau0", "1", "--json"}, dir.path());
+    EXPECT_EQ(json.exit_code, 0) << json.err;
+    EXPECT_NE(json.err.find("note: --sample-period/--tau0 1 s is not used"), std::string::npos) << json.err;
+    EXPECT_TRUE(nlohmann::json::parse(json.out).contains("channels"));  // the note is not in it
 }
 
 // --time-column on a canonical log had been dropped without a word, as --sample-period had: a log is timed by its
@@ -266,12 +272,9 @@ TEST(AnalysisCli, ReportUnitsForAPlainTable) {
     TempDir dir("reportunit");
     const std::string table = table_with_gap(dir);  // its one column: gyro
     const std::string html = dir.file("r.html");
-    const std::string json_file = dir.file("out.json");
-    std::ofstream(json_file).close();  // run_driftlab_stdout_to opens it, it does not make it
-    const RunResult ok = run_driftlab_stdout_to({"report", table, "--unit", "gyro:deg/s", "-o", html, "--no-plots",
-                                                 "--json"}, json_file, dir.path());
-    ASSERT_EQ(ok.exit_code, 0) << ok.output;
-    EXPECT_EQ(nlohmann::json::parse(read_text(json_file))["channels"]["gyro"]["unit"], "deg/s");
+    const SplitRun ok = run_driftlab_split({"report", table, "--unit", "gyro:deg/s", "-o", html, "--no-plots", "--json"}, dir.path());
+    ASSERT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_EQ(nlohmann::json::parse(ok.out)["channels"]["gyro"]["unit"], "deg/s");
     const std::string page = read_text(html);
     EXPECT_NE(page.find("<th>B [deg/s]</th>"), std::string::npos) << page;
     EXPECT_NE(page.find("Rate gyros: noise terms in navigation units"), std::string::npos) << page;

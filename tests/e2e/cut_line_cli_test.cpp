@@ -25,7 +25,6 @@ struct JsonRun {
 JsonRun run_json(std::vector<std::string> args, const TempDir& dir, const std::string& name) {
     args.push_back("--json");
     const std::string out = dir.file(name);
-    std::ofstream(out).close();  // run_driftlab_stdout_to opens it, it does not make it
     JsonRun r{run_driftlab_stdout_to(args, out, dir.path()), {}};
     if (r.run.exit_code == 0) {
         r.doc = nlohmann::json::parse(read_text(out));

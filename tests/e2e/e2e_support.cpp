@@ -65,7 +65,7 @@ pid_t spawn_program(const std::string& program, const std::vector<std::string>& 
     const pid_t pid = ::fork();
     if (pid == 0) {
         const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        ::dup2(stdout_file.empty() ? fd : ::open(stdout_file.c_str(), O_WRONLY), 1);
+        ::dup2(stdout_file.empty() ? fd : ::open(stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
         ::dup2(fd, 2);
         std::vector<char*> argv;
         argv.push_back(const_cast<char*>(program.c_str()));
@@ -99,6 +99,12 @@ RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std
                                  const std::filesystem::path& dir) {
     const std::string err = (dir / "driftlab.err").string();
     return wait_child(spawn_driftlab(args, err, stdout_file), err);
+}
+
+SplitRun run_driftlab_split(const std::vector<std::string>& args, const std::filesystem::path& dir) {
+    const std::string out = (dir / "driftlab.stdout").string();
+    const RunResult r = run_driftlab_stdout_to(args, out, dir);
+    return {r.exit_code, read_text(out), r.output};
 }
 
 PlainHilRun plain_hil_with_model(const TempDir& dir, const std::string& name, const std::string& toml) {

@@ -59,9 +59,19 @@ pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& ou
 RunResult wait_child(pid_t pid, const std::string& output_file);
 /// spawn + wait.
 RunResult run_driftlab(const std::vector<std::string>& args, const std::filesystem::path& dir);
-/// spawn + wait with the standard output sent to `stdout_file` (e.g. /dev/full); RunResult::output holds stderr.
+/// spawn + wait with the standard output sent to `stdout_file` (made or emptied; e.g. /dev/full); RunResult::output
+/// holds stderr.
 RunResult run_driftlab_stdout_to(const std::vector<std::string>& args, const std::string& stdout_file,
                                  const std::filesystem::path& dir);
+
+/// A run whose standard output is kept apart from its error output: the document of --json, and the notes beside it.
+struct SplitRun {
+    int exit_code = -1;  ///< -1 when killed by a signal
+    std::string out;     ///< standard output
+    std::string err;     ///< error output
+};
+/// spawn + wait, the standard output read back from a file in `dir`.
+SplitRun run_driftlab_split(const std::vector<std::string>& args, const std::filesystem::path& dir);
 
 using test_support::TempDir;
 
