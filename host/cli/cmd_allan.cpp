@@ -225,7 +225,7 @@ void run(const AllanCommandOptions& o) {
         series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
     const std::vector<std::string> selection =
-        series.empty() ? std::vector<std::string>{} : fit::selection_notes(series.front(), o.from_s, o.to_s, o.excluded);
+        series.empty() ? std::vector<std::string>{} : fit::selection_notes(series.front().t_s, o.from_s, o.to_s, o.excluded);
     for (fit::Series& s : series) {
         fit::Series kept = fit::rows_kept(s, o.from_s, o.to_s, o.excluded);
         // The grid needs two samples: where --from/--to leave fewer, say where the rows are.

@@ -70,6 +70,7 @@ struct GapCommandOptions {
 struct Loaded {
     LogData log;
     sim::SimModel unit;
+    std::vector<std::string> notes;  ///< what --from/--to kept (--exclude's windows are the result's left_out)
 };
 
 // --channel: the channels named (none named: all false, which selects every one).
@@ -83,9 +84,11 @@ std::array<bool, kChannelCount> channels_named(const GapCommandOptions& o) {
     return out;
 }
 
-// The rows --from/--to keep (all without them), less those --exclude and --exclude-saturated leave out. Only the
-// channels the diagnosis analyses count as saturated: a channel stuck at a rail is left out of it, not its rows.
-LogData in_window(const GapCommandOptions& o, LogData log) {
+// The rows --from/--to keep (all without them), less those --exclude and --exclude-saturated leave out, with the
+// unit, and the note of what the range kept. Only the channels the diagnosis analyses count as saturated: a channel
+// stuck at a rail is left out of it, not its rows.
+Loaded in_window(const GapCommandOptions& o, LogData log, sim::SimModel unit) {
+    std::vector<std::string> notes = fit::selection_notes(log.t_s, o.from_s, o.to_s, {});
     if (o.windowed()) log = rows_between(log, o.from_s, o.to_s);
     std::vector<TimeWindow> windows = o.excluded;
     if (o.saturated_margin_s >= 0.0) {
@@ -94,8 +97,8 @@ LogData in_window(const GapCommandOptions& o, LogData log) {
         const auto saturated = saturated_stretches(log, gap::analysed_channels(log, selection), o.saturated_margin_s);
         windows.insert(windows.end(), saturated.begin(), saturated.end());
     }
-    if (windows.empty()) return log;
-    return rows_outside(log, windows);
+    if (!windows.empty()) log = rows_outside(log, windows);
+    return {std::move(log), std::move(unit), std::move(notes)};
 }
 
 // A canonical log the simulator can stand beside: its converter, and the smoothing the replicates must repeat (a
@@ -126,7 +129,7 @@ Loaded load(const GapCommandOptions& o) {
     if (source.canonical_log) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        return {in_window(o, read_canonical(source.in, o.path, read, unit)), unit};
+        return in_window(o, read_canonical(source.in, o.path, read, unit), unit);
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -137,7 +140,7 @@ Loaded load(const GapCommandOptions& o) {
     how.block = o.block;
     LogData log = gap::log_from_table(parse_numeric_table(source.in, o.path), how);
     sim::SimModel scaled = gap::unit_of_recording(unit, how, log);
-    return {in_window(o, std::move(log)), std::move(scaled)};
+    return in_window(o, std::move(log), std::move(scaled));
 }
 
 void print_text(const gap::GapResult& r, const gap::GapOptions& options, const LogData& log) {
@@ -252,7 +255,8 @@ void run(const GapCommandOptions& o) {
             refuse_writing_over_input(file, "--report", o.model_path, "model file");
             refuse_two_outputs_in_one_file(o.model_out, "--model-out", file, "--report");
         }
-    const auto [log, unit] = load(o);
+    const auto [log, unit, notes] = load(o);
+    for (const std::string& note : notes) print_note(note, o.json);
     print_note(dropped_cut_line_note(log), o.json);  // only when the rows analysed reach it: --to before it loses nothing
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {

@@ -120,7 +120,7 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
     }
     // Said once for the file: its series share their rows.
     if (!all.empty())
-        for (std::string& note : selection_notes(all.front(), request.options.t_min_s, request.options.t_max_s,
+        for (std::string& note : selection_notes(all.front().t_s, request.options.t_min_s, request.options.t_max_s,
                                                  request.options.excluded))
             out.notes.push_back(std::move(note));
     return out;

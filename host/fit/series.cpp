@@ -146,27 +146,32 @@ std::vector<Series> load_series(const std::string& path, const std::vector<std::
     return load_series(open_source(path), path, names, time_column, sample_period_s);
 }
 
-std::size_t rows_in(const Series& s, const TimeWindow& w, double t_min_s, double t_max_s) {
+namespace {
+std::size_t rows_in(const std::vector<double>& t_s, const TimeWindow& w, double t_min_s, double t_max_s) {
     const double from_s = std::max(w.from_s, t_min_s), to_s = std::min(w.to_s, t_max_s);
-    return static_cast<std::size_t>(
-        std::count_if(s.t_s.begin(), s.t_s.end(), [&](double t) { return t >= from_s && t <= to_s; }));
+    return static_cast<std::size_t>(std::count_if(t_s.begin(), t_s.end(), [&](double t) { return t >= from_s && t <= to_s; }));
+}
+}  // namespace
+
+std::size_t rows_in(const Series& s, const TimeWindow& w, double t_min_s, double t_max_s) {
+    return rows_in(s.t_s, w, t_min_s, t_max_s);
 }
 
-std::vector<std::string> selection_notes(const Series& s, double t_min_s, double t_max_s,
+std::vector<std::string> selection_notes(const std::vector<double>& t_s, double t_min_s, double t_max_s,
                                          const std::vector<TimeWindow>& excluded) {
     std::vector<std::string> notes;
     const bool from = std::isfinite(t_min_s), to = std::isfinite(t_max_s);
     if (from || to) {
-        const auto first = std::lower_bound(s.t_s.begin(), s.t_s.end(), t_min_s);
-        const auto end = std::upper_bound(first, s.t_s.end(), t_max_s);
+        const auto first = std::lower_bound(t_s.begin(), t_s.end(), t_min_s);
+        const auto end = std::upper_bound(first, t_s.end(), t_max_s);
         if (first != end)
             notes.push_back((from ? "--from " + format_double(t_min_s) : std::string()) + (from && to ? " " : "") +
                             (to ? "--to " + format_double(t_max_s) : std::string()) + " kept " +
-                            std::to_string(end - first) + " of " + counted(s.t_s.size(), "row") + ", t = " +
+                            std::to_string(end - first) + " of " + counted(t_s.size(), "row") + ", t = " +
                             format_double(*first) + " s" + (end - first > 1 ? " to " + format_double(*(end - 1)) + " s" : ""));
     }
     for (const TimeWindow& w : excluded)
-        if (const std::size_t taken = rows_in(s, w, t_min_s, t_max_s); taken > 0)
+        if (const std::size_t taken = rows_in(t_s, w, t_min_s, t_max_s); taken > 0)
             notes.push_back(w.by + " " + format_double(w.from_s) + ":" + format_double(w.to_s) + " left out " +
                             counted(taken, "row"));
     return notes;

@@ -270,10 +270,12 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     EXPECT_NEAR(j["saturated"][0]["first_t_s"].get<double>(), 100.1, 0.5);  // the 100th row, at 1 s per row
     EXPECT_NEAR(j["saturated"][0]["last_t_s"].get<double>(), 104.1, 0.5);
     // The user leaves the disturbed start out: from 110 s on nothing is flagged.
-    const RunResult later = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--from", "110", "--model-out",
-                                          dir.file("later.toml")}, dir.path());
-    ASSERT_EQ(later.exit_code, 0) << later.output;
-    EXPECT_TRUE(nlohmann::json::parse(later.output)["saturated"].empty()) << later.output;
+    const SplitRun later = run_driftlab_split({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--from", "110",
+                                               "--model-out", dir.file("later.toml")}, dir.path());
+    ASSERT_EQ(later.exit_code, 0) << later.err;
+    EXPECT_TRUE(nlohmann::json::parse(later.out)["saturated"].empty()) << later.out;
+    // What the range kept, beside the JSON as fit and allan say it (rows 1 s apart from 1.098 s to 400.098 s).
+    EXPECT_EQ(later.err, "note: --from 110 kept 291 of 400 rows, t = 110.098 s to 400.098 s\n");
     {
         std::ifstream file(dir.file("later.toml"));
         std::string first;

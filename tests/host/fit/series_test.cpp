@@ -110,15 +110,15 @@ TEST(Series, SelectionNotesCountWhatTheRangeKeptAndEachWindowTook) {
         s.values.push_back(k);
     }
     const double inf = std::numeric_limits<double>::infinity();
-    EXPECT_TRUE(selection_notes(s, -inf, inf, {}).empty());
-    EXPECT_EQ(selection_notes(s, 1.0, 3.2, {{2.0, 2.5, "--exclude"}, {2.4, 9.0, "--exclude"}}),
+    EXPECT_TRUE(selection_notes(s.t_s, -inf, inf, {}).empty());
+    EXPECT_EQ(selection_notes(s.t_s, 1.0, 3.2, {{2.0, 2.5, "--exclude"}, {2.4, 9.0, "--exclude"}}),
               (std::vector<std::string>{"--from 1 --to 3.2 kept 5 of 10 rows, t = 1 s to 3 s",
                                         "--exclude 2:2.5 left out 2 rows", "--exclude 2.4:9 left out 2 rows"}));
     EXPECT_EQ(rows_kept(s, 1.0, 3.2).t_s, (std::vector<double>{1, 1.5, 2, 2.5, 3}));
-    EXPECT_EQ(selection_notes(s, 4.5, inf, {}), (std::vector<std::string>{"--from 4.5 kept 1 of 10 rows, t = 4.5 s"}));
-    EXPECT_EQ(selection_notes(s, -inf, 0.2, {}), (std::vector<std::string>{"--to 0.2 kept 1 of 10 rows, t = 0 s"}));
+    EXPECT_EQ(selection_notes(s.t_s, 4.5, inf, {}), (std::vector<std::string>{"--from 4.5 kept 1 of 10 rows, t = 4.5 s"}));
+    EXPECT_EQ(selection_notes(s.t_s, -inf, 0.2, {}), (std::vector<std::string>{"--to 0.2 kept 1 of 10 rows, t = 0 s"}));
     // A range without rows is refused where the rows are cut, with their span: no note.
-    EXPECT_TRUE(selection_notes(s, 5.0, 6.0, {}).empty());
+    EXPECT_TRUE(selection_notes(s.t_s, 5.0, 6.0, {}).empty());
 }
 
 }  // namespace
