@@ -40,20 +40,34 @@ LoneValues lone_values(const std::vector<double>& x) {
     std::transform(half.begin(), half.end(), magnitude.begin(), [](double h) { return std::fabs(h); });
     std::vector<double> sorted = magnitude;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    double scale = kMadToSigma * sorted[sorted.size() / 2];
-    if (scale == 0.0) {
-        // A series that mostly repeats one code: its step is the scale.
-        for (double m : magnitude)
-            if (m > 0.0 && (scale == 0.0 || m < scale)) scale = m;
-        if (scale == 0.0) return out;  // a constant series
+    const double mad_scale = kMadToSigma * sorted[sorted.size() / 2];
+    // A series that mostly repeats one code: its step is the scale, the smallest nonzero difference other than the
+    // two beside the row judged, so among the three smallest. Where the row's own were taken, a series constant but
+    // for one corrupt row had measured the row by itself and never found it; constant but for the row, there is no
+    // step, and any departure is lone.
+    std::vector<std::size_t> smallest;  // indices of the smallest nonzero magnitudes, in increasing order
+    if (mad_scale == 0.0) {
+        for (std::size_t i = 0; i < magnitude.size(); ++i) {
+            if (magnitude[i] == 0.0) continue;
+            const auto at = std::find_if(smallest.begin(), smallest.end(), [&](std::size_t j) { return magnitude[i] < magnitude[j]; });
+            smallest.insert(at, i);
+            if (smallest.size() > 3) smallest.pop_back();
+        }
+        if (smallest.empty()) return out;  // a constant series
     }
+    const auto scale_beside = [&](std::size_t k) {
+        if (mad_scale > 0.0) return mad_scale;
+        for (std::size_t i : smallest)
+            if (i != k - 1 && i != k) return magnitude[i];
+        return 0.0;
+    };
     const double largest = *std::max_element(magnitude.begin(), magnitude.end());
     double total = 0.0, lone = 0.0;
     for (double m : magnitude) total += (m / largest) * (m / largest);
     for (std::size_t k = 1; k + 1 < x.size(); ++k) {
         const double before = magnitude[k - 1], after = magnitude[k];
         const double smaller = std::min(before, after);
-        if (smaller > kLoneFactor * scale && std::fabs(half[k - 1] + half[k]) < smaller / 2.0) {
+        if (smaller > kLoneFactor * scale_beside(k) && std::fabs(half[k - 1] + half[k]) < smaller / 2.0) {
             out.indices.push_back(k);
             lone += (before / largest) * (before / largest) + (after / largest) * (after / largest);
         }

@@ -23,8 +23,9 @@ struct LoneValues {
 };
 
 /// The lone values of `x`: |x_k - x_k-1| and |x_k+1 - x_k| both above kLoneFactor times the robust scale of the first
-/// differences (1.4826 times their median absolute value; the smallest nonzero difference where that is 0, as on a
-/// series that mostly repeats one code), and |x_k+1 - x_k-1| below half the smaller of them. The first and last
+/// differences (1.4826 times their median absolute value; where that is 0, as on a series that mostly repeats one
+/// code, the smallest nonzero difference other than x_k's own two, and 0 when there is none: on a series constant but
+/// for x_k), and |x_k+1 - x_k-1| below half the smaller of them. The first and last
 /// samples have one neighbour, and a step could not be told from a lone value there: they are never lone. Safe for
 /// any finite values, up to the largest double.
 LoneValues lone_values(const std::vector<double>& x);

@@ -1,5 +1,6 @@
-// Lone values: a corrupt row is found at its place whatever its size, while Gaussian noise, steps, small spikes, a
-// series on one code and the ends of a series are not; the warning needs the share of variance documented.
+// Lone values: a corrupt row is found at its place whatever its size, also in a series constant but for it, while
+// Gaussian noise, steps, small spikes, single-code flips and the ends of a series are not; the warning needs the share
+// of variance documented.
 #include "host/stats/lone_values.hpp"
 
 #include <algorithm>
@@ -76,6 +77,26 @@ TEST(LoneValues, OnOneCodeTheStepIsTheScale) {
     x[1201] = 605.0;
     EXPECT_EQ(lone_values(x).indices, std::vector<std::size_t>{1201});
     EXPECT_TRUE(lone_values(std::vector<double>(100, 3.0)).indices.empty());
+}
+
+// A series constant but for one row has no step to measure the row by but its own: the row is lone whatever its size
+// (before, its own difference had been the scale, and a 0x7FFF in a stuck channel went unwarned). Two departing rows
+// measure each other: the one more than ten times the other's size is lone.
+TEST(LoneValues, OnAConstantSeriesOneDepartingRowIsLone) {
+    for (double v : {513.0, 32767.0, -1e300}) {
+        std::vector<double> x(1000, 512.0);
+        x[400] = v;
+        const LoneValues found = lone_values(x);
+        EXPECT_EQ(found.indices, std::vector<std::size_t>{400}) << v;
+        EXPECT_DOUBLE_EQ(found.variance_share, 1.0) << v;
+        EXPECT_TRUE(lone_values_warning(times(x.size()), x).has_value()) << v;
+    }
+    std::vector<double> x(1000, 512.0);
+    x[300] = 522.0;
+    x[600] = 1512.0;
+    EXPECT_EQ(lone_values(x).indices, std::vector<std::size_t>{600});
+    x[600] = 562.0;  // five times: neither
+    EXPECT_TRUE(lone_values(x).indices.empty());
 }
 
 TEST(LoneValues, TheEndsAreNeverLone) {
