@@ -50,10 +50,11 @@ std::size_t rows_in(const Series& s, const TimeWindow& w, double t_min_s, double
 /// a mistaken time, not nothing to do.
 Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded = {});
 
-/// What --from/--to and --exclude took from rows at times `t_s` (increasing; before any cut), one line each, for a file
-/// whose series share their rows: "--from 100 --to 2000 kept 190000 of 360000 rows, t = 100.0086 s to 1999.998 s" (none without those
-/// options, or when they keep no row: that is refused elsewhere, naming the rows' span) and "--exclude 1233.5:1234.5
-/// left out 1 row" (per window that takes a row in range). The analyses' tables show only how many rows they used.
+/// What --from/--to and --exclude took from rows at times `t_s` (increasing; before any cut), one line each, for a
+/// file whose series share their rows: "--from 100 --to 2000 kept 190000 of 360000 rows, t = 100.0086 s to
+/// 1999.998 s" (none without those options, or when they keep no row: that is refused elsewhere, naming the rows'
+/// span) and "--exclude 1233.5:1234.5 left out 1 row" (per window that takes a row in range). The analyses' tables
+/// show only how many rows they used.
 std::vector<std::string> selection_notes(const std::vector<double>& t_s, double t_min_s, double t_max_s,
                                          const std::vector<TimeWindow>& excluded);
 
