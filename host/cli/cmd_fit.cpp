@@ -199,8 +199,9 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
                     "Plain tables without a time column: sample period [s] (default 1 s per row)")
         ->check(positive_number());
     add_drop_cut_line_flag(cmd, r.drop_cut_line);
+    // More than the residual holds are cut to what it holds, with a warning: the bound only keeps the count a number.
     cmd->add_option("--sequences", r.options.whiteness.sequences, "Whiteness: number M of sequences (paper: 10)")
-        ->check(positive_number());
+        ->check(whole_number_in(1, 1000000));
     cmd->add_option("--sequence-length", r.options.whiteness.sequence_length_s,
                     "Whiteness: length L of each sequence [s] (paper: 50)")
         ->check(positive_number());

@@ -423,11 +423,13 @@ void register_hil(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s] (default: the preset's)")->check(positive_number());
     cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds (default: the preset's, else the model's)");
-    cmd->add_option("--window", opts->window, "Least-squares window N [conversions] (default: the preset's, else the model's)")->check(whole_number_in(1, 64));
+    cmd->add_option("--window", opts->window, "Least-squares window N [conversions] (default: the preset's, else the model's)")
+        ->check(whole_number_in(1, proto::kWindowMax));
     cmd->add_option("--conversions", opts->conversions,
                     "Conversions per channel per output (10 ms outputs need <= 12: docs/firmware.md; default: the preset's, else the model's)")
-        ->check(whole_number_in(1, 64));
-    cmd->add_option("--order", opts->order, "Least-squares fit order (default: the preset's, else the model's)")->check(whole_number_in(0, 1));
+        ->check(whole_number_in(1, proto::kConversionsPerOutputMax));
+    cmd->add_option("--order", opts->order, "Least-squares fit order (default: the preset's, else the model's)")
+        ->check(whole_number_in(0, proto::kFitOrderMax));
     cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s] (default: the preset's)")
         ->check(non_negative_number());
     cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)");

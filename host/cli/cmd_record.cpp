@@ -51,12 +51,6 @@ void run_record(const RecordCliOptions& o) {
     r.config.output_period_ms = output_period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1),
                                                  stream ? "--stream" : "--poll");
     r.config.mode = static_cast<std::uint8_t>(stream ? proto::OutputMode::stream : proto::OutputMode::poll);
-    if (o.conversions < 1 || o.conversions > proto::kConversionsPerOutputMax) {
-        throw UsageError("--conversions must be 1..64");
-    }
-    if (o.window < 1 || o.window > proto::kWindowMax) throw UsageError("--window must be 1..64");
-    if (o.order < 0 || o.order > proto::kFitOrderMax) throw UsageError("--order must be 0 or 1");
-    if (o.duration_s < 0.0) throw UsageError("--duration must not be negative");
     r.config.conversions_per_output = static_cast<std::uint8_t>(o.conversions);
     r.config.window = static_cast<std::uint8_t>(o.window);
     r.config.fit_order = static_cast<std::uint8_t>(o.order);
@@ -104,7 +98,7 @@ void register_record(CLI::App& app) {
     auto o = std::make_shared<RecordCliOptions>();
     CLI::App* cmd = app.add_subcommand("record", "Record a board over a serial/radio link into a log and a raw capture");
     cmd->add_option("--port", o->port, "Serial device (/dev/ttyUSB0, /dev/serial/by-id/..., /dev/pts/N)")->required();
-    cmd->add_option("--baud", o->baud, "Baud rate [bit/s]")->capture_default_str();
+    cmd->add_option("--baud", o->baud, "Baud rate [bit/s]")->capture_default_str()->check(baud_rate());
     auto* poll = cmd->add_option("--poll", o->poll_s, "Poll mode (the paper's), one POLL every PERIOD [s] (default 0.1)")
                      ->check(positive_number());
     auto* stream = cmd->add_option("--stream", o->stream_s, "Stream mode: the board sends every PERIOD [s] unasked")
@@ -112,10 +106,16 @@ void register_record(CLI::App& app) {
     poll->excludes(stream);
     cmd->add_option("--duration", o->duration_s, "Stop after this much board time [s] (default: until Ctrl-C)")
         ->check(non_negative_number());
-    cmd->add_option("--conversions", o->conversions, "ADC conversions per channel per output (1..64)")
-        ->capture_default_str();
-    cmd->add_option("--window", o->window, "Least-squares window N [conversions] (1..64)")->capture_default_str();
-    cmd->add_option("--order", o->order, "Least-squares order: 0 mean, 1 line")->capture_default_str();
+    // The firmware's ranges, checked as hil checks them.
+    cmd->add_option("--conversions", o->conversions, "ADC conversions per channel per output")
+        ->capture_default_str()
+        ->check(whole_number_in(1, proto::kConversionsPerOutputMax));
+    cmd->add_option("--window", o->window, "Least-squares window N [conversions]")
+        ->capture_default_str()
+        ->check(whole_number_in(1, proto::kWindowMax));
+    cmd->add_option("--order", o->order, "Least-squares order: 0 mean, 1 line")
+        ->capture_default_str()
+        ->check(whole_number_in(0, proto::kFitOrderMax));
     cmd->add_flag("--raw", o->raw, "Also record the raw ADC codes (RAW frames)");
     cmd->add_option("-o,--output", o->output, "Log file (canonical CSV)")->required();
     cmd->add_option("--capture", o->capture, "Raw capture file (default: LOG.cap beside the log)");

@@ -89,6 +89,9 @@ CLI::Validator number_in(double low, double high, Bound low_bound = Bound::close
 CLI::Validator whole_number_in(long long low, long long high);
 /// Any finite number (a time bound may be negative; "nan" compared false with every time and cut nothing).
 const CLI::Validator& finite_value();
+/// A baud rate termios can set (io::is_supported_baud): record's and flash's --baud, checked as the command line is
+/// read (flash --dry-run had printed `-b -1`).
+const CLI::Validator& baud_rate();
 /// A path that is not empty ("--report ''" had been taken for no report at all).
 const CLI::Validator& non_empty_path();
 /// A seed: digits only, 0 to 2^64 - 1 (CLI11's unsigned parse wraps "-5" and clamps what is beyond).

@@ -2,10 +2,12 @@
 // option's type (help_formatter.cpp): its range in the words of its refusal ("FLOAT > 0"), or none where the type
 // says enough (a finite FLOAT, a TEXT path, a UINT seed).
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "driftlab/proto/messages.hpp"
 #include "host/cli/commands.hpp"
+#include "host/io/serial_port.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 
@@ -93,6 +95,17 @@ CLI::Validator whole_number_in(long long low, long long high) {
             return ok ? std::string() : "expected a whole number in " + range + ", got '" + text + "'";
         },
         "in " + range);
+}
+
+const CLI::Validator& baud_rate() {
+    static const CLI::Validator check(
+        [](std::string& text) -> std::string {
+            const CLI::Validator whole = whole_number_in(1, std::numeric_limits<int>::max());
+            const bool ok = whole(text).empty() && io::is_supported_baud(std::stoi(text));
+            return ok ? std::string() : "expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '" + text + "'";
+        },
+        "");
+    return check;
 }
 
 const CLI::Validator& non_empty_path() {

@@ -45,6 +45,27 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_EQ(r.exit_code, 2) << args[2] << ": " << r.output;
         EXPECT_NE(r.output.find("expected a finite number, got '" + args[3] + "'"), std::string::npos) << r.output;
     }
+    // record and flash: a CONFIG field or a rate that is not a whole number in range had been a failed conversion in the
+    // parser's words, or a check of record's own words; flash --dry-run had printed `-b -1`. Each is refused as hil's are.
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"--conversions", "3.5", "--conversions: expected a whole number in [1, 64], got '3.5'"},
+          {"--window", "65", "--window: expected a whole number in [1, 64], got '65'"},
+          {"--order", "x", "--order: expected a whole number in [0, 1], got 'x'"},
+          {"--baud", "3.5", "--baud: expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '3.5'"},
+          {"--baud", "12345", "--baud: expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '12345'"}}) {
+        const RunResult r = run_driftlab({"record", "--port", "/dev/null", "-o", dir.file("r.csv"), args[0], args[1]}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
+        EXPECT_NE(r.output.find(args[2]), std::string::npos) << r.output;
+    }
+    for (const char* baud : {"-1", "0"}) {
+        const RunResult r = run_driftlab({"flash", "--dry-run", "--port", "/dev/null", "--baud", baud}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << baud << ": " << r.output;
+        EXPECT_EQ(r.output.find("avrdude"), std::string::npos) << r.output;
+    }
+    const RunResult sequences = run_driftlab({"whiteness", "x.csv", "--sequences", "1e-9"}, dir.path());
+    EXPECT_EQ(sequences.exit_code, 2) << sequences.output;
+    EXPECT_NE(sequences.output.find("--sequences: expected a whole number in [1, 1000000], got '1e-9'"), std::string::npos)
+        << sequences.output;
     // A reversed or empty time range: gap and allan had refused it only once the log was read, fit, whiteness and
     // report as a "0 samples" error per channel (exit 3). x.csv does not exist, so exit 2 shows that nothing was read.
     for (const char* command : {"fit", "whiteness", "report", "allan", "gap"})
