@@ -342,7 +342,8 @@ void register_gap(CLI::App& app) {
                                          "window; default 1)")
         ->check(whole_number_in(1, proto::kConversionsPerOutputMax));
     cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
-                    "the file's values, mean shapes refitted to the log; default: the paper's unit");
+                    "the file's values, mean shapes refitted to the log; default: the paper's unit")
+        ->check(non_empty_path());
     cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start")
         ->check(finite_value());
     cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end")

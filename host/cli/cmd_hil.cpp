@@ -422,7 +422,8 @@ void register_hil(CLI::App& app) {
                                               "apart, raw and least-squares)")
         ->capture_default_str();
     cmd->add_option("--duration", opts->duration_s, "Recording time after the handshake [s] (default: the preset's)")->check(positive_number());
-    cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds (default: the preset's, else the model's)");
+    cmd->add_option("--period", opts->period_s, "Output (poll) period [s], whole milliseconds (default: the preset's, else the model's)")
+        ->check(positive_number());
     cmd->add_option("--window", opts->window, "Least-squares window N [conversions] (default: the preset's, else the model's)")
         ->check(whole_number_in(1, proto::kWindowMax));
     cmd->add_option("--conversions", opts->conversions,
@@ -432,7 +433,7 @@ void register_hil(CLI::App& app) {
         ->check(whole_number_in(0, proto::kFitOrderMax));
     cmd->add_option("--warm", opts->warm_s, "The sensor was powered this long before the board booted [s] (default: the preset's)")
         ->check(non_negative_number());
-    cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)");
+    cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)")->check(non_empty_path());
     cmd->add_option("--seed", opts->seed, "Seed of every random component")->capture_default_str()->check(seed_number());
     cmd->add_flag("--raw", opts->raw, "Also log the raw codes (RAW frames)");
     cmd->add_flag("--stream", opts->stream, "Stream mode: the firmware sends without being polled");

@@ -81,10 +81,20 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     EXPECT_EQ(fraction.exit_code, 2) << fraction.output;
     EXPECT_NE(fraction.output.find("--fit-fraction: expected a number in [0.3, 0.85], got 'nan'"), std::string::npos)
         << fraction.output;
-    for (const char* path : {"--report", "--model-out"}) {
-        const RunResult empty = run_driftlab({"gap", "x.csv", path, ""}, dir.path());
-        EXPECT_EQ(empty.exit_code, 2) << empty.output;
-        EXPECT_NE(empty.output.find("expected a path, got ''"), std::string::npos) << empty.output;
+    // An empty --model had meant the paper's unit without a word, in gap and hil alike.
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--report"}, {"gap", "x.csv", "--model-out"},
+                                                 {"gap", "x.csv", "--model"}, {"hil", "-o", dir.file("h.csv"), "--model"}}) {
+        std::vector<std::string> empty_path = args;
+        empty_path.push_back("");
+        const RunResult empty = run_driftlab(empty_path, dir.path());
+        EXPECT_EQ(empty.exit_code, 2) << args.back() << ": " << empty.output;
+        EXPECT_NE(empty.output.find(args.back() + ": expected a path, got ''"), std::string::npos) << empty.output;
+    }
+    // hil --period: text had failed in the parser's words, and an empty value had meant the preset's period.
+    for (const char* period : {"x", ""}) {
+        const RunResult r = run_driftlab({"hil", "-o", dir.file("h.csv"), "--period", period}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find(std::string("--period: expected a number > 0, got '") + period + "'"), std::string::npos) << r.output;
     }
     const RunResult huge = run_driftlab({"gap-eval", "--quick", "--levels", "1000"}, dir.path());
     EXPECT_EQ(huge.exit_code, 2) << huge.output;
