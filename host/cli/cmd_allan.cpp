@@ -302,7 +302,9 @@ void register_allan(CLI::App& app) {
     auto o = std::make_shared<AllanCommandOptions>();
     CLI::App* cmd = app.add_subcommand("allan", "Allan deviation (overlapping, modified, Hadamard) with confidence "
                                                 "intervals, noise types and IEEE 952 terms");
-    cmd->add_option("file", o->path, "Canonical log, or a plain numeric file (then --kind and --tau0)")->required();
+    cmd->add_option("file", o->path, "Canonical log, or a plain numeric file (then --kind and --tau0)")
+        ->required()
+        ->check(non_empty_path());
     cmd->add_option("--channel", o->channels, "Channels (log) or columns (plain file): NAME[,NAME] or all")->delimiter(',');
     cmd->add_option("--kind", o->kind, "Plain files: rate (rate / fractional-frequency samples) or phase (integrated)");
     cmd->add_option("--tau0", o->tau0_s,
@@ -326,7 +328,7 @@ void register_allan(CLI::App& app) {
         ->excludes(keep);
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: channels.<name>.{tau,adev,ci_low,ci_high,noise,n,mdev,hdev,terms,kalibr,raw})");
-    cmd->add_option("--plot", o->plot_dir, "Write allan_<channel>.png/.svg into this folder");
+    cmd->add_option("--plot", o->plot_dir, "Write allan_<channel>.png/.svg into this folder")->check(non_empty_path());
     cmd->callback([o] { run(*o); });
 }
 

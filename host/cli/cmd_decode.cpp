@@ -246,9 +246,10 @@ void run_decode(const DecodeOptions& o) {
 void register_decode(CLI::App& app) {
     auto o = std::make_shared<DecodeOptions>();
     CLI::App* cmd = app.add_subcommand("decode", "Rebuild a recorded log from its raw capture (LOG.csv.cap)");
-    cmd->add_option("capture", o->capture, "Capture file written by `driftlab record`")->required();
+    cmd->add_option("capture", o->capture, "Capture file written by `driftlab record`")->required()->check(non_empty_path());
     cmd->add_option("-o,--output", o->output, "Log file to write (its folder is made; - for standard output)")
-        ->required();
+        ->required()
+        ->check(non_empty_path());
     cmd->add_flag("--overwrite", o->overwrite, "Replace a file already at -o (refused otherwise)");
     cmd->add_flag("--json", o->json,
                   "Print the summary as JSON (keys: rows, frames_received, frames_lost, crc_errors, crc_failures, "

@@ -185,7 +185,7 @@ void add_drop_cut_line_flag(CLI::App* cmd, bool& drop) {
 }
 
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
-    cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required();
+    cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required()->check(non_empty_path());
     cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
     add_time_range_options(cmd, r.options.t_min_s, r.options.t_max_s);
     add_exclude_option(cmd, r.options.excluded,
@@ -212,7 +212,7 @@ void register_fit(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("fit", "Fit the turn-on drift C1(1-exp(-t/T))+C2 per channel (paper eq. 1)");
     add_analysis_input_options(cmd, opts->request);
     cmd->add_flag("--json", opts->json, "Print JSON (keys: channels.<name>.{C1,C2,T,status,n,rms,whiteness,...})");
-    cmd->add_option("--plot", opts->plot_dir, "Write Fig. 2-4 as PNG and SVG into this folder");
+    cmd->add_option("--plot", opts->plot_dir, "Write Fig. 2-4 as PNG and SVG into this folder")->check(non_empty_path());
     cmd->callback([opts] { run(*opts); });
 }
 

@@ -50,12 +50,16 @@ void run_flash(FlashOptions& opts) {
 void register_flash(CLI::App& app) {
     auto opts = std::make_shared<FlashOptions>();
     CLI::App* cmd = app.add_subcommand("flash", "Write the firmware to an Arduino Uno/Nano-class board with avrdude");
-    cmd->add_option("--port", opts->request.port, "Serial device of the board (default: the only USB adapter)");
-    cmd->add_option("--programmer", opts->request.programmer, "avrdude programmer id")->capture_default_str();
+    cmd->add_option("--port", opts->request.port, "Serial device of the board (default: the only USB adapter)")
+        ->check(non_empty_path());
+    cmd->add_option("--programmer", opts->request.programmer, "avrdude programmer id")
+        ->capture_default_str()
+        ->check(non_empty("an avrdude programmer id"));
     cmd->add_option("--baud", opts->request.baud, "Bootloader baud rate [bit/s]")->capture_default_str()->check(baud_rate());
-    cmd->add_option("--part", opts->request.part, "avrdude part id")->capture_default_str();
-    cmd->add_option("--hex", opts->request.hex_file, "Intel HEX image (default: the AVR build's driftlab_fw.hex)");
-    cmd->add_option("--avrdude", opts->request.avrdude, "avrdude program")->capture_default_str();
+    cmd->add_option("--part", opts->request.part, "avrdude part id")->capture_default_str()->check(non_empty("an avrdude part id"));
+    cmd->add_option("--hex", opts->request.hex_file, "Intel HEX image (default: the AVR build's driftlab_fw.hex)")
+        ->check(non_empty_path());
+    cmd->add_option("--avrdude", opts->request.avrdude, "avrdude program")->capture_default_str()->check(non_empty_path());
     cmd->add_flag("--dry-run", opts->dry_run, "Print the avrdude command instead of running it");
     cmd->callback([opts] { run_flash(*opts); });
 }

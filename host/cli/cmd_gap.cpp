@@ -330,7 +330,9 @@ void register_gap(CLI::App& app) {
     auto o = std::make_shared<GapCommandOptions>();
     CLI::App* cmd = app.add_subcommand("gap", "Sim-to-real gap: where the calibrated simulator differs from a real log, "
                                               "which effect explains it, how far the gap shrinks");
-    cmd->add_option("file", o->path, "Real log: a canonical log, or a plain table with --tau0 and --as")->required();
+    cmd->add_option("file", o->path, "Real log: a canonical log, or a plain table with --tau0 and --as")
+        ->required()
+        ->check(non_empty_path());
     cmd->add_option("--as", o->mappings,
                     "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
                     "LSB (its resolution in the column's unit: deg/s or g unless UNIT is mdps, rad/s, mg or m/s2), "

@@ -58,7 +58,8 @@ std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, con
 std::string generator_named(const std::string& flag, const std::string& name) {
     std::string known;
     for (const auto& t : gap::truth_list()) {
-        if (t.generator == name || t.effect == name) return t.generator;
+        // Not "": an out-of-library generator stands for no effect, and "" had named it.
+        if (!name.empty() && (t.generator == name || t.effect == name)) return t.generator;
         known += (known.empty() ? "" : ", ") + t.generator + (t.effect.empty() || t.effect == t.generator ? "" : " (" + t.effect + ")");
     }
     throw UsageError(flag + ": unknown generator or effect '" + name + "' (generators, with the effect each stands for: " +
@@ -204,6 +205,7 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_option("--plot", o->plot_dir,
                     "Also write DIR/gap_eval_detected and DIR/gap_eval_top1 (PNG, SVG): detected and right-verdict shares "
                     "against size, with 95 % intervals")
+        ->check(non_empty_path())
         ->excludes("--clean-only");
     cmd->callback([o] { run(*o); });
 }

@@ -437,16 +437,19 @@ void register_hil(CLI::App& app) {
     cmd->add_option("--seed", opts->seed, "Seed of every random component")->capture_default_str()->check(seed_number());
     cmd->add_flag("--raw", opts->raw, "Also log the raw codes (RAW frames)");
     cmd->add_flag("--stream", opts->stream, "Stream mode: the firmware sends without being polled");
-    cmd->add_option("-o,--output", opts->output, "Log file (default out/<preset>.csv; - for standard output)");
+    cmd->add_option("-o,--output", opts->output, "Log file (default out/<preset>.csv; - for standard output)")
+        ->check(non_empty_path());
     cmd->add_flag("--json", opts->json, "Print the run summary as JSON");
     cmd->add_flag("--pty", opts->pty, "Serve the board's UART on a pseudo-terminal (prints its path) for "
                                       "driftlab record; runs until --duration or Ctrl-C");
     cmd->add_option("--speed", opts->speed, "--pty: virtual seconds per wall second (default 1)")
         ->check(positive_number());
-    cmd->add_option("--pty-link", opts->pty_link, "--pty: also make this symlink to the pseudo-terminal (printed as PATH -> /dev/pts/N)");
+    cmd->add_option("--pty-link", opts->pty_link, "--pty: also make this symlink to the pseudo-terminal (printed as PATH -> /dev/pts/N)")
+        ->check(non_empty_path());
     cmd->add_option("--target", opts->target, "native (firmware core on the host) or avr (the real ELF in simavr)")
         ->capture_default_str();
-    cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)");
+    cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)")
+        ->check(non_empty_path());
     cmd->add_option("--gdb", opts->gdb_port, "--target avr: start simavr's gdb stub on this TCP port and wait for "
                                              "avr-gdb (docs/avr-in-the-loop.md)")->check(whole_number_in(1, 65535));
     cmd->add_flag("--cycles", opts->cycles, "--target avr: also print the firmware's cycle budget (ISR and fit "

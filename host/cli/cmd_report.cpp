@@ -84,7 +84,7 @@ void register_report(CLI::App& app) {
     auto opts = std::make_shared<ReportCommandOptions>();
     CLI::App* cmd = app.add_subcommand("report", "Write one self-contained HTML report (fit, whiteness, Allan, figures)");
     add_analysis_input_options(cmd, opts->request);
-    cmd->add_option("-o,--output", opts->output, "HTML file to write (default report.html)");
+    cmd->add_option("-o,--output", opts->output, "HTML file to write (default report.html)")->check(non_empty_path());
     cmd->add_flag("--json", opts->json, "Also print the fit results as JSON (same keys as `fit --json`)");
     cmd->add_flag("--no-plots", opts->no_plots, "Leave the figures out (no gnuplot needed)");
     add_unit_option(cmd, opts->units);

@@ -70,7 +70,7 @@ void register_whiteness(CLI::App& app) {
     cmd->add_flag("--json", opts->json,
                   "Print JSON (keys: channels.<name>.whiteness.{fraction_inside,ljung_box_p,white,"
                   "ensemble_autocorrelation,...})");
-    cmd->add_option("--plot", opts->plot_dir, "Write Fig. 4 as PNG and SVG into this folder");
+    cmd->add_option("--plot", opts->plot_dir, "Write Fig. 4 as PNG and SVG into this folder")->check(non_empty_path());
     cmd->callback([opts] { run(*opts); });
 }
 

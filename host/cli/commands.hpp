@@ -92,7 +92,10 @@ const CLI::Validator& finite_value();
 /// A baud rate termios can set (io::is_supported_baud): record's and flash's --baud, checked as the command line is
 /// read (flash --dry-run had printed `-b -1`).
 const CLI::Validator& baud_rate();
-/// A path that is not empty ("--report ''" had been taken for no report at all).
+/// A value that is not empty, `what` naming what is wanted: an empty one had been taken for the default, or for none
+/// ("--report ''" for no report at all, "hil -o ''" for out/fig3.csv, "--plot ''" for no plots).
+CLI::Validator non_empty(const std::string& what);
+/// non_empty("a path"): every file and folder option, and every input file.
 const CLI::Validator& non_empty_path();
 /// A seed: digits only, 0 to 2^64 - 1 (CLI11's unsigned parse wraps "-5" and clamps what is beyond).
 const CLI::Validator& seed_number();

@@ -108,9 +108,12 @@ const CLI::Validator& baud_rate() {
     return check;
 }
 
+CLI::Validator non_empty(const std::string& what) {
+    return CLI::Validator([what](std::string& text) { return text.empty() ? "expected " + what + ", got ''" : std::string(); }, "");
+}
+
 const CLI::Validator& non_empty_path() {
-    static const CLI::Validator check(
-        [](std::string& text) -> std::string { return text.empty() ? "expected a path, got ''" : std::string(); }, "");
+    static const CLI::Validator check = non_empty("a path");
     return check;
 }
 

@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "e2e_support.hpp"
 
@@ -81,15 +84,43 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     EXPECT_EQ(fraction.exit_code, 2) << fraction.output;
     EXPECT_NE(fraction.output.find("--fit-fraction: expected a number in [0.3, 0.85], got 'nan'"), std::string::npos)
         << fraction.output;
-    // An empty --model had meant the paper's unit without a word, in gap and hil alike.
-    for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--report"}, {"gap", "x.csv", "--model-out"},
-                                                 {"gap", "x.csv", "--model"}, {"hil", "-o", dir.file("h.csv"), "--model"}}) {
+    // An empty path had meant the default or nothing, without a word: --model the paper's unit, hil -o out/fig3.csv,
+    // --plot no plots, --capture LOG.cap, --report no report; an empty input file had been refused as ": cannot open".
+    // Each path option and input, as the command line is read (x.csv does not exist).
+    const std::string h = dir.file("h.csv");
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"gap", "x.csv", "--report"}, {"gap", "x.csv", "--model-out"}, {"gap", "x.csv", "--model"},
+          {"hil", "-o", h, "--model"}, {"hil", "--output"}, {"hil", "--pty", "--pty-link"}, {"hil", "-o", h, "--target", "avr", "--elf"},
+          {"fit", "x.csv", "--plot"}, {"whiteness", "x.csv", "--plot"}, {"allan", "x.csv", "--plot"}, {"report", "x.csv", "--output"},
+          {"record", "--port", "/dev/null", "-o", h, "--capture"}, {"record", "-o", h, "--port"}, {"record", "--port", "/dev/null", "--output"},
+          {"decode", "x.cap", "--output"}, {"flash", "--dry-run", "--hex"}, {"flash", "--dry-run", "--port"},
+          {"flash", "--dry-run", "--avrdude"}, {"gap-eval", "--quick", "--plot"}}) {
         std::vector<std::string> empty_path = args;
         empty_path.push_back("");
         const RunResult empty = run_driftlab(empty_path, dir.path());
-        EXPECT_EQ(empty.exit_code, 2) << args.back() << ": " << empty.output;
-        EXPECT_NE(empty.output.find(args.back() + ": expected a path, got ''"), std::string::npos) << empty.output;
+        EXPECT_EQ(empty.exit_code, 2) << args[0] << " " << args.back() << ": " << empty.output;
+        EXPECT_NE(empty.output.find("driftlab: error: " + args.back() + ": expected a path, got ''"), std::string::npos)
+            << args[0] << ": " << empty.output;
     }
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out")) << "hil -o '' wrote its default log";
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"fit", "", "log"}, {"whiteness", "", "log"},
+                                                 {"report", "", "log"}, {"allan", "", "file"}, {"gap", "", "file"},
+                                                 {"decode", "", "capture"}}) {
+        std::vector<std::string> run = {args[0], args[1]};
+        if (args[0] == "decode") run.insert(run.end(), {"-o", dir.file("d.csv")});
+        const RunResult empty = run_driftlab(run, dir.path());
+        EXPECT_EQ(empty.exit_code, 2) << args[0] << ": " << empty.output;
+        EXPECT_NE(empty.output.find("driftlab: error: " + args[2] + ": expected a path, got ''"), std::string::npos) << empty.output;
+    }
+    for (const auto& [id, what] : {std::pair<std::string, std::string>{"--programmer", "programmer"}, {"--part", "part"}}) {
+        const RunResult r = run_driftlab({"flash", "--dry-run", id, ""}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find(id + ": expected an avrdude " + what + " id, got ''"), std::string::npos) << r.output;
+    }
+    // gap-eval: "" had named the out-of-library generator, whose effect is none.
+    const RunResult no_effect = run_driftlab({"gap-eval", "--quick", "--effects", ""}, dir.path());
+    EXPECT_EQ(no_effect.exit_code, 2) << no_effect.output;
+    EXPECT_NE(no_effect.output.find("--effects: unknown generator or effect ''"), std::string::npos) << no_effect.output;
     // hil --period: text had failed in the parser's words, and an empty value had meant the preset's period.
     for (const char* period : {"x", ""}) {
         const RunResult r = run_driftlab({"hil", "-o", dir.file("h.csv"), "--period", period}, dir.path());
