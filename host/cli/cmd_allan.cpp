@@ -213,7 +213,6 @@ void run(const AllanCommandOptions& o) {
             throw UsageError("a plain numeric file needs --kind rate|phase and --tau0 SECONDS (the input kind is "
                              "never guessed)");
         }
-        if (o.kind != "rate" && o.kind != "phase") throw UsageError("--kind: expected rate or phase, got '" + o.kind + "'");
         req.kind = o.kind == "rate" ? stats::InputKind::rate : stats::InputKind::phase;
         if (o.remove_drift && req.kind != stats::InputKind::rate)
             throw UsageError("--remove-drift: eq. 1 is a model of the rate; phase input has no drift to remove");
@@ -306,7 +305,12 @@ void register_allan(CLI::App& app) {
         ->required()
         ->check(non_empty_path());
     cmd->add_option("--channel", o->channels, "Channels (log) or columns (plain file): NAME[,NAME] or all")->delimiter(',');
-    cmd->add_option("--kind", o->kind, "Plain files: rate (rate / fractional-frequency samples) or phase (integrated)");
+    cmd->add_option("--kind", o->kind, "Plain files: rate (rate / fractional-frequency samples) or phase (integrated)")
+        ->check(CLI::Validator(
+            [](std::string& kind) {
+                return kind == "rate" || kind == "phase" ? std::string() : "expected rate or phase, got '" + kind + "'";
+            },
+            ""));
     cmd->add_option("--tau0", o->tau0_s,
                     "Sample period [s]; required for plain files, logs default to the rows' median spacing (their "
                     "mean for rows in bursts, as report)")

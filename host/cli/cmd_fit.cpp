@@ -193,7 +193,8 @@ void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
                        "either side");
     cmd->add_option("--time-column", r.time_column,
                     "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
-                    "time, time_s, timestamp...)");
+                    "time, time_s, timestamp...)")
+        ->check(non_empty("a column name"));
     // --tau0 as allan and gap spell the period.
     cmd->add_option("--sample-period,--tau0", r.sample_period_s,
                     "Plain tables without a time column: sample period [s] (default 1 s per row)")

@@ -117,6 +117,15 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_EQ(r.exit_code, 2) << r.output;
         EXPECT_NE(r.output.find(id + ": expected an avrdude " + what + " id, got ''"), std::string::npos) << r.output;
     }
+    const RunResult column = run_driftlab({"fit", "x.csv", "--time-column", ""}, dir.path());
+    EXPECT_EQ(column.exit_code, 2) << column.output;
+    EXPECT_NE(column.output.find("--time-column: expected a column name, got ''"), std::string::npos) << column.output;
+    // allan --kind on a log: only "rate" had been checked, so "" passed for no kind at all.
+    for (const char* kind : {"", "ratee"}) {
+        const RunResult r = run_driftlab({"allan", "x.csv", "--kind", kind}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find(std::string("--kind: expected rate or phase, got '") + kind + "'"), std::string::npos) << r.output;
+    }
     // gap-eval: "" had named the out-of-library generator, whose effect is none.
     const RunResult no_effect = run_driftlab({"gap-eval", "--quick", "--effects", ""}, dir.path());
     EXPECT_EQ(no_effect.exit_code, 2) << no_effect.output;
