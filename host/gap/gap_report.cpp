@@ -344,6 +344,9 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     make_output_folder(dir, "report");
     std::ostringstream md;
     md << "# Sim-to-real gap: " << log.source_name << "\n\n";
+    // What was analysed, since --from/--to and --exclude may have cut it: a report read later has no command line.
+    md << counted(log.size(), "row") << " analysed, t = " << format_double(log.t_s.front()) << " s to "
+       << format_double(log.t_s.back()) << " s.\n\n";
     md << "**Verdict: " << r.verdict << "**: " << verdict_reason(r, options) << ".\n\n";
     if (const std::string slow = slow_drift_sentence(r, log); !slow.empty()) md << "Slow drift: " << slow << ".\n\n";
     if (stability) {
