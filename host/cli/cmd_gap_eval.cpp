@@ -86,9 +86,6 @@ void run(const GapEvalCommandOptions& o) {
     gap::EvalOptions options;
     std::tie(options.tune_first, options.tune_last) = parse_range("--seeds-tune", o.tune_seeds);
     std::tie(options.score_first, options.score_last) = parse_range("--seeds-score", o.score_seeds);
-    // --clean-only tunes nothing, so its tuning seeds (the default ones, unless given) are not run.
-    if (!o.clean_only && !(options.score_first > options.tune_last || options.score_last < options.tune_first))
-        throw UsageError("--seeds-tune and --seeds-score must not overlap");
     for (std::size_t i = 0; i < o.levels.size(); ++i)
         for (std::size_t k = 0; k < i; ++k)
             if (o.levels[k] == o.levels[i])
@@ -98,6 +95,10 @@ void run(const GapEvalCommandOptions& o) {
     options.pairs = o.pairs.empty() ? (o.effects.empty() && !o.quick && !o.clean_only ? gap::default_pairs()
                                                                                      : decltype(options.pairs){})
                                     : parse_pairs(o.pairs);
+    // After each option's own check, so that a misspelt effect is named even where the seeds overlap too. --clean-only
+    // tunes nothing, so its tuning seeds (the default ones, unless given) are not run.
+    if (!o.clean_only && !(options.score_first > options.tune_last || options.score_last < options.tune_first))
+        throw UsageError("--seeds-tune and --seeds-score must not overlap");
     options.pair_level = o.pair_level;
     if (!o.plot_dir.empty()) {
         // Before the run, so that an unwritable folder is reported at once rather than after it.
