@@ -198,6 +198,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         tell("fitting the model's own effects");
         result.given = add_given_effects(result.base, unit.effects, log.t_s, y, result.channels, spread, options.seed);
     }
+    // Before the channels left out below: a stuck channel with one corrupt row is named for the row as well.
+    result.lone_values = lone_value_channels(log, result.channels);
     // Replicates of a channel that cannot spread make every z a division by the floor: leave it out and say so.
     const auto fixed = deterministic_channels(result.base, log.t_s, result.channels, options.seed);
     for (std::size_t c = 0; c < kChannelCount; ++c)
@@ -210,7 +212,6 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
     result.left_out = log.cuts;
     result.saturated = saturated_channels(log, result.channels);
-    result.lone_values = lone_value_channels(log, result.channels);
 
     BatteryOptions battery;
     battery.channels = result.channels;

@@ -99,6 +99,17 @@ TEST(Diagnose, AChannelWithoutNoiseIsLeftOutAndNamed) {
         EXPECT_NE(std::string(e.what()).find("test.csv: no selected channel has noise to compare (accel_x with a short-lag spread of "),
                   std::string::npos) << e.what();
     }
+    // A stuck channel with one corrupt row (512 in every row but one 1023) is left out alike, and its row still named:
+    // lone values are looked for before channels are left out (GapCli.AStuckChannelWithOneCorruptRowIsLeftOut takes a
+    // log whose calibration gives such a channel a little noise).
+    for (std::size_t k = 0; k < log.size(); ++k) log.counts[1][k] = k == 300 ? 1023.0 : 512.0;
+    const GapResult stuck = diagnose(log, sim::paper_model(), o);
+    ASSERT_EQ(stuck.noise_free.size(), 1u);
+    EXPECT_EQ(stuck.noise_free[0].channel, Channel::accel_x);
+    ASSERT_EQ(stuck.lone_values.size(), 1u);
+    EXPECT_EQ(stuck.lone_values[0].channel, Channel::accel_x);
+    EXPECT_EQ(stuck.lone_values[0].t_s, std::vector<double>{log.t_s[300]});
+    EXPECT_EQ(stuck.verdict, "none");
 }
 
 // A raw-mode log sends a SAMPLE and a RAW frame per row, so seq steps by 2 without any loss.
