@@ -29,7 +29,7 @@ double short_lag_spread(const std::vector<double>& residual);
 void match_noise(GapModel& model, const std::vector<double>& t_s, const std::array<bool, kChannelCount>& channels,
                  const std::array<double, kChannelCount>& target_spread, std::uint64_t seed);
 
-/// The selected channels that `model` simulates alike for every seed: white noise below one code (none, where the
+/// The selected channels that `model` simulates alike for every seed: white noise below half a code (none, where the
 /// log's spread needs none beyond the converter's, or too little to carry a conversion across a code boundary) and
 /// no random effect. Their replicates cannot spread, so they give no null to compare with.
 std::array<bool, kChannelCount> deterministic_channels(const GapModel& model, const std::vector<double>& t_s,

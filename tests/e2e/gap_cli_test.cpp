@@ -468,7 +468,7 @@ TEST(GapCli, ACorruptRowIsWarnedWithTheWindowThatLeavesItOut) {
 // A stuck accelerometer with one corrupt row, in a 1500 s hil log: calibrated to white noise far below a code
 // (0.014 counts), its replicates were the same for nearly every seed, and the held-out score had read 6e7 (4e16 on a
 // 4000 s log), verdict unexplained. The two simulations that find a channel without noise now look at any channel
-// with less than a code of it: the channel is left out and named, its row warned of, and the gyro and the other
+// with less than half a code of it: the channel is left out and named, its row warned of, and the gyro and the other
 // accelerometers read as the simulator's own.
 TEST(GapCli, AStuckChannelWithOneCorruptRowIsLeftOut) {
     TempDir dir("gapstuckrow");
