@@ -47,7 +47,7 @@ void register_gap_eval(CLI::App& app);
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
 
-/// --t-min/--from and --t-max/--to [s since power-on], finite: the rows fit, whiteness, report and allan keep
+/// --from/--t-min and --to/--t-max [s since power-on], finite: the rows fit, whiteness, report and allan keep
 /// (time_range_options.cpp; gap spells them --from/--to alone). Refused as refuse_reversed_time_range says.
 void add_time_range_options(CLI::App* cmd, double& t_min_s, double& t_max_s);
 

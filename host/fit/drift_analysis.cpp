@@ -37,7 +37,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     if (out.data.t_s.front() < 0.0)
         throw DataError(series.source, 0,
                         where + ": its time starts at " + format_double(out.data.t_s.front()) +
-                            " s, but eq. 1 counts from power-on: give times since power-on (or --t-min 0)");
+                            " s, but eq. 1 counts from power-on: give times since power-on (or --from 0)");
     const auto [lo, hi] = std::minmax_element(out.data.values.begin(), out.data.values.end());
     if (*lo == *hi)
         throw DataError(series.source, 0, where + " is constant (" + format_double(*lo) + "): nothing to fit");

@@ -102,8 +102,12 @@ TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
         << report.output;
     const RunResult help = run_driftlab({"fit", "--help"}, dir.path());
     EXPECT_NE(help.output.find("--sample-period,--tau0"), std::string::npos) << help.output;
-    EXPECT_NE(help.output.find("--t-min,--from"), std::string::npos) << help.output;
-    EXPECT_NE(help.output.find("--t-max,--to"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("--from,--t-min"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("--to,--t-max"), std::string::npos) << help.output;
+    // A refusal names the option as the notes do, whichever spelling was typed.
+    const RunResult refused = run_driftlab({"fit", path, "--t-min", "5 "}, dir.path());
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("--from: expected a finite number, got '5 '"), std::string::npos) << refused.output;
 }
 
 // A canonical log carries its own time: --sample-period 7 on one had been dropped without a word. One that

@@ -16,11 +16,11 @@
 namespace driftlab::e2e {
 namespace {
 
-// The options of `command` that take a value, each with its names ("--t-min", "--from"), from its --help.
+// The options of `command` that take a value, each with its names ("--from", "--t-min"), from its --help.
 std::vector<std::vector<std::string>> value_options(const std::string& command, const TempDir& dir) {
     const RunResult help = run_driftlab({command, "--help"}, dir.path());
     EXPECT_EQ(help.exit_code, 0) << help.output;
-    // "  --t-min,--from FLOAT ..." or "  -o,--output TEXT REQUIRED": names, then the value's type in capitals.
+    // "  --from,--t-min FLOAT ..." or "  -o,--output TEXT REQUIRED": names, then the value's type in capitals.
     static const std::regex line(R"(^\s+((?:-[a-zA-Z],)?--[a-z0-9-]+(?:,--[a-z0-9-]+)*) [A-Z]+\b)");
     std::vector<std::vector<std::string>> out;
     std::istringstream in(help.output);
