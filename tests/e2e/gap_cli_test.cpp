@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <random>
 #include <sstream>
@@ -22,6 +23,26 @@
 
 namespace driftlab::e2e {
 namespace {
+
+// Copies the hil log `from` to `to` with `edit` given each data row's fields (t_s, seq, gyro, accel_x, accel_y,
+// accel_z, tick, sat_flags, ...) and its index from 0; metadata and the header as they are.
+void copy_log_editing_rows(const std::string& from, const std::string& to,
+                           const std::function<void(std::vector<std::string>& fields, int row)>& edit) {
+    std::ifstream in(from);
+    std::ofstream out(to);
+    int row = 0;
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0) {
+            std::vector<std::string> f;
+            std::stringstream fields(line);
+            for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+            edit(f, row++);
+            line.clear();
+            for (const auto& x : f) line += (line.empty() ? "" : ",") + x;
+        }
+        out << line << "\n";
+    }
+}
 
 TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
     TempDir dir("gaphil");
@@ -225,26 +246,10 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     const std::string log = dir.file("hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "--seed", "4", "-o", log}, dir.path()).exit_code, 0);
     const std::string stuck = dir.file("stuck.csv");
-    {
-        std::ifstream in(log);
-        std::ofstream out(stuck);
-        std::string line;
-        int row = 0;
-        const auto field = [](std::string& l, int index, const std::string& value) {
-            std::size_t at = 0;
-            for (int comma = 0; comma < index; ++comma) at = l.find(',', at) + 1;
-            l.replace(at, l.find(',', at) - at, value);
-        };
-        while (std::getline(in, line)) {
-            if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0) {
-                // Columns t_s, seq, gyro, accel_x, accel_y, accel_z, tick, sat_flags, ...
-                field(line, 3, "512");
-                ++row;
-                if (row >= 100 && row < 105) field(line, 7, "10");  // accel_x (not analysed) and accel_z saturated
-            }
-            out << line << "\n";
-        }
-    }
+    copy_log_editing_rows(log, stuck, [](std::vector<std::string>& f, int row) {
+        f[3] = "512";
+        if (row >= 99 && row < 104) f[7] = "10";  // accel_x (not analysed) and accel_z saturated
+    });
     const RunResult text = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--report", dir.file("report")}, dir.path());
     ASSERT_EQ(text.exit_code, 0) << text.output;
     EXPECT_NE(text.output.find("not analysed: accel_x at 512 counts in every row: a channel that never changes"), std::string::npos)
@@ -304,30 +309,13 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
     ASSERT_EQ(run_driftlab({"hil", "--duration", "600", "--seed", "4", "-o", log}, dir.path()).exit_code, 0);
     const std::string shock = dir.file("shock.csv");
     double shock_from = 0.0, shock_to = 0.0;
-    {
-        std::ifstream in(log);
-        std::ofstream out(shock);
-        std::string line;
-        int row = 0;
-        while (std::getline(in, line)) {
-            if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0) {
-                if (row >= 300 && row < 310) {
-                    // Columns t_s, seq, gyro, accel_x, accel_y, accel_z, tick, sat_flags, ...
-                    std::vector<std::string> f;
-                    std::stringstream fields(line);
-                    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
-                    f[2] = std::to_string(std::stod(f[2]) + 150.0);
-                    f[7] = "1";
-                    if (row == 300) shock_from = std::stod(f[0]);
-                    shock_to = std::stod(f[0]);
-                    line.clear();
-                    for (const auto& x : f) line += (line.empty() ? "" : ",") + x;
-                }
-                ++row;
-            }
-            out << line << "\n";
-        }
-    }
+    copy_log_editing_rows(log, shock, [&](std::vector<std::string>& f, int row) {
+        if (row < 300 || row >= 310) return;
+        f[2] = std::to_string(std::stod(f[2]) + 150.0);
+        f[7] = "1";
+        if (row == 300) shock_from = std::stod(f[0]);
+        shock_to = std::stod(f[0]);
+    });
     const RunResult with = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--json"}, dir.path());
     ASSERT_EQ(with.exit_code, 0) << with.output;
     const auto j = nlohmann::json::parse(with.output);
@@ -394,21 +382,11 @@ TEST(GapCli, ACorruptRowIsWarnedWithTheWindowThatLeavesItOut) {
     ASSERT_EQ(run_driftlab({"hil", "--duration", "600", "--seed", "4", "-o", log}, dir.path()).exit_code, 0);
     const std::string corrupt = dir.file("corrupt.csv");
     double row_t = 0.0;
-    {
-        std::ifstream in(log);
-        std::ofstream out(corrupt);
-        std::string line;
-        int row = 0;
-        while (std::getline(in, line)) {
-            if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0 && row++ == 300) {
-                // Columns t_s, seq, gyro, ...
-                const std::size_t first = line.find(','), second = line.find(',', first + 1), third = line.find(',', second + 1);
-                row_t = std::stod(line.substr(0, first));
-                line.replace(second + 1, third - second - 1, "1023");
-            }
-            out << line << "\n";
-        }
-    }
+    copy_log_editing_rows(log, corrupt, [&](std::vector<std::string>& f, int row) {
+        if (row != 300) return;
+        row_t = std::stod(f[0]);
+        f[2] = "1023";
+    });
     ASSERT_GT(row_t, 0.0);
     const std::vector<std::string> quick = {"--replicates", "10", "--locate-only", "--json"};
     const auto gap_json = [&](const std::string& file, std::vector<std::string> more) {
@@ -475,21 +453,7 @@ TEST(GapCli, AStuckChannelWithOneCorruptRowIsLeftOut) {
     const std::string log = dir.file("hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "1500", "--seed", "3", "-o", log}, dir.path()).exit_code, 0);
     const std::string stuck = dir.file("stuck.csv");
-    {
-        std::ifstream in(log);
-        std::ofstream out(stuck);
-        std::string line;
-        int row = 0;
-        while (std::getline(in, line)) {
-            if (!line.empty() && line[0] != '#' && line.rfind("t_s,", 0) != 0) {
-                // Columns t_s, seq, gyro, accel_x, ...
-                const std::size_t third = line.find(',', line.find(',', line.find(',') + 1) + 1);
-                const std::size_t fourth = line.find(',', third + 1);
-                line.replace(third + 1, fourth - third - 1, ++row == 750 ? "1023" : "512");
-            }
-            out << line << "\n";
-        }
-    }
+    copy_log_editing_rows(log, stuck, [](std::vector<std::string>& f, int row) { f[3] = row == 749 ? "1023" : "512"; });
     const RunResult r = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json"}, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto j = nlohmann::json::parse(r.output);
