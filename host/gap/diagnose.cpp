@@ -104,9 +104,9 @@ std::vector<LoneValueChannel> lone_value_channels(const LogData& log, const std:
     std::vector<LoneValueChannel> out;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!channels[c]) continue;
-        const std::optional<std::string> warning = stats::lone_values_warning(log.t_s, log.counts[c]);
-        if (!warning) continue;
         const stats::LoneValues found = stats::lone_values(log.counts[c]);
+        const std::optional<std::string> warning = stats::lone_values_warning(log.t_s, log.counts[c], found);
+        if (!warning) continue;
         LoneValueChannel lone{static_cast<Channel>(c), {}, found.variance_share, *warning};
         for (std::size_t k : found.indices) lone.t_s.push_back(log.t_s[k]);
         out.push_back(std::move(lone));

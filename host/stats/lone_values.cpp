@@ -77,7 +77,11 @@ LoneValues lone_values(const std::vector<double>& x) {
 }
 
 std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x) {
-    const LoneValues found = lone_values(x);
+    return lone_values_warning(t_s, x, lone_values(x));
+}
+
+std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x,
+                                               const LoneValues& found) {
     if (found.indices.empty() || found.variance_share < kLoneShare) return std::nullopt;
     const std::size_t n = found.indices.size();
     std::string text = std::to_string(n) + (n == 1 ? " lone value (" : " lone values (");

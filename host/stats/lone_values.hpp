@@ -35,4 +35,8 @@ LoneValues lone_values(const std::vector<double>& x);
 /// sample-to-sample variance; none otherwise.
 std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x);
 
+/// The same for lone values already found (`found` = lone_values(x)), for a caller that keeps them too.
+std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x,
+                                               const LoneValues& found);
+
 }  // namespace driftlab::host::stats
