@@ -146,15 +146,9 @@ std::vector<Series> load_series(const std::string& path, const std::vector<std::
     return load_series(open_source(path), path, names, time_column, sample_period_s);
 }
 
-namespace {
 std::size_t rows_in(const std::vector<double>& t_s, const TimeWindow& w, double t_min_s, double t_max_s) {
     const double from_s = std::max(w.from_s, t_min_s), to_s = std::min(w.to_s, t_max_s);
     return static_cast<std::size_t>(std::count_if(t_s.begin(), t_s.end(), [&](double t) { return t >= from_s && t <= to_s; }));
-}
-}  // namespace
-
-std::size_t rows_in(const Series& s, const TimeWindow& w, double t_min_s, double t_max_s) {
-    return rows_in(s.t_s, w, t_min_s, t_max_s);
 }
 
 std::vector<std::string> selection_notes(const std::vector<double>& t_s, double t_min_s, double t_max_s,
@@ -184,7 +178,7 @@ Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vec
     };
     // Each window on its own: one that holds no row is a mistaken time, as gap's --exclude says of a log.
     for (const TimeWindow& w : excluded) {
-        if (rows_in(s, w, t_min_s, t_max_s) > 0) continue;
+        if (rows_in(s.t_s, w, t_min_s, t_max_s) > 0) continue;
         throw DataError(s.source, 0,
                         "series '" + s.name + "': " + w.by + " " + format_double(w.from_s) + ":" + format_double(w.to_s) +
                             " holds no row" + (s.t_s.empty() ? std::string() : " (the series' rows run from " +

@@ -42,8 +42,8 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
 std::vector<Series> load_series(const std::string& path, const std::vector<std::string>& names = {},
                                 const std::string& time_column = "", double sample_period_s = 1.0);
 
-/// How many of the rows of `s` with t_min_s <= t_s <= t_max_s the window `w` holds (both ends included).
-std::size_t rows_in(const Series& s, const TimeWindow& w, double t_min_s, double t_max_s);
+/// How many of the rows at times `t_s` with t_min_s <= t <= t_max_s the window `w` holds (both ends included).
+std::size_t rows_in(const std::vector<double>& t_s, const TimeWindow& w, double t_min_s, double t_max_s);
 
 /// The rows of `s` with t_min_s <= t_s <= t_max_s and outside every window of `excluded` (both ends included), with
 /// their raw values. Throws DataError naming the series and the window when a window holds none of the rows in range:

@@ -90,8 +90,8 @@ TEST(Series, RowsKeptAreInRangeAndOutsideEveryWindowWithTheirRawCodes) {
     EXPECT_EQ(kept.values, (std::vector<double>{101, 102, 106, 107, 108}));
     EXPECT_EQ(kept.raw_values, (std::vector<double>{201, 202, 206, 207, 208}));
     EXPECT_EQ(rows_kept(s, -1.0, 20.0).t_s, s.t_s);
-    EXPECT_EQ(rows_in(s, {3.0, 5.0, "--exclude"}, 1.0, 8.0), 3u);
-    EXPECT_EQ(rows_in(s, {7.5, 9.5, "--exclude"}, 1.0, 8.0), 1u);  // row 9 is beyond the range
+    EXPECT_EQ(rows_in(s.t_s, {3.0, 5.0, "--exclude"}, 1.0, 8.0), 3u);
+    EXPECT_EQ(rows_in(s.t_s, {7.5, 9.5, "--exclude"}, 1.0, 8.0), 1u);  // row 9 is beyond the range
     // Row 9 exists, but not in the range kept.
     try {
         rows_kept(s, 1.0, 8.0, {{8.5, 9.5, "--exclude"}});
