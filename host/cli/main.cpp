@@ -4,6 +4,8 @@
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "host/cli/commands.hpp"
 #include "host/util/error.hpp"
@@ -33,6 +35,19 @@ void flush_output_so_far() {
     std::fflush(stdout);
 }
 
+// CLI11 names a refused option by its first long name; one with several ("--sample-period,--tau0") is named by all of
+// them, as the notes name it, so that the spelling typed is in the message.
+std::string naming_every_spelling(const CLI::App* command, std::string message) {
+    for (const CLI::Option* opt : command->get_options()) {
+        const std::vector<std::string>& names = opt->get_lnames();
+        if (names.size() < 2 || message.rfind("--" + names.front() + ":", 0) != 0) continue;
+        std::string all;
+        for (const std::string& name : names) all += (all.empty() ? "--" : "/--") + name;
+        return all + message.substr(2 + names.front().size());
+    }
+    return message;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -44,8 +59,12 @@ int main(int argc, char** argv) {
     // The parser's refusals read like every other error, and say whose help lists the options.
     app.failure_message([](const CLI::App* a, const CLI::Error& e) {
         std::string command = "driftlab";
-        for (const CLI::App* sub : a->get_subcommands()) command += " " + sub->get_name();
-        return "driftlab: error: " + std::string(e.what()) + "\n(" + command + " --help lists the options)\n";
+        std::string message = e.what();
+        for (const CLI::App* sub : a->get_subcommands()) {
+            command += " " + sub->get_name();
+            message = naming_every_spelling(sub, message);
+        }
+        return "driftlab: error: " + message + "\n(" + command + " --help lists the options)\n";
     });
     try {
         app.parse(argc, argv);

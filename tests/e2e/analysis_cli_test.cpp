@@ -104,10 +104,23 @@ TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
     EXPECT_NE(help.output.find("--sample-period,--tau0"), std::string::npos) << help.output;
     EXPECT_NE(help.output.find("--from,--t-min"), std::string::npos) << help.output;
     EXPECT_NE(help.output.find("--to,--t-max"), std::string::npos) << help.output;
-    // A refusal names the option as the notes do, whichever spelling was typed.
+    // A refusal names an option by all its spellings, as the notes name --sample-period/--tau0, so that the one typed
+    // is there: `fit --tau0 -1` had been refused as --sample-period.
     const RunResult refused = run_driftlab({"fit", path, "--t-min", "5 "}, dir.path());
     EXPECT_EQ(refused.exit_code, 2) << refused.output;
-    EXPECT_NE(refused.output.find("--from: expected a finite number, got '5 '"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("driftlab: error: --from/--t-min: expected a finite number, got '5 '\n"),
+              std::string::npos)
+        << refused.output;
+    const RunResult tau0 = run_driftlab({"fit", path, "--tau0", "-1"}, dir.path());
+    EXPECT_EQ(tau0.exit_code, 2) << tau0.output;
+    EXPECT_NE(tau0.output.find("driftlab: error: --sample-period/--tau0: expected a number > 0, got '-1'\n"),
+              std::string::npos)
+        << tau0.output;
+    // One spelling is named as it is: -o is --output's short name, not a second spelling of a long one.
+    const RunResult output = run_driftlab({"report", path, "-o", ""}, dir.path());
+    EXPECT_EQ(output.exit_code, 2) << output.output;
+    EXPECT_NE(output.output.find("driftlab: error: --output: expected a path, got ''\n"), std::string::npos)
+        << output.output;
 }
 
 // A canonical log carries its own time: --sample-period 7 on one had been dropped without a word. One that
