@@ -20,7 +20,6 @@
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
-#include "host/util/format_number.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -225,16 +224,14 @@ void run(const AllanCommandOptions& o) {
     }
     const std::vector<std::string> selection =
         series.empty() ? std::vector<std::string>{} : fit::selection_notes(series.front().t_s, o.from_s, o.to_s, o.excluded);
+    for (const std::string& note : selection) print_note(note, o.json);
     for (fit::Series& s : series) {
         fit::Series kept = fit::rows_kept(s, o.from_s, o.to_s, o.excluded);
         // The grid needs two samples: where --from/--to leave fewer, say where the rows are.
         if (kept.t_s.size() < 2 && s.t_s.size() >= 2)
-            throw DataError(o.path, 0, "series '" + s.name + "': " + counted(kept.t_s.size(), "sample") +
-                                           " in the selected time range (its rows run from " + format_double(s.t_s.front()) +
-                                           " to " + format_double(s.t_s.back()) + " s)");
+            throw DataError(o.path, 0, fit::too_few_kept(s, kept.t_s.size(), "the Allan deviation", 2));
         s = std::move(kept);
     }
-    for (const std::string& note : selection) print_note(note, o.json);
     // Phase samples are in their integral's unit (deg for deg/s); the assignment holds the deviations' (the rate's).
     const stats::UnitAssignment units = stats::parse_unit_assignment(o.units, "--unit", req.kind);
     std::vector<std::string> columns;

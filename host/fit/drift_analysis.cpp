@@ -26,12 +26,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     const std::string where = "series '" + series.name + "'";
     const std::size_t n = out.data.t_s.size();
     if (n < kMinAnalysisSamples)
-        throw DataError(series.source, 0,
-                        where + ": " + counted(n, "sample") + " in the selected time range" +
-                            (series.t_s.empty() ? std::string()
-                                                : " (the series spans t = " + format_double(series.t_s.front()) + " to " +
-                                                      format_double(series.t_s.back()) + " s)") +
-                            "; the fit needs at least " + std::to_string(kMinAnalysisSamples));
+        throw DataError(series.source, 0, too_few_kept(series, n, "the fit", kMinAnalysisSamples));
     // Eq. 1's t counts from power-on: before it the exponential grows without bound, and the fit had ended in NaN
     // residuals reported as "every sequence of the residual is constant".
     if (out.data.t_s.front() < 0.0)

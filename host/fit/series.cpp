@@ -23,6 +23,12 @@ double units_per_second(const std::string& name) {
     return 1.0;
 }
 
+/// " (the series' rows run from 0 s to 2999 s)", for a message saying a range or window missed them; empty without rows.
+std::string rows_span(const Series& s) {
+    if (s.t_s.empty()) return "";
+    return " (the series' rows run from " + format_double(s.t_s.front()) + " s to " + format_double(s.t_s.back()) + " s)";
+}
+
 }  // namespace
 
 std::vector<Series> series_from_log(const LogData& log, const std::vector<std::string>& names) {
@@ -171,6 +177,11 @@ std::vector<std::string> selection_notes(const std::vector<double>& t_s, double 
     return notes;
 }
 
+std::string too_few_kept(const Series& s, std::size_t kept, const std::string& who, std::size_t needed) {
+    return "series '" + s.name + "': " + counted(kept, "sample") + " in the selected time range" + rows_span(s) + "; " +
+           who + " needs at least " + std::to_string(needed);
+}
+
 Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded) {
     const auto kept = [&](double t) { return t >= t_min_s && t <= t_max_s; };
     const auto left_out = [&](double t) {
@@ -181,9 +192,7 @@ Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vec
         if (rows_in(s.t_s, w, t_min_s, t_max_s) > 0) continue;
         throw DataError(s.source, 0,
                         "series '" + s.name + "': " + w.by + " " + format_double(w.from_s) + ":" + format_double(w.to_s) +
-                            " holds no row" + (s.t_s.empty() ? std::string() : " (the series' rows run from " +
-                                                                                     format_double(s.t_s.front()) + " to " +
-                                                                                     format_double(s.t_s.back()) + " s)"));
+                            " holds no row" + rows_span(s));
     }
     Series out = s;
     out.t_s.clear();

@@ -50,6 +50,11 @@ std::size_t rows_in(const std::vector<double>& t_s, const TimeWindow& w, double 
 /// a mistaken time, not nothing to do.
 Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded = {});
 
+/// Why the `kept` rows of `s` in the time range are too few for `who`, naming where its rows are, so that a range that
+/// missed them can be moved; fit and allan word it alike: "series 'gx': 1 sample in the selected time range (the
+/// series' rows run from 0 s to 2999 s); the fit needs at least 20".
+std::string too_few_kept(const Series& s, std::size_t kept, const std::string& who, std::size_t needed);
+
 /// What --from/--to and --exclude took from rows at times `t_s` (increasing; before any cut), one line each, for a
 /// file whose series share their rows: "--from 100 --to 2000 kept 190000 of 360000 rows, t = 100.0086 s to
 /// 1999.998 s" (none without those options, or when they keep no row: that is refused elsewhere, naming the rows'

@@ -254,7 +254,7 @@ TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
     EXPECT_FALSE(std::filesystem::exists(none));
     EXPECT_EQ(count_of(empty.output, "samples in the selected time range"), 1u) << empty.output;
     EXPECT_NE(empty.output.find("series 'gyro', 'accel_x', 'accel_y', 'accel_z': 0 samples in the selected time range "
-                                "(the series spans t = "),
+                                "(the series' rows run from "),
               std::string::npos)
         << empty.output;
 }

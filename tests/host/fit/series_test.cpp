@@ -97,8 +97,23 @@ TEST(Series, RowsKeptAreInRangeAndOutsideEveryWindowWithTheirRawCodes) {
         rows_kept(s, 1.0, 8.0, {{8.5, 9.5, "--exclude"}});
         ADD_FAILURE() << "a window without a row in range was taken";
     } catch (const DataError& e) {
-        EXPECT_STREQ(e.what(), "log.csv: series 'gyro': --exclude 8.5:9.5 holds no row (the series' rows run from 0 to 9 s)");
+        EXPECT_STREQ(e.what(), "log.csv: series 'gyro': --exclude 8.5:9.5 holds no row (the series' rows run from 0 s to 9 s)");
     }
+}
+
+// fit and allan say alike why a range left too few rows, and where the rows are (the span of the whole series, not
+// of the range); a series without rows has no span to give.
+TEST(Series, TooFewKeptNamesTheCountTheSeriesSpanAndTheNeed) {
+    Series s;
+    s.name = "gx";
+    s.t_s = {0.25, 1.25, 2999.5};
+    s.values = {1, 2, 3};
+    EXPECT_EQ(too_few_kept(s, 1, "the fit", 20),
+              "series 'gx': 1 sample in the selected time range (the series' rows run from 0.25 s to 2999.5 s); the fit "
+              "needs at least 20");
+    s.t_s.clear();
+    EXPECT_EQ(too_few_kept(s, 0, "the Allan deviation", 2),
+              "series 'gx': 0 samples in the selected time range; the Allan deviation needs at least 2");
 }
 
 // The notes agree with rows_kept: the range's count and ends are those of the rows it keeps before any window, and
