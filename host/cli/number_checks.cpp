@@ -99,8 +99,7 @@ CLI::Validator whole_number_in(long long low, long long high) {
 
 const CLI::Validator& baud_rate() {
     static const CLI::Validator check(
-        [](std::string& text) -> std::string {
-            const CLI::Validator whole = whole_number_in(1, std::numeric_limits<int>::max());
+        [whole = whole_number_in(1, std::numeric_limits<int>::max())](std::string& text) -> std::string {
             const bool ok = whole(text).empty() && io::is_supported_baud(std::stoi(text));
             return ok ? std::string() : "expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '" + text + "'";
         },
