@@ -84,10 +84,10 @@ std::array<bool, kChannelCount> channels_named(const GapCommandOptions& o) {
     return out;
 }
 
-// The rows --from/--to keep (all without them), less those --exclude and --exclude-saturated leave out, with the
-// unit, and the note of what the range kept. Only the channels the diagnosis analyses count as saturated: a channel
+// Cuts `log` to the rows --from/--to keep (all without them), less those --exclude and --exclude-saturated leave out,
+// and returns the note of what the range kept. Only the channels the diagnosis analyses count as saturated: a channel
 // stuck at a rail is left out of it, not its rows.
-Loaded in_window(const GapCommandOptions& o, LogData log, sim::SimModel unit) {
+std::vector<std::string> cut_to_window(const GapCommandOptions& o, LogData& log) {
     std::vector<std::string> notes = fit::selection_notes(log.t_s, o.from_s, o.to_s, {});
     if (o.windowed()) log = rows_between(log, o.from_s, o.to_s);
     std::vector<TimeWindow> windows = o.excluded;
@@ -98,7 +98,7 @@ Loaded in_window(const GapCommandOptions& o, LogData log, sim::SimModel unit) {
         windows.insert(windows.end(), saturated.begin(), saturated.end());
     }
     if (!windows.empty()) log = rows_outside(log, windows);
-    return {std::move(log), std::move(unit), std::move(notes)};
+    return notes;
 }
 
 // A canonical log the simulator can stand beside: its converter, and the smoothing the replicates must repeat (a
@@ -129,7 +129,9 @@ Loaded load(const GapCommandOptions& o) {
     if (source.canonical_log) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        return in_window(o, read_canonical(source.in, o.path, read, unit), unit);
+        Loaded out{read_canonical(source.in, o.path, read, unit), unit, {}};
+        out.notes = cut_to_window(o, out.log);
+        return out;
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -138,9 +140,10 @@ Loaded load(const GapCommandOptions& o) {
     for (const auto& m : o.mappings) how.columns.push_back(gap::parse_column_mapping(m));
     how.sample_period_s = o.tau0_s;
     how.block = o.block;
-    LogData log = gap::log_from_table(parse_numeric_table(source.in, o.path), how);
-    sim::SimModel scaled = gap::unit_of_recording(unit, how, log);
-    return in_window(o, std::move(log), std::move(scaled));
+    Loaded out{gap::log_from_table(parse_numeric_table(source.in, o.path), how), unit, {}};
+    out.unit = gap::unit_of_recording(unit, how, out.log);
+    out.notes = cut_to_window(o, out.log);
+    return out;
 }
 
 void print_text(const gap::GapResult& r, const gap::GapOptions& options, const LogData& log) {
