@@ -61,8 +61,9 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     out.widened = out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
 
     // First: a corrupt row is in every figure below.
-    if (auto lone = stats::lone_values_warning(out.data.t_s, out.data.values))
-        out.warnings.push_back(std::move(*lone));
+    const stats::LoneValues lone = stats::lone_values(out.data.values);
+    if (auto warning = stats::lone_values_warning(out.data.t_s, out.data.values, lone))
+        out.warnings.push_back(std::move(*warning));
     // A plain table's row index read as seconds had been printed as seconds, unremarked.
     if (out.data.index_period_s > 0.0)
         out.warnings.push_back("no time column: t is the row index x " + format_double(out.data.index_period_s) +
@@ -108,6 +109,15 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
             " (autocorrelation time " + fixed_point(w.autocorrelation_time.tau, 2) + " samples, effective n " +
             fixed_point(static_cast<double>(n) / w.autocorrelation_time.tau, 0) + "); use the widened intervals" +
             (w.autocorrelation_time.window_found ? "" : " (a lower bound: the correlation outlasts the lags examined)"));
+    } else if (lone.variance_share > 0.5) {
+        // Ljung-Box divides by the residual's variance: values holding most of it set every rho_k near 0, whatever
+        // the other rows do. An AR(1) residual with one impulse had been called white.
+        out.warnings.push_back("the verdict 'white' is that of the lone value" + std::string(lone.indices.size() > 1 ? "s" : "") +
+                               " above, which hold" + (lone.indices.size() > 1 ? "" : "s") +
+                               " most of the variance the Ljung-Box test divides by (" +
+                               fixed_point(100.0 * w.fraction_inside, 1) +
+                               " % of ensemble lags inside +-2 sigma): leave " + (lone.indices.size() > 1 ? "them" : "it") +
+                               " out with --exclude to test the other rows");
     }
     // In rows that come in bursts every burst's end counts (17270 on the MPU6050 file): the longest says whether a
     // real gap is among them.

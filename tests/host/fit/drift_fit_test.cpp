@@ -287,6 +287,39 @@ TEST(DriftFit, ANegativelyCorrelatedResidualIsNotWidenedByOne) {
     EXPECT_TRUE(said);
 }
 
+std::size_t warnings_saying(const DriftAnalysis& a, const std::string& words) {
+    std::size_t n = 0;
+    for (const std::string& w : a.warnings) n += w.find(words) != std::string::npos;
+    return n;
+}
+
+// Ljung-Box divides by the residual's variance: one impulse holding most of it had called an AR(1) residual (phi =
+// 0.8, rejected without the impulse) white. The verdict stands, as the test's, but is said to be the impulse's.
+TEST(DriftFit, AWhiteVerdictThatOneLoneValueDecidesIsSaidToBeIts) {
+    Series s = simulate({3, 505, 411}, 1200, 1.0, 0.2, 0.8, 31);
+    const std::string theirs = "the verdict 'white' is that of the lone value above";
+    const DriftAnalysis clean = analyse_drift(s);
+    ASSERT_FALSE(clean.whiteness.white);
+    EXPECT_EQ(warnings_saying(clean, theirs), 0u);
+    s.values[600] += 200.0;
+    const DriftAnalysis spiked = analyse_drift(s);
+    ASSERT_TRUE(spiked.whiteness.white);
+    EXPECT_EQ(warnings_saying(spiked, theirs), 1u);
+    EXPECT_EQ(warnings_saying(spiked, "leave it out with --exclude to test the other rows"), 1u);
+    // Left out, the row no longer decides: the residual is rejected again.
+    AnalysisOptions without;
+    without.excluded = {{s.t_s[600] - 0.5, s.t_s[600] + 0.5, "--exclude"}};
+    EXPECT_FALSE(analyse_drift(s, without).whiteness.white);
+
+    // White noise with an impulse too small to hold most of the variance: warned of as a lone value only.
+    Series white = simulate({3, 505, 411}, 1200, 1.0, 0.2, 0.0, 32);
+    white.values[600] += 4.0;  // about 10 robust sd from both neighbours; 16 of the 1200 x 0.08 summed squares
+    const DriftAnalysis small = analyse_drift(white);
+    ASSERT_TRUE(small.whiteness.white);
+    EXPECT_EQ(warnings_saying(small, "1 lone value"), 1u);
+    EXPECT_EQ(warnings_saying(small, "the verdict 'white'"), 0u);
+}
+
 TEST(DriftFit, TooShortOrConstantDataIsADataErrorNamingTheSeries) {
     Series s = simulate({3, 505, 411}, 100, 1.0, 0.1, 0.0, 9);
     AnalysisOptions only_a_few;
