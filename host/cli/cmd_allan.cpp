@@ -262,7 +262,7 @@ void run(const AllanCommandOptions& o) {
         const stats::SampleUnit u =
             s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(unit ? unit->name : "unit");
         const std::optional<std::string> packing = stats::packing_caveat(r, r.primary().curves.front());
-        const std::optional<std::string> lone = stats::lone_values_warning(s.t_s, s.values);
+        const std::optional<std::string> lone = stats::lone_values_warning(s.t_s, s.values, fit::code_of(s));
         if (o.json) {
             json c = version_json(r.primary(), u);
             c["tau0_s"] = tau0;

@@ -61,7 +61,7 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     out.widened = out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
 
     // First: a corrupt row is in every figure below.
-    const stats::LoneValues lone = stats::lone_values(out.data.values);
+    const stats::LoneValues lone = stats::lone_values(out.data.values, code_of(out.data));
     if (auto warning = stats::lone_values_warning(out.data.t_s, out.data.values, lone))
         out.warnings.push_back(std::move(*warning));
     // A plain table's row index read as seconds had been printed as seconds, unremarked.

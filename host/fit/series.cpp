@@ -177,6 +177,8 @@ std::vector<std::string> selection_notes(const std::vector<double>& t_s, double 
     return notes;
 }
 
+double code_of(const Series& s) { return s.channel ? 1.0 : 0.0; }
+
 std::string too_few_kept(const Series& s, std::size_t kept, const std::string& who, std::size_t needed) {
     return "series '" + s.name + "': " + counted(kept, "sample") + " in the selected time range" + rows_span(s) + "; " +
            who + " needs at least " + std::to_string(needed);

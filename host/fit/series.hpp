@@ -50,6 +50,10 @@ std::size_t rows_in(const std::vector<double>& t_s, const TimeWindow& w, double 
 /// a mistaken time, not nothing to do.
 Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded = {});
 
+/// The quantum of the values of `s` where it is known: one converter code for a log channel's counts, else 0 (a plain
+/// table's column), as lone_values() takes it.
+double code_of(const Series& s);
+
 /// Why the `kept` rows of `s` in the time range are too few for `who`, naming where its rows are, so that a range that
 /// missed them can be moved; fit and allan word it alike: "series 'gx': 1 sample in the selected time range (the
 /// series' rows run from 0 s to 2999 s); the fit needs at least 20".

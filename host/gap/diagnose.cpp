@@ -104,7 +104,7 @@ std::vector<LoneValueChannel> lone_value_channels(const LogData& log, const std:
     std::vector<LoneValueChannel> out;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!channels[c]) continue;
-        const stats::LoneValues found = stats::lone_values(log.counts[c]);
+        const stats::LoneValues found = stats::lone_values(log.counts[c], 1.0);  // counts: one code is 1
         const std::optional<std::string> warning = stats::lone_values_warning(log.t_s, log.counts[c], found);
         if (!warning) continue;
         LoneValueChannel lone{static_cast<Channel>(c), {}, found.variance_share, *warning};

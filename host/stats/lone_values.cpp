@@ -29,7 +29,7 @@ std::string shortest_between(double a, double b, double value, int least) {
 std::string midway(double a, double b) { return shortest_between(a, b, a / 2.0 + b / 2.0, 1); }
 }  // namespace
 
-LoneValues lone_values(const std::vector<double>& x) {
+LoneValues lone_values(const std::vector<double>& x, double code) {
     LoneValues out;
     if (x.size() < 3) return out;
     // Halved differences cannot overflow, whatever finite values x holds; the tests below compare them only with
@@ -43,8 +43,8 @@ LoneValues lone_values(const std::vector<double>& x) {
     const double mad_scale = kMadToSigma * sorted[sorted.size() / 2];
     // A series that mostly repeats one code: its step is the scale, the smallest nonzero difference other than the
     // two beside the row judged, so among the three smallest. Where the row's own were taken, a series constant but
-    // for one corrupt row had measured the row by itself and never found it; constant but for the row, there is no
-    // step, and any departure is lone.
+    // for one corrupt row had measured the row by itself and never found it. A known code bounds the step: two corrupt
+    // rows on a stuck channel had measured each other, and a lone flip of one code had had no step to be measured by.
     std::vector<std::size_t> smallest;  // indices of the smallest nonzero magnitudes, in increasing order
     if (mad_scale == 0.0) {
         for (std::size_t i = 0; i < magnitude.size(); ++i) {
@@ -55,11 +55,12 @@ LoneValues lone_values(const std::vector<double>& x) {
         }
         if (smallest.empty()) return out;  // a constant series
     }
+    const double half_code = code / 2.0;  // the differences are halved
     const auto scale_beside = [&](std::size_t k) {
         if (mad_scale > 0.0) return mad_scale;
         for (std::size_t i : smallest)
-            if (i != k - 1 && i != k) return magnitude[i];
-        return 0.0;
+            if (i != k - 1 && i != k) return half_code > 0.0 ? std::min(magnitude[i], half_code) : magnitude[i];
+        return half_code;
     };
     const double largest = *std::max_element(magnitude.begin(), magnitude.end());
     double total = 0.0, lone = 0.0;
@@ -76,8 +77,8 @@ LoneValues lone_values(const std::vector<double>& x) {
     return out;
 }
 
-std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x) {
-    return lone_values_warning(t_s, x, lone_values(x));
+std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x, double code) {
+    return lone_values_warning(t_s, x, lone_values(x, code));
 }
 
 std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x,

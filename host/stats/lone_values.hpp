@@ -24,18 +24,20 @@ struct LoneValues {
 
 /// The lone values of `x`: |x_k - x_k-1| and |x_k+1 - x_k| both above kLoneFactor times the robust scale of the first
 /// differences (1.4826 times their median absolute value; where that is 0, as on a series that mostly repeats one
-/// code, the smallest nonzero difference other than x_k's own two, and 0 when there is none: on a series constant but
-/// for x_k), and |x_k+1 - x_k-1| below half the smaller of them. The first and last
-/// samples have one neighbour, and a step could not be told from a lone value there: they are never lone. Safe for
-/// any finite values, up to the largest double.
-LoneValues lone_values(const std::vector<double>& x);
+/// code, the step: the smallest nonzero difference other than x_k's own two, at most `code`, and `code` when there is
+/// none), and |x_k+1 - x_k-1| below half the smaller of them. `code` is the values' quantum where it is known (one
+/// converter code for counts), else 0: then a series constant but for x_k has no step, and any departure is lone,
+/// while two departing rows measure each other. The first and last samples have one neighbour, and a step could not
+/// be told from a lone value there: they are never lone. Safe for any finite values, up to the largest double.
+LoneValues lone_values(const std::vector<double>& x, double code = 0.0);
 
 /// A warning naming when (from `t_s`) and what the lone values of `x` are, and the --exclude windows that leave them
 /// out (each end the shortest number between the row and its neighbour), when they carry kLoneShare or more of its
-/// sample-to-sample variance; none otherwise.
-std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x);
+/// sample-to-sample variance; none otherwise. `code` as for lone_values().
+std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x,
+                                               double code = 0.0);
 
-/// The same for lone values already found (`found` = lone_values(x)), for a caller that keeps them too.
+/// The same for lone values already found (`found` = lone_values(x, code)), for a caller that keeps them too.
 std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x,
                                                const LoneValues& found);
 

@@ -448,7 +448,7 @@ TEST(GapCli, ACorruptRowIsWarnedWithTheWindowThatLeavesItOut) {
 // 4000 s log), verdict unexplained. The two simulations that find a channel without noise now look at any channel
 // with less than half a code of it: the channel is left out and named, its row warned of, and the gyro and the other
 // accelerometers read as the simulator's own.
-TEST(GapCli, AStuckChannelWithOneCorruptRowIsLeftOut) {
+TEST(GapCli, AStuckChannelWithACorruptRowOrTwoIsLeftOut) {
     TempDir dir("gapstuckrow");
     const std::string log = dir.file("hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "1500", "--seed", "3", "-o", log}, dir.path()).exit_code, 0);
@@ -465,6 +465,30 @@ TEST(GapCli, AStuckChannelWithOneCorruptRowIsLeftOut) {
     EXPECT_TRUE(j["located"].empty()) << j["located"].dump();
     EXPECT_LT(j["gap_before"]["heldout"].get<double>(), 2.0);
     EXPECT_GT(j["gap_before"]["heldout"].get<double>(), 0.3);
+
+    // Two such rows had measured each other, and neither was named: a log's counts have a code, which bounds the step.
+    const std::string twice = dir.file("twice.csv");
+    copy_log_editing_rows(log, twice, [](std::vector<std::string>& f, int row) {
+        f[3] = row == 749 || row == 1100 ? "1023" : "512";
+    });
+    const RunResult r2 = run_driftlab({"gap", twice, "--replicates", "10", "--locate-only", "--json"}, dir.path());
+    ASSERT_EQ(r2.exit_code, 0) << r2.output;
+    const auto j2 = nlohmann::json::parse(r2.output);
+    ASSERT_EQ(j2["lone_values"].size(), 1u) << j2["lone_values"].dump();
+    EXPECT_EQ(j2["lone_values"][0]["channel"], "accel_x");
+    ASSERT_EQ(j2["lone_values"][0]["t_s"].size(), 2u) << j2["lone_values"].dump();
+    EXPECT_EQ(j2["lone_values"][0]["t_s"][0], j["lone_values"][0]["t_s"][0]);
+    EXPECT_EQ(j2["verdict"], "none");
+    // fit and allan take the code of a log's channel alike.
+    const std::string two = "2 lone values (t = 750.098 s: 1023, t = 1101.098 s: 1023)";
+    const RunResult fit = run_driftlab({"fit", twice, "--channel", "accel_x"}, dir.path());
+    ASSERT_EQ(fit.exit_code, 0) << fit.output;
+    EXPECT_NE(fit.output.find(two), std::string::npos) << fit.output;
+    const RunResult allan = run_driftlab({"allan", twice, "--channel", "accel_x", "--json"}, dir.path());
+    ASSERT_EQ(allan.exit_code, 0) << allan.output;
+    const auto warning = nlohmann::json::parse(allan.output)["channels"]["accel_x"]["lone_values_warning"];
+    ASSERT_TRUE(warning.is_string()) << allan.output;
+    EXPECT_NE(warning.get<std::string>().find(two), std::string::npos) << warning;
 }
 
 TEST(GapCli, ATooShortLogIsRefusedNamingTheFile) {

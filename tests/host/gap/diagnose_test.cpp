@@ -100,7 +100,7 @@ TEST(Diagnose, AChannelWithoutNoiseIsLeftOutAndNamed) {
                   std::string::npos) << e.what();
     }
     // A stuck channel with one corrupt row (512 in every row but one 1023) is left out alike, and its row still named:
-    // lone values are looked for before channels are left out (GapCli.AStuckChannelWithOneCorruptRowIsLeftOut takes a
+    // lone values are looked for before channels are left out (GapCli.AStuckChannelWithACorruptRowOrTwoIsLeftOut takes a
     // log whose calibration gives such a channel a little noise).
     for (std::size_t k = 0; k < log.size(); ++k) log.counts[1][k] = k == 300 ? 1023.0 : 512.0;
     const GapResult stuck = diagnose(log, sim::paper_model(), o);

@@ -99,6 +99,37 @@ TEST(LoneValues, OnAConstantSeriesOneDepartingRowIsLone) {
     EXPECT_TRUE(lone_values(x).indices.empty());
 }
 
+// Where the values are converter codes, one code bounds the step: two corrupt rows on a stuck channel are each more
+// than ten codes out and lone (without the code they measure each other), while a departure of one code is a flip,
+// alone or among others, and not lone (without the code, alone, it is). A series that varies keeps its robust scale.
+TEST(LoneValues, AKnownCodeBoundsTheStepOfAStuckChannel) {
+    std::vector<double> x(1000, 512.0);
+    x[300] = 1023.0;
+    x[600] = 1023.0;
+    EXPECT_TRUE(lone_values(x).indices.empty());
+    const LoneValues found = lone_values(x, 1.0);
+    EXPECT_EQ(found.indices, (std::vector<std::size_t>{300, 600}));
+    EXPECT_DOUBLE_EQ(found.variance_share, 1.0);
+    x[600] = 522.0;  // ten codes: not over ten
+    EXPECT_EQ(lone_values(x, 1.0).indices, std::vector<std::size_t>{300});
+    x[600] = 523.0;
+    EXPECT_EQ(lone_values(x, 1.0).indices, (std::vector<std::size_t>{300, 600}));
+
+    std::vector<double> flip(1000, 512.0);
+    flip[400] = 513.0;
+    EXPECT_EQ(lone_values(flip).indices, std::vector<std::size_t>{400});
+    EXPECT_TRUE(lone_values(flip, 1.0).indices.empty());
+    EXPECT_FALSE(lone_values_warning(times(flip.size()), flip, 1.0).has_value());
+    for (std::size_t k = 10; k < flip.size(); k += 37) flip[k] = 511.0;
+    flip[700] = 612.0;
+    EXPECT_EQ(lone_values(flip, 1.0).indices, std::vector<std::size_t>{700});
+
+    // Noise of 0.01 code: the robust scale, not the code, measures a row; a 1-code row is 70 of it from both sides.
+    std::vector<double> quiet = white(2000, 0.01, 9);
+    quiet[900] += 1.0;
+    EXPECT_EQ(lone_values(quiet, 1.0).indices, std::vector<std::size_t>{900});
+}
+
 TEST(LoneValues, TheEndsAreNeverLone) {
     std::vector<double> x = white(500, 0.01, 7);
     x.front() = 1e9;
