@@ -14,8 +14,8 @@ void refuse_reversed_time_range(CLI::App* cmd, const double& from_s, const doubl
 }
 
 void add_time_range_options(CLI::App* cmd, double& t_min_s, double& t_max_s) {
-    // --from/--to first, as gap spells them and as the notes and refusals name them (a refusal names an option by its
-    // first name, whichever was typed); --t-min/--t-max still work.
+    // --from/--to first, as gap spells them and as the notes name them; --t-min/--t-max still work (a refusal names
+    // both spellings: main.cpp).
     cmd->add_option("--from,--t-min", t_min_s, "Use samples with t_s >= this [s since power-on]")->check(finite_value());
     cmd->add_option("--to,--t-max", t_max_s, "Use samples with t_s <= this [s since power-on]")->check(finite_value());
     refuse_reversed_time_range(cmd, t_min_s, t_max_s);

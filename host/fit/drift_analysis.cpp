@@ -112,12 +112,12 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     } else if (lone.variance_share > 0.5) {
         // Ljung-Box divides by the residual's variance: values holding most of it set every rho_k near 0, whatever
         // the other rows do. An AR(1) residual with one impulse had been called white.
-        out.warnings.push_back("the verdict 'white' is that of the lone value" + std::string(lone.indices.size() > 1 ? "s" : "") +
-                               " above, which hold" + (lone.indices.size() > 1 ? "" : "s") +
+        const bool several = lone.indices.size() > 1;
+        out.warnings.push_back(std::string("the verdict 'white' is that of the lone ") +
+                               (several ? "values above, which hold" : "value above, which holds") +
                                " most of the variance the Ljung-Box test divides by (" +
-                               fixed_point(100.0 * w.fraction_inside, 1) +
-                               " % of ensemble lags inside +-2 sigma): leave " + (lone.indices.size() > 1 ? "them" : "it") +
-                               " out with --exclude to test the other rows");
+                               fixed_point(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma): leave " +
+                               (several ? "them" : "it") + " out with --exclude to test the other rows");
     }
     // In rows that come in bursts every burst's end counts (17270 on the MPU6050 file): the longest says whether a
     // real gap is among them.
