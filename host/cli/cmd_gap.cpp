@@ -349,11 +349,7 @@ void register_gap(CLI::App& app) {
     cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
                     "the file's values, mean shapes refitted to the log; default: the paper's unit")
         ->check(non_empty_path());
-    cmd->add_option("--from", o->from_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: leave out a disturbed start")
-        ->check(finite_value());
-    cmd->add_option("--to", o->to_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end")
-        ->check(finite_value());
-    refuse_reversed_time_range(cmd, o->from_s, o->to_s);
+    add_time_range_options(cmd, o->from_s, o->to_s);
     add_exclude_option(cmd, o->excluded, "a shock or a bump in the middle of the log; the rows either side are joined");
     cmd->add_option("--exclude-saturated", o->saturated_margin_s,
                     "Leave out every stretch of rows whose sat_flags flag an analysed channel, with SECONDS more on either side "

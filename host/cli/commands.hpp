@@ -47,14 +47,10 @@ void register_gap_eval(CLI::App& app);
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);
 
-/// --from/--t-min and --to/--t-max [s since power-on], finite: the rows fit, whiteness, report and allan keep
-/// (time_range_options.cpp; gap spells them --from/--to alone). Refused as refuse_reversed_time_range says.
+/// --from/--t-min and --to/--t-max [s since power-on], finite: the rows fit, whiteness, report, allan and gap keep
+/// (time_range_options.cpp). A reversed or empty range is refused, "--from must be before --to", once the command
+/// line is read and before the log is (it takes `cmd`'s parse_complete_callback).
 void add_time_range_options(CLI::App* cmd, double& t_min_s, double& t_max_s);
-
-/// UsageError "--from must be before --to" once `cmd`'s command line is read, unless from_s < to_s: every command
-/// that keeps a time range refuses a reversed or empty one alike, before reading the log. Takes `cmd`'s
-/// parse_complete_callback (time_range_options.cpp).
-void refuse_reversed_time_range(CLI::App* cmd, const double& from_s, const double& to_s);
 
 /// `--drop-cut-line`: every command that reads a driftlab log takes it alike (cmd_fit.cpp; read with
 /// fit::cut_line_options and say host::dropped_cut_line_note).

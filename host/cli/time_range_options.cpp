@@ -6,19 +6,18 @@
 
 namespace driftlab::host::cli {
 
-void refuse_reversed_time_range(CLI::App* cmd, const double& from_s, const double& to_s) {
-    // Once the whole command line is read, as either option may come first; before a long log is read.
-    cmd->parse_complete_callback([&from_s, &to_s] {
-        if (!(from_s < to_s)) throw UsageError("--from must be before --to");
-    });
-}
-
 void add_time_range_options(CLI::App* cmd, double& t_min_s, double& t_max_s) {
-    // --from/--to first, as gap spells them and as the notes name them; --t-min/--t-max still work (a refusal names
-    // both spellings: main.cpp).
-    cmd->add_option("--from,--t-min", t_min_s, "Use samples with t_s >= this [s since power-on]")->check(finite_value());
-    cmd->add_option("--to,--t-max", t_max_s, "Use samples with t_s <= this [s since power-on]")->check(finite_value());
-    refuse_reversed_time_range(cmd, t_min_s, t_max_s);
+    // --from/--to first, as the notes name them; --t-min/--t-max, fit's first spelling, work in every command that
+    // keeps a range (a refusal names both spellings: main.cpp).
+    cmd->add_option("--from,--t-min", t_min_s, "Analyse only rows from this time on [s since power-on, the log's t_s]: "
+                                                "leave out a disturbed start")
+        ->check(finite_value());
+    cmd->add_option("--to,--t-max", t_max_s, "Analyse only rows up to this time [s since power-on]: leave out a disturbed end")
+        ->check(finite_value());
+    // Once the whole command line is read, as either option may come first; before a long log is read.
+    cmd->parse_complete_callback([&t_min_s, &t_max_s] {
+        if (!(t_min_s < t_max_s)) throw UsageError("--from must be before --to");
+    });
 }
 
 }  // namespace driftlab::host::cli

@@ -287,7 +287,8 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
         std::getline(file, first);
         EXPECT_EQ(first.rfind("# driftlab gap " + stuck + " (rows from 110.098 s to 400.098 s): verdict ", 0), 0u) << first;  // the rows it came from
     }
-    const RunResult outside = run_driftlab({"gap", stuck, "--from", "500", "--to", "600"}, dir.path());
+    // Spelled as fit's --t-min/--t-max, the same range.
+    const RunResult outside = run_driftlab({"gap", stuck, "--t-min", "500", "--t-max", "600"}, dir.path());
     EXPECT_EQ(outside.exit_code, 3) << outside.output;
     EXPECT_NE(outside.output.find("stuck.csv: no row lies between 500 s and 600 s (its rows run from "), std::string::npos) << outside.output;
     EXPECT_EQ(run_driftlab({"gap", stuck, "--from", "300", "--to", "200"}, dir.path()).exit_code, 2);
