@@ -6,6 +6,7 @@
 
 #include <Eigen/SVD>
 
+#include "host/fit/drift_functor.hpp"
 #include "host/util/error.hpp"
 
 namespace driftlab::host::fit {
