@@ -16,22 +16,6 @@ namespace {
 /// (e.g. T far beyond the record, where only the slope C1/T is seen).
 constexpr double kSingularCondition = 1e9;
 
-// Adds row `j` to the upper-triangular R of the growing least-squares problem by Givens rotations: R^T R = J^T J
-// without forming J^T J, whose rounding squares the condition number (so that a computed cond(J) topped out near
-// 1e8 and a singular fit was never seen as one).
-void add_row(Eigen::Matrix3d& r, Eigen::Vector3d j) {
-    for (int i = 0; i < 3; ++i) {
-        if (j[i] == 0.0) continue;
-        const double inv_h = 1.0 / std::sqrt(r(i, i) * r(i, i) + j[i] * j[i]);
-        const double c = r(i, i) * inv_h, s = j[i] * inv_h;
-        for (int k = i; k < 3; ++k) {
-            const double rik = r(i, k);
-            r(i, k) = c * rik + s * j[k];
-            j[k] = c * j[k] - s * rik;
-        }
-    }
-}
-
 /// Data whose largest magnitude lies within 2^+-kUnscaledRange fit unscaled: their squares and sums are far from
 /// a double's limits, and scaling would reorder MINPACK's column pivoting (the log T column scales, C1's and C2's do
 /// not), moving an ill-conditioned fit's last digits.
@@ -117,23 +101,20 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& d
     const DriftParameters p{x[0], x[1], std::exp(x[2])};  // of the scaled data
     out.parameters = {std::ldexp(p.c1, e2), std::ldexp(p.c2, e2), p.t_s};
 
-    // Residual, and the Jacobian over (C1, C2, T) for the covariance and the rank check.
     out.residual.resize(n);
-    Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
-    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();  // only a warm start's retry rule reads it (below)
-    const bool warm = options.start.has_value();
     for (std::size_t k = 0; k < n; ++k) {
-        const double u = t_s[k] / p.t_s;
-        const double e = std::exp(-u);
         const double residual = y[k] - drift_model(p, t_s[k]);
         out.residual[k] = std::ldexp(residual, e2);
         out.scaled_rss += residual * residual;
-        const Eigen::Vector3d j(1.0 - e, 1.0, -p.c1 * e * u / p.t_s);
-        add_row(r, j);
-        if (warm) jtj.noalias() += j * j.transpose();
     }
     out.rms = std::ldexp(std::sqrt(out.scaled_rss / static_cast<double>(n)), e2);
-    out.scaled_jacobian_r = r;
+    // The functor's R of J over (C1, C2, log T) at the solution (its 4th row is |f|'s, zero in these columns);
+    // d/dT = d/dlog T / T, so its last column over T is the R over (C1, C2, T) that the covariance reads.
+    Eigen::MatrixXd r_log_t;
+    functor.df(x, r_log_t);
+    out.scaled_jacobian_r = r_log_t.topRows<3>();
+    out.scaled_jacobian_r.col(2) /= p.t_s;
+    const Eigen::Matrix3d& r = out.scaled_jacobian_r;
     // The columns of R have the norms of J's: scaled to unit columns, its singular values are J's.
     const Eigen::Vector3d scale = r.colwise().norm().transpose().cwiseMax(1e-300).cwiseInverse();
     const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(r * scale.asDiagonal()).singularValues();
@@ -149,7 +130,9 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& d
     // A warm start that ran off is tried again cold: out of evaluations, or degenerate to the precision of its normal
     // equations (T run to 0 or to infinity, C1 to 0: a column of J exactly zero or equal to another); merely
     // ill-conditioned data are the data's, and stay.
-    const auto degenerate = [&jtj] {
+    const bool warm = options.start.has_value();
+    const auto degenerate = [&r] {
+        const Eigen::Matrix3d jtj = r.transpose() * r;
         const Eigen::Vector3d normal_scale = jtj.diagonal().cwiseSqrt().cwiseMax(1e-300).cwiseInverse();
         const Eigen::Vector3d normal_sv =
             Eigen::JacobiSVD<Eigen::Matrix3d>(normal_scale.asDiagonal() * jtj * normal_scale.asDiagonal()).singularValues();

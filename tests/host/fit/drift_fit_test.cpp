@@ -206,6 +206,30 @@ TEST(DriftFit, StandardErrorsMatchALongDoubleInverseOfTheNormalMatrix) {
     EXPECT_NEAR(i.initial_slope.stderr_ / static_cast<double>(std::sqrt(s2 * quad)), 1.0, 1e-9);
 }
 
+// A warm start (the gap diagnosis's replicates start at the model's parameters) where J is degenerate, C1 at 0 and
+// T so far beyond the record that the columns of C1 and T are exactly zero, can move only C2; it is fitted again
+// cold, to the cold fit's result. A sound warm start keeps its own, equally good fit.
+TEST(DriftFit, AWarmStartWhereTheJacobianIsDegenerateIsFittedAgainCold) {
+    const Truth truth{-28.0, 622.0, 1050.0};
+    const Series s = simulate(truth, 3000, 1.0, 0.5, 0.0, 9);
+    const FitResult cold = fit_drift(s.t_s, s.values);
+    ASSERT_EQ(cold.status, FitStatus::converged);
+    FitOptions stuck;
+    stuck.start = DriftParameters{0.0, 622.0, 1e300};
+    const FitResult retried = fit_drift(s.t_s, s.values, stuck);
+    EXPECT_EQ(retried.start.parameters.t_s, cold.start.parameters.t_s);  // the automatic start's, not 1e300
+    EXPECT_EQ(retried.status, FitStatus::converged);
+    EXPECT_DOUBLE_EQ(retried.parameters.c1, cold.parameters.c1);
+    EXPECT_DOUBLE_EQ(retried.parameters.t_s, cold.parameters.t_s);
+    FitOptions sound;
+    sound.start = DriftParameters{truth.c1, truth.c2, truth.t_s};
+    const FitResult warm = fit_drift(s.t_s, s.values, sound);
+    EXPECT_EQ(warm.status, FitStatus::converged);
+    EXPECT_NEAR(warm.parameters.c1 / cold.parameters.c1, 1.0, 1e-6);
+    EXPECT_NEAR(warm.parameters.t_s / cold.parameters.t_s, 1.0, 1e-6);
+    EXPECT_NEAR(warm.rss() / cold.rss(), 1.0, 1e-12);
+}
+
 // A unit already warm when the record starts: T far beyond it, C1 and T hardly separately determined, but the
 // drift rate C1/T is, within its interval; its error is solved from R rather than summed from a covariance whose
 // large entries cancel along it.
