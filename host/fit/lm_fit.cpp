@@ -117,7 +117,8 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& d
     const Eigen::Matrix3d& r = out.scaled_jacobian_r;
     // The columns of R have the norms of J's: scaled to unit columns, its singular values are J's.
     const Eigen::Vector3d scale = r.colwise().norm().transpose().cwiseMax(1e-300).cwiseInverse();
-    const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(r * scale.asDiagonal()).singularValues();
+    const Eigen::Matrix3d unit_columns = r * scale.asDiagonal();
+    const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(unit_columns).singularValues();
     out.condition_number = sv[2] > 0.0 ? sv[0] / sv[2] : INFINITY;
 
     using namespace Eigen::LevenbergMarquardtSpace;
@@ -131,11 +132,9 @@ FitResult fit_drift(const std::vector<double>& t_s, const std::vector<double>& d
     // equations (T run to 0 or to infinity, C1 to 0: a column of J exactly zero or equal to another); merely
     // ill-conditioned data are the data's, and stay.
     const bool warm = options.start.has_value();
-    const auto degenerate = [&r] {
-        const Eigen::Matrix3d jtj = r.transpose() * r;
-        const Eigen::Vector3d normal_scale = jtj.diagonal().cwiseSqrt().cwiseMax(1e-300).cwiseInverse();
+    const auto degenerate = [&unit_columns] {
         const Eigen::Vector3d normal_sv =
-            Eigen::JacobiSVD<Eigen::Matrix3d>(normal_scale.asDiagonal() * jtj * normal_scale.asDiagonal()).singularValues();
+            Eigen::JacobiSVD<Eigen::Matrix3d>(unit_columns.transpose() * unit_columns).singularValues();
         return !(normal_sv[2] > 0.0 && std::sqrt(normal_sv[0] / normal_sv[2]) < kSingularCondition);
     };
     if (warm && (out.status == FitStatus::iteration_limit || !std::isfinite(out.scaled_rss) || degenerate())) {
