@@ -6,9 +6,9 @@
 #include <limits>
 
 #include <Eigen/LU>
+#include <boost/math/distributions/students_t.hpp>
 
 #include "host/util/format_number.hpp"
-#include "host/util/special_functions.hpp"
 
 namespace driftlab::host::fit {
 namespace {
@@ -52,7 +52,7 @@ ParameterIntervals parameter_intervals(const FitResult& fit, double tau) {
         // slope where T is far beyond the record.
         slope_variance = s2 * r.transpose().solve(slope_gradient).squaredNorm();
     }
-    out.t_quantile = out.dof > 0.0 ? student_t_quantile(0.975, out.dof) : inf;
+    out.t_quantile = out.dof > 0.0 ? boost::math::quantile(boost::math::students_t(out.dof), 0.975) : inf;
     // The covariance is the scaled data's: C1's and C2's standard errors scale back with the data, T's is T's.
     out.c1 = estimate(p.c1, cov(0, 0), out.inflation, out.t_quantile, fit.scale_exponent);
     out.c2 = estimate(p.c2, cov(1, 1), out.inflation, out.t_quantile, fit.scale_exponent);

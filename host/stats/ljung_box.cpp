@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
+#include "host/stats/chi_square.hpp"
 #include "host/util/error.hpp"
-#include "host/util/special_functions.hpp"
 
 namespace driftlab::host::stats {
 
