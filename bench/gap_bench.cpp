@@ -6,7 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include "host/gap/diagnose.hpp"
-#include "host/gap/sim_chain.hpp"
+
+#include "sim/model/board_outputs.hpp"
 
 namespace {
 
@@ -33,13 +34,13 @@ LogData paper_log(const LogShape& shape, bool planted) {
         log.t_s.push_back(static_cast<double>(k + 1) * shape.period_s);
         log.seq.push_back(k);
     }
-    gap::SimRequest req;
+    sim::OutputRequest req;
     req.t_s = &log.t_s;
     if (planted) {
         req.added_counts[0].resize(log.t_s.size());
         for (std::size_t k = 0; k < log.t_s.size(); ++k) req.added_counts[0][k] = 2.0 * -std::expm1(-log.t_s[k] / 2000.0);
     }
-    log.counts = gap::simulate(m, req, 42);
+    log.counts = sim::simulate_outputs(m, req, 42);
     log.metadata.set("sample_period_s", shape.period_s);
     log.metadata.set("conversions_per_output", static_cast<std::int64_t>(shape.window));
     log.metadata.set("window", static_cast<std::int64_t>(shape.window));

@@ -9,6 +9,9 @@
 
 #include "host/cli/commands.hpp"
 #include "host/util/error.hpp"
+#ifdef DRIFTLAB_HAVE_SIM
+#include "sim/sim_error.hpp"
+#endif
 
 namespace {
 
@@ -48,6 +51,13 @@ std::string naming_every_spelling(const CLI::App* command, std::string message) 
     return message;
 }
 
+// The message of an error that ends the command, after the output it had made; its exit code.
+int report_error(const std::exception& e, int exit_code) {
+    flush_output_so_far();
+    std::fprintf(stderr, "driftlab: error: %s\n", e.what());
+    return exit_code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -72,9 +82,15 @@ int main(int argc, char** argv) {
         // CLI11 prints the message (or the help); its own codes (105, 106, ...) would break the documented exit 2.
         return app.exit(e) == 0 ? 0 : driftlab::host::kUsageExitCode;
     } catch (const driftlab::host::Error& e) {
-        flush_output_so_far();
-        std::fprintf(stderr, "driftlab: error: %s\n", e.what());
-        return e.exit_code();
+        return report_error(e, e.exit_code());
+#ifdef DRIFTLAB_HAVE_SIM
+    } catch (const driftlab::sim::ModelFileError& e) {
+        return report_error(e, driftlab::host::ConfigError::kExitCode);
+    } catch (const driftlab::sim::BoardError& e) {
+        return report_error(e, driftlab::host::DeviceError::kExitCode);
+    } catch (const driftlab::sim::ConfigRefused& e) {
+        return report_error(e, driftlab::host::kUsageExitCode);
+#endif
     } catch (const std::exception& e) {
         flush_output_so_far();
         std::fprintf(stderr, "driftlab: internal error: %s\n", e.what());

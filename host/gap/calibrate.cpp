@@ -8,10 +8,11 @@
 #include "host/fit/lm_fit.hpp"
 #include "host/fit/start_values.hpp"
 #include "host/gap/replicates.hpp"
-#include "host/gap/sim_chain.hpp"
+#include "host/stats/median.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
+#include "sim/model/board_outputs.hpp"
 
 namespace driftlab::host::gap {
 
@@ -20,12 +21,6 @@ namespace {
 constexpr int kCalibrationReplicates = 3;
 constexpr int kMaxSteps = 14;                 // regula falsi steps after the two bracket ends
 constexpr double kRelativeTolerance = 1e-4;   // of the target spread
-
-double median(std::vector<double> v) {
-    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    return *mid;
-}
 
 int metadata_int(const LogData& log, const std::string& key, int fallback, int lo, int hi) {
     if (!log.metadata.has(key)) return fallback;
@@ -102,11 +97,11 @@ double short_lag_spread(const std::vector<double>& residual) {
     if (residual.size() < 3) return 0.0;
     std::vector<double> d(residual.size() - 1);
     for (std::size_t i = 0; i + 1 < residual.size(); ++i) d[i] = residual[i + 1] - residual[i];
-    const double med = median(d);
+    const double med = stats::median(d);
     std::vector<double> dev(d.size());
     for (std::size_t i = 0; i < d.size(); ++i) dev[i] = std::abs(d[i] - med);
     // +0.5 count keeps quantised differences (many exact zeros) from being clipped away.
-    const double limit = 6.0 * 1.4826 * median(dev) + 0.5;
+    const double limit = 6.0 * 1.4826 * stats::median(dev) + 0.5;
     double sum = 0.0;
     std::size_t n = 0;
     for (double x : d) {
@@ -130,10 +125,10 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
     auto simulated_spread = [&](const GapModel& m) {
         std::array<double, kChannelCount> out{};
         for (int r = 0; r < kCalibrationReplicates; ++r) {
-            SimRequest req;
+            sim::OutputRequest req;
             req.t_s = &t_s;
             req.channels = channels;
-            const SimOutput sim = simulate(m, req, seed + 7919u * static_cast<std::uint64_t>(r));
+            const sim::Outputs sim = sim::simulate_outputs(m, req, seed + 7919u * static_cast<std::uint64_t>(r));
             for (std::size_t c = 0; c < kChannelCount; ++c) {
                 if (!channels[c]) continue;
                 // The spread is taken on the same eq. 1 residual the real log gave.
@@ -185,13 +180,13 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
 std::array<bool, kChannelCount> deterministic_channels(const GapModel& model, const std::vector<double>& t_s,
                                                        const std::array<bool, kChannelCount>& channels, std::uint64_t seed) {
     std::array<bool, kChannelCount> out{};
-    SimRequest req;
+    sim::OutputRequest req;
     req.t_s = &t_s;
     // Noise of half a code or more moves some conversion of any log: only weaker noise needs the two simulations
     // (not the paper's gyro, calibrated near one code on its logs).
     for (std::size_t c = 0; c < kChannelCount; ++c) req.channels[c] = channels[c] && model.base[c].sigma_n_counts < 0.5;
     if (std::none_of(req.channels.begin(), req.channels.end(), [](bool b) { return b; })) return out;
-    const SimOutput a = simulate(model, req, seed), b = simulate(model, req, seed + 1);
+    const sim::Outputs a = sim::simulate_outputs(model, req, seed), b = sim::simulate_outputs(model, req, seed + 1);
     for (std::size_t c = 0; c < kChannelCount; ++c) out[c] = req.channels[c] && a[c] == b[c];
     return out;
 }

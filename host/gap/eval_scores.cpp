@@ -10,6 +10,7 @@
 #include "host/gap/truth.hpp"
 #include "host/report/json_out.hpp"
 #include "host/stats/binomial_interval.hpp"
+#include "host/stats/median.hpp"
 #include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
@@ -18,8 +19,7 @@ namespace {
 
 std::optional<double> median(std::vector<double> v) {
     if (v.empty()) return std::nullopt;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
+    return stats::median(std::move(v));
 }
 
 // A median over no logs is "-" in its cell.

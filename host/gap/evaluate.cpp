@@ -16,10 +16,10 @@
 #include "host/gap/comparison.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/replicates.hpp"
-#include "host/gap/sim_chain.hpp"
 #include "host/gap/truth.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/parallel_for.hpp"
+#include "sim/model/board_outputs.hpp"
 #include "sim/model/drift.hpp"
 #include "sim/model/rng.hpp"
 #include "sim/model/white_noise.hpp"
@@ -63,20 +63,20 @@ bool raw_mode(const std::string& generator) {
 // A gyro log of `truth` with `added` at the converter input and, when given, `quantiser` as its converter. A `raw`
 // log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
 // numbers stepping by two (a SAMPLE and a RAW frame per row).
-LogData make_log(const GapModel& truth, const std::vector<double>& added, const Quantiser& quantiser, std::size_t samples,
+LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser, std::size_t samples,
                  std::uint64_t seed, bool raw_mode) {
     LogData log;
     log.source_name = "gap-eval";
     log.t_s.resize(samples);
     for (std::size_t k = 0; k < samples; ++k) log.t_s[k] = static_cast<double>(k + 1) * kSamplePeriodS;
-    SimRequest req;
+    sim::OutputRequest req;
     req.t_s = &log.t_s;
     req.channels = {true, false, false, false};
     if (!added.empty()) req.added_counts[0] = added;
     req.quantiser[0] = quantiser;
-    SimOutput raw;
+    sim::Outputs raw;
     if (raw_mode) req.raw_codes = &raw;
-    const SimOutput sim = simulate(truth, req, seed ^ 0xA5A5A5A5ull);
+    const sim::Outputs sim = sim::simulate_outputs(truth, req, seed ^ 0xA5A5A5A5ull);
     log.counts[0] = sim[0];
     for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
     log.recorded = {true, false, false, false};
@@ -154,7 +154,7 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
     Planted p;
     p.model = randomised_truth(seed);
     std::vector<double> added;
-    Quantiser quantiser;
+    sim::Quantiser quantiser;
     if (raw_mode(generator)) {
         // Sized by the code widths the log can see: those of the codes it occupies (the same noise path through the
         // model's converter), as a deterministic shape by the part eq. 1 cannot absorb.
@@ -231,7 +231,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     };
     const double before = heldout_gap(r.base, {});
     auto shrink = [before](double after) { return before > 1.0 ? (before - after) / (before - 1.0) : 0.0; };
-    const ReplicateExtra oracle = [&](std::uint64_t rs, SimRequest& req) {
+    const ReplicateExtra oracle = [&](std::uint64_t rs, sim::OutputRequest& req) {
         if (raw_mode(generator))
             req.quantiser[0] = make_converter_truth(generator, p.scale, p.occupancy, seed, rs);
         else

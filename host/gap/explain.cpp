@@ -16,6 +16,7 @@
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
 #include "host/gap/whittle.hpp"
+#include "host/stats/median.hpp"
 #include "host/util/channel_name.hpp"
 #include "host/util/parallel_for.hpp"
 
@@ -213,9 +214,7 @@ Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOpti
     const auto& e = judge.residual;
     std::vector<double> dev(e.size());
     for (std::size_t k = 0; k < e.size(); ++k) dev[k] = std::abs(e[k]);
-    std::vector<double> sorted = dev;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    const double scale = 1.4826 * sorted[sorted.size() / 2] + 0.1;
+    const double scale = 1.4826 * stats::median(dev) + 0.1;
     std::vector<double> outliers;
     for (double d : dev)
         if (d > 5.0 * scale) outliers.push_back(d);

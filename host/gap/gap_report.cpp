@@ -15,7 +15,6 @@
 #include "host/fit/lm_fit.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/replicates.hpp"
-#include "host/gap/sim_chain.hpp"
 #include "host/gap/spectral.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/report/gnuplot.hpp"
@@ -24,6 +23,7 @@
 #include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
 #include "host/util/units.hpp"
+#include "sim/model/board_outputs.hpp"
 
 namespace driftlab::host::gap {
 
@@ -95,13 +95,13 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
                                const std::vector<std::size_t>& edges, const CodeRange& range, std::uint64_t seed) {
     ReplicateBands bands;
     for (int r = 0; r < kBandReplicates; ++r) {
-        SimRequest req;
+        sim::OutputRequest req;
         req.t_s = &log.t_s;
         req.channels = {};
         req.channels[c] = true;
-        SimOutput raw;
+        sim::Outputs raw;
         if (range.real) req.raw_codes = &raw;
-        const SimOutput sim = simulate(model, req, replicate_seed(seed, r));
+        const sim::Outputs sim = sim::simulate_outputs(model, req, replicate_seed(seed, r));
         const auto residual = fit::fit_drift(log.t_s, sim[c], start_at_model(model, static_cast<Channel>(c))).residual;
         bands.adev.widen(octave_oadev(residual, max_m));
         bands.mean.widen(binned_mean(residual, edges));

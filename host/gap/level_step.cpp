@@ -244,7 +244,7 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     const std::vector<double> real = statistics(r, &steps);
     std::array<bool, kChannelCount> only{};
     only[i] = true;
-    const Eigen::MatrixXd null = simulate_replicates(model, t_s, only, replicates, seed, threads, [&](const SimOutput& sim, const SimOutput&) {
+    const Eigen::MatrixXd null = simulate_replicates(model, t_s, only, replicates, seed, threads, [&](const sim::Outputs& sim, const sim::Outputs&) {
         return statistics(residual_about_mean(sim[i]), nullptr);
     });
     LevelStep out;

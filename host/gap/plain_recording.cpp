@@ -13,6 +13,7 @@
 
 #include "driftlab/proto/messages.hpp"
 #include "host/fit/series.hpp"
+#include "host/stats/median.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/channel_name.hpp"
@@ -115,10 +116,7 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
             if (candidate.name == m.column) s = &candidate;
         // Integer codes, as the sensor produced them, offset so the column's median sits at mid-scale (a median:
         // one wild value must not move the others off the scale, so that the error names its own row).
-        std::vector<double> sorted = s->values;
-        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-        std::nth_element(sorted.begin(), middle, sorted.end());
-        const double median_code = std::round(*middle / m.lsb);
+        const double median_code = std::round(stats::median(s->values) / m.lsb);
         const double offset = kMidScale - median_code;
         log.metadata.set(std::string("mid_scale_value_") + kChannelNames[c], median_code * m.lsb);
         for (std::size_t b = 0; b < outputs; ++b) {

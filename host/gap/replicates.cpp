@@ -19,17 +19,17 @@ Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<dou
                                     int threads, const ReplicateSummary& summary, const ReplicateExtra& extra,
                                     bool raw_codes) {
     std::vector<std::vector<double>> rows(static_cast<std::size_t>(replicates));
-    const std::optional<DriftAtConversions> drift = drift_at_conversions(model, t_s, channels);
+    const std::optional<sim::DriftAtConversions> drift = sim::drift_at_conversions(model, t_s, channels);
     parallel_for(rows.size(), threads, [&](std::size_t r) {
-        SimRequest request;
+        sim::OutputRequest request;
         request.t_s = &t_s;
         request.channels = channels;
         if (drift) request.drift = &*drift;
         const std::uint64_t rs = replicate_seed(seed, static_cast<int>(r));
         if (extra) extra(rs, request);
-        SimOutput raw;
+        sim::Outputs raw;
         if (raw_codes) request.raw_codes = &raw;
-        const SimOutput y = simulate(model, request, rs);
+        const sim::Outputs y = sim::simulate_outputs(model, request, rs);
         rows[r] = summary(y, raw);
     });
     Eigen::MatrixXd out(replicates, static_cast<Eigen::Index>(rows.front().size()));
@@ -52,7 +52,7 @@ Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>&
     for (std::size_t c = 0; c < kChannelCount; ++c) warm.fit_start[c] = start_at_model(model, static_cast<Channel>(c)).start;
     return simulate_replicates(
         model, t_s, options.channels, replicates, seed, threads,
-        [&](const SimOutput& sim, const SimOutput& raw_codes) {
+        [&](const sim::Outputs& sim, const sim::Outputs& raw_codes) {
             std::array<const std::vector<double>*, kChannelCount> y{};
             RawCodes raw{};
             for (std::size_t c = 0; c < kChannelCount; ++c) {

@@ -12,7 +12,6 @@
 
 #include "host/fit/lm_fit.hpp"
 #include "host/gap/gap_model.hpp"
-#include "host/gap/sim_chain.hpp"
 #include "host/gap/statistics.hpp"
 
 namespace driftlab::host::gap {
@@ -22,11 +21,11 @@ std::uint64_t replicate_seed(std::uint64_t seed, int r);
 
 /// Fills a replicate's request with signals beyond the model (gap-eval's oracle: a fresh realisation of the
 /// truth generator per replicate, seeded from the replicate's seed).
-using ReplicateExtra = std::function<void(std::uint64_t replicate_seed, SimRequest& request)>;
+using ReplicateExtra = std::function<void(std::uint64_t replicate_seed, sim::OutputRequest& request)>;
 
 /// What one replicate is reduced to (one row of the result): its smoothed outputs and, when asked for, the raw
 /// codes of the same rows (else empty).
-using ReplicateSummary = std::function<std::vector<double>(const SimOutput& simulated, const SimOutput& raw_codes)>;
+using ReplicateSummary = std::function<std::vector<double>(const sim::Outputs& simulated, const sim::Outputs& raw_codes)>;
 
 /// `summary` of `replicates` replicates (rows) of `model` on the instants `t_s` for `channels`, run on `threads`
 /// threads, with raw codes when `raw_codes`. Every row must have the same length.

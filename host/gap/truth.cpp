@@ -34,7 +34,7 @@ std::vector<double> make_truth(const std::string& generator, const std::vector<d
     throw std::invalid_argument("unknown signal truth generator: " + generator);
 }
 
-Quantiser make_converter_truth(const std::string& generator, double size_counts, const std::vector<double>& occupancy,
+sim::Quantiser make_converter_truth(const std::string& generator, double size_counts, const std::vector<double>& occupancy,
                                std::uint64_t seed, std::uint64_t noise_seed) {
     if (generator == "sar_mismatch") return truth_sar_mismatch(size_counts, occupancy, seed, noise_seed);
     throw std::invalid_argument("unknown converter truth generator: " + generator);

@@ -25,7 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "host/gap/sim_chain.hpp"
+#include "sim/model/sensor_model.hpp"
+
 
 namespace driftlab::host::gap {
 
@@ -56,7 +57,7 @@ std::vector<double> make_truth(const std::string& generator, const std::vector<d
 /// The quantiser of a converter generator (Kind::converter): `size_counts` is its rms DNL [LSB] over the codes as
 /// `occupancy` weights them (index = code; empty: the inner codes 1..1022 alike); `seed` draws the device (its
 /// mismatch), `noise_seed` the comparator's noise. Throws std::invalid_argument on a bad name.
-Quantiser make_converter_truth(const std::string& generator, double size_counts, const std::vector<double>& occupancy,
+sim::Quantiser make_converter_truth(const std::string& generator, double size_counts, const std::vector<double>& occupancy,
                                std::uint64_t seed, std::uint64_t noise_seed);
 
 /// The per-sample signal generators, one file each (truth_*.cpp).
@@ -68,7 +69,7 @@ std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double si
 std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_mode_hop(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
-Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
+sim::Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
                              std::uint64_t noise_seed);
 
 }  // namespace driftlab::host::gap

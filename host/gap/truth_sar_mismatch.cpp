@@ -63,7 +63,7 @@ double rms_dnl_lsb(const Weights& w, const std::vector<double>& occupancy) {
 
 }  // namespace
 
-Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
+sim::Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
                              std::uint64_t noise_seed) {
     // A self-calibrated converter: calibration leaves every bit's weight off by a residual of one absolute size
     // (raw unit-capacitor mismatch, growing as the square root of a bit's weight, would make the MSB carry some

@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "host/gap/gap_report.hpp"
-#include "host/gap/sim_chain.hpp"
 #include "host/util/format_number.hpp"
+#include "sim/model/board_outputs.hpp"
 
 namespace driftlab::host::gap {
 
@@ -21,13 +21,13 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
     const bool any_raw = any_raw_codes(result);
     for (std::size_t b = 0; b < logs; ++b) {
         if (options.progress) options.progress("verdict stability: log " + std::to_string(b + 1) + " of " + std::to_string(logs));
-        SimRequest request;
+        sim::OutputRequest request;
         request.t_s = &log.t_s;
         request.channels = result.channels;
         std::array<std::vector<double>, kChannelCount> raw;
         if (any_raw) request.raw_codes = &raw;
         // Seeds apart from the replicates' (which follow options.seed upward), one per log.
-        const SimOutput sim = simulate(result.whole_log_model, request, options.seed ^ (0x9e3779b97f4a7c15ULL * (b + 1)));
+        const sim::Outputs sim = sim::simulate_outputs(result.whole_log_model, request, options.seed ^ (0x9e3779b97f4a7c15ULL * (b + 1)));
         LogData copy = log;
         for (std::size_t c = 0; c < kChannelCount; ++c) {
             if (!result.channels[c]) continue;

@@ -4,13 +4,13 @@
 #include <algorithm>
 #include <utility>
 
+#include "driftlab/proto/q8_counts.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 
 namespace driftlab::host::io {
 namespace {
 
-constexpr double kQ8PerCount = 256.0;
 // Codes are 0..1023; -1 marks a raw code that never arrived.
 
 std::string header_value(const CaptureHeader& header, const std::string& key) {
@@ -260,7 +260,7 @@ void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, s
     LogRow row;
     row.t_s = t_s;
     row.seq = seq;
-    for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) row.counts[ch] = sample.value_q8[ch] / kQ8PerCount;
+    for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) row.counts[ch] = proto::q8_to_counts(sample.value_q8[ch]);
     // A frame can pass its CRC and still carry a value no converter of this resolution makes (a firmware fault):
     // skipped and counted, as the reader would reject the row.
     const auto range = converter_range(version_->adc_bits);

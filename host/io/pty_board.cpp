@@ -6,6 +6,7 @@
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
+#include "driftlab/proto/q8_counts.hpp"
 #include "firmware/core/firmware.hpp"
 #include "firmware/core/hal.hpp"
 #include "firmware/port/native/native_board.hpp"
@@ -48,7 +49,7 @@ public:
                 LogRow row;
                 row.t_s = t_s;
                 row.seq = seq;
-                for (std::uint8_t c = 0; c < kChannelCount; ++c) row.counts[c] = s.value_q8[c] / 256.0;
+                for (std::uint8_t c = 0; c < kChannelCount; ++c) row.counts[c] = proto::q8_to_counts(s.value_q8[c]);
                 row.optional_values = {static_cast<double>(tick), static_cast<double>(s.n_window),
                                        static_cast<double>(s.dropped)};
                 writer_->write_row(row);

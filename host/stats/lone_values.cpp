@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "host/stats/median.hpp"
 #include "host/util/format_number.hpp"
 
 namespace driftlab::host::stats {
@@ -38,9 +39,7 @@ LoneValues lone_values(const std::vector<double>& x, double code) {
     for (std::size_t k = 1; k < x.size(); ++k) half[k - 1] = x[k] / 2.0 - x[k - 1] / 2.0;
     std::vector<double> magnitude(half.size());
     std::transform(half.begin(), half.end(), magnitude.begin(), [](double h) { return std::fabs(h); });
-    std::vector<double> sorted = magnitude;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    const double mad_scale = kMadToSigma * sorted[sorted.size() / 2];
+    const double mad_scale = kMadToSigma * median(magnitude);
     // A series that mostly repeats one code: its step is the scale, the smallest nonzero difference other than the
     // two beside the row judged, so among the three smallest. Where the row's own were taken, a series constant but
     // for one corrupt row had measured the row by itself and never found it. A known code bounds the step: two corrupt

@@ -7,15 +7,15 @@
 #include <limits>
 #include <stdexcept>
 
+#include "host/stats/median.hpp"
+
 namespace driftlab::host::stats {
 
 double median_spacing_s(std::span<const double> t_s) {
     if (t_s.size() < 2) return 0.0;
     std::vector<double> d(t_s.size() - 1);
     for (std::size_t i = 0; i + 1 < t_s.size(); ++i) d[i] = t_s[i + 1] - t_s[i];
-    const auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
-    std::nth_element(d.begin(), mid, d.end());
-    return *mid;
+    return median(std::move(d));
 }
 
 double mean_spacing_s(std::span<const double> t_s) {

@@ -38,7 +38,8 @@ public:
 class DeviceError : public Error {
 public:
     DeviceError(const std::string& port, const std::string& what) : Error(port + ": " + what) {}
-    int exit_code() const override { return 4; }
+    static constexpr int kExitCode = 4;
+    int exit_code() const override { return kExitCode; }
 };
 
 /// A configuration file with a missing, unknown or out-of-range key.
@@ -46,7 +47,8 @@ class ConfigError : public Error {
 public:
     ConfigError(const std::string& file, const std::string& key, const std::string& what)
         : Error(file + ": " + key + ": " + what) {}
-    int exit_code() const override { return 5; }
+    static constexpr int kExitCode = 5;
+    int exit_code() const override { return kExitCode; }
 };
 
 /// The user stopped a run that has an end of its own (Ctrl-C, SIGTERM) before it: what it made so far is kept and

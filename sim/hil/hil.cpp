@@ -10,9 +10,9 @@
 
 #include "driftlab/proto/messages.hpp"
 #include "driftlab/proto/wire.hpp"
-#include "host/util/error.hpp"
 #include "sim/hil/native_target.hpp"
 #include "sim/model/sensor_model.hpp"
+#include "sim/sim_error.hpp"
 
 namespace driftlab::sim {
 
@@ -21,11 +21,17 @@ namespace {
 // The sensor model seen from the board: eq. 1 runs on the sensor's own power-on time.
 class SensorSource final : public ConversionSource {
 public:
-    SensorSource(const SimModel& model, std::uint64_t seed, double warm_up_s) : sensor_(model, seed, warm_up_s) {}
-    std::uint16_t code(Channel c, double t_s) override { return sensor_.convert(c, t_s).code; }
+    explicit SensorSource(const HilOptions& options)
+        : sensor_(options.model, options.seed, options.warm_up_s), observer_(options.on_conversion) {}
+    std::uint16_t code(Channel c, double t_s) override {
+        const std::uint16_t code = sensor_.convert(c, t_s).code;
+        if (observer_) observer_(c, t_s, code);
+        return code;
+    }
 
 private:
     SensorModel sensor_;
+    const std::function<void(Channel, double, std::uint16_t)>& observer_;
 };
 
 std::unique_ptr<EmulatedBoard> make_target(TargetKind kind) {
@@ -76,7 +82,7 @@ std::optional<std::string> link_capacity_refusal(const SimModel& model) {
 }
 
 HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
-    SensorSource source(options.model, options.seed, options.warm_up_s);
+    SensorSource source(options);
     Link link(options.model.link, options.seed);
     HostPlan plan;
     plan.config = options.model.firmware;
@@ -103,9 +109,9 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
         t = earliest({board->next_conversion_s(), link.to_firmware().next_arrival_s(), link.to_host().next_arrival_s(),
                       host.next_action_s()});
         if (t == std::numeric_limits<double>::infinity())
-            throw host::DeviceError("emulated board", "the run stalled: nothing left to happen in virtual time");
+            throw BoardError("the run stalled: nothing left to happen in virtual time");
         if (t > give_up_s)
-            throw host::DeviceError("emulated board", "the session did not finish within " +
+            throw BoardError("the session did not finish within " +
                                                           std::to_string(give_up_s) + " s of virtual time");
 
         // Same-instant order: conversions due, then bytes reaching the firmware, then bytes reaching the host,

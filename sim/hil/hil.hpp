@@ -39,6 +39,9 @@ struct HilOptions {
     /// Called once when the handshake has verified the configuration, before the first record; may be empty
     /// (a log writer needs VERSION for its metadata).
     std::function<void(const proto::VersionPayload&, const proto::ConfigPayload&)> on_ready;
+    /// Called with every conversion the sensor model makes: the channel, the board's nominal instant [s since its
+    /// start] and the code; may be empty.
+    std::function<void(Channel, double board_t_s, std::uint16_t code)> on_conversion;
     /// When it turns true (a Ctrl-C), the run ends at its next event with what it has; may be null.
     const std::atomic<bool>* stop = nullptr;
 };
@@ -63,8 +66,7 @@ std::optional<std::string> link_capacity_refusal(const SimModel& model);
 /// Runs one host-in-the-loop session; records go to `sink` as the host completes them. The caller refuses a model
 /// whose link cannot carry its output (link_capacity_refusal) before: `driftlab hil` does, telling the model file's
 /// fault from the command line's, which a check in here could not.
-/// Throws host::DeviceError when the emulated board stops answering, host::UsageError when it refuses the
-/// configuration.
+/// Throws BoardError when the emulated board stops answering, ConfigRefused when it refuses the configuration.
 HilSummary run_hil(const HilOptions& options, const RecordSink& sink);
 
 }  // namespace driftlab::sim

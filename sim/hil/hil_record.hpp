@@ -14,7 +14,7 @@ struct HilRecord {
     double t_s = 0.0;                                 ///< newest conversion's tick / tick_hz [s since power-on]
     std::uint64_t seq = 0;                            ///< SAMPLE frame seq, unwrapped
     std::uint64_t tick = 0;                           ///< newest conversion's tick, unwrapped [ticks]
-    std::array<double, kChannelCount> value_counts{}; ///< least-squares estimate, value_q8 / 256 [counts]
+    std::array<double, kChannelCount> value_counts{}; ///< least-squares estimate, proto::q8_to_counts(value_q8) [counts]
     bool has_raw = false;                             ///< raw mode: raw_counts holds the RAW frame's codes
     std::array<std::uint16_t, kChannelCount> raw_counts{};  ///< newest raw codes [counts]
     std::uint8_t sat_flags = 0;                       ///< bit c: channel c saturated inside its window

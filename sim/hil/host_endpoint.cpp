@@ -5,8 +5,9 @@
 #include <utility>
 
 #include "driftlab/proto/encoder.hpp"
+#include "driftlab/proto/q8_counts.hpp"
 #include "driftlab/proto/status.hpp"
-#include "host/util/error.hpp"
+#include "sim/sim_error.hpp"
 
 namespace driftlab::sim {
 
@@ -85,7 +86,7 @@ void HostEndpoint::act(double t_s, std::vector<std::vector<std::uint8_t>>& out) 
 
 void HostEndpoint::request(double t_s, std::vector<std::vector<std::uint8_t>>& out) {
     if (tries_ >= plan_.max_tries)
-        throw host::DeviceError("emulated board", std::string("no answer to ") + request_name(phase_) + " after " +
+        throw BoardError(std::string("no answer to ") + request_name(phase_) + " after " +
                                                       std::to_string(tries_) + " tries");
     if (tries_ > 0) ++counters_.retries;
     ++tries_;
@@ -162,14 +163,14 @@ void HostEndpoint::handle_frame(double t_s) {
         if (!proto::parse(p, len, &nak) || (phase_ != Phase::config_set && phase_ != Phase::stop_stream)) break;
         const char* name = proto::config_field_name(nak.field);
         const std::string field = name ? name : "field " + std::to_string(nak.field);
-        throw host::UsageError("the firmware refused the configuration: status " + std::to_string(nak.status) +
+        throw ConfigRefused("the firmware refused the configuration: status " + std::to_string(nak.status) +
                                " (" + proto::status_name(static_cast<proto::Status>(nak.status)) + ") on " + field);
     }
     case proto::MsgType::config: {
         proto::ConfigPayload got{};
         if (phase_ != Phase::config_get || !proto::parse(p, len, &got)) break;
         if (!same_config(got, plan_.config))
-            throw host::DeviceError("emulated board", "CONFIG_GET returned a configuration that differs from the "
+            throw BoardError("CONFIG_GET returned a configuration that differs from the "
                                                       "one it acknowledged");
         if (on_ready_) on_ready_(version_, got);
         enter(Phase::running, t_s);
@@ -204,7 +205,7 @@ void HostEndpoint::handle_sample(const proto::SamplePayload& s, std::uint64_t se
     r.tick = unwrap_tick(s.tick);
     r.t_s = static_cast<double>(r.tick) / static_cast<double>(version_.tick_hz);
     r.seq = seq;
-    for (std::size_t c = 0; c < kChannelCount; ++c) r.value_counts[c] = s.value_q8[c] / 256.0;
+    for (std::size_t c = 0; c < kChannelCount; ++c) r.value_counts[c] = proto::q8_to_counts(s.value_q8[c]);
     r.sat_flags = s.sat_flags;
     r.n_window = s.n_window;
     r.dropped = s.dropped;

@@ -12,11 +12,11 @@
 
 #include "driftlab/proto/status.hpp"
 #include "firmware/core/config.hpp"
-#include "host/util/error.hpp"
 #include "sim/effects/effect.hpp"
 #include "sim/effects/params.hpp"
 #include "sim/model/paper_model_text.hpp"
 #include "sim/model/white_noise.hpp"
+#include "sim/sim_error.hpp"
 
 namespace driftlab::sim {
 
@@ -390,7 +390,7 @@ SimModel parse_over(std::string_view text, const std::string& source_name, const
     try {
         root = toml::parse(text, source_name);
     } catch (const toml::parse_error& e) {
-        throw host::ConfigError(source_name + ":" + std::to_string(e.source().begin.line), "syntax",
+        throw ModelFileError(source_name + ":" + std::to_string(e.source().begin.line), "syntax",
                                 std::string(e.description()));
     }
     try {
@@ -402,7 +402,7 @@ SimModel parse_over(std::string_view text, const std::string& source_name, const
                                    e.key() + ": ";
         std::string reason = e.what();
         if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
-        throw host::ConfigError(where, e.key(), reason);
+        throw ModelFileError(where, e.key(), reason);
     }
 }
 
@@ -500,9 +500,9 @@ SimModel parse_model(std::string_view toml_text, const std::string& source_name,
 SimModel load_model_file(const std::string& path, const FirmwareAdjust& adjust) {
     // A stream opens a folder and reads it as empty, which had run the paper's model under the folder's name.
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw host::ConfigError(path, "file", "is a folder, not a model file");
+    if (std::filesystem::is_directory(path, ec)) throw ModelFileError(path, "file", "is a folder, not a model file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw host::ConfigError(path, "file", "cannot open the model file (does it exist and is it readable?)");
+    if (!in) throw ModelFileError(path, "file", "cannot open the model file (does it exist and is it readable?)");
     std::ostringstream text;
     text << in.rdbuf();
     return parse_model(text.str(), path, adjust);

@@ -29,7 +29,7 @@ struct FirmwareAdjust {
     bool check = true;
 };
 
-/// Reads `path`. Throws host::ConfigError ("file:line: key: what") on any bad content, and when the file cannot
+/// Reads `path`. Throws ModelFileError ("file:line: key: what") on any bad content, and when the file cannot
 /// be read.
 SimModel load_model_file(const std::string& path, const FirmwareAdjust& adjust = {});
 

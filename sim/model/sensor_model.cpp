@@ -16,18 +16,30 @@ std::size_t stage_index(Stage s) { return static_cast<std::size_t>(s); }
 
 }  // namespace
 
-SensorModel::SensorModel(const SimModel& model, std::uint64_t seed, double powered_before_boot_s)
-    : adc_(model.adc), powered_before_boot_s_(powered_before_boot_s), mid_counts_(std::ldexp(1.0, model.adc.bits - 1)) {
+ChannelBases base_of(const SimModel& model) {
     const double levels = std::ldexp(1.0, model.adc.bits);
+    ChannelBases base;
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         const ChannelModel& ch = model.channels[i];
-        front_ends_.emplace_back(ch.front_end, model.adc.vref_v);
-        drifts_.emplace_back(ch.drift);
-        const double raw_std_counts = ch.raw_noise_std_unit * front_ends_.back().counts_per_unit(levels);
-        noise_.emplace_back(analog_sigma_for_raw_std_counts(raw_std_counts), Rng(seed, kNoiseStreamBase + i));
-        inputs_unit_[i] = ch.input_unit;
+        const double raw_std_counts = ch.raw_noise_std_unit * FrontEnd(ch.front_end, model.adc.vref_v).counts_per_unit(levels);
+        base[i] = {ch.drift, analog_sigma_for_raw_std_counts(raw_std_counts)};
     }
-    for (const EffectSpec& spec : model.effects) {
+    return base;
+}
+
+SensorModel::SensorModel(const SimModel& model, std::uint64_t seed, double powered_before_boot_s)
+    : SensorModel(model, base_of(model), model.effects, seed, powered_before_boot_s) {}
+
+SensorModel::SensorModel(const SimModel& unit, const ChannelBases& base, const std::vector<EffectSpec>& effects,
+                         std::uint64_t seed, double powered_before_boot_s)
+    : adc_(unit.adc), powered_before_boot_s_(powered_before_boot_s), mid_counts_(std::ldexp(1.0, unit.adc.bits - 1)) {
+    for (std::size_t i = 0; i < kChannelCount; ++i) {
+        front_ends_.emplace_back(unit.channels[i].front_end, unit.adc.vref_v);
+        drifts_.emplace_back(base[i].drift);
+        noise_.emplace_back(base[i].sigma_n_counts, Rng(seed, kNoiseStreamBase + i));
+        inputs_unit_[i] = unit.channels[i].input_unit;
+    }
+    for (const EffectSpec& spec : effects) {
         auto effect = make_effect(spec.name, spec.table, "effects." + spec.name);
         effect->reset(seed);
         // An effect that models no temperature answers NaN at every t, so one instant tells.
@@ -47,7 +59,7 @@ double SensorModel::counts_per_unit(Channel c) const {
     return front_ends_[channel_index(c)].counts_per_unit(std::ldexp(1.0, adc_.params().bits));
 }
 
-Conversion SensorModel::convert(Channel c, double board_t_s) {
+Conversion SensorModel::convert(Channel c, double board_t_s, const ConversionExtras& extras) {
     const std::size_t i = channel_index(c);
     EffectContext ctx;
     ctx.channel = c;
@@ -74,15 +86,18 @@ Conversion SensorModel::convert(Channel c, double board_t_s) {
     for (auto& e : by_stage_[stage_index(Stage::analog)]) apply_in_chain(*e, values, ctx);
 
     // Eq. 1 is the at-rest reading, so the chain adds its distance from mid-scale at the converter input.
-    values[i] = adc_.counts_from_volts(values[i]) + (drifts_[i].at_counts(ctx.t_s) - mid_counts_) +
-                noise_[i].sample_counts();
-    for (auto& e : by_stage_[stage_index(Stage::converter)]) apply_in_chain(*e, values, ctx);
+    const double drift_counts = extras.drift_counts ? *extras.drift_counts : drifts_[i].at_counts(ctx.t_s) - mid_counts_;
+    values[i] = adc_.counts_from_volts(values[i]) + drift_counts + noise_[i].sample_counts() + extras.added_counts;
+    if (extras.quantiser == nullptr)
+        for (auto& e : by_stage_[stage_index(Stage::converter)]) apply_in_chain(*e, values, ctx);
 
     // The converter would read NaN as code 0, a plausible reading on the rail: a broken effect must stop the run.
     if (std::isnan(values[i]))
         throw std::logic_error(std::string("sensor model: ") + kChannelNames[i] + " is NaN at the converter input at t = " +
                                std::to_string(ctx.t_s) + " s (an effect produced it)");
-    return {adc_.convert_counts(values[i]), ctx.t_s};
+    const std::uint16_t code = extras.quantiser ? static_cast<std::uint16_t>((*extras.quantiser)(values[i]))
+                                                : adc_.convert_counts(values[i]);
+    return {code, ctx.t_s};
 }
 
 }  // namespace driftlab::sim

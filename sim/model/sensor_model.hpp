@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -19,29 +20,59 @@
 
 namespace driftlab::sim {
 
+/// One channel's base in the chain: eq. 1 and the white noise before the quantiser.
+struct ChannelBase {
+    DriftParams drift;            ///< eq. 1 [counts, s]
+    double sigma_n_counts = 0.0;  ///< analog white noise before the quantiser [counts]
+};
+using ChannelBases = std::array<ChannelBase, kChannelCount>;
+
+/// The base a model file states: each channel's eq. 1, and the analog sigma whose quantised codes have the file's
+/// raw standard deviation (white_noise.hpp).
+ChannelBases base_of(const SimModel& model);
+
+/// A converter that replaces the model's converter effects and quantiser: the code of a converter input [counts].
+using Quantiser = std::function<int(double input_counts)>;
+
+/// What a caller adds to one conversion beyond the model: gap-eval's truth signals and converters, and the eq. 1
+/// values that many replicates of one model share (board_outputs.hpp).
+struct ConversionExtras {
+    double added_counts = 0.0;              ///< added at the converter input [counts]
+    const double* drift_counts = nullptr;   ///< eq. 1 less mid-scale at this instant [counts]; null: evaluated here
+    const Quantiser* quantiser = nullptr;   ///< replaces converter effects and quantiser; null: the model's
+};
+
 /// One conversion's result.
 struct Conversion {
     std::uint16_t code;  ///< converter output [counts]
     double t_s;          ///< actual instant after timing effects [s since power-on]
 };
 
+/// The one sensor chain: `hil` (native and AVR), the pseudo-terminal board and the gap's replicates all convert
+/// through it, so a model and a seed give one set of codes whichever of them asks.
 class SensorModel {
 public:
     /// Builds the chain for `model` with every random component seeded from `seed` (own substreams). The sensor
     /// was powered `powered_before_boot_s` before the board's clock started (`--warm`).
     SensorModel(const SimModel& model, std::uint64_t seed, double powered_before_boot_s = 0.0);
+    /// The chain of `unit`'s front ends and converter with each channel's base and the effects given instead of
+    /// the unit's own (a model calibrated to a log, host/gap).
+    SensorModel(const SimModel& unit, const ChannelBases& base, const std::vector<EffectSpec>& effects,
+                std::uint64_t seed, double powered_before_boot_s = 0.0);
 
     /// Converts channel `c` at nominal instant `board_t_s` of the board's clock [s since its start]. Timing
     /// effects move that instant by the board's clock error, which runs from the board's start, not the sensor's
     /// power-on; eq. 1 and the other effects then see the sensor's time. A channel's instant never goes before its
     /// previous one. Throws std::logic_error when an effect makes the converter input NaN.
-    Conversion convert(Channel c, double board_t_s);
+    Conversion convert(Channel c, double board_t_s, const ConversionExtras& extras = {});
 
-    /// Analog noise sigma of a channel [counts], as calibrated from its raw standard deviation.
+    /// Analog noise sigma of a channel [counts].
     double analog_sigma_counts(Channel c) const { return noise_[channel_index(c)].sigma_counts(); }
     /// Converter counts per physical unit of a channel [counts per °/s or per g].
     double counts_per_unit(Channel c) const;
     const Adc& adc() const { return adc_; }
+    /// True when a timing effect moves the instants (they then depend on the seed).
+    bool moves_instants() const { return !by_stage_[static_cast<std::size_t>(Stage::timing)].empty(); }
 
 private:
     Adc adc_;

@@ -10,6 +10,7 @@
 #include "gap_fixtures.hpp"
 #include "host/gap/code_density.hpp"
 #include "sim/effects/adc_dnl.hpp"
+#include "sim/model/board_outputs.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -119,12 +120,12 @@ TEST(CodeDensity, AgainstTheSmoothedOutputTheWidthsAreTheConvertersOverTheirMean
         const std::string spec = "dnl_rms_lsb = 0.3\npattern_seed = " + std::to_string(pattern);
         m.effects.push_back({"adc_dnl", toml::parse(spec)});
         LogData log = testing::gyro_log(m, 1500, {}, 100 + static_cast<std::uint64_t>(pattern));
-        SimOutput raw;
-        SimRequest req;
+        sim::Outputs raw;
+        sim::OutputRequest req;
         req.t_s = &log.t_s;
         req.channels = {true, false, false, false};
         req.raw_codes = &raw;
-        const std::vector<double> output = simulate(m, req, 100 + static_cast<std::uint64_t>(pattern))[0];
+        const std::vector<double> output = sim::simulate_outputs(m, req, 100 + static_cast<std::uint64_t>(pattern))[0];
         const TransitionFit fit = fit_transitions(raw[0], output);
         sim::AdcDnlParams truth;
         truth.dnl_rms_lsb = 0.3;

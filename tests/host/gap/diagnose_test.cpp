@@ -18,7 +18,6 @@
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
-#include "host/gap/sim_chain.hpp"
 #include "host/gap/spectral.hpp"
 #include "host/fit/drift_analysis.hpp"
 #include "host/util/units.hpp"
@@ -27,6 +26,7 @@
 #include "sim/effects/adc_dnl.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
+#include "sim/model/board_outputs.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -402,12 +402,12 @@ TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLineari
     o.explain = false;
     const auto raw_mode_log = [](const GapModel& m, std::uint64_t seed) {
         LogData log = testing::gyro_log(m, 1500, {}, seed);
-        SimOutput raw;
-        SimRequest req;
+        sim::Outputs raw;
+        sim::OutputRequest req;
         req.t_s = &log.t_s;
         req.channels = {true, false, false, false};
         req.raw_codes = &raw;
-        log.counts[0] = simulate(m, req, seed)[0];
+        log.counts[0] = sim::simulate_outputs(m, req, seed)[0];
         log.optional_columns["raw_gyro"] = raw[0];
         return log;
     };

@@ -12,9 +12,9 @@
 
 #include "host/gap/diagnose.hpp"
 #include "host/gap/plain_recording.hpp"
-#include "host/gap/sim_chain.hpp"
 #include "host/log/log_data.hpp"
 #include "host/log/numeric_table.hpp"
+#include "sim/model/board_outputs.hpp"
 
 namespace driftlab::host::gap::testing {
 
@@ -54,11 +54,11 @@ inline LogData gyro_log(const GapModel& m, std::size_t samples, const std::vecto
         log.t_s.push_back(static_cast<double>(k + 1) * m.smoothing.sample_period_s);
         log.seq.push_back(k);
     }
-    SimRequest req;
+    sim::OutputRequest req;
     req.t_s = &log.t_s;
     req.channels = {true, false, false, false};
     req.added_counts[0] = added;
-    log.counts[0] = simulate(m, req, seed)[0];
+    log.counts[0] = sim::simulate_outputs(m, req, seed)[0];
     for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
     log.recorded = {true, false, false, false};
     log.metadata.set("sample_period_s", m.smoothing.sample_period_s);

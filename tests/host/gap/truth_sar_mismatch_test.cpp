@@ -7,9 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "host/gap/sim_chain.hpp"
 #include "host/gap/truth.hpp"
+#include "host/gap/gap_model.hpp"
 #include "sim/model/adc.hpp"
+#include "sim/model/board_outputs.hpp"
 #include "sim/model/sim_model.hpp"
 
 namespace driftlab::host::gap {
@@ -17,7 +18,7 @@ namespace {
 
 // Code widths by code density: a fine uniform ramp of inputs over the inner codes; each code's share of the ramp is
 // its width [LSB]. The comparator's noise blurs the edges but keeps each width's mean.
-std::vector<double> measured_widths(const Quantiser& q, double step = 0.002) {
+std::vector<double> measured_widths(const sim::Quantiser& q, double step = 0.002) {
     std::vector<double> count(1024, 0.0);
     for (double x = 0.5 + step / 2; x < 1022.5; x += step) count[static_cast<std::size_t>(q(x))] += step;
     return count;
@@ -35,7 +36,7 @@ double rms_dnl(const std::vector<double>& widths, const std::vector<double>& wei
 
 TEST(SarMismatch, WithoutMismatchItIsTheSimulatorsIdealConverter) {
     const sim::Adc adc(sim::paper_model().adc);
-    const Quantiser q = make_converter_truth("sar_mismatch", 0.0, {}, 5, 5);
+    const sim::Quantiser q = make_converter_truth("sar_mismatch", 0.0, {}, 5, 5);
     for (double x = -3.0; x < 1028.0; x += 0.0625) ASSERT_EQ(q(x), adc.convert_counts(x)) << "input " << x;
 }
 
@@ -78,7 +79,7 @@ TEST(SarMismatch, CodesWithTheSameCarryDepthHaveTheSameWidth) {
 }
 
 TEST(SarMismatch, TheComparatorMakesCodesNearATransitionRandom) {
-    const Quantiser q = make_converter_truth("sar_mismatch", 0.5, {}, 7, 7);
+    const sim::Quantiser q = make_converter_truth("sar_mismatch", 0.5, {}, 7, 7);
     // Find a transition, then convert an input just at it many times: both codes occur.
     double x = 500.0;
     const int below = q(x);
@@ -97,14 +98,14 @@ TEST(SarMismatch, AnIdealQuantiserInTheChainChangesNothing) {
     m.base[0] = {{3.0, 505.0, 400.0}, 1.1};
     std::vector<double> t(300);
     for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1);
-    SimRequest plain;
+    sim::OutputRequest plain;
     plain.t_s = &t;
     plain.channels = {true, false, false, false};
-    SimRequest sar = plain;
+    sim::OutputRequest sar = plain;
     sar.quantiser[0] = make_converter_truth("sar_mismatch", 0.0, {}, 3, 3);
-    EXPECT_EQ(simulate(m, plain, 9)[0], simulate(m, sar, 9)[0]);
+    EXPECT_EQ(sim::simulate_outputs(m, plain, 9)[0], sim::simulate_outputs(m, sar, 9)[0]);
     sar.quantiser[0] = make_converter_truth("sar_mismatch", 0.4, {}, 3, 3);
-    EXPECT_NE(simulate(m, plain, 9)[0], simulate(m, sar, 9)[0]);
+    EXPECT_NE(sim::simulate_outputs(m, plain, 9)[0], sim::simulate_outputs(m, sar, 9)[0]);
 }
 
 TEST(SarMismatch, ASignalGeneratorIsNotAConverterNorTheOtherWayRound) {

@@ -527,7 +527,7 @@ TEST(TruthModeHop, StepsThenPartlyReturnsAtTheDocumentedInstants) {
 // splits the input line at a threshold, the higher codes above it), up to its comparator's noise (0.2 x size rms).
 
 // Code widths by code density over a fine uniform ramp of step `step` [LSB].
-std::vector<double> code_widths(const Quantiser& q, double step) {
+std::vector<double> code_widths(const sim::Quantiser& q, double step) {
     std::vector<double> count(1024, 0.0);
     for (double x = 0.5 + step / 2; x < 1022.5; x += step) count[static_cast<std::size_t>(q(x))] += step;
     return count;
@@ -536,7 +536,7 @@ std::vector<double> code_widths(const Quantiser& q, double step) {
 TEST(TruthSarMismatch, IsMonotoneBeyondItsComparatorsNoise) {
     for (double size : {0.05, 0.5, 3.0}) {
         for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-            const Quantiser q = make_converter_truth("sar_mismatch", size, {}, seed, seed);
+            const sim::Quantiser q = make_converter_truth("sar_mismatch", size, {}, seed, seed);
             // Inputs 10 noise deviations apart: two comparisons at one threshold cross over with probability
             // P(N(0, 2) > 10) ~ 1e-12 per threshold.
             const double dx = 10.0 * 0.2 * size;

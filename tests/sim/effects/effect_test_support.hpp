@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <numbers>
 #include <numeric>
 #include <string>
@@ -32,6 +33,30 @@ inline std::vector<std::vector<double>> run_added(Effect& effect, std::size_t n,
     }
     return out;
 }
+
+// One non-default configuration per effect (also the examples of docs/effects.md).
+inline const std::map<std::string, std::string> kEffectExamples = {
+    {"thermal_second_tc", "c3_dps = 0.2\nc3_g = [0.004, -0.003, 0.01]\nt2_s = 2400.0"},
+    {"ambient_cycle", "waveform = \"square\"\namplitude_k_pp = 1.5\nperiod_s = 1800.0\nlag_s = 400.0\n"
+                      "coupling_dps_per_k = 0.03\ncoupling_g_per_k = [0.001, 0.001, 0.002]"},
+    {"temp_scale_factor", "scale_pct_per_k = [0.03, 0.01, 0.01, 0.02]\nreference_degc = 25.0"},
+    {"flicker", "b_dps = 0.03\nb_g = 0.0005\nf_low_hz = 0.0005\nf_high_hz = 1.0"},
+    {"rate_random_walk", "k_dps_per_sqrt_s = 0.001\nk_g_per_sqrt_s = [2e-5, 2e-5, 3e-5]"},
+    {"gauss_markov", "sigma_dps = 0.05\nsigma_g = 0.001\ntau_s = [300.0, 100.0, 100.0, 150.0]"},
+    {"adc_dnl", "dnl_rms_lsb = 0.15\nmissing_codes = [511]\ncarry_bits = 8\ncarry_dnl_lsb = 0.4\npattern_seed = 7"},
+    {"adc_inl", "a2_lsb = 0.8\na3_lsb = -0.3\na4_lsb = 0.1"},
+    {"supply_coupling", "sensor_ratiometric = [0.0, 1.0, 1.0, 1.0]\nripple_v = 0.01\nripple_hz = 100.0\n"
+                        "drift_v = -0.02\ndrift_tau_s = 900.0"},
+    {"cross_axis", "matrix_pct = [[0.0, 1.2, -0.5], [0.8, 0.0, 2.0], [-1.0, 0.3, 0.0]]"},
+    {"g_sensitivity", "g_dps_per_g = [0.05, 0.05, 0.1]\ng2_dps_per_g2 = [0.0, 0.0, 0.02]"},
+    {"vibration", "tone_hz = [29.0]\ntone_g_z = [0.01]\nrandom_rms_g = [0.002, 0.002, 0.004]\n"
+                  "band_low_hz = 10.0\nband_high_hz = 80.0"},
+    {"mains_alias", "amplitude_v = 0.002\nfrequency_hz = 50.0\nharmonic_ratio = [0.3, 0.1]\n"
+                    "mux_skew_s = [0.0, 0.0001, 0.0002, 0.0003]"},
+    {"clock_jitter", "drift_ppm = 30.0\njitter_s = 2e-6"},
+    {"saturation", "min_dps = -90.0\nmax_dps = 90.0\nmin_g = [-1.0, -1.0, 0.0]\nmax_g = [1.0, 1.0, 2.0]"},
+    {"spikes", "rate_hz = 0.001\ndistribution = \"student_t\"\nscale_counts = 3.0\nstudent_dof = 3"},
+};
 
 /// Effect built from TOML text (the body of its table).
 inline std::unique_ptr<Effect> effect_from(std::string_view name, std::string_view toml_text) {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "host/util/error.hpp"
+#include "sim/sim_error.hpp"
 #include "sim/effects/effect.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/model/model_file.hpp"
@@ -72,7 +72,7 @@ void load_and_run(const std::string& text, std::uint64_t seed, Tally& tally) {
     SimModel model;
     try {
         model = parse_model(text, "m.toml");
-    } catch (const host::ConfigError& e) {
+    } catch (const ModelFileError& e) {
         const std::string what = e.what();
         EXPECT_EQ(what.rfind("m.toml:", 0), 0u) << what << "\n" << text;
         EXPECT_TRUE(what.size() > 7 && std::isdigit(static_cast<unsigned char>(what[7]))) << what << "\n" << text;
@@ -95,10 +95,10 @@ void load_and_run(const std::string& text, std::uint64_t seed, Tally& tally) {
             last_t = r.t_s;
             for (double v : r.value_counts) finite = finite && std::isfinite(v);
         });
-    } catch (const host::UsageError&) {
+    } catch (const ConfigRefused&) {
         ++tally.refused;
         return;
-    } catch (const host::DeviceError&) {
+    } catch (const BoardError&) {
         ++tally.refused;
         return;
     } catch (const std::exception& e) {

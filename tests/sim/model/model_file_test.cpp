@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "host/util/error.hpp"
+#include "sim/sim_error.hpp"
 
 namespace driftlab::sim {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 std::string error_of(const std::string& text) {
     try {
         parse_model(text, "m.toml");
-    } catch (const host::ConfigError& e) {
+    } catch (const ModelFileError& e) {
         return e.what();
     }
     return "no error";
@@ -59,7 +59,7 @@ TEST(ModelFile, AFolderIsNotAModelFile) {
     try {
         load_model_file(DRIFTLAB_MODELS_DIR);
         ADD_FAILURE() << "a folder was loaded as a model";
-    } catch (const host::ConfigError& e) {
+    } catch (const ModelFileError& e) {
         EXPECT_NE(std::string(e.what()).find("is a folder, not a model file"), std::string::npos) << e.what();
     }
 }
@@ -208,7 +208,7 @@ TEST(ModelFile, SyntaxErrorNamesTheLine) {
 }
 
 TEST(ModelFile, MissingFileIsAConfigError) {
-    EXPECT_THROW(load_model_file("/nonexistent/model.toml"), host::ConfigError);
+    EXPECT_THROW(load_model_file("/nonexistent/model.toml"), ModelFileError);
 }
 
 // Every field of two models, so that a written file can be checked to read back as what was written.
