@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/cli/commands.hpp"
+#include "host/io/board_rows.hpp"
 #include "host/io/log_assembler.hpp"
 #include "host/io/pty_board.hpp"
 #include "firmware/core/hal.hpp"
@@ -104,14 +105,6 @@ void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
                  static_cast<unsigned long long>(s.frames_sent), static_cast<unsigned long long>(s.bytes_dropped));
 }
 
-// Log columns beyond the required ones, in the order the rows fill them.
-std::vector<std::string> optional_columns(bool raw) {
-    std::vector<std::string> c = {"tick", "sat_flags", "n_window", "dropped"};
-    if (raw)
-        for (const char* name : kChannelNames) c.push_back(std::string("raw_") + name);
-    return c;
-}
-
 using MetadataPairs = std::vector<std::pair<std::string, std::string>>;
 
 // One log line per record; the writer is opened once the handshake has produced VERSION for the metadata.
@@ -121,19 +114,10 @@ public:
 
     void open(const proto::VersionPayload& v, const proto::ConfigPayload& c) {
         raw_ = c.raw != 0;
-        writer_ = std::make_unique<LogWriter>(path_, io::board_metadata("hil", v, c, extra_), optional_columns(raw_));
+        // hil's receiver leaves out a SAMPLE whose RAW was lost (MissingRaw::drop): no flags column.
+        writer_ = std::make_unique<LogWriter>(path_, io::board_metadata("hil", v, c, extra_), io::board_columns(raw_, false));
     }
-    void write(const sim::HilRecord& r) {
-        LogRow row;
-        row.t_s = r.t_s;
-        row.seq = r.seq;
-        row.counts = r.value_counts;
-        row.optional_values = {static_cast<double>(r.tick), static_cast<double>(r.sat_flags),
-                               static_cast<double>(r.n_window), static_cast<double>(r.dropped)};
-        if (raw_)
-            for (std::uint16_t code : r.raw_counts) row.optional_values.push_back(code);
-        writer_->write_row(row);
-    }
+    void write(const sim::HilRecord& r) { writer_->write_row(io::board_log_row(r, raw_, false)); }
     void close() {
         if (writer_) writer_->close();
     }

@@ -24,7 +24,7 @@
 #include "driftlab/proto/messages.hpp"
 #include "host/io/byte_link.hpp"
 #include "host/io/capture.hpp"
-#include "host/io/seq_tracker.hpp"
+#include "driftlab/receiver/seq_tracker.hpp"
 
 namespace driftlab::host::io {
 
@@ -91,8 +91,8 @@ public:
     /// Drops a frame cut by a reconnect, so its start cannot join bytes of the new connection.
     void forget_partial_frame() { decoder_.reset(); }
 
-    const SeqTracker& sequence() const { return seq_; }
-    SeqTracker& sequence() { return seq_; }
+    const receiver::SeqTracker& sequence() const { return seq_; }
+    receiver::SeqTracker& sequence() { return seq_; }
     const proto::DecoderCounters& decoder_counters() const { return decoder_.counters(); }
     const ClientCounters& counters() const { return counters_; }
 
@@ -107,7 +107,7 @@ private:
     Tap tap_;
     FrameHandler handler_;
     proto::Decoder decoder_;
-    SeqTracker seq_;
+    receiver::SeqTracker seq_;
     ClientCounters counters_;
     std::uint16_t tx_seq_ = 0;
     std::function<bool(const Frame&)> waiting_for_;

@@ -68,10 +68,8 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
         start_log();
     } else if (text == "lost") {
         decoder_.reset();
-        if (pending_sample_) {
-            emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, nullptr);
-            pending_sample_.reset();
-        }
+        if (rows_) rows_->end_of_stream();
+        count_rows();
         if (!holding_) {
             holding_ = true;
             lost_t_us_ = t_us;
@@ -130,7 +128,7 @@ bool LogAssembler::settle_gap(const Stamped& evidence) {
     std::optional<std::uint64_t> ran_on;
     bool short_of_run_on = false;
     if (const auto elapsed = board_ticks_since_newest(evidence.t_us)) {
-        ran_on = ticks_run_on(last_epoch_tick_, uptime, elapsed->first, elapsed->second);
+        ran_on = receiver::ticks_run_on(last_epoch_tick_, uptime, elapsed->first, elapsed->second);
         short_of_run_on = uptime >= last_epoch_tick_ &&
                           static_cast<double>(uptime - last_epoch_tick_) < elapsed->first - elapsed->second;
     }
@@ -180,11 +178,11 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
         if (proto::parse(frame.payload.data(), frame.payload_len, &s)) settle_gap(Stamped{t_us, s.tick});
     }
     ++stats_.frames;
-    const SeqResult seq = seq_.accept(frame.seq);
+    const receiver::SeqResult seq = seq_.accept(frame.seq);
     stats_.lost_frames = seq_.lost();
     stats_.duplicate_frames = seq_.duplicates();
     stats_.reordered_frames = seq_.reordered();
-    if (seq.verdict == SeqVerdict::duplicate) return;
+    if (seq.verdict == receiver::SeqVerdict::duplicate) return;
 
     const std::uint8_t* p = frame.payload.data();
     switch (frame.type) {
@@ -205,28 +203,24 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
             const std::uint64_t tick = ticks_.unwrap(s.tick);
             newest_sample_ = Stamped{t_us, tick};
             if (!epoch_first_sample_) epoch_first_sample_ = newest_sample_;
-            if (!writer_) break;
-            if (pending_sample_) emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, nullptr);
-            pending_sample_.reset();
-            if (config_ && config_->raw) {
-                pending_sample_ = PendingSample{s, seq.unwrapped, tick};
-            } else {
-                emit(s, seq.unwrapped, tick, nullptr);
-            }
+            if (rows_) rows_->sample(s, seq.unwrapped, tick);
             break;
         }
         case proto::MsgType::raw: {
             proto::RawPayload r{};
-            if (!proto::parse(p, frame.payload_len, &r)) break;
-            if (pending_sample_ && pending_sample_->sample.tick == r.tick) {
-                emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, &r);
-                pending_sample_.reset();
-            }
+            if (rows_ && proto::parse(p, frame.payload_len, &r)) rows_->raw(r);
             break;
         }
         default:
             break;
     }
+    count_rows();
+}
+
+void LogAssembler::count_rows() {
+    if (!rows_) return;
+    stats_.stale_samples = rows_->counts().stale_samples;
+    stats_.empty_samples = rows_->counts().empty_samples;
 }
 
 void LogAssembler::start_log() {
@@ -235,59 +229,36 @@ void LogAssembler::start_log() {
         throw DataError(header_value(capture_header_, "capture"), 0,
                         "recording started before the board's VERSION and CONFIG were received");
     }
-    std::vector<std::string> columns = {"tick", "sat_flags", "n_window", "dropped"};
-    if (config_->raw) {
-        for (const char* name : {"raw_gyro", "raw_accel_x", "raw_accel_y", "raw_accel_z", "flags"}) {
-            columns.emplace_back(name);
-        }
-    }
     writer_ = std::make_unique<LogWriter>(log_path_, board_metadata("record", *version_, *config_, capture_header_),
-                                          columns);
+                                          board_columns(config_->raw != 0, true));
+    rows_.emplace(receiver::RowOptions{version_->tick_hz, config_->raw != 0, receiver::MissingRaw::mark},
+                  [this](const receiver::Row& row) { return write(row); });
 }
 
-void LogAssembler::emit(const proto::SamplePayload& sample, std::uint64_t seq, std::uint64_t tick,
-                        const proto::RawPayload* raw) {
-    // No conversion behind it (a POLL right after CONFIG restarted the windows): its zeros are no reading.
-    if (sample.n_window == 0) {
-        ++stats_.empty_samples;
-        return;
-    }
-    const double t_s = static_cast<double>(tick) / static_cast<double>(version_->tick_hz);
-    if (stats_.last_t_s && t_s <= *stats_.last_t_s) {
-        ++stats_.stale_samples;
-        return;
-    }
-    LogRow row;
-    row.t_s = t_s;
-    row.seq = seq;
-    for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) row.counts[ch] = proto::q8_to_counts(sample.value_q8[ch]);
+bool LogAssembler::write(const receiver::Row& r) {
     // A frame can pass its CRC and still carry a value no converter of this resolution makes (a firmware fault):
     // skipped and counted, as the reader would reject the row.
     const auto range = converter_range(version_->adc_bits);
-    if (range && !std::all_of(row.counts.begin(), row.counts.end(), [&](double v) { return range->holds_estimate(v); })) {
+    if (range && !std::all_of(r.value_counts.begin(), r.value_counts.end(), [&](double v) { return range->holds_estimate(v); })) {
         ++stats_.unreachable_samples;
-        return;
+        return false;
     }
-    row.optional_values = {static_cast<double>(tick), static_cast<double>(sample.sat_flags),
-                           static_cast<double>(sample.n_window), static_cast<double>(sample.dropped)};
-    if (config_->raw) {
-        // A RAW frame with a code the converter cannot make is kept out like a lost one (its CRC held; the fault is
-        // the firmware's), so that the log stays readable.
-        if (raw && range && !std::all_of(std::begin(raw->code), std::end(raw->code),
-                                         [&](auto code) { return range->holds_raw_code(static_cast<double>(code)); }))
-            raw = nullptr;
-        for (std::uint8_t ch = 0; ch < kChannelCount; ++ch) {
-            row.optional_values.push_back(raw ? static_cast<double>(raw->code[ch]) : kLostRawCode);
-        }
-        row.optional_values.push_back(raw ? 0.0 : static_cast<double>(kFlagRawMissing));
-        if (!raw) ++stats_.raw_missing;
-    }
-    writer_->write_row(row);
+    receiver::Row row = r;
+    // A RAW frame with a code the converter cannot make is kept out like a lost one (its CRC held; the fault is the
+    // firmware's), so that the log stays readable.
+    if (row.has_raw && range && !std::all_of(row.raw_counts.begin(), row.raw_counts.end(), [&](auto code) {
+            return range->holds_raw_code(static_cast<double>(code));
+        }))
+        row.has_raw = false;
+    const bool raw = config_->raw != 0;
+    if (raw && !row.has_raw) ++stats_.raw_missing;
+    writer_->write_row(board_log_row(row, raw, true));
     ++stats_.rows;
-    if (!stats_.first_t_s) stats_.first_t_s = t_s;
-    stats_.last_t_s = t_s;
-    stats_.last_counts = row.counts;
-    stats_.last_dropped = sample.dropped;
+    if (!stats_.first_t_s) stats_.first_t_s = row.t_s;
+    stats_.last_t_s = row.t_s;
+    stats_.last_counts = row.value_counts;
+    stats_.last_dropped = row.dropped;
+    return true;
 }
 
 void LogAssembler::flush() {
@@ -296,8 +267,8 @@ void LogAssembler::flush() {
 
 void LogAssembler::finish() {
     if (holding_) release_held();
-    if (pending_sample_ && writer_) emit(pending_sample_->sample, pending_sample_->seq, pending_sample_->tick, nullptr);
-    pending_sample_.reset();
+    if (rows_) rows_->end_of_stream();
+    count_rows();
     if (writer_) writer_->close();
 }
 

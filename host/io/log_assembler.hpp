@@ -25,15 +25,14 @@
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
 #include "host/io/board_client.hpp"
+#include "host/io/board_rows.hpp"
 #include "host/io/capture.hpp"
-#include "host/io/seq_tracker.hpp"
-#include "host/io/tick_unwrapper.hpp"
+#include "driftlab/receiver/row_assembler.hpp"
+#include "driftlab/receiver/seq_tracker.hpp"
+#include "driftlab/receiver/tick_unwrapper.hpp"
 #include "host/log/log_writer.hpp"
 
 namespace driftlab::host::io {
-
-/// flags column bit: the RAW frame belonging to this SAMPLE was lost.
-inline constexpr int kFlagRawMissing = 1;
 
 /// What has been assembled so far (the status line and the final summary read it).
 struct AssemblyStats {
@@ -82,23 +81,21 @@ private:
     bool settle_gap(const Stamped& evidence);
     /// Board ticks elapsed from the newest SAMPLE to host time `t_us`, and how far off that may be.
     std::optional<std::pair<double, double>> board_ticks_since_newest(std::uint64_t t_us) const;
-    void emit(const proto::SamplePayload& sample, std::uint64_t seq, std::uint64_t tick, const proto::RawPayload* raw);
+    /// Takes the receiver's counts of samples that made no row into stats_.
+    void count_rows();
+    /// Writes a row of the receiver; false when a value is one no converter makes.
+    bool write(const receiver::Row& row);
     void start_log();
 
     std::string log_path_;
     CaptureHeader capture_header_;
     std::unique_ptr<LogWriter> writer_;
     proto::Decoder decoder_;
-    SeqTracker seq_;
-    TickUnwrapper ticks_;
+    receiver::SeqTracker seq_;
+    receiver::TickUnwrapper ticks_;
     std::optional<proto::VersionPayload> version_;
     std::optional<proto::ConfigPayload> config_;
-    struct PendingSample {
-        proto::SamplePayload sample;
-        std::uint64_t seq;
-        std::uint64_t tick;
-    };
-    std::optional<PendingSample> pending_sample_;  ///< a raw-mode SAMPLE waiting for its RAW
+    std::optional<receiver::RowAssembler> rows_;  ///< from the "start" event on
     struct Stamped {  // host time [us] of something the board sent
         std::uint64_t t_us;
         std::uint64_t tick;  // the board's unwrapped tick (a SAMPLE) or 32-bit uptime (a STATUS)

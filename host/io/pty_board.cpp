@@ -6,13 +6,14 @@
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
-#include "driftlab/proto/q8_counts.hpp"
+#include "driftlab/receiver/row_assembler.hpp"
+#include "driftlab/receiver/seq_tracker.hpp"
+#include "driftlab/receiver/tick_unwrapper.hpp"
 #include "firmware/core/firmware.hpp"
 #include "firmware/core/hal.hpp"
 #include "firmware/port/native/native_board.hpp"
+#include "host/io/board_rows.hpp"
 #include "host/io/pty_bridge.hpp"
-#include "host/io/seq_tracker.hpp"
-#include "host/io/tick_unwrapper.hpp"
 #include "host/log/log_writer.hpp"
 
 namespace driftlab::host::io {
@@ -20,40 +21,32 @@ namespace {
 
 constexpr int kReadWaitMs = 1;
 
-// Decodes the firmware's own output and writes its SAMPLEs: the ground truth of what was sent.
+// Decodes the firmware's own output and writes its SAMPLEs as the receiver makes them rows: the ground truth of what
+// was sent.
 class TruthLog {
 public:
-    explicit TruthLog(const std::string& path) {
+    explicit TruthLog(const std::string& path)
+        : rows_({static_cast<std::uint32_t>(fw::kTickHz), false, receiver::MissingRaw::mark},
+                [this](const receiver::Row& r) { return write(r); }) {
         if (path.empty()) return;
         LogMetadata m;
         m.set("source", std::string("pty-board-truth"));
         m.set("tick_hz", static_cast<std::int64_t>(fw::kTickHz));
-        writer_ = std::make_unique<LogWriter>(path, m, std::vector<std::string>{"tick", "n_window", "dropped"});
+        writer_ = std::make_unique<LogWriter>(path, m, board_columns(false, false));
     }
     void feed(const std::uint8_t* bytes, std::size_t n, PtyBoardSummary& summary) {
         for (std::size_t i = 0; i < n; ++i) {
             if (!decoder_.feed(bytes[i])) continue;
             do {
                 ++summary.frames_sent;
-                const std::uint64_t seq = unwrap_near(decoder_.seq(), last_seq_);
-                last_seq_ = seq;
+                const std::uint64_t seq = seq_.accept(decoder_.seq()).unwrapped;
                 proto::SamplePayload s{};
                 if (decoder_.type() != proto::MsgType::sample ||
                     !proto::parse(decoder_.payload(), decoder_.payload_len(), &s)) {
                     continue;
                 }
                 ++summary.samples_sent;
-                const std::uint64_t tick = ticks_.unwrap(s.tick);
-                const double t_s = static_cast<double>(tick) / fw::kTickHz;
-                if (!writer_ || (last_t_s_ >= 0.0 && t_s <= last_t_s_)) continue;  // a repeated answer
-                LogRow row;
-                row.t_s = t_s;
-                row.seq = seq;
-                for (std::uint8_t c = 0; c < kChannelCount; ++c) row.counts[c] = proto::q8_to_counts(s.value_q8[c]);
-                row.optional_values = {static_cast<double>(tick), static_cast<double>(s.n_window),
-                                       static_cast<double>(s.dropped)};
-                writer_->write_row(row);
-                last_t_s_ = t_s;
+                rows_.sample(s, seq, ticks_.unwrap(s.tick));
             } while (decoder_.next());
         }
     }
@@ -62,11 +55,16 @@ public:
     }
 
 private:
+    bool write(const receiver::Row& r) {
+        if (writer_) writer_->write_row(board_log_row(r, false, false));
+        return true;
+    }
+
     std::unique_ptr<LogWriter> writer_;
     proto::Decoder decoder_;
-    TickUnwrapper ticks_;
-    std::uint64_t last_seq_ = 0;
-    double last_t_s_ = -1.0;
+    receiver::SeqTracker seq_;
+    receiver::TickUnwrapper ticks_;
+    receiver::RowAssembler rows_;
 };
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "driftlab/proto/encoder.hpp"
-#include "driftlab/proto/q8_counts.hpp"
 #include "driftlab/proto/status.hpp"
 #include "sim/sim_error.hpp"
 
@@ -61,9 +60,9 @@ void HostEndpoint::enter(Phase next, double t_s) {
     if (next == Phase::done) send_at_s_.reset();
     // The last output's RAW may still be on the line when a stream run ends; it is awaited until the firmware has
     // acknowledged the stop (a RAW before that ACK is the stream's), and missing only then.
-    if (next == Phase::status || next == Phase::done) {
-        if (pending_) ++counters_.rows_missing_raw;
-        pending_.reset();
+    if ((next == Phase::status || next == Phase::done) && rows_) {
+        rows_->end_of_stream();
+        counters_.rows_missing_raw = rows_->counts().dropped_rows;
     }
 }
 
@@ -120,29 +119,13 @@ void HostEndpoint::receive(double t_s, std::span<const std::uint8_t> bytes) {
     }
 }
 
-std::uint64_t HostEndpoint::unwrap_tick(std::uint32_t tick) {
-    if (!have_tick_) {
-        have_tick_ = true;
-        last_tick_ = tick;
-        return last_tick_;
-    }
-    const auto delta = static_cast<std::uint32_t>(tick - static_cast<std::uint32_t>(last_tick_));
-    // Ticks of later frames are never earlier; a "negative" delta is the same tick seen again (RAW after SAMPLE).
-    if (delta < 0x80000000u) last_tick_ += delta;
-    else last_tick_ -= 0x100000000ull - delta;
-    return last_tick_;
-}
-
 void HostEndpoint::handle_frame(double t_s) {
     ++counters_.frames_received;
-    std::uint64_t seq = decoder_.seq();
-    if (have_seq_) {
-        const auto delta = static_cast<std::uint16_t>(decoder_.seq() - static_cast<std::uint16_t>(counters_.last_seq));
-        seq = counters_.last_seq + delta;
-        if (delta > 1) counters_.frames_lost += delta - 1u;
-    }
-    have_seq_ = true;
-    counters_.last_seq = seq;
+    const receiver::SeqResult accepted = seq_.accept(decoder_.seq());
+    counters_.frames_lost = seq_.lost();
+    counters_.last_seq = seq_.newest();
+    if (accepted.verdict == receiver::SeqVerdict::duplicate) return;
+    const std::uint64_t seq = accepted.unwrapped;
 
     const std::uint8_t* p = decoder_.payload();
     const std::size_t len = decoder_.payload_len();
@@ -173,17 +156,28 @@ void HostEndpoint::handle_frame(double t_s) {
             throw BoardError("CONFIG_GET returned a configuration that differs from the "
                                                       "one it acknowledged");
         if (on_ready_) on_ready_(version_, got);
+        rows_.emplace(receiver::RowOptions{version_.tick_hz, plan_.config.raw != 0, receiver::MissingRaw::drop},
+                      [this](const receiver::Row& row) {
+                          ++counters_.rows;
+                          sink_(row);
+                          return true;
+                      });
         enter(Phase::running, t_s);
         break;
     }
     case proto::MsgType::sample: {
         proto::SamplePayload s{};
-        if (phase_ == Phase::running && proto::parse(p, len, &s)) handle_sample(s, seq);
+        if (phase_ == Phase::running && proto::parse(p, len, &s)) {
+            rows_->sample(s, seq, ticks_.unwrap(s.tick));
+            counters_.samples_received = rows_->counts().samples;
+            counters_.empty_samples = rows_->counts().empty_samples;
+            counters_.rows_missing_raw = rows_->counts().dropped_rows;
+        }
         break;
     }
     case proto::MsgType::raw: {
         proto::RawPayload r{};
-        if ((phase_ == Phase::running || phase_ == Phase::stop_stream) && proto::parse(p, len, &r)) handle_raw(r, seq);
+        if ((phase_ == Phase::running || phase_ == Phase::stop_stream) && proto::parse(p, len, &r)) rows_->raw(r);
         break;
     }
     case proto::MsgType::status:
@@ -191,41 +185,6 @@ void HostEndpoint::handle_frame(double t_s) {
         break;
     default: break;
     }
-}
-
-void HostEndpoint::handle_sample(const proto::SamplePayload& s, std::uint64_t seq) {
-    ++counters_.samples_received;
-    // An empty window's 0 is no reading (a POLL before any conversion, e.g. after a firmware restart): a row of it
-    // would read as 0 counts.
-    if (s.n_window == 0) {
-        ++counters_.empty_samples;
-        return;
-    }
-    HilRecord r;
-    r.tick = unwrap_tick(s.tick);
-    r.t_s = static_cast<double>(r.tick) / static_cast<double>(version_.tick_hz);
-    r.seq = seq;
-    for (std::size_t c = 0; c < kChannelCount; ++c) r.value_counts[c] = proto::q8_to_counts(s.value_q8[c]);
-    r.sat_flags = s.sat_flags;
-    r.n_window = s.n_window;
-    r.dropped = s.dropped;
-    if (plan_.config.raw == 0) {
-        ++counters_.rows;
-        sink_(r);
-        return;
-    }
-    if (pending_) ++counters_.rows_missing_raw;
-    pending_ = r;
-}
-
-void HostEndpoint::handle_raw(const proto::RawPayload& raw, std::uint64_t seq) {
-    // A RAW belongs to the SAMPLE just before it (seq - 1, same tick); a lone RAW whose SAMPLE was lost is dropped.
-    if (!pending_ || pending_->seq + 1 != seq || pending_->tick != unwrap_tick(raw.tick)) return;
-    pending_->has_raw = true;
-    for (std::size_t c = 0; c < kChannelCount; ++c) pending_->raw_counts[c] = raw.code[c];
-    ++counters_.rows;
-    sink_(*pending_);
-    pending_.reset();
 }
 
 }  // namespace driftlab::sim

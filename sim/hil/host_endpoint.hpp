@@ -16,6 +16,9 @@
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
+#include "driftlab/receiver/row_assembler.hpp"
+#include "driftlab/receiver/seq_tracker.hpp"
+#include "driftlab/receiver/tick_unwrapper.hpp"
 #include "sim/hil/hil_record.hpp"
 
 namespace driftlab::sim {
@@ -67,11 +70,8 @@ public:
 
 private:
     void handle_frame(double t_s);
-    void handle_sample(const proto::SamplePayload& s, std::uint64_t seq);
-    void handle_raw(const proto::RawPayload& r, std::uint64_t seq);
     void request(double t_s, std::vector<std::vector<std::uint8_t>>& out);
     void enter(Phase next, double t_s);
-    std::uint64_t unwrap_tick(std::uint32_t tick);
     double period_s() const { return plan_.config.output_period_ms / 1000.0; }
 
     HostPlan plan_;
@@ -87,10 +87,9 @@ private:
     std::uint64_t poll_count_ = 0;
     double run_start_s_ = 0.0;  // configuration verified: polls at run_start + k · period
     double run_end_s_ = 0.0;
-    bool have_seq_ = false;
-    bool have_tick_ = false;
-    std::uint64_t last_tick_ = 0;
-    std::optional<HilRecord> pending_;  // raw mode: SAMPLE waiting for its RAW
+    receiver::SeqTracker seq_;
+    receiver::TickUnwrapper ticks_;
+    std::optional<receiver::RowAssembler> rows_;  // from the verified configuration on
     proto::VersionPayload version_{};
     proto::StatusPayload status_{};
     HostCounters counters_;

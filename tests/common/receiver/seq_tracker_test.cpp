@@ -1,9 +1,9 @@
 // SeqTracker: unwrapping across the 16-bit wrap and exact lost/late/duplicate accounting.
-#include "host/io/seq_tracker.hpp"
+#include "driftlab/receiver/seq_tracker.hpp"
 
 #include <gtest/gtest.h>
 
-using namespace driftlab::host::io;
+using namespace driftlab::receiver;
 
 TEST(SeqTracker, UnwrapsAcrossTheWrapWithoutCountingLosses) {
     SeqTracker t;

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <optional>
 
-namespace driftlab::host::io {
+namespace driftlab::receiver {
 
 class TickUnwrapper {
 public:
@@ -64,4 +64,4 @@ inline std::optional<std::uint64_t> ticks_run_on(std::uint32_t last, std::uint32
     return static_cast<std::uint64_t>(run_on);
 }
 
-}  // namespace driftlab::host::io
+}  // namespace driftlab::receiver

@@ -1,13 +1,13 @@
 // TickUnwrapper and ticks_run_on: the 32-bit firmware tick made 64-bit, and whether a STATUS after a link gap shows
 // a firmware that ran on (its uptime is where the host's clock says the old count has got to, wraps included).
-#include "host/io/tick_unwrapper.hpp"
+#include "driftlab/receiver/tick_unwrapper.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-using driftlab::host::io::TickUnwrapper;
-using driftlab::host::io::ticks_run_on;
+using driftlab::receiver::TickUnwrapper;
+using driftlab::receiver::ticks_run_on;
 
 namespace {
 constexpr std::uint64_t kWrap = std::uint64_t{1} << 32;

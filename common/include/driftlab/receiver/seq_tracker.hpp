@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <optional>
 
-namespace driftlab::host::io {
+namespace driftlab::receiver {
 
 enum class SeqVerdict : std::uint8_t {
     fresh,      ///< newer than every frame before (possibly after a jump: lost frames)
@@ -59,4 +59,4 @@ private:
 /// The 64-bit number nearest to `reference` whose low 16 bits are `low` (never below zero).
 std::uint64_t unwrap_near(std::uint16_t low, std::uint64_t reference);
 
-}  // namespace driftlab::host::io
+}  // namespace driftlab::receiver

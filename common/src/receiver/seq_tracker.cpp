@@ -1,7 +1,7 @@
 // SeqTracker: sequence unwrapping and lost/duplicate/reordered accounting (seq_tracker.hpp).
-#include "host/io/seq_tracker.hpp"
+#include "driftlab/receiver/seq_tracker.hpp"
 
-namespace driftlab::host::io {
+namespace driftlab::receiver {
 
 std::uint64_t unwrap_near(std::uint16_t low, std::uint64_t reference) {
     const auto delta = static_cast<std::int16_t>(static_cast<std::uint16_t>(low - static_cast<std::uint16_t>(reference)));
@@ -62,4 +62,4 @@ SeqResult SeqTracker::accept(std::uint16_t seq) {
     return {n, SeqVerdict::late};
 }
 
-}  // namespace driftlab::host::io
+}  // namespace driftlab::receiver
