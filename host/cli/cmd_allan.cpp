@@ -15,7 +15,7 @@
 #include "host/log/log_window.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/report/json_out.hpp"
-#include "host/stats/allan_pipeline.hpp"
+#include "host/fit/allan_pipeline.hpp"
 #include "host/stats/lone_values.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
@@ -89,7 +89,7 @@ json terms_json(const stats::NoiseTermFit& t, const stats::SampleUnit& u) {
     return j;
 }
 
-json version_json(const stats::AllanCurves& v, const stats::SampleUnit& u) {
+json version_json(const fit::AllanCurves& v, const stats::SampleUnit& u) {
     json j = curve_json(v.curves.front(), "adev");
     if (const auto* m = v.find(stats::Deviation::mdev)) j["mdev"] = curve_json(*m, "dev");
     if (const auto* h = v.find(stats::Deviation::ohdev)) j["hdev"] = curve_json(*h, "dev");
@@ -127,7 +127,7 @@ void print_skipped_note(const stats::DeviationCurve& c, double longest_gap_free_
                 c.tau_s[first], 100.0 * share(most), c.tau_s[most], longest_gap_free_s);
 }
 
-void print_version(const char* title, const stats::AllanCurves& v, const stats::SampleUnit& u, double longest_gap_free_s) {
+void print_version(const char* title, const fit::AllanCurves& v, const stats::SampleUnit& u, double longest_gap_free_s) {
     std::printf("  %s\n", title);
     for (const auto& c : v.curves) {
         std::printf("    %-6s %12s %10s %5s %12s %12s %12s\n", std::string(stats::deviation_name(c.curve.type)).c_str(),
@@ -153,13 +153,13 @@ void print_version(const char* title, const stats::AllanCurves& v, const stats::
     for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) print_named("kalibr ", nv);
 }
 
-report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, const stats::SampleUnit& u) {
+report::Plot allan_plot(const std::string& name, const fit::AllanResult& r, const stats::SampleUnit& u) {
     report::Plot p;
     p.title = "Allan deviation: " + name;
     p.x_label = "tau [s]";
     p.y_label = "overlapping ADEV [" + u.name + "]";
     p.log_x = p.log_y = true;
-    const stats::AllanCurves& main = r.primary();
+    const fit::AllanCurves& main = r.primary();
     const stats::AnalysedCurve& c = main.curves.front();
     report::PlotSeries band{r.drift_removed ? "drift removed (68 % CI)" : "ADEV (68 % CI)", c.curve.tau_s, c.curve.dev,
                             c.ci_low, c.ci_high, report::SeriesStyle::error_bars, false, "#1f77b4", 1.5};
@@ -186,7 +186,7 @@ report::Plot allan_plot(const std::string& name, const stats::AllanResult& r, co
 }
 
 void run(const AllanCommandOptions& o) {
-    stats::AllanRequest req;
+    fit::AllanRequest req;
     req.deviations = parse_deviations(o.deviation);
     try {
         req.grid.grid = stats::parse_tau_grid(o.grid);
@@ -252,16 +252,16 @@ void run(const AllanCommandOptions& o) {
         if (const auto disagreement = stats::tau0_disagreement(s.t_s, tau0))
             throw UsageError(*disagreement + (log ? "; leave --tau0 out to use the rows' spacing"
                                                   : "; give their spacing, or a table without a time column"));
-        stats::AllanResult r;
+        fit::AllanResult r;
         try {
-            r = stats::analyse_allan(s.t_s, s.values, tau0, req);
+            r = fit::analyse_allan(s.t_s, s.values, tau0, req);
         } catch (const std::invalid_argument& e) {
             throw DataError(o.path, 0, "series '" + s.name + "': " + e.what());
         }
         const auto unit = units.for_column(s.name);
         const stats::SampleUnit u =
             s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(unit ? unit->name : "unit");
-        const std::optional<std::string> packing = stats::packing_caveat(r, r.primary().curves.front());
+        const std::optional<std::string> packing = fit::packing_caveat(r, r.primary().curves.front());
         const std::optional<std::string> lone = stats::lone_values_warning(s.t_s, s.values, fit::code_of(s));
         if (o.json) {
             json c = version_json(r.primary(), u);

@@ -9,9 +9,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/util/error.hpp"
-#ifdef DRIFTLAB_HAVE_SIM
 #include "sim/sim_error.hpp"
-#endif
 
 namespace {
 
@@ -83,14 +81,12 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : driftlab::host::kUsageExitCode;
     } catch (const driftlab::host::Error& e) {
         return report_error(e, e.exit_code());
-#ifdef DRIFTLAB_HAVE_SIM
     } catch (const driftlab::sim::ModelFileError& e) {
         return report_error(e, driftlab::host::ConfigError::kExitCode);
     } catch (const driftlab::sim::BoardError& e) {
         return report_error(e, driftlab::host::DeviceError::kExitCode);
     } catch (const driftlab::sim::ConfigRefused& e) {
         return report_error(e, driftlab::host::kUsageExitCode);
-#endif
     } catch (const std::exception& e) {
         flush_output_so_far();
         std::fprintf(stderr, "driftlab: internal error: %s\n", e.what());

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "host/io/capture.hpp"
+#include "host/log/capture_file.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/util/channel_name.hpp"
 #include "host/util/error.hpp"
@@ -119,7 +119,7 @@ OpenedSource open_source(const std::string& path) {
     in.clear();
     in.seekg(0);
     // Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number").
-    if (io::starts_as_capture(in))
+    if (starts_as_capture(in))
         throw DataError(path, 1, "a raw capture from `driftlab record`, not a log: rebuild its log with `driftlab decode " +
                                      path + " -o LOG.csv` and analyse that");
     in.clear();

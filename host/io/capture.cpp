@@ -12,6 +12,7 @@
 #include <limits>
 #include <string_view>
 
+#include "host/log/capture_file.hpp"
 #include "host/log/log_metadata.hpp"
 #include "host/util/error.hpp"
 #include "host/util/input_file.hpp"
@@ -27,7 +28,6 @@ bool known_kind(std::uint8_t kind) {
 }
 
 constexpr char kMagic[] = "driftlab-capture: 1";  // the format version is the magic line's number
-constexpr std::string_view kMagicKey = "driftlab-capture: ";
 
 void put_le(std::string& out, std::uint64_t v, int bytes) {
     for (int i = 0; i < bytes; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
@@ -100,8 +100,8 @@ CaptureReader::CaptureReader(const std::string& path) : path_(path) {
         pos_ = static_cast<std::size_t>(nl - data_.begin()) + 1;
         ++line;
         if (line == 1) {
-            if (text.rfind(kMagicKey, 0) == 0 && text != kMagic)
-                throw DataError(path, 1, "capture format version '" + text.substr(kMagicKey.size()) +
+            if (text.rfind(kCaptureMagicKey, 0) == 0 && text != kMagic)
+                throw DataError(path, 1, "capture format version '" + text.substr(kCaptureMagicKey.size()) +
                                              "' is not supported (this reader knows 1)");
             if (text != kMagic)
                 throw DataError(path, 1, "not a driftlab capture (expected '" + std::string(kMagic) + "')");
@@ -200,13 +200,6 @@ std::optional<CaptureRecord> CaptureReader::next() {
     damaged_.push_back({pos_, resume - pos_});
     pos_ = resume;
     return next();
-}
-
-std::string default_capture_path(const std::string& log_path) { return log_path + ".cap"; }
-
-bool starts_as_capture(std::istream& in) {
-    std::string first;
-    return std::getline(in, first) && first.rfind(kMagicKey, 0) == 0;
 }
 
 }  // namespace driftlab::host::io

@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+#include "host/log/capture_file.hpp"
+
 namespace driftlab::host::io {
 
 enum class CaptureKind : std::uint8_t { rx = 'R', tx = 'T', event = 'E' };
@@ -103,12 +105,5 @@ private:
     std::vector<Damage> damaged_;
     std::vector<std::uint64_t> retimed_;
 };
-
-/// Where `record` writes the capture of the log at `log_path` unless given --capture: beside it, LOG.csv.cap.
-std::string default_capture_path(const std::string& log_path);
-
-/// True when `in` opens with a capture's magic line, of any format version: analysis commands name `decode` for it
-/// rather than failing on its header as a table's. Reads the first line from the stream's position.
-bool starts_as_capture(std::istream& in);
 
 }  // namespace driftlab::host::io

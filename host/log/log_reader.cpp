@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "host/io/capture.hpp"
+#include "host/log/capture_file.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/input_file.hpp"
@@ -156,11 +156,11 @@ private:
         const std::filesystem::path folder = std::filesystem::path(log_.source_name).parent_path();
         std::vector<std::string> places;
         if (!named.empty()) places.push_back((folder / std::filesystem::path(named).filename()).string());
-        const std::string by_default = io::default_capture_path(log_.source_name);
+        const std::string by_default = default_capture_path(log_.source_name);
         if (places.empty() || places.front() != by_default) places.push_back(by_default);  // record's own name: once
         for (const std::string& capture : places) {
             std::ifstream file(capture, std::ios::binary);  // a capture by its magic line, not any file of that name
-            if (file && io::starts_as_capture(file))
+            if (file && starts_as_capture(file))
                 return ", or rebuild the whole log from its capture: `driftlab decode " + capture + " -o LOG.csv`";
         }
         if (named.empty()) return "";

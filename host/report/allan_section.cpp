@@ -5,7 +5,7 @@
 
 #include "host/report/html.hpp"
 #include "host/stats/allan_analysis.hpp"
-#include "host/stats/allan_pipeline.hpp"
+#include "host/fit/allan_pipeline.hpp"
 #include "host/stats/noise_terms.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
@@ -21,10 +21,10 @@ constexpr double kNotableGapShare = 0.2;
 
 // OADEV through the Allan pipeline, so late or missing samples become gaps on the tau0 grid instead of being
 // spliced together. The drift is the report's own eq. 1 fit, removed by the caller.
-stats::AllanResult oadev(const std::vector<double>& t_s, const std::vector<double>& rate, double tau0_s) {
-    stats::AllanRequest request;
+fit::AllanResult oadev(const std::vector<double>& t_s, const std::vector<double>& rate, double tau0_s) {
+    fit::AllanRequest request;
     request.remove_drift = false;
-    return stats::analyse_allan(t_s, rate, tau0_s, request);
+    return fit::analyse_allan(t_s, rate, tau0_s, request);
 }
 
 PlotSeries curve_series(const stats::AnalysedCurve& c, const std::string& title, const std::string& color) {
@@ -124,10 +124,10 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         }
         // Not the fit's median spacing: rows in bursts would leave most of a grid at the median empty.
         const double tau0_s = stats::grid_period_s(a->data.t_s);
-        const stats::AllanResult raw_result = oadev(a->data.t_s, a->data.values, tau0_s);
-        const stats::AllanCurves& raw_curves = raw_result.raw;
-        const stats::AllanResult residual_result = oadev(a->data.t_s, a->fit.residual, tau0_s);
-        const stats::AllanCurves& residual_curves = residual_result.raw;
+        const fit::AllanResult raw_result = oadev(a->data.t_s, a->data.values, tau0_s);
+        const fit::AllanCurves& raw_curves = raw_result.raw;
+        const fit::AllanResult residual_result = oadev(a->data.t_s, a->fit.residual, tau0_s);
+        const fit::AllanCurves& residual_curves = residual_result.raw;
         const double gap_share = static_cast<double>(raw_result.gap_samples) / static_cast<double>(raw_result.samples);
         if (gap_share > kNotableGapShare) {
             warnings += "<div class=\"warn\"><b>" + name + ":</b> " + fixed(100.0 * gap_share, 0) + " % of the " +
@@ -138,7 +138,7 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         }
         const stats::AnalysedCurve& raw = *raw_curves.find(stats::Deviation::oadev);
         const stats::AnalysedCurve& residual = *residual_curves.find(stats::Deviation::oadev);
-        if (const auto packing = stats::packing_caveat(residual_result, residual))
+        if (const auto packing = fit::packing_caveat(residual_result, residual))
             warnings += "<div class=\"warn\"><b>" + name + ":</b> " + html_escape(*packing) + ".</div>\n";
         if (residual.curve.dev.empty()) continue;
         std::size_t best = 0;

@@ -1,5 +1,5 @@
 // Grid placement with explicit gaps and the drift-removed pipeline on a simulated turn-on transient.
-#include "host/stats/allan_pipeline.hpp"
+#include "host/fit/allan_pipeline.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,13 +9,13 @@
 
 #include "host/stats/uniform_grid.hpp"
 
-namespace driftlab::host::stats {
+namespace driftlab::host::fit {
 namespace {
 
 TEST(UniformGrid, MissingTimesBecomeNanSlots) {
     const std::vector<double> t = {10.0, 10.1, 10.2, 10.5, 10.6};
     const std::vector<double> v = {1, 2, 3, 4, 5};
-    const UniformSeries g = to_uniform_grid(t, v, 0.1);
+    const stats::UniformSeries g = stats::to_uniform_grid(t, v, 0.1);
     ASSERT_EQ(g.values.size(), 7u);
     EXPECT_EQ(g.missing, 2u);
     EXPECT_TRUE(std::isnan(g.values[3]));
@@ -30,7 +30,7 @@ TEST(UniformGrid, JitterSmallerThanHalfAPeriodKeepsEverySample) {
         t.push_back(0.01 * k + 0.003 * std::sin(k));
         v.push_back(k);
     }
-    const UniformSeries g = to_uniform_grid(t, v, median_spacing_s(t));
+    const stats::UniformSeries g = stats::to_uniform_grid(t, v, stats::median_spacing_s(t));
     EXPECT_EQ(g.missing, 0u);
     EXPECT_EQ(g.values.size(), 1000u);
 }
@@ -42,7 +42,7 @@ TEST(UniformGrid, BurstyTimestampsNeverDropASample) {
         t.push_back(0.02 * (k / 2) + 0.001 * (k % 2));
         v.push_back(k);
     }
-    const UniformSeries g = to_uniform_grid(t, v, 0.01);
+    const stats::UniformSeries g = stats::to_uniform_grid(t, v, 0.01);
     EXPECT_EQ(g.missing, 0u);
     ASSERT_EQ(g.values.size(), 100u);
     EXPECT_EQ(g.values[99], 99.0);
@@ -55,12 +55,12 @@ TEST(UniformGrid, RowsFasterThanTau0AreCountedAsPacked) {
     for (int k = 0; k < 200; ++k) t.push_back(0.5 * k);
     for (int k = 0; k < 100; ++k) t.push_back(100.0 + k);
     y.assign(t.size(), 1.0);
-    const UniformSeries packed = to_uniform_grid(t, y, 1.0);
+    const stats::UniformSeries packed = stats::to_uniform_grid(t, y, 1.0);
     EXPECT_EQ(packed.packed, 296u);     // fast rows 4..199 (k - k/2 >= 2), then every 1 s row behind them
     EXPECT_EQ(packed.most_late, 100u);  // the 1 s rows sit 100 slots late
     std::vector<double> jittered(300);
     for (std::size_t k = 0; k < jittered.size(); ++k) jittered[k] = static_cast<double>(k) + ((k % 3) - 1.0) * 0.3;
-    EXPECT_EQ(to_uniform_grid(jittered, std::vector<double>(300, 1.0), 1.0).packed, 0u);
+    EXPECT_EQ(stats::to_uniform_grid(jittered, std::vector<double>(300, 1.0), 1.0).packed, 0u);
 }
 
 // Without a given period: rows in bursts (5 rows 2 ms apart every 50 ms, as the MPU6050 recording's) take the mean,
@@ -69,19 +69,19 @@ TEST(UniformGrid, RowsFasterThanTau0AreCountedAsPacked) {
 TEST(UniformGrid, GridPeriodIsTheMeanOnlyForRowsInBursts) {
     std::vector<double> bursts;
     for (int k = 0; k < 1000; ++k) bursts.push_back(0.05 * (k / 5) + 0.002 * (k % 5));
-    EXPECT_NEAR(median_spacing_s(bursts), 0.002, 1e-12);
-    EXPECT_NEAR(grid_period_s(bursts), mean_spacing_s(bursts), 1e-15);
-    EXPECT_NEAR(grid_period_s(bursts), 0.01, 1e-4);
+    EXPECT_NEAR(stats::median_spacing_s(bursts), 0.002, 1e-12);
+    EXPECT_NEAR(stats::grid_period_s(bursts), stats::mean_spacing_s(bursts), 1e-15);
+    EXPECT_NEAR(stats::grid_period_s(bursts), 0.01, 1e-4);
     std::vector<double> reconnect;
     for (int k = 0; k < 1000; ++k) reconnect.push_back(k < 500 ? k : k + 430.0);
-    EXPECT_NEAR(mean_spacing_s(reconnect), 1.43, 1e-3);
-    EXPECT_EQ(grid_period_s(reconnect), 1.0);
+    EXPECT_NEAR(stats::mean_spacing_s(reconnect), 1.43, 1e-3);
+    EXPECT_EQ(stats::grid_period_s(reconnect), 1.0);
 }
 
 // Packing is worth a caveat once it moves samples by more than 5 % of the averaging time at the curve's minimum,
 // from where the curve reads correlated noise; not at 5 % itself, and never without packing.
 TEST(AllanPipeline, PackingIsACaveatPastATwentiethOfTheMinimumsTau) {
-    AnalysedCurve curve;
+    stats::AnalysedCurve curve;
     curve.curve.tau_s = {1.0, 10.0, 100.0, 1000.0};
     curve.curve.dev = {4.0, 2.0, 1.0, 3.0};
     AllanResult r;
@@ -117,14 +117,14 @@ TEST(AllanPipeline, SteadyBurstsGetNoPackingCaveatARateChangeDoes) {
     }
     AllanRequest req;
     req.remove_drift = false;
-    const AllanResult bursts = analyse_allan(t, y, grid_period_s(t), req);
+    const AllanResult bursts = analyse_allan(t, y, stats::grid_period_s(t), req);
     EXPECT_GT(bursts.packed_samples, 3000u);
     EXPECT_FALSE(packing_caveat(bursts, bursts.primary().curves.front()).has_value());
 
     t.clear();
     for (int k = 0; k < 2000; ++k) t.push_back(0.5 * k);
     for (int k = 0; k < 4000; ++k) t.push_back(1000.0 + k);
-    const AllanResult changed = analyse_allan(t, y, grid_period_s(t), req);
+    const AllanResult changed = analyse_allan(t, y, stats::grid_period_s(t), req);
     EXPECT_DOUBLE_EQ(changed.tau0_s, 1.0);
     EXPECT_EQ(changed.packed_most_slots, 1000u);
     const std::optional<std::string> caveat = packing_caveat(changed, changed.primary().curves.front());
@@ -135,7 +135,7 @@ TEST(AllanPipeline, SteadyBurstsGetNoPackingCaveatARateChangeDoes) {
 TEST(UniformGrid, RejectsAGridFarFinerThanTheSamples) {
     const std::vector<double> t = {0.0, 1000.0};
     const std::vector<double> v = {0.0, 0.0};
-    EXPECT_THROW(to_uniform_grid(t, v, 1e-3), std::invalid_argument);
+    EXPECT_THROW(stats::to_uniform_grid(t, v, 1e-3), std::invalid_argument);
 }
 
 TEST(AllanPipeline, RemovingTheTurnOnDriftRestoresTheWhiteNoiseCurve) {
@@ -152,16 +152,16 @@ TEST(AllanPipeline, RemovingTheTurnOnDriftRestoresTheWhiteNoiseCurve) {
         y.push_back(500.0 + 40.0 * (1.0 - std::exp(-ts / 300.0)) + g(rng));
     }
     AllanRequest req;
-    req.deviations = {Deviation::oadev, Deviation::mdev};
+    req.deviations = {stats::Deviation::oadev, stats::Deviation::mdev};
     req.confidence = 0.999;  // every tau inside its interval with high probability (one fixed seed)
     const AllanResult r = analyse_allan(t, y, tau0, req);
     ASSERT_TRUE(r.drift_removed.has_value()) << r.drift_status_name();
     ASSERT_TRUE(r.drift.has_value());
     EXPECT_NEAR(r.drift->t_s / 300.0, 1.0, 0.05);
-    const AnalysedCurve& clean = r.drift_removed->curves.front();
-    const AnalysedCurve& raw = r.raw.curves.front();
-    ASSERT_EQ(clean.curve.type, Deviation::oadev);
-    ASSERT_NE(r.drift_removed->find(Deviation::mdev), nullptr);
+    const stats::AnalysedCurve& clean = r.drift_removed->curves.front();
+    const stats::AnalysedCurve& raw = r.raw.curves.front();
+    ASSERT_EQ(clean.curve.type, stats::Deviation::oadev);
+    ASSERT_NE(r.drift_removed->find(stats::Deviation::mdev), nullptr);
     for (std::size_t i = 0; i < clean.curve.m.size(); ++i) {
         const double expected = sigma / std::sqrt(static_cast<double>(clean.curve.m[i]));
         EXPECT_GT(expected, clean.ci_low[i]) << clean.curve.m[i];
@@ -187,7 +187,7 @@ TEST(AllanPipeline, AnExhaustedDriftFitReadsInWordsOnATerminalAndAsANameInJson) 
     AllanRequest req;
     req.drift_fit.max_function_evaluations = 2;
     const AllanResult stopped = analyse_allan(t, y, 1.0, req);
-    ASSERT_EQ(stopped.drift_fit_status, fit::FitStatus::iteration_limit);
+    ASSERT_EQ(stopped.drift_fit_status, FitStatus::iteration_limit);
     EXPECT_FALSE(stopped.drift_removed.has_value());
     EXPECT_EQ(stopped.drift_status_words(), "not converged (iteration limit)");
     EXPECT_EQ(stopped.drift_status_name(), "iteration_limit");
@@ -219,7 +219,7 @@ TEST(AllanPipeline, TimeGapIsCountedAndNotBridged) {
     const AllanResult r = analyse_allan(t, y, 1.0, req);
     EXPECT_EQ(r.samples, 5000u);
     EXPECT_EQ(r.gap_samples, 100u);
-    const AnalysedCurve& c = r.raw.curves.front();
+    const stats::AnalysedCurve& c = r.raw.curves.front();
     ASSERT_FALSE(c.curve.m.empty());
     // m = 1: a gap of 100 rate samples removes 100 + 2m - 1 = 101 overlapping terms (the 5000-sample record
     // has 5001 - 2 = 4999).
@@ -263,4 +263,4 @@ TEST(AllanPipeline, GapsThatLeaveNoTermAnywhereAreRefused) {
 }
 
 }  // namespace
-}  // namespace driftlab::host::stats
+}  // namespace driftlab::host::fit

@@ -12,23 +12,23 @@
 #include "host/stats/allan_analysis.hpp"
 #include "host/stats/noise_terms.hpp"
 
-namespace driftlab::host::stats {
+namespace driftlab::host::fit {
 
 struct AllanRequest {
-    InputKind kind = InputKind::rate;
-    TauGridOptions grid;
-    std::vector<Deviation> deviations = {Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
+    stats::InputKind kind = stats::InputKind::rate;
+    stats::TauGridOptions grid;
+    std::vector<stats::Deviation> deviations = {stats::Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
     bool remove_drift = true;   ///< fit eq. 1 and also analyse the residual (rate input only)
     std::string kept_drift_status = "not requested";  ///< drift_not_fitted when remove_drift is false: the caller's reason
-    fit::FitOptions drift_fit;  ///< the eq. 1 fit's options
-    double confidence = kOneSigmaConfidence;
+    FitOptions drift_fit;  ///< the eq. 1 fit's options
+    double confidence = stats::kOneSigmaConfidence;
 };
 
 /// The curves of one version of the series (raw or drift-removed); `curves` in request order, oadev first.
 struct AllanCurves {
-    std::vector<AnalysedCurve> curves;
-    NoiseTermFit terms;  ///< fitted to the oadev curve
-    const AnalysedCurve* find(Deviation d) const;
+    std::vector<stats::AnalysedCurve> curves;
+    stats::NoiseTermFit terms;  ///< fitted to the oadev curve
+    const stats::AnalysedCurve* find(stats::Deviation d) const;
 };
 
 struct AllanResult {
@@ -40,12 +40,12 @@ struct AllanResult {
     double longest_gap_free_s = 0.0;    ///< time the longest gap-free stretch of the grid spans: no term is longer
     AllanCurves raw;
     std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
-    std::optional<fit::DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]
-    std::optional<fit::FitStatus> drift_fit_status;  ///< the eq. 1 fit's status, when it ran
+    std::optional<DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]
+    std::optional<FitStatus> drift_fit_status;  ///< the eq. 1 fit's status, when it ran
     std::string drift_not_fitted;                    ///< else why not (not requested, phase input, the fit's error)
     /// JSON's drift_status: the fit's status as fit --json spells it (iteration_limit), else drift_not_fitted.
     std::string drift_status_name() const;
-    /// The same for a terminal, in the words of fit's table (fit::fit_status_words: "not converged (iteration limit)").
+    /// The same for a terminal, in the words of fit's table (fit_status_words: "not converged (iteration limit)").
     std::string drift_status_words() const;
     /// The curves the result is read from: drift removed when it was, else raw.
     const AllanCurves& primary() const { return drift_removed ? *drift_removed : raw; }
@@ -63,11 +63,11 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
 /// off (period_agrees), and nothing is said: a steady burst reader (the MPU6050 recording's gyro: 0.55 s against a
 /// minimum at 82 s) stays below, a record that changes its rate part-way (every later row moved by what the fast
 /// stretch gained) does not. Nothing either without packing or without a curve.
-std::optional<std::string> packing_caveat(const AllanResult& r, const AnalysedCurve& curve);
+std::optional<std::string> packing_caveat(const AllanResult& r, const stats::AnalysedCurve& curve);
 
 /// The one place the turn-on drift enters the Allan analysis: fits eq. 1 to (t_s, values) and sets `out`'s drift
 /// (none when the fit fails or does not converge), drift_fit_status and, for a fit that threw, drift_not_fitted.
 void fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
-                       const fit::FitOptions& options, AllanResult& out);
+                       const FitOptions& options, AllanResult& out);
 
-}  // namespace driftlab::host::stats
+}  // namespace driftlab::host::fit
