@@ -63,11 +63,12 @@ void BM_AvrFig3_4000s_1Hz(benchmark::State& state) { stream_recording(state, {10
 void BM_AvrFig2_1000x100ms(benchmark::State& state) { stream_recording(state, {100, 25, 25, 0, 1, 0}, 100.0); }
 
 void print_budget(const CycleBudget& b) {
-    std::printf("config %u ms / %u conv: period %u ticks = %.0f conversions/s (all channels), load %.1f %%, "
-                "dropped %u, tx_overflow %u, stack %u of %u bytes%s\n",
-                b.config.output_period_ms, b.config.conversions_per_output, b.conversion_period_ticks,
-                b.conversions_per_s, 100.0 * b.cpu_load, b.dropped, b.tx_overflow, b.stack_high_water_bytes,
-                b.stack_budget_bytes, b.accepted ? "" : " (CONFIG_SET refused)");
+    std::printf(
+        "config %u ms / %u conv: period %u ticks = %.0f conversions/s (all channels), load %.1f %%, "
+        "dropped %u, tx_overflow %u, stack %u of %u bytes%s\n",
+        b.config.output_period_ms, b.config.conversions_per_output, b.conversion_period_ticks, b.conversions_per_s,
+        100.0 * b.cpu_load, b.dropped, b.tx_overflow, b.stack_high_water_bytes, b.stack_budget_bytes,
+        b.accepted ? "" : " (CONFIG_SET refused)");
     for (const FunctionCycles& f : b.functions) {
         std::printf("  %-17s calls %8llu  mean %7.1f  max %6llu cycles\n", f.label.c_str(),
                     static_cast<unsigned long long>(f.calls), f.mean_cycles(),

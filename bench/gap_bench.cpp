@@ -38,7 +38,8 @@ LogData paper_log(const LogShape& shape, bool planted) {
     req.t_s = &log.t_s;
     if (planted) {
         req.added_counts[0].resize(log.t_s.size());
-        for (std::size_t k = 0; k < log.t_s.size(); ++k) req.added_counts[0][k] = 2.0 * -std::expm1(-log.t_s[k] / 2000.0);
+        for (std::size_t k = 0; k < log.t_s.size(); ++k)
+            req.added_counts[0][k] = 2.0 * -std::expm1(-log.t_s[k] / 2000.0);
     }
     log.counts = sim::simulate_outputs(m, req, 42);
     log.metadata.set("sample_period_s", shape.period_s);

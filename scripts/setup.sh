@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   # native build and tests
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config clang-format
   libgtest-dev libgmock-dev libbenchmark-dev
   # host libraries
   libeigen3-dev libboost-math-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libnlopt-dev

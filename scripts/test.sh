@@ -4,6 +4,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
+# Every C++ source file as .clang-format says (column limit 120; firmware/ and common/ indent by two).
+mapfile -t sources < <(find common firmware sim host tests bench \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' -o -name '*.c' \) | sort)
+clang-format --dry-run --Werror "${sources[@]}"
+echo "format: ${#sources[@]} source files as .clang-format says"
 jobs=$(nproc)
 cmake --preset native >/dev/null
 cmake --build --preset native -j "$jobs"

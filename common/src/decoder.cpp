@@ -50,16 +50,12 @@ void Decoder::release() {
 bool Decoder::scan() {
   while (checked_ < fill_) {
     switch (check_next_byte()) {
-      case Verdict::pass:
-        ++checked_;
-        break;
-      case Verdict::complete:
-        ready_len_ = frame_len_;
-        saturating_add(&counters_.frames_ok, 1);
-        return true;
-      case Verdict::reject:
-        drop_candidate();
-        break;
+    case Verdict::pass: ++checked_; break;
+    case Verdict::complete:
+      ready_len_ = frame_len_;
+      saturating_add(&counters_.frames_ok, 1);
+      return true;
+    case Verdict::reject: drop_candidate(); break;
     }
   }
   return false;
@@ -92,35 +88,33 @@ Decoder::Verdict Decoder::check_next_byte() {
 Decoder::Verdict Decoder::check_header_byte(uint8_t i) {
   const uint8_t byte = buf_[i];
   switch (i) {
-    case kOffsetSync0:
-      return byte == kSync0 ? Verdict::pass : Verdict::reject;
-    case kOffsetSync1:
-      return byte == kSync1 ? Verdict::pass : Verdict::reject;
-    case kOffsetVersion:
-      if (byte != kProtocolVersion) {
-        saturating_add(&counters_.bad_version, 1);
-        return Verdict::reject;
-      }
-      crc_ = crc16_ibm3740_update(kCrc16Ibm3740Init, byte);
-      return Verdict::pass;
-    case kOffsetType: {
-      MsgSpec spec{};
-      if (!find_spec(byte, &spec)) {
-        saturating_add(&counters_.unknown_type, 1);
-        return Verdict::reject;
-      }
-      seed_ = spec.crc_seed;
-      frame_len_ = static_cast<uint8_t>(proto::frame_size(spec.payload_len));
-      break;
+  case kOffsetSync0: return byte == kSync0 ? Verdict::pass : Verdict::reject;
+  case kOffsetSync1: return byte == kSync1 ? Verdict::pass : Verdict::reject;
+  case kOffsetVersion:
+    if (byte != kProtocolVersion) {
+      saturating_add(&counters_.bad_version, 1);
+      return Verdict::reject;
     }
-    case kOffsetLen:
-      if (proto::frame_size(byte) != frame_len_) {
-        saturating_add(&counters_.bad_length, 1);
-        return Verdict::reject;
-      }
-      break;
-    default:  // the two seq bytes: covered by the CRC, no check of their own
-      break;
+    crc_ = crc16_ibm3740_update(kCrc16Ibm3740Init, byte);
+    return Verdict::pass;
+  case kOffsetType: {
+    MsgSpec spec{};
+    if (!find_spec(byte, &spec)) {
+      saturating_add(&counters_.unknown_type, 1);
+      return Verdict::reject;
+    }
+    seed_ = spec.crc_seed;
+    frame_len_ = static_cast<uint8_t>(proto::frame_size(spec.payload_len));
+    break;
+  }
+  case kOffsetLen:
+    if (proto::frame_size(byte) != frame_len_) {
+      saturating_add(&counters_.bad_length, 1);
+      return Verdict::reject;
+    }
+    break;
+  default:  // the two seq bytes: covered by the CRC, no check of their own
+    break;
   }
   crc_ = crc16_ibm3740_update(crc_, byte);
   return Verdict::pass;

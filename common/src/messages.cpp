@@ -198,7 +198,8 @@ bool parse(const uint8_t* in, size_t in_size, StatusPayload* out) {
 }
 
 const char* config_field_name(uint8_t field) {
-  static const char* const kNames[] = {"output_period_ms", "conversions_per_output", "window", "fit_order", "mode", "raw"};
+  static const char* const kNames[] = {
+      "output_period_ms", "conversions_per_output", "window", "fit_order", "mode", "raw"};
   return field < sizeof kNames / sizeof kNames[0] ? kNames[field] : nullptr;
 }
 

@@ -6,20 +6,13 @@ namespace proto {
 
 const char* status_name(Status status) {
   switch (status) {
-    case Status::ok:
-      return "ok";
-    case Status::bad_length:
-      return "bad_length";
-    case Status::unknown_type:
-      return "unknown_type";
-    case Status::out_of_range:
-      return "out_of_range";
-    case Status::bad_version:
-      return "bad_version";
-    case Status::not_allowed:
-      return "not_allowed";
-    case Status::busy:
-      return "busy";
+  case Status::ok: return "ok";
+  case Status::bad_length: return "bad_length";
+  case Status::unknown_type: return "unknown_type";
+  case Status::out_of_range: return "out_of_range";
+  case Status::bad_version: return "bad_version";
+  case Status::not_allowed: return "not_allowed";
+  case Status::busy: return "busy";
   }
   return nullptr;
 }

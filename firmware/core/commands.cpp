@@ -51,23 +51,19 @@ CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uin
     return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
   }
   switch (static_cast<proto::MsgType>(type_id)) {
-    case proto::MsgType::hello:
-      return reply(Reply::version);
-    case proto::MsgType::config_get:
-      return reply(Reply::config);
-    case proto::MsgType::config_set:
-      return decide_config_set(type_id, seq, payload, payload_len);
-    case proto::MsgType::poll:
-      // A streaming board answers on its output grid only: an extra SAMPLE would make the log's spacing irregular.
-      if (mode == proto::OutputMode::stream) {
-        return nak(type_id, seq, proto::Status::not_allowed, proto::kNakFieldNone);
-      }
-      return reply(Reply::sample);
-    case proto::MsgType::status_get:
-      return reply(Reply::status);
-    default:
-      // Every host-to-firmware type is listed above; a new one in the table must be added here.
-      return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);
+  case proto::MsgType::hello: return reply(Reply::version);
+  case proto::MsgType::config_get: return reply(Reply::config);
+  case proto::MsgType::config_set: return decide_config_set(type_id, seq, payload, payload_len);
+  case proto::MsgType::poll:
+    // A streaming board answers on its output grid only: an extra SAMPLE would make the log's spacing irregular.
+    if (mode == proto::OutputMode::stream) {
+      return nak(type_id, seq, proto::Status::not_allowed, proto::kNakFieldNone);
+    }
+    return reply(Reply::sample);
+  case proto::MsgType::status_get: return reply(Reply::status);
+  default:
+    // Every host-to-firmware type is listed above; a new one in the table must be added here.
+    return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);
   }
 }
 

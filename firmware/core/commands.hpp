@@ -24,9 +24,9 @@ enum class Reply : uint8_t {
 
 struct CommandOutcome {
   Reply reply;
-  Config config;            ///< the validated new configuration, meaningful for Reply::ack
-  proto::AckPayload ack;    ///< meaningful for Reply::ack
-  proto::NakPayload nak;    ///< meaningful for Reply::nak
+  Config config;          ///< the validated new configuration, meaningful for Reply::ack
+  proto::AckPayload ack;  ///< meaningful for Reply::ack
+  proto::NakPayload nak;  ///< meaningful for Reply::nak
 };
 
 /// Decides the answer to a frame of type `type_id` and sequence `seq` carrying `payload_len` bytes while the

@@ -126,25 +126,15 @@ void Firmware::handle_frame() {
   const CommandOutcome outcome =
       decide(decoder_.type_id(), decoder_.seq(), decoder_.payload(), decoder_.payload_len(), config_.mode);
   switch (outcome.reply) {
-    case Reply::version:
-      send_version();
-      break;
-    case Reply::config:
-      send_config();
-      break;
-    case Reply::sample:
-      send_sample();
-      break;
-    case Reply::status:
-      send_status();
-      break;
-    case Reply::ack:
-      apply(outcome.config);
-      send_ack(outcome.ack);
-      break;
-    case Reply::nak:
-      send_nak(outcome.nak);
-      break;
+  case Reply::version: send_version(); break;
+  case Reply::config: send_config(); break;
+  case Reply::sample: send_sample(); break;
+  case Reply::status: send_status(); break;
+  case Reply::ack:
+    apply(outcome.config);
+    send_ack(outcome.ack);
+    break;
+  case Reply::nak: send_nak(outcome.nak); break;
   }
 }
 

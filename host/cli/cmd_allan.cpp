@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
+#include "host/fit/allan_pipeline.hpp"
 #include "host/fit/series.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/log/log_window.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/report/json_out.hpp"
-#include "host/fit/allan_pipeline.hpp"
 #include "host/stats/lone_values.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
@@ -36,11 +36,11 @@ struct AllanCommandOptions {
     int per_decade = 10;
     std::string deviation = "oadev";
     bool keep_drift = false;
-    bool remove_drift = false;          ///< plain rate files: fit and remove eq. 1 as for logs
-    bool drop_cut_line = false;         ///< logs: a cut last line is dropped (and noted), not refused
-    double from_s = -INFINITY;          ///< --from/--to: rows kept, from_s <= t_s <= to_s [s since power-on]
+    bool remove_drift = false;   ///< plain rate files: fit and remove eq. 1 as for logs
+    bool drop_cut_line = false;  ///< logs: a cut last line is dropped (and noted), not refused
+    double from_s = -INFINITY;   ///< --from/--to: rows kept, from_s <= t_s <= to_s [s since power-on]
     double to_s = INFINITY;
-    std::vector<TimeWindow> excluded;   ///< --exclude: rows left out, gap slots on the grid
+    std::vector<TimeWindow> excluded;  ///< --exclude: rows left out, gap slots on the grid
     bool json = false;
     std::string plot_dir;
 };
@@ -71,7 +71,8 @@ json terms_json(const stats::NoiseTermFit& t, const stats::SampleUnit& u) {
     if (!t.ok) return nullptr;
     const std::string& U = u.name;
     const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", "", "/sqrt(s)", "/s"};
-    json j = {{"unit", U}, {"model", "AVAR = 3Q^2/tau^2 + N^2/tau + (2 ln2/pi) B^2 + K^2 tau/3 + R^2 tau^2/2"},
+    json j = {{"unit", U},
+              {"model", "AVAR = 3Q^2/tau^2 + N^2/tau + (2 ln2/pi) B^2 + K^2 tau/3 + R^2 tau^2/2"},
               {"bias_instability_factor", stats::kBiasInstabilityFactor}};
     for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
         // A term pinned at 0 keeps its value 0 for readers of `value`; the null error and the bound say it is
@@ -84,7 +85,8 @@ json terms_json(const stats::NoiseTermFit& t, const stats::SampleUnit& u) {
     }
     // An unresolved term's NamedValue::value is NaN: null here, never a 0 to paste into a filter's configuration.
     json phys = json::object();
-    for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit)) phys[nv.key] = report::json_number(nv.value);
+    for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit))
+        phys[nv.key] = report::json_number(nv.value);
     j["physical"] = phys;
     return j;
 }
@@ -95,7 +97,8 @@ json version_json(const fit::AllanCurves& v, const stats::SampleUnit& u) {
     if (const auto* h = v.find(stats::Deviation::ohdev)) j["hdev"] = curve_json(*h, "dev");
     j["terms"] = terms_json(v.terms, u);
     json k = json::object();
-    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) k[nv.key] = report::json_number(nv.value);
+    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit))
+        k[nv.key] = report::json_number(nv.value);
     j["kalibr"] = k.empty() ? json(nullptr) : k;
     return j;
 }
@@ -122,12 +125,14 @@ void print_skipped_note(const stats::DeviationCurve& c, double longest_gap_free_
     std::size_t most = first;
     for (std::size_t i = first; i < c.m.size(); ++i)
         if (share(i) > share(most)) most = i;
-    std::printf("    note: gaps skip more than 20 %% of the terms from tau = %.5g s on (%.0f %% at tau = %.5g s); the longest "
-                "gap-free stretch is %.5g s, and a term spans 2 tau (3 tau for mdev and hdev)\n",
-                c.tau_s[first], 100.0 * share(most), c.tau_s[most], longest_gap_free_s);
+    std::printf(
+        "    note: gaps skip more than 20 %% of the terms from tau = %.5g s on (%.0f %% at tau = %.5g s); the longest "
+        "gap-free stretch is %.5g s, and a term spans 2 tau (3 tau for mdev and hdev)\n",
+        c.tau_s[first], 100.0 * share(most), c.tau_s[most], longest_gap_free_s);
 }
 
-void print_version(const char* title, const fit::AllanCurves& v, const stats::SampleUnit& u, double longest_gap_free_s) {
+void print_version(const char* title, const fit::AllanCurves& v, const stats::SampleUnit& u,
+                   double longest_gap_free_s) {
     std::printf("  %s\n", title);
     for (const auto& c : v.curves) {
         std::printf("    %-6s %12s %10s %5s %12s %12s %12s\n", std::string(stats::deviation_name(c.curve.type)).c_str(),
@@ -140,11 +145,13 @@ void print_version(const char* title, const fit::AllanCurves& v, const stats::Sa
     }
     if (!v.terms.ok) return;
     const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", " (ADEV floor = 0.664 B)", "/sqrt(s)", "/s"};
-    const char* bound_units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", ", the ADEV minimum / 0.664", "/sqrt(s)", "/s"};
+    const char* bound_units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", ", the ADEV minimum / 0.664", "/sqrt(s)",
+                                                       "/s"};
     std::printf("    IEEE 952 terms [%s]:", u.name.c_str());
     for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
         if (v.terms.at_bound[k])
-            std::printf(" %s not resolved (<= %.4g%s)", stats::kNoiseTermSymbols[k], v.terms.upper_bound[k], bound_units[k]);
+            std::printf(" %s not resolved (<= %.4g%s)", stats::kNoiseTermSymbols[k], v.terms.upper_bound[k],
+                        bound_units[k]);
         else
             std::printf(" %s = %.4g%s", stats::kNoiseTermSymbols[k], v.terms.value[k], units[k]);
         std::printf("%s", k + 1 < stats::kNoiseTermCount ? "," : "\n");
@@ -161,25 +168,53 @@ report::Plot allan_plot(const std::string& name, const fit::AllanResult& r, cons
     p.log_x = p.log_y = true;
     const fit::AllanCurves& main = r.primary();
     const stats::AnalysedCurve& c = main.curves.front();
-    report::PlotSeries band{r.drift_removed ? "drift removed (68 % CI)" : "ADEV (68 % CI)", c.curve.tau_s, c.curve.dev,
-                            c.ci_low, c.ci_high, report::SeriesStyle::error_bars, false, "#1f77b4", 1.5};
+    report::PlotSeries band{r.drift_removed ? "drift removed (68 % CI)" : "ADEV (68 % CI)",
+                            c.curve.tau_s,
+                            c.curve.dev,
+                            c.ci_low,
+                            c.ci_high,
+                            report::SeriesStyle::error_bars,
+                            false,
+                            "#1f77b4",
+                            1.5};
     p.series.push_back(band);
     if (r.drift_removed) {
         const auto& raw = r.raw.curves.front();
-        p.series.push_back({"raw (with drift)", raw.curve.tau_s, raw.curve.dev, {}, {}, report::SeriesStyle::lines, false,
-                            "#7f7f7f", 1.5});
+        p.series.push_back({"raw (with drift)",
+                            raw.curve.tau_s,
+                            raw.curve.dev,
+                            {},
+                            {},
+                            report::SeriesStyle::lines,
+                            false,
+                            "#7f7f7f",
+                            1.5});
     }
     if (main.terms.ok) {
-        p.series.push_back({"IEEE 952 fit", c.curve.tau_s, main.terms.model_adev, {}, {}, report::SeriesStyle::lines,
-                            false, "#d62728", 2.0});
+        p.series.push_back({"IEEE 952 fit",
+                            c.curve.tau_s,
+                            main.terms.model_adev,
+                            {},
+                            {},
+                            report::SeriesStyle::lines,
+                            false,
+                            "#d62728",
+                            2.0});
         for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
             if (main.terms.value[k] <= 0.0) continue;
             std::array<double, stats::kNoiseTermCount> only{};
             only[k] = main.terms.value[k];
             std::vector<double> y;
             for (double t : c.curve.tau_s) y.push_back(std::sqrt(stats::noise_term_avar(only, t)));
-            p.series.push_back({std::string(stats::kNoiseTermSymbols[k]) + " term", c.curve.tau_s, y, {}, {},
-                                report::SeriesStyle::lines, true, "", 1.0});
+            p.series.push_back({std::string(stats::kNoiseTermSymbols[k]) + " term",
+                                c.curve.tau_s,
+                                y,
+                                {},
+                                {},
+                                report::SeriesStyle::lines,
+                                true,
+                                "",
+                                1.0});
         }
     }
     return p;
@@ -202,15 +237,18 @@ void run(const AllanCommandOptions& o) {
     if (names.size() == 1 && names[0] == "all") names.clear();
     std::vector<fit::Series> series;
     if (log) {
-        if (!o.kind.empty() && o.kind != "rate") throw UsageError("--kind: a canonical log holds rate samples (counts)");
-        if (!o.units.empty()) throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
+        if (!o.kind.empty() && o.kind != "rate")
+            throw UsageError("--kind: a canonical log holds rate samples (counts)");
+        if (!o.units.empty())
+            throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
         const LogData data = parse_log(source.in, o.path, read);
         print_note(dropped_cut_line_note(data), o.json);
         series = fit::series_from_log(data, names);
     } else {
         if (o.kind.empty() || o.tau0_s <= 0.0) {
-            throw UsageError("a plain numeric file needs --kind rate|phase and --tau0 SECONDS (the input kind is "
-                             "never guessed)");
+            throw UsageError(
+                "a plain numeric file needs --kind rate|phase and --tau0 SECONDS (the input kind is "
+                "never guessed)");
         }
         req.kind = o.kind == "rate" ? stats::InputKind::rate : stats::InputKind::phase;
         if (o.remove_drift && req.kind != stats::InputKind::rate)
@@ -223,7 +261,8 @@ void run(const AllanCommandOptions& o) {
         series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
     const std::vector<std::string> selection =
-        series.empty() ? std::vector<std::string>{} : fit::selection_notes(series.front().t_s, o.from_s, o.to_s, o.excluded);
+        series.empty() ? std::vector<std::string>{}
+                       : fit::selection_notes(series.front().t_s, o.from_s, o.to_s, o.excluded);
     for (const std::string& note : selection) print_note(note, o.json);
     for (fit::Series& s : series) {
         fit::Series kept = fit::rows_kept(s, o.from_s, o.to_s, o.excluded);
@@ -238,8 +277,11 @@ void run(const AllanCommandOptions& o) {
     for (const fit::Series& s : series) columns.push_back(s.name);
     stats::refuse_unknown_columns(units, columns, o.path);
 
-    json out = {{"file", o.path}, {"kind", req.kind == stats::InputKind::rate ? "rate" : "phase"},
-                {"grid", o.grid}, {"confidence", req.confidence}, {"channels", json::object()}};
+    json out = {{"file", o.path},
+                {"kind", req.kind == stats::InputKind::rate ? "rate" : "phase"},
+                {"grid", o.grid},
+                {"confidence", req.confidence},
+                {"channels", json::object()}};
     for (const fit::Series& s : series) {
         // The report's rule, so `allan` and the report's Allan section give a log the same tau0: at the median, rows
         // in bursts had left 80 % of the grid gaps and ended the curve at 16 ms (the MPU6050 recording).
@@ -280,8 +322,9 @@ void run(const AllanCommandOptions& o) {
             if (r.drift_removed) c["raw"] = version_json(r.raw, u);
             out["channels"][s.name] = c;
         } else {
-            std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(), s.name.c_str(),
-                        tau0, r.samples, r.gap_samples, r.drift_removed ? "removed (eq. 1)" : r.drift_status_words().c_str());
+            std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(),
+                        s.name.c_str(), tau0, r.samples, r.gap_samples,
+                        r.drift_removed ? "removed (eq. 1)" : r.drift_status_words().c_str());
             if (lone) std::printf("  warning: %s\n", lone->c_str());
             if (packing) std::printf("  warning: %s\n", packing->c_str());
             if (r.drift_removed) print_version("drift removed", *r.drift_removed, u, r.longest_gap_free_s);
@@ -296,12 +339,14 @@ void run(const AllanCommandOptions& o) {
 
 void register_allan(CLI::App& app) {
     auto o = std::make_shared<AllanCommandOptions>();
-    CLI::App* cmd = app.add_subcommand("allan", "Allan deviation (overlapping, modified, Hadamard) with confidence "
-                                                "intervals, noise types and IEEE 952 terms");
+    CLI::App* cmd = app.add_subcommand("allan",
+                                       "Allan deviation (overlapping, modified, Hadamard) with confidence "
+                                       "intervals, noise types and IEEE 952 terms");
     cmd->add_option("file", o->path, "Canonical log, or a plain numeric file (then --kind and --tau0)")
         ->required()
         ->check(non_empty_path());
-    cmd->add_option("--channel", o->channels, "Channels (log) or columns (plain file): NAME[,NAME] or all")->delimiter(',');
+    cmd->add_option("--channel", o->channels, "Channels (log) or columns (plain file): NAME[,NAME] or all")
+        ->delimiter(',');
     cmd->add_option("--kind", o->kind, "Plain files: rate (rate / fractional-frequency samples) or phase (integrated)")
         ->check(CLI::Validator(
             [](std::string& kind) {
@@ -315,17 +360,22 @@ void register_allan(CLI::App& app) {
     add_unit_option(cmd, o->units, true);
     add_drop_cut_line_flag(cmd, o->drop_cut_line);
     add_time_range_options(cmd, o->from_s, o->to_s);
-    add_exclude_option(cmd, o->excluded,
-                       "a corrupt row or a disturbance; its rows become gap slots on the tau grid, which the terms skip");
-    cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")->capture_default_str();
+    add_exclude_option(
+        cmd, o->excluded,
+        "a corrupt row or a disturbance; its rows become gap slots on the tau grid, which the terms skip");
+    cmd->add_option("--grid", o->grid, "Tau grid: octave, log, all (every m; slow for long records) or stable32")
+        ->capture_default_str();
     // A whole number: the grid is 10^(k / per_decade), which puts every power of ten on it. 1000 is more than the
     // distinct m of the first three decades; --grid all is every m. CLI11 had refused 2.5 as a failed conversion.
     cmd->add_option("--per-decade", o->per_decade, "Taus per decade for --grid log, a whole number (default 10)")
         ->check(whole_number_in(1, 1000));
-    cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")->capture_default_str();
-    auto* keep = cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
-    cmd->add_flag("--remove-drift", o->remove_drift,
-                  "Plain --kind rate files: fit and remove the turn-on drift (eq. 1) first, as for logs (the default there)")
+    cmd->add_option("--deviation", o->deviation, "oadev, mdev, hdev (overlapping Hadamard) or all")
+        ->capture_default_str();
+    auto* keep =
+        cmd->add_flag("--keep-drift", o->keep_drift, "Logs: do not fit and remove the turn-on drift (eq. 1) first");
+    cmd->add_flag(
+           "--remove-drift", o->remove_drift,
+           "Plain --kind rate files: fit and remove the turn-on drift (eq. 1) first, as for logs (the default there)")
         ->excludes(keep);
     cmd->add_flag("--json", o->json,
                   "Print JSON (keys: channels.<name>.{tau,adev,ci_low,ci_high,noise,n,mdev,hdev,terms,kalibr,raw})");

@@ -41,7 +41,8 @@ public:
         if (seen_ == 0) return;
         const std::size_t named = std::min(records_.size(), kNamed);
         std::string where;
-        for (std::size_t i = 0; i < named; ++i) where += (where.empty() ? "" : ", ") + std::to_string(records_[i].offset);
+        for (std::size_t i = 0; i < named; ++i)
+            where += (where.empty() ? "" : ", ") + std::to_string(records_[i].offset);
         const bool one = seen_ == 1;
         std::fprintf(stderr, "driftlab: warning: %s: %u %s CRC check and %s as lost (in the %s at byte %s %s%s)\n",
                      capture.c_str(), static_cast<unsigned>(seen_), one ? "frame failed its" : "frames failed their",
@@ -115,9 +116,11 @@ bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& a
         } else if (rec->kind == io::CaptureKind::event) {
             const bool rescued = rec->offset == rescued_start;
             if (rescued)
-                std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: event '%s' read as the recording's start "
-                                     "(one bit from 'start'; the capture holds no other)\n",
-                             o.capture.c_str(), static_cast<unsigned long long>(rec->offset), printable(rec->text()).c_str());
+                std::fprintf(stderr,
+                             "driftlab: warning: %s: byte offset %llu: event '%s' read as the recording's start "
+                             "(one bit from 'start'; the capture holds no other)\n",
+                             o.capture.c_str(), static_cast<unsigned long long>(rec->offset),
+                             printable(rec->text()).c_str());
             try {
                 assembler.on_event(rec->t_us, rescued ? "start" : rec->text());
             } catch (const DataError& e) {
@@ -156,8 +159,11 @@ nlohmann::json summary_json(const DecodeOptions& o, const io::CaptureReader& rea
     const io::AssemblyStats& s = assembler.stats();
     const proto::DecoderCounters& d = assembler.decoder_counters();
     nlohmann::json damaged = nlohmann::json::array();
-    for (const auto& stretch : reader.damaged()) damaged.push_back({{"offset", stretch.offset}, {"bytes", stretch.bytes}});
-    const auto offset_or_null = [](const std::optional<std::uint64_t>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
+    for (const auto& stretch : reader.damaged())
+        damaged.push_back({{"offset", stretch.offset}, {"bytes", stretch.bytes}});
+    const auto offset_or_null = [](const std::optional<std::uint64_t>& v) {
+        return v ? nlohmann::json(*v) : nlohmann::json();
+    };
     return {{"capture", o.capture},
             {"log", o.output},
             {"rows", s.rows},
@@ -170,7 +176,9 @@ nlohmann::json summary_json(const DecodeOptions& o, const io::CaptureReader& rea
             {"firmware_restarts", s.firmware_restarts},
             {"rows_missing_raw", s.raw_missing},
             {"skipped_samples",
-             {{"repeated", s.stale_samples}, {"beyond_converter", s.unreachable_samples}, {"empty_window", s.empty_samples}}},
+             {{"repeated", s.stale_samples},
+              {"beyond_converter", s.unreachable_samples},
+              {"empty_window", s.empty_samples}}},
             {"crc_errors", d.bad_crc},
             {"bad_length", d.bad_length},
             {"resync_bytes", d.resync_bytes},
@@ -183,7 +191,8 @@ nlohmann::json summary_json(const DecodeOptions& o, const io::CaptureReader& rea
 
 void run_decode(const DecodeOptions& o) {
     // Two documents cannot share one stream.
-    if (o.output == "-" && o.json) throw UsageError("--json: the log goes to standard output (-o -); write it to a file");
+    if (o.output == "-" && o.json)
+        throw UsageError("--json: the log goes to standard output (-o -); write it to a file");
     refuse_writing_over_input(o.output, "-o", o.capture, "capture");
     // The recorded log usually sits beside its capture: `decode run.csv.cap -o run.csv` of a damaged capture had
     // replaced an intact recording with fewer rows.
@@ -203,24 +212,28 @@ void run_decode(const DecodeOptions& o) {
         started = feed(o, *reader, *assembler, rescued_start, *crc_failures);
     }
     if (!started) {
-        throw DataError(o.capture, 0, "the capture holds no recording start (the recorder stopped during the "
-                                      "handshake), so there is no log to rebuild");
+        throw DataError(o.capture, 0,
+                        "the capture holds no recording start (the recorder stopped during the "
+                        "handshake), so there is no log to rebuild");
     }
     assembler->finish();
     folders.keep();
     for (const auto& d : reader->damaged())
-        std::fprintf(stderr, "driftlab: warning: %s: byte offsets %llu..%llu: damaged, %llu bytes skipped to the next whole "
-                             "records (frames in them count as lost)\n",
+        std::fprintf(stderr,
+                     "driftlab: warning: %s: byte offsets %llu..%llu: damaged, %llu bytes skipped to the next whole "
+                     "records (frames in them count as lost)\n",
                      o.capture.c_str(), static_cast<unsigned long long>(d.offset),
                      static_cast<unsigned long long>(d.offset + d.bytes), static_cast<unsigned long long>(d.bytes));
     for (const std::uint64_t offset : reader->retimed())
-        std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: a record's time is damaged (it is after the next "
-                             "record's); read at the previous record's time\n",
+        std::fprintf(stderr,
+                     "driftlab: warning: %s: byte offset %llu: a record's time is damaged (it is after the next "
+                     "record's); read at the previous record's time\n",
                      o.capture.c_str(), static_cast<unsigned long long>(offset));
     crc_failures->warn(o.capture);
     if (reader->truncated_at()) {
-        std::fprintf(stderr, "driftlab: warning: %s: byte offset %llu: last record cut (recorder killed while "
-                             "writing); decoded up to it\n",
+        std::fprintf(stderr,
+                     "driftlab: warning: %s: byte offset %llu: last record cut (recorder killed while "
+                     "writing); decoded up to it\n",
                      o.capture.c_str(), static_cast<unsigned long long>(*reader->truncated_at()));
     }
     const io::AssemblyStats& s = assembler->stats();
@@ -234,7 +247,8 @@ void run_decode(const DecodeOptions& o) {
                      static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.lost_frames),
                      io::loss_percent(s), static_cast<unsigned>(assembler->decoder_counters().bad_crc),
                      static_cast<unsigned long long>(s.gaps));
-        if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::fprintf(summary, "%s\n", skipped.c_str());
+        if (const std::string skipped = io::skipped_samples(s); !skipped.empty())
+            std::fprintf(summary, "%s\n", skipped.c_str());
     }
     // After the log and the summary are written: a script is told, and no good row is lost for it.
     if (const std::string lost = o.strict ? bytes_not_decoded(*reader, *crc_failures) : ""; !lost.empty())
@@ -246,7 +260,9 @@ void run_decode(const DecodeOptions& o) {
 void register_decode(CLI::App& app) {
     auto o = std::make_shared<DecodeOptions>();
     CLI::App* cmd = app.add_subcommand("decode", "Rebuild a recorded log from its raw capture (LOG.csv.cap)");
-    cmd->add_option("capture", o->capture, "Capture file written by `driftlab record`")->required()->check(non_empty_path());
+    cmd->add_option("capture", o->capture, "Capture file written by `driftlab record`")
+        ->required()
+        ->check(non_empty_path());
     cmd->add_option("-o,--output", o->output, "Log file to write (its folder is made; - for standard output)")
         ->required()
         ->check(non_empty_path());
@@ -257,9 +273,10 @@ void register_decode(CLI::App& app) {
     cmd->add_flag("--strict", o->strict,
                   "Exit 3 when bytes were not decoded (frames failing their CRC, damaged stretches skipped, a cut last "
                   "record); the log still holds every good row");
-    cmd->footer("Damage in the capture (a cut last record, skipped stretches, frames failing their CRC) is warned of "
-                "with byte offsets on standard error; the log is still written, and the exit code is 0 (3 with "
-                "--strict). Exit 3: no log can be rebuilt (not a capture, no recording start).");
+    cmd->footer(
+        "Damage in the capture (a cut last record, skipped stretches, frames failing their CRC) is warned of "
+        "with byte offsets on standard error; the log is still written, and the exit code is 0 (3 with "
+        "--strict). Exit 3: no log can be rebuilt (not a capture, no recording start).");
     cmd->callback([o] { run_decode(*o); });
 }
 

@@ -35,8 +35,8 @@ std::string interval(const fit::Estimate& e, const std::array<double, 2>& ci) {
 }
 
 /// Rows of cells in columns as wide as their widest cell: a value such as -6.92737e+11 or the status
-/// "not converged (iteration limit)" had pushed the rest of its row out of line under fixed widths. A row of two cells (a series
-/// that failed) keeps its second cell whole, beside the first column.
+/// "not converged (iteration limit)" had pushed the rest of its row out of line under fixed widths. A row of two cells
+/// (a series that failed) keeps its second cell whole, beside the first column.
 void print_columns(const std::vector<std::vector<std::string>>& rows) {
     std::vector<std::size_t> width(rows.front().size(), 0);
     for (const auto& row : rows)
@@ -94,9 +94,10 @@ void print_table(const fit::FileAnalysis& file) {
     for (const auto& s : file.series) {
         if (!s.analysis) continue;
         const fit::DriftAnalysis& a = *s.analysis;
-        std::cout << "\n" << s.name << ": n = " << a.fit.n << ", t = " << fixed_point(a.data.t_s.front(), 3) << " .. "
-                  << fixed_point(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations (" << a.fit.solver_stop
-                  << ")\n";
+        std::cout << "\n"
+                  << s.name << ": n = " << a.fit.n << ", t = " << fixed_point(a.data.t_s.front(), 3) << " .. "
+                  << fixed_point(a.data.t_s.back(), 3) << " s, " << a.fit.iterations << " LM iterations ("
+                  << a.fit.solver_stop << ")\n";
         // `per` follows the value (its unit), `note` the intervals.
         const auto row = [&](const char* name, const fit::Estimate& p, const fit::Estimate& w, bool determined,
                              const char* per = "", const char* note = "") {
@@ -185,15 +186,18 @@ void add_drop_cut_line_flag(CLI::App* cmd, bool& drop) {
 }
 
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& r) {
-    cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")->required()->check(non_empty_path());
+    cmd->add_option("log", r.path, "Canonical log (docs/log-format.md) or plain numeric table")
+        ->required()
+        ->check(non_empty_path());
     cmd->add_option("--channel", r.names, "Channels (or table columns) to analyse; default all")->delimiter(',');
     add_time_range_options(cmd, r.options.t_min_s, r.options.t_max_s);
     add_exclude_option(cmd, r.options.excluded,
                        "a corrupt row or a disturbance; the fit keeps the true times, the whiteness lags join the rows "
                        "either side");
-    cmd->add_option("--time-column", r.time_column,
-                    "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
-                    "time, time_s, timestamp...)")
+    cmd->add_option(
+           "--time-column", r.time_column,
+           "Plain tables: the time column [s; ms, us or ns when its name ends _ms, _us or _ns] (default t_s, t, "
+           "time, time_s, timestamp...)")
         ->check(non_empty("a column name"));
     // --tau0 as allan and gap spell the period.
     cmd->add_option("--sample-period,--tau0", r.sample_period_s,
@@ -213,7 +217,8 @@ void register_fit(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("fit", "Fit the turn-on drift C1(1-exp(-t/T))+C2 per channel (paper eq. 1)");
     add_analysis_input_options(cmd, opts->request);
     cmd->add_flag("--json", opts->json, "Print JSON (keys: channels.<name>.{C1,C2,T,status,n,rms,whiteness,...})");
-    cmd->add_option("--plot", opts->plot_dir, "Write Fig. 2-4 as PNG and SVG into this folder")->check(non_empty_path());
+    cmd->add_option("--plot", opts->plot_dir, "Write Fig. 2-4 as PNG and SVG into this folder")
+        ->check(non_empty_path());
     cmd->callback([opts] { run(*opts); });
 }
 

@@ -21,9 +21,12 @@ struct FlashOptions {
 std::string pick_port() {
     const io::UsbPortScan scan = io::list_usb_serial_ports();
     std::vector<std::string> nodes;
-    for (const io::UsbSerialPort& p : scan.ports) nodes.insert(nodes.end(), p.device_nodes.begin(), p.device_nodes.end());
+    for (const io::UsbSerialPort& p : scan.ports)
+        nodes.insert(nodes.end(), p.device_nodes.begin(), p.device_nodes.end());
     if (nodes.size() == 1) return nodes.front();
-    if (nodes.empty()) throw DeviceError("--port", "none given and no USB serial adapter found (is the board plugged in? see `driftlab ports`)");
+    if (nodes.empty())
+        throw DeviceError("--port",
+                          "none given and no USB serial adapter found (is the board plugged in? see `driftlab ports`)");
     std::string list;
     for (const std::string& n : nodes) list += " " + n;
     throw UsageError("no --port given and several adapters present:" + list);
@@ -36,7 +39,8 @@ void run_flash(FlashOptions& opts) {
         // The same checks as a real run, so the printed command is one that can run (avrdude aside).
         io::check_image_and_port(opts.request);
         std::string line;
-        for (const std::string& a : io::avrdude_arguments(opts.request)) line += (line.empty() ? "" : " ") + io::shell_quoted(a);
+        for (const std::string& a : io::avrdude_arguments(opts.request))
+            line += (line.empty() ? "" : " ") + io::shell_quoted(a);
         std::cout << line << "\n";
         return;
     }
@@ -55,11 +59,17 @@ void register_flash(CLI::App& app) {
     cmd->add_option("--programmer", opts->request.programmer, "avrdude programmer id")
         ->capture_default_str()
         ->check(non_empty("an avrdude programmer id"));
-    cmd->add_option("--baud", opts->request.baud, "Bootloader baud rate [bit/s]")->capture_default_str()->check(baud_rate());
-    cmd->add_option("--part", opts->request.part, "avrdude part id")->capture_default_str()->check(non_empty("an avrdude part id"));
+    cmd->add_option("--baud", opts->request.baud, "Bootloader baud rate [bit/s]")
+        ->capture_default_str()
+        ->check(baud_rate());
+    cmd->add_option("--part", opts->request.part, "avrdude part id")
+        ->capture_default_str()
+        ->check(non_empty("an avrdude part id"));
     cmd->add_option("--hex", opts->request.hex_file, "Intel HEX image (default: the AVR build's driftlab_fw.hex)")
         ->check(non_empty_path());
-    cmd->add_option("--avrdude", opts->request.avrdude, "avrdude program")->capture_default_str()->check(non_empty_path());
+    cmd->add_option("--avrdude", opts->request.avrdude, "avrdude program")
+        ->capture_default_str()
+        ->check(non_empty_path());
     cmd->add_flag("--dry-run", opts->dry_run, "Print the avrdude command instead of running it");
     cmd->callback([opts] { run_flash(*opts); });
 }

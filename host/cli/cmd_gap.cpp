@@ -16,18 +16,18 @@
 
 #include "driftlab/proto/messages.hpp"
 #include "host/cli/commands.hpp"
+#include "host/fit/series.hpp"
 #include "host/gap/calibrate.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
 #include "host/gap/model_out.hpp"
-#include "host/gap/verdict_stability.hpp"
 #include "host/gap/plain_recording.hpp"
-#include "host/fit/series.hpp"
-#include "host/log/numeric_table.hpp"
+#include "host/gap/verdict_stability.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/log/log_window.hpp"
+#include "host/log/numeric_table.hpp"
 #include "host/util/channel_name.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -60,9 +60,9 @@ struct GapCommandOptions {
     std::size_t block = 1;              ///< plain recordings: samples averaged per output
     double from_s = -INFINITY;          ///< rows kept: from_s <= t_s <= to_s
     double to_s = INFINITY;
-    std::vector<TimeWindow> excluded;   ///< --exclude: stretches left out
-    double saturated_margin_s = -1.0;   ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
-    bool drop_cut_line = false;         ///< canonical logs: a cut last line is dropped (and noted), not refused
+    std::vector<TimeWindow> excluded;  ///< --exclude: stretches left out
+    double saturated_margin_s = -1.0;  ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
+    bool drop_cut_line = false;        ///< canonical logs: a cut last line is dropped (and noted), not refused
 
     bool windowed() const { return from_s != -INFINITY || to_s != INFINITY; }
 };
@@ -114,14 +114,17 @@ LogData read_canonical(std::istream& in, const std::string& path, ReadOptions op
     for (const char* key : {"window", "fit_order", "conversions_per_output"})
         if (!log.metadata.has(key)) missing += std::string(missing.empty() ? "" : ", ") + "'" + key + "'";
     if (!missing.empty())
-        throw DataError(path, 0,
-                        "the metadata lacks " + missing + ": gap repeats the firmware's smoothing in every replicate and "
-                        "needs all of 'window', 'fit_order' and 'conversions_per_output' (record, decode and hil write them)");
+        throw DataError(
+            path, 0,
+            "the metadata lacks " + missing +
+                ": gap repeats the firmware's smoothing in every replicate and "
+                "needs all of 'window', 'fit_order' and 'conversions_per_output' (record, decode and hil write them)");
     return log;
 }
 
 // A canonical log as it is, with the unit of --model or the paper's; a plain table through its column mappings
-// (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to and --exclude.
+// (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to and
+// --exclude.
 Loaded load(const GapCommandOptions& o) {
     const sim::SimModel unit = o.model_path.empty() ? sim::paper_model() : sim::load_model_file(o.model_path);
     fit::OpenedSource source = fit::open_source(o.path);
@@ -134,7 +137,8 @@ Loaded load(const GapCommandOptions& o) {
         return out;
     }
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
-        throw UsageError(o.path + " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
+        throw UsageError(o.path +
+                         " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
                          "--as CHANNEL=COLUMN:LSB (e.g. --as gyro=col1:0.00875)");
     gap::PlainRecording how;
     for (const auto& m : o.mappings) how.columns.push_back(gap::parse_column_mapping(m));
@@ -148,26 +152,32 @@ Loaded load(const GapCommandOptions& o) {
 
 void print_text(const gap::GapResult& r, const gap::GapOptions& options, const LogData& log) {
     std::printf("verdict: %s (%s)\n", r.verdict.c_str(), gap::verdict_reason(r, options).c_str());
-    if (const std::string slow = gap::slow_drift_sentence(r, log); !slow.empty()) std::printf("slow drift: %s\n", slow.c_str());
-    std::printf("gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f"
-                " (held-out bound %.2f: %s)\n",
-                r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout, r.gap_bound_after,
-                r.gap_after_heldout <= r.gap_bound_after ? "closed" : "not closed");
+    if (const std::string slow = gap::slow_drift_sentence(r, log); !slow.empty())
+        std::printf("slow drift: %s\n", slow.c_str());
+    std::printf(
+        "gap (mean z^2 over its null; 1 = consistent)  before: fit %.2f heldout %.2f   after: fit %.2f heldout %.2f"
+        " (held-out bound %.2f: %s)\n",
+        r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout, r.gap_bound_after,
+        r.gap_after_heldout <= r.gap_bound_after ? "closed" : "not closed");
     if (const std::string constant = gap::constant_channels_sentence(r); !constant.empty())
         std::printf("not analysed: %s\n", constant.c_str());
-    if (const std::string quiet = gap::noise_free_sentence(r); !quiet.empty()) std::printf("not analysed: %s\n", quiet.c_str());
+    if (const std::string quiet = gap::noise_free_sentence(r); !quiet.empty())
+        std::printf("not analysed: %s\n", quiet.c_str());
     if (const std::string saturated = gap::saturated_channels_sentence(r); !saturated.empty())
         std::printf("saturated: %s\n", saturated.c_str());
     for (const auto& l : r.lone_values)
         std::printf("warning: %s: %s\n", kChannelNames[channel_index(l.channel)], l.warning.c_str());
-    if (const std::string left_out = gap::left_out_sentence(r); !left_out.empty()) std::printf("left out: %s\n", left_out.c_str());
+    if (const std::string left_out = gap::left_out_sentence(r); !left_out.empty())
+        std::printf("left out: %s\n", left_out.c_str());
     std::printf("located cells (|z| > %.2f and beyond the margin): %zu\n", r.before.threshold, r.located.size());
     if (r.diffuse_gap)
-        std::printf("diffuse gap: the held-out score %.2f exceeds its bound %.2f with no cell located (many cells a little "
-                    "off)%s\n", r.gap_before_heldout, r.gap_bound_before,
-                    r.diffuse_searched ? "; candidates searched on it"
-                    : options.explain  ? "; --search-diffuse tries the candidates on it"
-                                       : "; no candidate tried (--locate-only)");
+        std::printf(
+            "diffuse gap: the held-out score %.2f exceeds its bound %.2f with no cell located (many cells a little "
+            "off)%s\n",
+            r.gap_before_heldout, r.gap_bound_before,
+            r.diffuse_searched ? "; candidates searched on it"
+            : options.explain  ? "; --search-diffuse tries the candidates on it"
+                               : "; no candidate tried (--locate-only)");
     constexpr std::size_t kCellsShown = 15;  // the largest |z| first; a terminal, not a table
     for (std::size_t i = 0; i < r.located.size() && i < kCellsShown; ++i) {
         const auto& l = r.located[i];
@@ -176,47 +186,67 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
                     gap::segment_name(c.segment), l.z, gap::located_cell_text(r, l).c_str());
     }
     if (r.located.size() > kCellsShown)
-        std::printf("  ... and %zu more with smaller |z| (--json and --report list them)\n", r.located.size() - kCellsShown);
-    if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) std::printf("base: %s\n", given.c_str());
+        std::printf("  ... and %zu more with smaller |z| (--json and --report list them)\n",
+                    r.located.size() - kCellsShown);
+    if (const std::string given = gap::given_effects_sentence(r.given); !given.empty())
+        std::printf("base: %s\n", given.c_str());
     if (!r.accepted.empty())
-        std::printf("explanation (effects added in order; heldout: the channel's held-out score before -> after the step, %s; "
-                    "parameters estimated on the whole log beside them all):\n", gap::kShrinkDefinition);
+        std::printf(
+            "explanation (effects added in order; heldout: the channel's held-out score before -> after the step, %s; "
+            "parameters estimated on the whole log beside them all):\n",
+            gap::kShrinkDefinition);
     for (const auto& e : r.accepted) {
-        const std::string within = e.within_bound_before() ? std::string("; ") + gap::kWithinBoundNote + " " + fixed_point(e.heldout_bound, 2) : "";
-        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %s%%%s)  %s", e.step, e.effect.c_str(), e.channel.c_str(), e.heldout_before,
-                    e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), within.c_str(), gap::estimate_text(e, log.t_s.back()).c_str());
+        const std::string within =
+            e.within_bound_before() ? std::string("; ") + gap::kWithinBoundNote + " " + fixed_point(e.heldout_bound, 2)
+                                    : "";
+        std::printf("  %d %-18s %-8s heldout %.2f -> %.2f (shrink %s%%%s)  %s", e.step, e.effect.c_str(),
+                    e.channel.c_str(), e.heldout_before, e.heldout_after,
+                    fixed_point(100 * e.heldout_shrink, 0).c_str(), within.c_str(),
+                    gap::estimate_text(e, log.t_s.back()).c_str());
         if (e.replaces_given) std::printf("  in place of the model's");
-        std::printf("\n    %s%s\n", e.ambiguous_with.empty() ? "to confirm: " : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
+        std::printf("\n    %s%s\n",
+                    e.ambiguous_with.empty() ? "to confirm: "
+                                             : ("AMBIGUOUS with " + e.ambiguous_with + "; to settle: ").c_str(),
                     e.settle.c_str());
     }
     for (const auto& p : r.paths)
-        std::printf("  step %d on %s: %s first and %s first both followed; criterion at the end %.1f and %.1f (kept: %s first, "
-                    "a shape path needs %.0f less)\n", p.step, p.channel.c_str(), p.process.c_str(), p.shape.c_str(),
-                    p.criterion_process, p.criterion_shape, (p.shape_kept ? p.shape : p.process).c_str(),
-                    options.explain_options.shape_path_margin);
+        std::printf(
+            "  step %d on %s: %s first and %s first both followed; criterion at the end %.1f and %.1f (kept: %s first, "
+            "a shape path needs %.0f less)\n",
+            p.step, p.channel.c_str(), p.process.c_str(), p.shape.c_str(), p.criterion_process, p.criterion_shape,
+            (p.shape_kept ? p.shape : p.process).c_str(), options.explain_options.shape_path_margin);
     const gap::ExplainOptions& rules = options.explain_options;
     if (!r.tried.empty())
-        std::printf("candidates (fitted on the fitting part, judged on the held-out part; the added first, then by step; heldout and "
-                    "shrink as above; gain vs penalty: the likelihood gain against its parameters' price, passing needs gain > %s x penalty; "
-                    "dIC: the spectral criterion (%s) without it minus with it, > 0 favours it):\n",
-                    significant(rules.penalty_per_param, 3).c_str(), gap::criterion_name(rules.information_criterion));
+        std::printf(
+            "candidates (fitted on the fitting part, judged on the held-out part; the added first, then by step; "
+            "heldout and "
+            "shrink as above; gain vs penalty: the likelihood gain against its parameters' price, passing needs gain > "
+            "%s x penalty; "
+            "dIC: the spectral criterion (%s) without it minus with it, > 0 favours it):\n",
+            significant(rules.penalty_per_param, 3).c_str(), gap::criterion_name(rules.information_criterion));
     for (const gap::Explanation* candidate : gap::candidates_in_table_order(r)) {
         const gap::Explanation& e = *candidate;
         std::printf("  %d %-18s %-8s %s  heldout %.2f -> %.2f (shrink %s%%)  gain %s vs penalty %s ", e.step,
-                    e.effect.c_str(), e.channel.c_str(), gap::was_added(r, e) ? "ADDED   " : e.accepted ? "passed  " : "rejected", e.heldout_before,
-                    e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(), fixed_point(e.loss_gain, 1).c_str(),
-                    fixed_point(e.penalty, 1).c_str());
-        if (gap::has_delta_ic(e)) std::printf(" dIC %s", fixed_point(gap::delta_ic(e, rules.information_criterion), 1).c_str());
+                    e.effect.c_str(), e.channel.c_str(),
+                    gap::was_added(r, e) ? "ADDED   "
+                    : e.accepted         ? "passed  "
+                                         : "rejected",
+                    e.heldout_before, e.heldout_after, fixed_point(100 * e.heldout_shrink, 0).c_str(),
+                    fixed_point(e.loss_gain, 1).c_str(), fixed_point(e.penalty, 1).c_str());
+        if (gap::has_delta_ic(e))
+            std::printf(" dIC %s", fixed_point(gap::delta_ic(e, rules.information_criterion), 1).c_str());
         if (!e.params.empty()) std::printf(" %s", gap::parameter_list(e.params).c_str());
         if (!e.ambiguous_with.empty()) std::printf("  AMBIGUOUS with %s", e.ambiguous_with.c_str());
         std::printf("\n");
     }
     for (const auto& s : r.level_steps)
-        std::printf("level steps on %s: %s at t = %.1f s, %s at %.1f s; likelihood %.1f over the model (price %.1f), "
-                    "p = %.3f (%s)\n", kChannelNames[channel_index(s.channel)],
-                    gap::step_size_text(r.base, s.channel, s.steps[0].size_counts, 2).c_str(), s.steps[0].t_s,
-                    gap::step_size_text(r.base, s.channel, s.steps[1].size_counts, 2).c_str(), s.steps[1].t_s, s.statistic, s.margin,
-                    s.p_value, gap::step_reading(s));
+        std::printf(
+            "level steps on %s: %s at t = %.1f s, %s at %.1f s; likelihood %.1f over the model (price %.1f), "
+            "p = %.3f (%s)\n",
+            kChannelNames[channel_index(s.channel)],
+            gap::step_size_text(r.base, s.channel, s.steps[0].size_counts, 2).c_str(), s.steps[0].t_s,
+            gap::step_size_text(r.base, s.channel, s.steps[1].size_counts, 2).c_str(), s.steps[1].t_s, s.statistic,
+            s.margin, s.p_value, gap::step_reading(s));
     std::printf("not identifiable from a static log:");
     for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
@@ -224,21 +254,26 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
     // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps. A spread below 1e-6 %
     // is the rounding of the times as written (1.51e-13 % on a hil log), not a timing to report.
     const double jitter_percent = 100.0 * r.timing.dt_jitter_rel;
-    std::printf("timing: %s (%s lost), %s; %s\n", counted(r.timing.sequence_jumps, "sequence jump").c_str(),
-                counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
-                counted(r.timing.gap_events, "gap event").c_str(),
-                jitter_percent < 1e-6 ? "row spacing constant (its sd below 1e-6 % of the rows' period)"
-                                      : ("row spacing varies by " + significant(jitter_percent, 3) + " % of the rows' period (sd)").c_str());
+    std::printf(
+        "timing: %s (%s lost), %s; %s\n", counted(r.timing.sequence_jumps, "sequence jump").c_str(),
+        counted(static_cast<std::size_t>(r.timing.lost_frames), "frame").c_str(),
+        counted(r.timing.gap_events, "gap event").c_str(),
+        jitter_percent < 1e-6
+            ? "row spacing constant (its sd below 1e-6 % of the rows' period)"
+            : ("row spacing varies by " + significant(jitter_percent, 3) + " % of the rows' period (sd)").c_str());
 }
 
-// " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else "".
+// " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else
+// "".
 std::string rows_used(const GapCommandOptions& o, const LogData& log) {
     if (!o.windowed() && log.cuts.empty()) return "";
     char text[80];
-    std::snprintf(text, sizeof text, " (rows from %g s to %g s", log.t_s.front(), log.t_s.back());  // rows remain, or it was refused
+    std::snprintf(text, sizeof text, " (rows from %g s to %g s", log.t_s.front(),
+                  log.t_s.back());  // rows remain, or it was refused
     std::string out = text;
     for (std::size_t i = 0; i < log.cuts.size(); ++i) {
-        std::snprintf(text, sizeof text, "%s%g s to %g s", i == 0 ? ", without " : " and ", log.cuts[i].from_s, log.cuts[i].to_s);
+        std::snprintf(text, sizeof text, "%s%g s to %g s", i == 0 ? ", without " : " and ", log.cuts[i].from_s,
+                      log.cuts[i].to_s);
         out += text;
     }
     return out + ")";
@@ -247,8 +282,10 @@ std::string rows_used(const GapCommandOptions& o, const LogData& log) {
 void run(const GapCommandOptions& o) {
     // Only the forecast design splits the log at a fraction: interleaved tenths would silently ignore it.
     if (o.fit_fraction_given && o.holdout != gap::Holdout::forecast)
-        throw UsageError("--fit-fraction sets where --holdout forecast splits the log; the default interleaved design fits on "
-                         "tenths 0, 4, 5, 7, 9 of the log whatever the fraction: add --holdout forecast, or leave --fit-fraction out");
+        throw UsageError(
+            "--fit-fraction sets where --holdout forecast splits the log; the default interleaved design fits on "
+            "tenths 0, 4, 5, 7, 9 of the log whatever the fraction: add --holdout forecast, or leave --fit-fraction "
+            "out");
     refuse_writing_over_input(o.model_out, "--model-out", o.path, "log");
     refuse_writing_over_input(o.model_out, "--model-out", o.model_path, "model file");
     refuse_file_on_output_folder(o.model_out, "--model-out", o.report_dir, "--report");
@@ -260,7 +297,8 @@ void run(const GapCommandOptions& o) {
         }
     const auto [log, unit, notes] = load(o);
     for (const std::string& note : notes) print_note(note, o.json);
-    print_note(dropped_cut_line_note(log), o.json);  // only when the rows analysed reach it: --to before it loses nothing
+    print_note(dropped_cut_line_note(log),
+               o.json);  // only when the rows analysed reach it: --to before it loses nothing
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {
         check_output_file(o.model_out, "model file");
@@ -284,14 +322,17 @@ void run(const GapCommandOptions& o) {
     const gap::GapResult r = gap::diagnose(log, unit, options);
     const gap::VerdictStability stability = gap::verdict_stability(r, log, unit, options, o.stability);
     if (tty) std::fprintf(stderr, "\r\033[K");
-    if (!o.report_dir.empty()) gap::write_gap_report(r, log, o.report_dir, options, stability.logs > 0 ? &stability : nullptr);
+    if (!o.report_dir.empty())
+        gap::write_gap_report(r, log, o.report_dir, options, stability.logs > 0 ? &stability : nullptr);
     std::vector<std::string> model_notes;
     if (!o.model_out.empty()) {
         const gap::ModelOut m = gap::model_out(r.whole_log_model, r.channels, gap::any_raw_codes(r), o.path);
         std::string effects;
         for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
-        std::string comment = "driftlab gap " + o.path + rows_used(o, log) + ": verdict " + r.verdict + "\ncalibrated eq. 1 and white noise of the analysed "
-                              "channels, the log's smoothing, effects added:" + (effects.empty() ? " none" : effects);
+        std::string comment = "driftlab gap " + o.path + rows_used(o, log) + ": verdict " + r.verdict +
+                              "\ncalibrated eq. 1 and white noise of the analysed "
+                              "channels, the log's smoothing, effects added:" +
+                              (effects.empty() ? " none" : effects);
         if (const std::string given = gap::given_effects_sentence(r.given); !given.empty()) comment += "\n" + given;
         for (const std::string& n : m.notes) comment += "\nnote: " + n;
         if (stability.logs > 0)
@@ -301,8 +342,7 @@ void run(const GapCommandOptions& o) {
     }
     if (o.json) {
         nlohmann::json j = gap::gap_to_json(r, options);
-        if (stability.logs > 0)
-            j["stability"] = gap::stability_to_json(stability);
+        if (stability.logs > 0) j["stability"] = gap::stability_to_json(stability);
         std::cout << j.dump(2) << "\n";
         for (const std::string& n : model_notes) std::fprintf(stderr, "driftlab gap: model file note: %s\n", n.c_str());
     } else {
@@ -310,7 +350,9 @@ void run(const GapCommandOptions& o) {
         if (stability.logs > 0)
             for (const std::string& line : gap::stability_text(stability, r.verdict)) std::printf("%s\n", line.c_str());
         if (!o.report_dir.empty()) std::printf("report: %s/gap.md\n", o.report_dir.c_str());
-        if (!o.model_out.empty()) std::printf("model file: %s (driftlab hil --model %s simulates this unit)\n", o.model_out.c_str(), o.model_out.c_str());
+        if (!o.model_out.empty())
+            std::printf("model file: %s (driftlab hil --model %s simulates this unit)\n", o.model_out.c_str(),
+                        o.model_out.c_str());
         for (const std::string& n : model_notes) std::printf("model file note: %s\n", n.c_str());
     }
 }
@@ -325,44 +367,55 @@ void add_holdout_option(CLI::App* cmd, gap::Holdout& holdout) {
             if (!h) throw CLI::ValidationError("--holdout", "expected interleaved or forecast, got '" + name + "'");
             holdout = *h;
         },
-        "Held-out design: interleaved (tenths 0, 4, 5, 7, 9 fit, the others judge; sees effects confined to the warm-up; default) or "
+        "Held-out design: interleaved (tenths 0, 4, 5, 7, 9 fit, the others judge; sees effects confined to the "
+        "warm-up; default) or "
         "forecast (fit on the first part, judge on the rest)");
 }
 
 void register_gap(CLI::App& app) {
     auto o = std::make_shared<GapCommandOptions>();
-    CLI::App* cmd = app.add_subcommand("gap", "Sim-to-real gap: where the calibrated simulator differs from a real log, "
-                                              "which effect explains it, how far the gap shrinks");
+    CLI::App* cmd = app.add_subcommand("gap",
+                                       "Sim-to-real gap: where the calibrated simulator differs from a real log, "
+                                       "which effect explains it, how far the gap shrinks");
     cmd->add_option("file", o->path, "Real log: a canonical log, or a plain table with --tau0 and --as")
         ->required()
         ->check(non_empty_path());
-    cmd->add_option("--as", o->mappings,
-                    "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
-                    "LSB (its resolution in the column's unit: deg/s or g unless UNIT is mdps, rad/s, mg or m/s2), "
-                    "e.g. gyro=col1:0.00875 or gyro=gx:1.33e-4:rad/s; repeat per channel");
-    cmd->add_option("--tau0", o->tau0_s, "Plain recordings: the raw sample period [s] (timing from a time column, as fit finds it, "
-                                         "if there is one)")
+    cmd->add_option(
+        "--as", o->mappings,
+        "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
+        "LSB (its resolution in the column's unit: deg/s or g unless UNIT is mdps, rad/s, mg or m/s2), "
+        "e.g. gyro=col1:0.00875 or gyro=gx:1.33e-4:rad/s; repeat per channel");
+    cmd->add_option("--tau0", o->tau0_s,
+                    "Plain recordings: the raw sample period [s] (timing from a time column, as fit finds it, "
+                    "if there is one)")
         ->check(positive_number());
-    cmd->add_option("--block", o->block, "Plain recordings: samples averaged per output (an order-0 smoother of that "
-                                         "window; default 1)")
+    cmd->add_option("--block", o->block,
+                    "Plain recordings: samples averaged per output (an order-0 smoother of that "
+                    "window; default 1)")
         ->check(whole_number_in(1, proto::kConversionsPerOutputMax));
-    cmd->add_option("--model", o->model_path, "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian processes held at "
+    cmd->add_option("--model", o->model_path,
+                    "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian "
+                    "processes held at "
                     "the file's values, mean shapes refitted to the log; default: the paper's unit")
         ->check(non_empty_path());
     add_time_range_options(cmd, o->from_s, o->to_s);
     add_exclude_option(cmd, o->excluded, "a shock or a bump in the middle of the log; the rows either side are joined");
-    cmd->add_option("--exclude-saturated", o->saturated_margin_s,
-                    "Leave out every stretch of rows whose sat_flags flag an analysed channel, with SECONDS more on either side "
-                    "(e.g. 0.5 for what a shock leaves after the rail), joined as with --exclude")
+    cmd->add_option(
+           "--exclude-saturated", o->saturated_margin_s,
+           "Leave out every stretch of rows whose sat_flags flag an analysed channel, with SECONDS more on either side "
+           "(e.g. 0.5 for what a shock leaves after the rail), joined as with --exclude")
         ->check(non_negative_number());
     add_drop_cut_line_flag(cmd, o->drop_cut_line);
-    cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")->delimiter(',');
-    cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")->check(whole_number_in(10, 100000));
+    cmd->add_option("--channel", o->channels, "Channels to analyse (default: every channel that varies)")
+        ->delimiter(',');
+    cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")
+        ->check(whole_number_in(10, 100000));
     cmd->add_option("--seed", o->seed, "Seed of the replicates (common random numbers)")->check(seed_number());
     const CLI::Option* fit_fraction =
-        cmd->add_option("--fit-fraction", o->fit_fraction, "With --holdout forecast: the first part of the log (by time) used to fit "
-                                                           "candidates (default 0.6; refused with the interleaved design, which "
-                                                           "does not split at a fraction)")
+        cmd->add_option("--fit-fraction", o->fit_fraction,
+                        "With --holdout forecast: the first part of the log (by time) used to fit "
+                        "candidates (default 0.6; refused with the interleaved design, which "
+                        "does not split at a fraction)")
             ->check(number_in(0.3, 0.85));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--locate-only", o->locate_only, "Only locate the gap; do not fit candidate effects");
@@ -378,11 +431,13 @@ void register_gap(CLI::App& app) {
     cmd->add_flag("--json", o->json, "Print JSON (keys: " + keys + "; stability with --stability)");
     cmd->add_option("--report", o->report_dir, "Write gap.md with plots into this folder")->check(non_empty_path());
     cmd->add_option("--stability", o->stability,
-                    "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its verdict (repeatability, not correctness) "
+                    "Diagnose N logs simulated from the estimated model, as the log was, and say how many get its "
+                    "verdict (repeatability, not correctness) "
                     "and how the added effects' estimates scatter over them (N times the diagnosis's time)")
         ->check(whole_number_in(0, 1000));
     cmd->add_option("--model-out", o->model_out,
-                    "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as a model file "
+                    "Write the estimated model (calibrated base and the effects added, estimated on the whole log) as "
+                    "a model file "
                     "for driftlab hil --model and gap --model")
         ->check(non_empty_path());
     cmd->callback([o, fit_fraction] {

@@ -1,4 +1,5 @@
 // `driftlab gap-eval`: the withheld-effect benchmark of the gap diagnosis (host/gap/evaluate, docs/gap.md §Evaluation).
+#include <unistd.h>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -6,7 +7,6 @@
 #include <iostream>
 #include <memory>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "host/cli/commands.hpp"
@@ -40,11 +40,13 @@ struct GapEvalCommandOptions {
 
 std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, const std::string& s) {
     const auto refused = [&] {
-        return UsageError(flag + ": expected A..B with whole numbers 0 <= A <= B <= " + std::to_string(gap::kMaxEvalSeed) + ", got '" + s + "'");
+        return UsageError(flag + ": expected A..B with whole numbers 0 <= A <= B <= " +
+                          std::to_string(gap::kMaxEvalSeed) + ", got '" + s + "'");
     };
     // Digits only: std::stoull would take "-1" as 2^64 - 1.
     const auto number = [&](const std::string& text) {
-        if (text.empty() || text.size() > 7 || text.find_first_not_of("0123456789") != std::string::npos) throw refused();
+        if (text.empty() || text.size() > 7 || text.find_first_not_of("0123456789") != std::string::npos)
+            throw refused();
         return std::stoull(text);
     };
     const auto dots = s.find("..");
@@ -60,10 +62,11 @@ std::string generator_named(const std::string& flag, const std::string& name) {
     for (const auto& t : gap::truth_list()) {
         // Not "": an out-of-library generator stands for no effect, and "" had named it.
         if (!name.empty() && (t.generator == name || t.effect == name)) return t.generator;
-        known += (known.empty() ? "" : ", ") + t.generator + (t.effect.empty() || t.effect == t.generator ? "" : " (" + t.effect + ")");
+        known += (known.empty() ? "" : ", ") + t.generator +
+                 (t.effect.empty() || t.effect == t.generator ? "" : " (" + t.effect + ")");
     }
-    throw UsageError(flag + ": unknown generator or effect '" + name + "' (generators, with the effect each stands for: " +
-                     known + ")");
+    throw UsageError(flag + ": unknown generator or effect '" + name +
+                     "' (generators, with the effect each stands for: " + known + ")");
 }
 
 std::vector<std::pair<std::string, std::string>> parse_pairs(const std::vector<std::string>& list) {
@@ -93,7 +96,7 @@ void run(const GapEvalCommandOptions& o) {
     for (const std::string& e : o.effects) options.generators.push_back(generator_named("--effects", e));
     // The full run plants the default pairs too; a run of chosen effects only those asked for.
     options.pairs = o.pairs.empty() ? (o.effects.empty() && !o.quick && !o.clean_only ? gap::default_pairs()
-                                                                                     : decltype(options.pairs){})
+                                                                                      : decltype(options.pairs){})
                                     : parse_pairs(o.pairs);
     // After each option's own check, so that a misspelt effect is named even where the seeds overlap too. --clean-only
     // tunes nothing, so its tuning seeds (the default ones, unless given) are not run.
@@ -121,7 +124,8 @@ void run(const GapEvalCommandOptions& o) {
         const auto started = std::chrono::steady_clock::now();
         return [what, started](std::size_t done, std::size_t total) {
             const double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
-            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu  %s\033[K", what, done, total, time_left(fraction, seconds_since(started)).c_str());
+            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu  %s\033[K", what, done, total,
+                         time_left(fraction, seconds_since(started)).c_str());
             if (done == total) std::fprintf(stderr, "\n");
         };
     };
@@ -165,33 +169,40 @@ std::string default_pairs_text() {
 
 void register_gap_eval(CLI::App& app) {
     auto o = std::make_shared<GapEvalCommandOptions>();
-    CLI::App* cmd = app.add_subcommand("gap-eval", "Benchmark the gap diagnosis on simulated logs with a withheld effect "
-                                                   "(truth generators differ from the fitted forms)");
+    CLI::App* cmd = app.add_subcommand("gap-eval",
+                                       "Benchmark the gap diagnosis on simulated logs with a withheld effect "
+                                       "(truth generators differ from the fitted forms)");
     cmd->add_option("--seeds-tune", o->tune_seeds, "Seeds the decision thresholds are tuned on, A..B");
     cmd->add_option("--seeds-score", o->score_seeds, "Seeds the results are scored on, C..D (disjoint)");
-    CLI::Option* effects = cmd->add_option("--effects", o->effects, "Truth generators or the effects they stand for (default: all)")
-        ->delimiter(',');
+    CLI::Option* effects =
+        cmd->add_option("--effects", o->effects, "Truth generators or the effects they stand for (default: all)")
+            ->delimiter(',');
     // Beyond 16 x a_50 an effect swamps the log (a thermal network of 1000 x a_50 leaves the gyro no noise to
     // compare), and tells nothing about detection.
-    CLI::Option* levels = cmd->add_option("--levels", o->levels, "Effect sizes in multiples of each generator's a_50, at most 16 (default 0.5,1,2,4)")
-        ->delimiter(',')
-        ->check(number_in(0.0, 16.0, Bound::open));
+    CLI::Option* levels =
+        cmd->add_option("--levels", o->levels,
+                        "Effect sizes in multiples of each generator's a_50, at most 16 (default 0.5,1,2,4)")
+            ->delimiter(',')
+            ->check(number_in(0.0, 16.0, Bound::open));
     CLI::Option* pairs =
-        cmd->add_option("--pairs", o->pairs,
-                        "Two-effect logs: pairs A+B of generators (or effects) planted together, diagnosed as `driftlab gap` "
-                        "runs (A+none: A alone, so run); 'none' for none (default: " + default_pairs_text() +
-                            " in a run of all effects, none with --effects)")
+        cmd->add_option(
+               "--pairs", o->pairs,
+               "Two-effect logs: pairs A+B of generators (or effects) planted together, diagnosed as `driftlab gap` "
+               "runs (A+none: A alone, so run); 'none' for none (default: " +
+                   default_pairs_text() + " in a run of all effects, none with --effects)")
             ->delimiter(',');
-    cmd->add_option("--pair-level", o->pair_level, "Each of a pair at this multiple of its own a_50, at most 16 (default 2)")
+    cmd->add_option("--pair-level", o->pair_level,
+                    "Each of a pair at this multiple of its own a_50, at most 16 (default 2)")
         ->check(number_in(0.0, 16.0, Bound::open));
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
                     "Clean logs per seed for the false-positive rate (default: as many as sizes)")
         ->check(whole_number_in(1, 1000));
     add_holdout_option(cmd, o->holdout);
     cmd->add_flag("--quick", o->quick, "Short logs, one size, fewer replicates");
-    cmd->add_flag("--shipped", o->shipped,
-                  "Score the thresholds `driftlab gap` ships instead of tuning them (the tuning seeds then only measure "
-                  "a_50): more scoring seeds for the same frozen thresholds");
+    cmd->add_flag(
+        "--shipped", o->shipped,
+        "Score the thresholds `driftlab gap` ships instead of tuning them (the tuning seeds then only measure "
+        "a_50): more scoring seeds for the same frozen thresholds");
     cmd->add_flag("--clean-only", o->clean_only,
                   "Clean logs only, scored with the thresholds `driftlab gap` ships (implies --shipped): the "
                   "false-positive rate on many seeds (no a_50)")
@@ -202,10 +213,12 @@ void register_gap_eval(CLI::App& app) {
                   "Clean logs are raw-mode (a raw_gyro column, so their code-histogram cells are tested too), as the "
                   "converter generator's logs are");
     cmd->add_flag("--json", o->json,
-                  "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, by_size, targets, pairs)");
-    cmd->add_option("--plot", o->plot_dir,
-                    "Also write DIR/gap_eval_detected and DIR/gap_eval_top1 (PNG, SVG): detected and right-verdict shares "
-                    "against size, with 95 % intervals")
+                  "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, "
+                  "by_size, targets, pairs)");
+    cmd->add_option(
+           "--plot", o->plot_dir,
+           "Also write DIR/gap_eval_detected and DIR/gap_eval_top1 (PNG, SVG): detected and right-verdict shares "
+           "against size, with 95 % intervals")
         ->check(non_empty_path())
         ->excludes("--clean-only");
     cmd->callback([o] { run(*o); });

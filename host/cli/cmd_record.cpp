@@ -48,8 +48,8 @@ void run_record(const RecordCliOptions& o) {
     r.recorder_name = kProgramVersion;
     r.overwrite = o.overwrite;
     const bool stream = o.stream_s > 0.0;
-    r.config.output_period_ms = output_period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1),
-                                                 stream ? "--stream" : "--poll");
+    r.config.output_period_ms =
+        output_period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1), stream ? "--stream" : "--poll");
     r.config.mode = static_cast<std::uint8_t>(stream ? proto::OutputMode::stream : proto::OutputMode::poll);
     r.config.conversions_per_output = static_cast<std::uint8_t>(o.conversions);
     r.config.window = static_cast<std::uint8_t>(o.window);
@@ -96,13 +96,15 @@ void run_record(const RecordCliOptions& o) {
 
 void register_record(CLI::App& app) {
     auto o = std::make_shared<RecordCliOptions>();
-    CLI::App* cmd = app.add_subcommand("record", "Record a board over a serial/radio link into a log and a raw capture");
+    CLI::App* cmd =
+        app.add_subcommand("record", "Record a board over a serial/radio link into a log and a raw capture");
     cmd->add_option("--port", o->port, "Serial device (/dev/ttyUSB0, /dev/serial/by-id/..., /dev/pts/N)")
         ->required()
         ->check(non_empty_path());
     cmd->add_option("--baud", o->baud, "Baud rate [bit/s]")->capture_default_str()->check(baud_rate());
-    auto* poll = cmd->add_option("--poll", o->poll_s, "Poll mode (the paper's), one POLL every PERIOD [s] (default 0.1)")
-                     ->check(positive_number());
+    auto* poll =
+        cmd->add_option("--poll", o->poll_s, "Poll mode (the paper's), one POLL every PERIOD [s] (default 0.1)")
+            ->check(positive_number());
     auto* stream = cmd->add_option("--stream", o->stream_s, "Stream mode: the board sends every PERIOD [s] unasked")
                        ->check(positive_number());
     poll->excludes(stream);
@@ -120,7 +122,8 @@ void register_record(CLI::App& app) {
         ->check(whole_number_in(0, proto::kFitOrderMax));
     cmd->add_flag("--raw", o->raw, "Also record the raw ADC codes (RAW frames)");
     cmd->add_option("-o,--output", o->output, "Log file (canonical CSV)")->required()->check(non_empty_path());
-    cmd->add_option("--capture", o->capture, "Raw capture file (default: LOG.cap beside the log)")->check(non_empty_path());
+    cmd->add_option("--capture", o->capture, "Raw capture file (default: LOG.cap beside the log)")
+        ->check(non_empty_path());
     cmd->add_flag("-q,--quiet", o->quiet, "No live status line");
     cmd->add_flag("--overwrite", o->overwrite, "Replace a log or capture already there (refused otherwise)");
     cmd->callback([o] { run_record(*o); });

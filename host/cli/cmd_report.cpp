@@ -82,7 +82,8 @@ void add_unit_option(CLI::App* cmd, std::vector<std::string>& units, bool takes_
 
 void register_report(CLI::App& app) {
     auto opts = std::make_shared<ReportCommandOptions>();
-    CLI::App* cmd = app.add_subcommand("report", "Write one self-contained HTML report (fit, whiteness, Allan, figures)");
+    CLI::App* cmd =
+        app.add_subcommand("report", "Write one self-contained HTML report (fit, whiteness, Allan, figures)");
     add_analysis_input_options(cmd, opts->request);
     cmd->add_option("-o,--output", opts->output, "HTML file to write (default report.html)")->check(non_empty_path());
     cmd->add_flag("--json", opts->json, "Also print the fit results as JSON (same keys as `fit --json`)");

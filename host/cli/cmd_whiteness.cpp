@@ -35,8 +35,7 @@ void print_text(const fit::FileAnalysis& file) {
         char q[32];
         std::snprintf(q, sizeof q, "%.2f(%zu)", w.ljung_box.statistic, w.ljung_box.lags);
         std::printf("%-10s %8.1f%% %9.4f %8s %11s %9.3g %11.2f  %s\n", s.name.c_str(), 100.0 * w.fraction_inside,
-                    w.bound, mxl, q, w.ljung_box.p_value, w.autocorrelation_time.tau,
-                    w.white ? "white" : "NOT white");
+                    w.bound, mxl, q, w.ljung_box.p_value, w.autocorrelation_time.tau, w.white ? "white" : "NOT white");
         print_analysis_warnings(*s.analysis);
     }
 }
@@ -57,7 +56,8 @@ void run(const WhitenessCommandOptions& opts) {
     }
     if (!opts.plot_dir.empty())
         for (const auto& s : file.series)
-            if (s.analysis) report::render_plot(report::autocorrelation_plot(*s.analysis), opts.plot_dir, "fig4_" + s.name);
+            if (s.analysis)
+                report::render_plot(report::autocorrelation_plot(*s.analysis), opts.plot_dir, "fig4_" + s.name);
     throw_if_failed(file, !opts.json);
 }
 
@@ -65,7 +65,8 @@ void run(const WhitenessCommandOptions& opts) {
 
 void register_whiteness(CLI::App& app) {
     auto opts = std::make_shared<WhitenessCommandOptions>();
-    CLI::App* cmd = app.add_subcommand("whiteness", "Test the residual of the drift fit for whiteness (paper eqs. 2-4)");
+    CLI::App* cmd =
+        app.add_subcommand("whiteness", "Test the residual of the drift fit for whiteness (paper eqs. 2-4)");
     add_analysis_input_options(cmd, opts->request);
     cmd->add_flag("--json", opts->json,
                   "Print JSON (keys: channels.<name>.whiteness.{fraction_inside,ljung_box_p,white,"

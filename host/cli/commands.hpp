@@ -14,7 +14,7 @@ namespace driftlab::host::fit {
 struct FileAnalysisRequest;
 struct FileAnalysis;
 struct DriftAnalysis;
-}
+}  // namespace driftlab::host::fit
 namespace driftlab::host::gap {
 enum class Holdout;
 }

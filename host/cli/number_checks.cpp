@@ -101,14 +101,16 @@ const CLI::Validator& baud_rate() {
     static const CLI::Validator check(
         [whole = whole_number_in(1, std::numeric_limits<int>::max())](std::string& text) -> std::string {
             const bool ok = whole(text).empty() && io::is_supported_baud(std::stoi(text));
-            return ok ? std::string() : "expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '" + text + "'";
+            return ok ? std::string()
+                      : "expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '" + text + "'";
         },
         "");
     return check;
 }
 
 CLI::Validator non_empty(const std::string& what) {
-    return CLI::Validator([what](std::string& text) { return text.empty() ? "expected " + what + ", got ''" : std::string(); }, "");
+    return CLI::Validator(
+        [what](std::string& text) { return text.empty() ? "expected " + what + ", got ''" : std::string(); }, "");
 }
 
 const CLI::Validator& non_empty_path() {
@@ -120,8 +122,8 @@ const CLI::Validator& seed_number() {
     static const CLI::Validator check(
         [](std::string& text) -> std::string {
             // Digits only: the unsigned parse would take "-5" as 2^64 - 5 and clamp 2^64 and beyond to 2^64 - 1.
-            const bool digits = !text.empty() && text.size() <= 20 &&
-                                text.find_first_not_of("0123456789") == std::string::npos;
+            const bool digits =
+                !text.empty() && text.size() <= 20 && text.find_first_not_of("0123456789") == std::string::npos;
             if (digits && (text.size() < 20 || text <= "18446744073709551615")) return {};
             return "expected a whole number from 0 to 18446744073709551615, got '" + text + "'";
         },

@@ -24,15 +24,18 @@ AllanCurves analyse_curves(const stats::PhaseRecord& record, const AllanRequest&
         // An empty table would read as a result; too short a record is bad input (the overlapping deviation's bound
         // is the loosest, so it decides).
         if (ms.empty() && d == stats::Deviation::oadev)
-            throw std::invalid_argument(std::to_string(record.size()) + " phase samples leave no averaging time on this grid "
+            throw std::invalid_argument(std::to_string(record.size()) +
+                                        " phase samples leave no averaging time on this grid "
                                         "(the largest averaging factor is (phase samples - 1) / 4, rounded down; a "
                                         "rate series of n samples has n + 1 phase samples)");
         out.curves.push_back(stats::analyse_deviation(record, d, ms, request.confidence));
         // Gaps can leave every factor without a term (no stretch between them holds 2m + 1 phase samples).
         if (d == stats::Deviation::oadev && out.curves.back().curve.tau_s.empty())
-            throw std::invalid_argument("no averaging time has a term between the gaps: the longest gap-free stretch "
-                                        "holds " + std::to_string(record.longest_segment().size()) +
-                                        " phase samples, the shortest averaging time needs 3 (is --tau0 the rows' spacing?)");
+            throw std::invalid_argument(
+                "no averaging time has a term between the gaps: the longest gap-free stretch "
+                "holds " +
+                std::to_string(record.longest_segment().size()) +
+                " phase samples, the shortest averaging time needs 3 (is --tau0 the rows' spacing?)");
     }
     const stats::AnalysedCurve& oadev = out.curves.front();
     out.terms = stats::fit_noise_terms(oadev.curve.tau_s, oadev.curve.dev, oadev.edf);
@@ -40,7 +43,8 @@ AllanCurves analyse_curves(const stats::PhaseRecord& record, const AllanRequest&
 }
 
 stats::PhaseRecord make_record(const std::vector<double>& v, double tau0_s, stats::InputKind kind) {
-    return kind == stats::InputKind::rate ? stats::PhaseRecord::from_rate(v, tau0_s) : stats::PhaseRecord::from_phase(v, tau0_s);
+    return kind == stats::InputKind::rate ? stats::PhaseRecord::from_rate(v, tau0_s)
+                                          : stats::PhaseRecord::from_phase(v, tau0_s);
 }
 
 }  // namespace
@@ -60,8 +64,8 @@ std::string AllanResult::drift_status_words() const {
     return drift_fit_status ? fit_status_words(*drift_fit_status) : drift_not_fitted;
 }
 
-void fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
-                       const FitOptions& options, AllanResult& out) {
+void fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values, const FitOptions& options,
+                       AllanResult& out) {
     try {
         const FitResult r = fit_drift(t_s, values, options);
         out.drift_fit_status = r.status;
@@ -77,15 +81,17 @@ std::optional<std::string> packing_caveat(const AllanResult& r, const stats::Ana
     const std::vector<double>& dev = curve.curve.dev;
     if (r.packed_samples == 0 || dev.empty()) return std::nullopt;
     const double moved_s = static_cast<double>(r.packed_most_slots) * r.tau0_s;
-    const double minimum_tau_s = curve.curve.tau_s[static_cast<std::size_t>(std::min_element(dev.begin(), dev.end()) - dev.begin())];
+    const double minimum_tau_s =
+        curve.curve.tau_s[static_cast<std::size_t>(std::min_element(dev.begin(), dev.end()) - dev.begin())];
     if (moved_s <= stats::kSpacingTolerance * minimum_tau_s) return std::nullopt;
     char text[400];
-    std::snprintf(text, sizeof text,
-                  "%zu samples came faster than tau0 (bursts, or a record that changes its rate) and were placed up to "
-                  "%zu slots (%.4g s) after their time, %.0f %% of tau = %.4g s at the curve's minimum: from there on "
-                  "the curve reads correlated noise, which depends on when a sample was taken, and may be biased; a gap "
-                  "right after such a stretch is closed up",
-                  r.packed_samples, r.packed_most_slots, moved_s, 100.0 * moved_s / minimum_tau_s, minimum_tau_s);
+    std::snprintf(
+        text, sizeof text,
+        "%zu samples came faster than tau0 (bursts, or a record that changes its rate) and were placed up to "
+        "%zu slots (%.4g s) after their time, %.0f %% of tau = %.4g s at the curve's minimum: from there on "
+        "the curve reads correlated noise, which depends on when a sample was taken, and may be biased; a gap "
+        "right after such a stretch is closed up",
+        r.packed_samples, r.packed_most_slots, moved_s, 100.0 * moved_s / minimum_tau_s, minimum_tau_s);
     return std::string(text);
 }
 

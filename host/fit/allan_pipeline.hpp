@@ -17,9 +17,11 @@ namespace driftlab::host::fit {
 struct AllanRequest {
     stats::InputKind kind = stats::InputKind::rate;
     stats::TauGridOptions grid;
-    std::vector<stats::Deviation> deviations = {stats::Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
-    bool remove_drift = true;   ///< fit eq. 1 and also analyse the residual (rate input only)
-    std::string kept_drift_status = "not requested";  ///< drift_not_fitted when remove_drift is false: the caller's reason
+    std::vector<stats::Deviation> deviations = {
+        stats::Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
+    bool remove_drift = true;      ///< fit eq. 1 and also analyse the residual (rate input only)
+    std::string kept_drift_status =
+        "not requested";   ///< drift_not_fitted when remove_drift is false: the caller's reason
     FitOptions drift_fit;  ///< the eq. 1 fit's options
     double confidence = stats::kOneSigmaConfidence;
 };
@@ -33,16 +35,16 @@ struct AllanCurves {
 
 struct AllanResult {
     double tau0_s = 0.0;
-    std::size_t samples = 0;      ///< grid slots (input samples plus gap slots)
-    std::size_t gap_samples = 0;  ///< slots that are gaps (missing, NaN)
-    std::size_t packed_samples = 0;  ///< samples placed 2 or more slots after their time (see UniformSeries)
+    std::size_t samples = 0;            ///< grid slots (input samples plus gap slots)
+    std::size_t gap_samples = 0;        ///< slots that are gaps (missing, NaN)
+    std::size_t packed_samples = 0;     ///< samples placed 2 or more slots after their time (see UniformSeries)
     std::size_t packed_most_slots = 0;  ///< the largest such displacement [slots]
     double longest_gap_free_s = 0.0;    ///< time the longest gap-free stretch of the grid spans: no term is longer
     AllanCurves raw;
     std::optional<AllanCurves> drift_removed;   ///< set when the drift was fitted and removed
-    std::optional<DriftParameters> drift;  ///< the eq. 1 fit used [counts, s]
+    std::optional<DriftParameters> drift;       ///< the eq. 1 fit used [counts, s]
     std::optional<FitStatus> drift_fit_status;  ///< the eq. 1 fit's status, when it ran
-    std::string drift_not_fitted;                    ///< else why not (not requested, phase input, the fit's error)
+    std::string drift_not_fitted;               ///< else why not (not requested, phase input, the fit's error)
     /// JSON's drift_status: the fit's status as fit --json spells it (iteration_limit), else drift_not_fitted.
     std::string drift_status_name() const;
     /// The same for a terminal, in the words of fit's table (fit_status_words: "not converged (iteration limit)").
@@ -67,7 +69,7 @@ std::optional<std::string> packing_caveat(const AllanResult& r, const stats::Ana
 
 /// The one place the turn-on drift enters the Allan analysis: fits eq. 1 to (t_s, values) and sets `out`'s drift
 /// (none when the fit fails or does not converge), drift_fit_status and, for a fit that threw, drift_not_fitted.
-void fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values,
-                       const FitOptions& options, AllanResult& out);
+void fit_turn_on_drift(const std::vector<double>& t_s, const std::vector<double>& values, const FitOptions& options,
+                       AllanResult& out);
 
 }  // namespace driftlab::host::fit

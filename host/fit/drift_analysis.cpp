@@ -58,7 +58,8 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
         throw DataError(series.source, 0, where + ": " + e.what());
     }
     out.plain = parameter_intervals(out.fit, 1.0);
-    out.widened = out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
+    out.widened =
+        out.whiteness.white ? out.plain : parameter_intervals(out.fit, out.whiteness.autocorrelation_time.tau);
 
     // First: a corrupt row is in every figure below.
     const stats::LoneValues lone = stats::lone_values(out.data.values, code_of(out.data));
@@ -73,8 +74,9 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     // exp(-100) of C1: the fit is singular, or reads a slow drift as T far beyond the record.
     const double span_s = out.data.t_s.back() - out.data.t_s.front();
     if (out.data.t_s.front() > 100.0 * span_s)
-        out.warnings.push_back("times start at " + significant(out.data.t_s.front(), 3) + " s, over 100x the record's span of " +
-                               significant(span_s, 3) + " s: eq. 1 counts from power-on; subtract the power-on time (or the "
+        out.warnings.push_back("times start at " + significant(out.data.t_s.front(), 3) +
+                               " s, over 100x the record's span of " + significant(span_s, 3) +
+                               " s: eq. 1 counts from power-on; subtract the power-on time (or the "
                                "first row's) from the time column");
     if (out.fit.status == FitStatus::singular)
         out.warnings.push_back("fit is singular (condition number " + fixed_point(out.fit.condition_number, 0) +
@@ -101,14 +103,16 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
     } else if (!w.white && w.autocorrelation_time.tau <= 1.0) {
         // Rejected, yet no positive correlation to widen by (negative lag-1 correlation, or a structure the window
         // stops before): the widened intervals are the plain ones, which cannot be vouched for.
-        out.warnings.push_back(not_white + ", but its integrated autocorrelation time is not above 1 sample: there is "
+        out.warnings.push_back(not_white +
+                               ", but its integrated autocorrelation time is not above 1 sample: there is "
                                "nothing to widen the intervals by, and they may still be too narrow");
     } else if (!w.white) {
         out.warnings.push_back(
             not_white + ": the plain intervals are too narrow by about x" + fixed_point(out.widened.inflation, 2) +
             " (autocorrelation time " + fixed_point(w.autocorrelation_time.tau, 2) + " samples, effective n " +
             fixed_point(static_cast<double>(n) / w.autocorrelation_time.tau, 0) + "); use the widened intervals" +
-            (w.autocorrelation_time.window_found ? "" : " (a lower bound: the correlation outlasts the lags examined)"));
+            (w.autocorrelation_time.window_found ? ""
+                                                 : " (a lower bound: the correlation outlasts the lags examined)"));
     } else if (lone.variance_share > 0.5) {
         // Ljung-Box divides by the residual's variance: values holding most of it set every rho_k near 0, whatever
         // the other rows do. An AR(1) residual with one impulse had been called white.
@@ -116,8 +120,9 @@ DriftAnalysis analyse_drift(const Series& series, const AnalysisOptions& options
         out.warnings.push_back(std::string("the verdict 'white' is that of the lone ") +
                                (several ? "values above, which hold" : "value above, which holds") +
                                " most of the variance the Ljung-Box test divides by (" +
-                               fixed_point(100.0 * w.fraction_inside, 1) + " % of ensemble lags inside +-2 sigma): leave " +
-                               (several ? "them" : "it") + " out with --exclude to test the other rows");
+                               fixed_point(100.0 * w.fraction_inside, 1) +
+                               " % of ensemble lags inside +-2 sigma): leave " + (several ? "them" : "it") +
+                               " out with --exclude to test the other rows");
     }
     // In rows that come in bursts every burst's end counts (17270 on the MPU6050 file): the longest says whether a
     // real gap is among them.

@@ -17,7 +17,7 @@ namespace driftlab::host::fit {
 struct AnalysisOptions {
     double t_min_s = -std::numeric_limits<double>::infinity();  ///< keep samples with t_s >= t_min_s
     double t_max_s = std::numeric_limits<double>::infinity();   ///< and t_s <= t_max_s
-    std::vector<TimeWindow> excluded;                            ///< and outside each of these (--exclude)
+    std::vector<TimeWindow> excluded;                           ///< and outside each of these (--exclude)
     FitOptions fit;
     stats::WhitenessOptions whiteness;
 };
@@ -26,16 +26,16 @@ struct AnalysisOptions {
 inline constexpr std::size_t kMinAnalysisSamples = 20;
 
 struct DriftAnalysis {
-    Series data;                      ///< the samples analysed (after the time restriction)
-    double sample_period_s = 0.0;     ///< median spacing [s]
-    std::size_t time_gaps = 0;        ///< spacings above 1.5x the median
+    Series data;                   ///< the samples analysed (after the time restriction)
+    double sample_period_s = 0.0;  ///< median spacing [s]
+    std::size_t time_gaps = 0;     ///< spacings above 1.5x the median
     FitResult fit;
     stats::WhitenessResult whiteness;
-    ParameterIntervals plain;         ///< assuming white residuals
-    ParameterIntervals widened;       ///< with the residual's autocorrelation time (= plain when white)
+    ParameterIntervals plain;    ///< assuming white residuals
+    ParameterIntervals widened;  ///< with the residual's autocorrelation time (= plain when white)
     std::vector<std::string> warnings;
-    bool t_beyond_record = false;     ///< T above 3x the record's end, or no curvature seen: only C1/T is determined
-    bool t_below_sampling = false;    ///< T below the sampling interval: the transient is not resolved
+    bool t_beyond_record = false;   ///< T above 3x the record's end, or no curvature seen: only C1/T is determined
+    bool t_below_sampling = false;  ///< T below the sampling interval: the transient is not resolved
 
     /// Whether the data determine C1 and T: not for a singular fit, nor where T is beyond the record (only their
     /// ratio, plain.initial_slope). The fit's values are then arbitrary (gyro C1 = -6.9e11 counts on a warm log).
@@ -53,7 +53,9 @@ inline constexpr const char* kNotDetermined = "not determined";
 /// Whether a time constant is too long for a record ending at `record_end_s` [s since power-on] to tell an
 /// exponential's size from its time constant: it is then nearly a straight slope over the record, of which only the
 /// ratio (the initial slope) is seen. Eq. 1's T here, and the gap diagnosis's second time constant.
-constexpr bool beyond_record(double time_constant_s, double record_end_s) { return time_constant_s > 3.0 * record_end_s; }
+constexpr bool beyond_record(double time_constant_s, double record_end_s) {
+    return time_constant_s > 3.0 * record_end_s;
+}
 
 /// Runs the analysis. Throws DataError (naming the file and series) when fewer than kMinAnalysisSamples
 /// samples are in range or the series is constant.

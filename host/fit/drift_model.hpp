@@ -8,9 +8,9 @@ namespace driftlab::host::fit {
 
 /// Eq. 1 parameters. C1 and C2 in the unit of the data (A/D counts for a canonical log), T in seconds.
 struct DriftParameters {
-    double c1 = 0.0;  ///< amplitude of the transient [counts]
-    double c2 = 0.0;  ///< value at power-on [counts]; settles at C1 + C2
-    double t_s = 1.0; ///< time constant T [s]
+    double c1 = 0.0;   ///< amplitude of the transient [counts]
+    double c2 = 0.0;   ///< value at power-on [counts]; settles at C1 + C2
+    double t_s = 1.0;  ///< time constant T [s]
 };
 
 /// Eq. 1 at time t [s].

@@ -32,10 +32,9 @@ void refuse_or_note_unused(const std::string& option, bool agrees, const std::st
 void check_sample_period(const std::vector<Series>& series, double period_s, FileAnalysis& out) {
     if (series.empty() || series.front().index_period_s > 0.0) return;  // the period times the rows: used
     const std::vector<double>& t_s = series.front().t_s;
-    refuse_or_note_unused("--sample-period/--tau0 " + significant(period_s, 6) + " s",
-                          stats::period_agrees(t_s, period_s),
-                          own_time_of(out) + ", whose rows are " + stats::spacing_text(t_s),
-                          "tables without a time column", out);
+    refuse_or_note_unused(
+        "--sample-period/--tau0 " + significant(period_s, 6) + " s", stats::period_agrees(t_s, period_s),
+        own_time_of(out) + ", whose rows are " + stats::spacing_text(t_s), "tables without a time column", out);
 }
 
 /// A table is timed by the column named; a log only ever by its t_s.
@@ -74,14 +73,16 @@ std::string FileAnalysis::failure_summary() const {
         const std::string own = "series '" + s.name + "': ";
         const bool named = s.error.rfind(own, 0) == 0;
         const std::string reason = named ? s.error.substr(own.size()) : s.error;
-        const auto same = std::find_if(by_reason.begin(), by_reason.end(), [&](const auto& r) { return named && r.first == reason; });
+        const auto same =
+            std::find_if(by_reason.begin(), by_reason.end(), [&](const auto& r) { return named && r.first == reason; });
         if (same != by_reason.end())
             same->second += ", '" + s.name + "'";
         else
             by_reason.emplace_back(reason, named ? "series '" + s.name + "'" : "");
     }
     std::string out;
-    for (const auto& [reason, names] : by_reason) out += (out.empty() ? "" : "; ") + (names.empty() ? reason : names + ": " + reason);
+    for (const auto& [reason, names] : by_reason)
+        out += (out.empty() ? "" : "; ") + (names.empty() ? reason : names + ": " + reason);
     return out;
 }
 

@@ -31,11 +31,11 @@ struct FileAnalysisRequest {
 struct LogOverview {
     LogMetadata metadata;
     std::size_t rows = 0;
-    double first_t_s = 0.0;              ///< [s since power-on]
-    double last_t_s = 0.0;               ///< [s since power-on]
-    std::size_t gap_events = 0;          ///< `# gap:` lines: the recorder lost the link
-    std::vector<std::string> channels;   ///< the channels the source really has, in Channel order
-    bool raw_codes = false;              ///< raw_<channel> columns beside the smoothed values
+    double first_t_s = 0.0;             ///< [s since power-on]
+    double last_t_s = 0.0;              ///< [s since power-on]
+    std::size_t gap_events = 0;         ///< `# gap:` lines: the recorder lost the link
+    std::vector<std::string> channels;  ///< the channels the source really has, in Channel order
+    bool raw_codes = false;             ///< raw_<channel> columns beside the smoothed values
 };
 
 struct SeriesOutcome {

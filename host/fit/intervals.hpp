@@ -18,8 +18,8 @@ namespace driftlab::host::fit {
 
 struct Estimate {
     double value = 0.0;
-    double stderr_ = 0.0;               ///< standard error (trailing _ because `stderr` is a macro)
-    std::array<double, 2> ci95{};       ///< [lo, hi]
+    double stderr_ = 0.0;          ///< standard error (trailing _ because `stderr` is a macro)
+    std::array<double, 2> ci95{};  ///< [lo, hi]
 };
 
 /// "value +- stderr" to the precision of the error; "value (no interval: the fit is singular)" when the error is not
@@ -27,13 +27,13 @@ struct Estimate {
 std::string with_error(const Estimate& e);
 
 struct ParameterIntervals {
-    Estimate c1, c2, t_s;              ///< in the data's unit; T in seconds
+    Estimate c1, c2, t_s;  ///< in the data's unit; T in seconds
     /// C1/T, the drift rate at power-on [data unit / s] (delta method over the covariance of C1 and T): what a
     /// record much shorter than T determines where C1 and T are not separately determined.
     Estimate initial_slope;
-    double dof = 0.0;                  ///< degrees of freedom of the t quantile
-    double t_quantile = 0.0;           ///< t_{0.975, dof}
-    double inflation = 1.0;            ///< factor applied to the standard errors (sqrt(tau))
+    double dof = 0.0;         ///< degrees of freedom of the t quantile
+    double t_quantile = 0.0;  ///< t_{0.975, dof}
+    double inflation = 1.0;   ///< factor applied to the standard errors (sqrt(tau))
 };
 
 /// Intervals from a fit. `tau` >= 1 is the integrated autocorrelation time of the residual (1 = white).

@@ -35,18 +35,18 @@ int scale_exponent(const std::vector<double>& y) {
 const char* stop_reason(Eigen::LevenbergMarquardtSpace::Status s) {
     using namespace Eigen::LevenbergMarquardtSpace;
     switch (s) {
-        case NotStarted: return "not started";
-        case Running: return "running";
-        case ImproperInputParameters: return "improper input parameters";
-        case RelativeReductionTooSmall: return "relative reduction of the sum of squares below ftol";
-        case RelativeErrorTooSmall: return "relative change of the parameters below xtol";
-        case RelativeErrorAndReductionTooSmall: return "both ftol and xtol met";
-        case CosinusTooSmall: return "residual orthogonal to the Jacobian (gtol)";
-        case TooManyFunctionEvaluation: return "too many function evaluations";
-        case FtolTooSmall: return "ftol too small, no further reduction possible";
-        case XtolTooSmall: return "xtol too small, no further improvement possible";
-        case GtolTooSmall: return "gtol too small, residual already orthogonal";
-        case UserAsked: return "stopped by the model";
+    case NotStarted: return "not started";
+    case Running: return "running";
+    case ImproperInputParameters: return "improper input parameters";
+    case RelativeReductionTooSmall: return "relative reduction of the sum of squares below ftol";
+    case RelativeErrorTooSmall: return "relative change of the parameters below xtol";
+    case RelativeErrorAndReductionTooSmall: return "both ftol and xtol met";
+    case CosinusTooSmall: return "residual orthogonal to the Jacobian (gtol)";
+    case TooManyFunctionEvaluation: return "too many function evaluations";
+    case FtolTooSmall: return "ftol too small, no further reduction possible";
+    case XtolTooSmall: return "xtol too small, no further improvement possible";
+    case GtolTooSmall: return "gtol too small, residual already orthogonal";
+    case UserAsked: return "stopped by the model";
     }
     return "unknown";
 }
@@ -55,9 +55,9 @@ const char* stop_reason(Eigen::LevenbergMarquardtSpace::Status s) {
 
 const char* fit_status_name(FitStatus s) {
     switch (s) {
-        case FitStatus::converged: return "converged";
-        case FitStatus::iteration_limit: return "iteration_limit";
-        case FitStatus::singular: return "singular";
+    case FitStatus::converged: return "converged";
+    case FitStatus::iteration_limit: return "iteration_limit";
+    case FitStatus::singular: return "singular";
     }
     return "unknown";
 }

@@ -44,7 +44,7 @@ struct FitOptions {
 struct FitResult {
     DriftParameters parameters;
     FitStatus status = FitStatus::converged;
-    std::string solver_stop;        ///< Eigen's stopping reason, for the curious
+    std::string solver_stop;  ///< Eigen's stopping reason, for the curious
     int iterations = 0;
     int function_evaluations = 0;
     std::size_t n = 0;              ///< samples fitted
@@ -54,8 +54,8 @@ struct FitResult {
     double condition_number = 0.0;  ///< of the column-scaled Jacobian (C1, C2, T)
     /// R of J = QR over (C1, C2, T) at the solution for the scaled data (R^T R = J^T J)
     Eigen::Matrix3d scaled_jacobian_r = Eigen::Matrix3d::Zero();
-    std::vector<double> residual;   ///< data - model, per sample
-    StartValues start;              ///< of the scaled data (T and the flags are the data's)
+    std::vector<double> residual;  ///< data - model, per sample
+    StartValues start;             ///< of the scaled data (T and the flags are the data's)
 
     /// Residual sum of squares [counts^2]; infinite where it is beyond a double.
     double rss() const { return std::ldexp(scaled_rss, 2 * scale_exponent); }

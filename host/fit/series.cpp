@@ -23,17 +23,20 @@ double units_per_second(const std::string& name) {
     return 1.0;
 }
 
-/// " (the series' rows run from 0 s to 2999 s)", for a message saying a range or window missed them; empty without rows.
+/// " (the series' rows run from 0 s to 2999 s)", for a message saying a range or window missed them; empty without
+/// rows.
 std::string rows_span(const Series& s) {
     if (s.t_s.empty()) return "";
-    return " (the series' rows run from " + format_double(s.t_s.front()) + " s to " + format_double(s.t_s.back()) + " s)";
+    return " (the series' rows run from " + format_double(s.t_s.front()) + " s to " + format_double(s.t_s.back()) +
+           " s)";
 }
 
 }  // namespace
 
 std::vector<Series> series_from_log(const LogData& log, const std::vector<std::string>& names) {
     for (const auto& name : names)
-        if (!channel_named(name)) throw UsageError("unknown channel '" + name + "' (channels: " + channel_name_list() + ")");
+        if (!channel_named(name))
+            throw UsageError("unknown channel '" + name + "' (channels: " + channel_name_list() + ")");
     std::vector<Series> out;
     for (std::uint8_t c = 0; c < kChannelCount; ++c) {
         const std::string name = kChannelNames[c];
@@ -60,9 +63,9 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
         time_index = table.column_index(time_column);
     } else {
         // The first three were the only names once: a table holding several keeps the time it had.
-        for (const char* candidate : {"t_s", "t", "time", "time_s", "timestamp", "timestamp_s", "t_ms", "time_ms",
-                                      "timestamp_ms", "t_us", "time_us", "timestamp_us", "t_ns", "time_ns",
-                                      "timestamp_ns"}) {
+        for (const char* candidate :
+             {"t_s", "t", "time", "time_s", "timestamp", "timestamp_s", "t_ms", "time_ms", "timestamp_ms", "t_us",
+              "time_us", "timestamp_us", "t_ns", "time_ns", "timestamp_ns"}) {
             const auto it = std::find(table.names.begin(), table.names.end(), candidate);
             if (it != table.names.end()) {
                 time_index = static_cast<std::size_t>(it - table.names.begin());
@@ -120,8 +123,9 @@ OpenedSource open_source(const std::string& path) {
     in.seekg(0);
     // Read as a table, a capture failed on its header's second line ("field 1 'port:': not a number").
     if (starts_as_capture(in))
-        throw DataError(path, 1, "a raw capture from `driftlab record`, not a log: rebuild its log with `driftlab decode " +
-                                     path + " -o LOG.csv` and analyse that");
+        throw DataError(path, 1,
+                        "a raw capture from `driftlab record`, not a log: rebuild its log with `driftlab decode " +
+                            path + " -o LOG.csv` and analyse that");
     in.clear();
     in.seekg(0);
     source.canonical_log = starts_as_log(in);
@@ -154,7 +158,8 @@ std::vector<Series> load_series(const std::string& path, const std::vector<std::
 
 std::size_t rows_in(const std::vector<double>& t_s, const TimeWindow& w, double t_min_s, double t_max_s) {
     const double from_s = std::max(w.from_s, t_min_s), to_s = std::min(w.to_s, t_max_s);
-    return static_cast<std::size_t>(std::count_if(t_s.begin(), t_s.end(), [&](double t) { return t >= from_s && t <= to_s; }));
+    return static_cast<std::size_t>(
+        std::count_if(t_s.begin(), t_s.end(), [&](double t) { return t >= from_s && t <= to_s; }));
 }
 
 std::vector<std::string> selection_notes(const std::vector<double>& t_s, double t_min_s, double t_max_s,
@@ -167,8 +172,9 @@ std::vector<std::string> selection_notes(const std::vector<double>& t_s, double 
         if (first != end)
             notes.push_back((from ? "--from " + format_double(t_min_s) : std::string()) + (from && to ? " " : "") +
                             (to ? "--to " + format_double(t_max_s) : std::string()) + " kept " +
-                            std::to_string(end - first) + " of " + counted(t_s.size(), "row") + ", t = " +
-                            format_double(*first) + " s" + (end - first > 1 ? " to " + format_double(*(end - 1)) + " s" : ""));
+                            std::to_string(end - first) + " of " + counted(t_s.size(), "row") +
+                            ", t = " + format_double(*first) + " s" +
+                            (end - first > 1 ? " to " + format_double(*(end - 1)) + " s" : ""));
     }
     for (const TimeWindow& w : excluded)
         if (const std::size_t taken = rows_in(t_s, w, t_min_s, t_max_s); taken > 0)
@@ -187,14 +193,15 @@ std::string too_few_kept(const Series& s, std::size_t kept, const std::string& w
 Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded) {
     const auto kept = [&](double t) { return t >= t_min_s && t <= t_max_s; };
     const auto left_out = [&](double t) {
-        return std::any_of(excluded.begin(), excluded.end(), [t](const TimeWindow& w) { return t >= w.from_s && t <= w.to_s; });
+        return std::any_of(excluded.begin(), excluded.end(),
+                           [t](const TimeWindow& w) { return t >= w.from_s && t <= w.to_s; });
     };
     // Each window on its own: one that holds no row is a mistaken time, as gap's --exclude says of a log.
     for (const TimeWindow& w : excluded) {
         if (rows_in(s.t_s, w, t_min_s, t_max_s) > 0) continue;
         throw DataError(s.source, 0,
-                        "series '" + s.name + "': " + w.by + " " + format_double(w.from_s) + ":" + format_double(w.to_s) +
-                            " holds no row" + rows_span(s));
+                        "series '" + s.name + "': " + w.by + " " + format_double(w.from_s) + ":" +
+                            format_double(w.to_s) + " holds no row" + rows_span(s));
     }
     Series out = s;
     out.t_s.clear();

@@ -86,7 +86,8 @@ OpenedSource open_source(const std::string& path);
 ReadOptions cut_line_options(const OpenedSource& source, const std::string& path, bool drop_cut_line);
 
 /// load_series() of a source open_source() opened (a command that first asks what the file is reads it once).
-std::vector<Series> load_series(OpenedSource source, const std::string& path, const std::vector<std::string>& names = {},
-                                const std::string& time_column = "", double sample_period_s = 1.0);
+std::vector<Series> load_series(OpenedSource source, const std::string& path,
+                                const std::vector<std::string>& names = {}, const std::string& time_column = "",
+                                double sample_period_s = 1.0);
 
 }  // namespace driftlab::host::fit

@@ -19,19 +19,21 @@ namespace driftlab::host::gap {
 namespace {
 
 constexpr int kCalibrationReplicates = 3;
-constexpr int kMaxSteps = 14;                 // regula falsi steps after the two bracket ends
-constexpr double kRelativeTolerance = 1e-4;   // of the target spread
+constexpr int kMaxSteps = 14;                // regula falsi steps after the two bracket ends
+constexpr double kRelativeTolerance = 1e-4;  // of the target spread
 
 int metadata_int(const LogData& log, const std::string& key, int fallback, int lo, int hi) {
     if (!log.metadata.has(key)) return fallback;
     const auto v = log.metadata.get_int(key);
     if (!v || *v < lo || *v > hi)
-        throw DataError(log.source_name, log.metadata.line_of(key),
-                        "metadata '" + key + "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        throw DataError(
+            log.source_name, log.metadata.line_of(key),
+            "metadata '" + key + "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return static_cast<int>(*v);
 }
 
-// Sum of the squared smoother weights (gap-method §1): order 0 -> 1/N; order 1 at the newest sample -> 2(2N-1)/(N(N+1)).
+// Sum of the squared smoother weights (gap-method §1): order 0 -> 1/N; order 1 at the newest sample ->
+// 2(2N-1)/(N(N+1)).
 double kernel_power(const Smoothing& s) {
     const double n = s.window;
     return s.fit_order == 0 ? 1.0 / n : 2.0 * (2.0 * n - 1.0) / (n * (n + 1.0));
@@ -59,7 +61,8 @@ Smoothing smoothing_from_log(const LogData& log) {
     if (log.metadata.has("sample_period_s")) {
         const auto v = log.metadata.get_double("sample_period_s");
         const std::uint64_t line = log.metadata.line_of("sample_period_s");
-        if (!v || !(*v > 0.0)) throw DataError(log.source_name, line, "metadata 'sample_period_s' must be a positive number [s]");
+        if (!v || !(*v > 0.0))
+            throw DataError(log.source_name, line, "metadata 'sample_period_s' must be a positive number [s]");
         // A wrong period misplaces every lag and band; bursts leave the mean alone, and lost frames are taken out.
         const std::vector<double> t = times_without_lost_frames(log);
         s.sample_period_s = *v;
@@ -132,8 +135,9 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
             for (std::size_t c = 0; c < kChannelCount; ++c) {
                 if (!channels[c]) continue;
                 // The spread is taken on the same eq. 1 residual the real log gave.
-                out[c] += short_lag_spread(fit::fit_drift(t_s, sim[c], start_at_model(m, static_cast<Channel>(c))).residual) /
-                          kCalibrationReplicates;
+                out[c] +=
+                    short_lag_spread(fit::fit_drift(t_s, sim[c], start_at_model(m, static_cast<Channel>(c))).residual) /
+                    kCalibrationReplicates;
             }
         }
         return out;
@@ -178,7 +182,8 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
 }
 
 std::array<bool, kChannelCount> deterministic_channels(const GapModel& model, const std::vector<double>& t_s,
-                                                       const std::array<bool, kChannelCount>& channels, std::uint64_t seed) {
+                                                       const std::array<bool, kChannelCount>& channels,
+                                                       std::uint64_t seed) {
     std::array<bool, kChannelCount> out{};
     sim::OutputRequest req;
     req.t_s = &t_s;
@@ -205,8 +210,10 @@ GapModel calibrate_base(const LogData& log, const sim::SimModel& unit, const std
         // positive and finite, and where it had to be moved fit C1 and C2 again at the new T, so that the model
         // keeps the log's level and slope (C1 alone is the slope times T: kept with a shortened T, it was a ramp).
         const double span_s = log.t_s.back() - log.t_s.front();
-        const double tau_s = std::isfinite(f.parameters.t_s) ? std::clamp(f.parameters.t_s, 1e-3 * span_s, 1e3 * span_s) : span_s;
-        const fit::DriftParameters d = tau_s == f.parameters.t_s ? f.parameters : fit::amplitudes_at(log.t_s, log.counts[c], tau_s);
+        const double tau_s =
+            std::isfinite(f.parameters.t_s) ? std::clamp(f.parameters.t_s, 1e-3 * span_s, 1e3 * span_s) : span_s;
+        const fit::DriftParameters d =
+            tau_s == f.parameters.t_s ? f.parameters : fit::amplitudes_at(log.t_s, log.counts[c], tau_s);
         model.base[c].drift = {d.c1, d.c2, tau_s};
         target[c] = short_lag_spread(f.residual);
     }

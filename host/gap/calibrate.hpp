@@ -33,7 +33,8 @@ void match_noise(GapModel& model, const std::vector<double>& t_s, const std::arr
 /// log's spread needs none beyond the converter's, or too little to carry a conversion across a code boundary) and
 /// no random effect. Their replicates cannot spread, so they give no null to compare with.
 std::array<bool, kChannelCount> deterministic_channels(const GapModel& model, const std::vector<double>& t_s,
-                                                       const std::array<bool, kChannelCount>& channels, std::uint64_t seed);
+                                                       const std::array<bool, kChannelCount>& channels,
+                                                       std::uint64_t seed);
 
 /// The calibrated base model of `log` on `unit` (front ends and converter; not its effects), for the selected
 /// channels. `spread` (optional) receives each channel's short-lag spread of the eq. 1 residual, the white noise's

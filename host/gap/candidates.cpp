@@ -68,20 +68,35 @@ toml::array per_channel(Channel c, double v, double others) {
 
 const std::vector<CandidateInfo>& candidate_list() {
     static const std::vector<CandidateInfo> list = {
-        {"thermal_second_tc", {"c3_unit", "t2_s"}, FitRoute::deterministic,
+        {"thermal_second_tc",
+         {"c3_unit", "t2_s"},
+         FitRoute::deterministic,
          "log a second power-on after a full cool-down: an exponential repeats at the same T2, a random walk does not"},
-        {"ambient_cycle", {"amplitude_unit", "period_s", "phase_rad"}, FitRoute::deterministic,
+        {"ambient_cycle",
+         {"amplitude_unit", "period_s", "phase_rad"},
+         FitRoute::deterministic,
          "log a board thermistor, or log long enough for 3 cycles: the line at 1/P must be coherent with temperature; "
          "log again at a slightly different sample rate: an aliased mains line moves, a thermal cycle does not"},
-        {"gauss_markov", {"sigma_unit", "tau_s"}, FitRoute::spectral,
-         "log at least 20 correlation times: one Gauss-Markov gives an ADEV bump less than a decade wide, flicker a plateau"},
-        {"flicker", {"b_unit"}, FitRoute::spectral,
+        {"gauss_markov",
+         {"sigma_unit", "tau_s"},
+         FitRoute::spectral,
+         "log at least 20 correlation times: one Gauss-Markov gives an ADEV bump less than a decade wide, flicker a "
+         "plateau"},
+        {"flicker",
+         {"b_unit"},
+         FitRoute::spectral,
          "log longer (>= 1.5 decades of flat ADEV separate flicker from a single Gauss-Markov process)"},
-        {"rate_random_walk", {"k_unit_per_sqrt_s"}, FitRoute::spectral,
+        {"rate_random_walk",
+         {"k_unit_per_sqrt_s"},
+         FitRoute::spectral,
          "repeat the run: a random walk differs between runs, a thermal exponential repeats"},
-        {"spikes", {"rate_hz", "scale_counts"}, FitRoute::simulated,
+        {"spikes",
+         {"rate_hz", "scale_counts"},
+         FitRoute::simulated,
          "log the RAW codes too: a spike before the smoother is kernel-shaped, a link error is a single sample"},
-        {"adc_dnl", {}, FitRoute::code_density,
+        {"adc_dnl",
+         {},
+         FitRoute::code_density,
          "sweep the input slowly through the codes (a code-density test, IEEE 1241): DNL repeats at the same codes, "
          "whatever the noise or the drift"},
     };
@@ -90,17 +105,25 @@ const std::vector<CandidateInfo>& candidate_list() {
 
 const std::vector<NotIdentifiable>& not_identifiable_list() {
     static const std::vector<NotIdentifiable> list = {
-        {"cross_axis", "a static log has constant inputs: misalignment is absorbed in the biases (needs multi-position data)"},
-        {"g_sensitivity", "gravity is constant on a static table: the gyro's g-sensitivity is absorbed in its bias (needs tilts)"},
-        {"temp_scale_factor", "the true rate is zero at rest: a scale-factor tempco multiplies zero (needs a turntable)"},
-        {"vibration", "the table is vibration-isolated: no motion input to identify (needs a shaker or accelerometer reference)"},
+        {"cross_axis",
+         "a static log has constant inputs: misalignment is absorbed in the biases (needs multi-position data)"},
+        {"g_sensitivity",
+         "gravity is constant on a static table: the gyro's g-sensitivity is absorbed in its bias (needs tilts)"},
+        {"temp_scale_factor",
+         "the true rate is zero at rest: a scale-factor tempco multiplies zero (needs a turntable)"},
+        {"vibration",
+         "the table is vibration-isolated: no motion input to identify (needs a shaker or accelerometer reference)"},
         {"saturation", "nothing approaches the rails at rest (needs motion beyond the range)"},
-        {"adc_inl", "at rest the code follows time, so INL(code) and a slow drift (time) cannot be separated (needs several offsets)"},
+        {"adc_inl",
+         "at rest the code follows time, so INL(code) and a slow drift (time) cannot be separated (needs several "
+         "offsets)"},
         {"supply_coupling", "no supply channel is logged (log a Vcc divider channel)"},
-        {"mains_alias", "aliased mains pickup is a sine in the output, the same shape ambient_cycle fits; from one log at one "
-                        "sample rate the two are one candidate (log at a slightly different rate: an alias moves)"},
-        {"clock_jitter", "at rest the values hardly change between instants, so a timing error moves them by dy/dt x jitter, "
-                         "about nothing; the log's own timestamps are summarised under timing (needs a reference clock for the drift)"},
+        {"mains_alias",
+         "aliased mains pickup is a sine in the output, the same shape ambient_cycle fits; from one log at one "
+         "sample rate the two are one candidate (log at a slightly different rate: an alias moves)"},
+        {"clock_jitter",
+         "at rest the values hardly change between instants, so a timing error moves them by dy/dt x jitter, "
+         "about nothing; the log's own timestamps are summarised under timing (needs a reference clock for the drift)"},
     };
     return list;
 }
@@ -109,8 +132,9 @@ std::vector<NotIdentifiable> not_tried_without_raw_codes() {
     std::vector<NotIdentifiable> out;
     for (const auto& info : candidate_list())
         if (info.route == FitRoute::code_density)
-            out.push_back({info.effect, "fitted to the raw codes of a raw-mode log (a raw_<channel> column), which this log "
-                                        "lacks; on smoothed outputs alone the frac cells locate it, weakly"});
+            out.push_back({info.effect,
+                           "fitted to the raw codes of a raw-mode log (a raw_<channel> column), which this log "
+                           "lacks; on smoothed outputs alone the frac cells locate it, weakly"});
     return out;
 }
 

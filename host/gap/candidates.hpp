@@ -16,15 +16,15 @@ namespace driftlab::host::gap {
 enum class FitRoute {
     deterministic,  ///< a mean shape: variable projection on the fitting part of the log, jointly with eq. 1
     spectral,       ///< a Gaussian process: debiased Whittle likelihood of the differenced residual (spectral_fit)
-    simulated,      ///< a non-Gaussian process: Nelder-Mead on log-parameters against the battery (common random numbers)
-    code_density,   ///< the converter's transitions: a probit fit per code to a raw-mode log's raw codes (code_density)
+    simulated,  ///< a non-Gaussian process: Nelder-Mead on log-parameters against the battery (common random numbers)
+    code_density,  ///< the converter's transitions: a probit fit per code to a raw-mode log's raw codes (code_density)
 };
 
 struct CandidateInfo {
-    std::string effect;                    ///< library name (sim/effects)
-    std::vector<std::string> param_keys;   ///< unit-suffixed; "_unit" is the channel's unit (dps or g); empty: per fit
+    std::string effect;                   ///< library name (sim/effects)
+    std::vector<std::string> param_keys;  ///< unit-suffixed; "_unit" is the channel's unit (dps or g); empty: per fit
     FitRoute route;
-    std::string settle;                    ///< the experiment that separates it from its look-alikes
+    std::string settle;  ///< the experiment that separates it from its look-alikes
 };
 
 /// The candidates, in the order they are tried.

@@ -37,8 +37,8 @@ double golden_minimum(const std::function<double(double)>& f, double a, double b
 
 struct Histograms {
     long first_code = 0;
-    std::vector<double> observed;                    ///< per code from first_code
-    std::vector<std::pair<double, double>> levels;   ///< (level bin centre, rows)
+    std::vector<double> observed;                   ///< per code from first_code
+    std::vector<std::pair<double, double>> levels;  ///< (level bin centre, rows)
 };
 
 // G2 of the observed codes against the ideal quantiser at noise deviation s.
@@ -61,12 +61,14 @@ double deviance(const Histograms& h, double s) {
 }
 
 void check_rows(const std::vector<double>& raw, const std::vector<double>& level) {
-    if (raw.size() != level.size() || raw.size() < 2) throw std::invalid_argument("raw codes and levels differ in length or are too short");
+    if (raw.size() != level.size() || raw.size() < 2)
+        throw std::invalid_argument("raw codes and levels differ in length or are too short");
 }
 
 // The rows that hold a code: a negative one marks a row whose RAW frame was lost (the recorder writes -1), which no
 // converter makes and which would stretch the histogram over hundreds of empty codes.
-std::pair<std::vector<double>, std::vector<double>> coded_rows(const std::vector<double>& raw, const std::vector<double>& level) {
+std::pair<std::vector<double>, std::vector<double>> coded_rows(const std::vector<double>& raw,
+                                                               const std::vector<double>& level) {
     check_rows(raw, level);
     std::pair<std::vector<double>, std::vector<double>> out;
     for (std::size_t i = 0; i < raw.size(); ++i)
@@ -113,7 +115,8 @@ double code_density_excess(const std::vector<double>& raw, const std::vector<dou
     return d.codes < 3 ? 0.0 : std::log1p(d.g2 / static_cast<double>(d.codes - 2));
 }
 
-TransitionFit fit_transitions(const std::vector<double>& all_raw, const std::vector<double>& all_level, int min_each_side) {
+TransitionFit fit_transitions(const std::vector<double>& all_raw, const std::vector<double>& all_level,
+                              int min_each_side) {
     const auto [raw, level] = coded_rows(all_raw, all_level);
     const double s0 = density_of_coded(raw, level).s;
     // Per crossed transition, the rows within 4 s0 of its ideal place, pooled by level bin: (at or above j, below j).
@@ -143,7 +146,8 @@ TransitionFit fit_transitions(const std::vector<double>& all_raw, const std::vec
             double sum = 0.0;
             for (const auto& [bin, n] : c.bins) {
                 const double z = (static_cast<double>(bin) * kLevelBin - t) / s;
-                sum -= n.first * std::log(std::max(normal_cdf(z), 1e-300)) + n.second * std::log(std::max(normal_cdf(-z), 1e-300));
+                sum -= n.first * std::log(std::max(normal_cdf(z), 1e-300)) +
+                       n.second * std::log(std::max(normal_cdf(-z), 1e-300));
             }
             return sum;
         };

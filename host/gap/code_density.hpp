@@ -11,9 +11,9 @@ namespace driftlab::host::gap {
 /// The ideal-quantiser model of a log's raw codes: integer codes `raw`, code c for inputs in [c - 1/2, c + 1/2),
 /// the input Gaussian with deviation `s` around `level` (the smoothed output of the same rows, [counts]).
 struct CodeDensity {
-    double s = 0.0;    ///< the noise deviation that best explains the codes (minimum deviance) [counts]
-    double g2 = 0.0;   ///< multinomial deviance of the codes' histogram at that s
-    int codes = 0;     ///< codes from the lowest to the highest seen
+    double s = 0.0;   ///< the noise deviation that best explains the codes (minimum deviance) [counts]
+    double g2 = 0.0;  ///< multinomial deviance of the codes' histogram at that s
+    int codes = 0;    ///< codes from the lowest to the highest seen
 };
 
 /// Fits s; needs raw.size() == level.size() and two rows with a code (std::invalid_argument otherwise). Rows with a
@@ -37,8 +37,8 @@ struct FittedTransition {
 /// side near them are fitted, and those whose estimate reaches the end of the search range (the rows do not place
 /// them) are left out; the result is increasing (a transition at or below the previous one is put just above it).
 struct TransitionFit {
-    double s = 0.0;                              ///< [counts]
-    std::vector<FittedTransition> transitions;   ///< by code
+    double s = 0.0;                             ///< [counts]
+    std::vector<FittedTransition> transitions;  ///< by code
 };
 TransitionFit fit_transitions(const std::vector<double>& raw, const std::vector<double>& level, int min_each_side = 20);
 

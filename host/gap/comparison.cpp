@@ -54,7 +54,8 @@ Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& repli
         }
     }
     std::vector<double> maxima(static_cast<std::size_t>(r_count));
-    for (Eigen::Index r = 0; r < r_count; ++r) maxima[static_cast<std::size_t>(r)] = cmp.loo_z.row(r).cwiseAbs().maxCoeff();
+    for (Eigen::Index r = 0; r < r_count; ++r)
+        maxima[static_cast<std::size_t>(r)] = cmp.loo_z.row(r).cwiseAbs().maxCoeff();
     cmp.threshold = monte_carlo_bound(maxima, alpha);
     return cmp;
 }
@@ -72,14 +73,17 @@ double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const C
     return real / (null / static_cast<double>(cmp.loo_z.rows()));
 }
 
-double gap_score_threshold(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep, double alpha) {
+double gap_score_threshold(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep,
+                           double alpha) {
     const Eigen::Index r_count = cmp.loo_z.rows();
     std::vector<double> per_replicate(static_cast<std::size_t>(r_count), 0.0);
     std::size_t count = 0;
     for (std::size_t j = 0; j < layout.size(); ++j) {
         if (!keep(layout[j])) continue;
         ++count;
-        for (Eigen::Index r = 0; r < r_count; ++r) per_replicate[static_cast<std::size_t>(r)] += cmp.loo_z(r, static_cast<Eigen::Index>(j)) * cmp.loo_z(r, static_cast<Eigen::Index>(j));
+        for (Eigen::Index r = 0; r < r_count; ++r)
+            per_replicate[static_cast<std::size_t>(r)] +=
+                cmp.loo_z(r, static_cast<Eigen::Index>(j)) * cmp.loo_z(r, static_cast<Eigen::Index>(j));
     }
     double mean = 0.0;
     for (double v : per_replicate) mean += v / static_cast<double>(r_count);
@@ -88,7 +92,8 @@ double gap_score_threshold(const Comparison& cmp, const std::vector<Cell>& layou
     return monte_carlo_bound(per_replicate, alpha);
 }
 
-std::vector<LocatedCell> locate(const std::vector<double>& real, const Comparison& cmp, const std::vector<Cell>& layout) {
+std::vector<LocatedCell> locate(const std::vector<double>& real, const Comparison& cmp,
+                                const std::vector<Cell>& layout) {
     std::vector<LocatedCell> out;
     for (std::size_t j = 0; j < layout.size(); ++j) {
         const double diff = real[j] - cmp.sim_mean[j];
@@ -105,7 +110,8 @@ std::vector<LocatedCell> locate(const std::vector<double>& real, const Compariso
         c.interval_high = layout[j].log_scale ? std::exp(diff + half) : diff + half;
         out.push_back(c);
     }
-    std::sort(out.begin(), out.end(), [](const LocatedCell& a, const LocatedCell& b) { return std::abs(a.z) > std::abs(b.z); });
+    std::sort(out.begin(), out.end(),
+              [](const LocatedCell& a, const LocatedCell& b) { return std::abs(a.z) > std::abs(b.z); });
     return out;
 }
 

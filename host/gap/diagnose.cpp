@@ -60,7 +60,8 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
                 return e.channel == kChannelNames[c] && candidate(e.effect).route == route;
             });
         };
-        const bool shaped = on_channel(result.accepted, FitRoute::deterministic) || on_channel(result.given.refitted, FitRoute::deterministic);
+        const bool shaped = on_channel(result.accepted, FitRoute::deterministic) ||
+                            on_channel(result.given.refitted, FitRoute::deterministic);
         if (on_channel(result.accepted, FitRoute::spectral) && !shaped) tested.push_back(c);
     }
     std::vector<LevelStep> out;
@@ -75,8 +76,8 @@ std::vector<LevelStep> check_level_steps(const GapResult& result, const LogData&
             effects.push_back(e.effect);
             for (const auto& kv : e.params) params.push_back(kv.second);
         }
-        out.push_back(test_level_step(result.final_model, static_cast<Channel>(c), log.t_s, log.counts[c], effects, params,
-                                      replicates, options.seed + 17, options.threads, alpha));
+        out.push_back(test_level_step(result.final_model, static_cast<Channel>(c), log.t_s, log.counts[c], effects,
+                                      params, replicates, options.seed + 17, options.threads, alpha));
     }
     return out;
 }
@@ -161,18 +162,20 @@ std::string noise_free_text(const std::vector<NoiseFreeChannel>& channels) {
     for (const auto& k : channels) {
         char spread[32];
         std::snprintf(spread, sizeof spread, "%.2g", k.spread_counts);
-        out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(k.channel)]) + " with a short-lag spread of " +
-               spread + " counts";
+        out += (out.empty() ? "" : ", ") + std::string(kChannelNames[channel_index(k.channel)]) +
+               " with a short-lag spread of " + spread + " counts";
     }
     return out;
 }
 
 GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options) {
     if (options.replicates < 10) throw UsageError("--replicates: need at least 10");
-    if (!(options.fit_fraction > 0.2 && options.fit_fraction < 0.9)) throw UsageError("fit fraction must be in (0.2, 0.9)");
+    if (!(options.fit_fraction > 0.2 && options.fit_fraction < 0.9))
+        throw UsageError("fit fraction must be in (0.2, 0.9)");
     if (log.size() < kMinSamples)
-        throw DataError(log.source_name, 0, "gap needs at least " + std::to_string(kMinSamples) + " samples, got " +
-                                                std::to_string(log.size()));
+        throw DataError(
+            log.source_name, 0,
+            "gap needs at least " + std::to_string(kMinSamples) + " samples, got " + std::to_string(log.size()));
     for (std::size_t c = 0; c < kChannelCount; ++c)
         if (options.channels[c] && !log.recorded[c])
             throw UsageError(std::string("--channel ") + kChannelNames[c] + ": " + log.source_name +
@@ -182,8 +185,9 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     result.constant_channels = constant_channels(log, options);
     if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; })) {
         const std::string constant = constant_channels_text(result.constant_channels);
-        throw DataError(log.source_name, 0,
-                        "no selected channel varies" + (constant.empty() ? "" : " (" + constant + ")") + ": nothing to compare");
+        throw DataError(
+            log.source_name, 0,
+            "no selected channel varies" + (constant.empty() ? "" : " (" + constant + ")") + ": nothing to compare");
     }
 
     const auto tell = [&](const std::string& stage) {
@@ -208,7 +212,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
             result.noise_free.push_back({static_cast<Channel>(c), spread[c]});
         }
     if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; }))
-        throw DataError(log.source_name, 0, "no selected channel has noise to compare (" + noise_free_text(result.noise_free) + ")");
+        throw DataError(log.source_name, 0,
+                        "no selected channel has noise to compare (" + noise_free_text(result.noise_free) + ")");
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
     result.left_out = log.cuts;
     result.saturated = saturated_channels(log, result.channels);
@@ -223,7 +228,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         const auto column = log.optional_columns.find(std::string("raw_") + kChannelNames[c]);
         if (!result.channels[c] || column == log.optional_columns.end() || column->second.size() != log.size() ||
-            !std::all_of(column->second.begin(), column->second.end(), [](double v) { return std::isfinite(v) && v == std::round(v); }))
+            !std::all_of(column->second.begin(), column->second.end(),
+                         [](double v) { return std::isfinite(v) && v == std::round(v); }))
             continue;
         raw[c] = &column->second;
         battery.raw_codes[c] = true;
@@ -232,9 +238,10 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     if (!any_raw_codes(result)) result.not_tried = not_tried_without_raw_codes();
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
-    auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit, double& held,
-                     double& bound) {
-        cmp = compare(result.real_values, run_replicates(model, log.t_s, battery, options.replicates, options.seed, options.threads),
+    auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit,
+                     double& held, double& bound) {
+        cmp = compare(result.real_values,
+                      run_replicates(model, log.t_s, battery, options.replicates, options.seed, options.threads),
                       options.alpha);
         located = locate(result.real_values, cmp, result.layout);
         fit = gap_score(cmp, result.layout, in_segment(Segment::fit));
@@ -242,7 +249,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         bound = gap_score_threshold(cmp, result.layout, in_segment(Segment::heldout), options.alpha);
     };
     tell("comparing with " + std::to_string(options.replicates) + " replicates");
-    judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout, result.gap_bound_before);
+    judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout,
+          result.gap_bound_before);
 
     result.final_model = result.whole_log_model = result.base;
     result.diffuse_gap = result.located.empty() && result.gap_before_heldout > result.gap_bound_before;
@@ -251,7 +259,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         result.verdict = "none";
     } else if (options.explain) {
         // The channels with located cells; for a diffuse gap, every channel (each is judged on its own bound).
-        std::array<bool, kChannelCount> open = result.located.empty() ? result.channels : std::array<bool, kChannelCount>{};
+        std::array<bool, kChannelCount> open =
+            result.located.empty() ? result.channels : std::array<bool, kChannelCount>{};
         for (const auto& l : result.located) {
             const int ci = result.layout[l.index].channel_index;
             if (ci >= 0) open[static_cast<std::size_t>(ci)] = true;
@@ -290,8 +299,10 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         // as partial explanations.
         tell("testing for level steps");
         result.level_steps = check_level_steps(result, log, options);
-        if (std::any_of(result.level_steps.begin(), result.level_steps.end(), [](const LevelStep& s) { return s.significant; }) ||
-            std::any_of(result.accepted.begin(), result.accepted.end(), [](const Explanation& e) { return e.shape_steps.steps_win; }))
+        if (std::any_of(result.level_steps.begin(), result.level_steps.end(),
+                        [](const LevelStep& s) { return s.significant; }) ||
+            std::any_of(result.accepted.begin(), result.accepted.end(),
+                        [](const Explanation& e) { return e.shape_steps.steps_win; }))
             result.verdict = "unexplained";
     }
     return result;

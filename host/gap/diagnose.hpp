@@ -13,21 +13,21 @@
 #include "host/gap/candidates.hpp"
 #include "host/gap/comparison.hpp"
 #include "host/gap/explain.hpp"
-#include "host/gap/level_step.hpp"
 #include "host/gap/gap_model.hpp"
+#include "host/gap/level_step.hpp"
 #include "host/gap/statistics.hpp"
 #include "host/log/log_data.hpp"
 
 namespace driftlab::host::gap {
 
 struct GapOptions {
-    int replicates = 40;            ///< R of the comparison (>= 10)
+    int replicates = 40;  ///< R of the comparison (>= 10)
     std::uint64_t seed = 1;
-    double alpha = 0.05;            ///< family-wise level of the located cells
+    double alpha = 0.05;                         ///< family-wise level of the located cells
     Holdout holdout = BatteryOptions{}.holdout;  ///< how the log is split into fitting and held-out parts
-    double fit_fraction = 0.6;      ///< forecast: first part of the log used to fit candidates; the rest is held out
+    double fit_fraction = 0.6;  ///< forecast: first part of the log used to fit candidates; the rest is held out
     std::array<bool, kChannelCount> channels{};  ///< all false = every channel whose values vary
-    bool explain = true;            ///< false: locate only
+    bool explain = true;                         ///< false: locate only
     /// Also search the candidates when no cell is located but the held-out gap score exceeds its bound (a diffuse
     /// gap); an accepted effect becomes the verdict, none accepted leaves it "none". Off by default: the
     /// false-positive rate gap-eval measures is without it.
@@ -76,9 +76,9 @@ struct SaturatedChannel {
 /// every tau, which no effect closes; an impulse from the sensor is `spikes`' to explain.
 struct LoneValueChannel {
     Channel channel = Channel::gyro;
-    std::vector<double> t_s;       ///< the lone rows' times
-    double variance_share = 0.0;   ///< their part of the sum of squared first differences
-    std::string warning;           ///< names the rows and the --exclude windows that leave them out (not the channel)
+    std::vector<double> t_s;      ///< the lone rows' times
+    double variance_share = 0.0;  ///< their part of the sum of squared first differences
+    std::string warning;          ///< names the rows and the --exclude windows that leave them out (not the channel)
 };
 
 struct GapResult {
@@ -87,11 +87,11 @@ struct GapResult {
     std::vector<NoiseFreeChannel> noise_free;        ///< varying channels left out for want of noise to compare
     std::vector<SaturatedChannel> saturated;         ///< analysed channels with rows flagged saturated
     std::vector<LoneValueChannel> lone_values;       ///< analysed channels with lone values worth a warning
-    std::array<bool, kChannelCount> raw_codes{};  ///< analysed channels whose raw codes (raw-mode log) were used
-    std::vector<NotIdentifiable> not_tried;       ///< candidates this log could not have tried, with the reason
-    GapModel base;                   ///< the calibrated base (with the model file's effects: `given`)
-    GivenEffects given;              ///< the model file's effects: refitted to this log (final parameters) or kept
-    GapModel final_model;            ///< base plus the accepted effects (parameters of the fitting part)
+    std::array<bool, kChannelCount> raw_codes{};     ///< analysed channels whose raw codes (raw-mode log) were used
+    std::vector<NotIdentifiable> not_tried;          ///< candidates this log could not have tried, with the reason
+    GapModel base;                                   ///< the calibrated base (with the model file's effects: `given`)
+    GivenEffects given;    ///< the model file's effects: refitted to this log (final parameters) or kept
+    GapModel final_model;  ///< base plus the accepted effects (parameters of the fitting part)
     /// The same with the added shapes' and processes' parameters estimated again on the whole log
     /// (Explanation::whole_log_params): the unit's estimate, which --model-out writes.
     GapModel whole_log_model;
@@ -102,17 +102,18 @@ struct GapResult {
     double gap_before_fit = 1.0, gap_before_heldout = 1.0;
     double gap_after_fit = 1.0, gap_after_heldout = 1.0;
     double gap_bound_before = 1.0, gap_bound_after = 1.0;  ///< level-alpha bounds of the held-out scores (closed gap)
-    std::vector<Explanation> tried;      ///< every candidate fit, accepted first
-    std::vector<Explanation> accepted;   ///< added stepwise, in order
+    std::vector<Explanation> tried;                        ///< every candidate fit, accepted first
+    std::vector<Explanation> accepted;                     ///< added stepwise, in order
     std::vector<PathChoice> paths;       ///< where a process and a mean shape were each followed as the next effect
     std::vector<LevelStep> level_steps;  ///< per channel with accepted effects: a step the model leaves unexplained?
     /// No cell located, yet the held-out gap score exceeds its bound: many cells a little off, none alone beyond
     /// the family-wise threshold. The verdict stays "none" unless the search (diffuse_searched) accepts an effect.
     bool diffuse_gap = false;
-    bool diffuse_searched = false;  ///< the candidates were tried on the diffuse gap (--search-diffuse, not --locate-only)
-    std::string verdict;                 ///< an effect name, "none" or "unexplained" (also when a level step remains)
-    TimingCheck timing;                  ///< without the joins of left_out
-    std::vector<LogCut> left_out;        ///< stretches the user left out of the log (LogData::cuts)
+    bool diffuse_searched =
+        false;            ///< the candidates were tried on the diffuse gap (--search-diffuse, not --locate-only)
+    std::string verdict;  ///< an effect name, "none" or "unexplained" (also when a level step remains)
+    TimingCheck timing;   ///< without the joins of left_out
+    std::vector<LogCut> left_out;  ///< stretches the user left out of the log (LogData::cuts)
 };
 
 /// Diagnoses `log` against the unit `unit` (front ends and converter). Throws DataError (naming the log) when it

@@ -20,7 +20,8 @@ report::Plot rate_plot(const EvalScores& s, const std::string& title, const std:
     std::vector<double> levels;
     for (const auto& z : s.by_size) {
         if (z.generator == "none") continue;
-        if (std::find(generators.begin(), generators.end(), z.generator) == generators.end()) generators.push_back(z.generator);
+        if (std::find(generators.begin(), generators.end(), z.generator) == generators.end())
+            generators.push_back(z.generator);
         if (std::find(levels.begin(), levels.end(), z.level) == levels.end()) levels.push_back(z.level);
     }
     if (generators.empty()) throw UsageError("gap-eval --plot: the run planted no effect, so there is no size to plot");
@@ -42,7 +43,8 @@ report::Plot rate_plot(const EvalScores& s, const std::string& title, const std:
         const double offset = std::pow(1.04, static_cast<double>(g) - 0.5 * static_cast<double>(generators.size() - 1));
         for (const auto& z : s.by_size) {
             if (z.generator != generators[g] || z.logs == 0) continue;
-            const auto ci = stats::clopper_pearson(static_cast<std::size_t>(z.*count), static_cast<std::size_t>(z.logs));
+            const auto ci =
+                stats::clopper_pearson(static_cast<std::size_t>(z.*count), static_cast<std::size_t>(z.logs));
             series.x.push_back(z.level * offset);
             series.y.push_back(static_cast<double>(z.*count) / z.logs);
             series.y_low.push_back(ci.lower);
@@ -66,13 +68,14 @@ report::Plot rate_plot(const EvalScores& s, const std::string& title, const std:
 std::vector<std::string> write_eval_plots(const EvalScores& s, const std::string& dir) {
     std::vector<std::string> images;
     // Detection is a_50's own definition: about half the logs at size 1 on seeds that did not measure it.
-    for (const auto& image : report::render_plot(
-             rate_plot(s, "Detected (a verdict other than none), scoring seeds", "share of logs detected", &SizeScore::detected, 0.5),
-             dir, "gap_eval_detected"))
+    for (const auto& image : report::render_plot(rate_plot(s, "Detected (a verdict other than none), scoring seeds",
+                                                           "share of logs detected", &SizeScore::detected, 0.5),
+                                                 dir, "gap_eval_detected"))
         images.push_back(image);
-    for (const auto& image : report::render_plot(
-             rate_plot(s, "Right verdict (top-1; out of library: not attributed), scoring seeds", "share of logs", &SizeScore::top1, 0.8),
-             dir, "gap_eval_top1"))
+    for (const auto& image :
+         report::render_plot(rate_plot(s, "Right verdict (top-1; out of library: not attributed), scoring seeds",
+                                       "share of logs", &SizeScore::top1, 0.8),
+                             dir, "gap_eval_top1"))
         images.push_back(image);
     return images;
 }

@@ -43,21 +43,25 @@ TargetScore target(std::string name, std::size_t count, std::size_t logs, double
 std::vector<TargetScore> read_targets(const EvalScores& s) {
     std::vector<TargetScore> out;
     const std::string at_level = " at " + fixed_point(kTargetLevel, 0) + " x a_50";
-    if (s.clean) out.push_back(target("false positives: clean logs given a verdict", s.clean_flagged, s.clean, 0.05, true));
+    if (s.clean)
+        out.push_back(target("false positives: clean logs given a verdict", s.clean_flagged, s.clean, 0.05, true));
     for (const auto& z : s.by_size) {
         if (z.generator == "none" || z.level != kTargetLevel || z.logs == 0) continue;
         if (!z.truth.empty()) {
-            out.push_back(target("top-1: " + z.generator + " -> " + z.truth + at_level, static_cast<std::size_t>(z.top1),
-                                 static_cast<std::size_t>(z.logs), 0.8, false));
+            out.push_back(target("top-1: " + z.generator + " -> " + z.truth + at_level,
+                                 static_cast<std::size_t>(z.top1), static_cast<std::size_t>(z.logs), 0.8, false));
             continue;
         }
         const std::size_t wrong = static_cast<std::size_t>(z.logs - z.top1);
-        out.push_back(target("attributed: " + z.generator + " (out of library)" + at_level, wrong, static_cast<std::size_t>(z.logs), 0.2, true));
+        out.push_back(target("attributed: " + z.generator + " (out of library)" + at_level, wrong,
+                             static_cast<std::size_t>(z.logs), 0.2, true));
         std::size_t all = 0, all_wrong = 0;
         for (const auto& y : s.by_size)
-            if (y.generator == z.generator) all += static_cast<std::size_t>(y.logs), all_wrong += static_cast<std::size_t>(y.logs - y.top1);
+            if (y.generator == z.generator)
+                all += static_cast<std::size_t>(y.logs), all_wrong += static_cast<std::size_t>(y.logs - y.top1);
         if (all > static_cast<std::size_t>(z.logs))
-            out.push_back(target("attributed: " + z.generator + " (out of library), all sizes", all_wrong, all, 0.2, true));
+            out.push_back(
+                target("attributed: " + z.generator + " (out of library), all sizes", all_wrong, all, 0.2, true));
     }
     return out;
 }
@@ -136,7 +140,8 @@ EvalScores score(const std::vector<EvalCase>& cases, const Thresholds& th, const
     s.verdicts.push_back("unexplained");
     std::vector<std::string> rows{"none"};
     for (const auto& c : cases)
-        if (c.generator != "none" && std::find(rows.begin(), rows.end(), c.generator) == rows.end()) rows.push_back(c.generator);
+        if (c.generator != "none" && std::find(rows.begin(), rows.end(), c.generator) == rows.end())
+            rows.push_back(c.generator);
     for (const auto& c : cases)
         if (!c.tune && c.generator == "none") ++s.clean, s.clean_flagged += decide(c, th).verdict != "none";
     if (s.clean) {
@@ -173,7 +178,8 @@ EvalScores score(const std::vector<EvalCase>& cases, const Thresholds& th, const
                 }
                 if (c.has_shrink_check && d.verdict == c.truth) check.push_back(c.shrink_check);
             }
-            z.predicted = median(pred), z.remeasured = median(check), z.oracle = median(oracle), z.abs_error = median(error);
+            z.predicted = median(pred), z.remeasured = median(check), z.oracle = median(oracle),
+            z.abs_error = median(error);
             s.by_size.push_back(z);
         }
     }
@@ -190,9 +196,10 @@ std::string scores_markdown(const EvalScores& s) {
         md << "Thresholds tuned on seeds " << o.tune_first << ".." << o.tune_last;
     else
         md << "Thresholds as `driftlab gap` ships them (not tuned)";
-    md << ": penalty_per_param = " << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink << ", step_alpha = " << th.step_alpha
-       << ", information criterion = " << criterion_name(th.information_criterion) << ". Scored on seeds " << o.score_first << ".." << o.score_last << ", " << o.samples << "-sample logs, R = "
-       << o.replicates << ".\n\n";
+    md << ": penalty_per_param = " << th.penalty_per_param << ", min_heldout_shrink = " << th.min_heldout_shrink
+       << ", step_alpha = " << th.step_alpha << ", information criterion = " << criterion_name(th.information_criterion)
+       << ". Scored on seeds " << o.score_first << ".." << o.score_last << ", " << o.samples
+       << "-sample logs, R = " << o.replicates << ".\n\n";
     if (!s.sizes.empty())
         md << "### Detection thresholds a_50 (tuning seeds, " << o.detection_logs
            << " logs per size; unit: the smoothed output's white-noise standard deviation)\n\n"
@@ -212,9 +219,11 @@ std::string scores_markdown(const EvalScores& s) {
         md << " |\n";
     }
     if (s.clean)
-        md << "\nFalse-positive rate on clean" << (o.raw_clean ? " raw-mode" : "") << " logs: " << s.clean_flagged << "/" << s.clean << " = "
+        md << "\nFalse-positive rate on clean" << (o.raw_clean ? " raw-mode" : "") << " logs: " << s.clean_flagged
+           << "/" << s.clean << " = "
            << fixed_point(100.0 * static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean), 1)
-           << " % (95 % Clopper-Pearson " << fixed_point(100.0 * s.fpr_low, 1) << "-" << fixed_point(100.0 * s.fpr_high, 1) << " %).\n";
+           << " % (95 % Clopper-Pearson " << fixed_point(100.0 * s.fpr_low, 1) << "-"
+           << fixed_point(100.0 * s.fpr_high, 1) << " %).\n";
     md << "\n### Confusion (rows: truth generator -> library effect; columns: verdict), all sizes\n\n| truth |";
     for (const auto& v : s.verdicts) md << " " << v << " |";
     md << "\n|---|";
@@ -236,17 +245,18 @@ std::string scores_markdown(const EvalScores& s) {
           "| truth | size x a_50 | n | detected | top-1 | or pair | predicted | re-measured | oracle | abs error |\n"
           "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& z : s.by_size)
-        md << "| " << z.generator << " | " << z.level << " | " << z.logs << " | " << z.detected << " | " << z.top1 << " | "
-           << z.or_pair << " | " << fixed_or_dash(z.predicted) << " | " << fixed_or_dash(z.remeasured) << " | " << fixed_or_dash(z.oracle) << " | "
-           << fixed_or_dash(z.abs_error) << " |\n";
+        md << "| " << z.generator << " | " << z.level << " | " << z.logs << " | " << z.detected << " | " << z.top1
+           << " | " << z.or_pair << " | " << fixed_or_dash(z.predicted) << " | " << fixed_or_dash(z.remeasured) << " | "
+           << fixed_or_dash(z.oracle) << " | " << fixed_or_dash(z.abs_error) << " |\n";
     if (!s.targets.empty()) {
         md << "\n### Targets (scoring seeds; 95 % Clopper-Pearson intervals)\n\n"
               "`met` reads the estimate; `settled` says whether the interval lies wholly on one side of the bound.\n\n"
-              "| target | count / logs | rate | 95 % interval | bound | met | settled |\n|---|---|---|---|---|---|---|\n";
+              "| target | count / logs | rate | 95 % interval | bound | met | settled "
+              "|\n|---|---|---|---|---|---|---|\n";
         for (const auto& t : s.targets)
-            md << "| " << t.target << " | " << t.count << " / " << t.logs << " | " << percent(t.rate) << " | " << percent(t.low)
-               << " - " << percent(t.high) << " | " << (t.at_most ? "<= " : ">= ") << percent(t.bound) << " | "
-               << (t.met ? "yes" : "no") << " | " << (t.settled ? "yes" : "no") << " |\n";
+            md << "| " << t.target << " | " << t.count << " / " << t.logs << " | " << percent(t.rate) << " | "
+               << percent(t.low) << " - " << percent(t.high) << " | " << (t.at_most ? "<= " : ">= ") << percent(t.bound)
+               << " | " << (t.met ? "yes" : "no") << " | " << (t.settled ? "yes" : "no") << " |\n";
     }
     if (!s.pairs.empty()) {
         md << "\n### Two effects planted together, or one alone (scoring seeds; each at " << o.pair_level
@@ -258,7 +268,8 @@ std::string scores_markdown(const EvalScores& s) {
               "logs given an effect no truth stands for. Held-out shrink: median (before - after) / (before - 1) of "
               "the final model on the logs given every truth effect. `within bound`: effects added with the channel's "
               "held-out score already within its Monte Carlo bound, true / added.\n\n"
-              "| generators (effects) | n | detected | one | all | wrong | unexplained | precision | recall | or pair | F1 | within bound | held-out shrink |\n"
+              "| generators (effects) | n | detected | one | all | wrong | unexplained | precision | recall | or pair "
+              "| F1 | within bound | held-out shrink |\n"
               "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const auto& z : s.pairs) {
             md << "| " << z.first;
@@ -266,18 +277,19 @@ std::string scores_markdown(const EvalScores& s) {
                 md << " alone (" << z.first_effect << ")";
             else
                 md << " + " << z.second << " (" << z.first_effect << " + " << z.second_effect << ")";
-            md << " | " << z.logs << " | " << z.detected << " | " << z.verdict_one << " | " << z.all << " | " << z.wrong << " | "
-               << z.unexplained << " | " << fixed_point(z.precision, 2) << " | " << fixed_point(z.recall, 2) << " | "
-               << fixed_point(z.recall_or_pair, 2) << " | " << fixed_point(z.f1, 2) << " | " << z.within_bound_true << " / "
-               << z.within_bound_added << " | " << fixed_or_dash(z.shrink) << " |\n";
+            md << " | " << z.logs << " | " << z.detected << " | " << z.verdict_one << " | " << z.all << " | " << z.wrong
+               << " | " << z.unexplained << " | " << fixed_point(z.precision, 2) << " | " << fixed_point(z.recall, 2)
+               << " | " << fixed_point(z.recall_or_pair, 2) << " | " << fixed_point(z.f1, 2) << " | "
+               << z.within_bound_true << " / " << z.within_bound_added << " | " << fixed_or_dash(z.shrink) << " |\n";
         }
         int within_added = 0, within_true = 0, added = 0, found = 0;
         for (const auto& z : s.pairs) {
             within_added += z.within_bound_added, within_true += z.within_bound_true;
             added += z.added, found += z.found;
         }
-        md << "\nOver these rows, effects added with the held-out score already within its bound: " << within_true << " of "
-           << within_added << " true; the others: " << found - within_true << " of " << added - within_added << ".\n";
+        md << "\nOver these rows, effects added with the held-out score already within its bound: " << within_true
+           << " of " << within_added << " true; the others: " << found - within_true << " of " << added - within_added
+           << ".\n";
     }
     return md.str();
 }
@@ -301,11 +313,12 @@ nlohmann::json scores_json(const EvalScores& s) {
         a50.push_back({{"generator", d.generator}, {"a50", report::json_number(d.a50)}, {"curve", curve}});
     }
     j["a50"] = a50;
-    j["false_positive"] = {{"clean", s.clean},
-                           {"flagged", s.clean_flagged},
-                           {"rate", s.clean ? static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean) : 0.0},
-                           {"interval", {s.fpr_low, s.fpr_high}},
-                           {"raw_mode", s.options.raw_clean}};
+    j["false_positive"] = {
+        {"clean", s.clean},
+        {"flagged", s.clean_flagged},
+        {"rate", s.clean ? static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean) : 0.0},
+        {"interval", {s.fpr_low, s.fpr_high}},
+        {"raw_mode", s.options.raw_clean}};
     json confusion = json::object();
     for (const auto& [row, count] : s.confusion) confusion[row] = count;
     j["confusion"] = confusion;

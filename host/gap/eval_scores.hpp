@@ -16,11 +16,11 @@ namespace driftlab::host::gap {
 /// One truth generator at one size, over the scoring seeds.
 struct SizeScore {
     std::string generator;
-    std::string truth;            ///< library effect, "none" or "" (out of library)
-    double level = 0.0;           ///< size in multiples of a_50
+    std::string truth;   ///< library effect, "none" or "" (out of library)
+    double level = 0.0;  ///< size in multiples of a_50
     int logs = 0, detected = 0;
-    int top1 = 0;                 ///< right verdicts
-    int or_pair = 0;              ///< right verdicts or declared close calls holding the truth
+    int top1 = 0;     ///< right verdicts
+    int or_pair = 0;  ///< right verdicts or declared close calls holding the truth
     /// Medians (the upper middle value of an even count) of the held-out shrink: predicted by the diagnosis and
     /// |predicted - oracle| where the verdict is right under the scored thresholds; re-measured on fresh replicates
     /// where the permissive run-time diagnosis (EvalCase::has_shrink_check) put the truth first; of the oracle (true
@@ -36,31 +36,32 @@ struct PairScore {
     std::string first_effect, second_effect;  ///< the library effects they stand for ("" for none)
     double level = 0.0;                       ///< each at this multiple of its own a_50
     int logs = 0, detected = 0;
-    int verdict_one = 0;   ///< the verdict (the first effect added) is a truth effect
-    int all = 0;           ///< every truth effect added
-    int wrong = 0;         ///< an effect added that neither generator stands for
-    int unexplained = 0;   ///< verdict `unexplained`
-    int added = 0;         ///< effects added, over the logs
-    int found = 0;         ///< true effects added, over the logs (at most 2 per log)
-    int truths = 0;        ///< truth effects planted, over the logs
-    int found_or_pair = 0; ///< true effects added or declared as an added effect's close call
+    int verdict_one = 0;    ///< the verdict (the first effect added) is a truth effect
+    int all = 0;            ///< every truth effect added
+    int wrong = 0;          ///< an effect added that neither generator stands for
+    int unexplained = 0;    ///< verdict `unexplained`
+    int added = 0;          ///< effects added, over the logs
+    int found = 0;          ///< true effects added, over the logs (at most 2 per log)
+    int truths = 0;         ///< truth effects planted, over the logs
+    int found_or_pair = 0;  ///< true effects added or declared as an added effect's close call
     /// Effects added with the held-out score already within its bound (Explanation::within_bound_before()), and how
     /// many of them a truth stands for: how far such a step is to be trusted, beside `added` and `found` for all.
     int within_bound_added = 0, within_bound_true = 0;
     double precision = 0.0, recall = 0.0, f1 = 0.0, recall_or_pair = 0.0;
-    /// Median held-out shrink, (before - after) / (before - 1), of the final model on the logs given every truth effect.
+    /// Median held-out shrink, (before - after) / (before - 1), of the final model on the logs given every truth
+    /// effect.
     std::optional<double> shrink;
 };
 
 /// One of the benchmark's targets read on the scoring cases: a rate with its 95 % Clopper-Pearson interval.
 struct TargetScore {
-    std::string target;       ///< what is counted, e.g. "top-1: kasdin_flicker -> flicker at 2 x a_50"
+    std::string target;  ///< what is counted, e.g. "top-1: kasdin_flicker -> flicker at 2 x a_50"
     std::size_t count = 0, logs = 0;
     double rate = 0.0, low = 0.0, high = 1.0;
-    double bound = 0.0;       ///< the target: rate <= bound when `at_most`, else rate >= bound
+    double bound = 0.0;  ///< the target: rate <= bound when `at_most`, else rate >= bound
     bool at_most = false;
-    bool met = false;         ///< by the estimate
-    bool settled = false;     ///< the interval lies wholly on one side of the bound
+    bool met = false;      ///< by the estimate
+    bool settled = false;  ///< the interval lies wholly on one side of the bound
 };
 
 /// The level at which attribution is judged: twice each effect's detection threshold.
@@ -94,9 +95,9 @@ std::string scores_markdown(const EvalScores& s);
 /// `interval`}, `confusion` {generator: {verdict: count}}, `by_size[]` (`generator`, `truth`, `level`, `logs`,
 /// `detected`, `top1`, `or_pair`, `shrink` {`predicted`, `remeasured`, `oracle`, `abs_error`}), `targets[]` (`target`,
 /// `count`, `logs`, `rate`, `interval`, `bound`, `at_most`, `met`, `settled`), `pairs[]` (`generators`, `effects`,
-/// `level`, `logs`, `detected`, `verdict_one`, `all`, `wrong`, `unexplained`, `added`, `found`, `truths`, `found_or_pair`,
-/// `within_bound_added`, `within_bound_true`,
-/// `precision`, `recall`, `recall_or_pair`, `f1`, `shrink`).
+/// `level`, `logs`, `detected`, `verdict_one`, `all`, `wrong`, `unexplained`, `added`, `found`, `truths`,
+/// `found_or_pair`, `within_bound_added`, `within_bound_true`, `precision`, `recall`, `recall_or_pair`, `f1`,
+/// `shrink`).
 nlohmann::json scores_json(const EvalScores& s);
 
 }  // namespace driftlab::host::gap

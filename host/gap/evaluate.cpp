@@ -37,8 +37,8 @@ constexpr double kMaxPeakPerSize = 300.0;  // a deterministic truth's peak, at m
 // Only a starting point; detection_sizes() measures a_50.
 double first_guess(const std::string& generator) {
     static const std::map<std::string, double> guess = {
-        {"thermal_rc", 0.2}, {"thermostat", 0.25}, {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
-        {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2}, {"sar_mismatch", 0.5}};
+        {"thermal_rc", 0.2},   {"thermostat", 0.25},  {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
+        {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2},       {"sar_mismatch", 0.5}};
     return guess.at(generator);
 }
 
@@ -52,7 +52,8 @@ GapModel randomised_truth(std::uint64_t seed) {
     const sim::DriftParams paper = sim::kPaperDrift[0];
     m.base[0].drift = {paper.c1_counts * factor(), paper.c2_counts, paper.tau_s * factor()};
     const double raw_counts = 0.187 * 512.0 / 90.0 * std::sqrt(factor());
-    m.base[0].sigma_n_counts = sim::analog_sigma_for_raw_std_counts(std::max(raw_counts, sim::kMinCalibratedRawStdCounts));
+    m.base[0].sigma_n_counts =
+        sim::analog_sigma_for_raw_std_counts(std::max(raw_counts, sim::kMinCalibratedRawStdCounts));
     return m;
 }
 
@@ -63,8 +64,8 @@ bool raw_mode(const std::string& generator) {
 // A gyro log of `truth` with `added` at the converter input and, when given, `quantiser` as its converter. A `raw`
 // log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
 // numbers stepping by two (a SAMPLE and a RAW frame per row).
-LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser, std::size_t samples,
-                 std::uint64_t seed, bool raw_mode) {
+LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
+                 std::size_t samples, std::uint64_t seed, bool raw_mode) {
     LogData log;
     log.source_name = "gap-eval";
     log.t_s.resize(samples);
@@ -98,8 +99,8 @@ double output_noise_sd(const GapModel& m) {
 struct Planted {
     GapModel model;
     LogData log;
-    double size_counts = 0.0;  ///< the planted size [counts]
-    double scale = 0.0;        ///< make_truth()'s size argument that plants it
+    double size_counts = 0.0;       ///< the planted size [counts]
+    double scale = 0.0;             ///< make_truth()'s size argument that plants it
     std::vector<double> occupancy;  ///< a converter truth's: the codes of the log made with the model's converter
 };
 
@@ -198,8 +199,9 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples,
                       options.raw_clean);
     // A log the diagnosis refuses names the case, so that one odd size is found in a run of hundreds.
-    p.log.source_name = "gap-eval log of " + generator + (generator == "none" ? "" : " at " + format_double(level) + " x a_50") +
-                        " (log seed " + std::to_string(seed) + ")";
+    p.log.source_name = "gap-eval log of " + generator +
+                        (generator == "none" ? "" : " at " + format_double(level) + " x a_50") + " (log seed " +
+                        std::to_string(seed) + ")";
     c.size_counts = p.size_counts;
     const LogData& log = p.log;
     GapOptions go = gap_options(seed, options);
@@ -226,8 +228,9 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     const auto held = [](const Cell& cell) { return cell.segment == Segment::heldout; };
     const std::uint64_t fresh = go.seed + 1000003;
     auto heldout_gap = [&](const GapModel& m, const ReplicateExtra& extra) {
-        return gap_score(compare(real, run_replicates(m, log.t_s, b, go.replicates, fresh, go.threads, extra), go.alpha),
-                         layout, held);
+        return gap_score(
+            compare(real, run_replicates(m, log.t_s, b, go.replicates, fresh, go.threads, extra), go.alpha), layout,
+            held);
     };
     const double before = heldout_gap(r.base, {});
     auto shrink = [before](double after) { return before > 1.0 ? (before - after) / (before - 1.0) : 0.0; };
@@ -271,7 +274,8 @@ PairCase run_pair_case(const std::string& first, const std::string& second, doub
     std::vector<double> added = input_signal(first, level * size_of(sizes, first), model, seed, options.samples).added;
     if (second != "none") {
         const std::vector<double> more =
-            input_signal(second, level * size_of(sizes, second), model, seed ^ kSecondGeneratorSeed, options.samples).added;
+            input_signal(second, level * size_of(sizes, second), model, seed ^ kSecondGeneratorSeed, options.samples)
+                .added;
         for (std::size_t k = 0; k < added.size(); ++k) added[k] += more[k];
     }
     // As `driftlab gap` runs: its shipped thresholds and stepwise limit.
@@ -307,7 +311,9 @@ std::string pair_refusal(const std::string& first, const std::string& second) {
 }
 
 std::vector<std::pair<std::string, std::string>> default_pairs() {
-    return {{"thermostat", "thermal_rc"}, {"thermostat", "kasdin_flicker"}, {"thermal_rc", "student_walk"},
+    return {{"thermostat", "thermal_rc"},
+            {"thermostat", "kasdin_flicker"},
+            {"thermal_rc", "student_walk"},
             {"wandering_ou", "burst_spikes"}};
 }
 
@@ -323,8 +329,8 @@ Decision decide(const EvalCase& c, const Thresholds& th) {
         if (passes(e, th.penalty_per_param, th.min_heldout_shrink)) passing.push_back(&e);
     const Choice choice = choose(passing, th.information_criterion);
     if (!choice.best || !closes_gap(*choice.best, th.step_alpha)) return {"unexplained", ""};
-    const bool close = choice.runner_up &&
-                       close_call(*choice.best, *choice.runner_up, ExplainOptions{}.ambiguity_z, th.information_criterion);
+    const bool close = choice.runner_up && close_call(*choice.best, *choice.runner_up, ExplainOptions{}.ambiguity_z,
+                                                      th.information_criterion);
     return {choice.best->effect, close ? choice.runner_up->effect : ""};
 }
 
@@ -387,14 +393,16 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
         DetectionSize d{gens[g], first_guess(gens[g]), {}};
         const auto& list = truth_list();
         const auto place = static_cast<std::size_t>(
-            std::find_if(list.begin(), list.end(), [&](const TruthInfo& t) { return t.generator == gens[g]; }) - list.begin());
+            std::find_if(list.begin(), list.end(), [&](const TruthInfo& t) { return t.generator == gens[g]; }) -
+            list.begin());
         auto fraction_at = [&](double size, int step) {
             std::atomic<int> hits{0};
             parallel_for(static_cast<std::size_t>(options.detection_logs), options.threads, [&](std::size_t k) {
                 const std::uint64_t seed = detection_seed(options, place, step, static_cast<int>(k));
                 GapOptions go = gap_options(seed, options);
                 go.explain = false;
-                hits += !diagnose(plant(gens[g], size, seed, options.samples, false).log, sim::paper_model(), go).located.empty();
+                hits += !diagnose(plant(gens[g], size, seed, options.samples, false).log, sim::paper_model(), go)
+                             .located.empty();
             });
             d.curve.push_back({size, hits, options.detection_logs});
             return static_cast<double>(hits) / options.detection_logs;
@@ -421,7 +429,8 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
             fraction_at(crossing * std::sqrt(2.0), step++);
             d.a50 = logistic_a50(d.curve).value_or(crossing);
         }
-        std::sort(d.curve.begin(), d.curve.end(), [](const DetectionPoint& a, const DetectionPoint& b) { return a.size < b.size; });
+        std::sort(d.curve.begin(), d.curve.end(),
+                  [](const DetectionPoint& a, const DetectionPoint& b) { return a.size < b.size; });
         out.push_back(std::move(d));
         if (options.progress) options.progress(g + 1, gens.size());
     }
@@ -444,8 +453,10 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
             const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
             const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
             for (std::uint64_t s = first; s <= last; ++s) {
-                // By default as many clean logs per seed as planted ones per generator: the false-positive rate needs them.
-                const std::size_t clean = options.clean_per_seed > 0 ? static_cast<std::size_t>(options.clean_per_seed) : options.levels.size();
+                // By default as many clean logs per seed as planted ones per generator: the false-positive rate needs
+                // them.
+                const std::size_t clean = options.clean_per_seed > 0 ? static_cast<std::size_t>(options.clean_per_seed)
+                                                                     : options.levels.size();
                 if (!raw)
                     for (std::size_t k = 0; k < clean; ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
                 for (const auto& g : gens)
@@ -535,7 +546,8 @@ Thresholds tune(const std::vector<EvalCase>& cases) {
             right += is_correct(*c, d, false);
         }
         const double fpr = none ? static_cast<double>(fp) / static_cast<double>(none) : 0.0;
-        return static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, tuning.size())) - (fpr > 0.05 ? 1.0 : 0.0);
+        return static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, tuning.size())) -
+               (fpr > 0.05 ? 1.0 : 0.0);
     };
     const Thresholds shipped;
     const double shipped_score = score(shipped);

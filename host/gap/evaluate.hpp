@@ -15,20 +15,20 @@
 namespace driftlab::host::gap {
 
 struct EvalOptions {
-    std::uint64_t tune_first = 1, tune_last = 4;      ///< seeds the thresholds are tuned on
+    std::uint64_t tune_first = 1, tune_last = 4;  ///< seeds the thresholds are tuned on
     bool tune = true;  ///< false: no tuning logs; the thresholds `driftlab gap` ships are scored (Thresholds{})
     std::uint64_t score_first = 101, score_last = 104;  ///< seeds they are scored on (disjoint)
     std::vector<std::string> generators;  ///< truth generators (truth_list()); empty = all; "none" is always added
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
-    int clean_per_seed = 0;       ///< clean logs per seed (0: as many as levels): the false-positive rate's sample
-    bool raw_clean = false;       ///< clean logs are raw-mode (their code-histogram cells tested), as a converter's are
+    int clean_per_seed = 0;  ///< clean logs per seed (0: as many as levels): the false-positive rate's sample
+    bool raw_clean = false;  ///< clean logs are raw-mode (their code-histogram cells tested), as a converter's are
     /// Logs per size when measuring a_50 (tuning seeds). The targets are read at 2 x a_50: with 12 logs per size one
     /// estimate stood 18 % above that of 48 (student_walk 1.16 against 0.95), which moves every log of a table.
     int detection_logs = 48;
-    std::size_t samples = 1500;   ///< log length at 1 s per sample
+    std::size_t samples = 1500;  ///< log length at 1 s per sample
     Holdout holdout = BatteryOptions{}.holdout;
     int replicates = 20;
-    int fit_replicates = ExplainOptions{}.fit_replicates;    ///< as `driftlab gap` ships
+    int fit_replicates = ExplainOptions{}.fit_replicates;  ///< as `driftlab gap` ships
     int max_evaluations = ExplainOptions{}.max_evaluations;
     /// Two-effect logs: each pair of truth generators planted together, each at `pair_level` x its own a_50, on the
     /// scoring seeds, diagnosed as `driftlab gap` runs (its shipped thresholds, effects added stepwise). Converter
@@ -37,8 +37,9 @@ struct EvalOptions {
     /// gap` runs, which shows the effects its later steps add beside the right one.
     std::vector<std::pair<std::string, std::string>> pairs;
     double pair_level = 2.0;
-    int threads = 2;              ///< logs diagnosed at once, one thread each (the verdicts do not depend on it)
-    std::function<void(std::size_t done, std::size_t total)> progress;  ///< optional; called from those threads, one at a time
+    int threads = 2;  ///< logs diagnosed at once, one thread each (the verdicts do not depend on it)
+    std::function<void(std::size_t done, std::size_t total)>
+        progress;  ///< optional; called from those threads, one at a time
 };
 
 /// Why `first`+`second` cannot be planted as a pair (EvalOptions::pairs), or "" when it can: two distinct generators of
@@ -77,28 +78,28 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options);
 
 /// One simulated log and what the diagnosis said about it.
 struct EvalCase {
-    std::string generator;        ///< truth generator or "none"
-    std::string truth;            ///< the library effect it stands for, "none", or "" (out of library)
-    double level = 0.0;           ///< size in multiples of the generator's a_50
+    std::string generator;  ///< truth generator or "none"
+    std::string truth;      ///< the library effect it stands for, "none", or "" (out of library)
+    double level = 0.0;     ///< size in multiples of the generator's a_50
     double size_counts = 0.0;
     std::uint64_t seed = 0;
-    bool tune = false;            ///< in the tuning set
-    bool detected = false;        ///< located cells were found
+    bool tune = false;               ///< in the tuning set
+    bool detected = false;           ///< located cells were found
     std::vector<Explanation> tried;  ///< every candidate with its metrics (thresholds applied later)
-    double shrink_check = 0.0;    ///< held-out shrink of the truth's candidate re-measured on fresh replicates
-    bool has_shrink_check = false;  ///< only where the run-time diagnosis, every candidate kept, put the truth first
-    double oracle_shrink = 0.0;   ///< held-out shrink with the TRUE model: the truth base plus fresh realisations
-    bool has_oracle = false;      ///< of the truth generator at its planted size (planted, detected cases)
+    double shrink_check = 0.0;       ///< held-out shrink of the truth's candidate re-measured on fresh replicates
+    bool has_shrink_check = false;   ///< only where the run-time diagnosis, every candidate kept, put the truth first
+    double oracle_shrink = 0.0;      ///< held-out shrink with the TRUE model: the truth base plus fresh realisations
+    bool has_oracle = false;         ///< of the truth generator at its planted size (planted, detected cases)
 };
 
 /// A log with two truth generators planted together, and what the diagnosis made of it.
 struct PairCase {
-    std::string first, second;          ///< truth generators (second "none": the first alone)
-    double level = 0.0;                 ///< each at this multiple of its own a_50
+    std::string first, second;  ///< truth generators (second "none": the first alone)
+    double level = 0.0;         ///< each at this multiple of its own a_50
     std::uint64_t seed = 0;
     bool detected = false;
-    std::string verdict;                ///< the diagnosis's verdict: its first added effect, "none" or "unexplained"
-    std::vector<std::string> added;     ///< every effect added stepwise, in order
+    std::string verdict;                   ///< the diagnosis's verdict: its first added effect, "none" or "unexplained"
+    std::vector<std::string> added;        ///< every effect added stepwise, in order
     std::vector<std::string> close_calls;  ///< per added effect, its declared close call ("" for none)
     std::vector<bool> within_bound;        ///< per added effect, Explanation::within_bound_before()
     double heldout_before = 1.0, heldout_after = 1.0;  ///< held-out gap score of the base and of the final model
@@ -114,8 +115,8 @@ struct Thresholds {
 
 /// What the diagnosis says of a case under some thresholds.
 struct Decision {
-    std::string verdict;          ///< "none", "unexplained" or the best passing candidate
-    std::string ambiguous_with;   ///< a passing runner-up not separated from the best (close_call), else ""
+    std::string verdict;         ///< "none", "unexplained" or the best passing candidate
+    std::string ambiguous_with;  ///< a passing runner-up not separated from the best (close_call), else ""
 };
 
 /// The decision a case gets under `th` (ambiguity as ExplainOptions::ambiguity_z).

@@ -51,18 +51,18 @@ double sd_of(const std::vector<double>& v) {
 // One channel's data, battery, real values and replicate runner.
 struct Judge {
     const std::vector<double>& t_s;
-    const std::vector<double>& y;   ///< this channel's log values [counts]
+    const std::vector<double>& y;  ///< this channel's log values [counts]
     Channel channel;
     BatteryOptions battery;
     std::vector<Cell> layout;
     std::vector<double> real;
-    std::vector<double> residual;   ///< eq. 1 residual of the whole log (the battery's)
+    std::vector<double> residual;  ///< eq. 1 residual of the whole log (the battery's)
     double target_spread = 0.0;
-    std::vector<bool> fitting;      ///< per sample: in the fitting part
+    std::vector<bool> fitting;  ///< per sample: in the fitting part
     std::uint64_t seed;
     int threads;
     const std::vector<double>* raw = nullptr;  ///< this channel's raw codes (raw-mode log), or null
-    double alpha = 0.0;             ///< ExplainOptions::alpha
+    double alpha = 0.0;                        ///< ExplainOptions::alpha
 
     Comparison evaluate(const GapModel& m, int replicates) const {
         return compare(real, run_replicates(m, t_s, battery, replicates, seed, threads), alpha);
@@ -106,7 +106,8 @@ std::vector<double> without_earlier_shapes(const GapModel& m, const Judge& judge
 }
 
 // A mean-shape candidate fitted with eq. 1 by variable projection on the samples of `part`.
-Fitted fit_deterministic(const std::string& effect, const GapModel& current, const Judge& judge, const std::vector<bool>& part) {
+Fitted fit_deterministic(const std::string& effect, const GapModel& current, const Judge& judge,
+                         const std::vector<bool>& part) {
     const Channel c = judge.channel;
     const std::size_t i = channel_index(c);
     const double cpu = counts_per_unit(current, c);
@@ -179,8 +180,8 @@ SpectralFit fit_noise(GapModel& m, const Judge& judge, const PartPeriodogram& p,
 // Whether the base holds the model file's process `effect` on channel `c` (add_given_effects()).
 bool holds(const GivenEffects* given, const std::string& effect, Channel c) {
     return given && std::any_of(given->held.begin(), given->held.end(), [&](const Explanation& e) {
-        return e.effect == effect && e.channel == kChannelNames[channel_index(c)];
-    });
+               return e.effect == effect && e.channel == kChannelNames[channel_index(c)];
+           });
 }
 
 // `m` with the model file's process `effect` taken off channel `c` (its spec zeroed there, the channel's held
@@ -205,7 +206,8 @@ Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOpti
     const double span_s = judge.t_s.back() - judge.t_s.front();
     auto model_at = [&](const std::vector<double>& log_p) {
         GapModel m = current;
-        m.effects.push_back(make_candidate_effect("spikes", judge.channel, {std::exp(log_p[0]), std::exp(log_p[1])}, current));
+        m.effects.push_back(
+            make_candidate_effect("spikes", judge.channel, {std::exp(log_p[0]), std::exp(log_p[1])}, current));
         return m;
     };
     auto objective = [&](const std::vector<double>& log_p) {
@@ -220,14 +222,16 @@ Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOpti
         if (d > 5.0 * scale) outliers.push_back(d);
     const double rate = std::max(1.0, static_cast<double>(outliers.size())) / span_s;
     const double amp = (outliers.empty() ? 5.0 * scale : sd_of(outliers) + outliers.front()) * current.smoothing.window;
-    const std::vector<std::vector<double>> starts{{std::log(rate), std::log(amp)}, {std::log(rate * 3), std::log(amp / 2)}};
+    const std::vector<std::vector<double>> starts{{std::log(rate), std::log(amp)},
+                                                  {std::log(rate * 3), std::log(amp / 2)}};
     std::vector<double> best = starts.front();
     double best_value = INFINITY;
     for (const auto& s : starts) {
         const double v = objective(s);
         if (v < best_value) best_value = v, best = s;
     }
-    const auto nm = nelder_mead(objective, best, {0.7, 0.7}, std::max(8, options.max_evaluations - static_cast<int>(starts.size())));
+    const auto nm = nelder_mead(objective, best, {0.7, 0.7},
+                                std::max(8, options.max_evaluations - static_cast<int>(starts.size())));
     return {model_at(nm.x), {std::exp(nm.x[0]), std::exp(nm.x[1])}, {}, {}};
 }
 
@@ -273,8 +277,8 @@ Fitted fit_code_density(const GapModel& current, const Judge& judge) {
     return out;
 }
 
-Explanation judge_candidate(const std::string& effect, const Fitted& fitted, const Judge& judge, const Comparison& base_cmp,
-                            const ExplainOptions& options) {
+Explanation judge_candidate(const std::string& effect, const Fitted& fitted, const Judge& judge,
+                            const Comparison& base_cmp, const ExplainOptions& options) {
     const Comparison cmp = judge.evaluate(fitted.model, options.eval_replicates);
     Explanation ex;
     ex.effect = effect;
@@ -292,8 +296,8 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
         synthetic_loss(base_cmp, judge.layout, Segment::heldout) - synthetic_loss(cmp, judge.layout, Segment::heldout);
     // The penalised likelihood counts every cell: an effect confined in time (rare bursts) may fall mostly in one
     // part, and the held-out rules below already demand that the fit carries over.
-    ex.loss_gain = synthetic_loss(base_cmp, judge.layout, Segment::fit) - synthetic_loss(cmp, judge.layout, Segment::fit) +
-                   ex.heldout_loss_gain;
+    ex.loss_gain = synthetic_loss(base_cmp, judge.layout, Segment::fit) -
+                   synthetic_loss(cmp, judge.layout, Segment::fit) + ex.heldout_loss_gain;
     ex.penalty = static_cast<double>(names.size()) * std::log(static_cast<double>(judge.layout.size()));
     ex.cells_left = locate(judge.real, cmp, judge.layout).size();
     for (std::size_t j = 0; j < judge.layout.size(); ++j)
@@ -305,15 +309,16 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
     // A Gauss-Markov process whose correlation time is not well inside the log shows neither its bump's fall nor
     // its plateau: within the log it is a flicker or a random walk (method: report coloured noise, don't choose).
     constexpr double kIdentifiableSpans = 20.0;
-    if (effect == "gauss_markov") ex.long_memory = fitted.params[1] * kIdentifiableSpans > judge.t_s.back() - judge.t_s.front();
+    if (effect == "gauss_markov")
+        ex.long_memory = fitted.params[1] * kIdentifiableSpans > judge.t_s.back() - judge.t_s.front();
     return ex;
 }
 
 // The full-log spectral likelihood of the current model with the candidate added (all parameters fitted on the
 // whole log) against the current model's (`base_nll`, `base_parameters`): the gain, the parameters added and the
 // per-frequency terms.
-void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& judge, const std::vector<Earlier>& earlier,
-                       double base_nll, int base_parameters) {
+void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& judge,
+                       const std::vector<Earlier>& earlier, double base_nll, int base_parameters) {
     const std::vector<bool> all(judge.t_s.size(), true);
     const bool shape = candidate(ex.effect).route == FitRoute::deterministic;
     GapModel m = shape ? fit_deterministic(ex.effect, current, judge, all).model : current;
@@ -333,22 +338,24 @@ void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& ju
         ex.shape_steps = steps_over_shape(judge.t_s, base_residual, shape_residual, static_cast<int>(ex.params.size()),
                                           white_floor_long_run_factor(current.smoothing), q);
     }
-    ex.spectral_extra_parameters = fit.free_parameters + (shape ? static_cast<int>(ex.params.size()) : 0) - base_parameters;
+    ex.spectral_extra_parameters =
+        fit.free_parameters + (shape ? static_cast<int>(ex.params.size()) : 0) - base_parameters;
     ex.spectral_observations = p.count;
 }
 
 // The level-step test of the model with Gaussian-process candidate `spectral`: its Gaussian processes on this
 // channel (the earlier ones and the candidate, with their parameters) whiten the residual.
-LevelStep step_test(const GapModel& m, const Judge& judge, const std::vector<Earlier>& earlier, const std::string& spectral,
-                    const std::vector<double>& params, const ExplainOptions& options) {
+LevelStep step_test(const GapModel& m, const Judge& judge, const std::vector<Earlier>& earlier,
+                    const std::string& spectral, const std::vector<double>& params, const ExplainOptions& options) {
     std::vector<std::string> effects;
     std::vector<double> known;
-    for (const Earlier& e : earlier) effects.push_back(e.effect), known.insert(known.end(), e.params.begin(), e.params.end());
+    for (const Earlier& e : earlier)
+        effects.push_back(e.effect), known.insert(known.end(), e.params.begin(), e.params.end());
     effects.push_back(spectral);
     known.insert(known.end(), params.begin(), params.end());
     return test_level_step(m, judge.channel, judge.t_s, judge.y, effects, known,
-                           std::max(options.eval_replicates, options.step_replicates), options.seed + 17, options.threads,
-                           options.step_alpha);
+                           std::max(options.eval_replicates, options.step_replicates), options.seed + 17,
+                           options.threads, options.step_alpha);
 }
 
 }  // namespace
@@ -368,7 +375,9 @@ double delta_ic(const Explanation& e, InformationCriterion ic) {
 }
 
 bool close_call(const Explanation& best, const Explanation& runner_up, double z, InformationCriterion ic) {
-    const auto low_frequency = [](const Explanation& e) { return e.effect == "flicker" || e.effect == "rate_random_walk"; };
+    const auto low_frequency = [](const Explanation& e) {
+        return e.effect == "flicker" || e.effect == "rate_random_walk";
+    };
     if ((best.long_memory && low_frequency(runner_up)) || (runner_up.long_memory && low_frequency(best))) return true;
     const bool spectral = best.gaussian && runner_up.gaussian && !best.spectral_terms.empty() &&
                           best.spectral_terms.size() == runner_up.spectral_terms.size();
@@ -401,14 +410,16 @@ Choice choose(const std::vector<const Explanation*>& passing, InformationCriteri
             } else if (!g2 || delta_ic(*e, ic) > delta_ic(*g2, ic)) {
                 g2 = e;
             }
-            if ((e->effect == "rate_random_walk" || e->effect == "flicker") && (!simpler || delta_ic(*e, ic) > delta_ic(*simpler, ic)))
+            if ((e->effect == "rate_random_walk" || e->effect == "flicker") &&
+                (!simpler || delta_ic(*e, ic) > delta_ic(*simpler, ic)))
                 simpler = e;
         } else if (!other || e->heldout_loss_gain > other->heldout_loss_gain) {
             other = e;
         }
     }
     if (other && (!g1 || other->heldout_loss_gain > g1->heldout_loss_gain)) return {other, g1};
-    if (g1 && g1->long_memory && simpler && delta_ic(*g1, ic) - delta_ic(*simpler, ic) <= parameter_price(ic, g1->spectral_observations))
+    if (g1 && g1->long_memory && simpler &&
+        delta_ic(*g1, ic) - delta_ic(*simpler, ic) <= parameter_price(ic, g1->spectral_observations))
         return {simpler, g1};
     return {g1, g2 ? g2 : other};
 }
@@ -425,7 +436,7 @@ struct Option {
 struct Path {
     ExplainResult result;
     std::array<std::vector<std::string>, kChannelCount> used;  ///< effects added per channel
-    std::array<bool, kChannelCount> open;                       ///< channels still searched
+    std::array<bool, kChannelCount> open;                      ///< channels still searched
 };
 
 // A channel's choice at one step and, when that is a Gaussian process, the best accepted mean shape beside it.
@@ -461,8 +472,19 @@ struct Search {
     // Channel `i`'s judge with candidates fitted on `part`: the channel's own battery of the log, its eq. 1 residual
     // and short-lag spread.
     Judge judge_for(std::size_t i, const std::vector<bool>& part) const {
-        Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, part, options.seed, options.threads,
-                    battery.raw_codes[i] ? raw[i] : nullptr, options.alpha};
+        Judge judge{t_s,
+                    *y[i],
+                    static_cast<Channel>(i),
+                    battery,
+                    {},
+                    {},
+                    {},
+                    0.0,
+                    part,
+                    options.seed,
+                    options.threads,
+                    battery.raw_codes[i] ? raw[i] : nullptr,
+                    options.alpha};
         judge.battery.channels = {};
         judge.battery.channels[i] = true;
         judge.battery.raw_codes = {};
@@ -490,7 +512,8 @@ struct Search {
             // for another effect to shrink (one broad process may cover a line that is still there).
             const double heldout = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout));
             const bool diffuse = options.diffuse_alpha > 0.0 &&
-                                 heldout > gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), options.diffuse_alpha);
+                                 heldout > gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout),
+                                                               options.diffuse_alpha);
             if (locate(judge.real, base_cmp, judge.layout).empty() && !diffuse &&
                 (step == 1 || heldout - 1.0 <= kMinHeldoutExcess)) {
                 path.open[i] = false;
@@ -499,9 +522,10 @@ struct Search {
             // Gaussian processes accepted earlier on this channel are fitted again beside each new candidate:
             // one sized alone may have swallowed what the candidate explains (a broad flicker covers a sinusoid).
             const std::vector<Earlier> earlier = processes(path.result, i);
-            const bool shaped = std::any_of(path.result.accepted.begin(), path.result.accepted.end(), [&](const Explanation& e) {
-                return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
-            });
+            const bool shaped =
+                std::any_of(path.result.accepted.begin(), path.result.accepted.end(), [&](const Explanation& e) {
+                    return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
+                });
             const SpectralFit base_fit = [&] {
                 GapModel m = path.result.model;
                 return fit_noise(m, judge, residual_periodogram(m, judge, everywhere), earlier, "", nullptr);
@@ -528,18 +552,23 @@ struct Search {
                 // is fitted in place of the model file's: the model it is judged against lacks that one here.
                 const bool replaces = route == FitRoute::spectral && holds(options.given, effect, c);
                 const std::optional<GapModel> replaced =
-                    replaces ? std::optional<GapModel>(without_held(path.result.model, *options.given, effect, c)) : std::nullopt;
+                    replaces ? std::optional<GapModel>(without_held(path.result.model, *options.given, effect, c))
+                             : std::nullopt;
                 const GapModel& current = replaced ? *replaced : path.result.model;
                 Fitted fitted;
                 if (route == FitRoute::deterministic) {
                     fitted = fit_deterministic(effect, path.result.model, judge, fitting);
                     if (!earlier.empty())
-                        fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier, "", &fitted.refits);
+                        fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier, "",
+                                  &fitted.refits);
                 } else if (route == FitRoute::spectral) {
                     fitted.model = current;
-                    const SpectralFit f = fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
-                                                    effect, &fitted.refits);
-                    fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()), f.params.end());
+                    const SpectralFit f =
+                        fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
+                                  effect, &fitted.refits);
+                    fitted.params.assign(
+                        f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()),
+                        f.params.end());
                 } else if (route == FitRoute::code_density) {
                     fitted = fit_code_density(path.result.model, judge);
                     if (fitted.params.empty()) return;  // no transition crossed often enough to place
@@ -555,7 +584,8 @@ struct Search {
                 // level (a burst longer than one conversion, which the library's spikes do not make, would read as
                 // a short step).
                 ex.replaces_given = replaces;
-                if (ex.accepted && ex.gaussian) spectral_evidence(ex, current, judge, earlier, base_fit.nll, base_fit.free_parameters);
+                if (ex.accepted && ex.gaussian)
+                    spectral_evidence(ex, current, judge, earlier, base_fit.nll, base_fit.free_parameters);
                 if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
@@ -579,7 +609,8 @@ struct Search {
             }
             for (const auto& o : here) path.result.tried.push_back(o.ex);
             if (best_index == here.size()) {
-                path.open[i] = false;  // nothing passed, and the later steps change other channels only: the same fits again
+                path.open[i] =
+                    false;  // nothing passed, and the later steps change other channels only: the same fits again
                 continue;
             }
             // A process chosen over an accepted mean shape may have taken the shape's signal with the rest: the shape's
@@ -587,8 +618,10 @@ struct Search {
             const Option* shape = nullptr;
             if (candidate(here[best_index].ex.effect).route == FitRoute::spectral)
                 for (const auto& o : here)
-                    if (o.ex.accepted && candidate(o.ex.effect).route == FitRoute::deterministic && !o.ex.shape_steps.steps_win &&
-                        (!shape || delta_ic(o.ex, options.information_criterion) > delta_ic(shape->ex, options.information_criterion)))
+                    if (o.ex.accepted && candidate(o.ex.effect).route == FitRoute::deterministic &&
+                        !o.ex.shape_steps.steps_win &&
+                        (!shape || delta_ic(o.ex, options.information_criterion) >
+                                       delta_ic(shape->ex, options.information_criterion)))
                         shape = &o;
             chosen.push_back({here[best_index], shape ? std::optional<Option>(*shape) : std::nullopt});
         }
@@ -600,15 +633,16 @@ struct Search {
         for (const auto& [k, params] : o.refits)
             for (std::size_t p = 0; p < params.size(); ++p) path.result.accepted[k].params[p].second = params[p];
         path.result.accepted.push_back(o.ex);
-        if (const std::optional<Channel> c = channel_named(o.ex.channel)) path.used[channel_index(*c)].push_back(o.ex.effect);
+        if (const std::optional<Channel> c = channel_named(o.ex.channel))
+            path.used[channel_index(*c)].push_back(o.ex.effect);
         return path;
     }
 
     // The full-log spectral information criterion of channel `i` under `r`'s model: its Gaussian processes fitted
     // again on the whole log beside its mean shapes, charged for those and for the shapes' parameters.
     double criterion(const ExplainResult& r, std::size_t i) const {
-        const Judge judge{t_s, *y[i], static_cast<Channel>(i), battery, {}, {}, {}, 0.0, everywhere, options.seed, options.threads, nullptr,
-                          options.alpha};
+        const Judge judge{t_s,        *y[i],        static_cast<Channel>(i), battery, {},           {}, {}, 0.0,
+                          everywhere, options.seed, options.threads,         nullptr, options.alpha};
         const std::vector<Earlier> earlier = processes(r, i);
         int shape_parameters = 0;
         for (const Explanation& e : r.accepted)
@@ -617,7 +651,8 @@ struct Search {
         GapModel m = r.model;
         const PartPeriodogram p = residual_periodogram(m, judge, everywhere);
         const SpectralFit fit = fit_noise(m, judge, p, earlier, "", nullptr);
-        return 2.0 * fit.nll + parameter_price(options.information_criterion, p.count) * (fit.free_parameters + shape_parameters);
+        return 2.0 * fit.nll +
+               parameter_price(options.information_criterion, p.count) * (fit.free_parameters + shape_parameters);
     }
 
     // The added effects (accepted[from...]) estimated again on the whole log once the held-out part has judged them:
@@ -676,8 +711,13 @@ struct Search {
         if (!best->shape) return process_first;
         ExplainResult shape_first = run(with(path, *best->shape), step + 1);
         const std::size_t i = channel_index(channel_named(best->best.ex.channel).value());
-        PathChoice choice{step, best->best.ex.channel, best->best.ex.effect, best->shape->ex.effect,
-                          criterion(process_first, i), criterion(shape_first, i), false};
+        PathChoice choice{step,
+                          best->best.ex.channel,
+                          best->best.ex.effect,
+                          best->shape->ex.effect,
+                          criterion(process_first, i),
+                          criterion(shape_first, i),
+                          false};
         choice.shape_kept = choice.criterion_shape + options.shape_path_margin < choice.criterion_process;
         ExplainResult kept = choice.shape_kept ? std::move(shape_first) : std::move(process_first);
         kept.paths.insert(kept.paths.begin(), choice);
@@ -687,7 +727,8 @@ struct Search {
 
 }  // namespace
 
-GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec>& effects, const std::vector<double>& t_s,
+GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec>& effects,
+                               const std::vector<double>& t_s,
                                const std::array<const std::vector<double>*, kChannelCount>& y,
                                const std::array<bool, kChannelCount>& channels,
                                const std::array<double, kChannelCount>& target_spread, std::uint64_t seed) {
@@ -750,7 +791,14 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                       const ExplainOptions& options, const RawCodes& raw) {
     // The base's refitted effects are the first accepted ones of every path, at the end of the base's effects.
     const std::size_t given = options.given ? options.given->refitted.size() : 0;
-    Search search{t_s, y, battery, options, raw, options.candidates, base.effects.size() - given, fitting_mask(t_s, battery),
+    Search search{t_s,
+                  y,
+                  battery,
+                  options,
+                  raw,
+                  options.candidates,
+                  base.effects.size() - given,
+                  fitting_mask(t_s, battery),
                   std::vector<bool>(t_s.size(), true)};
     if (search.names.empty())
         for (const auto& info : candidate_list()) search.names.push_back(info.effect);
@@ -759,7 +807,8 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
     if (options.given) {
         start.result.accepted = options.given->refitted;
         for (const Explanation& e : options.given->refitted)
-            if (const std::optional<Channel> c = channel_named(e.channel)) start.used[channel_index(*c)].push_back(e.effect);
+            if (const std::optional<Channel> c = channel_named(e.channel))
+                start.used[channel_index(*c)].push_back(e.effect);
         // A kept spikes or adc_dnl is not tried again on any channel: both would draw the same numbers (spikes) or
         // hold one converter's table twice. (What a refitted effect keeps gives the channels not analysed only.)
         for (const std::string& name : options.given->kept) {

@@ -23,23 +23,24 @@ namespace driftlab::host::gap {
 struct GivenEffects;
 
 struct ExplainOptions {
-    int fit_replicates = 8;        ///< replicates per objective evaluation of a simulated-route fit (spikes)
-    int eval_replicates = 40;      ///< replicates when judging a fitted candidate
-    int max_evaluations = 18;      ///< Nelder-Mead budget per simulated-route candidate (the budget gap-eval scores)
-    int max_effects = 3;           ///< stepwise limit over the whole log
-    double penalty_per_param = 0.25; ///< x ln(cells): the BIC-like price of one parameter (tuned by gap-eval)
-    double min_heldout_shrink = 0.4; ///< the held-out gap excess must shrink by at least this fraction (tuned)
-    double ambiguity_z = 1.96;     ///< runner-up not separated from the best at this z (close_call): ambiguous
-    double step_alpha = 0.05;      ///< level of the level-step test (tuned by gap-eval)
+    int fit_replicates = 8;           ///< replicates per objective evaluation of a simulated-route fit (spikes)
+    int eval_replicates = 40;         ///< replicates when judging a fitted candidate
+    int max_evaluations = 18;         ///< Nelder-Mead budget per simulated-route candidate (the budget gap-eval scores)
+    int max_effects = 3;              ///< stepwise limit over the whole log
+    double penalty_per_param = 0.25;  ///< x ln(cells): the BIC-like price of one parameter (tuned by gap-eval)
+    double min_heldout_shrink = 0.4;  ///< the held-out gap excess must shrink by at least this fraction (tuned)
+    double ambiguity_z = 1.96;        ///< runner-up not separated from the best at this z (close_call): ambiguous
+    double step_alpha = 0.05;         ///< level of the level-step test (tuned by gap-eval)
     /// Family-wise level of the cells a candidate leaves located, and of the held-out bound a step is marked
     /// against (Explanation::heldout_bound); diagnose() sets it from GapOptions::alpha.
     double alpha = 0.05;
-    InformationCriterion information_criterion = InformationCriterion::aic;  ///< choice among Gaussian candidates (tuned)
+    InformationCriterion information_criterion =
+        InformationCriterion::aic;  ///< choice among Gaussian candidates (tuned)
     /// Where a Gaussian process is chosen over an accepted mean shape, the path that takes the shape instead is
     /// searched too, and kept when its final model's spectral criterion is lower by more than this (2 x nll units).
     /// On single-process logs of tuning seeds it won by more in 2 of 240 (docs/gap.md §Choice).
     double shape_path_margin = 5.0;
-    int step_replicates = 40;      ///< at least this many replicates for the level-step test's null
+    int step_replicates = 40;  ///< at least this many replicates for the level-step test's null
     /// Level-step test every accepted Gaussian-process candidate (gap-eval, whose tuned thresholds may choose any of
     /// them). driftlab gap tests its final model instead (diagnose()), which the choice does not depend on.
     bool step_test_candidates = false;
@@ -62,36 +63,37 @@ struct Explanation {
     std::string effect;
     std::string channel;
     std::vector<std::pair<std::string, double>> params;  ///< physical units, keys as in the effect library
-    double gap_before = 1.0;        ///< this channel's gap score on the fitting part, base only
-    double gap_after = 1.0;         ///< ... with the candidate
-    double heldout_before = 1.0;    ///< on the held-out part, base only
-    double heldout_after = 1.0;     ///< ... with the candidate
-    double heldout_shrink = 0.0;    ///< 1 - (after - 1) / (before - 1): fraction of the held-out excess removed
+    double gap_before = 1.0;                             ///< this channel's gap score on the fitting part, base only
+    double gap_after = 1.0;                              ///< ... with the candidate
+    double heldout_before = 1.0;                         ///< on the held-out part, base only
+    double heldout_after = 1.0;                          ///< ... with the candidate
+    double heldout_shrink = 0.0;  ///< 1 - (after - 1) / (before - 1): fraction of the held-out excess removed
     /// The level-alpha (ExplainOptions::alpha) Monte Carlo bound of the channel's held-out score under the model
     /// before this step: a score within it is one the model leaves by chance (the bound the verdict's "the gap
     /// closes" reads, per channel).
     double heldout_bound = 0.0;
-    double loss_gain = 0.0;         ///< synthetic log-likelihood gain on all cells (x2), parameters from the fitting part
-    double penalty = 0.0;           ///< parameters x ln(cells): the BIC price before penalty_per_param
-    double heldout_loss_gain = 0.0; ///< synthetic log-likelihood gain on the held-out cells (x2)
+    double loss_gain = 0.0;  ///< synthetic log-likelihood gain on all cells (x2), parameters from the fitting part
+    double penalty = 0.0;    ///< parameters x ln(cells): the BIC price before penalty_per_param
+    double heldout_loss_gain = 0.0;         ///< synthetic log-likelihood gain on the held-out cells (x2)
     std::vector<double> heldout_cell_loss;  ///< per held-out cell: z^2 + 2 ln sd with the candidate (close_call)
-    bool gaussian = false;          ///< a mean shape or a Gaussian process: compared by the spectral likelihood
-    double spectral_gain = 0.0;     ///< 2 x (full-log Whittle nll of the current model - with the candidate)
-    int spectral_extra_parameters = 0;  ///< parameters the candidate adds to that fit (its own, or its shape's)
-    double spectral_observations = 0.0; ///< differences in the full-log spectral likelihood
-    std::vector<double> spectral_terms;  ///< per Fourier frequency: Whittle nll with the candidate (close_call)
-    bool long_memory = false;       ///< a Gauss-Markov fit whose correlation time exceeds 1/20 of the log
-    std::size_t cells_left = 0;     ///< this channel's cells still located with the candidate in the model
-    LevelStep residual_step;        ///< level-step test with the candidate (Gaussian processes; step_test_candidates)
-    StepsOverShape shape_steps;     ///< a mean shape against two level steps (accepted shapes on a white floor)
+    bool gaussian = false;                  ///< a mean shape or a Gaussian process: compared by the spectral likelihood
+    double spectral_gain = 0.0;             ///< 2 x (full-log Whittle nll of the current model - with the candidate)
+    int spectral_extra_parameters = 0;      ///< parameters the candidate adds to that fit (its own, or its shape's)
+    double spectral_observations = 0.0;     ///< differences in the full-log spectral likelihood
+    std::vector<double> spectral_terms;     ///< per Fourier frequency: Whittle nll with the candidate (close_call)
+    bool long_memory = false;               ///< a Gauss-Markov fit whose correlation time exceeds 1/20 of the log
+    std::size_t cells_left = 0;             ///< this channel's cells still located with the candidate in the model
+    LevelStep residual_step;     ///< level-step test with the candidate (Gaussian processes; step_test_candidates)
+    StepsOverShape shape_steps;  ///< a mean shape against two level steps (accepted shapes on a white floor)
     bool accepted = false;
-    int step = 0;                   ///< stepwise round in which it was tried (1-based)
-    bool replaces_given = false;    ///< fitted in place of the model file's process of the same name on the channel
+    int step = 0;                 ///< stepwise round in which it was tried (1-based)
+    bool replaces_given = false;  ///< fitted in place of the model file's process of the same name on the channel
     /// An added mean shape or Gaussian process: its parameters estimated again on the whole log once chosen
-    /// (ExplainResult::whole_log_model); empty otherwise. `params` are the fitting part's, which the held-out part judged.
+    /// (ExplainResult::whole_log_model); empty otherwise. `params` are the fitting part's, which the held-out part
+    /// judged.
     std::vector<std::pair<std::string, double>> whole_log_params;
-    std::string ambiguous_with;     ///< a candidate nearly as good, or ""
-    std::string settle;             ///< the experiment that would separate them
+    std::string ambiguous_with;  ///< a candidate nearly as good, or ""
+    std::string settle;          ///< the experiment that would separate them
 
     /// Tried while the channel's held-out score lay within its bound: a step can still add an effect then (a cell of
     /// either part located, or after the first step an excess over 0.2 left), on weaker evidence than a gap the model
@@ -99,17 +101,19 @@ struct Explanation {
     bool within_bound_before() const { return heldout_before <= heldout_bound; }
 
     /// The parameters the diagnosis reports: the whole log's where there are, else the fitting part's.
-    const std::vector<std::pair<std::string, double>>& estimate() const { return whole_log_params.empty() ? params : whole_log_params; }
+    const std::vector<std::pair<std::string, double>>& estimate() const {
+        return whole_log_params.empty() ? params : whole_log_params;
+    }
 };
 
 /// The effects of the model the log is diagnosed on (`gap --model FILE`), in the base before anything is located:
 /// see add_given_effects().
 struct GivenEffects {
-    std::vector<Explanation> refitted;  ///< mean shapes fitted to this log, one channel each (effect, channel, params)
-    std::vector<Explanation> held;      ///< Gaussian processes at the file's values, one channel each
-    std::vector<std::size_t> held_slot; ///< per `held` entry: its spec in GapModel::effects
-    std::vector<std::string> kept;      ///< kept as the file gives them: effects the diagnosis does not fit, and
-                                        ///< shapes or processes the file gives channels not analysed
+    std::vector<Explanation> refitted;   ///< mean shapes fitted to this log, one channel each (effect, channel, params)
+    std::vector<Explanation> held;       ///< Gaussian processes at the file's values, one channel each
+    std::vector<std::size_t> held_slot;  ///< per `held` entry: its spec in GapModel::effects
+    std::vector<std::string> kept;       ///< kept as the file gives them: effects the diagnosis does not fit, and
+                                         ///< shapes or processes the file gives channels not analysed
 
     bool empty() const { return refitted.empty() && held.empty() && kept.empty(); }
 };
@@ -118,18 +122,18 @@ struct GivenEffects {
 struct PathChoice {
     int step = 0;
     std::string channel;
-    std::string process, shape;              ///< the first effect of each path
-    double criterion_process = 0.0;          ///< the channel's full-log spectral criterion at the path's end
+    std::string process, shape;      ///< the first effect of each path
+    double criterion_process = 0.0;  ///< the channel's full-log spectral criterion at the path's end
     double criterion_shape = 0.0;
-    bool shape_kept = false;                 ///< criterion_shape + shape_path_margin < criterion_process
+    bool shape_kept = false;  ///< criterion_shape + shape_path_margin < criterion_process
 };
 
 struct ExplainResult {
-    GapModel model;                         ///< base plus the accepted effects
-    GapModel whole_log_model;               ///< the same with their parameters estimated again on the whole log
-    std::vector<Explanation> tried;         ///< every fit on the kept path, accepted first, then by held-out gap
-    std::vector<Explanation> accepted;      ///< in the order they were added
-    std::vector<PathChoice> paths;          ///< the kept path's branch points, in step order
+    GapModel model;                     ///< base plus the accepted effects
+    GapModel whole_log_model;           ///< the same with their parameters estimated again on the whole log
+    std::vector<Explanation> tried;     ///< every fit on the kept path, accepted first, then by held-out gap
+    std::vector<Explanation> accepted;  ///< in the order they were added
+    std::vector<PathChoice> paths;      ///< the kept path's branch points, in step order
 };
 
 /// The acceptance rule: likelihood gain on all cells above penalty_per_param x penalty, a held-out gap to shrink,
@@ -175,7 +179,8 @@ bool closes_gap(const Explanation& e, double step_alpha);
 /// shape is fitted to the whole log with eq. 1 in the candidate's form (what the file gives other channels is kept).
 /// Every other effect is kept as the file gives it. The white noise is then matched again to the log's short-lag
 /// spread `target_spread`. base.effects ends with the refitted shapes, in the order returned.
-GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec>& effects, const std::vector<double>& t_s,
+GivenEffects add_given_effects(GapModel& base, const std::vector<sim::EffectSpec>& effects,
+                               const std::vector<double>& t_s,
                                const std::array<const std::vector<double>*, kChannelCount>& y,
                                const std::array<bool, kChannelCount>& channels,
                                const std::array<double, kChannelCount>& target_spread, std::uint64_t seed);

@@ -28,7 +28,8 @@ json located_json(const std::vector<LocatedCell>& cells, const std::vector<Cell>
 
 json steps_json(const std::array<StepEstimate, 2>& steps) {
     json out = json::array();
-    for (const auto& s : steps) out.push_back({{"t_s", report::json_number(s.t_s)}, {"size_counts", report::json_number(s.size_counts)}});
+    for (const auto& s : steps)
+        out.push_back({{"t_s", report::json_number(s.t_s)}, {"size_counts", report::json_number(s.size_counts)}});
     return out;
 }
 
@@ -78,16 +79,19 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["verdict"] = r.verdict;
     j["information_criterion"] = criterion_name(options.explain_options.information_criterion);
     json ex = json::array();
-    for (const auto& e : r.accepted) ex.push_back(explanation_json(e, options.explain_options.information_criterion, true));
+    for (const auto& e : r.accepted)
+        ex.push_back(explanation_json(e, options.explain_options.information_criterion, true));
     for (const auto& e : r.tried)
         if (!was_added(r, e)) ex.push_back(explanation_json(e, options.explain_options.information_criterion, false));
     j["explanations"] = ex;
     const auto given_json = [](const std::vector<Explanation>& list) {
         json out = json::array();
-        for (const auto& e : list) out.push_back({{"effect", e.effect}, {"channel", e.channel}, {"params", params_json(e.params)}});
+        for (const auto& e : list)
+            out.push_back({{"effect", e.effect}, {"channel", e.channel}, {"params", params_json(e.params)}});
         return out;
     };
-    j["given"] = {{"refitted", given_json(r.given.refitted)}, {"held", given_json(r.given.held)}, {"kept", r.given.kept}};
+    j["given"] = {
+        {"refitted", given_json(r.given.refitted)}, {"held", given_json(r.given.held)}, {"kept", r.given.kept}};
     json paths = json::array();
     for (const auto& p : r.paths)
         paths.push_back({{"step", p.step},
@@ -110,25 +114,34 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["diffuse_searched"] = r.diffuse_searched;
     json constant = json::array();
     for (const auto& k : r.constant_channels)
-        constant.push_back({{"channel", kChannelNames[channel_index(k.channel)]}, {"counts", report::json_number(k.counts)}});
+        constant.push_back(
+            {{"channel", kChannelNames[channel_index(k.channel)]}, {"counts", report::json_number(k.counts)}});
     j["constant_channels"] = constant;
     json quiet = json::array();
     for (const auto& k : r.noise_free)
-        quiet.push_back({{"channel", kChannelNames[channel_index(k.channel)]}, {"spread_counts", report::json_number(k.spread_counts)}});
+        quiet.push_back({{"channel", kChannelNames[channel_index(k.channel)]},
+                         {"spread_counts", report::json_number(k.spread_counts)}});
     j["noise_free_channels"] = quiet;
     json saturated = json::array();
     for (const auto& s : r.saturated)
-        saturated.push_back({{"channel", kChannelNames[channel_index(s.channel)]}, {"rows", s.rows},
-                             {"first_t_s", report::json_number(s.first_t_s)}, {"last_t_s", report::json_number(s.last_t_s)}});
+        saturated.push_back({{"channel", kChannelNames[channel_index(s.channel)]},
+                             {"rows", s.rows},
+                             {"first_t_s", report::json_number(s.first_t_s)},
+                             {"last_t_s", report::json_number(s.last_t_s)}});
     j["saturated"] = saturated;
     json lone = json::array();
     for (const auto& l : r.lone_values)
-        lone.push_back({{"channel", kChannelNames[channel_index(l.channel)]}, {"t_s", l.t_s},
-                        {"variance_share", report::json_number(l.variance_share)}, {"warning", l.warning}});
+        lone.push_back({{"channel", kChannelNames[channel_index(l.channel)]},
+                        {"t_s", l.t_s},
+                        {"variance_share", report::json_number(l.variance_share)},
+                        {"warning", l.warning}});
     j["lone_values"] = lone;
     json left_out = json::array();
     for (const auto& c : r.left_out)
-        left_out.push_back({{"from_s", report::json_number(c.from_s)}, {"to_s", report::json_number(c.to_s)}, {"rows", c.rows}, {"by", c.by}});
+        left_out.push_back({{"from_s", report::json_number(c.from_s)},
+                            {"to_s", report::json_number(c.to_s)},
+                            {"rows", c.rows},
+                            {"by", c.by}});
     j["left_out"] = left_out;
     json steps = json::array();
     for (const auto& s : r.level_steps) {
@@ -184,11 +197,18 @@ nlohmann::json stability_to_json(const VerdictStability& s) {
     using nlohmann::json;
     json params = json::array();
     for (const ParameterSpread& p : s.params) {
-        params.push_back({{"effect", p.effect}, {"channel", p.channel}, {"param", p.param}, {"estimate", report::json_number(p.estimate)},
-                          {"values", report::json_array(p.values)}, {"median", report::json_number(p.quantile(0.5))}, {"p16", report::json_number(p.quantile(0.16))},
+        params.push_back({{"effect", p.effect},
+                          {"channel", p.channel},
+                          {"param", p.param},
+                          {"estimate", report::json_number(p.estimate)},
+                          {"values", report::json_array(p.values)},
+                          {"median", report::json_number(p.quantile(0.5))},
+                          {"p16", report::json_number(p.quantile(0.16))},
                           {"p84", report::json_number(p.quantile(0.84))}});
     }
-    return {{"logs", s.logs}, {"verdicts", s.verdicts}, {"same", s.logs ? static_cast<double>(s.same) / static_cast<double>(s.logs) : 0.0},
+    return {{"logs", s.logs},
+            {"verdicts", s.verdicts},
+            {"same", s.logs ? static_cast<double>(s.same) / static_cast<double>(s.logs) : 0.0},
             {"params", params}};
 }
 

@@ -32,8 +32,8 @@ std::vector<double> off_span(const Eigen::MatrixXd& q, Eigen::VectorXd x) {
     return {x.data(), x.data() + x.size()};
 }
 
-constexpr double kMemoryShare = 0.1;    // the whitening's memory, as a share of the log
-constexpr int kFloorEvaluations = 40;   // Nelder-Mead budget of the explanation's one free parameter, its floor
+constexpr double kMemoryShare = 0.1;   // the whitening's memory, as a share of the log
+constexpr int kFloorEvaluations = 40;  // Nelder-Mead budget of the explanation's one free parameter, its floor
 
 struct Largest {
     std::size_t index = 0;  ///< difference index: the step lies between samples index and index + 1
@@ -75,8 +75,8 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
 
 // Change points in mean fitted together with the columns of `q` (orthonormal: eq. 1's tangent, whose constant is
 // the pieces' common level, or the constant alone): the residual sum of squares of `r` (orthogonal to q) on q and
-// the steps' columns h_c (1 from index c on), from suffix sums. A hop bends the eq. 1 fit toward it, and the bend, fitted alone, leaves
-// a step-like remainder near the start that the cuts would otherwise take for the hop's return.
+// the steps' columns h_c (1 from index c on), from suffix sums. A hop bends the eq. 1 fit toward it, and the bend,
+// fitted alone, leaves a step-like remainder near the start that the cuts would otherwise take for the hop's return.
 struct StepsBesideColumns {
     std::vector<double> tail_r;  // sum_{k >= c} r_k, size n + 1
     Eigen::MatrixXd tail_q;      // row c: sum_{k >= c} q_k (the columns' share of h_c)
@@ -126,7 +126,8 @@ struct StepsBesideColumns {
 // scans, exact for either cut given the other (O(n) each): from the best single cut, the best second cut, then each
 // again given the other until neither moves. With `hop_and_return` only steps of opposite signs count: two steps
 // the same way are a staircase, which a warm-up's unmodelled curvature draws, not a hop and its return.
-std::pair<std::size_t, std::size_t> best_two_cuts(const StepsBesideColumns& cost, std::size_t edge, bool hop_and_return = false) {
+std::pair<std::size_t, std::size_t> best_two_cuts(const StepsBesideColumns& cost, std::size_t edge,
+                                                  bool hop_and_return = false) {
     const std::size_t n = cost.size();
     std::size_t c1 = edge;
     double best_cost = 1e300;
@@ -173,20 +174,23 @@ StepPValues step_p_values(const Eigen::MatrixXd& null, double impulse, double st
     const double own = min_p(ranked.rows() - 1);
     int as_small = 0;
     for (Eigen::Index k = 0; k < ranked.rows(); ++k) as_small += min_p(k) <= own;
-    return {rank_p(0, impulse), rank_p(1, statistic), static_cast<double>(as_small) / static_cast<double>(ranked.rows())};
+    return {rank_p(0, impulse), rank_p(1, statistic),
+            static_cast<double>(as_small) / static_cast<double>(ranked.rows())};
 }
 
 const char* step_reading(const LevelStep& s) {
     if (s.significant) return "a step no library effect makes: the log is unexplained";
-    if (s.outsized) return "beyond the model's own, but its processes remain beside the steps: their outsized increments";
+    if (s.outsized)
+        return "beyond the model's own, but its processes remain beside the steps: their outsized increments";
     return "none beyond the model's own";
 }
 
 bool leaves_step(const LevelStep& s, double alpha) { return s.tested && s.p_value <= alpha && !s.process_beside_steps; }
 
-LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s, const std::vector<double>& y,
-                          const std::vector<std::string>& spectral_effects, const std::vector<double>& spectral_params,
-                          int replicates, std::uint64_t seed, int threads, double alpha) {
+LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s,
+                          const std::vector<double>& y, const std::vector<std::string>& spectral_effects,
+                          const std::vector<double>& spectral_params, int replicates, std::uint64_t seed, int threads,
+                          double alpha) {
     // Enough replicates that the combined p resolves alpha four times over.
     replicates = std::max(replicates, static_cast<int>(std::ceil(4.0 / alpha)));
     const std::size_t i = channel_index(c);
@@ -244,9 +248,9 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     const std::vector<double> real = statistics(r, &steps);
     std::array<bool, kChannelCount> only{};
     only[i] = true;
-    const Eigen::MatrixXd null = simulate_replicates(model, t_s, only, replicates, seed, threads, [&](const sim::Outputs& sim, const sim::Outputs&) {
-        return statistics(residual_about_mean(sim[i]), nullptr);
-    });
+    const Eigen::MatrixXd null = simulate_replicates(
+        model, t_s, only, replicates, seed, threads,
+        [&](const sim::Outputs& sim, const sim::Outputs&) { return statistics(residual_about_mean(sim[i]), nullptr); });
     LevelStep out;
     out.tested = true;
     out.channel = c;
@@ -266,7 +270,8 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     const PartPeriodogram stepped_p = part_periodogram(stepped, all);
     const SpectralFit beside = fit_spectral(spectral_effects, c, model, stepped_p, spectral_params);
     out.process_gain = fit_spectral({}, c, model, stepped_p).nll - beside.nll;
-    out.process_margin = static_cast<double>(spectral_params.size()) * 0.5 * parameter_price(InformationCriterion::bic, real_p.count);
+    out.process_margin =
+        static_cast<double>(spectral_params.size()) * 0.5 * parameter_price(InformationCriterion::bic, real_p.count);
     out.process_beside_steps = out.process_gain > out.process_margin;
     out.impulse = real[0];
     out.statistic = real[1];
@@ -288,8 +293,9 @@ StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vecto
     if (n < 4 * edge + 4 || shape_residual.size() != n) return out;
     double shape_rss = 0.0;
     for (double r : shape_residual) shape_rss += r * r;
-    const StepsBesideColumns cost(off_span(beside, Eigen::Map<const Eigen::VectorXd>(base_residual.data(), static_cast<Eigen::Index>(n))),
-                                  beside);
+    const StepsBesideColumns cost(
+        off_span(beside, Eigen::Map<const Eigen::VectorXd>(base_residual.data(), static_cast<Eigen::Index>(n))),
+        beside);
     const auto [c1, c2] = best_two_cuts(cost, edge, true);
     Eigen::Vector2d u;
     const Eigen::Vector2d size = cost.gram(c1, c2, u).ldlt().solve(u);

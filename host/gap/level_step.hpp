@@ -34,22 +34,22 @@ struct StepEstimate {
 };
 
 struct LevelStep {
-    bool tested = false;       ///< false: no test was run (the fields below are defaults)
+    bool tested = false;  ///< false: no test was run (the fields below are defaults)
     Channel channel = Channel::gyro;
     std::array<StepEstimate, 2> steps{};  ///< the rival's two steps, the larger first (2 % kept clear of each end)
-    double impulse = 0.0;      ///< largest standardised impulse under the explanation's whitening
-    double impulse_p = 1.0;    ///< its Monte Carlo p: (1 + replicates at least as large) / (1 + replicates)
-    double statistic = 0.0;    ///< Whittle nll of the explanation minus the rival's: > 0 where the steps fit better
-    double margin = 0.0;       ///< the BIC price of the rival's extra parameters, ln(n) / 2 each [nll units]
-    double rival_p = 1.0;      ///< the statistic's Monte Carlo p
-    double p_value = 1.0;      ///< Monte Carlo p of the smaller p (the rival's only where it exceeds the margin)
+    double impulse = 0.0;                 ///< largest standardised impulse under the explanation's whitening
+    double impulse_p = 1.0;               ///< its Monte Carlo p: (1 + replicates at least as large) / (1 + replicates)
+    double statistic = 0.0;  ///< Whittle nll of the explanation minus the rival's: > 0 where the steps fit better
+    double margin = 0.0;     ///< the BIC price of the rival's extra parameters, ln(n) / 2 each [nll units]
+    double rival_p = 1.0;    ///< the statistic's Monte Carlo p
+    double p_value = 1.0;    ///< Monte Carlo p of the smaller p (the rival's only where it exceeds the margin)
     /// The explanation's processes refitted beside the rival's steps: Whittle nll of the floor with the steps minus
     /// theirs (> 0 where the processes are there beyond the steps), and the Schwarz price of their parameters.
     double process_gain = 0.0;
     double process_margin = 0.0;
     bool process_beside_steps = false;  ///< process_gain > process_margin: the steps may be the process's increments
-    bool significant = false;  ///< leaves_step() at the test's alpha: a step no library effect makes
-    bool outsized = false;     ///< p_value <= alpha with the processes beside the steps: read as their outsized increments
+    bool significant = false;           ///< leaves_step() at the test's alpha: a step no library effect makes
+    bool outsized = false;  ///< p_value <= alpha with the processes beside the steps: read as their outsized increments
 };
 
 struct StepPValues {
@@ -76,9 +76,10 @@ const char* step_reading(const LevelStep& s);
 /// Tests channel `c` of the log (`t_s`, `y`) against `model`, whose Gaussian-process effects on that channel are
 /// `spectral_effects` with `spectral_params` (concatenated, candidate_param_names() order; kept, only the white floor
 /// is estimated on the log), at level `alpha` with at least `replicates` replicates (and at least 4 / alpha).
-LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s, const std::vector<double>& y,
-                          const std::vector<std::string>& spectral_effects, const std::vector<double>& spectral_params,
-                          int replicates, std::uint64_t seed, int threads, double alpha);
+LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s,
+                          const std::vector<double>& y, const std::vector<std::string>& spectral_effects,
+                          const std::vector<double>& spectral_params, int replicates, std::uint64_t seed, int threads,
+                          double alpha);
 
 /// A mean shape against its rival, two level steps (a hop and a return). A mode hop drawn by a second time constant
 /// or a sine closes the battery's gap, as a random walk does around one; but two steps describe it better than the
@@ -94,9 +95,9 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
 struct StepsOverShape {
     bool tested = false;
     std::array<StepEstimate, 2> steps{};  ///< the two steps, in time order
-    double statistic = 0.0;  ///< the shape's negative log-likelihood minus the steps' [nll units]
-    double margin = 0.0;     ///< the Schwarz price of the steps' extra parameters
-    bool steps_win = false;  ///< statistic > margin: a level step no library effect makes
+    double statistic = 0.0;               ///< the shape's negative log-likelihood minus the steps' [nll units]
+    double margin = 0.0;                  ///< the Schwarz price of the steps' extra parameters
+    bool steps_win = false;               ///< statistic > margin: a level step no library effect makes
 };
 StepsOverShape steps_over_shape(const std::vector<double>& t_s, const std::vector<double>& base_residual,
                                 const std::vector<double>& shape_residual, int shape_parameters, double long_run_factor,

@@ -87,8 +87,8 @@ Data centred_data(const std::vector<double>& y, std::size_t n) {
 
 }  // namespace
 
-std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t cut1,
-                                           std::size_t cut2) {
+std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const std::vector<double>& y,
+                                           std::size_t cut1, std::size_t cut2) {
     const std::size_t n = y.size();
     const Data data = centred_data(y, n);
     const auto step = [&](std::size_t cut) {
@@ -102,11 +102,12 @@ std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const
     for (double tau = 0.003 * span; tau < 30.0 * span; tau *= 1.2) {
         const Column r = rise(t_s, n, tau);
         Eigen::Matrix3d g;
-        g << r.centred.squaredNorm(), r.centred.dot(s1.centred), r.centred.dot(s2.centred), 0.0, s1.centred.squaredNorm(),
-            s1.centred.dot(s2.centred), 0.0, 0.0, s2.centred.squaredNorm();
+        g << r.centred.squaredNorm(), r.centred.dot(s1.centred), r.centred.dot(s2.centred), 0.0,
+            s1.centred.squaredNorm(), s1.centred.dot(s2.centred), 0.0, 0.0, s2.centred.squaredNorm();
         g = g.selfadjointView<Eigen::Upper>();
         Eigen::VectorXd beta;
-        solve(g, Eigen::Vector3d(r.centred.dot(data.centred), s1.centred.dot(data.centred), s2.centred.dot(data.centred)),
+        solve(g,
+              Eigen::Vector3d(r.centred.dot(data.centred), s1.centred.dot(data.centred), s2.centred.dot(data.centred)),
               data.yy, beta);
         Eigen::VectorXd e = data.centred - beta(0) * r.centred - beta(1) * s1.centred - beta(2) * s2.centred;
         if (best.size() == 0 || e.squaredNorm() < best.squaredNorm()) best = std::move(e);
@@ -173,7 +174,8 @@ TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::
     return out;
 }
 
-ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n) {
+ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, const std::vector<double>& y,
+                                            std::size_t n) {
     const Data data = centred_data(y, n);
     const double dt = (t_s[n - 1] - t_s[0]) / static_cast<double>(n - 1);
     const double span = t_s[n - 1] - t_s[0];
@@ -205,7 +207,8 @@ ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, cons
         const double sy = s.centred.dot(data.centred), cy = c.centred.dot(data.centred);
         for (std::size_t i = 0; i < taus.size(); ++i) {
             Eigen::Matrix3d g;
-            g << rise_rise[i], rises[i].centred.dot(s.centred), rises[i].centred.dot(c.centred), 0.0, ss, sc, 0.0, 0.0, cc;
+            g << rise_rise[i], rises[i].centred.dot(s.centred), rises[i].centred.dot(c.centred), 0.0, ss, sc, 0.0, 0.0,
+                cc;
             g(1, 0) = g(0, 1), g(2, 0) = g(0, 2), g(2, 1) = g(1, 2);
             const double r = solve(g, Eigen::Vector3d(rise_data[i], sy, cy), data.yy, beta);
             if (r < best) best = r, start = {std::log(taus[i]), std::log(p)};

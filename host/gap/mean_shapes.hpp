@@ -28,8 +28,8 @@ struct ExponentialAndSine {
 /// The residual of y = C1 (1 - e^{-t/T}) + C2 + S1 [k >= cut1] + S2 [k >= cut2] (eq. 1 with two level steps at given
 /// sample indices) over all of (t_s, y), T profiled over a log grid from 0.003 to about 27 spans (ratio 1.2): the
 /// level-step test's steps with eq. 1 fitted again beside them.
-std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t cut1,
-                                           std::size_t cut2);
+std::vector<double> eq1_and_steps_residual(const std::vector<double>& t_s, const std::vector<double>& y,
+                                           std::size_t cut1, std::size_t cut2);
 
 /// The directions in which a least-squares fit of eq. 1 with time constant T moves the mean: 1, e^{-t/T} and
 /// (t/T) e^{-t/T} (its derivative in T), one row per sample. What such a fit absorbs of the noise lies in their span
@@ -41,6 +41,7 @@ Eigen::MatrixXd eq1_tangent_basis(const std::vector<double>& t_s, double tau_s);
 
 /// Fits the first `n` samples of (t_s, y).
 TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);
-ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, const std::vector<double>& y, std::size_t n);
+ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, const std::vector<double>& y,
+                                            std::size_t n);
 
 }  // namespace driftlab::host::gap

@@ -22,6 +22,7 @@ proto::ConfigPayload firmware_config(const Smoothing& smoothing, bool raw, const
 
 /// `model` as a simulator model. `channels`: the analysed channels (the others keep the unit's drift and noise);
 /// `raw`: the log carried raw codes (the firmware then sends them). Throws as firmware_config().
-ModelOut model_out(const GapModel& model, const std::array<bool, kChannelCount>& channels, bool raw, const std::string& source);
+ModelOut model_out(const GapModel& model, const std::array<bool, kChannelCount>& channels, bool raw,
+                   const std::string& source);
 
 }  // namespace driftlab::host::gap

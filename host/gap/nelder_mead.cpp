@@ -28,7 +28,8 @@ double objective(unsigned n, const double* x, double* /*gradient: derivative-fre
     s.x.assign(x, x + n);
     try {
         const double v = (*s.f)(s.x);
-        return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();  // -inf too: NLopt would keep it as the best
+        return std::isfinite(v) ? v
+                                : std::numeric_limits<double>::infinity();  // -inf too: NLopt would keep it as the best
     } catch (...) {
         // An exception must not cross NLopt's C frames: keep it, stop, and rethrow once NLopt has returned.
         s.failure = std::current_exception();
@@ -39,10 +40,11 @@ double objective(unsigned n, const double* x, double* /*gradient: derivative-fre
 
 }  // namespace
 
-NelderMeadResult nelder_mead(const std::function<double(const std::vector<double>&)>& f, const std::vector<double>& start,
-                             const std::vector<double>& step, int max_evaluations) {
+NelderMeadResult nelder_mead(const std::function<double(const std::vector<double>&)>& f,
+                             const std::vector<double>& start, const std::vector<double>& step, int max_evaluations) {
     const auto n = static_cast<unsigned>(start.size());
-    const std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(nlopt_create(NLOPT_LN_NELDERMEAD, n), nlopt_destroy);
+    const std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(nlopt_create(NLOPT_LN_NELDERMEAD, n),
+                                                                     nlopt_destroy);
     if (!opt || step.size() != start.size()) throw std::invalid_argument("nelder_mead: one step per coordinate");
     Search search{&f, opt.get(), {}, 0, nullptr};
     nlopt_set_min_objective(opt.get(), objective, &search);
@@ -52,7 +54,8 @@ NelderMeadResult nelder_mead(const std::function<double(const std::vector<double
     const nlopt_result status = nlopt_optimize(opt.get(), result.x.data(), &result.value);
     if (search.failure) std::rethrow_exception(search.failure);
     if (status == NLOPT_INVALID_ARGS || status == NLOPT_OUT_OF_MEMORY)
-        throw std::runtime_error("nelder_mead: NLopt refused the search (" + std::string(nlopt_result_to_string(status)) + ")");
+        throw std::runtime_error("nelder_mead: NLopt refused the search (" +
+                                 std::string(nlopt_result_to_string(status)) + ")");
     result.evaluations = search.evaluations;
     return result;
 }

@@ -16,7 +16,7 @@ struct NelderMeadResult {
 
 /// Minimises `f` from `start` with initial steps `step` (one per coordinate), within `max_evaluations`. A non-finite
 /// value counts as worse than any finite one; an exception thrown by `f` stops the search and is rethrown.
-NelderMeadResult nelder_mead(const std::function<double(const std::vector<double>&)>& f, const std::vector<double>& start,
-                             const std::vector<double>& step, int max_evaluations);
+NelderMeadResult nelder_mead(const std::function<double(const std::vector<double>&)>& f,
+                             const std::vector<double>& start, const std::vector<double>& step, int max_evaluations);
 
 }  // namespace driftlab::host::gap

@@ -43,11 +43,12 @@ ColumnMapping parse_column_mapping(const std::string& text) {
     const std::string last = text.substr(colon + 1);
     if (!last.empty() && std::isalpha(static_cast<unsigned char>(last.front()))) {
         const bool gyro = m.channel == Channel::gyro;
-        const stats::RateQuantity quantity = gyro ? stats::RateQuantity::angular_rate : stats::RateQuantity::acceleration;
+        const stats::RateQuantity quantity =
+            gyro ? stats::RateQuantity::angular_rate : stats::RateQuantity::acceleration;
         const auto unit = stats::rate_unit(last);
         if (!unit || unit->quantity != quantity)
-            throw UsageError("--as: unknown unit '" + last + "' for " + channel + " (" + stats::rate_unit_names(quantity) +
-                             ") in '" + text + "'");
+            throw UsageError("--as: unknown unit '" + last + "' for " + channel + " (" +
+                             stats::rate_unit_names(quantity) + ") in '" + text + "'");
         // The simulator's unit of the channel: deg/s, g.
         m.to_model_unit = unit->si_per_unit / stats::rate_unit(gyro ? "deg/s" : "g")->si_per_unit;
         const auto previous = text.rfind(':', colon - 1);
@@ -67,7 +68,8 @@ ColumnMapping parse_column_mapping(const std::string& text) {
 
 LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
     if (how.columns.empty()) throw UsageError("a plain recording needs at least one --as CHANNEL=COLUMN:LSB");
-    if (!(how.sample_period_s > 0.0)) throw UsageError("a plain recording needs its sample period (--tau0 SECONDS > 0)");
+    if (!(how.sample_period_s > 0.0))
+        throw UsageError("a plain recording needs its sample period (--tau0 SECONDS > 0)");
     if (how.block < 1 || how.block > proto::kConversionsPerOutputMax)
         throw UsageError("--block: 1 to " + std::to_string(proto::kConversionsPerOutputMax) +
                          " samples per output (the most conversions per output a log's smoothing can hold)");
@@ -98,8 +100,9 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
                             "time column)");
     const std::size_t outputs = table.rows() / how.block;
     if (outputs < 2)
-        throw DataError(table.source_name, 0, std::to_string(table.rows()) + " rows make fewer than two blocks of " +
-                                                   std::to_string(how.block));
+        throw DataError(
+            table.source_name, 0,
+            std::to_string(table.rows()) + " rows make fewer than two blocks of " + std::to_string(how.block));
     LogData log;
     log.source_name = table.source_name;
     for (std::size_t b = 0; b < outputs; ++b) {
@@ -124,11 +127,11 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
             for (std::size_t i = b * how.block; i < (b + 1) * how.block; ++i) {
                 const double code = std::round(s->values[i] / m.lsb) + offset;
                 if (!(code >= 0.0 && code <= kFullScale))
-                    throw DataError(table.source_name, table.line_of_row(i),
-                                    "column '" + m.column + "' row " + std::to_string(i + 1) + " (" + format_double(s->values[i]) +
-                                        ") lies beyond the 10-bit range around the column's median (" +
-                                        format_double(kMidScale) + " codes of LSB " + format_double(m.lsb) +
-                                        "): give a coarser LSB, or check that row");
+                    throw DataError(
+                        table.source_name, table.line_of_row(i),
+                        "column '" + m.column + "' row " + std::to_string(i + 1) + " (" + format_double(s->values[i]) +
+                            ") lies beyond the 10-bit range around the column's median (" + format_double(kMidScale) +
+                            " codes of LSB " + format_double(m.lsb) + "): give a coarser LSB, or check that row");
                 sum += code;
             }
             log.counts[c][b] = sum / static_cast<double>(how.block);
@@ -146,7 +149,9 @@ sim::SimModel unit_of_recording(sim::SimModel unit, const PlainRecording& how, c
     for (const auto& m : how.columns) {
         const std::size_t c = channel_index(m.channel);
         const auto mid = log.metadata.get_double(std::string("mid_scale_value_") + kChannelNames[c]);
-        if (!mid) throw std::invalid_argument("unit_of_recording: the log was not made by log_from_table() with this mapping");
+        if (!mid)
+            throw std::invalid_argument(
+                "unit_of_recording: the log was not made by log_from_table() with this mapping");
         sim::ChannelModel& ch = unit.channels[c];
         ch.front_end.span_unit = kMidScale * m.lsb * m.to_model_unit;  // counts_per_unit = levels / 2 / span = 1 / lsb
         ch.front_end.center_unit = *mid * m.to_model_unit;

@@ -31,8 +31,8 @@ ColumnMapping parse_column_mapping(const std::string& text);
 
 struct PlainRecording {
     std::vector<ColumnMapping> columns;  ///< at least one, each channel at most once
-    double sample_period_s = 0.0;        ///< the raw samples' period (required; timing comes from a t_s/t/time column if any)
-    std::size_t block = 1;               ///< samples averaged per output
+    double sample_period_s = 0.0;  ///< the raw samples' period (required; timing comes from a t_s/t/time column if any)
+    std::size_t block = 1;         ///< samples averaged per output
 };
 
 /// The log of `table` under `how`. Channels without a column stay constant at mid-scale (not analysed). Throws
@@ -41,9 +41,10 @@ struct PlainRecording {
 LogData log_from_table(const NumericTable& table, const PlainRecording& how);
 
 /// The unit that `log` (made by log_from_table() under `how`) reads as: on each mapped channel one code is one LSB
-/// of the column (converted to deg/s or g) and mid-scale is the column's median (metadata `mid_scale_value_<channel>`), so that the
-/// diagnosis's physical parameters (deg/s, g) are the recording's own and a model file written from it describes
-/// the recorded sensor. The other channels and everything else are `unit`'s; the converter is 10-bit, as the codes.
+/// of the column (converted to deg/s or g) and mid-scale is the column's median (metadata `mid_scale_value_<channel>`),
+/// so that the diagnosis's physical parameters (deg/s, g) are the recording's own and a model file written from it
+/// describes the recorded sensor. The other channels and everything else are `unit`'s; the converter is 10-bit, as the
+/// codes.
 sim::SimModel unit_of_recording(sim::SimModel unit, const PlainRecording& how, const LogData& log);
 
 }  // namespace driftlab::host::gap

@@ -34,8 +34,9 @@ Eigen::MatrixXd simulate_replicates(const GapModel& model, const std::vector<dou
     });
     Eigen::MatrixXd out(replicates, static_cast<Eigen::Index>(rows.front().size()));
     for (int r = 0; r < replicates; ++r)
-        out.row(r) = Eigen::Map<const Eigen::RowVectorXd>(rows[static_cast<std::size_t>(r)].data(),
-                                                         static_cast<Eigen::Index>(rows[static_cast<std::size_t>(r)].size()));
+        out.row(r) =
+            Eigen::Map<const Eigen::RowVectorXd>(rows[static_cast<std::size_t>(r)].data(),
+                                                 static_cast<Eigen::Index>(rows[static_cast<std::size_t>(r)].size()));
     return out;
 }
 
@@ -49,7 +50,8 @@ fit::FitOptions start_at_model(const GapModel& model, Channel c) {
 Eigen::MatrixXd run_replicates(const GapModel& model, const std::vector<double>& t_s, const BatteryOptions& options,
                                int replicates, std::uint64_t seed, int threads, const ReplicateExtra& extra) {
     BatteryOptions warm = options;
-    for (std::size_t c = 0; c < kChannelCount; ++c) warm.fit_start[c] = start_at_model(model, static_cast<Channel>(c)).start;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        warm.fit_start[c] = start_at_model(model, static_cast<Channel>(c)).start;
     return simulate_replicates(
         model, t_s, options.channels, replicates, seed, threads,
         [&](const sim::Outputs& sim, const sim::Outputs& raw_codes) {

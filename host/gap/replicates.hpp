@@ -25,7 +25,8 @@ using ReplicateExtra = std::function<void(std::uint64_t replicate_seed, sim::Out
 
 /// What one replicate is reduced to (one row of the result): its smoothed outputs and, when asked for, the raw
 /// codes of the same rows (else empty).
-using ReplicateSummary = std::function<std::vector<double>(const sim::Outputs& simulated, const sim::Outputs& raw_codes)>;
+using ReplicateSummary =
+    std::function<std::vector<double>(const sim::Outputs& simulated, const sim::Outputs& raw_codes)>;
 
 /// `summary` of `replicates` replicates (rows) of `model` on the instants `t_s` for `channels`, run on `threads`
 /// threads, with raw codes when `raw_codes`. Every row must have the same length.

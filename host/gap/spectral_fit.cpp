@@ -150,9 +150,10 @@ SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, con
 
 double spectral_nll(const SpectralFit& fit, Channel c, const GapModel& model, const PartPeriodogram& p,
                     std::vector<double>* terms) {
-    return whittle_nll(
-        p, expected_periodogram(model_spectrum(fit.effects, c, fit.params, model, fit.white), white_floor_autocovariance(model.smoothing), p),
-        terms);
+    return whittle_nll(p,
+                       expected_periodogram(model_spectrum(fit.effects, c, fit.params, model, fit.white),
+                                            white_floor_autocovariance(model.smoothing), p),
+                       terms);
 }
 
 const char* criterion_name(InformationCriterion ic) { return ic == InformationCriterion::aic ? "aic" : "bic"; }

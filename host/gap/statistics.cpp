@@ -18,21 +18,21 @@ namespace driftlab::host::gap {
 
 namespace {
 
-constexpr int kTimeWindows = 10;              // windowed mean and variance: 10 windows of L/10
+constexpr int kTimeWindows = 10;  // windowed mean and variance: 10 windows of L/10
 // The interleaved design's fitting tenths: both parts hold early and late tenths and five of them each, and the
 // pattern is not periodic. Alternate tenths (0, 2, 4, 6, 8) repeat every fifth of the log, so a fit on them cannot
 // tell a period P from the alias 1/(1/P + 5/L) (mask sidelobe -3.9 dB); this pattern's largest sidelobe is -9.4 dB.
 constexpr std::array<std::size_t, 5> kFittingTenths{0, 4, 5, 7, 9};
-constexpr double kMeanMarginCounts = 0.1;     // windowed mean of the residual [counts]
-constexpr double kLogRatioMargin = 0.0953;    // ln 1.1: ADEV, variance, frequency-count ratios beyond 10 %
-constexpr double kPsdMargin = 0.2303;         // 1 dB in ln power
-constexpr double kAcfMargin = 0.1;            // mean autocorrelation in a lag band
-constexpr double kCorrMargin = 0.1;           // lag-0 correlation between channels
-constexpr double kCoherenceMargin = 0.1;      // band coherence between channels
+constexpr double kMeanMarginCounts = 0.1;   // windowed mean of the residual [counts]
+constexpr double kLogRatioMargin = 0.0953;  // ln 1.1: ADEV, variance, frequency-count ratios beyond 10 %
+constexpr double kPsdMargin = 0.2303;       // 1 dB in ln power
+constexpr double kAcfMargin = 0.1;          // mean autocorrelation in a lag band
+constexpr double kCorrMargin = 0.1;         // lag-0 correlation between channels
+constexpr double kCoherenceMargin = 0.1;    // band coherence between channels
 constexpr int kFracBins = 8;
-constexpr double kTailMargin = 0.1906;        // ln 1.21: kurtosis beyond 21 %
-constexpr double kJumpMargin = 0.2231;        // ln 1.25: the largest block step beyond 25 % of the usual
-constexpr std::size_t kJumpBlocks = 16;       // blocks per part for the step statistic
+constexpr double kTailMargin = 0.1906;   // ln 1.21: kurtosis beyond 21 %
+constexpr double kJumpMargin = 0.2231;   // ln 1.25: the largest block step beyond 25 % of the usual
+constexpr std::size_t kJumpBlocks = 16;  // blocks per part for the step statistic
 
 class Builder {
 public:
@@ -58,7 +58,9 @@ std::string seconds_label(double s) { return short_number(s) + "s"; }
 // A cell's seconds for people (Cell::text): a window's ends to the digits its length warrants, and at least to the
 // second (t=1201s..1350s: a label, where t=1200s..1350s would name other samples); a lag or a tau, a whole multiple of
 // the sample period, as it is.
-std::string window_seconds_text(double s, double length_s) { return to_precision_of(s, std::min(length_s, 10.0)) + "s"; }
+std::string window_seconds_text(double s, double length_s) {
+    return to_precision_of(s, std::min(length_s, 10.0)) + "s";
+}
 std::string multiple_seconds_text(double s) { return significant(s, 6) + "s"; }
 
 double log_floor(double v) { return std::log(std::max(v, 1e-300)); }
@@ -90,7 +92,8 @@ std::vector<double> part_of(const std::vector<double>& v, const Runs& part) {
     std::vector<double> out;
     out.reserve(size);
     for (const auto& [first, last] : part)
-        out.insert(out.end(), v.begin() + static_cast<std::ptrdiff_t>(first), v.begin() + static_cast<std::ptrdiff_t>(last));
+        out.insert(out.end(), v.begin() + static_cast<std::ptrdiff_t>(first),
+                   v.begin() + static_cast<std::ptrdiff_t>(last));
     return out;
 }
 
@@ -133,7 +136,8 @@ std::optional<Holdout> holdout_from_name(const std::string& name) {
 
 std::string holdout_description(Holdout holdout, double fit_fraction) {
     if (holdout == Holdout::forecast)
-        return "candidates fitted on the first " + short_number(100.0 * fit_fraction) + " % of the log (by time), judged on the rest";
+        return "candidates fitted on the first " + short_number(100.0 * fit_fraction) +
+               " % of the log (by time), judged on the rest";
     std::string fit, held;
     for (std::size_t w = 0; w < static_cast<std::size_t>(kTimeWindows); ++w) {
         const bool in = std::find(kFittingTenths.begin(), kFittingTenths.end(), w) != kFittingTenths.end();
@@ -156,7 +160,8 @@ std::vector<bool> fitting_mask(const std::vector<double>& t_s, const BatteryOpti
     return mask;
 }
 
-BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<const std::vector<double>*, kChannelCount>& y,
+BatteryResult compute_battery(const std::vector<double>& t_s,
+                              const std::array<const std::vector<double>*, kChannelCount>& y,
                               const BatteryOptions& options, std::vector<Cell>* layout, const RawCodes& raw) {
     BatteryResult result;
     Builder out(result.values, layout);
@@ -213,47 +218,52 @@ BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<c
             const auto adev = octave_oadev(part, std::max<std::size_t>(1, len / 8));
             for (std::size_t j = 0; j < adev.size(); ++j) {
                 const double tau = tau0 * std::ldexp(1.0, static_cast<int>(j));
-                out.add(log_floor(adev[j]), {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau) : "", seg, true, kLogRatioMargin},
+                out.add(log_floor(adev[j]),
+                        {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau) : "", seg, true,
+                         kLogRatioMargin},
                         out.wants_layout() ? "tau=" + multiple_seconds_text(tau) : "");
             }
             spectra[c][static_cast<std::size_t>(s)] = band_spectrum(part);
             const auto psd = octave_band_power(spectra[c][static_cast<std::size_t>(s)]);
             for (std::size_t j = 0; j < psd.size(); ++j)
-                out.add(log_floor(psd[j]), {"psd", name, ci, out.wants_layout() ? band_label(j) : "", seg, true, kPsdMargin});
+                out.add(log_floor(psd[j]),
+                        {"psd", name, ci, out.wants_layout() ? band_label(j) : "", seg, true, kPsdMargin});
             const auto acf = octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
             for (std::size_t j = 0; j < acf.size(); ++j) {
                 std::string label, text;
                 if (out.wants_layout()) {
                     const double lo = std::ldexp(1.0, static_cast<int>(j));
                     label = "lag=" + seconds_label(lo * tau0) + ".." + seconds_label((2 * lo - 1) * tau0);
-                    text = "lag=" + multiple_seconds_text(lo * tau0) + (lo > 1 ? ".." + multiple_seconds_text((2 * lo - 1) * tau0) : "");
+                    text = "lag=" + multiple_seconds_text(lo * tau0) +
+                           (lo > 1 ? ".." + multiple_seconds_text((2 * lo - 1) * tau0) : "");
                 }
                 out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin}, text);
             }
-            out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
+            out.add(frac_dispersion(part_y),
+                    {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
             if (codes)
                 out.add(code_density_excess(part_of(*raw[c], rows), part_y),
                         {"codes", name, ci, "raw-code histogram", seg, true, kLogRatioMargin});
             out.add(log_kurtosis(part), {"tail", name, ci, "kurtosis", seg, true, kTailMargin});
             if (len >= kJumpBlocks)
                 out.add(log_jump_ratio(part, kJumpBlocks),
-                        {"jump", name, ci, out.wants_layout() ? "largest of " + std::to_string(kJumpBlocks) + " block steps" : "",
-                         seg, true, kJumpMargin});
+                        {"jump", name, ci,
+                         out.wants_layout() ? "largest of " + std::to_string(kJumpBlocks) + " block steps" : "", seg,
+                         true, kJumpMargin});
         }
     }
     for (std::size_t a = 0; a < kChannelCount; ++a) {
         for (std::size_t b = a + 1; b < kChannelCount; ++b) {
             if (!options.channels[a] || !options.channels[b]) continue;
-            const std::string pair =
-                std::string(kChannelNames[a]) + "~" + kChannelNames[b];
+            const std::string pair = std::string(kChannelNames[a]) + "~" + kChannelNames[b];
             for (int s = 0; s < 2; ++s) {
                 const Segment seg = s == 0 ? Segment::fit : Segment::heldout;
                 const Runs& rows = parts[static_cast<std::size_t>(s)];
-                const double r = correlation(part_of(result.residual[a], rows),
-                                             part_of(result.residual[b], rows));
+                const double r = correlation(part_of(result.residual[a], rows), part_of(result.residual[b], rows));
                 out.add(r, {"corr", pair, -1, "lag 0", seg, false, kCorrMargin});
                 // Shared content in one band (a common disturbance), or at a short lag, which lag 0 dilutes or misses.
-                const auto coh = octave_band_coherence(spectra[a][static_cast<std::size_t>(s)], spectra[b][static_cast<std::size_t>(s)]);
+                const auto coh = octave_band_coherence(spectra[a][static_cast<std::size_t>(s)],
+                                                       spectra[b][static_cast<std::size_t>(s)]);
                 // atanh(sqrt(coherence)) is near Gaussian with a variance set by the band's bins alone (Enochson and
                 // Goodman's transform): raw coherence in a band of few bins is skewed, and its z would inflate the
                 // family-wise threshold of every cell.

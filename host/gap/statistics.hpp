@@ -53,8 +53,8 @@ std::string holdout_description(Holdout holdout, double fit_fraction);
 struct BatteryOptions {
     std::array<bool, kChannelCount> channels{true, true, true, true};
     Holdout holdout = Holdout::interleaved;
-    double fit_fraction = 0.6;      ///< forecast: first part of the log (by time) used to fit candidates
-    double sample_period_s = 1.0;   ///< for cell labels [s]
+    double fit_fraction = 0.6;     ///< forecast: first part of the log (by time) used to fit candidates
+    double sample_period_s = 1.0;  ///< for cell labels [s]
     /// Per channel, where the eq. 1 fit starts: empty for a real log (the automatic start); a replicate of a model
     /// starts at the model's drift, which is the same optimum reached in a few iterations instead of a search.
     std::array<std::optional<fit::DriftParameters>, kChannelCount> fit_start{};
@@ -81,7 +81,9 @@ using RawCodes = std::array<const std::vector<double>*, kChannelCount>;
 /// Computes the battery of `y` (per channel, [counts]) at instants `t_s`. When `layout` is not null it is
 /// filled with one Cell per value (identical for every log of the same length and options). `raw` must hold the
 /// raw codes of every channel in options.raw_codes (std::invalid_argument otherwise).
-BatteryResult compute_battery(const std::vector<double>& t_s, const std::array<const std::vector<double>*, kChannelCount>& y,
-                              const BatteryOptions& options, std::vector<Cell>* layout = nullptr, const RawCodes& raw = {});
+BatteryResult compute_battery(const std::vector<double>& t_s,
+                              const std::array<const std::vector<double>*, kChannelCount>& y,
+                              const BatteryOptions& options, std::vector<Cell>* layout = nullptr,
+                              const RawCodes& raw = {});
 
 }  // namespace driftlab::host::gap

@@ -8,10 +8,14 @@ namespace driftlab::host::gap {
 const std::vector<TruthInfo>& truth_list() {
     using K = TruthInfo::Kind;
     static const std::vector<TruthInfo> list = {
-        {"thermal_rc", "thermal_second_tc", K::shape},  {"thermostat", "ambient_cycle", K::shape},
-        {"kasdin_flicker", "flicker", K::process},      {"wandering_ou", "gauss_markov", K::process},
-        {"student_walk", "rate_random_walk", K::process}, {"burst_spikes", "spikes", K::process},
-        {"mode_hop", "", K::shape},                     {"sar_mismatch", "adc_dnl", K::converter},
+        {"thermal_rc", "thermal_second_tc", K::shape},
+        {"thermostat", "ambient_cycle", K::shape},
+        {"kasdin_flicker", "flicker", K::process},
+        {"wandering_ou", "gauss_markov", K::process},
+        {"student_walk", "rate_random_walk", K::process},
+        {"burst_spikes", "spikes", K::process},
+        {"mode_hop", "", K::shape},
+        {"sar_mismatch", "adc_dnl", K::converter},
     };
     return list;
 }
@@ -34,8 +38,9 @@ std::vector<double> make_truth(const std::string& generator, const std::vector<d
     throw std::invalid_argument("unknown signal truth generator: " + generator);
 }
 
-sim::Quantiser make_converter_truth(const std::string& generator, double size_counts, const std::vector<double>& occupancy,
-                               std::uint64_t seed, std::uint64_t noise_seed) {
+sim::Quantiser make_converter_truth(const std::string& generator, double size_counts,
+                                    const std::vector<double>& occupancy, std::uint64_t seed,
+                                    std::uint64_t noise_seed) {
     if (generator == "sar_mismatch") return truth_sar_mismatch(size_counts, occupancy, seed, noise_seed);
     throw std::invalid_argument("unknown converter truth generator: " + generator);
 }

@@ -27,7 +27,6 @@
 
 #include "sim/model/sensor_model.hpp"
 
-
 namespace driftlab::host::gap {
 
 /// A truth generator: the generator name, the library effect it stands for ("" = out of library).
@@ -57,8 +56,8 @@ std::vector<double> make_truth(const std::string& generator, const std::vector<d
 /// The quantiser of a converter generator (Kind::converter): `size_counts` is its rms DNL [LSB] over the codes as
 /// `occupancy` weights them (index = code; empty: the inner codes 1..1022 alike); `seed` draws the device (its
 /// mismatch), `noise_seed` the comparator's noise. Throws std::invalid_argument on a bad name.
-sim::Quantiser make_converter_truth(const std::string& generator, double size_counts, const std::vector<double>& occupancy,
-                               std::uint64_t seed, std::uint64_t noise_seed);
+sim::Quantiser make_converter_truth(const std::string& generator, double size_counts,
+                                    const std::vector<double>& occupancy, std::uint64_t seed, std::uint64_t noise_seed);
 
 /// The per-sample signal generators, one file each (truth_*.cpp).
 std::vector<double> truth_thermal_rc(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
@@ -70,6 +69,6 @@ std::vector<double> truth_student_walk(const std::vector<double>& t_s, double si
 std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_mode_hop(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
 sim::Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
-                             std::uint64_t noise_seed);
+                                  std::uint64_t noise_seed);
 
 }  // namespace driftlab::host::gap

@@ -35,7 +35,8 @@ double dac(const Weights& w, int code) {
 Weights weights_with(const Weights& errors) {
     Weights w{};
     double sum = 0.0;
-    for (int b = 0; b < kBits; ++b) sum += w[static_cast<std::size_t>(b)] = std::ldexp(1.0, b) + errors[static_cast<std::size_t>(b)];
+    for (int b = 0; b < kBits; ++b)
+        sum += w[static_cast<std::size_t>(b)] = std::ldexp(1.0, b) + errors[static_cast<std::size_t>(b)];
     for (double& x : w) x *= kTopCode / sum;
     return w;
 }
@@ -64,7 +65,7 @@ double rms_dnl_lsb(const Weights& w, const std::vector<double>& occupancy) {
 }  // namespace
 
 sim::Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
-                             std::uint64_t noise_seed) {
+                                  std::uint64_t noise_seed) {
     // A self-calibrated converter: calibration leaves every bit's weight off by a residual of one absolute size
     // (raw unit-capacitor mismatch, growing as the square root of a bit's weight, would make the MSB carry some
     // thirty times the typical code's error, where calibration is aimed). A code's width error is the error of the
@@ -93,7 +94,8 @@ sim::Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>&
         double comparator_sd;
         sim::Rng rng;
     };
-    auto s = std::make_shared<State>(State{weights_with(errors), kComparatorNoisePerDnl * size_counts, sim::Rng(noise_seed, 0x79)});
+    auto s = std::make_shared<State>(
+        State{weights_with(errors), kComparatorNoisePerDnl * size_counts, sim::Rng(noise_seed, 0x79)});
     return [s](double x_counts) {
         // Successive approximation, MSB first: keep a bit when the input is at or above the DAC's trial level
         // less half an LSB (with ideal weights: round to nearest, clamped to 0..1023, as sim::Adc does).

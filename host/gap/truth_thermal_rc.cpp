@@ -20,9 +20,8 @@ std::vector<double> truth_thermal_rc(const std::vector<double>& t_s, double size
     const double tau_die = tau_pkg * 0.2;
     // dT/dt = A T + b: each node relaxes towards its neighbours; heat enters at the die.
     Eigen::Matrix3d a;
-    a << -2.0 / tau_die, 1.0 / tau_die, 0.0,
-         1.0 / tau_pkg, -2.0 / tau_pkg, 1.0 / tau_pkg,
-         0.0, 1.0 / tau_board, -2.0 / tau_board;
+    a << -2.0 / tau_die, 1.0 / tau_die, 0.0, 1.0 / tau_pkg, -2.0 / tau_pkg, 1.0 / tau_pkg, 0.0, 1.0 / tau_board,
+        -2.0 / tau_board;
     const Eigen::Vector3d b(1.0 / tau_die, 0.0, 0.0);
     const Eigen::Vector3d steady = -a.inverse() * b;
     std::vector<double> out(t_s.size());

@@ -14,7 +14,7 @@ std::vector<double> truth_thermostat(const std::vector<double>& t_s, double size
     const double cycles = 3.0 + 5.0 * rng.uniform();
     const double period_s = span_s / cycles;
     const double heat_share = 0.35 + 0.3 * rng.uniform();  // fraction of the period spent heating
-    const double h = 1.0;                                   // hysteresis half-width [K]
+    const double h = 1.0;                                  // hysteresis half-width [K]
     const double heat_rate = 2.0 * h / (heat_share * period_s), cool_rate = 2.0 * h / ((1.0 - heat_share) * period_s);
     const double lag_s = period_s * (0.05 + 0.15 * rng.uniform());
     double room = -h + 2.0 * h * rng.uniform();

@@ -11,8 +11,8 @@
 
 namespace driftlab::host::gap {
 
-VerdictStability verdict_stability(const GapResult& result, const LogData& log, const sim::SimModel& unit, const GapOptions& options,
-                                   std::size_t logs) {
+VerdictStability verdict_stability(const GapResult& result, const LogData& log, const sim::SimModel& unit,
+                                   const GapOptions& options, std::size_t logs) {
     VerdictStability out;
     for (const Explanation& e : result.accepted)
         for (const auto& [key, value] : e.estimate()) out.params.push_back({e.effect, e.channel, key, value, {}});
@@ -20,14 +20,16 @@ VerdictStability verdict_stability(const GapResult& result, const LogData& log, 
     quiet.progress = nullptr;
     const bool any_raw = any_raw_codes(result);
     for (std::size_t b = 0; b < logs; ++b) {
-        if (options.progress) options.progress("verdict stability: log " + std::to_string(b + 1) + " of " + std::to_string(logs));
+        if (options.progress)
+            options.progress("verdict stability: log " + std::to_string(b + 1) + " of " + std::to_string(logs));
         sim::OutputRequest request;
         request.t_s = &log.t_s;
         request.channels = result.channels;
         std::array<std::vector<double>, kChannelCount> raw;
         if (any_raw) request.raw_codes = &raw;
         // Seeds apart from the replicates' (which follow options.seed upward), one per log.
-        const sim::Outputs sim = sim::simulate_outputs(result.whole_log_model, request, options.seed ^ (0x9e3779b97f4a7c15ULL * (b + 1)));
+        const sim::Outputs sim =
+            sim::simulate_outputs(result.whole_log_model, request, options.seed ^ (0x9e3779b97f4a7c15ULL * (b + 1)));
         LogData copy = log;
         for (std::size_t c = 0; c < kChannelCount; ++c) {
             if (!result.channels[c]) continue;
@@ -74,7 +76,9 @@ std::vector<std::string> spread_lines(const VerdictStability& s) {
     for (std::size_t k = 0; k < s.params.size();) {
         // One line per added effect: its parameters are consecutive.
         std::size_t end = k;
-        while (end < s.params.size() && s.params[end].effect == s.params[k].effect && s.params[end].channel == s.params[k].channel) ++end;
+        while (end < s.params.size() && s.params[end].effect == s.params[k].effect &&
+               s.params[end].channel == s.params[k].channel)
+            ++end;
         const ParameterSpread& first = s.params[k];
         std::string line = first.effect + " on " + first.channel;
         if (first.logs_added == 0) {
@@ -92,7 +96,8 @@ std::vector<std::string> spread_lines(const VerdictStability& s) {
                 else
                     line += within_spread(p.estimate, p) + " -> " + within_spread(p.quantile(0.16), p) + " to " +
                             within_spread(p.quantile(0.84), p) + " (median " + within_spread(p.quantile(0.5), p) + ")";
-                if (!p.values.empty() && p.values.size() < p.logs_added) line += " in " + std::to_string(p.values.size());
+                if (!p.values.empty() && p.values.size() < p.logs_added)
+                    line += " in " + std::to_string(p.values.size());
             }
             lines.push_back(line);
         }
@@ -111,8 +116,10 @@ std::vector<std::string> stability_text(const VerdictStability& s, const std::st
 
 std::string stability_sentence(const VerdictStability& s, const std::string& verdict) {
     char head[200];
-    std::snprintf(head, sizeof head, "of %zu logs simulated from the estimated model and diagnosed alike, %zu (%.0f %%) are called %s;", s.logs,
-                  s.same, s.logs ? 100.0 * static_cast<double>(s.same) / static_cast<double>(s.logs) : 0.0, verdict.c_str());
+    std::snprintf(head, sizeof head,
+                  "of %zu logs simulated from the estimated model and diagnosed alike, %zu (%.0f %%) are called %s;",
+                  s.logs, s.same, s.logs ? 100.0 * static_cast<double>(s.same) / static_cast<double>(s.logs) : 0.0,
+                  verdict.c_str());
     std::string text = head;
     for (const auto& [v, n] : s.verdicts) text += " " + v + " " + std::to_string(n);
     return text;

@@ -21,32 +21,33 @@ namespace driftlab::host::gap {
 /// (a parametric bootstrap of the estimate, conditional on the effect being found again).
 struct ParameterSpread {
     std::string effect, channel, param;
-    double estimate = 0.0;        ///< the log's own value (estimated on the whole log)
-    std::vector<double> values;   ///< the simulated logs' values, sorted
-    std::size_t logs_added = 0;   ///< simulated logs that added the effect on the channel again (a DNL table's codes
-                                  ///< can differ from log to log, so a parameter may have fewer values)
+    double estimate = 0.0;       ///< the log's own value (estimated on the whole log)
+    std::vector<double> values;  ///< the simulated logs' values, sorted
+    std::size_t logs_added = 0;  ///< simulated logs that added the effect on the channel again (a DNL table's codes
+                                 ///< can differ from log to log, so a parameter may have fewer values)
     double quantile(double q) const;  ///< linear between order statistics; NaN without values
 };
 
 struct VerdictStability {
-    std::size_t logs = 0;                           ///< simulated logs diagnosed
-    std::map<std::string, std::size_t> verdicts;    ///< their verdicts, counted
-    std::size_t same = 0;                           ///< how many got the log's own verdict
-    std::vector<ParameterSpread> params;            ///< per parameter of each added effect, in the explanation's order
+    std::size_t logs = 0;                         ///< simulated logs diagnosed
+    std::map<std::string, std::size_t> verdicts;  ///< their verdicts, counted
+    std::size_t same = 0;                         ///< how many got the log's own verdict
+    std::vector<ParameterSpread> params;          ///< per parameter of each added effect, in the explanation's order
 };
 
 /// Diagnoses `logs` logs simulated from `result.whole_log_model` (the unit as the diagnosis of `log` on `unit` under
 /// `options` estimates it, the model `--model-out` writes).
 /// Log b is simulated with its own seed (from options.seed and b) and diagnosed with options unchanged, so that
 /// the run repeats exactly; options.progress is told each log as it starts.
-VerdictStability verdict_stability(const GapResult& result, const LogData& log, const sim::SimModel& unit, const GapOptions& options,
-                                   std::size_t logs);
+VerdictStability verdict_stability(const GapResult& result, const LogData& log, const sim::SimModel& unit,
+                                   const GapOptions& options, std::size_t logs);
 
 /// The result in words the terminal and the report share: "of N logs ... k (p %) are called V; v1 n1 v2 n2".
 std::string stability_sentence(const VerdictStability& stability, const std::string& verdict);
 
 /// What introduces spread_lines() wherever they are shown.
-inline constexpr const char* kSpreadHeading = "estimates on those logs (middle 68 %, where each added the effect again):";
+inline constexpr const char* kSpreadHeading =
+    "estimates on those logs (middle 68 %, where each added the effect again):";
 
 /// The middle 68 % of the simulated logs' estimates (about one standard deviation either side), one line per added
 /// effect, each value to the digits half that range warrants (parameter_text() where there is no range):

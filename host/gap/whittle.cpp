@@ -57,7 +57,8 @@ AbsorbedColumns absorbed_columns(const Eigen::MatrixXd& x, const PartPeriodogram
 
 }  // namespace
 
-PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part, const Eigen::MatrixXd* absorbed) {
+PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector<bool>& in_part,
+                                 const Eigen::MatrixXd* absorbed) {
     if (e.size() < 2) throw std::invalid_argument("part_periodogram: too few samples");
     PartPeriodogram p;
     p.length = smooth_length_at_most(e.size() - 1);
@@ -180,14 +181,17 @@ std::vector<double> differenced_covariance_times(const OutputSpectrum& model, co
     return out;
 }
 
-std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov, std::size_t n) {
+std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                        std::size_t n) {
     std::vector<double> s(n);
     for (std::size_t j = 0; j < n; ++j) {
         const double w = 2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(n);
         const double c = std::cos(w);
         double level = model.white * floor_acov[0];
-        for (std::size_t m = 1; m < floor_acov.size(); ++m) level += 2.0 * model.white * floor_acov[m] * std::cos(static_cast<double>(m) * w);
-        for (const auto& a : model.ar1) level += a.variance * (1.0 - a.phi * a.phi) / (1.0 - 2.0 * a.phi * c + a.phi * a.phi);
+        for (std::size_t m = 1; m < floor_acov.size(); ++m)
+            level += 2.0 * model.white * floor_acov[m] * std::cos(static_cast<double>(m) * w);
+        for (const auto& a : model.ar1)
+            level += a.variance * (1.0 - a.phi * a.phi) / (1.0 - 2.0 * a.phi * c + a.phi * a.phi);
         s[j] = 2.0 * (1.0 - c) * level + model.walk_increment_variance;
     }
     return s;
@@ -261,7 +265,8 @@ const std::vector<double>& ExpectedPeriodogram::unit_ar1(double phi) {
             return k.values;
         }
     if (ar1_.size() == kKeptComponents)
-        ar1_.erase(std::min_element(ar1_.begin(), ar1_.end(), [](const Kept& a, const Kept& b) { return a.last_use < b.last_use; }));
+        ar1_.erase(std::min_element(ar1_.begin(), ar1_.end(),
+                                    [](const Kept& a, const Kept& b) { return a.last_use < b.last_use; }));
     OutputSpectrum unit;
     unit.ar1.push_back({1.0, phi});
     ar1_.push_back({phi, clock_, component_periodogram(unit, *floor_acov_, *p_)});

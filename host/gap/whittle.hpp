@@ -25,19 +25,19 @@ namespace driftlab::host::gap {
 /// d = delta - A B' delta (delta the noise's differences, A = D X (X'X)^-1, b_k(j) = sum_{s > j} X_sk); a slow
 /// process loses its lowest frequencies to the fit, and a model that ignores that reads a random walk as flicker.
 struct AbsorbedColumns {
-    std::size_t differences = 0;                               ///< N - 1: every difference of the log
-    std::vector<std::vector<std::complex<double>>> alpha;      ///< sum_t h_t A_tk e^{-i w_j t}, j = 1..(n-1)/2
-    std::vector<std::vector<double>> load;                     ///< b_k, length `differences`
+    std::size_t differences = 0;                           ///< N - 1: every difference of the log
+    std::vector<std::vector<std::complex<double>>> alpha;  ///< sum_t h_t A_tk e^{-i w_j t}, j = 1..(n-1)/2
+    std::vector<std::vector<double>> load;                 ///< b_k, length `differences`
 };
 
 /// The differences of one part of a residual, ready for the likelihood.
 struct PartPeriodogram {
-    std::size_t length = 0;              ///< n: differences in the series, masked ones included (a 2-3-5 length)
-    double count = 0.0;                  ///< differences inside the part within the n kept (the trimmed tail is not used)
-    std::vector<double> power;           ///< |sum_t m_t d_t e^{-i w_j t}|^2 / taper_energy at w_j = 2 pi j / n, j = 1..(n-1)/2
-    std::vector<double> mask_overlap;    ///< sum_t m_t m_{t+tau} / taper_energy, tau = 0..n-1
-    std::vector<double> taper;           ///< m_t, t = 0..n-1 (the part's mask times its taper)
-    double taper_energy = 0.0;           ///< sum_t m_t^2
+    std::size_t length = 0;     ///< n: differences in the series, masked ones included (a 2-3-5 length)
+    double count = 0.0;         ///< differences inside the part within the n kept (the trimmed tail is not used)
+    std::vector<double> power;  ///< |sum_t m_t d_t e^{-i w_j t}|^2 / taper_energy at w_j = 2 pi j / n, j = 1..(n-1)/2
+    std::vector<double> mask_overlap;         ///< sum_t m_t m_{t+tau} / taper_energy, tau = 0..n-1
+    std::vector<double> taper;                ///< m_t, t = 0..n-1 (the part's mask times its taper)
+    double taper_energy = 0.0;                ///< sum_t m_t^2
     std::optional<AbsorbedColumns> absorbed;  ///< the mean fit's columns, when the residual is one's
 };
 
@@ -64,12 +64,12 @@ double white_floor_long_run_factor(const Smoothing& s);
 
 /// A model of the output noise [counts^2], before differencing.
 struct OutputSpectrum {
-    double white = 0.0;                ///< variance of the conversions' white noise, shaped by the smoother
+    double white = 0.0;  ///< variance of the conversions' white noise, shaped by the smoother
     struct Ar1 {
-        double variance = 0.0;         ///< stationary variance [counts^2]
-        double phi = 0.0;              ///< exp(-output period / correlation time)
+        double variance = 0.0;  ///< stationary variance [counts^2]
+        double phi = 0.0;       ///< exp(-output period / correlation time)
     };
-    std::vector<Ar1> ar1;              ///< Gauss-Markov components (flicker is a sum of them)
+    std::vector<Ar1> ar1;                  ///< Gauss-Markov components (flicker is a sum of them)
     double walk_increment_variance = 0.0;  ///< random walk: variance of its step per output period [counts^2]
 };
 
@@ -88,7 +88,8 @@ std::vector<double> differenced_covariance_times(const OutputSpectrum& model, co
 /// The spectral density of the model's first differences at w_j = 2 pi j / n, j = 0..n-1 (the Fourier transform
 /// of differenced_autocovariance(), in closed form: an AR(1) gives 2(1 - cos w) v (1 - phi^2) / (1 - 2 phi cos w
 /// + phi^2), the walk its increment variance).
-std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov, std::size_t n);
+std::vector<double> differenced_density(const OutputSpectrum& model, const std::vector<double>& floor_acov,
+                                        std::size_t n);
 
 /// The expected value of `p.power` under the model: sum_tau mask_overlap(tau) c(tau) e^{-i w_j tau}, less what the
 /// mean fit absorbed when `p.absorbed` is set (with C the differences' covariance, per frequency

@@ -25,12 +25,17 @@ bool is_executable_file(const std::string& path) {
 
 std::vector<std::string> avrdude_arguments(const FlashRequest& request) {
     return {request.avrdude,
-            "-p", request.part,
-            "-c", request.programmer,
-            "-P", request.port,
-            "-b", std::to_string(request.baud),
+            "-p",
+            request.part,
+            "-c",
+            request.programmer,
+            "-P",
+            request.port,
+            "-b",
+            std::to_string(request.baud),
             "-D",
-            "-U", "flash:w:" + request.hex_file + ":i"};
+            "-U",
+            "flash:w:" + request.hex_file + ":i"};
 }
 
 std::string find_in_path(const std::string& program, const std::string& path_env) {
@@ -59,8 +64,8 @@ std::string default_hex_file(const std::string& exe_path) {
     if (ec || !fs::is_regular_file(tree / "CMakeCache.txt", unreadable)) {
         throw DataError("driftlab_fw.hex", 0,
                         "no default firmware image: it is looked for beside a build tree's driftlab "
-                        "(build/<preset>/bin/driftlab), and " + (ec ? exe_path : exe.string()) +
-                            " is not one (a copy, or installed); pass --hex FILE");
+                        "(build/<preset>/bin/driftlab), and " +
+                            (ec ? exe_path : exe.string()) + " is not one (a copy, or installed); pass --hex FILE");
     }
     const fs::path preset_image = tree.parent_path() / "avr" / "firmware" / "driftlab_fw.hex";
     const fs::path native_image = tree / "avr-fw" / "firmware" / "driftlab_fw.hex";
@@ -69,15 +74,17 @@ std::string default_hex_file(const std::string& exe_path) {
     }
     throw DataError("driftlab_fw.hex", 0,
                     "firmware image not found at " + preset_image.string() + " (the AVR build's) nor at " +
-                        native_image.string() + " (the native build's, made when avr-gcc is installed); build it "
+                        native_image.string() +
+                        " (the native build's, made when avr-gcc is installed); build it "
                         "with `cmake --preset avr && cmake --build --preset avr`, or pass --hex FILE");
 }
 
 void check_image_and_port(const FlashRequest& request) {
     if (request.hex_file.empty()) throw UsageError("--hex: empty; pass the firmware image (an Intel HEX file)");
     if (!fs::is_regular_file(request.hex_file)) {
-        throw DataError(request.hex_file, 0, "firmware image not found (build it with `cmake --preset avr && cmake "
-                                             "--build --preset avr`, or pass --hex FILE)");
+        throw DataError(request.hex_file, 0,
+                        "firmware image not found (build it with `cmake --preset avr && cmake "
+                        "--build --preset avr`, or pass --hex FILE)");
     }
     if (request.port.empty()) throw UsageError("no port given: pass --port DEV (see `driftlab ports`)");
     if (::access(request.port.c_str(), F_OK) != 0) {
@@ -86,8 +93,9 @@ void check_image_and_port(const FlashRequest& request) {
 }
 
 std::string shell_quoted(const std::string& word) {
-    const bool plain = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
-                                                                "0123456789_-+=.,/:@%") == std::string::npos;
+    const bool plain = !word.empty() && word.find_first_not_of(
+                                            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                            "0123456789_-+=.,/:@%") == std::string::npos;
     if (plain) return word;
     std::string out = "'";
     for (const char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -98,8 +106,9 @@ void run_avrdude(const FlashRequest& request, const std::string& path_env) {
     check_image_and_port(request);
     const std::string avrdude = find_in_path(request.avrdude, path_env);
     if (avrdude.empty()) {
-        throw DeviceError(request.avrdude, "avrdude not found in PATH; install it (Debian package avrdude, "
-                                           "scripts/setup.sh installs it)");
+        throw DeviceError(request.avrdude,
+                          "avrdude not found in PATH; install it (Debian package avrdude, "
+                          "scripts/setup.sh installs it)");
     }
 
     FlashRequest resolved = request;

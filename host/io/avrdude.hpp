@@ -10,9 +10,9 @@ namespace driftlab::host::io {
 
 /// What to flash where. Defaults match an Arduino Uno/Nano (ATmega328P, optiboot at 115200 baud).
 struct FlashRequest {
-    std::string port;                 ///< serial device of the board's bootloader
+    std::string port;  ///< serial device of the board's bootloader
     std::string programmer = "arduino";
-    int baud = 115200;                ///< bootloader baud rate [bit/s] (old Nano bootloader: 57600)
+    int baud = 115200;  ///< bootloader baud rate [bit/s] (old Nano bootloader: 57600)
     std::string part = "atmega328p";
     std::string hex_file;             ///< Intel HEX image
     std::string avrdude = "avrdude";  ///< program name or path

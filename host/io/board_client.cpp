@@ -24,14 +24,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::string describe_config_difference(const proto::ConfigPayload& want, const proto::ConfigPayload& got) {
-    const int w[] = {want.output_period_ms, want.conversions_per_output, want.window, want.fit_order, want.mode,
-                     want.raw};
+    const int w[] = {
+        want.output_period_ms, want.conversions_per_output, want.window, want.fit_order, want.mode, want.raw};
     const int g[] = {got.output_period_ms, got.conversions_per_output, got.window, got.fit_order, got.mode, got.raw};
     std::string text;
     for (int i = 0; i < 6; ++i) {
         if (w[i] != g[i]) {
-            text += std::string(text.empty() ? "" : ", ") + proto::config_field_name(static_cast<std::uint8_t>(i)) + " is " + std::to_string(g[i]) +
-                    " instead of " + std::to_string(w[i]);
+            text += std::string(text.empty() ? "" : ", ") + proto::config_field_name(static_cast<std::uint8_t>(i)) +
+                    " is " + std::to_string(g[i]) + " instead of " + std::to_string(w[i]);
         }
     }
     return text;
@@ -51,12 +51,12 @@ LinkStatus BoardClient::send(proto::MsgType type, const proto::ConfigPayload* co
     const std::uint16_t seq = tx_seq_++;
     std::size_t n = 0;
     switch (type) {
-        case proto::MsgType::hello: n = proto::encode_hello(seq, frame, sizeof frame); break;
-        case proto::MsgType::config_get: n = proto::encode_config_get(seq, frame, sizeof frame); break;
-        case proto::MsgType::config_set: n = proto::encode_config_set(*config, seq, frame, sizeof frame); break;
-        case proto::MsgType::poll: n = proto::encode_poll(seq, frame, sizeof frame); break;
-        case proto::MsgType::status_get: n = proto::encode_status_get(seq, frame, sizeof frame); break;
-        default: break;
+    case proto::MsgType::hello: n = proto::encode_hello(seq, frame, sizeof frame); break;
+    case proto::MsgType::config_get: n = proto::encode_config_get(seq, frame, sizeof frame); break;
+    case proto::MsgType::config_set: n = proto::encode_config_set(*config, seq, frame, sizeof frame); break;
+    case proto::MsgType::poll: n = proto::encode_poll(seq, frame, sizeof frame); break;
+    case proto::MsgType::status_get: n = proto::encode_status_get(seq, frame, sizeof frame); break;
+    default: break;
     }
     if (seq_used != nullptr) *seq_used = seq;
     if (tap_) tap_(CaptureKind::tx, frame, n);
@@ -127,8 +127,8 @@ HelloResult BoardClient::hello() {
             return result;
         }
         LinkStatus status;
-        auto frame = await([](const Frame& f) { return f.type == proto::MsgType::version; },
-                           options_.reply_timeout_ms, &status);
+        auto frame =
+            await([](const Frame& f) { return f.type == proto::MsgType::version; }, options_.reply_timeout_ms, &status);
         if (status == LinkStatus::lost) {
             result.problem = "the port went away during the handshake";
             return result;
@@ -215,8 +215,8 @@ ConfigResult BoardClient::configure(const proto::ConfigPayload& wanted) {
             return result;
         }
         LinkStatus status;
-        auto answer = await([](const Frame& f) { return f.type == proto::MsgType::config; },
-                            options_.reply_timeout_ms, &status);
+        auto answer =
+            await([](const Frame& f) { return f.type == proto::MsgType::config; }, options_.reply_timeout_ms, &status);
         if (status == LinkStatus::lost) {
             result.problem = "the port went away while configuring";
             return result;
@@ -238,8 +238,8 @@ std::optional<proto::StatusPayload> BoardClient::status() {
     for (int attempt = 0; attempt < options_.request_attempts; ++attempt) {
         if (send(proto::MsgType::status_get, nullptr, nullptr) == LinkStatus::lost) return std::nullopt;
         LinkStatus link;
-        auto answer = await([](const Frame& f) { return f.type == proto::MsgType::status; },
-                            options_.reply_timeout_ms, &link);
+        auto answer =
+            await([](const Frame& f) { return f.type == proto::MsgType::status; }, options_.reply_timeout_ms, &link);
         if (link == LinkStatus::lost) return std::nullopt;
         proto::StatusPayload s{};
         if (answer && proto::parse(answer->payload.data(), answer->payload_len, &s)) return s;
@@ -251,8 +251,9 @@ std::optional<std::string> BoardClient::poll_refusal() const {
     if (!poll_nak_) return std::nullopt;
     std::string text = std::string("the board refused POLL (NAK ") + status_name(poll_nak_->status) + ")";
     if (poll_nak_->status == static_cast<std::uint8_t>(proto::Status::not_allowed))
-        text += ": it is in stream mode, not the poll mode driftlab set and read back; did another program on the "
-                "port reconfigure it?";
+        text +=
+            ": it is in stream mode, not the poll mode driftlab set and read back; did another program on the "
+            "port reconfigure it?";
     return text;
 }
 

@@ -22,9 +22,9 @@
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
+#include "driftlab/receiver/seq_tracker.hpp"
 #include "host/io/byte_link.hpp"
 #include "host/io/capture.hpp"
-#include "driftlab/receiver/seq_tracker.hpp"
 
 namespace driftlab::host::io {
 

@@ -101,8 +101,9 @@ CaptureReader::CaptureReader(const std::string& path) : path_(path) {
         ++line;
         if (line == 1) {
             if (text.rfind(kCaptureMagicKey, 0) == 0 && text != kMagic)
-                throw DataError(path, 1, "capture format version '" + text.substr(kCaptureMagicKey.size()) +
-                                             "' is not supported (this reader knows 1)");
+                throw DataError(path, 1,
+                                "capture format version '" + text.substr(kCaptureMagicKey.size()) +
+                                    "' is not supported (this reader knows 1)");
             if (text != kMagic)
                 throw DataError(path, 1, "not a driftlab capture (expected '" + std::string(kMagic) + "')");
             continue;
@@ -129,13 +130,15 @@ std::optional<std::string> CaptureReader::header_value(const std::string& key) c
     return std::nullopt;
 }
 
-std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::uint64_t after_us, std::uint64_t max_step_us) const {
+std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::uint64_t after_us,
+                                                      std::uint64_t max_step_us) const {
     if (data_.size() - offset < kRecordHeaderSize) return std::nullopt;
     const std::uint8_t* p = data_.data() + offset;
     if (!known_kind(p[0])) return std::nullopt;
     const std::uint64_t t_us = get_le(p + 1, 8);
     const std::uint64_t len = get_le(p + 9, 4);
-    if (t_us < after_us || t_us - after_us > max_step_us || data_.size() - offset - kRecordHeaderSize < len) return std::nullopt;
+    if (t_us < after_us || t_us - after_us > max_step_us || data_.size() - offset - kRecordHeaderSize < len)
+        return std::nullopt;
     CaptureRecord rec;
     rec.kind = static_cast<CaptureKind>(p[0]);
     rec.t_us = t_us;

@@ -92,7 +92,8 @@ public:
 private:
     /// A day: the longest wait between two records believed on their own (a recorder polling writes every period).
     static constexpr std::uint64_t kMaxStepUs = 86'400'000'000ULL;
-    std::optional<CaptureRecord> record_at(std::size_t offset, std::uint64_t after_us, std::uint64_t max_step_us = kMaxStepUs) const;
+    std::optional<CaptureRecord> record_at(std::size_t offset, std::uint64_t after_us,
+                                           std::uint64_t max_step_us = kMaxStepUs) const;
     bool records_resume_at(std::size_t offset) const;
     bool cut_record_at(std::size_t offset) const;
 

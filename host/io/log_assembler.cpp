@@ -186,33 +186,32 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
 
     const std::uint8_t* p = frame.payload.data();
     switch (frame.type) {
-        case proto::MsgType::version: {
-            proto::VersionPayload v{};
-            if (proto::parse(p, frame.payload_len, &v)) version_ = v;
-            break;
-        }
-        case proto::MsgType::config: {
-            proto::ConfigPayload c{};
-            if (proto::parse(p, frame.payload_len, &c)) config_ = c;
-            break;
-        }
-        case proto::MsgType::sample: {
-            proto::SamplePayload s{};
-            if (!proto::parse(p, frame.payload_len, &s)) break;
-            last_epoch_tick_ = s.tick;
-            const std::uint64_t tick = ticks_.unwrap(s.tick);
-            newest_sample_ = Stamped{t_us, tick};
-            if (!epoch_first_sample_) epoch_first_sample_ = newest_sample_;
-            if (rows_) rows_->sample(s, seq.unwrapped, tick);
-            break;
-        }
-        case proto::MsgType::raw: {
-            proto::RawPayload r{};
-            if (rows_ && proto::parse(p, frame.payload_len, &r)) rows_->raw(r);
-            break;
-        }
-        default:
-            break;
+    case proto::MsgType::version: {
+        proto::VersionPayload v{};
+        if (proto::parse(p, frame.payload_len, &v)) version_ = v;
+        break;
+    }
+    case proto::MsgType::config: {
+        proto::ConfigPayload c{};
+        if (proto::parse(p, frame.payload_len, &c)) config_ = c;
+        break;
+    }
+    case proto::MsgType::sample: {
+        proto::SamplePayload s{};
+        if (!proto::parse(p, frame.payload_len, &s)) break;
+        last_epoch_tick_ = s.tick;
+        const std::uint64_t tick = ticks_.unwrap(s.tick);
+        newest_sample_ = Stamped{t_us, tick};
+        if (!epoch_first_sample_) epoch_first_sample_ = newest_sample_;
+        if (rows_) rows_->sample(s, seq.unwrapped, tick);
+        break;
+    }
+    case proto::MsgType::raw: {
+        proto::RawPayload r{};
+        if (rows_ && proto::parse(p, frame.payload_len, &r)) rows_->raw(r);
+        break;
+    }
+    default: break;
     }
     count_rows();
 }
@@ -239,7 +238,8 @@ bool LogAssembler::write(const receiver::Row& r) {
     // A frame can pass its CRC and still carry a value no converter of this resolution makes (a firmware fault):
     // skipped and counted, as the reader would reject the row.
     const auto range = converter_range(version_->adc_bits);
-    if (range && !std::all_of(r.value_counts.begin(), r.value_counts.end(), [&](double v) { return range->holds_estimate(v); })) {
+    if (range && !std::all_of(r.value_counts.begin(), r.value_counts.end(),
+                              [&](double v) { return range->holds_estimate(v); })) {
         ++stats_.unreachable_samples;
         return false;
     }

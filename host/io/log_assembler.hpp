@@ -24,12 +24,12 @@
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
-#include "host/io/board_client.hpp"
-#include "host/io/board_rows.hpp"
-#include "host/io/capture.hpp"
 #include "driftlab/receiver/row_assembler.hpp"
 #include "driftlab/receiver/seq_tracker.hpp"
 #include "driftlab/receiver/tick_unwrapper.hpp"
+#include "host/io/board_client.hpp"
+#include "host/io/board_rows.hpp"
+#include "host/io/capture.hpp"
 #include "host/log/log_writer.hpp"
 
 namespace driftlab::host::io {
@@ -37,20 +37,20 @@ namespace driftlab::host::io {
 /// What has been assembled so far (the status line and the final summary read it).
 struct AssemblyStats {
     std::uint64_t rows = 0;
-    std::uint64_t frames = 0;          ///< valid frames received, duplicates included
-    std::uint64_t lost_frames = 0;     ///< sequence numbers never received
+    std::uint64_t frames = 0;       ///< valid frames received, duplicates included
+    std::uint64_t lost_frames = 0;  ///< sequence numbers never received
     std::uint64_t duplicate_frames = 0;
     std::uint64_t reordered_frames = 0;
-    std::uint64_t stale_samples = 0;   ///< SAMPLEs whose time was not after the previous row (repeated answers)
+    std::uint64_t stale_samples = 0;        ///< SAMPLEs whose time was not after the previous row (repeated answers)
     std::uint64_t unreachable_samples = 0;  ///< SAMPLEs (CRC intact) with a value the converter cannot produce
-    std::uint64_t empty_samples = 0;   ///< SAMPLEs of an empty window (n_window 0: answered before a conversion)
+    std::uint64_t empty_samples = 0;        ///< SAMPLEs of an empty window (n_window 0: answered before a conversion)
     std::uint64_t raw_missing = 0;
     std::uint64_t gaps = 0;
     std::uint64_t firmware_restarts = 0;
-    std::optional<double> first_t_s;   ///< [s] of the first row
-    std::optional<double> last_t_s;    ///< [s] of the newest row
+    std::optional<double> first_t_s;                  ///< [s] of the first row
+    std::optional<double> last_t_s;                   ///< [s] of the newest row
     std::array<double, kChannelCount> last_counts{};  ///< [counts] newest row
-    std::uint16_t last_dropped = 0;    ///< firmware's dropped-conversion counter in the newest SAMPLE
+    std::uint16_t last_dropped = 0;                   ///< firmware's dropped-conversion counter in the newest SAMPLE
 };
 
 class LogAssembler {
@@ -96,7 +96,7 @@ private:
     std::optional<proto::VersionPayload> version_;
     std::optional<proto::ConfigPayload> config_;
     std::optional<receiver::RowAssembler> rows_;  ///< from the "start" event on
-    struct Stamped {  // host time [us] of something the board sent
+    struct Stamped {                              // host time [us] of something the board sent
         std::uint64_t t_us;
         std::uint64_t tick;  // the board's unwrapped tick (a SAMPLE) or 32-bit uptime (a STATUS)
     };
@@ -104,9 +104,9 @@ private:
     std::uint64_t lost_t_us_ = 0;
     std::optional<std::uint64_t> first_held_t_us_;
     std::vector<std::pair<std::uint64_t, Frame>> held_;  ///< frames received since the loss, with their host time
-    std::optional<Stamped> held_status_;  ///< the newest STATUS among the held frames (its uptime)
-    bool awaiting_evidence_ = false;  ///< a gap without a STATUS: the next SAMPLE settles it
-    std::uint32_t last_epoch_tick_ = 0;  // newest SAMPLE tick since the last firmware start [ticks]
+    std::optional<Stamped> held_status_;                 ///< the newest STATUS among the held frames (its uptime)
+    bool awaiting_evidence_ = false;                     ///< a gap without a STATUS: the next SAMPLE settles it
+    std::uint32_t last_epoch_tick_ = 0;                  // newest SAMPLE tick since the last firmware start [ticks]
     std::optional<Stamped> epoch_first_sample_;  ///< the first SAMPLE since the firmware's start (its clock's rate)
     std::optional<Stamped> newest_sample_;
     AssemblyStats stats_;

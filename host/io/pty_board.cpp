@@ -69,8 +69,8 @@ private:
 
 }  // namespace
 
-PtyBoardSummary serve_pty_board(const PtyBoardOptions& options, const CodeSource& source,
-                                const std::atomic<bool>& stop, const std::function<void(const std::string&)>& on_ready) {
+PtyBoardSummary serve_pty_board(const PtyBoardOptions& options, const CodeSource& source, const std::atomic<bool>& stop,
+                                const std::function<void(const std::string&)>& on_ready) {
     PtyBoardSummary summary;
     fw::NativeBoard board;
     fw::Firmware firmware;

@@ -27,23 +27,23 @@ struct PlannedUnplug {
 };
 
 struct PtyBoardOptions {
-    double speed = 1.0;                 ///< virtual seconds per wall second
-    double duration_s = 0.0;            ///< [s] of virtual time to run; 0 = until stopped
-    std::string link_path;              ///< optional stable symlink to the current /dev/pts/N
-    std::string truth_log;              ///< optional log of every SAMPLE the firmware sent
+    double speed = 1.0;       ///< virtual seconds per wall second
+    double duration_s = 0.0;  ///< [s] of virtual time to run; 0 = until stopped
+    std::string link_path;    ///< optional stable symlink to the current /dev/pts/N
+    std::string truth_log;    ///< optional log of every SAMPLE the firmware sent
     std::vector<PlannedUnplug> unplugs;
 };
 
 struct PtyBoardSummary {
-    double virtual_s = 0.0;            ///< [s] simulated
-    std::uint64_t samples_sent = 0;    ///< SAMPLE frames the firmware wrote
-    std::uint64_t frames_sent = 0;     ///< all frames the firmware wrote
-    std::uint64_t bytes_dropped = 0;   ///< board output nobody read (unplugged, or the terminal buffer full)
+    double virtual_s = 0.0;           ///< [s] simulated
+    std::uint64_t samples_sent = 0;   ///< SAMPLE frames the firmware wrote
+    std::uint64_t frames_sent = 0;    ///< all frames the firmware wrote
+    std::uint64_t bytes_dropped = 0;  ///< board output nobody read (unplugged, or the terminal buffer full)
 };
 
 /// Serves until the duration or `stop`. `on_ready(path)` is called with the client path each time the
 /// pseudo-terminal (re)appears. Throws DeviceError when no pseudo-terminal can be made.
-PtyBoardSummary serve_pty_board(const PtyBoardOptions& options, const CodeSource& source,
-                                const std::atomic<bool>& stop, const std::function<void(const std::string&)>& on_ready);
+PtyBoardSummary serve_pty_board(const PtyBoardOptions& options, const CodeSource& source, const std::atomic<bool>& stop,
+                                const std::function<void(const std::string&)>& on_ready);
 
 }  // namespace driftlab::host::io

@@ -3,8 +3,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/ioctl.h>
 #include <stdlib.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -55,7 +55,8 @@ void PtyBridge::open_pty() {
         const auto type = std::filesystem::symlink_status(link_path_, ec).type();
         if (type != std::filesystem::file_type::not_found && type != std::filesystem::file_type::symlink) {
             close_pty();
-            throw UsageError("--pty-link " + link_path_ + ": something other than a symbolic link is there; refusing to replace it");
+            throw UsageError("--pty-link " + link_path_ +
+                             ": something other than a symbolic link is there; refusing to replace it");
         }
         remove_link();
         std::filesystem::create_symlink(slave_path_, link_path_, ec);

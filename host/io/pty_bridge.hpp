@@ -49,7 +49,7 @@ public:
 private:
     void open_pty();
     void close_pty();
-    void remove_link();  // the stable link, if a symbolic link is what is there
+    void remove_link();                  // the stable link, if a symbolic link is what is there
     std::uint64_t queued_bytes() const;  // written to the terminal, not yet read from it
 
     std::string link_path_;

@@ -57,7 +57,8 @@ std::string utc_now_iso8601() {
 }
 
 RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop, const RecordProgress& progress) {
-    const std::string capture_path = options.capture_path.empty() ? default_capture_path(options.log_path) : options.capture_path;
+    const std::string capture_path =
+        options.capture_path.empty() ? default_capture_path(options.log_path) : options.capture_path;
     // Before the port: opening it resets an Arduino, and a missing folder had been found only then (the capture's)
     // or after the handshake (the log's, with the capture left behind). Folders are made as `hil` makes its own.
     // An hour's recording is not made again by running the command once more from the shell's history.

@@ -20,13 +20,13 @@ namespace driftlab::host::io {
 struct RecordOptions {
     std::string port;
     int baud = 115200;
-    proto::ConfigPayload config{};   ///< what CONFIG_SET asks for
-    double duration_s = 0.0;         ///< [s] of board time (t_s span of the rows); 0 = until stopped
+    proto::ConfigPayload config{};  ///< what CONFIG_SET asks for
+    double duration_s = 0.0;        ///< [s] of board time (t_s span of the rows); 0 = until stopped
     std::string log_path;
-    std::string capture_path;        ///< default: default_capture_path(log_path)
+    std::string capture_path;             ///< default: default_capture_path(log_path)
     int reconnect_max_backoff_ms = 4000;  ///< [ms] longest wait between reopen attempts
     std::string recorder_name = "driftlab";
-    bool overwrite = false;          ///< replace a log or capture already there (else refused)
+    bool overwrite = false;  ///< replace a log or capture already there (else refused)
 };
 
 /// How the session went, for the final message.

@@ -2,11 +2,11 @@
 // the timeout and the hang-up that LibSerial's blocking reads do not report.
 #include "host/io/serial_port.hpp"
 
-#include <libserial/SerialPort.h>
 #include <fcntl.h>
+#include <libserial/SerialPort.h>
 #include <poll.h>
-#include <unistd.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -20,9 +20,9 @@ namespace {
 const std::map<int, LibSerial::BaudRate>& baud_table() {
     using B = LibSerial::BaudRate;
     static const std::map<int, B> table = {
-        {1200, B::BAUD_1200},     {2400, B::BAUD_2400},     {4800, B::BAUD_4800},     {9600, B::BAUD_9600},
-        {19200, B::BAUD_19200},   {38400, B::BAUD_38400},   {57600, B::BAUD_57600},   {115200, B::BAUD_115200},
-        {230400, B::BAUD_230400}, {460800, B::BAUD_460800}, {500000, B::BAUD_500000}, {921600, B::BAUD_921600},
+        {1200, B::BAUD_1200},       {2400, B::BAUD_2400},      {4800, B::BAUD_4800},     {9600, B::BAUD_9600},
+        {19200, B::BAUD_19200},     {38400, B::BAUD_38400},    {57600, B::BAUD_57600},   {115200, B::BAUD_115200},
+        {230400, B::BAUD_230400},   {460800, B::BAUD_460800},  {500000, B::BAUD_500000}, {921600, B::BAUD_921600},
         {1000000, B::BAUD_1000000}, {2000000, B::BAUD_2000000}};
     return table;
 }
@@ -34,7 +34,8 @@ std::string open_failure_cause(const std::string& path, const std::string& libse
         return std::string("cannot open: ") + std::strerror(errno) + " (see `driftlab ports` for adapters)";
     }
     if (!S_ISCHR(st.st_mode)) return "not a serial device (expected a character device such as /dev/ttyUSB0)";
-    return "cannot open as a serial port: " + libserial_what + " (busy, no permission: add yourself to group "
+    return "cannot open as a serial port: " + libserial_what +
+           " (busy, no permission: add yourself to group "
            "dialout, or not a tty)";
 }
 

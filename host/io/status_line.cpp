@@ -38,7 +38,8 @@ std::string format_status_line(const AssemblyStats& s, double wall_s, const std:
 
 std::string link_lost_gap(const std::optional<double>& last_t_s, double lost_at_s, double away_s, int attempts) {
     return "link lost " +
-           (last_t_s ? "after t_s=" + fixed_point(*last_t_s, 3) + " (board clock)" : std::string("before the first row")) +
+           (last_t_s ? "after t_s=" + fixed_point(*last_t_s, 3) + " (board clock)"
+                     : std::string("before the first row")) +
            ", " + fixed_point(lost_at_s, 3) + " s into the recording (host clock); reconnected after " +
            fixed_point(away_s, 3) + " s (host clock), " + counted(static_cast<std::size_t>(attempts), "attempt");
 }
@@ -47,8 +48,9 @@ std::string skipped_samples(const AssemblyStats& stats) {
     const std::uint64_t skipped = stats.stale_samples + stats.unreachable_samples + stats.empty_samples;
     if (skipped == 0) return "";
     return "skipped " + counted(skipped, "sample") + ": " + std::to_string(stats.stale_samples) +
-           " repeated (time not after the previous row), " + std::to_string(stats.unreachable_samples) + " beyond the converter's reach, " +
-           std::to_string(stats.empty_samples) + " of an empty window (just after a CONFIG restarted the windows)";
+           " repeated (time not after the previous row), " + std::to_string(stats.unreachable_samples) +
+           " beyond the converter's reach, " + std::to_string(stats.empty_samples) +
+           " of an empty window (just after a CONFIG restarted the windows)";
 }
 
 }  // namespace driftlab::host::io

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <system_error>
 #include <fstream>
 #include <optional>
+#include <system_error>
 
 namespace driftlab::host::io {
 namespace {
@@ -32,9 +32,7 @@ unsigned long read_sysfs_number(const fs::path& file, int base) {
     }
 }
 
-bool is_usb_tty_name(const std::string& name) {
-    return name.rfind("ttyUSB", 0) == 0 || name.rfind("ttyACM", 0) == 0;
-}
+bool is_usb_tty_name(const std::string& name) { return name.rfind("ttyUSB", 0) == 0 || name.rfind("ttyACM", 0) == 0; }
 
 // The USB device directory is the first ancestor of the tty's device link that has busnum and devnum
 // (ttyACM: device -> interface; ttyUSB: device -> usb-serial port -> interface).
@@ -148,8 +146,8 @@ UsbPortScan list_usb_serial_ports(const SystemPaths& paths) {
     // libusb starts without a USB bus (a container run without the host's devices) and lists nothing, which had
     // read as "no board plugged in".
     std::error_code ec;
-    const bool bus_visible = fs::exists(fs::path(paths.sysfs_root) / "bus/usb", ec) ||
-                             fs::exists(fs::path(paths.dev_root) / "bus/usb", ec);
+    const bool bus_visible =
+        fs::exists(fs::path(paths.sysfs_root) / "bus/usb", ec) || fs::exists(fs::path(paths.dev_root) / "bus/usb", ec);
     libusb_context* ctx = nullptr;
     const int init = bus_visible ? libusb_init(&ctx) : LIBUSB_ERROR_NO_DEVICE;
     if (init != LIBUSB_SUCCESS) {

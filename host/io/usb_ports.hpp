@@ -15,12 +15,12 @@ namespace driftlab::host::io {
 
 /// A serial device node the kernel created for a USB device, as read from sysfs.
 struct TtyUsbNode {
-    std::string tty_name;       ///< e.g. "ttyUSB0", "ttyACM0"
-    std::uint8_t bus = 0;       ///< USB bus number (sysfs busnum)
-    std::uint8_t address = 0;   ///< device address on that bus (sysfs devnum)
+    std::string tty_name;      ///< e.g. "ttyUSB0", "ttyACM0"
+    std::uint8_t bus = 0;      ///< USB bus number (sysfs busnum)
+    std::uint8_t address = 0;  ///< device address on that bus (sysfs devnum)
     std::uint16_t vendor_id = 0;
     std::uint16_t product_id = 0;
-    std::string manufacturer;   ///< sysfs string descriptors, used when libusb may not open the device
+    std::string manufacturer;  ///< sysfs string descriptors, used when libusb may not open the device
     std::string product;
     std::string serial_number;
 };

@@ -20,8 +20,8 @@ namespace driftlab::host {
 inline constexpr int kLogFormatVersion = 1;
 
 /// Required columns, in the order the writer puts them: t_s, seq, then the channels in Channel order.
-inline constexpr std::array<const char*, 2 + kChannelCount> kRequiredLogColumns = {
-    "t_s", "seq", "gyro", "accel_x", "accel_y", "accel_z"};
+inline constexpr std::array<const char*, 2 + kChannelCount> kRequiredLogColumns = {"t_s",     "seq",     "gyro",
+                                                                                   "accel_x", "accel_y", "accel_z"};
 
 /// Optional columns a reader keeps (by name) when present; any other column is ignored.
 inline constexpr std::array<const char*, 9> kOptionalLogColumns = {
@@ -65,17 +65,17 @@ struct LogCut {
     std::size_t before_row = 0;  ///< the index of the first row after the cut
     double from_s = 0.0;         ///< the window asked for [s since power-on]
     double to_s = 0.0;
-    std::size_t rows = 0;        ///< rows it held
-    std::string by;              ///< what asked for it (options, ", "-joined where windows merged), for messages
+    std::size_t rows = 0;  ///< rows it held
+    std::string by;        ///< what asked for it (options, ", "-joined where windows merged), for messages
 };
 
 /// The whole log, column-major so the analysis can take a channel as one vector.
 struct LogData {
     std::string source_name;  ///< file name, for messages
     LogMetadata metadata;
-    std::vector<double> t_s;                                 ///< [s] since power-on, strictly increasing
-    std::vector<std::uint64_t> seq;                          ///< unwrapped frame sequence number
-    std::array<std::vector<double>, kChannelCount> counts;   ///< [counts] per Channel
+    std::vector<double> t_s;                                ///< [s] since power-on, strictly increasing
+    std::vector<std::uint64_t> seq;                         ///< unwrapped frame sequence number
+    std::array<std::vector<double>, kChannelCount> counts;  ///< [counts] per Channel
     /// Channels the source really has. A canonical log has all four; a log made from another logger's table
     /// (gap::log_from_table) fills the channels it has no column for at mid-scale, and these are false.
     std::array<bool, kChannelCount> recorded{true, true, true, true};
@@ -97,7 +97,8 @@ struct LogData {
     }
 };
 
-/// Whether a `sat_flags` value flags channel `c` (bit c: a conversion of the output's window at code 0 or the top code).
+/// Whether a `sat_flags` value flags channel `c` (bit c: a conversion of the output's window at code 0 or the top
+/// code).
 inline bool flags_saturation(double sat_flags, std::size_t c) {
     return sat_flags >= 0.0 && ((static_cast<unsigned>(sat_flags) >> c) & 1u) != 0;
 }

@@ -145,7 +145,8 @@ private:
     [[noreturn]] void refuse_truncated_tail(std::uint64_t number, const std::string& why) const {
         throw DataError(log_.source_name, number,
                         "truncated last line (no newline at the end of the file; the writer was probably "
-                        "interrupted" + why + "; --drop-cut-line reads the rest without it" + capture_remedy());
+                        "interrupted" +
+                            why + "; --drop-cut-line reads the rest without it" + capture_remedy());
     }
 
     /// Where the capture is found: the file the metadata's `capture` key names (record writes its file name there,
@@ -165,7 +166,8 @@ private:
         }
         if (named.empty()) return "";
         return ", or rebuild the whole log with `driftlab decode CAPTURE -o LOG.csv` from its capture, which the "
-               "metadata names '" + named + "' and is not beside the log";
+               "metadata names '" +
+               named + "' and is not beside the log";
     }
 
     void magic(std::string_view text, std::uint64_t number) {
@@ -197,9 +199,10 @@ private:
 
     void header(std::string_view text, std::uint64_t number) {
         if (!looks_like_header(text, fields_))
-            throw DataError(log_.source_name, number,
-                            "missing header: expected column names such as 't_s,seq,gyro,accel_x,accel_y,accel_z', got '" +
-                                std::string(text.substr(0, 60)) + "'");
+            throw DataError(
+                log_.source_name, number,
+                "missing header: expected column names such as 't_s,seq,gyro,accel_x,accel_y,accel_z', got '" +
+                    std::string(text.substr(0, 60)) + "'");
         split_fields(text, ',', fields_);
         plan_ = plan_columns(fields_, log_, number);
         header_line_ = number;
@@ -214,9 +217,9 @@ private:
 
     void row(std::string_view text, std::uint64_t number) {
         if (text.find("t_s") != std::string_view::npos && looks_like_header(text, fields_))
-            throw DataError(log_.source_name, number,
-                            "duplicate header (the first is on line " + std::to_string(header_line_) +
-                                "); two logs concatenated?");
+            throw DataError(
+                log_.source_name, number,
+                "duplicate header (the first is on line " + std::to_string(header_line_) + "); two logs concatenated?");
         split_fields(text, ',', fields_);
         if (fields_.size() != plan_->field_count)
             throw DataError(log_.source_name, number,
@@ -237,8 +240,11 @@ private:
                                 "field " + std::to_string(req[2 + c] + 1) + " (" + kRequiredLogColumns[2 + c] + ") '" +
                                     std::string(trim_blanks(fields_[req[2 + c]])) + "': beyond the " +
                                     std::to_string(range_->bits) + "-bit converter's reach (" +
-                                    format_double(range_->estimate_low()) + " to " + format_double(range_->estimate_high()) +
-                                    " counts" + (range_assumed_ ? "; the metadata names no adc_bits, " + std::to_string(range_->bits) + " assumed" : "") +
+                                    format_double(range_->estimate_low()) + " to " +
+                                    format_double(range_->estimate_high()) + " counts" +
+                                    (range_assumed_ ? "; the metadata names no adc_bits, " +
+                                                          std::to_string(range_->bits) + " assumed"
+                                                    : "") +
                                     ")");
         }
         optional_scratch_.clear();
@@ -250,17 +256,21 @@ private:
             // Four channel bits: anything else (1.5, -3) had been read bit by bit as if it were some set of them.
             if (name == "sat_flags" && !(v >= 0.0 && v <= 15.0 && v == std::floor(v)))
                 throw DataError(log_.source_name, number,
-                                "field " + std::to_string(field + 1) + " (sat_flags) '" + std::string(trim_blanks(fields_[field])) +
+                                "field " + std::to_string(field + 1) + " (sat_flags) '" +
+                                    std::string(trim_blanks(fields_[field])) +
                                     "': not a set of channel bits (an integer 0 to 15)");
             if (range_ && is_raw_code_column(name) && !range_->holds_raw_code(v))
                 throw DataError(log_.source_name, number,
-                                "field " + std::to_string(field + 1) + " (" + name + ") '" + std::string(trim_blanks(fields_[field])) +
-                                    "': not a code of the " + std::to_string(range_->bits) + "-bit converter (0 to " +
-                                    format_double(range_->full) + ", or " + format_double(kLostRawCode) + " for a lost RAW frame)");
+                                "field " + std::to_string(field + 1) + " (" + name + ") '" +
+                                    std::string(trim_blanks(fields_[field])) + "': not a code of the " +
+                                    std::to_string(range_->bits) + "-bit converter (0 to " +
+                                    format_double(range_->full) + ", or " + format_double(kLostRawCode) +
+                                    " for a lost RAW frame)");
         }
         if (t_s < 0.0)
             throw DataError(log_.source_name, number,
-                            "t_s " + format_double(t_s) + " is before power-on (t_s counts from power-on, so it is never negative)");
+                            "t_s " + format_double(t_s) +
+                                " is before power-on (t_s counts from power-on, so it is never negative)");
         if (!log_.t_s.empty() && !(t_s > log_.t_s.back()))
             throw DataError(log_.source_name, number,
                             "t_s " + format_double(t_s) + " is not after the previous row's " +

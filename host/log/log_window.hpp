@@ -28,6 +28,7 @@ LogData rows_outside(const LogData& log, std::vector<TimeWindow> windows);
 /// The stretches of `log` whose rows flag one of `channels` saturated (`sat_flags`), each widened by `margin_s` on
 /// either side: what a shock or a rail took, for rows_outside(). None when no row is flagged. Throws DataError naming
 /// the log when it has no `sat_flags` column (a plain recording; `record` and `hil` write it).
-std::vector<TimeWindow> saturated_stretches(const LogData& log, const std::array<bool, kChannelCount>& channels, double margin_s);
+std::vector<TimeWindow> saturated_stretches(const LogData& log, const std::array<bool, kChannelCount>& channels,
+                                            double margin_s);
 
 }  // namespace driftlab::host

@@ -63,15 +63,16 @@ void LogWriter::write_row(const LogRow& row) {
         if (!range_->holds_estimate(row.counts[c]))
             throw UsageError("log row at t_s=" + format_double(row.t_s) + " has " + kChannelNames[c] + " = " +
                              format_double(row.counts[c]) + " counts, beyond the converter's reach (" +
-                             format_double(range_->estimate_low()) + " to " + format_double(range_->estimate_high()) + ")");
+                             format_double(range_->estimate_low()) + " to " + format_double(range_->estimate_high()) +
+                             ")");
     for (std::size_t i = 0; range_ && i < optional_columns_.size(); ++i)
         if (is_raw_code_column(optional_columns_[i]) && !range_->holds_raw_code(row.optional_values[i]))
             throw UsageError("log row at t_s=" + format_double(row.t_s) + " has " + optional_columns_[i] + " = " +
                              format_double(row.optional_values[i]) + ", not a code of the converter");
     if (row.t_s < 0.0) throw UsageError("log row t_s=" + format_double(row.t_s) + " is before power-on");
     if (rows_ > 0 && !(row.t_s > last_t_s_))
-        throw UsageError("log row t_s=" + format_double(row.t_s) + " does not follow the previous t_s=" +
-                         format_double(last_t_s_));
+        throw UsageError("log row t_s=" + format_double(row.t_s) +
+                         " does not follow the previous t_s=" + format_double(last_t_s_));
     append_double(pending_, row.t_s);
     pending_ += ',';
     pending_ += std::to_string(row.seq);

@@ -23,10 +23,10 @@ namespace driftlab::host {
 
 /// One sample: the required columns plus values for the optional columns given to the constructor.
 struct LogRow {
-    double t_s = 0.0;                                   ///< [s] since power-on
-    std::uint64_t seq = 0;                              ///< unwrapped frame sequence number
-    std::array<double, kChannelCount> counts{};         ///< [counts] per Channel
-    std::vector<double> optional_values;                ///< same order as the writer's optional columns
+    double t_s = 0.0;                            ///< [s] since power-on
+    std::uint64_t seq = 0;                       ///< unwrapped frame sequence number
+    std::array<double, kChannelCount> counts{};  ///< [counts] per Channel
+    std::vector<double> optional_values;         ///< same order as the writer's optional columns
 };
 
 class LogWriter {
@@ -43,8 +43,8 @@ public:
     void set_flush_interval(std::chrono::milliseconds interval) { flush_interval_ = interval; }
 
     /// Appends one row. Throws UsageError on NaN/inf, a channel value beyond the converter's reach or a raw code it
-    /// cannot make (when the metadata holds `adc_bits`), a t_s not after the previous one, or a wrong number of optional values: the
-    /// writer never produces a file its reader rejects.
+    /// cannot make (when the metadata holds `adc_bits`), a t_s not after the previous one, or a wrong number of
+    /// optional values: the writer never produces a file its reader rejects.
     void write_row(const LogRow& row);
     /// Appends `# gap: text` (text without newlines).
     void write_gap(const std::string& text);

@@ -72,15 +72,16 @@ NumericTable parse_numeric_table(std::istream& in, const std::string& path) {
             const ParsedNumber p = parse_finite_double(fields[i]);
             if (p.error != NumberError::ok) {
                 // A semicolon-separated or decimal-comma table (a spreadsheet's export in many locales) fails here.
-                const bool locale_export = p.error == NumberError::not_a_number &&
-                                           fields[i].find_first_of(";") != std::string_view::npos;
-                throw DataError(path, number,
-                                "field " + std::to_string(i + 1) + " '" + std::string(trim_blanks(fields[i])) +
-                                    "': " + number_error_text(p.error) +
-                                    (locale_export ? " (fields are separated by blanks, tabs or commas and use a decimal "
-                                                     "point: export the table with those, not semicolons and decimal "
-                                                     "commas)"
-                                                   : ""));
+                const bool locale_export =
+                    p.error == NumberError::not_a_number && fields[i].find_first_of(";") != std::string_view::npos;
+                throw DataError(
+                    path, number,
+                    "field " + std::to_string(i + 1) + " '" + std::string(trim_blanks(fields[i])) +
+                        "': " + number_error_text(p.error) +
+                        (locale_export ? " (fields are separated by blanks, tabs or commas and use a decimal "
+                                         "point: export the table with those, not semicolons and decimal "
+                                         "commas)"
+                                       : ""));
             }
             values.push_back(p.value);
         }
@@ -94,7 +95,8 @@ NumericTable parse_numeric_table(std::istream& in, const std::string& path) {
             const std::size_t got = first_unchecked ? rows_by_line.front().size() : values.size();
             if (got != table.names.size())
                 throw DataError(path, first_unchecked ? line_numbers.front() : number,
-                                "expected " + std::to_string(table.names.size()) + " fields (as the name line), got " + std::to_string(got));
+                                "expected " + std::to_string(table.names.size()) + " fields (as the name line), got " +
+                                    std::to_string(got));
         }
         rows_by_line.push_back(std::move(values));
         line_numbers.push_back(number);

@@ -4,9 +4,9 @@
 #pragma once
 
 #include <cstddef>
-#include <string>
 #include <cstdint>
 #include <istream>
+#include <string>
 #include <vector>
 
 namespace driftlab::host {
@@ -16,7 +16,7 @@ struct NumericTable {
     std::string source_name;
     std::vector<std::string> names;
     std::vector<std::vector<double>> columns;
-    std::vector<std::string> comments;  ///< text of the `#` lines, without the '#'
+    std::vector<std::string> comments;     ///< text of the `#` lines, without the '#'
     std::vector<std::uint64_t> row_lines;  ///< the file line (1-based) of each row; all one line for a one-line series
 
     std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }

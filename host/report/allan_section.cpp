@@ -3,9 +3,9 @@
 
 #include <array>
 
+#include "host/fit/allan_pipeline.hpp"
 #include "host/report/html.hpp"
 #include "host/stats/allan_analysis.hpp"
-#include "host/fit/allan_pipeline.hpp"
 #include "host/stats/noise_terms.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
@@ -106,8 +106,8 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
     h += "<table><tr><th>channel</th>" + unit_column + "<th>&tau;0 [s]</th><th>OADEV &sigma;(&tau;0) raw [" + u +
          "]</th><th>min OADEV &sigma; residual [" + u + "]</th><th>at &tau; [s]</th>";
     // Each term in U times the power of tau that makes its share of the ADEV a rate (noise_terms.hpp).
-    constexpr std::array<const char*, stats::kNoiseTermCount> kTermUnits = {"&middot;s", "/&radic;Hz", "",
-                                                                            "/&radic;s", "/s"};
+    constexpr std::array<const char*, stats::kNoiseTermCount> kTermUnits = {"&middot;s", "/&radic;Hz", "", "/&radic;s",
+                                                                            "/s"};
     for (std::size_t t = 0; t < stats::kNoiseTermCount; ++t)
         h += "<th>" + std::string(stats::kNoiseTermSymbols[t]) + " [" + u + kTermUnits[t] + "]</th>";
     h += "</tr>\n";
@@ -182,7 +182,8 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
     // The same terms in the units datasheets quote, where the channel's physical quantity is known.
     for (std::size_t t = 0; t < navigation_tables().size(); ++t) {
         if (navigation_rows[t].empty()) continue;
-        h += "<h3>" + std::string(navigation_tables()[t].heading) + ": noise terms in navigation units</h3>\n"
+        h += "<h3>" + std::string(navigation_tables()[t].heading) +
+             ": noise terms in navigation units</h3>\n"
              "<table><tr><th>channel</th>";
         for (const auto& column : navigation_tables()[t].columns) h += "<th>" + std::string(column.first) + "</th>";
         h += "</tr>\n" + navigation_rows[t] + "</table>\n";

@@ -14,8 +14,8 @@
 namespace driftlab::host::report {
 
 struct AllanSection {
-    std::string html;           ///< tables (no plots)
-    std::vector<Plot> plots;    ///< one ADEV plot per channel
+    std::string html;         ///< tables (no plots)
+    std::vector<Plot> plots;  ///< one ADEV plot per channel
     std::vector<std::string> plot_names;
 };
 

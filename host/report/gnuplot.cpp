@@ -6,10 +6,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -41,10 +41,10 @@ bool has_ends(const PlotSeries& s) { return s.style == SeriesStyle::error_bars |
 void check(const Plot& plot) {
     if (plot.series.empty()) throw UsageError("plot '" + plot.title + "' has no series");
     for (const auto& s : plot.series) {
-        if (s.x.size() != s.y.size())
-            throw UsageError("plot series '" + s.title + "': x and y differ in length");
+        if (s.x.size() != s.y.size()) throw UsageError("plot series '" + s.title + "': x and y differ in length");
         if (has_ends(s) && (s.y_low.size() != s.y.size() || s.y_high.size() != s.y.size()))
-            throw UsageError("plot series '" + s.title + "': error bars and bands need y_low and y_high for every point");
+            throw UsageError("plot series '" + s.title +
+                             "': error bars and bands need y_low and y_high for every point");
     }
 }
 
@@ -81,12 +81,12 @@ void write_data(const Plot& plot, const fs::path& path) {
 std::string style_clause(const PlotSeries& s) {
     std::string clause;
     switch (s.style) {
-        case SeriesStyle::lines: clause = "with lines"; break;
-        case SeriesStyle::points: clause = "with points pt 7 ps 0.5"; break;
-        case SeriesStyle::dots: clause = "with dots"; break;
-        case SeriesStyle::steps: clause = "with steps"; break;
-        case SeriesStyle::error_bars: clause = "with yerrorbars pt 7 ps 0.6"; break;
-        case SeriesStyle::band: clause = "with filledcurves fs transparent solid 0.25 noborder"; break;
+    case SeriesStyle::lines: clause = "with lines"; break;
+    case SeriesStyle::points: clause = "with points pt 7 ps 0.5"; break;
+    case SeriesStyle::dots: clause = "with dots"; break;
+    case SeriesStyle::steps: clause = "with steps"; break;
+    case SeriesStyle::error_bars: clause = "with yerrorbars pt 7 ps 0.6"; break;
+    case SeriesStyle::band: clause = "with filledcurves fs transparent solid 0.25 noborder"; break;
     }
     clause += " lw " + format_double(s.line_width);
     if (s.dashed) clause += " dt 3";
@@ -114,15 +114,20 @@ std::string script(const Plot& plot, const fs::path& data, const fs::path& image
         gp << ")\n";
     }
     if (plot.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
-    if (plot.x_range) gp << "set xrange [" << format_double(plot.x_range->first) << ":" << format_double(plot.x_range->second) << "]\n";
-    if (plot.y_range) gp << "set yrange [" << format_double(plot.y_range->first) << ":" << format_double(plot.y_range->second) << "]\n";
+    if (plot.x_range)
+        gp << "set xrange [" << format_double(plot.x_range->first) << ":" << format_double(plot.x_range->second)
+           << "]\n";
+    if (plot.y_range)
+        gp << "set yrange [" << format_double(plot.y_range->first) << ":" << format_double(plot.y_range->second)
+           << "]\n";
     gp << "plot ";
     for (std::size_t i = 0; i < plot.series.size(); ++i) {
         const auto& s = plot.series[i];
         if (i) gp << ", \\\n     ";
-        const char* columns = s.style == SeriesStyle::error_bars ? " using 1:2:3:4 " : s.style == SeriesStyle::band ? " using 1:3:4 " : " using 1:2 ";
-        gp << quoted(data.string()) << " index " << i << columns
-           << style_clause(s);
+        const char* columns = s.style == SeriesStyle::error_bars ? " using 1:2:3:4 "
+                              : s.style == SeriesStyle::band     ? " using 1:3:4 "
+                                                                 : " using 1:2 ";
+        gp << quoted(data.string()) << " index " << i << columns << style_clause(s);
     }
     gp << "\nunset output\n";
     return gp.str();
@@ -192,7 +197,8 @@ PlotPaths plot_paths(const std::string& dir, const std::string& name, const std:
 
 }  // namespace
 
-std::vector<std::string> plot_files(const std::string& dir, const std::string& name, const std::vector<ImageFormat>& formats) {
+std::vector<std::string> plot_files(const std::string& dir, const std::string& name,
+                                    const std::vector<ImageFormat>& formats) {
     const PlotPaths p = plot_paths(dir, name, formats);
     std::vector<std::string> out{p.data.string(), p.log.string()};
     for (const auto& [image, gp] : p.images) out.insert(out.end(), {image.string(), gp.string()});
@@ -219,8 +225,8 @@ std::vector<std::string> render_plot(const Plot& plot, const std::string& dir, c
 
 std::string render_svg(const Plot& plot) {
     std::random_device rd;
-    const fs::path dir = fs::temp_directory_path() / ("driftlab_plot_" + std::to_string(::getpid()) + "_" +
-                                                      std::to_string(rd()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("driftlab_plot_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
     std::string svg;
     try {
         const auto images = render_plot(plot, dir.string(), "plot", {ImageFormat::svg});

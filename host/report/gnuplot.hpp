@@ -18,12 +18,12 @@ namespace driftlab::host::report {
 enum class SeriesStyle { lines, points, dots, steps, error_bars, band };
 
 struct PlotSeries {
-    std::string title;           ///< legend entry ("" = none)
+    std::string title;  ///< legend entry ("" = none)
     std::vector<double> x, y;
     std::vector<double> y_low, y_high;  ///< for error_bars and band: the ends (same length as y)
     SeriesStyle style = SeriesStyle::lines;
-    bool dashed = false;         ///< dotted line, e.g. for bounds
-    std::string color;           ///< gnuplot colour name or "#rrggbb"; "" = automatic
+    bool dashed = false;  ///< dotted line, e.g. for bounds
+    std::string color;    ///< gnuplot colour name or "#rrggbb"; "" = automatic
     double line_width = 1.5;
 };
 
@@ -32,7 +32,7 @@ struct Plot {
     std::string x_label, y_label;
     bool log_x = false, log_y = false;
     std::optional<std::pair<double, double>> x_range, y_range;
-    std::vector<double> x_tics;  ///< explicit x tick positions, labelled as plain numbers (empty = automatic)
+    std::vector<double> x_tics;     ///< explicit x tick positions, labelled as plain numbers (empty = automatic)
     std::string key = "top right";  ///< gnuplot's legend placement, e.g. "outside right top" beside crowded data
     std::vector<PlotSeries> series;
     int width_px = 900, height_px = 540;

@@ -130,8 +130,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     for (const fit::DriftAnalysis* a : ok) {
         const auto row = [&](const char* p, const fit::Estimate& e, const fit::Estimate& w, bool determined) {
             h += "<tr><td>" + html_escape(a->data.name) + "</td><td>" + p + "</td>" +
-                 (determined ? "<td>" + estimate_cell(e) + "</td><td>" + ci_cell(e) + "</td><td>" + ci_cell(w) +
-                                   "</td>"
+                 (determined ? "<td>" + estimate_cell(e) + "</td><td>" + ci_cell(e) + "</td><td>" + ci_cell(w) + "</td>"
                              : "<td colspan=\"3\">" + std::string(fit::kNotDetermined) + "</td>") +
                  "</tr>\n";
         };
@@ -189,8 +188,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
         }
         for (std::size_t i = 0; i < allan.plots.size(); ++i)
             figs.add(allan.plots[i], allan.plot_names[i] + ": overlapping Allan deviation with 68 % intervals");
-        h += figs.available ? figs.html
-                            : "<p class=\"bad\">Figures unavailable: " + html_escape(figs.error) + "</p>\n";
+        h += figs.available ? figs.html : "<p class=\"bad\">Figures unavailable: " + html_escape(figs.error) + "</p>\n";
     }
     h += "</body></html>\n";
     return h;

@@ -33,7 +33,8 @@ struct Part {
 std::string parts_text(const LogMetadata& m, std::initializer_list<Part> parts) {
     std::string text;
     for (const Part& p : parts)
-        if (const auto value = m.get(p.key)) text += (text.empty() ? "" : ", ") + std::string(p.before) + *value + p.after;
+        if (const auto value = m.get(p.key))
+            text += (text.empty() ? "" : ", ") + std::string(p.before) + *value + p.after;
     return text;
 }
 
@@ -64,7 +65,8 @@ std::string smoothing_text(const LogMetadata& m) {
     const auto order = m.get_int("fit_order");
     if (!window && !order) return "";
     std::string text = "on-board least squares";
-    if (order) text += " of order " + std::to_string(*order) + (*order == 0 ? " (a mean)" : *order == 1 ? " (a line)" : "");
+    if (order)
+        text += " of order " + std::to_string(*order) + (*order == 0 ? " (a mean)" : *order == 1 ? " (a line)" : "");
     if (window) text += " over " + std::to_string(*window) + " conversions";
     if (const auto per_output = m.get_int("conversions_per_output"))
         text += ", " + std::to_string(*per_output) + " conversions per output";
@@ -102,21 +104,26 @@ Rows recording_rows(const fit::LogOverview& log) {
     // Under hil the emulated firmware reports the board variant it was built for; no board took part.
     const bool emulated = m.get("source") == std::optional<std::string>("hil");
     add(emulated ? "board (emulated)" : "board",
-        parts_text(m, {{"board_id", emulated ? "firmware built for id " : "id ", ""}, {"port", "port ", ""}, {"baud", "", " baud"}}));
-    add("simulation", parts_text(m, {{"target", "target ", ""}, {"model_name", "model ", ""}, {"model", "model file ", ""},
-                                     {"preset", "preset ", ""}, {"seed", "seed ", ""}, {"effects", "effects ", ""}}));
+        parts_text(m, {{"board_id", emulated ? "firmware built for id " : "id ", ""},
+                       {"port", "port ", ""},
+                       {"baud", "", " baud"}}));
+    add("simulation", parts_text(m, {{"target", "target ", ""},
+                                     {"model_name", "model ", ""},
+                                     {"model", "model file ", ""},
+                                     {"preset", "preset ", ""},
+                                     {"seed", "seed ", ""},
+                                     {"effects", "effects ", ""}}));
     add("firmware", parts_text(m, {{"firmware_version", "version ", ""}, {"protocol_version", "protocol ", ""}}));
     add("log format", "driftlab log, format " + std::to_string(kLogFormatVersion));
     if (const auto start = m.get("start_utc")) add("start", *start);
     add("duration", duration_text(log.last_t_s - log.first_t_s) + ", t_s " + significant_plain(log.first_t_s, 6) +
                         " to " + significant_plain(log.last_t_s, 6) + " s after power-on");
     add("samples", std::to_string(log.rows) +
-                       (log.gap_events == 0 ? ""
-                        : ", " + counted(log.gap_events, "link gap") +
-                              " (# gap: lines)"));
+                       (log.gap_events == 0 ? "" : ", " + counted(log.gap_events, "link gap") + " (# gap: lines)"));
     add("output rate", output_rate_text(log));
     add("smoothing", smoothing_text(m));
-    add("converter", parts_text(m, {{"adc_bits", "", "-bit"}, {"vref_v", "", " V reference"}, {"tick_hz", "", " Hz tick"}}));
+    add("converter",
+        parts_text(m, {{"adc_bits", "", "-bit"}, {"vref_v", "", " V reference"}, {"tick_hz", "", " Hz tick"}}));
     add("channels", channels_text(log));
     return rows;
 }

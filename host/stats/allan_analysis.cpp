@@ -15,11 +15,11 @@ constexpr int kDefaultAlpha = 0;
 // Terms one gap-free segment of `samples` phase samples contributes (mirrors allan.cpp / hadamard.cpp).
 double segment_terms(Deviation type, double samples, double m) {
     switch (type) {
-        case Deviation::adev: return std::floor((samples - 1.0) / m) - 1.0;
-        case Deviation::oadev: return samples - 2.0 * m;
-        case Deviation::mdev: return samples - 3.0 * m + 1.0;
-        case Deviation::hdev: return std::floor((samples - 1.0) / m) - 2.0;
-        case Deviation::ohdev: return samples - 3.0 * m;
+    case Deviation::adev: return std::floor((samples - 1.0) / m) - 1.0;
+    case Deviation::oadev: return samples - 2.0 * m;
+    case Deviation::mdev: return samples - 3.0 * m + 1.0;
+    case Deviation::hdev: return std::floor((samples - 1.0) / m) - 2.0;
+    case Deviation::ohdev: return samples - 3.0 * m;
     }
     return 0.0;
 }
@@ -61,9 +61,9 @@ AnalysedCurve analyse_deviation(const PhaseRecord& record, Deviation type, std::
             alpha = id->alpha;
             have_alpha = true;
         }
-        const double edf = record.has_gaps() ? pooled_edf(record, type, alpha, static_cast<double>(m))
-                                             : edf_for(type, alpha, static_cast<double>(m),
-                                                       static_cast<double>(record.size()));
+        const double edf = record.has_gaps()
+                               ? pooled_edf(record, type, alpha, static_cast<double>(m))
+                               : edf_for(type, alpha, static_cast<double>(m), static_cast<double>(record.size()));
         const ConfidenceInterval ci = confidence_interval(out.curve.dev[i], edf, confidence);
         out.alpha.push_back(alpha);
         out.alpha_identified.push_back(id.has_value() && have_alpha);

@@ -16,8 +16,8 @@ std::vector<double> biased_autocovariance(const std::vector<double>& w, std::siz
 /// of a mean, and of slowly varying regression coefficients, is tau times its white-noise value. Never < 1.
 struct AutocorrelationTime {
     double tau = 1.0;
-    std::size_t window = 0;     ///< W, lags summed
-    bool window_found = true;   ///< false when rho ran out before W >= c tau (tau is then a lower bound)
+    std::size_t window = 0;    ///< W, lags summed
+    bool window_found = true;  ///< false when rho ran out before W >= c tau (tau is then a lower bound)
 };
 AutocorrelationTime integrated_autocorrelation_time(const std::vector<double>& rho, double c = 5.0);
 

@@ -21,11 +21,11 @@ Deviation parse_deviation(std::string_view name) {
 
 std::string_view deviation_name(Deviation dev) {
     switch (dev) {
-        case Deviation::adev: return "adev";
-        case Deviation::oadev: return "oadev";
-        case Deviation::mdev: return "mdev";
-        case Deviation::hdev: return "hdev";
-        case Deviation::ohdev: return "ohdev";
+    case Deviation::adev: return "adev";
+    case Deviation::oadev: return "oadev";
+    case Deviation::mdev: return "mdev";
+    case Deviation::hdev: return "hdev";
+    case Deviation::ohdev: return "ohdev";
     }
     return "?";
 }
@@ -43,11 +43,11 @@ namespace {
 std::int64_t terms_without_gaps(Deviation type, std::int64_t samples, std::int64_t m) {
     std::int64_t n = 0;
     switch (type) {
-        case Deviation::adev: n = (samples - 1) / m - 1; break;
-        case Deviation::oadev: n = samples - 2 * m; break;
-        case Deviation::mdev: n = samples - 3 * m + 1; break;
-        case Deviation::hdev: n = (samples - 1) / m - 2; break;
-        case Deviation::ohdev: n = samples - 3 * m; break;
+    case Deviation::adev: n = (samples - 1) / m - 1; break;
+    case Deviation::oadev: n = samples - 2 * m; break;
+    case Deviation::mdev: n = samples - 3 * m + 1; break;
+    case Deviation::hdev: n = (samples - 1) / m - 2; break;
+    case Deviation::ohdev: n = samples - 3 * m; break;
     }
     return std::max<std::int64_t>(n, 0);
 }
@@ -65,20 +65,20 @@ DeviationCurve compute_deviation(const PhaseRecord& record, Deviation type, std:
         long double scale = 0.0L;
         const long double mm = static_cast<long double>(m);
         switch (type) {
-            case Deviation::adev:
-            case Deviation::oadev:
-                t = allan_terms(record, m, is_overlapping(type));
-                scale = 2.0L * mm * mm * tau0 * tau0;
-                break;
-            case Deviation::mdev:
-                t = modified_allan_terms(record, m);
-                scale = 2.0L * mm * mm * mm * mm * tau0 * tau0;
-                break;
-            case Deviation::hdev:
-            case Deviation::ohdev:
-                t = hadamard_terms(record, m, is_overlapping(type));
-                scale = 6.0L * mm * mm * tau0 * tau0;
-                break;
+        case Deviation::adev:
+        case Deviation::oadev:
+            t = allan_terms(record, m, is_overlapping(type));
+            scale = 2.0L * mm * mm * tau0 * tau0;
+            break;
+        case Deviation::mdev:
+            t = modified_allan_terms(record, m);
+            scale = 2.0L * mm * mm * mm * mm * tau0 * tau0;
+            break;
+        case Deviation::hdev:
+        case Deviation::ohdev:
+            t = hadamard_terms(record, m, is_overlapping(type));
+            scale = 6.0L * mm * mm * tau0 * tau0;
+            break;
         }
         if (t.n < 1) continue;
         curve.m.push_back(m);

@@ -33,10 +33,10 @@ int stable32_factor_divisor(Deviation dev);
 /// One deviation evaluated on a grid. Parallel arrays, one entry per averaging factor that had >= 1 term.
 struct DeviationCurve {
     Deviation type = Deviation::oadev;
-    std::vector<std::int64_t> m;     ///< averaging factor
-    std::vector<double> tau_s;       ///< m * tau0 [s]
-    std::vector<double> dev;         ///< the deviation [data unit] (rate unit)
-    std::vector<std::int64_t> n;     ///< terms summed (Stable32's "#"), after skipping gap-touching terms
+    std::vector<std::int64_t> m;          ///< averaging factor
+    std::vector<double> tau_s;            ///< m * tau0 [s]
+    std::vector<double> dev;              ///< the deviation [data unit] (rate unit)
+    std::vector<std::int64_t> n;          ///< terms summed (Stable32's "#"), after skipping gap-touching terms
     std::vector<std::int64_t> n_skipped;  ///< terms a gap-free record of the same length would have had extra
 };
 

@@ -18,14 +18,14 @@ constexpr int kJMax = 100;  // the paper's truncation of the basic sum
 double sw(double t, int alpha) {
     const double at = std::fabs(t);
     switch (alpha) {
-        case 2: return -at;
-        case 1: return t == 0.0 ? 0.0 : t * t * std::log(at);
-        case 0: return at * at * at;
-        case -1: return t == 0.0 ? 0.0 : std::pow(t, 4) * std::log(at);
-        case -2: return std::pow(at, 5);
-        case -3: return t == 0.0 ? 0.0 : std::pow(t, 6) * std::log(at);
-        case -4: return std::pow(at, 7);
-        default: return std::numeric_limits<double>::quiet_NaN();
+    case 2: return -at;
+    case 1: return t == 0.0 ? 0.0 : t * t * std::log(at);
+    case 0: return at * at * at;
+    case -1: return t == 0.0 ? 0.0 : std::pow(t, 4) * std::log(at);
+    case -2: return std::pow(at, 5);
+    case -3: return t == 0.0 ? 0.0 : std::pow(t, 6) * std::log(at);
+    case -4: return std::pow(at, 7);
+    default: return std::numeric_limits<double>::quiet_NaN();
     }
 }
 
@@ -38,15 +38,14 @@ double sx(double t, double f, int alpha) {
 // sz(t): after the d-th difference (eq. 9): binomial coefficients of (1 - B)^d folded symmetrically.
 double sz(double t, double f, int alpha, int d) {
     switch (d) {
-        case 1: return 2.0 * sx(t, f, alpha) - sx(t - 1.0, f, alpha) - sx(t + 1.0, f, alpha);
-        case 2:
-            return 6.0 * sx(t, f, alpha) - 4.0 * (sx(t - 1.0, f, alpha) + sx(t + 1.0, f, alpha)) +
-                   sx(t - 2.0, f, alpha) + sx(t + 2.0, f, alpha);
-        case 3:
-            return 20.0 * sx(t, f, alpha) - 15.0 * (sx(t - 1.0, f, alpha) + sx(t + 1.0, f, alpha)) +
-                   6.0 * (sx(t - 2.0, f, alpha) + sx(t + 2.0, f, alpha)) - sx(t - 3.0, f, alpha) -
-                   sx(t + 3.0, f, alpha);
-        default: return std::numeric_limits<double>::quiet_NaN();
+    case 1: return 2.0 * sx(t, f, alpha) - sx(t - 1.0, f, alpha) - sx(t + 1.0, f, alpha);
+    case 2:
+        return 6.0 * sx(t, f, alpha) - 4.0 * (sx(t - 1.0, f, alpha) + sx(t + 1.0, f, alpha)) + sx(t - 2.0, f, alpha) +
+               sx(t + 2.0, f, alpha);
+    case 3:
+        return 20.0 * sx(t, f, alpha) - 15.0 * (sx(t - 1.0, f, alpha) + sx(t + 1.0, f, alpha)) +
+               6.0 * (sx(t - 2.0, f, alpha) + sx(t + 2.0, f, alpha)) - sx(t - 3.0, f, alpha) - sx(t + 3.0, f, alpha);
+    default: return std::numeric_limits<double>::quiet_NaN();
     }
 }
 
@@ -86,16 +85,17 @@ constexpr std::array<std::array<Pair, 3>, 7> kTable2{{
 // Table 3 (alpha = 1, unmodified): (b0, b1) of the log(m) correction, d = 1..3.
 constexpr std::array<Pair, 3> kTable3{{{6.0, 4.0}, {15.23, 12.0}, {47.8, 40.0}}};
 
-double binomial(int n, int k) { return std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0)); }
+double binomial(int n, int k) {
+    return std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0));
+}
 
 }  // namespace
 
-std::optional<double> edf_greenhall(int alpha, int d, double m, double phase_samples, bool overlapping,
-                                    bool modified) {
+std::optional<double> edf_greenhall(int alpha, int d, double m, double phase_samples, bool overlapping, bool modified) {
     if (d < 1 || d > 3 || alpha < -4 || alpha > 2 || alpha + 2 * d <= 1 || m < 1.0) return std::nullopt;
-    const double f = modified ? 1.0 : m;      // filter factor
-    const double s = overlapping ? m : 1.0;   // stride factor
-    const double l = m / f + m * d;           // filter length in phase samples
+    const double f = modified ? 1.0 : m;     // filter factor
+    const double s = overlapping ? m : 1.0;  // stride factor
+    const double l = m / f + m * d;          // filter length in phase samples
     if (phase_samples < l) return std::nullopt;
     const double big_m = 1.0 + std::floor(s * (phase_samples - l) / m);
     const double j = std::min(big_m, (d + 1) * s);
@@ -153,20 +153,19 @@ std::optional<double> edf_greenhall(int alpha, int d, double m, double phase_sam
 
 double edf_simple(double n, double m, int alpha) {
     switch (alpha) {
-        case 2: return (n + 1.0) * (n - 2.0 * m) / (2.0 * (n - m));
-        case 1: {
-            const double a = (n - 1.0) / (2.0 * m);
-            const double b = (2.0 * m + 1.0) * (n - 1.0) / 4.0;
-            return std::exp(std::sqrt(std::log(a) * std::log(b)));
-        }
-        case 0:
-            return (3.0 * (n - 1.0) / (2.0 * m) - 2.0 * (n - 2.0) / n) * (4.0 * m * m / (4.0 * m * m + 5.0));
-        case -1:
-            if (m == 1.0) return 2.0 * (n - 2.0) / (2.3 * n - 4.9);
-            return 5.0 * n * n / (4.0 * m * (n + 3.0 * m));
-        case -2:
-            return (n - 2.0) / (m * (n - 3.0) * (n - 3.0)) * ((n - 1.0) * (n - 1.0) - 3.0 * m * (n - 1.0) + 4.0 * m * m);
-        default: return n - 1.0;
+    case 2: return (n + 1.0) * (n - 2.0 * m) / (2.0 * (n - m));
+    case 1: {
+        const double a = (n - 1.0) / (2.0 * m);
+        const double b = (2.0 * m + 1.0) * (n - 1.0) / 4.0;
+        return std::exp(std::sqrt(std::log(a) * std::log(b)));
+    }
+    case 0: return (3.0 * (n - 1.0) / (2.0 * m) - 2.0 * (n - 2.0) / n) * (4.0 * m * m / (4.0 * m * m + 5.0));
+    case -1:
+        if (m == 1.0) return 2.0 * (n - 2.0) / (2.3 * n - 4.9);
+        return 5.0 * n * n / (4.0 * m * (n + 3.0 * m));
+    case -2:
+        return (n - 2.0) / (m * (n - 3.0) * (n - 3.0)) * ((n - 1.0) * (n - 1.0) - 3.0 * m * (n - 1.0) + 4.0 * m * m);
+    default: return n - 1.0;
     }
 }
 

@@ -16,8 +16,7 @@ inline constexpr double kOneSigmaConfidence = 0.68268949213708585;
 /// N phase samples, for power-law noise alpha (S_y ~ f^alpha, integer in [-4, 2], alpha + 2d > 1).
 /// `overlapping`: stride 1 estimator; `modified`: the modified (MVAR) filter. Returns nothing for the one case the
 /// paper leaves open (white PM, unmodified, fewer than d+1 independent terms) or invalid arguments.
-std::optional<double> edf_greenhall(int alpha, int d, double m, double phase_samples, bool overlapping,
-                                    bool modified);
+std::optional<double> edf_greenhall(int alpha, int d, double m, double phase_samples, bool overlapping, bool modified);
 
 /// Approximate EDF for overlapping Allan variance, NIST SP 1065 Table 5 (alpha in [-2, 2]); N - 1 otherwise.
 double edf_simple(double phase_samples, double m, int alpha);

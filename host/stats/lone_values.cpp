@@ -48,7 +48,8 @@ LoneValues lone_values(const std::vector<double>& x, double code) {
     if (mad_scale == 0.0) {
         for (std::size_t i = 0; i < magnitude.size(); ++i) {
             if (magnitude[i] == 0.0) continue;
-            const auto at = std::find_if(smallest.begin(), smallest.end(), [&](std::size_t j) { return magnitude[i] < magnitude[j]; });
+            const auto at = std::find_if(smallest.begin(), smallest.end(),
+                                         [&](std::size_t j) { return magnitude[i] < magnitude[j]; });
             smallest.insert(at, i);
             if (smallest.size() > 3) smallest.pop_back();
         }
@@ -76,7 +77,8 @@ LoneValues lone_values(const std::vector<double>& x, double code) {
     return out;
 }
 
-std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x, double code) {
+std::optional<std::string> lone_values_warning(const std::vector<double>& t_s, const std::vector<double>& x,
+                                               double code) {
     return lone_values_warning(t_s, x, lone_values(x, code));
 }
 

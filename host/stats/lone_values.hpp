@@ -1,7 +1,7 @@
 // Lone values: single samples far from both neighbours while the neighbours agree, the mark of a corrupt row (a bus
-// error's 0x7FFF, a mangled digit, a value from another column) or of an impulse, rather than of motion or a step. One such row in a
-// plain table had given a "converged" eq. 1 fit with C2 = 4e296 and an Allan deviation 1e298 at every tau, unremarked.
-// docs/analysis.md §1.
+// error's 0x7FFF, a mangled digit, a value from another column) or of an impulse, rather than of motion or a step. One
+// such row in a plain table had given a "converged" eq. 1 fit with C2 = 4e296 and an Allan deviation 1e298 at every
+// tau, unremarked. docs/analysis.md §1.
 #pragma once
 
 #include <cstddef>

@@ -72,7 +72,8 @@ std::optional<NoiseId> identify(std::vector<double> v, InputKind kind, int dmin,
             id.alpha_estimate = -2.0 * (rho + d) + phase_offset;
             // Within the types the variance converges for (Allan, dmax 2: -2..2; Hadamard, dmax 3: -4..2): near
             // r1 = -1/2 (white PM) rho = r1 / (1 + r1) runs off to minus infinity on a short series, and rate input
-            // differenced dmax times goes below the range; both are read as the nearest type in range, as Stable32 does.
+            // differenced dmax times goes below the range; both are read as the nearest type in range, as Stable32
+            // does.
             id.alpha = std::clamp(static_cast<int>(-std::lround(2.0 * rho)) - 2 * d + phase_offset, 2 - 2 * dmax, 2);
             return id;
         }
@@ -84,8 +85,8 @@ std::optional<NoiseId> identify(std::vector<double> v, InputKind kind, int dmin,
 
 }  // namespace
 
-std::optional<NoiseId> autocorr_noise_id(std::span<const double> samples, InputKind kind, std::int64_t m,
-                                         int dmin, int dmax) {
+std::optional<NoiseId> autocorr_noise_id(std::span<const double> samples, InputKind kind, std::int64_t m, int dmin,
+                                         int dmax) {
     if (m < 1) return std::nullopt;
     const auto mu = static_cast<std::size_t>(m);
     std::vector<double> v;

@@ -27,8 +27,8 @@ inline constexpr std::size_t kNoiseIdMinPoints = 30;
 /// quadratic; rate samples are averaged in blocks of m and lose a line. Differencing stops once rho < 0.25 and
 /// at least `dmin` and at most `dmax` differences were taken (dmax = 2 for Allan, 3 for Hadamard variances).
 /// Returns nothing when fewer than kNoiseIdMinPoints points remain or the series is constant.
-std::optional<NoiseId> autocorr_noise_id(std::span<const double> samples, InputKind kind, std::int64_t m,
-                                         int dmin, int dmax);
+std::optional<NoiseId> autocorr_noise_id(std::span<const double> samples, InputKind kind, std::int64_t m, int dmin,
+                                         int dmax);
 
 /// The same on a record's longest gap-free segment: its phase for phase input, its rate (phase differences)
 /// for rate input.

@@ -16,13 +16,13 @@ namespace {
 
 // AVAR = sum_j c_j * tau^(j-2): c = (3 Q^2, N^2, (2 ln2/pi) B^2, K^2/3, R^2/2).
 constexpr std::array<double, kNoiseTermCount> kCoefficientScale = {
-    3.0, 1.0, kBiasInstabilityFactor * kBiasInstabilityFactor, 1.0 / 3.0, 0.5};
+    3.0, 1.0, kBiasInstabilityFactor* kBiasInstabilityFactor, 1.0 / 3.0, 0.5};
 
 double basis(std::size_t j, double tau_s) { return std::pow(tau_s, static_cast<double>(j) - 2.0); }
 
 struct SubsetSolution {
-    Eigen::VectorXd c;        // AVAR coefficients over all terms (zeros outside the subset)
-    Eigen::MatrixXd cov;      // covariance of the subset's coefficients
+    Eigen::VectorXd c;    // AVAR coefficients over all terms (zeros outside the subset)
+    Eigen::MatrixXd cov;  // covariance of the subset's coefficients
     double cost = std::numeric_limits<double>::infinity();
 };
 
@@ -78,8 +78,8 @@ double noise_term_avar(const std::array<double, kNoiseTermCount>& value, double 
     return avar;
 }
 
-NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const double> adev,
-                             std::span<const double> edf, const NoiseTermOptions& options) {
+NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const double> adev, std::span<const double> edf,
+                             const NoiseTermOptions& options) {
     if (tau_s.size() != adev.size() || tau_s.size() != edf.size()) {
         throw std::invalid_argument("noise term fit: tau, adev and edf differ in length");
     }
@@ -108,7 +108,8 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
     }
     const auto rows = static_cast<Eigen::Index>(use.size());
     Eigen::VectorXd model(rows);
-    for (Eigen::Index r = 0; r < rows; ++r) model(r) = y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]];
+    for (Eigen::Index r = 0; r < rows; ++r)
+        model(r) = y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]];
 
     SubsetSolution sol;
     for (int it = 0; it <= options.reweight_iterations; ++it) {
@@ -118,7 +119,8 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
         for (Eigen::Index r = 0; r < rows; ++r) {
             const std::size_t i = use[static_cast<std::size_t>(r)];
             const double sw = std::sqrt(edf[i] / 2.0) / model(r);
-            for (std::size_t j = 0; j < kNoiseTermCount; ++j) a(r, static_cast<Eigen::Index>(j)) = sw * basis(j, tau_s[i]);
+            for (std::size_t j = 0; j < kNoiseTermCount; ++j)
+                a(r, static_cast<Eigen::Index>(j)) = sw * basis(j, tau_s[i]);
             b(r) = sw * y[i] * y[i];
         }
         SubsetSolution next = solve_nnls(a, b, mask);
@@ -126,7 +128,8 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
         sol = next;
         for (Eigen::Index r = 0; r < rows; ++r) {
             double v = 0.0;
-            for (std::size_t j = 0; j < kNoiseTermCount; ++j) v += sol.c(static_cast<Eigen::Index>(j)) * basis(j, tau_s[use[static_cast<std::size_t>(r)]]);
+            for (std::size_t j = 0; j < kNoiseTermCount; ++j)
+                v += sol.c(static_cast<Eigen::Index>(j)) * basis(j, tau_s[use[static_cast<std::size_t>(r)]]);
             // Keep the weights finite where the model vanishes (a term fitted to zero at the curve's end).
             model(r) = std::max(v, 1e-6 * y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]]);
         }
@@ -139,7 +142,8 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
         const double c = sol.c(jj);
         fit.value[j] = std::sqrt(c / kCoefficientScale[j]);
         // d value / d c = 1 / (2 sqrt(c * scale)).
-        fit.std_error[j] = c > 0.0 ? std::sqrt(std::max(sol.cov(jj, jj), 0.0)) / (2.0 * std::sqrt(c * kCoefficientScale[j])) : 0.0;
+        fit.std_error[j] =
+            c > 0.0 ? std::sqrt(std::max(sol.cov(jj, jj), 0.0)) / (2.0 * std::sqrt(c * kCoefficientScale[j])) : 0.0;
         fit.at_bound[j] = options.enabled[j] && c <= 0.0;
         fit.upper_bound[j] = std::numeric_limits<double>::quiet_NaN();
         if (!fit.at_bound[j]) continue;
@@ -169,31 +173,33 @@ namespace {
 template <class Convert>
 NamedValue term_value(std::string key, const NoiseTermFit& fit, std::size_t term, double si_per_unit, Convert convert) {
     const bool resolved = !fit.at_bound[term];
-    return {std::move(key), resolved ? convert(fit.value[term] * si_per_unit) : std::numeric_limits<double>::quiet_NaN(),
-            resolved, convert(fit.upper_bound[term] * si_per_unit)};
+    return {std::move(key),
+            resolved ? convert(fit.value[term] * si_per_unit) : std::numeric_limits<double>::quiet_NaN(), resolved,
+            convert(fit.upper_bound[term] * si_per_unit)};
 }
 
 }  // namespace
 
 std::vector<NamedValue> physical_terms(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit) {
     if (!fit.ok || quantity == RateQuantity::unknown) return {};
-    constexpr double kSqrtHourS = 60.0;     // sqrt(3600 s)
+    constexpr double kSqrtHourS = 60.0;  // sqrt(3600 s)
     constexpr double kHourS = 3600.0;
     constexpr std::size_t q = 0, n = 1, b = 2, k = 3, r = 4;
     const auto si = [](double x) { return x; };
     if (quantity == RateQuantity::angular_rate) {
         constexpr double kDegPerRad = 180.0 / std::numbers::pi;
         const auto deg = [](double x) { return x * kDegPerRad; };
-        return {term_value("Q_deg", fit, q, si_per_unit, deg),
-                term_value("N_deg_per_s_per_sqrt_hz", fit, n, si_per_unit, deg),
-                term_value("N_deg_per_sqrt_h", fit, n, si_per_unit, [](double x) { return x * kDegPerRad * kSqrtHourS; }),
-                term_value("B_deg_per_s", fit, b, si_per_unit, deg),
-                term_value("B_deg_per_h", fit, b, si_per_unit, [](double x) { return x * kDegPerRad * kHourS; }),
-                term_value("K_deg_per_s_per_sqrt_s", fit, k, si_per_unit, deg),
-                term_value("K_deg_per_h_per_sqrt_h", fit, k, si_per_unit,
-                           [](double x) { return x * kDegPerRad * kHourS * kSqrtHourS; }),
-                term_value("R_deg_per_s2", fit, r, si_per_unit, deg),
-                term_value("R_deg_per_h2", fit, r, si_per_unit, [](double x) { return x * kDegPerRad * kHourS * kHourS; })};
+        return {
+            term_value("Q_deg", fit, q, si_per_unit, deg),
+            term_value("N_deg_per_s_per_sqrt_hz", fit, n, si_per_unit, deg),
+            term_value("N_deg_per_sqrt_h", fit, n, si_per_unit, [](double x) { return x * kDegPerRad * kSqrtHourS; }),
+            term_value("B_deg_per_s", fit, b, si_per_unit, deg),
+            term_value("B_deg_per_h", fit, b, si_per_unit, [](double x) { return x * kDegPerRad * kHourS; }),
+            term_value("K_deg_per_s_per_sqrt_s", fit, k, si_per_unit, deg),
+            term_value("K_deg_per_h_per_sqrt_h", fit, k, si_per_unit,
+                       [](double x) { return x * kDegPerRad * kHourS * kSqrtHourS; }),
+            term_value("R_deg_per_s2", fit, r, si_per_unit, deg),
+            term_value("R_deg_per_h2", fit, r, si_per_unit, [](double x) { return x * kDegPerRad * kHourS * kHourS; })};
     }
     return {term_value("Q_m_per_s", fit, q, si_per_unit, si),
             term_value("N_m_per_s2_per_sqrt_hz", fit, n, si_per_unit, si),

@@ -19,7 +19,13 @@
 namespace driftlab::host::stats {
 
 /// Index of each term in NoiseTermFit arrays.
-enum class NoiseTerm : std::uint8_t { quantisation = 0, random_walk = 1, bias_instability = 2, rate_random_walk = 3, ramp = 4 };
+enum class NoiseTerm : std::uint8_t {
+    quantisation = 0,
+    random_walk = 1,
+    bias_instability = 2,
+    rate_random_walk = 3,
+    ramp = 4
+};
 inline constexpr std::size_t kNoiseTermCount = 5;
 /// Short names used in JSON: Q, N, B, K, R.
 inline constexpr std::array<const char*, kNoiseTermCount> kNoiseTermSymbols = {"Q", "N", "B", "K", "R"};
@@ -52,8 +58,8 @@ struct NoiseTermFit {
 
 /// Fits the enabled terms to AVAR = adev^2 at `tau_s` with per-point `edf`. Points with a non-finite or
 /// non-positive value are ignored. Throws std::invalid_argument when the arrays differ in length.
-NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const double> adev,
-                             std::span<const double> edf, const NoiseTermOptions& options = {});
+NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const double> adev, std::span<const double> edf,
+                             const NoiseTermOptions& options = {});
 
 /// AVAR of the model at tau for given coefficients.
 double noise_term_avar(const std::array<double, kNoiseTermCount>& value, double tau_s);
@@ -74,7 +80,8 @@ struct NamedValue {
 /// The terms in physical units. `si_per_unit` converts one data unit to rad/s (angular rate) or m/s^2
 /// (acceleration). Angular rate: Q deg, N deg/s/sqrt(Hz) and deg/sqrt(h), B deg/s and deg/h, K deg/s/sqrt(s)
 /// and deg/h/sqrt(h), R deg/s^2 and deg/h^2. Acceleration: Q m/s, N m/s^2/sqrt(Hz) and m/s/sqrt(h), B m/s^2
-/// and mg, K m/s^2/sqrt(s), R m/s^3. Empty for RateQuantity::unknown. Unresolved terms carry their bound and a NaN value.
+/// and mg, K m/s^2/sqrt(s), R m/s^3. Empty for RateQuantity::unknown. Unresolved terms carry their bound and a NaN
+/// value.
 std::vector<NamedValue> physical_terms(const NoiseTermFit& fit, RateQuantity quantity, double si_per_unit);
 
 /// Kalibr imu.yaml continuous-time densities: {gyroscope|accelerometer}_noise_density = N [rad/s/sqrt(Hz) |

@@ -19,8 +19,7 @@ bool is_gap(std::span<const double> v, std::span<const std::uint8_t> mask, std::
 
 }  // namespace
 
-PhaseRecord PhaseRecord::from_rate(std::span<const double> rate, double tau0_s,
-                                   std::span<const std::uint8_t> mask) {
+PhaseRecord PhaseRecord::from_rate(std::span<const double> rate, double tau0_s, std::span<const std::uint8_t> mask) {
     check_arguments(rate.size(), tau0_s, mask);
     PhaseRecord r;
     r.tau0_s_ = tau0_s;
@@ -53,8 +52,7 @@ PhaseRecord PhaseRecord::from_rate(std::span<const double> rate, double tau0_s,
     return r;
 }
 
-PhaseRecord PhaseRecord::from_phase(std::span<const double> phase, double tau0_s,
-                                    std::span<const std::uint8_t> mask) {
+PhaseRecord PhaseRecord::from_phase(std::span<const double> phase, double tau0_s, std::span<const std::uint8_t> mask) {
     check_arguments(phase.size(), tau0_s, mask);
     PhaseRecord r;
     r.tau0_s_ = tau0_s;
@@ -96,8 +94,7 @@ void PhaseRecord::store_scaled(const std::vector<long double>& x) {
     for (std::size_t k = 0; k < x.size(); ++k) phase_[k] = static_cast<double>(std::ldexp(x[k], -scale_exponent_));
 }
 
-void PhaseRecord::build_segments(const std::vector<std::uint8_t>& usable,
-                                 const std::vector<std::uint8_t>& linked) {
+void PhaseRecord::build_segments(const std::vector<std::uint8_t>& usable, const std::vector<std::uint8_t>& linked) {
     segments_.clear();
     const std::size_t n = usable.size();
     std::size_t k = 0;

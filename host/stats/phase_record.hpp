@@ -40,8 +40,7 @@ class PhaseRecord {
 public:
     /// Builds the record from rate samples. `mask` (optional, same length) marks samples to treat as gaps;
     /// NaN samples are gaps too. Throws std::invalid_argument when tau0_s <= 0 or a mask length differs.
-    static PhaseRecord from_rate(std::span<const double> rate, double tau0_s,
-                                 std::span<const std::uint8_t> mask = {});
+    static PhaseRecord from_rate(std::span<const double> rate, double tau0_s, std::span<const std::uint8_t> mask = {});
 
     /// Builds the record from phase samples [data unit * s]; NaN or masked samples are gaps.
     static PhaseRecord from_phase(std::span<const double> phase, double tau0_s,

@@ -44,9 +44,17 @@ struct PhaseEntry {
 };
 
 constexpr std::array<PhaseEntry, 11> kPhaseUnits{{
-    {"deg", "deg/s", "angle"}, {"mdeg", "mdps", "angle"}, {"rad", "rad/s", "angle"},
-    {"m/s", "m/s^2", "velocity"}, {"cm/s", "cm/s^2", "velocity"}, {"mm/s", "mm/s^2", "velocity"},
-    {"s", "s/s", "time"}, {"ms", "ms/s", "time"}, {"us", "us/s", "time"}, {"ns", "ns/s", "time"}, {"ps", "ps/s", "time"},
+    {"deg", "deg/s", "angle"},
+    {"mdeg", "mdps", "angle"},
+    {"rad", "rad/s", "angle"},
+    {"m/s", "m/s^2", "velocity"},
+    {"cm/s", "cm/s^2", "velocity"},
+    {"mm/s", "mm/s^2", "velocity"},
+    {"s", "s/s", "time"},
+    {"ms", "ms/s", "time"},
+    {"us", "us/s", "time"},
+    {"ns", "ns/s", "time"},
+    {"ps", "ps/s", "time"},
 }};
 
 }  // namespace
@@ -55,14 +63,15 @@ std::string phase_unit_names() {
     std::string names;
     std::string_view quantity;
     for (const PhaseEntry& e : kPhaseUnits) {
-        if (e.quantity != quantity) names += (names.empty() ? "" : "; ") + std::string(e.quantity) + ": ";
-        else names += ", ";
+        if (e.quantity != quantity)
+            names += (names.empty() ? "" : "; ") + std::string(e.quantity) + ": ";
+        else
+            names += ", ";
         names += e.spelling;
         quantity = e.quantity;
     }
     return names;
 }
-
 
 std::optional<RateUnit> rate_unit_of_phase(std::string_view name) {
     for (const PhaseEntry& e : kPhaseUnits) {
@@ -95,7 +104,8 @@ std::optional<RateUnit> UnitAssignment::for_column(const std::string& column) co
     return every;
 }
 
-UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option, InputKind kind) {
+UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option,
+                                     InputKind kind) {
     UnitAssignment out;
     for (const std::string& value : values) {
         const std::string named = option + " '" + value + "'";
@@ -109,9 +119,10 @@ UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, con
         const auto unit = phase ? rate_unit_of_phase(name) : rate_unit(name);
         if (!unit && phase)
             // A rate's unit had been the only kind --unit knew; for phase samples it is their integral's.
-            throw UsageError(named + ": " + (name.empty() ? "no unit" : "unknown unit '" + name + "'") + " for phase samples" +
-                             (rate_unit(name) ? " ('" + name + "' is a rate's: give its integral's, e.g. deg for deg/s)" : "") +
-                             "; " + phase_unit_names());
+            throw UsageError(
+                named + ": " + (name.empty() ? "no unit" : "unknown unit '" + name + "'") + " for phase samples" +
+                (rate_unit(name) ? " ('" + name + "' is a rate's: give its integral's, e.g. deg for deg/s)" : "") +
+                "; " + phase_unit_names());
         if (!unit)
             throw UsageError(named + ": " + (name.empty() ? "no unit" : "unknown unit '" + name + "'") +
                              "; angular rate: " + rate_unit_names(RateQuantity::angular_rate) +

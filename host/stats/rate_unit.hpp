@@ -1,5 +1,6 @@
 // The units a user may name for a gyro's or an accelerometer's samples, with their SI value: one table for every
-// command that reads a plain recording (allan and report --unit, gap --as ...:UNIT), so that they accept the same spellings.
+// command that reads a plain recording (allan and report --unit, gap --as ...:UNIT), so that they accept the same
+// spellings.
 #pragma once
 
 #include <optional>
@@ -14,9 +15,9 @@
 namespace driftlab::host::stats {
 
 struct RateUnit {
-    std::string name;        ///< canonical spelling, for output (m/s^2 for m/s2)
-    RateQuantity quantity;   ///< angular_rate or acceleration
-    double si_per_unit;      ///< rad/s or m/s^2 per unit
+    std::string name;       ///< canonical spelling, for output (m/s^2 for m/s2)
+    RateQuantity quantity;  ///< angular_rate or acceleration
+    double si_per_unit;     ///< rad/s or m/s^2 per unit
 };
 
 /// The unit `name` stands for (deg/s, dps, mdps, deg/h, rad/s; g, mg, m/s^2, m/s2, cm/s^2,
@@ -36,9 +37,9 @@ std::string phase_unit_names();
 
 /// What a series' samples are, for its noise terms in physical units (physical_terms, kalibr_densities).
 struct SampleUnit {
-    std::string name;                                ///< the samples' unit, for labels
-    RateQuantity quantity = RateQuantity::unknown;   ///< unknown: the unit only labels
-    double si_per_unit = 1.0;                        ///< rad/s or m/s^2 per unit
+    std::string name;                               ///< the samples' unit, for labels
+    RateQuantity quantity = RateQuantity::unknown;  ///< unknown: the unit only labels
+    double si_per_unit = 1.0;                       ///< rad/s or m/s^2 per unit
 };
 
 /// A log channel's samples: counts, at the channel's physical scale (host/util/units.hpp).
@@ -49,7 +50,7 @@ SampleUnit unit_of_name(const std::string& name);
 
 /// One `[COLUMN:]UNIT` value of a --unit option.
 struct ColumnUnit {
-    std::string column;    ///< "" for every column without its own
+    std::string column;  ///< "" for every column without its own
     RateUnit unit;
     std::string argument;  ///< the value as given, for messages
 };
@@ -64,7 +65,8 @@ struct UnitAssignment {
 /// Parses the values of `option` (e.g. "--unit"), each `UNIT` or `COLUMN:UNIT` with UNIT the samples' unit: one
 /// rate_unit() knows for rate samples, one rate_unit_of_phase() knows for phase samples (whose assignment then holds
 /// the rate's unit). Throws UsageError naming the value for an unknown unit (listing the known ones, and for phase
-/// samples given a rate's unit, the phase's), an empty column or unit, and a column (or every column) given a unit twice.
+/// samples given a rate's unit, the phase's), an empty column or unit, and a column (or every column) given a unit
+/// twice.
 UnitAssignment parse_unit_assignment(const std::vector<std::string>& values, const std::string& option,
                                      InputKind kind = InputKind::rate);
 

@@ -10,10 +10,10 @@ namespace driftlab::host::stats {
 
 /// Which averaging factors m to evaluate.
 enum class TauGrid : std::uint8_t {
-    octave,       ///< m = 1, 2, 4, 8, ...
-    log,          ///< about `points_per_decade` log-spaced m per decade (distinct integers)
-    all,          ///< every m: O(N^2) in total, for short records only
-    stable32_all, ///< Stable32's dense "all tau" list: m_{k+1} = m_k + 1 + floor(m_k / step_divisor)
+    octave,        ///< m = 1, 2, 4, 8, ...
+    log,           ///< about `points_per_decade` log-spaced m per decade (distinct integers)
+    all,           ///< every m: O(N^2) in total, for short records only
+    stable32_all,  ///< Stable32's dense "all tau" list: m_{k+1} = m_k + 1 + floor(m_k / step_divisor)
 };
 
 /// Parses "octave", "log", "all", "stable32"; throws std::invalid_argument otherwise.
@@ -21,7 +21,7 @@ TauGrid parse_tau_grid(std::string_view name);
 
 struct TauGridOptions {
     TauGrid grid = TauGrid::octave;
-    int points_per_decade = 10;     ///< for TauGrid::log
+    int points_per_decade = 10;      ///< for TauGrid::log
     std::int64_t step_divisor = 53;  ///< for TauGrid::stable32_all (Stable32 files use 42, 53 or 71)
 };
 

@@ -11,12 +11,12 @@
 namespace driftlab::host::stats {
 
 struct UniformSeries {
-    double tau0_s = 0.0;          ///< grid spacing [s]
-    double t0_s = 0.0;            ///< time of grid index 0 [s]
-    std::vector<double> values;   ///< one per grid slot; NaN where no sample fell
-    std::size_t missing = 0;      ///< slots without a sample (gaps)
-    std::size_t packed = 0;       ///< samples placed 2 or more slots after their time (rows faster than tau0)
-    std::size_t most_late = 0;    ///< the largest such displacement [slots]
+    double tau0_s = 0.0;         ///< grid spacing [s]
+    double t0_s = 0.0;           ///< time of grid index 0 [s]
+    std::vector<double> values;  ///< one per grid slot; NaN where no sample fell
+    std::size_t missing = 0;     ///< slots without a sample (gaps)
+    std::size_t packed = 0;      ///< samples placed 2 or more slots after their time (rows faster than tau0)
+    std::size_t most_late = 0;   ///< the largest such displacement [slots]
 };
 
 /// Median spacing of strictly increasing times [s]; 0 for fewer than two samples.
@@ -51,8 +51,8 @@ double grid_period_s(std::span<const double> t_s);
 
 /// Places sample k at slot max(slot_{k-1} + 1, round((t_k - t_0) / tau0)): samples that come early or in
 /// bursts take the next free slot (none is ever dropped), a sample that comes late leaves the slots it skipped
-/// empty (NaN), so a real gap is never closed up. Throws std::invalid_argument when the sizes differ, tau0 <= 0, or the grid
-/// would exceed 20x the sample count (tau0 far too small for these times).
+/// empty (NaN), so a real gap is never closed up. Throws std::invalid_argument when the sizes differ, tau0 <= 0, or the
+/// grid would exceed 20x the sample count (tau0 far too small for these times).
 UniformSeries to_uniform_grid(std::span<const double> t_s, std::span<const double> values, double tau0_s);
 
 }  // namespace driftlab::host::stats

@@ -43,10 +43,12 @@ void ensemble(const std::vector<double>& w, double sample_period_s, const Whiten
     // A sequence is a whole number of samples (two at least): at a coarse sample period its length moves. A move
     // below a tenth of a per cent (times at 1.7e9 s, 0.1 s apart, are 0.09999990463 s apart) is no adaptation, and
     // four digits show any larger one (the full digits had printed 49.99995231628418 s).
-    if (out.adaptation.empty() && std::fabs(out.sequence_length_s - options.sequence_length_s) > 1e-3 * options.sequence_length_s)
+    if (out.adaptation.empty() &&
+        std::fabs(out.sequence_length_s - options.sequence_length_s) > 1e-3 * options.sequence_length_s)
         out.adaptation = "sequences of " + significant(out.sequence_length_s, 4) + " s (" + std::to_string(len) +
-                         " samples of " + significant(sample_period_s, 4) + " s), the nearest whole number of samples to " +
-                         format_double(options.sequence_length_s) + " s";
+                         " samples of " + significant(sample_period_s, 4) +
+                         " s), the nearest whole number of samples to " + format_double(options.sequence_length_s) +
+                         " s";
     out.ensemble_rho.assign(len, 0.0);
     std::size_t used = 0;
     for (std::size_t s = 0; s < m; ++s) {
@@ -90,8 +92,7 @@ WhitenessResult test_whiteness(const std::vector<double>& residual, double sampl
     out.sample_period_s = sample_period_s;
     ensemble(w, sample_period_s, options, out);
 
-    const std::size_t h = options.ljung_box_lags ? std::min(options.ljung_box_lags, n - 1)
-                                                 : default_ljung_box_lags(n);
+    const std::size_t h = options.ljung_box_lags ? std::min(options.ljung_box_lags, n - 1) : default_ljung_box_lags(n);
     const std::vector<double> r = biased_autocovariance(w, std::max(h, n / 4));
     if (!(r[0] > 0.0)) throw UsageError("whiteness: the residual is identically zero");
     const std::vector<double> rho = normalised(r);

@@ -21,27 +21,27 @@
 namespace driftlab::host::stats {
 
 struct WhitenessOptions {
-    std::size_t sequences = 10;        ///< M (paper: 10)
-    double sequence_length_s = 50.0;   ///< L [s] (paper: 50 s)
-    std::size_t ljung_box_lags = 0;    ///< h; 0 = min(20, n/5)
-    double alpha = 0.05;               ///< test size of the verdict
+    std::size_t sequences = 10;       ///< M (paper: 10)
+    double sequence_length_s = 50.0;  ///< L [s] (paper: 50 s)
+    std::size_t ljung_box_lags = 0;   ///< h; 0 = min(20, n/5)
+    double alpha = 0.05;              ///< test size of the verdict
 };
 
 struct WhitenessResult {
-    double sample_period_s = 0.0;           ///< [s] the spacing the lags count (the caller's sample period)
+    double sample_period_s = 0.0;  ///< [s] the spacing the lags count (the caller's sample period)
     // The paper's ensemble test.
-    std::size_t sequences_used = 0;         ///< M actually used
-    std::size_t sequence_samples = 0;       ///< samples per sequence
-    double sequence_length_s = 0.0;         ///< [s] actually used
-    std::vector<double> ensemble_rho;       ///< averaged normalised autocorrelation, lags 0..sequence_samples-1
-    double bound = 0.0;                     ///< +-2 sigma bound on ensemble_rho, 2/sqrt(M L_samples)
-    double fraction_inside = 0.0;           ///< of lags 1..sequence_samples-1
-    std::string adaptation;                 ///< what was changed because the residual is short ("" = none)
+    std::size_t sequences_used = 0;    ///< M actually used
+    std::size_t sequence_samples = 0;  ///< samples per sequence
+    double sequence_length_s = 0.0;    ///< [s] actually used
+    std::vector<double> ensemble_rho;  ///< averaged normalised autocorrelation, lags 0..sequence_samples-1
+    double bound = 0.0;                ///< +-2 sigma bound on ensemble_rho, 2/sqrt(M L_samples)
+    double fraction_inside = 0.0;      ///< of lags 1..sequence_samples-1
+    std::string adaptation;            ///< what was changed because the residual is short ("" = none)
     // Whole residual.
-    std::vector<double> rho;                ///< normalised autocorrelation, lags 0..max(h, autocorrelation window)
+    std::vector<double> rho;  ///< normalised autocorrelation, lags 0..max(h, autocorrelation window)
     LjungBoxResult ljung_box;
     AutocorrelationTime autocorrelation_time;
-    bool white = true;                      ///< ljung_box.p_value >= alpha
+    bool white = true;  ///< ljung_box.p_value >= alpha
 };
 
 /// Runs the tests on `residual` sampled every `sample_period_s` seconds (> 0). Throws UsageError when the

@@ -103,6 +103,8 @@ std::string fixed_point(double value, int decimals) {
     return without_negative_zero(buf);
 }
 
-std::string counted(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
+std::string counted(std::size_t n, const std::string& noun) {
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
 
 }  // namespace driftlab::host

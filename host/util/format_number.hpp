@@ -16,8 +16,9 @@ void append_double(std::string& out, double value);
 
 /// `value` with its last digit where `uncertainty`'s second significant digit is (so that to_precision_of(u, u) is
 /// u to two digits): fixed-point for magnitudes below 1e9 down to a last digit of 1e-12, rounded to that digit left of
-/// the point too, else scientific (-0.00021, 505.08, 1052000 of 1052485 ± 23554, 3.1e+205). Six significant digits where the uncertainty is zero, infinite or NaN.
-/// A negative value that rounds to zero is written unsigned ("0.00", not "-0.00"), here and in fixed_point().
+/// the point too, else scientific (-0.00021, 505.08, 1052000 of 1052485 ± 23554, 3.1e+205). Six significant digits
+/// where the uncertainty is zero, infinite or NaN. A negative value that rounds to zero is written unsigned ("0.00",
+/// not "-0.00"), here and in fixed_point().
 std::string to_precision_of(double value, double uncertainty);
 
 /// "value ± error" for people: the value to_precision_of() its error, the error to two significant digits

@@ -41,7 +41,8 @@ void check_output_file(const std::string& path, const std::string& what) {
     const bool ok = static_cast<bool>(std::ofstream(path, std::ios::app));
     const int error = errno;
     if (!existed) std::filesystem::remove(path, ec);
-    if (!ok) throw DeviceError(path, "cannot write the " + what + ": " + (error ? std::strerror(error) : "unknown reason"));
+    if (!ok)
+        throw DeviceError(path, "cannot write the " + what + ": " + (error ? std::strerror(error) : "unknown reason"));
 }
 
 void refuse_writing_over_input(const std::string& output, const std::string& option, const std::string& input,
@@ -69,7 +70,8 @@ void refuse_two_outputs_in_one_file(const std::string& path, const std::string& 
 void refuse_file_on_output_folder(const std::string& path, const std::string& option, const std::string& folder,
                                   const std::string& folder_option) {
     if (same_output(path, folder))
-        throw UsageError(option + ": '" + path + "' is the folder " + folder_option + " writes into; name a file, such as '" +
+        throw UsageError(option + ": '" + path + "' is the folder " + folder_option +
+                         " writes into; name a file, such as '" +
                          (std::filesystem::path(folder) / "model.toml").string() + "'");
 }
 

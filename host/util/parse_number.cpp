@@ -39,11 +39,11 @@ std::optional<std::uint64_t> parse_unsigned(std::string_view field) {
 
 const char* number_error_text(NumberError e) {
     switch (e) {
-        case NumberError::ok: return "ok";
-        case NumberError::empty: return "empty field";
-        case NumberError::not_a_number: return "not a number";
-        case NumberError::not_finite: return "not finite (NaN or infinity)";
-        case NumberError::out_of_range: return "out of the range of a double";
+    case NumberError::ok: return "ok";
+    case NumberError::empty: return "empty field";
+    case NumberError::not_a_number: return "not a number";
+    case NumberError::not_finite: return "not finite (NaN or infinity)";
+    case NumberError::out_of_range: return "out of the range of a double";
     }
     return "invalid";
 }

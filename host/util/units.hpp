@@ -30,7 +30,9 @@ constexpr PhysicalUnit physical_unit(Channel c) {
 }
 
 /// A difference of counts (e.g. C1, a standard error) in the physical unit.
-constexpr double counts_to_physical(Channel c, double delta_counts) { return delta_counts * physical_unit(c).per_count; }
+constexpr double counts_to_physical(Channel c, double delta_counts) {
+    return delta_counts * physical_unit(c).per_count;
+}
 
 /// A level in counts (e.g. C2) as its offset from the ideal at-rest code 512, in the physical unit. The paper
 /// prints the magnitude (C2 = 505 -> 1.223 deg/s); this keeps the sign (-1.23 deg/s: below mid-scale).

@@ -32,7 +32,7 @@ constexpr std::uint16_t kAdcsraAddress = 0x7A;  // ADCSRA in data space
 constexpr std::uint8_t kAdcsraAdate = 0x20;
 constexpr std::uint16_t kTccr1bAddress = 0x81;  // TCCR1B in data space; CS12..CS10 = clock select
 constexpr std::uint8_t kTccr1bClockSelect = 0x07;
-constexpr std::uint8_t kStackPaint = 0xA5;       // untouched-RAM pattern for the stack high-water mark
+constexpr std::uint8_t kStackPaint = 0xA5;  // untouched-RAM pattern for the stack high-water mark
 
 AvrBoard* board_of(avr_t* avr) { return static_cast<AvrBoard*>(avr->custom.data); }
 
@@ -57,8 +57,8 @@ std::uint64_t uart_cycles_per_byte(const avr_t* avr) {
     }
     const std::uint32_t ucsz = (avr->data[kUcsr0c] & kUcsz0) >> 1 | ((avr->data[kUcsr0b] & kUcsz02) ? 4U : 0U);
     const std::uint32_t data_bits = ucsz <= 3 ? 5 + ucsz : (ucsz == 7 ? 9 : 8);
-    const std::uint32_t bits = 1 + data_bits + ((avr->data[kUcsr0c] & kUpm0) ? 1 : 0) +
-                               ((avr->data[kUcsr0c] & kUsbs0) ? 2 : 1);
+    const std::uint32_t bits =
+        1 + data_bits + ((avr->data[kUcsr0c] & kUpm0) ? 1 : 0) + ((avr->data[kUcsr0c] & kUsbs0) ? 2 : 1);
     const std::uint32_t cycles_per_bit = ((avr->data[kUcsr0a] & kU2x0) ? 8U : 16U) * (ubrr + 1);
     return std::uint64_t{bits} * cycles_per_bit;
 }
@@ -167,9 +167,9 @@ void AvrBoard::run_until_cycle(std::uint64_t cycle) {
         const int state = profiler_ ? profiler_->step() : avr_run(avr_);
         if (state == cpu_Done || state == cpu_Crashed) {
             avr_cycle_timer_cancel(avr_, &AvrBoard::on_run_limit, this);
-            throw AvrError(elf_path_ + ": firmware " + (state == cpu_Done ? "stopped (sleep with interrupts off)"
-                                                                          : "crashed") +
-                           " at cycle " + std::to_string(avr_->cycle) + ", pc 0x" + [&] {
+            throw AvrError(elf_path_ + ": firmware " +
+                           (state == cpu_Done ? "stopped (sleep with interrupts off)" : "crashed") + " at cycle " +
+                           std::to_string(avr_->cycle) + ", pc 0x" + [&] {
                                char hex[16];
                                std::snprintf(hex, sizeof hex, "%04x", static_cast<unsigned>(avr_->pc));
                                return std::string(hex);
@@ -256,8 +256,7 @@ void AvrBoard::schedule_rx_pump(std::uint64_t at_cycle) {
         return;
     }
     rx_pump_scheduled_ = true;
-    avr_cycle_timer_register(avr_, at_cycle > avr_->cycle ? at_cycle - avr_->cycle : 1, &AvrBoard::on_rx_pump,
-                             this);
+    avr_cycle_timer_register(avr_, at_cycle > avr_->cycle ? at_cycle - avr_->cycle : 1, &AvrBoard::on_rx_pump, this);
 }
 
 void AvrBoard::on_timer1_compb_pending(avr_irq_t*, std::uint32_t value, void* param) {

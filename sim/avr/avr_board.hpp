@@ -48,9 +48,9 @@ class CycleProfiler;
 using VoltageSource = std::function<std::uint32_t(Channel channel, std::uint64_t trigger_tick)>;
 
 struct AvrBoardOptions {
-    std::string elf_path;    ///< driftlab_fw.elf (ATmega328P build)
-    int gdb_port = 0;        ///< > 0: start simavr's gdb stub on this TCP port, the CPU stopped until gdb continues
-    bool profile = false;    ///< count cycles per function and ISR (slower; see CycleProfiler)
+    std::string elf_path;  ///< driftlab_fw.elf (ATmega328P build)
+    int gdb_port = 0;      ///< > 0: start simavr's gdb stub on this TCP port, the CPU stopped until gdb continues
+    bool profile = false;  ///< count cycles per function and ISR (slower; see CycleProfiler)
 };
 
 /// One byte the firmware wrote to UDR0, at the emulated cycle it did.

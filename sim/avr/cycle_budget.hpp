@@ -15,19 +15,19 @@
 namespace driftlab::sim::avr {
 
 struct CycleBudget {
-    proto::ConfigPayload config{};            ///< as sent (stream mode)
-    bool accepted = false;                    ///< the firmware ACKed the CONFIG_SET
+    proto::ConfigPayload config{};  ///< as sent (stream mode)
+    bool accepted = false;          ///< the firmware ACKed the CONFIG_SET
     std::uint32_t conversion_period_ticks = 0;
-    double conversions_per_s = 0.0;           ///< all four channels together [1/s]
-    double measured_s = 0.0;                  ///< emulated time measured, after a settling time [s]
-    std::uint64_t conversions = 0;            ///< timer-triggered conversions in the measured time
-    double cpu_load = 0.0;                    ///< fraction of cycles awake in the measured time
-    std::uint16_t dropped = 0;                ///< conversions lost since boot (STATUS at the end)
-    std::uint16_t tx_overflow = 0;            ///< frame bytes that did not fit the TX ring (STATUS)
-    std::uint16_t rx_overflow = 0;            ///< received bytes lost (STATUS)
-    std::uint32_t stack_high_water_bytes = 0; ///< deepest stack use since power-on
-    std::uint32_t stack_budget_bytes = 0;     ///< RAM between the end of .noinit and RAMEND
-    std::vector<FunctionCycles> functions;    ///< per-call cycles in the measured time (empty unless profiled)
+    double conversions_per_s = 0.0;            ///< all four channels together [1/s]
+    double measured_s = 0.0;                   ///< emulated time measured, after a settling time [s]
+    std::uint64_t conversions = 0;             ///< timer-triggered conversions in the measured time
+    double cpu_load = 0.0;                     ///< fraction of cycles awake in the measured time
+    std::uint16_t dropped = 0;                 ///< conversions lost since boot (STATUS at the end)
+    std::uint16_t tx_overflow = 0;             ///< frame bytes that did not fit the TX ring (STATUS)
+    std::uint16_t rx_overflow = 0;             ///< received bytes lost (STATUS)
+    std::uint32_t stack_high_water_bytes = 0;  ///< deepest stack use since power-on
+    std::uint32_t stack_budget_bytes = 0;      ///< RAM between the end of .noinit and RAMEND
+    std::vector<FunctionCycles> functions;     ///< per-call cycles in the measured time (empty unless profiled)
 };
 
 /// Boots `elf_path`, streams with `config` (its mode forced to stream) for `settle_s` + `measure_s` of emulated

@@ -23,10 +23,10 @@ class ElfSymbols;
 
 /// Per-call cycle statistics of one watched symbol.
 struct FunctionCycles {
-    std::string label;           ///< stable key (adc_isr, ls_push, ...), used in JSON and docs
-    std::string symbol;          ///< ELF symbol (mangled)
-    std::uint32_t entry_address; ///< byte address in flash
-    bool isr;                    ///< an interrupt vector (its cycles are excluded from enclosing frames)
+    std::string label;            ///< stable key (adc_isr, ls_push, ...), used in JSON and docs
+    std::string symbol;           ///< ELF symbol (mangled)
+    std::uint32_t entry_address;  ///< byte address in flash
+    bool isr;                     ///< an interrupt vector (its cycles are excluded from enclosing frames)
     std::uint64_t calls = 0;
     std::uint64_t total_cycles = 0;
     std::uint64_t max_cycles = 0;

@@ -23,11 +23,11 @@
 namespace driftlab::sim {
 
 struct AdcDnlParams {
-    double dnl_rms_lsb = 0.0;                  ///< rms of the random DNL before rescaling [LSB]
-    std::vector<std::int64_t> missing_codes;   ///< codes of width 0, in 1..1022 [counts]
-    std::uint64_t carry_bits = 0;              ///< codes that are multiples of 2^carry_bits get carry_dnl, 0 = none
-    double carry_dnl_lsb = 0.0;                ///< extra DNL at those codes [LSB]
-    std::uint64_t pattern_seed = 1;            ///< seed of the device's DNL pattern (independent of the run seed)
+    double dnl_rms_lsb = 0.0;                    ///< rms of the random DNL before rescaling [LSB]
+    std::vector<std::int64_t> missing_codes;     ///< codes of width 0, in 1..1022 [counts]
+    std::uint64_t carry_bits = 0;                ///< codes that are multiples of 2^carry_bits get carry_dnl, 0 = none
+    double carry_dnl_lsb = 0.0;                  ///< extra DNL at those codes [LSB]
+    std::uint64_t pattern_seed = 1;              ///< seed of the device's DNL pattern (independent of the run seed)
     std::vector<std::int64_t> transition_codes;  ///< codes j whose lower transition is given (a measured table)
     std::vector<double> transition_counts;       ///< T_j of those codes [counts], overriding the pattern there
 
@@ -50,7 +50,8 @@ struct AdcDnlParams {
             const double ideal = static_cast<double>(transition_codes[k]) - 0.5;
             if (!(std::abs(transition_counts[k] - ideal) < 1.0))
                 r.fail("transition_counts", "expected each transition within 1 LSB of its ideal place (code - 1/2)");
-            if (k > 0 && (transition_codes[k] <= transition_codes[k - 1] || transition_counts[k] <= transition_counts[k - 1]))
+            if (k > 0 &&
+                (transition_codes[k] <= transition_codes[k - 1] || transition_counts[k] <= transition_counts[k - 1]))
                 r.fail("transition_codes", "expected increasing codes with increasing transitions");
         }
     }

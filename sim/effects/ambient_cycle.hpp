@@ -19,12 +19,12 @@
 namespace driftlab::sim {
 
 struct AmbientCycleParams {
-    std::string waveform = "square";       ///< "sine" or "square" (thermostat)
-    double amplitude_k_pp = 0.0;           ///< ambient swing, peak to peak [K]
-    double period_s = 1200.0;              ///< cycle period P [s]
-    double phase_rad = 0.0;                ///< phase of the ambient wave at t = 0 [rad]
-    double lag_s = 600.0;                  ///< first-order thermal lag of the unit, 0 = none [s]
-    double coupling_dps_per_k = 0.0;       ///< gyro bias per kelvin of lagged temperature [deg/s/K]
+    std::string waveform = "square";           ///< "sine" or "square" (thermostat)
+    double amplitude_k_pp = 0.0;               ///< ambient swing, peak to peak [K]
+    double period_s = 1200.0;                  ///< cycle period P [s]
+    double phase_rad = 0.0;                    ///< phase of the ambient wave at t = 0 [rad]
+    double lag_s = 600.0;                      ///< first-order thermal lag of the unit, 0 = none [s]
+    double coupling_dps_per_k = 0.0;           ///< gyro bias per kelvin of lagged temperature [deg/s/K]
     std::array<double, 3> coupling_g_per_k{};  ///< accel x, y, z bias per kelvin [g/K]
 
     template <class V>

@@ -5,10 +5,10 @@ namespace driftlab::sim {
 
 const char* stage_name(Stage stage) {
     switch (stage) {
-        case Stage::physical: return "physical";
-        case Stage::analog: return "analog";
-        case Stage::converter: return "converter";
-        case Stage::timing: return "timing";
+    case Stage::physical: return "physical";
+    case Stage::analog: return "analog";
+    case Stage::converter: return "converter";
+    case Stage::timing: return "timing";
     }
     return "?";
 }

@@ -5,8 +5,9 @@
 //   true input [deg/s, g] -> physical effects -> transducer -> analog effects [V] -> ADC input in counts
 //   -> converter effects [counts] -> round + clip 0..1023 -> code;   timing effects move the conversion instants.
 // Build effects with `make_effect(name, toml_table, key_path)`, call `reset(seed)` once per run, then for every
-// instant call `apply_in_chain(effect, values, ctx)` (or `apply`) with all four channels in the stage's unit. Converter effects receive the CONTINUOUS ADC input v/LSB (not yet rounded); a converter effect that
-// quantises (adc_dnl) returns integral codes, which the chain's final round-and-clip leaves unchanged.
+// instant call `apply_in_chain(effect, values, ctx)` (or `apply`) with all four channels in the stage's unit. Converter
+// effects receive the CONTINUOUS ADC input v/LSB (not yet rounded); a converter effect that quantises (adc_dnl) returns
+// integral codes, which the chain's final round-and-clip leaves unchanged.
 //
 // Per-sample vs per-conversion. An instant is either a sample of all four channels (ctx.channel empty: every
 // entry of `values` is updated) or one conversion of the round-robin ADC (ctx.channel = c: only values[c] is read
@@ -64,16 +65,16 @@ inline constexpr double kNotModelled = std::numeric_limits<double>::quiet_NaN();
 
 /// What the chain knows about the instant being processed.
 struct EffectContext {
-    double t_s = 0.0;                      ///< actual instant since power-on [s] (after timing effects)
-    double dt_s = 0.0;                     ///< since the previous instant of this channel/sample [s]; 0 at first
+    double t_s = 0.0;   ///< actual instant since power-on [s] (after timing effects)
+    double dt_s = 0.0;  ///< since the previous instant of this channel/sample [s]; 0 at first
     /// At a channel's first instant, the time since the sensor's power-on that nobody converted [s]; 0 otherwise
     /// and when the caller does not know it. A process that runs from power-on (rate_random_walk) steps across
     /// it; the others start at the first instant (a spike would get a spurious chance there).
     double since_power_on_s = 0.0;
-    std::optional<Channel> channel;        ///< set: one conversion of this channel; empty: all four channels
+    std::optional<Channel> channel;          ///< set: one conversion of this channel; empty: all four channels
     double temperature_degc = kNotModelled;  ///< ambient/internal temperature if the chain models it [degC]
-    double supply_v = kNotModelled;        ///< supply voltage if the chain models it [V]
-    ChannelValues true_physical{};         ///< true inputs: gyro [deg/s], accel_x..z [g] (for cross-couplings)
+    double supply_v = kNotModelled;          ///< supply voltage if the chain models it [V]
+    ChannelValues true_physical{};           ///< true inputs: gyro [deg/s], accel_x..z [g] (for cross-couplings)
 };
 
 /// Bad model-file content: names the TOML key path (and line when known) and what was expected, with its unit.

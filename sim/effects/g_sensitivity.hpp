@@ -12,8 +12,8 @@
 namespace driftlab::sim {
 
 struct GSensitivityParams {
-    std::array<double, 3> g_dps_per_g{};     ///< G_x, G_y, G_z [deg/s/g]
-    std::array<double, 3> g2_dps_per_g2{};   ///< G2_x, G2_y, G2_z (rectification) [deg/s/g^2]
+    std::array<double, 3> g_dps_per_g{};    ///< G_x, G_y, G_z [deg/s/g]
+    std::array<double, 3> g2_dps_per_g2{};  ///< G2_x, G2_y, G2_z (rectification) [deg/s/g^2]
 
     template <class V>
     void visit(V& v) {

@@ -17,8 +17,8 @@
 namespace driftlab::sim {
 
 struct GaussMarkovParams {
-    double sigma_dps = 0.0;               ///< gyro stationary std [deg/s]
-    std::array<double, 3> sigma_g{};      ///< accel x, y, z stationary std [g]
+    double sigma_dps = 0.0;                           ///< gyro stationary std [deg/s]
+    std::array<double, 3> sigma_g{};                  ///< accel x, y, z stationary std [g]
     ChannelValues tau_s{100.0, 100.0, 100.0, 100.0};  ///< correlation time per channel [s]
 
     template <class V>

@@ -15,11 +15,11 @@
 namespace driftlab::sim {
 
 struct MainsAliasParams {
-    ChannelValues amplitude_v{};          ///< fundamental amplitude per channel at the ADC pin [V]
-    double frequency_hz = 50.0;           ///< mains frequency [Hz]
-    double phase_rad = 0.0;               ///< fundamental phase at t = 0 [rad]
-    std::vector<double> harmonic_ratio;   ///< amplitude of harmonics 2, 3, ... relative to the fundamental [-]
-    ChannelValues mux_skew_s{};           ///< extra sampling delay per channel [s]
+    ChannelValues amplitude_v{};         ///< fundamental amplitude per channel at the ADC pin [V]
+    double frequency_hz = 50.0;          ///< mains frequency [Hz]
+    double phase_rad = 0.0;              ///< fundamental phase at t = 0 [rad]
+    std::vector<double> harmonic_ratio;  ///< amplitude of harmonics 2, 3, ... relative to the fundamental [-]
+    ChannelValues mux_skew_s{};          ///< extra sampling delay per channel [s]
 
     template <class V>
     void visit(V& v) {

@@ -11,11 +11,11 @@ namespace {
 
 std::string check_text(Check check) {
     switch (check) {
-        case Check::nonneg: return " >= 0";
-        case Check::positive: return " > 0";
-        case Check::unit_interval: return " in [0, 1]";
-        case Check::limit: return " (inf allowed)";
-        case Check::any: break;
+    case Check::nonneg: return " >= 0";
+    case Check::positive: return " > 0";
+    case Check::unit_interval: return " in [0, 1]";
+    case Check::limit: return " (inf allowed)";
+    case Check::any: break;
     }
     return "";
 }
@@ -25,11 +25,11 @@ bool passes(double v, Check check) {
     if (check == Check::limit) return true;
     if (!std::isfinite(v)) return false;
     switch (check) {
-        case Check::nonneg: return v >= 0.0;
-        case Check::positive: return v > 0.0;
-        case Check::unit_interval: return v >= 0.0 && v <= 1.0;
-        case Check::limit:
-        case Check::any: break;
+    case Check::nonneg: return v >= 0.0;
+    case Check::positive: return v > 0.0;
+    case Check::unit_interval: return v >= 0.0 && v <= 1.0;
+    case Check::limit:
+    case Check::any: break;
     }
     return true;
 }
@@ -76,17 +76,16 @@ double TomlReader::number(const toml::node& node, std::string_view key, std::str
         os << expected << ", got " << *v;
         throw ConfigError(full_key(key), line_of(node), os.str());
     }
-    if (const std::string why = beyond_model_magnitude(*v); !why.empty()) throw ConfigError(full_key(key), line_of(node), why);
+    if (const std::string why = beyond_model_magnitude(*v); !why.empty())
+        throw ConfigError(full_key(key), line_of(node), why);
     return *v;
 }
 
-void TomlReader::field(std::string_view key, double& value, std::string_view unit, std::string_view,
-                       Check check) {
+void TomlReader::field(std::string_view key, double& value, std::string_view unit, std::string_view, Check check) {
     if (const toml::node* node = find(key, unit)) value = number(*node, key, unit, check);
 }
 
-void TomlReader::read_fixed(std::string_view key, double* out, std::size_t n, std::string_view unit,
-                            Check check) {
+void TomlReader::read_fixed(std::string_view key, double* out, std::size_t n, std::string_view unit, Check check) {
     const toml::node* node = find(key, unit);
     if (node == nullptr) return;
     if (const toml::array* a = node->as_array()) {
@@ -128,8 +127,8 @@ void TomlReader::field(std::string_view key, std::vector<double>& value, std::st
     for (const toml::node& e : *a) value.push_back(number(e, key, unit, check));
 }
 
-void TomlReader::field(std::string_view key, std::vector<std::int64_t>& value, std::string_view unit,
-                       std::string_view, std::int64_t min_value, std::int64_t max_value) {
+void TomlReader::field(std::string_view key, std::vector<std::int64_t>& value, std::string_view unit, std::string_view,
+                       std::int64_t min_value, std::int64_t max_value) {
     const toml::node* node = find(key, unit);
     if (node == nullptr) return;
     const std::string expected = "expected an array of integers [" + std::string(unit) + "] in [" +

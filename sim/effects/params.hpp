@@ -116,8 +116,7 @@ std::string toml_value_text(const toml::node& n);
 class ParamDescriber {
 public:
     template <class T>
-    void field(std::string_view key, const T& value, std::string_view unit, std::string_view doc,
-               Check = Check::any) {
+    void field(std::string_view key, const T& value, std::string_view unit, std::string_view doc, Check = Check::any) {
         add(key, unit, text_of(TomlWriter::to_node(value)), doc);
     }
     void field(std::string_view key, const std::vector<std::int64_t>& value, std::string_view unit,

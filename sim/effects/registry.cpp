@@ -2,17 +2,17 @@
 #include <algorithm>
 #include <functional>
 
-#include "sim/effects/effect.hpp"
-#include "sim/effects/params.hpp"
 #include "sim/effects/adc_dnl.hpp"
 #include "sim/effects/adc_inl.hpp"
 #include "sim/effects/ambient_cycle.hpp"
 #include "sim/effects/clock_jitter.hpp"
 #include "sim/effects/cross_axis.hpp"
+#include "sim/effects/effect.hpp"
 #include "sim/effects/flicker.hpp"
 #include "sim/effects/g_sensitivity.hpp"
 #include "sim/effects/gauss_markov.hpp"
 #include "sim/effects/mains_alias.hpp"
+#include "sim/effects/params.hpp"
 #include "sim/effects/rate_random_walk.hpp"
 #include "sim/effects/saturation.hpp"
 #include "sim/effects/spikes.hpp"
@@ -45,22 +45,10 @@ const std::vector<Entry>& entries() {
         // additive biases, couplings on the true input, clipping last; INL shifts transitions before DNL quantises;
         // bit-flip spikes act on the quantised code.
         return std::vector<Entry>{
-            entry<Vibration>(),
-            entry<ThermalSecondTc>(),
-            entry<AmbientCycle>(),
-            entry<Flicker>(),
-            entry<RateRandomWalk>(),
-            entry<GaussMarkov>(),
-            entry<TempScaleFactor>(),
-            entry<CrossAxis>(),
-            entry<GSensitivity>(),
-            entry<Saturation>(),
-            entry<SupplyCoupling>(),
-            entry<MainsAlias>(),
-            entry<AdcInl>(),
-            entry<AdcDnl>(),
-            entry<Spikes>(),
-            entry<ClockJitter>(),
+            entry<Vibration>(),      entry<ThermalSecondTc>(), entry<AmbientCycle>(),    entry<Flicker>(),
+            entry<RateRandomWalk>(), entry<GaussMarkov>(),     entry<TempScaleFactor>(), entry<CrossAxis>(),
+            entry<GSensitivity>(),   entry<Saturation>(),      entry<SupplyCoupling>(),  entry<MainsAlias>(),
+            entry<AdcInl>(),         entry<AdcDnl>(),          entry<Spikes>(),          entry<ClockJitter>(),
         };
     }();
     return table;

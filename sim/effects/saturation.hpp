@@ -16,9 +16,9 @@ namespace driftlab::sim {
 
 struct SaturationParams {
     static constexpr double kInf = std::numeric_limits<double>::infinity();
-    std::string stage = "physical";                ///< "physical" (sensor range) or "analog" (amplifier rails)
-    double min_dps = -kInf;                        ///< gyro lower range [deg/s]
-    double max_dps = kInf;                         ///< gyro upper range [deg/s]
+    std::string stage = "physical";                    ///< "physical" (sensor range) or "analog" (amplifier rails)
+    double min_dps = -kInf;                            ///< gyro lower range [deg/s]
+    double max_dps = kInf;                             ///< gyro upper range [deg/s]
     std::array<double, 3> min_g{-kInf, -kInf, -kInf};  ///< accel x, y, z lower range [g]
     std::array<double, 3> max_g{kInf, kInf, kInf};     ///< accel x, y, z upper range [g]
     ChannelValues min_v{-kInf, -kInf, -kInf, -kInf};   ///< lower amplifier rail per channel [V]

@@ -19,12 +19,12 @@
 namespace driftlab::sim {
 
 struct SpikesParams {
-    std::string stage = "converter";     ///< "analog" [V] or "converter" [counts]
-    ChannelValues rate_hz{};             ///< spike rate lambda per channel [1/s]
+    std::string stage = "converter";        ///< "analog" [V] or "converter" [counts]
+    ChannelValues rate_hz{};                ///< spike rate lambda per channel [1/s]
     std::string distribution = "gaussian";  ///< "gaussian", "student_t" or "bit_flip"
-    ChannelValues scale_v{};             ///< amplitude scale s per channel, stage analog [V]
-    ChannelValues scale_counts{};        ///< amplitude scale s per channel, stage converter [counts]
-    std::uint64_t student_dof = 3;       ///< degrees of freedom nu of student_t [-]
+    ChannelValues scale_v{};                ///< amplitude scale s per channel, stage analog [V]
+    ChannelValues scale_counts{};           ///< amplitude scale s per channel, stage converter [counts]
+    std::uint64_t student_dof = 3;          ///< degrees of freedom nu of student_t [-]
 
     template <class V>
     void visit(V& v) {
@@ -32,8 +32,7 @@ struct SpikesParams {
         v.field("rate_hz", rate_hz, "1/s", "spike rate per channel (scalar or 4 values)", Check::nonneg);
         v.choice("distribution", distribution, {"gaussian", "student_t", "bit_flip"}, "amplitude distribution");
         v.field("scale_v", scale_v, "V", "amplitude scale per channel (stage analog)", Check::nonneg);
-        v.field("scale_counts", scale_counts, "counts", "amplitude scale per channel (stage converter)",
-                Check::nonneg);
+        v.field("scale_counts", scale_counts, "counts", "amplitude scale per channel (stage converter)", Check::nonneg);
         v.field("student_dof", student_dof, "-", "degrees of freedom of student_t (1..100)");
     }
     void validate(const TomlReader& r) const;

@@ -15,15 +15,15 @@
 namespace driftlab::sim {
 
 struct SupplyCouplingParams {
-    double nominal_supply_v = 5.0;                      ///< V_nom [V]
+    double nominal_supply_v = 5.0;                         ///< V_nom [V]
     ChannelValues sensor_ratiometric{1.0, 1.0, 1.0, 1.0};  ///< r_c, 1 = output scales with supply [-]
-    double adc_ratiometric = 1.0;                       ///< r_adc, 1 = ADC reference is the supply [-]
-    ChannelValues pickup_v_per_v{};                     ///< p_c, direct additive coupling [V/V]
-    double drift_v = 0.0;                               ///< regulator warm-up drift D [V]
-    double drift_tau_s = 600.0;                         ///< regulator warm-up time constant [s]
-    double ripple_v = 0.0;                              ///< ripple amplitude A_r [V]
-    double ripple_hz = 100.0;                           ///< ripple frequency f_r [Hz]
-    double ripple_phase_rad = 0.0;                      ///< ripple phase at t = 0 [rad]
+    double adc_ratiometric = 1.0;                          ///< r_adc, 1 = ADC reference is the supply [-]
+    ChannelValues pickup_v_per_v{};                        ///< p_c, direct additive coupling [V/V]
+    double drift_v = 0.0;                                  ///< regulator warm-up drift D [V]
+    double drift_tau_s = 600.0;                            ///< regulator warm-up time constant [s]
+    double ripple_v = 0.0;                                 ///< ripple amplitude A_r [V]
+    double ripple_hz = 100.0;                              ///< ripple frequency f_r [Hz]
+    double ripple_phase_rad = 0.0;                         ///< ripple phase at t = 0 [rad]
 
     template <class V>
     void visit(V& v) {

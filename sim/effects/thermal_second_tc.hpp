@@ -13,8 +13,8 @@
 namespace driftlab::sim {
 
 struct ThermalSecondTcParams {
-    double c3_dps = 0.0;             ///< gyro amplitude C3 [deg/s]
-    std::array<double, 3> c3_g{};    ///< accel x, y, z amplitude C3 [g]
+    double c3_dps = 0.0;                                 ///< gyro amplitude C3 [deg/s]
+    std::array<double, 3> c3_g{};                        ///< accel x, y, z amplitude C3 [g]
     ChannelValues t2_s{1800.0, 1800.0, 1800.0, 1800.0};  ///< second time constant T2 per channel [s]
 
     template <class V>

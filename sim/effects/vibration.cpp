@@ -6,9 +6,11 @@
 namespace driftlab::sim {
 
 void VibrationParams::validate(const TomlReader& r) const {
-    const std::pair<const char*, const std::vector<double>*> per_tone[] = {
-        {"tone_dps", &tone_dps}, {"tone_g_x", &tone_g_x}, {"tone_g_y", &tone_g_y}, {"tone_g_z", &tone_g_z},
-        {"tone_phase_rad", &tone_phase_rad}};
+    const std::pair<const char*, const std::vector<double>*> per_tone[] = {{"tone_dps", &tone_dps},
+                                                                           {"tone_g_x", &tone_g_x},
+                                                                           {"tone_g_y", &tone_g_y},
+                                                                           {"tone_g_z", &tone_g_z},
+                                                                           {"tone_phase_rad", &tone_phase_rad}};
     for (const auto& [key, v] : per_tone) {
         if (!v->empty() && v->size() != tone_hz.size()) {
             r.fail(key, "expected " + std::to_string(tone_hz.size()) + " values (one per tone_hz), got " +

@@ -28,7 +28,7 @@ public:
 
 /// Bytes the firmware wrote to its UART at one instant (a frame or a few).
 struct TxChunk {
-    double t_s;                       ///< when the firmware wrote them [s since power-on]
+    double t_s;  ///< when the firmware wrote them [s since power-on]
     std::vector<std::uint8_t> bytes;
 };
 

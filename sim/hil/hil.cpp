@@ -68,8 +68,8 @@ double earliest(std::initializer_list<std::optional<double>> times) {
 // time before most of them arrive (a short log with nothing lost).
 std::optional<std::string> link_capacity_refusal(const SimModel& model) {
     const proto::ConfigPayload& fw = model.firmware;
-    const std::size_t bytes = proto::frame_size(proto::kSamplePayloadSize) +
-                              (fw.raw ? proto::frame_size(proto::kRawPayloadSize) : 0);
+    const std::size_t bytes =
+        proto::frame_size(proto::kSamplePayloadSize) + (fw.raw ? proto::frame_size(proto::kRawPayloadSize) : 0);
     const double needed_baud = 10.0 * static_cast<double>(bytes) / (fw.output_period_ms / 1000.0);
     if (needed_baud <= model.link.baud) return std::nullopt;
     char text[320];
@@ -111,8 +111,7 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
         if (t == std::numeric_limits<double>::infinity())
             throw BoardError("the run stalled: nothing left to happen in virtual time");
         if (t > give_up_s)
-            throw BoardError("the session did not finish within " +
-                                                          std::to_string(give_up_s) + " s of virtual time");
+            throw BoardError("the session did not finish within " + std::to_string(give_up_s) + " s of virtual time");
 
         // Same-instant order: conversions due, then bytes reaching the firmware, then bytes reaching the host,
         // then whatever the host decides at that instant.

@@ -25,11 +25,11 @@ namespace driftlab::sim {
 enum class TargetKind : std::uint8_t { native };
 
 struct HilOptions {
-    SimModel model;                 ///< sensor, effects, firmware CONFIG, link
-    double duration_s = 4000.0;     ///< recording time after the handshake [s] (output count = duration/period)
-    std::uint64_t seed = 1;         ///< every random component derives its substream from it
-    double warm_up_s = 0.0;         ///< the sensor was powered this long before the board booted [s] (eq. 1 time)
-    double reply_timeout_s = 0.5;   ///< host's resend timeout for requests [s]
+    SimModel model;                ///< sensor, effects, firmware CONFIG, link
+    double duration_s = 4000.0;    ///< recording time after the handshake [s] (output count = duration/period)
+    std::uint64_t seed = 1;        ///< every random component derives its substream from it
+    double warm_up_s = 0.0;        ///< the sensor was powered this long before the board booted [s] (eq. 1 time)
+    double reply_timeout_s = 0.5;  ///< host's resend timeout for requests [s]
     TargetKind target = TargetKind::native;
     /// When set, builds the board instead of `target`: how the AVR board (sim/avr, a library that depends on this
     /// one) plugs in for `driftlab hil --target avr`.
@@ -48,15 +48,15 @@ struct HilOptions {
 
 /// Everything a run counted; the JSON summary of `driftlab hil` is made of these.
 struct HilSummary {
-    HostCounters host;                ///< frames received, lost (seq gaps), polls, rows
-    proto::DecoderCounters decoder{}; ///< host decoder: bad CRC, bad length, resync bytes
-    LinkCounters to_host;             ///< what the link did to the firmware's frames (packets = frames)
-    LinkCounters to_firmware;         ///< ... and to the host's
-    proto::VersionPayload version{};  ///< as the host received it
-    proto::StatusPayload status{};    ///< firmware counters at the end of the run
-    std::uint64_t conversions = 0;    ///< ADC conversions the sensor model produced
-    double simulated_s = 0.0;         ///< virtual time at the end [s since power-on]
-    bool interrupted = false;         ///< ended by HilOptions::stop, not by its duration
+    HostCounters host;                 ///< frames received, lost (seq gaps), polls, rows
+    proto::DecoderCounters decoder{};  ///< host decoder: bad CRC, bad length, resync bytes
+    LinkCounters to_host;              ///< what the link did to the firmware's frames (packets = frames)
+    LinkCounters to_firmware;          ///< ... and to the host's
+    proto::VersionPayload version{};   ///< as the host received it
+    proto::StatusPayload status{};     ///< firmware counters at the end of the run
+    std::uint64_t conversions = 0;     ///< ADC conversions the sensor model produced
+    double simulated_s = 0.0;          ///< virtual time at the end [s since power-on]
+    bool interrupted = false;          ///< ended by HilOptions::stop, not by its duration
 };
 
 /// Why the link cannot carry the firmware's output (its frames per output period need more than link.baud), with

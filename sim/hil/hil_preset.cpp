@@ -11,8 +11,7 @@ std::optional<Preset> preset_from_name(std::string_view name) {
 
 void apply_preset_firmware(Preset preset, proto::ConfigPayload& fw) {
     switch (preset) {
-    case Preset::fig3:
-        break;  // the model's own output period (paper.toml: 1 s) is kept
+    case Preset::fig3: break;  // the model's own output period (paper.toml: 1 s) is kept
     case Preset::fig2:
         fw.output_period_ms = 100;
         fw.conversions_per_output = 25;  // 1 ms = 250 ticks per conversion

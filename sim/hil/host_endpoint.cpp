@@ -85,8 +85,8 @@ void HostEndpoint::act(double t_s, std::vector<std::vector<std::uint8_t>>& out) 
 
 void HostEndpoint::request(double t_s, std::vector<std::vector<std::uint8_t>>& out) {
     if (tries_ >= plan_.max_tries)
-        throw BoardError(std::string("no answer to ") + request_name(phase_) + " after " +
-                                                      std::to_string(tries_) + " tries");
+        throw BoardError(std::string("no answer to ") + request_name(phase_) + " after " + std::to_string(tries_) +
+                         " tries");
     if (tries_ > 0) ++counters_.retries;
     ++tries_;
     std::vector<std::uint8_t> f(proto::kMaxFrameSize);
@@ -137,8 +137,10 @@ void HostEndpoint::handle_frame(double t_s) {
         proto::AckPayload ack{};
         if (!proto::parse(p, len, &ack) || ack.acked_type != static_cast<std::uint8_t>(proto::MsgType::config_set))
             break;
-        if (phase_ == Phase::config_set) enter(Phase::config_get, t_s);
-        else if (phase_ == Phase::stop_stream) enter(Phase::status, t_s);
+        if (phase_ == Phase::config_set)
+            enter(Phase::config_get, t_s);
+        else if (phase_ == Phase::stop_stream)
+            enter(Phase::status, t_s);
         break;
     }
     case proto::MsgType::nak: {
@@ -146,15 +148,16 @@ void HostEndpoint::handle_frame(double t_s) {
         if (!proto::parse(p, len, &nak) || (phase_ != Phase::config_set && phase_ != Phase::stop_stream)) break;
         const char* name = proto::config_field_name(nak.field);
         const std::string field = name ? name : "field " + std::to_string(nak.field);
-        throw ConfigRefused("the firmware refused the configuration: status " + std::to_string(nak.status) +
-                               " (" + proto::status_name(static_cast<proto::Status>(nak.status)) + ") on " + field);
+        throw ConfigRefused("the firmware refused the configuration: status " + std::to_string(nak.status) + " (" +
+                            proto::status_name(static_cast<proto::Status>(nak.status)) + ") on " + field);
     }
     case proto::MsgType::config: {
         proto::ConfigPayload got{};
         if (phase_ != Phase::config_get || !proto::parse(p, len, &got)) break;
         if (!same_config(got, plan_.config))
-            throw BoardError("CONFIG_GET returned a configuration that differs from the "
-                                                      "one it acknowledged");
+            throw BoardError(
+                "CONFIG_GET returned a configuration that differs from the "
+                "one it acknowledged");
         if (on_ready_) on_ready_(version_, got);
         rows_.emplace(receiver::RowOptions{version_.tick_hz, plan_.config.raw != 0, receiver::MissingRaw::drop},
                       [this](const receiver::Row& row) {

@@ -33,8 +33,8 @@ struct HostPlan {
 
 /// Counts of the host's side.
 struct HostCounters {
-    std::uint64_t frames_received = 0;   ///< valid frames decoded
-    std::uint64_t frames_lost = 0;       ///< sum of seq gaps between consecutive received frames
+    std::uint64_t frames_received = 0;  ///< valid frames decoded
+    std::uint64_t frames_lost = 0;      ///< sum of seq gaps between consecutive received frames
     std::uint64_t polls_sent = 0;
     std::uint64_t samples_received = 0;  ///< SAMPLE frames received while running
     std::uint64_t empty_samples = 0;     ///< SAMPLEs with n_window 0 (no estimate behind a value): not logged

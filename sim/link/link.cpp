@@ -24,12 +24,10 @@ LinkDirection::LinkDirection(double baud, const DirectionParams& params, std::ui
     // Physical order: the sender's UART clocks every byte out, the air loses or garbles some, the receiver's
     // modem adds its delay.
     stages_.push_back(std::make_unique<BaudTiming>(baud));
-    stages_.push_back(
-        std::make_unique<GilbertElliott>(params.packet_loss, Rng(seed, stream_base + kPacketLossStream)));
+    stages_.push_back(std::make_unique<GilbertElliott>(params.packet_loss, Rng(seed, stream_base + kPacketLossStream)));
     stages_.push_back(
         std::make_unique<DroppedBytes>(params.byte_drop_rate, Rng(seed, stream_base + kDroppedBytesStream)));
-    stages_.push_back(
-        std::make_unique<ByteErrors>(params.byte_error_rate, Rng(seed, stream_base + kByteErrorsStream)));
+    stages_.push_back(std::make_unique<ByteErrors>(params.byte_error_rate, Rng(seed, stream_base + kByteErrorsStream)));
     stages_.push_back(std::make_unique<Latency>(params.latency_s));
 }
 

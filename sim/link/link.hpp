@@ -33,14 +33,14 @@ struct Packet {
 
 /// What a direction did to the traffic it carried. Exact counts, not estimates.
 struct LinkCounters {
-    std::uint64_t packets_sent = 0;       ///< packets handed to send()
-    std::uint64_t bytes_sent = 0;         ///< bytes handed to send()
-    std::uint64_t packets_lost = 0;       ///< whole packets removed by frame-unit packet loss
-    std::uint64_t packets_damaged = 0;    ///< packets that lost or changed at least one byte (incl. packets_lost)
-    std::uint64_t bytes_lost = 0;         ///< bytes removed by packet loss (either unit)
-    std::uint64_t bytes_dropped = 0;      ///< bytes removed by byte drops
-    std::uint64_t bytes_corrupted = 0;    ///< bytes delivered with a changed value
-    std::uint64_t bytes_delivered = 0;    ///< bytes handed to the receiver so far
+    std::uint64_t packets_sent = 0;     ///< packets handed to send()
+    std::uint64_t bytes_sent = 0;       ///< bytes handed to send()
+    std::uint64_t packets_lost = 0;     ///< whole packets removed by frame-unit packet loss
+    std::uint64_t packets_damaged = 0;  ///< packets that lost or changed at least one byte (incl. packets_lost)
+    std::uint64_t bytes_lost = 0;       ///< bytes removed by packet loss (either unit)
+    std::uint64_t bytes_dropped = 0;    ///< bytes removed by byte drops
+    std::uint64_t bytes_corrupted = 0;  ///< bytes delivered with a changed value
+    std::uint64_t bytes_delivered = 0;  ///< bytes handed to the receiver so far
 };
 
 /// One behaviour of a direction. Implementations: baud_timing, packet_loss, dropped_bytes, byte_errors, latency.

@@ -29,9 +29,9 @@ struct DirectionParams {
 
 /// The whole link: a UART at `baud` (8N1: 10 bits per byte) in both directions.
 struct LinkParams {
-    double baud = 9600.0;            ///< line rate [bit/s], > 0
-    DirectionParams to_host;         ///< firmware -> host
-    DirectionParams to_firmware;     ///< host -> firmware
+    double baud = 9600.0;         ///< line rate [bit/s], > 0
+    DirectionParams to_host;      ///< firmware -> host
+    DirectionParams to_firmware;  ///< host -> firmware
 };
 
 }  // namespace driftlab::sim

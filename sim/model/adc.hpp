@@ -9,8 +9,8 @@ namespace driftlab::sim {
 
 /// Converter parameters.
 struct AdcParams {
-    int bits = 10;         ///< resolution [bits], 1..16
-    double vref_v = 5.0;   ///< reference voltage = full scale [V]
+    int bits = 10;        ///< resolution [bits], 1..16
+    double vref_v = 5.0;  ///< reference voltage = full scale [V]
 };
 
 /// Ideal N-bit converter: code = clamp(floor(v / lsb + 0.5), 0, 2^bits - 1), lsb = Vref / 2^bits.
@@ -26,7 +26,7 @@ public:
     /// Input voltage [V] expressed in (fractional, unquantised) counts.
     double counts_from_volts(double input_v) const { return input_v / lsb_v_; }
 
-    double lsb_v() const { return lsb_v_; }         ///< one count [V]
+    double lsb_v() const { return lsb_v_; }               ///< one count [V]
     std::uint16_t max_code() const { return max_code_; }  ///< 2^bits - 1 [counts]
     const AdcParams& params() const { return params_; }
 

@@ -22,7 +22,8 @@ namespace {
 // after output k's: the window holds the last N conversions, and older ones cannot change the output, so only those
 // are simulated (all of them when N exceeds the conversions per output).
 template <class OnConversion, class OnOutput>
-void for_each_conversion(const std::vector<double>& t_s, const Smoothing& sm, OnConversion conversion, OnOutput output) {
+void for_each_conversion(const std::vector<double>& t_s, const Smoothing& sm, OnConversion conversion,
+                         OnOutput output) {
     const double conversion_period_s = sm.conversion_period_s();
     double last_instant_s = -1e300;
     for (std::size_t k = 0; k < t_s.size(); ++k) {
@@ -50,7 +51,8 @@ std::optional<DriftAtConversions> drift_at_conversions(const OutputModel& model,
     if (has_timing_effect(model.effects)) return std::nullopt;
     // About as many conversions per channel as outputs times the new conversions per output (a window's at most).
     const std::size_t per_channel =
-        t_s.size() * static_cast<std::size_t>(std::max(1, std::min(model.smoothing.window, model.smoothing.conversions_per_output)));
+        t_s.size() *
+        static_cast<std::size_t>(std::max(1, std::min(model.smoothing.window, model.smoothing.conversions_per_output)));
     const auto requested = static_cast<std::size_t>(std::count(channels.begin(), channels.end(), true));
     if (requested * per_channel * sizeof(double) > max_bytes) return std::nullopt;
     const double mid_counts = std::ldexp(1.0, model.unit.adc.bits - 1);
@@ -61,7 +63,8 @@ std::optional<DriftAtConversions> drift_at_conversions(const OutputModel& model,
         std::vector<double>& d = out[i];
         d.reserve(per_channel);
         for_each_conversion(
-            t_s, model.smoothing, [&](std::size_t, double nominal_s) { d.push_back(drift.at_counts(nominal_s) - mid_counts); },
+            t_s, model.smoothing,
+            [&](std::size_t, double nominal_s) { d.push_back(drift.at_counts(nominal_s) - mid_counts); },
             [](std::size_t) {});
     }
     return out;
@@ -81,7 +84,8 @@ Outputs simulate_outputs(const OutputModel& model, const OutputRequest& request,
         const std::vector<double>& added = request.added_counts[i];
         ConversionExtras extras;
         if (request.quantiser[i]) extras.quantiser = &request.quantiser[i];
-        const std::vector<double>* cached_drift = request.drift && !(*request.drift)[i].empty() ? &(*request.drift)[i] : nullptr;
+        const std::vector<double>* cached_drift =
+            request.drift && !(*request.drift)[i].empty() ? &(*request.drift)[i] : nullptr;
         std::size_t conversion_index = 0;
         fw::LsWindow window;
         window.reset(static_cast<std::uint8_t>(sm.window));

@@ -32,10 +32,10 @@ struct Smoothing {
 
 /// What the outputs are simulated from.
 struct OutputModel {
-    SimModel unit;                     ///< front ends and converter (its own drift, noise and effects unused)
+    SimModel unit;  ///< front ends and converter (its own drift, noise and effects unused)
     Smoothing smoothing;
-    ChannelBases base{};               ///< eq. 1 and white noise per channel
-    std::vector<EffectSpec> effects;   ///< the effects of the chain
+    ChannelBases base{};              ///< eq. 1 and white noise per channel
+    std::vector<EffectSpec> effects;  ///< the effects of the chain
 };
 
 /// Converter counts per physical unit of a channel [counts per deg/s or per g].
@@ -62,7 +62,7 @@ struct OutputRequest {
     const std::vector<double>* t_s = nullptr;                          ///< output instants [s since power-on]
     std::array<bool, kChannelCount> channels{true, true, true, true};  ///< channels to simulate
     std::array<std::vector<double>, kChannelCount> added_counts;       ///< per output sample [counts]; empty = none
-    std::array<Quantiser, kChannelCount> quantiser;  ///< per channel; empty = the model's converter
+    std::array<Quantiser, kChannelCount> quantiser;                    ///< per channel; empty = the model's converter
     /// Optional: receives per requested channel the newest conversion's code at each output instant, the raw
     /// column of a raw-mode log [counts].
     std::array<std::vector<double>, kChannelCount>* raw_codes = nullptr;

@@ -10,9 +10,9 @@ namespace driftlab::sim {
 
 /// Parameters of eq. 1 for one channel.
 struct DriftParams {
-    double c1_counts = 0.0;   ///< rise from power-on to settled [counts]
-    double c2_counts = 512.0; ///< reading at power-on [counts]
-    double tau_s = 1.0;       ///< time constant T [s], > 0
+    double c1_counts = 0.0;    ///< rise from power-on to settled [counts]
+    double c2_counts = 512.0;  ///< reading at power-on [counts]
+    double tau_s = 1.0;        ///< time constant T [s], > 0
 };
 
 /// Table 1 of the paper, in Channel order (gyro, accel_x, accel_y, accel_z).

@@ -60,8 +60,8 @@ public:
         const auto v = n->value_exact<std::int64_t>();
         if (!v) fail(key, *n, "expected an integer");
         if (*v < lo || *v > hi)
-            fail(key, *n, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-                              std::to_string(*v));
+            fail(key, *n,
+                 "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(*v));
         value = static_cast<Int>(*v);
     }
 
@@ -179,11 +179,13 @@ void check_raw_noise(const toml::table& root, const SimModel& m) {
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         const ChannelModel& ch = m.channels[i];
         const std::string key = std::string("raw_noise_std_") + channel_unit(static_cast<Channel>(i));
-        const double raw_counts = ch.raw_noise_std_unit * FrontEnd(ch.front_end, m.adc.vref_v).counts_per_unit(std::ldexp(1.0, m.adc.bits));
+        const double raw_counts =
+            ch.raw_noise_std_unit * FrontEnd(ch.front_end, m.adc.vref_v).counts_per_unit(std::ldexp(1.0, m.adc.bits));
         if (!(raw_counts > 0.0 && raw_counts < kMinCalibratedRawStdCounts)) continue;
         const std::string table = std::string("channels.") + kChannelNames[i];
         throw ConfigError(table + "." + key, channel_check_line(root, table, key),
-                          "is " + std::to_string(raw_counts) + " counts; the calibration through the quantiser needs 0 or >= " +
+                          "is " + std::to_string(raw_counts) +
+                              " counts; the calibration through the quantiser needs 0 or >= " +
                               std::to_string(kMinCalibratedRawStdCounts) + " counts");
     }
 }
@@ -202,13 +204,14 @@ void check_front_ends(const toml::table& root, const SimModel& m) {
         const std::string table = std::string("channels.") + kChannelNames[i];
         const std::string u = channel_unit(static_cast<Channel>(i));
         char text[320];
-        std::snprintf(text, sizeof text,
-                      "its front end leaves the range of a double: amplifier gain vref_v / 2 / (sensitivity_v_per_%s x "
-                      "span_%s) = %g V/V, converter input at input_%s = %g V, %g counts per %s; each must be finite and "
-                      "the gain above 0",
-                      u.c_str(), u.c_str(), fe.gain(), u.c_str(),
-                      std::isnan(at_rest_v) ? std::numeric_limits<double>::quiet_NaN() : at_rest_v,  // not "-nan" (inf x 0)
-                      counts_per_unit, u.c_str());
+        std::snprintf(
+            text, sizeof text,
+            "its front end leaves the range of a double: amplifier gain vref_v / 2 / (sensitivity_v_per_%s x "
+            "span_%s) = %g V/V, converter input at input_%s = %g V, %g counts per %s; each must be finite and "
+            "the gain above 0",
+            u.c_str(), u.c_str(), fe.gain(), u.c_str(),
+            std::isnan(at_rest_v) ? std::numeric_limits<double>::quiet_NaN() : at_rest_v,  // not "-nan" (inf x 0)
+            counts_per_unit, u.c_str());
         throw ConfigError(table, channel_check_line(root, table), text);
     }
 }
@@ -248,7 +251,8 @@ void read_packet_loss(TableReader& r, PacketLossParams& pl) {
     r.number("loss_in_bad", pl.loss_in_bad, Range::unit_interval);
     r.finish();
     if (pl.p_good_to_bad > 0.0 && pl.p_bad_to_good == 0.0)
-        throw ConfigError(r.full("p_bad_to_good"), r.line("p_bad_to_good"), "must be > 0 when p_good_to_bad > 0 (the link would never recover)");
+        throw ConfigError(r.full("p_bad_to_good"), r.line("p_bad_to_good"),
+                          "must be > 0 when p_good_to_bad > 0 (the link would never recover)");
 }
 
 void read_direction(TableReader& r, DirectionParams& d) {
@@ -289,7 +293,8 @@ void read_effects(const toml::table& effects, std::vector<EffectSpec>& out) {
             }
             continue;
         }
-        if (!n.is_table()) throw ConfigError(path, line_of(n), "expected a table of the effect's parameters (or an array of them)");
+        if (!n.is_table())
+            throw ConfigError(path, line_of(n), "expected a table of the effect's parameters (or an array of them)");
         make_effect(name, *n.as_table(), path);
         out.push_back({name, *n.as_table()});
     }
@@ -391,15 +396,15 @@ SimModel parse_over(std::string_view text, const std::string& source_name, const
         root = toml::parse(text, source_name);
     } catch (const toml::parse_error& e) {
         throw ModelFileError(source_name + ":" + std::to_string(e.source().begin.line), "syntax",
-                                std::string(e.description()));
+                             std::string(e.description()));
     }
     try {
         return read_model(root, base, adjust);
     } catch (const ConfigError& e) {
         // e.what() is "line N: key: reason"; the host error puts file:line and key in front itself.
         const std::string where = e.line() > 0 ? source_name + ":" + std::to_string(e.line()) : source_name;
-        const std::string prefix = (e.line() > 0 ? "line " + std::to_string(e.line()) + ": " : std::string()) +
-                                   e.key() + ": ";
+        const std::string prefix =
+            (e.line() > 0 ? "line " + std::to_string(e.line()) + ": " : std::string()) + e.key() + ": ";
         std::string reason = e.what();
         if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
         throw ModelFileError(where, e.key(), reason);
@@ -464,7 +469,8 @@ std::string write_model(const SimModel& m, std::string_view comment) {
     for (const EffectSpec& e : m.effects)
         if (std::find(names.begin(), names.end(), e.name) == names.end()) names.push_back(e.name);
     for (const std::string& name : names) {
-        const auto same = std::count_if(m.effects.begin(), m.effects.end(), [&](const EffectSpec& o) { return o.name == name; });
+        const auto same =
+            std::count_if(m.effects.begin(), m.effects.end(), [&](const EffectSpec& o) { return o.name == name; });
         for (const EffectSpec& e : m.effects) {
             if (e.name != name) continue;
             w.stream() << (same == 1 ? "\n[effects." + name + "]\n" : "\n[[effects." + name + "]]\n");

@@ -21,7 +21,8 @@ ChannelBases base_of(const SimModel& model) {
     ChannelBases base;
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         const ChannelModel& ch = model.channels[i];
-        const double raw_std_counts = ch.raw_noise_std_unit * FrontEnd(ch.front_end, model.adc.vref_v).counts_per_unit(levels);
+        const double raw_std_counts =
+            ch.raw_noise_std_unit * FrontEnd(ch.front_end, model.adc.vref_v).counts_per_unit(levels);
         base[i] = {ch.drift, analog_sigma_for_raw_std_counts(raw_std_counts)};
     }
     return base;
@@ -69,8 +70,10 @@ Conversion SensorModel::convert(Channel c, double board_t_s, const ConversionExt
     // However large the jitter, a channel's instant never goes before its previous one (or before power-on), so
     // dt_s >= 0: the processes' sqrt(dt) stays real. Model files keep jitter far smaller (model_file.cpp).
     ctx.t_s = std::max(ctx.t_s + powered_before_boot_s_, last_t_s_[i]);
-    if (started_[i]) ctx.dt_s = ctx.t_s - last_t_s_[i];
-    else ctx.since_power_on_s = ctx.t_s;
+    if (started_[i])
+        ctx.dt_s = ctx.t_s - last_t_s_[i];
+    else
+        ctx.since_power_on_s = ctx.t_s;
     started_[i] = true;
     last_t_s_[i] = ctx.t_s;
     ctx.true_physical = inputs_unit_;
@@ -86,17 +89,19 @@ Conversion SensorModel::convert(Channel c, double board_t_s, const ConversionExt
     for (auto& e : by_stage_[stage_index(Stage::analog)]) apply_in_chain(*e, values, ctx);
 
     // Eq. 1 is the at-rest reading, so the chain adds its distance from mid-scale at the converter input.
-    const double drift_counts = extras.drift_counts ? *extras.drift_counts : drifts_[i].at_counts(ctx.t_s) - mid_counts_;
+    const double drift_counts =
+        extras.drift_counts ? *extras.drift_counts : drifts_[i].at_counts(ctx.t_s) - mid_counts_;
     values[i] = adc_.counts_from_volts(values[i]) + drift_counts + noise_[i].sample_counts() + extras.added_counts;
     if (extras.quantiser == nullptr)
         for (auto& e : by_stage_[stage_index(Stage::converter)]) apply_in_chain(*e, values, ctx);
 
     // The converter would read NaN as code 0, a plausible reading on the rail: a broken effect must stop the run.
     if (std::isnan(values[i]))
-        throw std::logic_error(std::string("sensor model: ") + kChannelNames[i] + " is NaN at the converter input at t = " +
-                               std::to_string(ctx.t_s) + " s (an effect produced it)");
-    const std::uint16_t code = extras.quantiser ? static_cast<std::uint16_t>((*extras.quantiser)(values[i]))
-                                                : adc_.convert_counts(values[i]);
+        throw std::logic_error(std::string("sensor model: ") + kChannelNames[i] +
+                               " is NaN at the converter input at t = " + std::to_string(ctx.t_s) +
+                               " s (an effect produced it)");
+    const std::uint16_t code =
+        extras.quantiser ? static_cast<std::uint16_t>((*extras.quantiser)(values[i])) : adc_.convert_counts(values[i]);
     return {code, ctx.t_s};
 }
 

@@ -37,9 +37,9 @@ using Quantiser = std::function<int(double input_counts)>;
 /// What a caller adds to one conversion beyond the model: gap-eval's truth signals and converters, and the eq. 1
 /// values that many replicates of one model share (board_outputs.hpp).
 struct ConversionExtras {
-    double added_counts = 0.0;              ///< added at the converter input [counts]
-    const double* drift_counts = nullptr;   ///< eq. 1 less mid-scale at this instant [counts]; null: evaluated here
-    const Quantiser* quantiser = nullptr;   ///< replaces converter effects and quantiser; null: the model's
+    double added_counts = 0.0;             ///< added at the converter input [counts]
+    const double* drift_counts = nullptr;  ///< eq. 1 less mid-scale at this instant [counts]; null: evaluated here
+    const Quantiser* quantiser = nullptr;  ///< replaces converter effects and quantiser; null: the model's
 };
 
 /// One conversion's result.

@@ -33,8 +33,8 @@ struct SentFrame {
 
 struct DamagedStream {
   Bytes rx;
-  std::vector<bool> damaged_rx;                 // rx byte inserted, flipped, or right before a removed span
-  std::map<size_t, size_t> intact_rx_start;     // sent index -> rx offset, for frames that arrived unchanged
+  std::vector<bool> damaged_rx;              // rx byte inserted, flipped, or right before a removed span
+  std::map<size_t, size_t> intact_rx_start;  // sent index -> rx offset, for frames that arrived unchanged
 };
 
 std::vector<SentFrame> random_frames(std::mt19937& rng, size_t count) {
@@ -93,46 +93,46 @@ DamagedStream damage(std::mt19937& rng, const std::vector<SentFrame>& frames) {
   for (size_t e = 0; e < events; ++e) {
     const size_t pos = rng() % clean.size();
     switch (rng() % 5) {
-      case 0:  // 1..3 bit flips in one byte
-        for (size_t k = 0; k < 1 + rng() % 3; ++k) {
-          flip_mask[pos] = static_cast<uint8_t>(flip_mask[pos] ^ (1u << (rng() % 8)));
-        }
-        touched[owner[pos]] = touched[owner[pos]] || flip_mask[pos] != 0;
-        break;
-      case 1:  // 1..8 bytes dropped
-        for (size_t i = pos; i < clean.size() && i < pos + 1 + rng() % 8; ++i) {
-          dropped[i] = true;
-          touched[owner[i]] = true;
-        }
-        break;
-      case 2: {  // 1..8 random bytes inserted
-        Bytes extra(1 + rng() % 8);
-        for (auto& b : extra) {
-          b = static_cast<uint8_t>(rng());
-        }
-        insert_before[pos].insert(insert_before[pos].end(), extra.begin(), extra.end());
-        if (pos > 0 && owner[pos - 1] == owner[pos]) {
-          touched[owner[pos]] = true;  // inserted inside a frame, not between two
-        }
-        break;
+    case 0:  // 1..3 bit flips in one byte
+      for (size_t k = 0; k < 1 + rng() % 3; ++k) {
+        flip_mask[pos] = static_cast<uint8_t>(flip_mask[pos] ^ (1u << (rng() % 8)));
       }
-      case 3: {  // a run of garbage
-        const Bytes g = garbage_run(rng);
-        insert_before[pos].insert(insert_before[pos].end(), g.begin(), g.end());
-        if (pos > 0 && owner[pos - 1] == owner[pos]) {
-          touched[owner[pos]] = true;
-        }
-        break;
+      touched[owner[pos]] = touched[owner[pos]] || flip_mask[pos] != 0;
+      break;
+    case 1:  // 1..8 bytes dropped
+      for (size_t i = pos; i < clean.size() && i < pos + 1 + rng() % 8; ++i) {
+        dropped[i] = true;
+        touched[owner[i]] = true;
       }
-      default: {  // the frame is cut from pos to its end
-        const size_t f = owner[pos];
-        const size_t end = frames[f].clean_start + frames[f].bytes.size();
-        for (size_t i = pos; i < end; ++i) {
-          dropped[i] = true;
-        }
-        touched[f] = true;
-        break;
+      break;
+    case 2: {  // 1..8 random bytes inserted
+      Bytes extra(1 + rng() % 8);
+      for (auto& b : extra) {
+        b = static_cast<uint8_t>(rng());
       }
+      insert_before[pos].insert(insert_before[pos].end(), extra.begin(), extra.end());
+      if (pos > 0 && owner[pos - 1] == owner[pos]) {
+        touched[owner[pos]] = true;  // inserted inside a frame, not between two
+      }
+      break;
+    }
+    case 3: {  // a run of garbage
+      const Bytes g = garbage_run(rng);
+      insert_before[pos].insert(insert_before[pos].end(), g.begin(), g.end());
+      if (pos > 0 && owner[pos - 1] == owner[pos]) {
+        touched[owner[pos]] = true;
+      }
+      break;
+    }
+    default: {  // the frame is cut from pos to its end
+      const size_t f = owner[pos];
+      const size_t end = frames[f].clean_start + frames[f].bytes.size();
+      for (size_t i = pos; i < end; ++i) {
+        dropped[i] = true;
+      }
+      touched[f] = true;
+      break;
+    }
     }
   }
 
@@ -185,8 +185,8 @@ TEST(DecoderFuzz, DamagedStreamsNeverYieldForeignFramesAndResyncWithinOneFrame) 
     }
 
     Decoder dec;
-    std::map<size_t, size_t> delivered_at;  // sent index -> rx offset of the byte fed when it came out
-    std::map<size_t, size_t> frame_end;     // sent index -> rx offset of the delivered frame's last byte
+    std::map<size_t, size_t> delivered_at;         // sent index -> rx offset of the byte fed when it came out
+    std::map<size_t, size_t> frame_end;            // sent index -> rx offset of the delivered frame's last byte
     std::vector<std::pair<size_t, size_t>> spans;  // rx [first, last] of every delivered frame
     size_t delivered_bytes = 0;
     long last_index = -1;
@@ -243,8 +243,8 @@ TEST(DecoderFuzz, DamagedStreamsNeverYieldForeignFramesAndResyncWithinOneFrame) 
       EXPECT_LE(it->second - last_byte, kMaxFrameSize) << "seed " << seed << ", frame " << f;
       if (!any_damage || start - last_damage > kMaxFrameSize) {
         ++late_checked;
-        EXPECT_EQ(it->second, last_byte) << "seed " << seed << ", frame " << f << " starts "
-                                         << start - last_damage << " bytes after damage";
+        EXPECT_EQ(it->second, last_byte) << "seed " << seed << ", frame " << f << " starts " << start - last_damage
+                                         << " bytes after damage";
       }
     }
 

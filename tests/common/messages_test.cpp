@@ -33,7 +33,7 @@ TEST(Messages, VersionLayoutMatchesSpecOffsets) {
   p.fw_patch = 4;
   p.board_id = 5;
   p.adc_bits = 10;
-  p.vref_mv = 5000;  // 0x1388
+  p.vref_mv = 5000;    // 0x1388
   p.tick_hz = 250000;  // 0x0003D090
   p.channel_count = 4;
   p.adc_pin[0] = 0;

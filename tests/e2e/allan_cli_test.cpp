@@ -8,8 +8,8 @@
 #include <functional>
 #include <iterator>
 #include <map>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -95,7 +95,8 @@ TEST(AllanCli, TheTextSaysWhenGapsSkipMostTerms) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("note: gaps skip more than 20 % of the terms from tau = "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("the longest gap-free stretch is 2 s"), std::string::npos) << r.output;
-    const RunResult whole = run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02"}, dir.path());
+    const RunResult whole =
+        run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02"}, dir.path());
     EXPECT_EQ(whole.output.find("note: gaps"), std::string::npos) << whole.output;
 }
 
@@ -119,7 +120,8 @@ TEST(AllanCli, UnresolvedTermsAreNullInJsonAndMarkedInTextInEveryUnit) {
         const std::size_t at = text.output.find(" " + key + " ");
         return at == std::string::npos ? std::string() : text.output.substr(at, text.output.find('\n', at) - at);
     };
-    const std::map<std::string, std::string> kalibr_key = {{"N", "gyroscope_noise_density"}, {"K", "gyroscope_random_walk"}};
+    const std::map<std::string, std::string> kalibr_key = {{"N", "gyroscope_noise_density"},
+                                                           {"K", "gyroscope_random_walk"}};
     for (const char* sym : {"B", "K", "R"}) ASSERT_TRUE(terms[sym]["std_error"].is_null()) << sym << ": " << terms[sym];
     ASSERT_FALSE(terms["N"]["std_error"].is_null());
     for (const auto& [key, value] : terms["physical"].items()) {
@@ -175,8 +177,10 @@ TEST(AllanCli, UnitsAreReportsColumnUnitsAndAMisspeltOneIsRefused) {
     EXPECT_NE(error_of("deg/sec").find("--unit 'deg/sec': unknown unit 'deg/sec'; angular rate: deg/s, dps, mdps, "
                                        "deg/h, rad/s; acceleration: g, mg"),
               std::string::npos);
-    EXPECT_NE(error_of("gz:deg/s").find("--unit 'gz:deg/s': " + table + " has no column 'gz' among those analysed "
-                                        "(gx, ax)"),
+    EXPECT_NE(error_of("gz:deg/s")
+                  .find("--unit 'gz:deg/s': " + table +
+                        " has no column 'gz' among those analysed "
+                        "(gx, ax)"),
               std::string::npos);
 }
 
@@ -226,12 +230,14 @@ TEST(AllanCli, PhaseSamplesNameTheirIntegralsUnit) {
     EXPECT_TRUE(clock["terms"]["physical"].empty()) << clock["terms"]["physical"];
     EXPECT_FALSE(from_phase["terms"]["physical"].empty());
 
-    const RunResult refused = run_driftlab({"allan", phase, "--kind", "phase", "--tau0", "0.01", "--unit", "deg/s"}, dir.path());
+    const RunResult refused =
+        run_driftlab({"allan", phase, "--kind", "phase", "--tau0", "0.01", "--unit", "deg/s"}, dir.path());
     EXPECT_EQ(refused.exit_code, 2) << refused.output;
-    EXPECT_NE(refused.output.find("--unit 'deg/s': unknown unit 'deg/s' for phase samples ('deg/s' is a rate's: give its "
-                                  "integral's, e.g. deg for deg/s); angle: deg, mdeg, rad; velocity: m/s, cm/s, mm/s; "
-                                  "time: s, ms, us, ns, ps"),
-              std::string::npos)
+    EXPECT_NE(
+        refused.output.find("--unit 'deg/s': unknown unit 'deg/s' for phase samples ('deg/s' is a rate's: give its "
+                            "integral's, e.g. deg for deg/s); angle: deg, mdeg, rad; velocity: m/s, cm/s, mm/s; "
+                            "time: s, ms, us, ns, ps"),
+        std::string::npos)
         << refused.output;
 }
 
@@ -337,7 +343,8 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGi
     EXPECT_EQ(fit_left.out.find("lone value"), std::string::npos) << fit_left.out;
     const auto c2_clean = nlohmann::json::parse(fit_clean.output)["channels"]["gx"]["C2"];
     const auto c2_left = nlohmann::json::parse(fit_left.out)["channels"]["gx"]["C2"];
-    EXPECT_NEAR(c2_left["value"].get<double>(), c2_clean["value"].get<double>(), 0.1 * c2_clean["stderr"].get<double>());
+    EXPECT_NEAR(c2_left["value"].get<double>(), c2_clean["value"].get<double>(),
+                0.1 * c2_clean["stderr"].get<double>());
     const RunResult allan_clean = run_driftlab({"allan", clean, "--kind", "rate", "--tau0", "1", "--json"}, dir.path());
     const SplitRun allan_left = run_driftlab_split(
         {"allan", corrupt, "--kind", "rate", "--tau0", "1", "--exclude", "1233.5:1234.5", "--json"}, dir.path());
@@ -347,7 +354,8 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGi
     const auto gx_left = nlohmann::json::parse(allan_left.out)["channels"]["gx"];
     EXPECT_TRUE(gx_left["lone_values_warning"].is_null()) << allan_left.out;
     EXPECT_EQ(gx_left["gap_samples"].get<int>(), 1);
-    EXPECT_NEAR(gx_left["adev"][0].get<double>(), gx_clean["adev"][0].get<double>(), 0.01 * gx_clean["adev"][0].get<double>());
+    EXPECT_NEAR(gx_left["adev"][0].get<double>(), gx_clean["adev"][0].get<double>(),
+                0.01 * gx_clean["adev"][0].get<double>());
 
     // A window that holds no row is a mistaken time (exit 3, naming it); one that is not FROM:TO, a usage error.
     const RunResult missed = run_driftlab({"fit", corrupt, "--exclude", "5000:6000"}, dir.path());
@@ -355,7 +363,8 @@ TEST(AllanCli, ALoneCorruptRowIsWarnedByAllanFitAndReportAndLeftOutByTheWindowGi
     EXPECT_NE(missed.output.find("--exclude 5000:6000 holds no row (the series' rows run from 0 s to 2999 s)"),
               std::string::npos)
         << missed.output;
-    const RunResult malformed = run_driftlab({"allan", corrupt, "--kind", "rate", "--tau0", "1", "--exclude", "5"}, dir.path());
+    const RunResult malformed =
+        run_driftlab({"allan", corrupt, "--kind", "rate", "--tau0", "1", "--exclude", "5"}, dir.path());
     EXPECT_EQ(malformed.exit_code, 2);
     EXPECT_NE(malformed.output.find("--exclude: expected FROM:TO in seconds since power-on"), std::string::npos)
         << malformed.output;
@@ -408,8 +417,8 @@ TEST(AllanCli, PerDecadeIsAWholeNumberOfTausNamedWithItsRange) {
     TempDir dir("allandecade");
     const std::string table = table_at_50_hz(dir);
     for (const char* bad : {"2.5", "0", "1001"}) {
-        const RunResult r =
-            run_driftlab({"allan", table, "--kind", "rate", "--tau0", "0.02", "--grid", "log", "--per-decade", bad}, dir.path());
+        const RunResult r = run_driftlab(
+            {"allan", table, "--kind", "rate", "--tau0", "0.02", "--grid", "log", "--per-decade", bad}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << r.output;
         EXPECT_NE(r.output.find(std::string("--per-decade: expected a whole number in [1, 1000], got '") + bad + "'"),
                   std::string::npos)
@@ -427,8 +436,8 @@ TEST(AllanCli, PerDecadeIsAWholeNumberOfTausNamedWithItsRange) {
 
 TEST(AllanCli, TheTimeColumnIsNotASeries) {
     TempDir dir("allantime");
-    const RunResult r =
-        run_driftlab({"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02", "--channel", "t_s"}, dir.path());
+    const RunResult r = run_driftlab(
+        {"allan", table_at_50_hz(dir), "--kind", "rate", "--tau0", "0.02", "--channel", "t_s"}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("'t_s' is the time column"), std::string::npos) << r.output;
 }
@@ -452,7 +461,8 @@ TEST(AllanCli, RemoveDriftFitsEqOneOnAPlainRateFileOnlyWhenAsked) {
     ASSERT_EQ(given.exit_code, 0) << given.output;
     const auto g_json = nlohmann::json::parse(given.output)["channels"]["col1"];
     EXPECT_FALSE(g_json["drift_removed"].get<bool>());
-    EXPECT_EQ(g_json["drift_status"], "not removed: a plain file is analysed as given; --remove-drift fits eq. 1 first");
+    EXPECT_EQ(g_json["drift_status"],
+              "not removed: a plain file is analysed as given; --remove-drift fits eq. 1 first");
     const double long_tau = g_json["tau"].back().get<double>();
     EXPECT_GT(g_json["adev"].back().get<double>(), 3.0 * white(long_tau));  // the transient inflates the long taus
 
@@ -474,7 +484,8 @@ TEST(AllanCli, RemoveDriftFitsEqOneOnAPlainRateFileOnlyWhenAsked) {
     std::vector<std::string> phase = {"allan", table, "--kind", "phase", "--tau0", "0.1", "--remove-drift"};
     const RunResult refused_phase = run_driftlab(phase, dir.path());
     EXPECT_EQ(refused_phase.exit_code, 2) << refused_phase.output;
-    EXPECT_NE(refused_phase.output.find("phase input has no drift to remove"), std::string::npos) << refused_phase.output;
+    EXPECT_NE(refused_phase.output.find("phase input has no drift to remove"), std::string::npos)
+        << refused_phase.output;
     removing.push_back("--keep-drift");
     const RunResult refused_both = run_driftlab(removing, dir.path());
     EXPECT_EQ(refused_both.exit_code, 2) << refused_both.output;

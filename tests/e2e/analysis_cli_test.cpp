@@ -81,8 +81,8 @@ TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
         for (int k = 0; k < 1200; ++k)
             out << 3.0 * (1.0 - std::exp(-0.5 * k / 150.0)) + 505.0 + 0.2 * std::sin(2.3 * k) << '\n';
     }
-    const SplitRun given =
-        run_driftlab_split({"fit", path, "--json", "--sample-period", "0.5", "--t-min", "20", "--t-max", "500"}, dir.path());
+    const SplitRun given = run_driftlab_split(
+        {"fit", path, "--json", "--sample-period", "0.5", "--t-min", "20", "--t-max", "500"}, dir.path());
     const SplitRun alias =
         run_driftlab_split({"fit", path, "--json", "--tau0", "0.5", "--from", "20", "--to", "500"}, dir.path());
     ASSERT_EQ(alias.exit_code, 0) << alias.err;
@@ -95,8 +95,8 @@ TEST(AnalysisCli, TauZeroFromAndToAreOtherNamesOfTheTimingOptions) {
     EXPECT_EQ(whiteness.exit_code, 0) << whiteness.output;
     EXPECT_NE(whiteness.output.find("note: --from 20 kept 1160 of 1200 rows, t = 20 s to 599.5 s\n"), std::string::npos)
         << whiteness.output;
-    const RunResult report =
-        run_driftlab({"report", path, "--tau0", "0.5", "--to", "500", "-o", dir.file("r.html"), "--no-plots"}, dir.path());
+    const RunResult report = run_driftlab(
+        {"report", path, "--tau0", "0.5", "--to", "500", "-o", dir.file("r.html"), "--no-plots"}, dir.path());
     EXPECT_EQ(report.exit_code, 0) << report.output;
     EXPECT_NE(report.output.find("note: --to 500 kept 1001 of 1200 rows, t = 0 s to 500 s\n"), std::string::npos)
         << report.output;
@@ -135,13 +135,16 @@ TEST(AnalysisCli, ASamplePeriodOnALogIsRefusedOrNoted) {
                              {"report", log, "--sample-period", "7", "-o", html, "--no-plots"}}) {
         const RunResult r = run_driftlab(args, dir.path());
         EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
-        EXPECT_NE(r.output.find("--sample-period/--tau0 7 s contradicts " + log + ": it is a driftlab log, timed by "
+        EXPECT_NE(r.output.find("--sample-period/--tau0 7 s contradicts " + log +
+                                ": it is a driftlab log, timed by "
                                 "its own t_s column, whose rows are 1 s apart"),
-                  std::string::npos) << args[0] << ": " << r.output;
+                  std::string::npos)
+            << args[0] << ": " << r.output;
     }
     const RunResult agrees = run_driftlab({"fit", log, "--tau0", "1"}, dir.path());
     EXPECT_EQ(agrees.exit_code, 0) << agrees.output;
-    EXPECT_NE(agrees.output.find("note: --sample-period/--tau0 1 s is not used: " + log), std::string::npos) << agrees.output;
+    EXPECT_NE(agrees.output.find("note: --sample-period/--tau0 1 s is not used: " + log), std::string::npos)
+        << agrees.output;
     const SplitRun json = run_driftlab_split({"fit", log, "--tau0", "1", "--json"}, dir.path());
     EXPECT_EQ(json.exit_code, 0) << json.err;
     EXPECT_NE(json.err.find("note: --sample-period/--tau0 1 s is not used"), std::string::npos) << json.err;
@@ -158,9 +161,11 @@ TEST(AnalysisCli, ATimeColumnOnALogIsRefusedOrNoted) {
                              {"report", log, "--time-column", "seq", "-o", dir.file("r.html"), "--no-plots"}}) {
         const RunResult r = run_driftlab(args, dir.path());
         EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
-        EXPECT_NE(r.output.find("--time-column seq contradicts " + log + ": it is a driftlab log, timed by its own t_s "
+        EXPECT_NE(r.output.find("--time-column seq contradicts " + log +
+                                ": it is a driftlab log, timed by its own t_s "
                                 "column; leave the option out (it is for plain tables)"),
-                  std::string::npos) << args[0] << ": " << r.output;
+                  std::string::npos)
+            << args[0] << ": " << r.output;
     }
     const RunResult own = run_driftlab({"whiteness", log, "--time-column", "t_s"}, dir.path());
     EXPECT_EQ(own.exit_code, 0) << own.output;
@@ -192,8 +197,10 @@ TEST(AnalysisCli, WhatTheDataDoNotDetermineReadsNotDetermined) {
     EXPECT_NE(rows[1].find("not determined"), std::string::npos) << w.output;
     EXPECT_EQ(rows[2].find("not determined"), std::string::npos) << w.output;
     EXPECT_EQ(count_of(rows[1], "not determined"), 2u) << w.output;  // C1 and T; C2 is the line's start
-    EXPECT_NE(w.output.find("gyro: not determined: T is beyond the record, which determines only the initial slope C1/T"),
-              std::string::npos) << w.output;
+    EXPECT_NE(
+        w.output.find("gyro: not determined: T is beyond the record, which determines only the initial slope C1/T"),
+        std::string::npos)
+        << w.output;
     EXPECT_NE(w.output.find("  C1 = not determined"), std::string::npos) << w.output;
     const auto slope = w.output.find("  C1/T = ");
     ASSERT_NE(slope, std::string::npos) << w.output;
@@ -236,7 +243,8 @@ TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
     EXPECT_EQ(run_driftlab({"fit", log, "--channel", "gyro"}, dir.path()).output.find(accel_note), std::string::npos);
     const std::string html = dir.file("r.html");
     ASSERT_EQ(run_driftlab({"report", log, "-o", html, "--no-plots"}, dir.path()).exit_code, 0);
-    EXPECT_NE(read_text(html).find("accelerometer values in mm/s^2 at 19.14 mm/s^2 (1/512 g) per count"), std::string::npos);
+    EXPECT_NE(read_text(html).find("accelerometer values in mm/s^2 at 19.14 mm/s^2 (1/512 g) per count"),
+              std::string::npos);
 
     const RunResult failed = run_driftlab({"fit", log, "--t-max", "10"}, dir.path());
     EXPECT_EQ(failed.exit_code, 3) << failed.output;
@@ -244,7 +252,8 @@ TEST(AnalysisCli, TheTableSaysItsUnitsAndEachErrorOnce) {
     EXPECT_EQ(failed.output.find("[table unit]"), std::string::npos) << failed.output;
     EXPECT_EQ(count_of(failed.output, "9 samples in the selected time range"), 4u) << failed.output;
     EXPECT_NE(failed.output.find(log + ": not analysed: gyro, accel_x, accel_y, accel_z (the reasons are above)"),
-              std::string::npos) << failed.output;
+              std::string::npos)
+        << failed.output;
 
     // Where no series can be analysed, report writes no page of empty tables, and says the shared reason once
     // with the span the range missed.
@@ -278,7 +287,8 @@ TEST(AnalysisCli, ReportOpensWithTheRecordingOfAHilLog) {
         EXPECT_NE(page.find(row), std::string::npos) << row << "\n" << page;
     // The firmware in the loop reports its own version in VERSION, which the log keeps.
     const std::string firmware = "<tr><th>firmware</th><td>version " + std::to_string(fw::kFwMajor) + "." +
-                                 std::to_string(fw::kFwMinor) + "." + std::to_string(fw::kFwPatch) + ", protocol 1</td></tr>";
+                                 std::to_string(fw::kFwMinor) + "." + std::to_string(fw::kFwPatch) +
+                                 ", protocol 1</td></tr>";
     EXPECT_NE(page.find(firmware), std::string::npos) << firmware << "\n" << page;
     EXPECT_EQ(page.find("<th>start</th>"), std::string::npos);  // hil runs in virtual time: no start to show
 }
@@ -289,7 +299,8 @@ TEST(AnalysisCli, ReportUnitsForAPlainTable) {
     TempDir dir("reportunit");
     const std::string table = table_with_gap(dir);  // its one column: gyro
     const std::string html = dir.file("r.html");
-    const SplitRun ok = run_driftlab_split({"report", table, "--unit", "gyro:deg/s", "-o", html, "--no-plots", "--json"}, dir.path());
+    const SplitRun ok =
+        run_driftlab_split({"report", table, "--unit", "gyro:deg/s", "-o", html, "--no-plots", "--json"}, dir.path());
     ASSERT_EQ(ok.exit_code, 0) << ok.err;
     EXPECT_EQ(nlohmann::json::parse(ok.out)["channels"]["gyro"]["unit"], "deg/s");
     const std::string page = read_text(html);
@@ -302,11 +313,14 @@ TEST(AnalysisCli, ReportUnitsForAPlainTable) {
         EXPECT_EQ(r.exit_code, 2) << r.output;
         return r.output;
     };
-    EXPECT_NE(error_of(table, "gyro:deg/sec").find("--unit 'gyro:deg/sec': unknown unit 'deg/sec'; angular rate: "
-                                                   "deg/s, dps, mdps, deg/h, rad/s; acceleration: g, mg"),
+    EXPECT_NE(error_of(table, "gyro:deg/sec")
+                  .find("--unit 'gyro:deg/sec': unknown unit 'deg/sec'; angular rate: "
+                        "deg/s, dps, mdps, deg/h, rad/s; acceleration: g, mg"),
               std::string::npos);
-    EXPECT_NE(error_of(table, "gx:deg/s").find("--unit 'gx:deg/s': " + table + " has no column 'gx' among those "
-                                               "analysed (gyro)"),
+    EXPECT_NE(error_of(table, "gx:deg/s")
+                  .find("--unit 'gx:deg/s': " + table +
+                        " has no column 'gx' among those "
+                        "analysed (gyro)"),
               std::string::npos);
     const std::string log = dir.file("hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "60", "-o", log}, dir.path()).exit_code, 0);

@@ -67,7 +67,8 @@ TEST(CliSweep, EveryValueOptionEndsWithADocumentedExitAndItsOwnWords) {
                 run.insert(run.end(), {names.back(), value});
                 const RunResult r = run_driftlab(run, dir.path());
                 const std::string what = command + " " + names.back() + " '" + value + "': ";
-                EXPECT_TRUE(r.exit_code == 0 || (r.exit_code >= 2 && r.exit_code <= 5)) << what << r.exit_code << " " << r.output;
+                EXPECT_TRUE(r.exit_code == 0 || (r.exit_code >= 2 && r.exit_code <= 5))
+                    << what << r.exit_code << " " << r.output;
                 EXPECT_FALSE(std::regex_search(r.output, parser_words)) << what << r.output;
                 if (r.exit_code != 0) {
                     EXPECT_NE(r.output.find("driftlab: error: "), std::string::npos) << what << r.output;

@@ -51,7 +51,8 @@ TEST(CutLineCli, EveryLogReaderLeavesOutTheCutRowOnRequestAndSaysWhichLine) {
         std::ofstream(by_hand, std::ios::binary) << text;
     }
     const std::string line = cut_last_row(cut);
-    const std::string note = "note: " + cut + ":" + line + ": the last line, cut without a newline, was left out (--drop-cut-line)";
+    const std::string note =
+        "note: " + cut + ":" + line + ": the last line, cut without a newline, was left out (--drop-cut-line)";
     const std::string any_such_note = "was left out (--drop-cut-line)";
 
     const std::vector<std::vector<std::string>> commands = {
@@ -62,7 +63,8 @@ TEST(CutLineCli, EveryLogReaderLeavesOutTheCutRowOnRequestAndSaysWhichLine) {
         const RunResult refused = run_driftlab(on_cut, dir.path());
         EXPECT_EQ(refused.exit_code, 3) << command[0] << ": " << refused.output;
         EXPECT_NE(refused.output.find(cut + ":" + line + ": truncated last line"), std::string::npos) << refused.output;
-        EXPECT_NE(refused.output.find("--drop-cut-line reads the rest without it"), std::string::npos) << refused.output;
+        EXPECT_NE(refused.output.find("--drop-cut-line reads the rest without it"), std::string::npos)
+            << refused.output;
 
         const RunResult text = run_driftlab(with(on_cut, {"--drop-cut-line"}), dir.path());
         EXPECT_EQ(text.exit_code, 0) << command[0] << ": " << text.output;
@@ -83,12 +85,13 @@ TEST(CutLineCli, EveryLogReaderLeavesOutTheCutRowOnRequestAndSaysWhichLine) {
     ASSERT_EQ(report.exit_code, 0) << report.output;
     EXPECT_NE(read_text(html).find("<p>Note: " + note.substr(6) + "; its row is not analysed</p>"), std::string::npos);
     const RunResult gap_report = run_driftlab(
-        {"gap", cut, "--locate-only", "--replicates", "10", "--drop-cut-line", "--report", dir.file("rep")}, dir.path());
+        {"gap", cut, "--locate-only", "--replicates", "10", "--drop-cut-line", "--report", dir.file("rep")},
+        dir.path());
     ASSERT_EQ(gap_report.exit_code, 0) << gap_report.output;
     EXPECT_NE(read_text(dir.file("rep") + "/gap.md").find("Note: " + note.substr(6)), std::string::npos);
     // gap speaks of the rows it analyses: a window that ends before the cut line has nothing left out to say.
-    const RunResult early = run_driftlab({"gap", cut, "--locate-only", "--replicates", "10", "--drop-cut-line", "--to", "400"},
-                                         dir.path());
+    const RunResult early =
+        run_driftlab({"gap", cut, "--locate-only", "--replicates", "10", "--drop-cut-line", "--to", "400"}, dir.path());
     EXPECT_EQ(early.exit_code, 0) << early.output;
     EXPECT_EQ(early.output.find(any_such_note), std::string::npos) << early.output;
     // A note printed before the command fails comes before the error in one output file, as it was printed.
@@ -111,7 +114,8 @@ TEST(CutLineCli, APlainTableIsRefusedTheOption) {
     for (const char* command : {"fit", "whiteness", "report", "allan", "gap"}) {
         const RunResult r = run_driftlab({command, table, "--drop-cut-line"}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << command << ": " << r.output;
-        EXPECT_NE(r.output.find("--drop-cut-line is for driftlab logs; " + table + " is a plain table"), std::string::npos)
+        EXPECT_NE(r.output.find("--drop-cut-line is for driftlab logs; " + table + " is a plain table"),
+                  std::string::npos)
             << command << ": " << r.output;
     }
 }

@@ -20,8 +20,8 @@ namespace driftlab::e2e {
 namespace {
 
 constexpr int kSamples = 10;
-constexpr int kBadCrcSample = 3;     // its frame's last byte (the CRC's) flipped
-constexpr int kGarbageBefore = 7;    // damage inserted in front of this sample's record
+constexpr int kBadCrcSample = 3;   // its frame's last byte (the CRC's) flipped
+constexpr int kGarbageBefore = 7;  // damage inserted in front of this sample's record
 constexpr std::size_t kGarbageBytes = 7;
 
 /// Where the damage in a capture made by write_capture() lies.
@@ -88,7 +88,8 @@ TEST(DecodeCli, JsonListsTheCountsAndEveryLocatedDamage) {
     const Layout at = write_capture(cap, true);
     const std::string json_out = dir.file("summary.json");
     std::ofstream(json_out).close();  // standard output is opened there, not created
-    const RunResult r = run_driftlab_stdout_to({"decode", cap, "-o", dir.file("d.csv"), "--json"}, json_out, dir.path());
+    const RunResult r =
+        run_driftlab_stdout_to({"decode", cap, "-o", dir.file("d.csv"), "--json"}, json_out, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("warning: " + cap + ": byte offset " + std::to_string(at.cut_record) + ": last record cut"),
               std::string::npos)
@@ -99,10 +100,10 @@ TEST(DecodeCli, JsonListsTheCountsAndEveryLocatedDamage) {
     EXPECT_EQ(j["rows"], kSamples - 1);  // the sample whose CRC failed is lost, the cut one never arrived whole
     EXPECT_EQ(j["frames_lost"], 1);
     EXPECT_EQ(j["crc_errors"], 1);
-    EXPECT_EQ(j["crc_failures"], nlohmann::json::parse(R"([{"offset": )" + std::to_string(at.bad_crc_record) +
-                                                       R"(, "frames": 1}])"));
-    EXPECT_EQ(j["damaged"], nlohmann::json::parse(R"([{"offset": )" + std::to_string(at.garbage) +
-                                                  R"(, "bytes": )" + std::to_string(kGarbageBytes) + "}]"));
+    EXPECT_EQ(j["crc_failures"],
+              nlohmann::json::parse(R"([{"offset": )" + std::to_string(at.bad_crc_record) + R"(, "frames": 1}])"));
+    EXPECT_EQ(j["damaged"], nlohmann::json::parse(R"([{"offset": )" + std::to_string(at.garbage) + R"(, "bytes": )" +
+                                                  std::to_string(kGarbageBytes) + "}]"));
     EXPECT_EQ(j["truncated_at"], at.cut_record);
     EXPECT_TRUE(j["retimed"].empty());
     EXPECT_TRUE(j["start_read_at"].is_null());
@@ -152,7 +153,8 @@ TEST(DecodeCli, StrictExitsThreeOnUndecodedBytesAndStillWritesEveryGoodRow) {
                                  "good row)"),
               std::string::npos)
         << strict.output;
-    EXPECT_NE(strict.output.find("decoded " + std::to_string(kSamples - 1) + " rows"), std::string::npos) << strict.output;
+    EXPECT_NE(strict.output.find("decoded " + std::to_string(kSamples - 1) + " rows"), std::string::npos)
+        << strict.output;
     EXPECT_EQ(read_text(dir.file("strict.csv")), read_text(dir.file("lenient.csv")));
 
     const std::string intact = dir.file("intact.cap");
@@ -176,7 +178,8 @@ TEST(DecodeCli, ACutLogNamesTheCaptureThatRebuildsItsLastRow) {
     EXPECT_EQ(cut.exit_code, 3) << cut.output;
     EXPECT_NE(cut.output.find(log + ":" + last_line + ": truncated last line"), std::string::npos) << cut.output;
     const std::string command = "`driftlab decode " + cap + " -o LOG.csv`";
-    EXPECT_NE(cut.output.find("--drop-cut-line reads the rest without it, or rebuild the whole log from its capture: " + command),
+    EXPECT_NE(cut.output.find("--drop-cut-line reads the rest without it, or rebuild the whole log from its capture: " +
+                              command),
               std::string::npos)
         << cut.output;
 

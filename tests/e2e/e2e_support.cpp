@@ -1,9 +1,9 @@
 // Helpers of the end-to-end tests (e2e_support.hpp).
 #include "tests/e2e/e2e_support.hpp"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include <fcntl.h>
 
 #include <gtest/gtest.h>
 
@@ -77,7 +77,8 @@ pid_t spawn_program(const std::string& program, const std::vector<std::string>& 
     return pid;
 }
 
-pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file, const std::string& stdout_file) {
+pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file,
+                     const std::string& stdout_file) {
     return spawn_program(DRIFTLAB_BIN, args, output_file, stdout_file);
 }
 

@@ -54,7 +54,8 @@ struct RunResult {
 pid_t spawn_program(const std::string& program, const std::vector<std::string>& args, const std::string& output_file,
                     const std::string& stdout_file = "");
 /// spawn_program() of the driftlab binary under test.
-pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file, const std::string& stdout_file = "");
+pid_t spawn_driftlab(const std::vector<std::string>& args, const std::string& output_file,
+                     const std::string& stdout_file = "");
 /// Waits for the child and collects its exit status and output.
 RunResult wait_child(pid_t pid, const std::string& output_file);
 /// spawn + wait.
@@ -78,7 +79,7 @@ using test_support::TempDir;
 /// A model file and what plain `driftlab hil` (no --pty) made of it.
 struct PlainHilRun {
     std::string model;  ///< the model file's path
-    RunResult hil;      ///< `hil --model MODEL --duration 1 -o DIR/h.csv`: exit 5 when the file's configuration is refused
+    RunResult hil;  ///< `hil --model MODEL --duration 1 -o DIR/h.csv`: exit 5 when the file's configuration is refused
 };
 
 /// Writes `toml` as the model file `name` in `dir` and runs plain `hil` on it, for a test whose model plain hil

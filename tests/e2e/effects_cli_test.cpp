@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
+#include <nlohmann/json.hpp>
 
 #include "e2e_support.hpp"
 #include "host/gap/candidates.hpp"
@@ -56,12 +56,16 @@ TEST(EffectsCli, TheListAndTheJsonHoldTheWholeLibraryAndAnUnknownNameIsRefused) 
         // And in a gap --model file: a Gaussian process held, a mean shape refitted, anything else kept.
         const auto* c = host::gap::find_candidate(library[k].name);
         const std::string in_model = j[k]["gap"]["in_model"];
-        const std::string expected = !c ? "kept" : c->route == host::gap::FitRoute::spectral ? "held"
-                                     : c->route == host::gap::FitRoute::deterministic ? "refitted" : "kept";
+        const std::string expected = !c                                               ? "kept"
+                                     : c->route == host::gap::FitRoute::spectral      ? "held"
+                                     : c->route == host::gap::FitRoute::deterministic ? "refitted"
+                                                                                      : "kept";
         EXPECT_EQ(in_model.rfind(expected, 0), 0u) << library[k].name << ": " << in_model;
         const auto lines = lines_of(list.output);
-        EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.rfind(library[k].name + " ", 0) == 0; }))
-            << library[k].name << "\n" << list.output;
+        EXPECT_TRUE(std::any_of(lines.begin(), lines.end(),
+                                [&](const std::string& l) { return l.rfind(library[k].name + " ", 0) == 0; }))
+            << library[k].name << "\n"
+            << list.output;
     }
     const RunResult bad = run_driftlab({"effects", "spike"}, dir.path());
     EXPECT_EQ(bad.exit_code, 2);

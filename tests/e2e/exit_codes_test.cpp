@@ -28,7 +28,8 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     for (const std::string bad : {"nan", "inf", "0"}) {
         const RunResult duration = run_driftlab({"hil", "--duration", bad, "-o", dir.file("h.csv")}, dir.path());
         EXPECT_EQ(duration.exit_code, 2) << bad << ": " << duration.output;
-        EXPECT_NE(duration.output.find("--duration: expected a number > 0, got '" + bad + "'"), std::string::npos) << duration.output;
+        EXPECT_NE(duration.output.find("--duration: expected a number > 0, got '" + bad + "'"), std::string::npos)
+            << duration.output;
     }
     // A time bound of nan compared false with every time and cut nothing.
     for (const char* bound : {"--t-min", "--t-max"}) {
@@ -37,7 +38,8 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_NE(nan.output.find("expected a finite number, got 'nan'"), std::string::npos) << nan.output;
     }
     // record --duration nan recorded until Ctrl-C.
-    const RunResult record = run_driftlab({"record", "--port", "/dev/null", "--duration", "nan", "-o", dir.file("r.csv")}, dir.path());
+    const RunResult record =
+        run_driftlab({"record", "--port", "/dev/null", "--duration", "nan", "-o", dir.file("r.csv")}, dir.path());
     EXPECT_EQ(record.exit_code, 2) << record.output;
     EXPECT_NE(record.output.find("--duration: expected a number >= 0, got 'nan'"), std::string::npos) << record.output;
     // gap: "nan" had passed --fit-fraction's range (and --from's order check) to be refused later with the wrong
@@ -48,15 +50,18 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
         EXPECT_EQ(r.exit_code, 2) << args[2] << ": " << r.output;
         EXPECT_NE(r.output.find("expected a finite number, got '" + args[3] + "'"), std::string::npos) << r.output;
     }
-    // record and flash: a CONFIG field or a rate that is not a whole number in range had been a failed conversion in the
-    // parser's words, or a check of record's own words; flash --dry-run had printed `-b -1`. Each is refused as hil's are.
+    // record and flash: a CONFIG field or a rate that is not a whole number in range had been a failed conversion in
+    // the parser's words, or a check of record's own words; flash --dry-run had printed `-b -1`. Each is refused as
+    // hil's are.
     for (const std::vector<std::string>& args :
-         {std::vector<std::string>{"--conversions", "3.5", "--conversions: expected a whole number in [1, 64], got '3.5'"},
+         {std::vector<std::string>{"--conversions", "3.5",
+                                   "--conversions: expected a whole number in [1, 64], got '3.5'"},
           {"--window", "65", "--window: expected a whole number in [1, 64], got '65'"},
           {"--order", "x", "--order: expected a whole number in [0, 1], got 'x'"},
           {"--baud", "3.5", "--baud: expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '3.5'"},
           {"--baud", "12345", "--baud: expected a standard rate [bit/s] (e.g. 9600, 57600, 115200), got '12345'"}}) {
-        const RunResult r = run_driftlab({"record", "--port", "/dev/null", "-o", dir.file("r.csv"), args[0], args[1]}, dir.path());
+        const RunResult r =
+            run_driftlab({"record", "--port", "/dev/null", "-o", dir.file("r.csv"), args[0], args[1]}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
         EXPECT_NE(r.output.find(args[2]), std::string::npos) << r.output;
     }
@@ -67,20 +72,23 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     }
     const RunResult sequences = run_driftlab({"whiteness", "x.csv", "--sequences", "1e-9"}, dir.path());
     EXPECT_EQ(sequences.exit_code, 2) << sequences.output;
-    EXPECT_NE(sequences.output.find("--sequences: expected a whole number in [1, 1000000], got '1e-9'"), std::string::npos)
+    EXPECT_NE(sequences.output.find("--sequences: expected a whole number in [1, 1000000], got '1e-9'"),
+              std::string::npos)
         << sequences.output;
     // A reversed or empty time range: gap and allan had refused it only once the log was read, fit, whiteness and
     // report as a "0 samples" error per channel (exit 3). x.csv does not exist, so exit 2 shows that nothing was read.
     // Every one of them takes both spellings (gap had not known --t-min/--t-max).
     for (const char* command : {"fit", "whiteness", "report", "allan", "gap"})
-        for (const std::vector<std::string>& range :
-             {std::vector<std::string>{"--from", "50", "--to", "40"}, {"--to", "40", "--from", "50"}, {"--from", "50", "--to", "50"},
-              {"--t-min", "50", "--t-max", "40"}}) {
+        for (const std::vector<std::string>& range : {std::vector<std::string>{"--from", "50", "--to", "40"},
+                                                      {"--to", "40", "--from", "50"},
+                                                      {"--from", "50", "--to", "50"},
+                                                      {"--t-min", "50", "--t-max", "40"}}) {
             std::vector<std::string> args = {command, "x.csv"};
             args.insert(args.end(), range.begin(), range.end());
             const RunResult r = run_driftlab(args, dir.path());
             EXPECT_EQ(r.exit_code, 2) << command << " " << range[0] << ": " << r.output;
-            EXPECT_NE(r.output.find("driftlab: error: --from must be before --to"), std::string::npos) << command << ": " << r.output;
+            EXPECT_NE(r.output.find("driftlab: error: --from must be before --to"), std::string::npos)
+                << command << ": " << r.output;
         }
     const RunResult fraction = run_driftlab({"gap", "x.csv", "--fit-fraction", "nan"}, dir.path());
     EXPECT_EQ(fraction.exit_code, 2) << fraction.output;
@@ -90,13 +98,25 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     // --plot no plots, --capture LOG.cap, --report no report; an empty input file had been refused as ": cannot open".
     // Each path option and input, as the command line is read (x.csv does not exist).
     const std::string h = dir.file("h.csv");
-    for (const std::vector<std::string>& args :
-         {std::vector<std::string>{"gap", "x.csv", "--report"}, {"gap", "x.csv", "--model-out"}, {"gap", "x.csv", "--model"},
-          {"hil", "-o", h, "--model"}, {"hil", "--output"}, {"hil", "--pty", "--pty-link"}, {"hil", "-o", h, "--target", "avr", "--elf"},
-          {"fit", "x.csv", "--plot"}, {"whiteness", "x.csv", "--plot"}, {"allan", "x.csv", "--plot"}, {"report", "x.csv", "--output"},
-          {"record", "--port", "/dev/null", "-o", h, "--capture"}, {"record", "-o", h, "--port"}, {"record", "--port", "/dev/null", "--output"},
-          {"decode", "x.cap", "--output"}, {"flash", "--dry-run", "--hex"}, {"flash", "--dry-run", "--port"},
-          {"flash", "--dry-run", "--avrdude"}, {"gap-eval", "--quick", "--plot"}}) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--report"},
+                                                 {"gap", "x.csv", "--model-out"},
+                                                 {"gap", "x.csv", "--model"},
+                                                 {"hil", "-o", h, "--model"},
+                                                 {"hil", "--output"},
+                                                 {"hil", "--pty", "--pty-link"},
+                                                 {"hil", "-o", h, "--target", "avr", "--elf"},
+                                                 {"fit", "x.csv", "--plot"},
+                                                 {"whiteness", "x.csv", "--plot"},
+                                                 {"allan", "x.csv", "--plot"},
+                                                 {"report", "x.csv", "--output"},
+                                                 {"record", "--port", "/dev/null", "-o", h, "--capture"},
+                                                 {"record", "-o", h, "--port"},
+                                                 {"record", "--port", "/dev/null", "--output"},
+                                                 {"decode", "x.cap", "--output"},
+                                                 {"flash", "--dry-run", "--hex"},
+                                                 {"flash", "--dry-run", "--port"},
+                                                 {"flash", "--dry-run", "--avrdude"},
+                                                 {"gap-eval", "--quick", "--plot"}}) {
         std::vector<std::string> empty_path = args;
         empty_path.push_back("");
         const RunResult empty = run_driftlab(empty_path, dir.path());
@@ -105,16 +125,21 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
             << args[0] << ": " << empty.output;
     }
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "out")) << "hil -o '' wrote its default log";
-    for (const std::vector<std::string>& args : {std::vector<std::string>{"fit", "", "log"}, {"whiteness", "", "log"},
-                                                 {"report", "", "log"}, {"allan", "", "file"}, {"gap", "", "file"},
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"fit", "", "log"},
+                                                 {"whiteness", "", "log"},
+                                                 {"report", "", "log"},
+                                                 {"allan", "", "file"},
+                                                 {"gap", "", "file"},
                                                  {"decode", "", "capture"}}) {
         std::vector<std::string> run = {args[0], args[1]};
         if (args[0] == "decode") run.insert(run.end(), {"-o", dir.file("d.csv")});
         const RunResult empty = run_driftlab(run, dir.path());
         EXPECT_EQ(empty.exit_code, 2) << args[0] << ": " << empty.output;
-        EXPECT_NE(empty.output.find("driftlab: error: " + args[2] + ": expected a path, got ''"), std::string::npos) << empty.output;
+        EXPECT_NE(empty.output.find("driftlab: error: " + args[2] + ": expected a path, got ''"), std::string::npos)
+            << empty.output;
     }
-    for (const auto& [id, what] : {std::pair<std::string, std::string>{"--programmer", "programmer"}, {"--part", "part"}}) {
+    for (const auto& [id, what] :
+         {std::pair<std::string, std::string>{"--programmer", "programmer"}, {"--part", "part"}}) {
         const RunResult r = run_driftlab({"flash", "--dry-run", id, ""}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << r.output;
         EXPECT_NE(r.output.find(id + ": expected an avrdude " + what + " id, got ''"), std::string::npos) << r.output;
@@ -126,17 +151,21 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     for (const char* kind : {"", "ratee"}) {
         const RunResult r = run_driftlab({"allan", "x.csv", "--kind", kind}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << r.output;
-        EXPECT_NE(r.output.find(std::string("--kind: expected rate or phase, got '") + kind + "'"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(std::string("--kind: expected rate or phase, got '") + kind + "'"), std::string::npos)
+            << r.output;
     }
     // gap-eval: "" had named the out-of-library generator, whose effect is none.
     const RunResult no_effect = run_driftlab({"gap-eval", "--quick", "--effects", ""}, dir.path());
     EXPECT_EQ(no_effect.exit_code, 2) << no_effect.output;
-    EXPECT_NE(no_effect.output.find("--effects: unknown generator or effect ''"), std::string::npos) << no_effect.output;
+    EXPECT_NE(no_effect.output.find("--effects: unknown generator or effect ''"), std::string::npos)
+        << no_effect.output;
     // hil --period: text had failed in the parser's words, and an empty value had meant the preset's period.
     for (const char* period : {"x", ""}) {
         const RunResult r = run_driftlab({"hil", "-o", dir.file("h.csv"), "--period", period}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << r.output;
-        EXPECT_NE(r.output.find(std::string("--period: expected a number > 0, got '") + period + "'"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(std::string("--period: expected a number > 0, got '") + period + "'"),
+                  std::string::npos)
+            << r.output;
     }
     const RunResult huge = run_driftlab({"gap-eval", "--quick", "--levels", "1000"}, dir.path());
     EXPECT_EQ(huge.exit_code, 2) << huge.output;
@@ -144,7 +173,8 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     // An integer option names a fraction as outside its range, not as a failed conversion.
     const RunResult fraction_of_window = run_driftlab({"hil", "--window", "3.5", "-o", dir.file("h.csv")}, dir.path());
     EXPECT_EQ(fraction_of_window.exit_code, 2) << fraction_of_window.output;
-    EXPECT_NE(fraction_of_window.output.find("--window: expected a whole number in [1, 64], got '3.5'"), std::string::npos)
+    EXPECT_NE(fraction_of_window.output.find("--window: expected a whole number in [1, 64], got '3.5'"),
+              std::string::npos)
         << fraction_of_window.output;
     const RunResult twice = run_driftlab({"gap-eval", "--quick", "--levels", "2,2"}, dir.path());
     EXPECT_EQ(twice.exit_code, 2) << twice.output;
@@ -153,7 +183,8 @@ TEST(ExitCodes, ParserRefusalsAreUsageErrors) {
     for (const char* command : {"gap", "fit", "allan"}) {
         const RunResult folder = run_driftlab({command, dir.path().string()}, dir.path());
         EXPECT_EQ(folder.exit_code, 3) << command << ": " << folder.output;
-        EXPECT_NE(folder.output.find(dir.path().string() + ": is a folder, not a file"), std::string::npos) << folder.output;
+        EXPECT_NE(folder.output.find(dir.path().string() + ": is a folder, not a file"), std::string::npos)
+            << folder.output;
     }
     // An empty file had been refused as a plain table without --tau0 and --as (gap) or --kind (allan): exit 2,
     // asking for options that would not have helped.
@@ -199,12 +230,14 @@ TEST(ExitCodes, NoCommandWritesOverTheFileItReads) {
 // the image (exit 3) and the port (exit 4) first, and quotes a path the shell would split.
 TEST(ExitCodes, FlashDryRunChecksTheImageAndThePortFirst) {
     TempDir dir("exitflash");
-    const RunResult no_image = run_driftlab({"flash", "--port", "/dev/null", "--hex", dir.file("none.hex"), "--dry-run"}, dir.path());
+    const RunResult no_image =
+        run_driftlab({"flash", "--port", "/dev/null", "--hex", dir.file("none.hex"), "--dry-run"}, dir.path());
     EXPECT_EQ(no_image.exit_code, 3) << no_image.output;
     EXPECT_NE(no_image.output.find("none.hex: firmware image not found"), std::string::npos) << no_image.output;
     const std::string hex = dir.file("my fw.hex");
     std::ofstream(hex) << ":00000001FF\n";
-    const RunResult no_port = run_driftlab({"flash", "--port", dir.file("ttyNONE"), "--hex", hex, "--dry-run"}, dir.path());
+    const RunResult no_port =
+        run_driftlab({"flash", "--port", dir.file("ttyNONE"), "--hex", hex, "--dry-run"}, dir.path());
     EXPECT_EQ(no_port.exit_code, 4) << no_port.output;
     const RunResult dry = run_driftlab({"flash", "--port", "/dev/null", "--hex", hex, "--dry-run"}, dir.path());
     EXPECT_EQ(dry.exit_code, 0) << dry.output;
@@ -219,14 +252,17 @@ TEST(ExitCodes, FlashFromACopiedBinaryNamesHexInsteadOfADerivedPath) {
     std::filesystem::create_directories(dir.file("x"));
     const std::string copy = dir.file("x/driftlab");
     std::error_code ec;
-    std::filesystem::create_hard_link(DRIFTLAB_BIN, copy, ec);  // the binary is large; a link where the file system allows
+    std::filesystem::create_hard_link(DRIFTLAB_BIN, copy,
+                                      ec);  // the binary is large; a link where the file system allows
     if (ec) std::filesystem::copy_file(DRIFTLAB_BIN, copy);
     const std::string out = dir.file("flash.out");
     const RunResult r = wait_child(spawn_program(copy, {"flash", "--port", "/dev/null", "--dry-run"}, out), out);
     EXPECT_EQ(r.exit_code, 3) << r.output;
-    EXPECT_NE(r.output.find("driftlab_fw.hex: no default firmware image: it is looked for beside a build tree's driftlab "
-                            "(build/<preset>/bin/driftlab), and " + copy + " is not one (a copy, or installed); pass --hex FILE"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find("driftlab_fw.hex: no default firmware image: it is looked for beside a build tree's driftlab "
+                      "(build/<preset>/bin/driftlab), and " +
+                      copy + " is not one (a copy, or installed); pass --hex FILE"),
+        std::string::npos)
         << r.output;
     EXPECT_EQ(r.output.find("/avr/firmware/"), std::string::npos) << r.output;
 }
@@ -244,8 +280,7 @@ TEST(ExitCodes, AStandardOutputThatCannotBeWrittenIsADeviceError) {
     TempDir dir("exitfull");
     const RunResult full = run_driftlab_stdout_to({"effects"}, "/dev/full", dir.path());
     EXPECT_EQ(full.exit_code, 4) << full.output;
-    EXPECT_NE(full.output.find("driftlab: error: writing the standard output: "), std::string::npos)
-        << full.output;
+    EXPECT_NE(full.output.find("driftlab: error: writing the standard output: "), std::string::npos) << full.output;
     EXPECT_EQ(run_driftlab_stdout_to({"effects"}, "/dev/null", dir.path()).exit_code, 0);
 }
 

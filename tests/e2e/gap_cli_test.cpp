@@ -65,7 +65,8 @@ TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
     // The terminal output says why: nothing located, nothing to explain.
     const RunResult text = run_driftlab({"gap", log, "--replicates", "16"}, dir.path());
     ASSERT_EQ(text.exit_code, 0) << text.output;
-    EXPECT_NE(text.output.find("verdict: none (no cell located and the held-out score within its bound"), std::string::npos)
+    EXPECT_NE(text.output.find("verdict: none (no cell located and the held-out score within its bound"),
+              std::string::npos)
         << text.output;
 }
 
@@ -75,49 +76,68 @@ TEST(GapCli, TheSimulatorsOwnHilLogHasNoGap) {
 TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     TempDir dir("gapmodelout");
     {
-        std::ofstream(dir.file("unit.toml")) << "[effects.ambient_cycle]\nwaveform = \"sine\"\namplitude_k_pp = 2.0\nperiod_s = 400.0\n"
-                                                "lag_s = 0.0\ncoupling_dps_per_k = 0.05\n";
+        std::ofstream(dir.file("unit.toml"))
+            << "[effects.ambient_cycle]\nwaveform = \"sine\"\namplitude_k_pp = 2.0\nperiod_s = 400.0\n"
+               "lag_s = 0.0\ncoupling_dps_per_k = 0.05\n";
     }
-    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("unit.toml"), "--duration", "1500", "--seed", "3", "-o", dir.file("unit.csv")},
-                           dir.path()).exit_code, 0);
-    const RunResult gap = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "16", "--model-out", dir.file("fitted.toml"),
-                                        "--stability", "3", "--report", dir.file("report")}, dir.path());
+    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("unit.toml"), "--duration", "1500", "--seed", "3", "-o",
+                            dir.file("unit.csv")},
+                           dir.path())
+                  .exit_code,
+              0);
+    const RunResult gap = run_driftlab({"gap", dir.file("unit.csv"), "--replicates", "16", "--model-out",
+                                        dir.file("fitted.toml"), "--stability", "3", "--report", dir.file("report")},
+                                       dir.path());
     ASSERT_EQ(gap.exit_code, 0) << gap.output;
     EXPECT_NE(gap.output.find("verdict: ambient_cycle (on gyro it removes "), std::string::npos) << gap.output;
     // Its shrink is the gyro's own held-out score's, which the line says, beside the whole log's in the gap line.
-    EXPECT_NE(gap.output.find(" % of gyro's own held-out gap excess (gyro's held-out score "), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find(" % of gyro's own held-out gap excess (gyro's held-out score "), std::string::npos)
+        << gap.output;
     // The candidate list starts with the effects added, in step order.
     const std::size_t candidates = gap.output.find("\ncandidates (");
     ASSERT_NE(candidates, std::string::npos) << gap.output;
-    EXPECT_EQ(gap.output.find("\n  1 ambient_cycle      gyro     ADDED", candidates), gap.output.find('\n', candidates + 1)) << gap.output;
+    EXPECT_EQ(gap.output.find("\n  1 ambient_cycle      gyro     ADDED", candidates),
+              gap.output.find('\n', candidates + 1))
+        << gap.output;
     // The cycle locates more cells than the terminal lists: it shows the 15 largest and counts the rest; the report
     // lists every one.
     const std::size_t at = gap.output.find("located cells (|z| > ");
     ASSERT_NE(at, std::string::npos) << gap.output;
     const std::size_t located = std::stoul(gap.output.substr(gap.output.find("): ", at) + 3));
     ASSERT_GT(located, 15u) << gap.output;
-    EXPECT_NE(gap.output.find("  ... and " + std::to_string(located - 15) + " more with smaller |z|"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("  ... and " + std::to_string(located - 15) + " more with smaller |z|"),
+              std::string::npos)
+        << gap.output;
     {
         std::ifstream report(dir.file("report/gap.md"));
         const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
         const std::size_t table = md.find("## Where: located cells");
         ASSERT_NE(table, std::string::npos) << md.substr(0, 600);
         std::size_t rows = 0;
-        for (std::size_t line = md.find("\n| ", table); line < md.find("cells located before", table); line = md.find("\n| ", line + 1)) ++rows;
+        for (std::size_t line = md.find("\n| ", table); line < md.find("cells located before", table);
+             line = md.find("\n| ", line + 1))
+            ++rows;
         EXPECT_EQ(rows, located + 1) << md.substr(table, 3000);  // and the header row
         // The report shows the stability logs' estimates under the terminal's heading, as a list.
-        const std::size_t heading = md.find("Estimates on those logs (middle 68 %, where each added the effect again):\n\n- ambient_cycle on gyro (3 of 3 logs)");
+        const std::size_t heading = md.find(
+            "Estimates on those logs (middle 68 %, where each added the effect again):\n\n- ambient_cycle on gyro (3 "
+            "of 3 logs)");
         EXPECT_NE(heading, std::string::npos) << md.substr(0, 1500);
     }
     // A cycle this clear is read again in every log the fitted model makes.
-    EXPECT_NE(gap.output.find("of 3 logs simulated from the estimated model and diagnosed alike, 3 (100 %) are called ambient_cycle"),
-              std::string::npos) << gap.output;
+    EXPECT_NE(
+        gap.output.find(
+            "of 3 logs simulated from the estimated model and diagnosed alike, 3 (100 %) are called ambient_cycle"),
+        std::string::npos)
+        << gap.output;
     // Each of them estimates the cycle's period again near the model's, the unit's 400 s.
     const std::size_t spread = gap.output.find("ambient_cycle on gyro (3 of 3 logs): amplitude_dps ");
     ASSERT_NE(spread, std::string::npos) << gap.output;
     double estimate = 0.0, low = 0.0, high = 0.0, median = 0.0;
-    ASSERT_EQ(std::sscanf(gap.output.c_str() + gap.output.find("period_s ", spread), "period_s %lf -> %lf to %lf (median %lf)", &estimate, &low,
-                          &high, &median), 4) << gap.output;
+    ASSERT_EQ(std::sscanf(gap.output.c_str() + gap.output.find("period_s ", spread),
+                          "period_s %lf -> %lf to %lf (median %lf)", &estimate, &low, &high, &median),
+              4)
+        << gap.output;
     EXPECT_NEAR(estimate, 400.0, 20.0);
     EXPECT_LE(low, median);
     EXPECT_LE(median, high);
@@ -128,7 +148,8 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
         // The file says how sure its estimates are, when --stability ran.
         std::ifstream file(dir.file("fitted.toml"));
         const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-        EXPECT_NE(text.find("#   ambient_cycle on gyro (3 of 3 logs): amplitude_dps "), std::string::npos) << text.substr(0, 1200);
+        EXPECT_NE(text.find("#   ambient_cycle on gyro (3 of 3 logs): amplitude_dps "), std::string::npos)
+            << text.substr(0, 1200);
     }
     const sim::SimModel fitted = sim::load_model_file(dir.file("fitted.toml"));
     const sim::SimModel paper = sim::paper_model();
@@ -136,24 +157,30 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     EXPECT_EQ(fitted.effects[0].name, "ambient_cycle");
     EXPECT_NEAR(fitted.effects[0].table["period_s"].value_or(0.0), 400.0, 20.0);
     // Amplitude in deg/s: coupling times half the peak-to-peak swing, 0.05 for the unit.
-    EXPECT_NEAR(fitted.effects[0].table["coupling_dps_per_k"].value_or(0.0) * fitted.effects[0].table["amplitude_k_pp"].value_or(0.0) / 2.0,
+    EXPECT_NEAR(fitted.effects[0].table["coupling_dps_per_k"].value_or(0.0) *
+                    fitted.effects[0].table["amplitude_k_pp"].value_or(0.0) / 2.0,
                 0.05, 0.005);
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         EXPECT_NEAR(fitted.channels[i].drift.c2_counts, paper.channels[i].drift.c2_counts, 1.0) << kChannelNames[i];
-        EXPECT_NEAR(fitted.channels[i].raw_noise_std_unit / paper.channels[i].raw_noise_std_unit, 1.0, 0.1) << kChannelNames[i];
+        EXPECT_NEAR(fitted.channels[i].raw_noise_std_unit / paper.channels[i].raw_noise_std_unit, 1.0, 0.1)
+            << kChannelNames[i];
     }
     EXPECT_EQ(std::memcmp(&fitted.firmware, &paper.firmware, sizeof paper.firmware), 0) << "the log's own smoothing";
 
     // Given back to gap as the unit, on a log of the same unit whose cycle has another phase (another power-on), the
     // file's cycle is refitted to that log and nothing is missing.
     {
-        std::ofstream(dir.file("later.toml")) << "[effects.ambient_cycle]\nwaveform = \"sine\"\namplitude_k_pp = 2.0\nperiod_s = 400.0\n"
-                                                 "lag_s = 0.0\nphase_rad = 2.0\ncoupling_dps_per_k = 0.05\n";
+        std::ofstream(dir.file("later.toml"))
+            << "[effects.ambient_cycle]\nwaveform = \"sine\"\namplitude_k_pp = 2.0\nperiod_s = 400.0\n"
+               "lag_s = 0.0\nphase_rad = 2.0\ncoupling_dps_per_k = 0.05\n";
     }
-    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("later.toml"), "--duration", "1500", "--seed", "5", "-o", dir.file("later.csv")},
-                           dir.path()).exit_code, 0);
-    const RunResult as_unit = run_driftlab({"gap", dir.file("later.csv"), "--replicates", "16", "--model", dir.file("fitted.toml"), "--json"},
-                                           dir.path());
+    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("later.toml"), "--duration", "1500", "--seed", "5", "-o",
+                            dir.file("later.csv")},
+                           dir.path())
+                  .exit_code,
+              0);
+    const RunResult as_unit = run_driftlab(
+        {"gap", dir.file("later.csv"), "--replicates", "16", "--model", dir.file("fitted.toml"), "--json"}, dir.path());
     ASSERT_EQ(as_unit.exit_code, 0) << as_unit.output;
     const auto u = nlohmann::json::parse(as_unit.output);
     EXPECT_EQ(u["verdict"], "none") << u["located"].dump();
@@ -162,8 +189,11 @@ TEST(GapCli, TheModelFileOutSimulatesTheUnitTheLogCameFrom) {
     EXPECT_NEAR(u["given"]["refitted"][0]["params"]["period_s"].get<double>(), 400.0, 20.0);
     EXPECT_NEAR(u["given"]["refitted"][0]["params"]["phase_rad"].get<double>(), 2.0, 0.3);
 
-    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("fitted.toml"), "--duration", "1500", "--seed", "4", "-o", dir.file("again.csv")},
-                           dir.path()).exit_code, 0);
+    ASSERT_EQ(run_driftlab({"hil", "--model", dir.file("fitted.toml"), "--duration", "1500", "--seed", "4", "-o",
+                            dir.file("again.csv")},
+                           dir.path())
+                  .exit_code,
+              0);
     const RunResult again = run_driftlab({"gap", dir.file("again.csv"), "--replicates", "16", "--json"}, dir.path());
     ASSERT_EQ(again.exit_code, 0) << again.output;
     const auto j = nlohmann::json::parse(again.output);
@@ -199,12 +229,12 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
         for (int k = 0; k < 24000; ++k)
             out << 0.00875 * std::round((0.5 * (1.0 - std::exp(-k * 0.01 / 60.0)) + noise(rng)) / 0.00875) << "\n";
     }
-    const RunResult gap = run_driftlab(
-        {"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40", "--replicates", "12", "--locate-only", "--json"},
-        dir.path());
+    const RunResult gap = run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40",
+                                        "--replicates", "12", "--locate-only", "--json"},
+                                       dir.path());
     ASSERT_EQ(gap.exit_code, 0) << gap.output;
     const auto j = nlohmann::json::parse(gap.output);
-    EXPECT_EQ(j["verdict"], "none");  // --locate-only: nothing is explained
+    EXPECT_EQ(j["verdict"], "none");                           // --locate-only: nothing is explained
     EXPECT_TRUE(j["located"].empty()) << j["located"].dump();  // white noise on eq. 1's own shape: no gap
     // Only the mapped channel varies and is analysed; the blocks are the smoother. The others are not in the
     // recording, so they are not reported as stuck.
@@ -214,20 +244,23 @@ TEST(GapCli, APlainRecordingRunsThroughItsColumnMapping) {
     EXPECT_DOUBLE_EQ(j["calibration"]["sample_period_s"].get<double>(), 0.4);
 
     // A model file of this unit needs a firmware that smooths as the log did: 12.5 ms is no whole millisecond.
-    const RunResult odd = run_driftlab({"gap", table, "--tau0", "0.0125", "--as", "gyro=col1:0.00875", "--model-out", dir.file("m.toml")},
-                                       dir.path());
+    const RunResult odd = run_driftlab(
+        {"gap", table, "--tau0", "0.0125", "--as", "gyro=col1:0.00875", "--model-out", dir.file("m.toml")}, dir.path());
     EXPECT_EQ(odd.exit_code, 3) << odd.output;
-    EXPECT_NE(odd.output.find("rate.txt: --model-out: the log's smoothing (output period 12.5 ms"), std::string::npos) << odd.output;
+    EXPECT_NE(odd.output.find("rate.txt: --model-out: the log's smoothing (output period 12.5 ms"), std::string::npos)
+        << odd.output;
     EXPECT_EQ(odd.output.find("verdict"), std::string::npos) << "refused before the diagnosis";
 
-    const RunResult unrecorded = run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--channel", "accel_x"},
-                                              dir.path());
+    const RunResult unrecorded =
+        run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--channel", "accel_x"}, dir.path());
     EXPECT_EQ(unrecorded.exit_code, 2) << unrecorded.output;
-    EXPECT_NE(unrecorded.output.find("--channel accel_x: " + table + " does not record it"), std::string::npos) << unrecorded.output;
-    const RunResult unknown = run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--channel", "accel"},
-                                           dir.path());
+    EXPECT_NE(unrecorded.output.find("--channel accel_x: " + table + " does not record it"), std::string::npos)
+        << unrecorded.output;
+    const RunResult unknown =
+        run_driftlab({"gap", table, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--channel", "accel"}, dir.path());
     EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
-    EXPECT_NE(unknown.output.find("--channel: unknown channel 'accel' (gyro, accel_x, accel_y, accel_z)"), std::string::npos)
+    EXPECT_NE(unknown.output.find("--channel: unknown channel 'accel' (gyro, accel_x, accel_y, accel_z)"),
+              std::string::npos)
         << unknown.output;
 
     const RunResult unmapped = run_driftlab({"gap", table}, dir.path());
@@ -250,11 +283,14 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
         f[3] = "512";
         if (row >= 99 && row < 104) f[7] = "10";  // accel_x (not analysed) and accel_z saturated
     });
-    const RunResult text = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--report", dir.file("report")}, dir.path());
+    const RunResult text =
+        run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--report", dir.file("report")}, dir.path());
     ASSERT_EQ(text.exit_code, 0) << text.output;
-    EXPECT_NE(text.output.find("not analysed: accel_x at 512 counts in every row: a channel that never changes"), std::string::npos)
+    EXPECT_NE(text.output.find("not analysed: accel_x at 512 counts in every row: a channel that never changes"),
+              std::string::npos)
         << text.output;
-    EXPECT_NE(text.output.find("saturated: accel_z in 5 rows from t = 100.1 s to 104.1 s"), std::string::npos) << text.output;
+    EXPECT_NE(text.output.find("saturated: accel_z in 5 rows from t = 100.1 s to 104.1 s"), std::string::npos)
+        << text.output;
     std::ifstream report(dir.file("report/gap.md"));
     const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
     EXPECT_NE(md.find("Not analysed: accel_x at 512 counts in every row"), std::string::npos) << md.substr(0, 600);
@@ -275,8 +311,9 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
     EXPECT_NEAR(j["saturated"][0]["first_t_s"].get<double>(), 100.1, 0.5);  // the 100th row, at 1 s per row
     EXPECT_NEAR(j["saturated"][0]["last_t_s"].get<double>(), 104.1, 0.5);
     // The user leaves the disturbed start out: from 110 s on nothing is flagged.
-    const SplitRun later = run_driftlab_split({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--from", "110",
-                                               "--model-out", dir.file("later.toml")}, dir.path());
+    const SplitRun later = run_driftlab_split({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--from",
+                                               "110", "--model-out", dir.file("later.toml")},
+                                              dir.path());
     ASSERT_EQ(later.exit_code, 0) << later.err;
     EXPECT_TRUE(nlohmann::json::parse(later.out)["saturated"].empty()) << later.out;
     // What the range kept, beside the JSON as fit and allan say it (rows 1 s apart from 1.098 s to 400.098 s).
@@ -285,20 +322,25 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
         std::ifstream file(dir.file("later.toml"));
         std::string first;
         std::getline(file, first);
-        EXPECT_EQ(first.rfind("# driftlab gap " + stuck + " (rows from 110.098 s to 400.098 s): verdict ", 0), 0u) << first;  // the rows it came from
+        EXPECT_EQ(first.rfind("# driftlab gap " + stuck + " (rows from 110.098 s to 400.098 s): verdict ", 0), 0u)
+            << first;  // the rows it came from
     }
     // Spelled as fit's --t-min/--t-max, the same range.
     const RunResult outside = run_driftlab({"gap", stuck, "--t-min", "500", "--t-max", "600"}, dir.path());
     EXPECT_EQ(outside.exit_code, 3) << outside.output;
-    EXPECT_NE(outside.output.find("stuck.csv: no row lies between 500 s and 600 s (its rows run from "), std::string::npos) << outside.output;
+    EXPECT_NE(outside.output.find("stuck.csv: no row lies between 500 s and 600 s (its rows run from "),
+              std::string::npos)
+        << outside.output;
     EXPECT_EQ(run_driftlab({"gap", stuck, "--from", "300", "--to", "200"}, dir.path()).exit_code, 2);
     // Channels not selected are not reported; the stuck one selected alone leaves nothing to compare.
-    const RunResult gyro = run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--channel", "gyro"}, dir.path());
+    const RunResult gyro =
+        run_driftlab({"gap", stuck, "--replicates", "10", "--locate-only", "--json", "--channel", "gyro"}, dir.path());
     ASSERT_EQ(gyro.exit_code, 0) << gyro.output;
     EXPECT_TRUE(nlohmann::json::parse(gyro.output)["constant_channels"].empty());
     const RunResult alone = run_driftlab({"gap", stuck, "--channel", "accel_x"}, dir.path());
     EXPECT_EQ(alone.exit_code, 3) << alone.output;
-    EXPECT_NE(alone.output.find("stuck.csv: no selected channel varies (accel_x at 512 counts in every row)"), std::string::npos)
+    EXPECT_NE(alone.output.find("stuck.csv: no selected channel varies (accel_x at 512 counts in every row)"),
+              std::string::npos)
         << alone.output;
 }
 
@@ -326,8 +368,9 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
     EXPECT_TRUE(j["left_out"].empty());
     // Left out (with a second left at the log's start): nothing located, nothing saturated, no frame lost.
     const std::string window = std::to_string(shock_from - 0.5) + ":" + std::to_string(shock_to + 0.5);
-    const RunResult without = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--json", "--exclude", window,
-                                            "--exclude", "0:1.5", "--model-out", dir.file("m.toml")}, dir.path());
+    const RunResult without = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--json", "--exclude",
+                                            window, "--exclude", "0:1.5", "--model-out", dir.file("m.toml")},
+                                           dir.path());
     ASSERT_EQ(without.exit_code, 0) << without.output;
     const auto k = nlohmann::json::parse(without.output);
     EXPECT_TRUE(k["located"].empty()) << k["located"].dump();
@@ -345,7 +388,8 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
         EXPECT_NE(first.find(", without 0 s to 1.5 s and "), std::string::npos) << first;
     }
     // --exclude-saturated finds the same ten rows from their sat_flags, with its margin either side.
-    const RunResult flagged = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--json", "--exclude-saturated", "0.25"}, dir.path());
+    const RunResult flagged = run_driftlab(
+        {"gap", shock, "--replicates", "10", "--locate-only", "--json", "--exclude-saturated", "0.25"}, dir.path());
     ASSERT_EQ(flagged.exit_code, 0) << flagged.output;
     const auto s = nlohmann::json::parse(flagged.output);
     EXPECT_TRUE(s["located"].empty()) << s["located"].dump();
@@ -355,7 +399,8 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
     EXPECT_EQ(s["left_out"][0]["by"], "--exclude-saturated");
     EXPECT_NEAR(s["left_out"][0]["from_s"].get<double>(), shock_from - 0.25, 1e-6);
     EXPECT_NEAR(s["left_out"][0]["to_s"].get<double>(), shock_to + 0.25, 1e-6);
-    const RunResult text = run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--exclude", window}, dir.path());
+    const RunResult text =
+        run_driftlab({"gap", shock, "--replicates", "10", "--locate-only", "--exclude", window}, dir.path());
     EXPECT_NE(text.output.find("left out: 10 rows from t = "), std::string::npos) << text.output;
     // The option that left them out, not both names whichever it was.
     EXPECT_NE(text.output.find(" s (--exclude): the rows either side are joined"), std::string::npos) << text.output;
@@ -363,14 +408,17 @@ TEST(GapCli, AShockInTheMiddleIsLeftOutWithExclude) {
     // Mistakes are refused: a window with no row, a reversed one, text that is not FROM:TO.
     const RunResult empty = run_driftlab({"gap", shock, "--exclude", "300.2:300.3"}, dir.path());
     EXPECT_EQ(empty.exit_code, 3) << empty.output;
-    EXPECT_NE(empty.output.find("shock.csv: no row lies between 300.2 s and 300.3 s"), std::string::npos) << empty.output;
+    EXPECT_NE(empty.output.find("shock.csv: no row lies between 300.2 s and 300.3 s"), std::string::npos)
+        << empty.output;
     EXPECT_EQ(run_driftlab({"gap", shock, "--exclude", "400:300"}, dir.path()).exit_code, 2);
     const RunResult margin = run_driftlab({"gap", shock, "--exclude-saturated", "-1"}, dir.path());
     EXPECT_EQ(margin.exit_code, 2);
-    EXPECT_NE(margin.output.find("--exclude-saturated: expected a number >= 0, got '-1'"), std::string::npos) << margin.output;
+    EXPECT_NE(margin.output.find("--exclude-saturated: expected a number >= 0, got '-1'"), std::string::npos)
+        << margin.output;
     const RunResult bad = run_driftlab({"gap", shock, "--exclude", "300-310"}, dir.path());
     EXPECT_EQ(bad.exit_code, 2) << bad.output;
-    EXPECT_NE(bad.output.find("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '300-310'"), std::string::npos)
+    EXPECT_NE(bad.output.find("--exclude: expected FROM:TO in seconds since power-on (e.g. 600:640), got '300-310'"),
+              std::string::npos)
         << bad.output;
 }
 
@@ -435,8 +483,9 @@ TEST(GapCli, ACorruptRowIsWarnedWithTheWindowThatLeavesItOut) {
     EXPECT_EQ(without["left_out"][0]["rows"], 1);
 
     // After the first 100 s, which the report says it analysed (rows 1 s apart from t = 1.098 s).
-    const RunResult text = run_driftlab({"gap", corrupt, "--replicates", "10", "--locate-only", "--from", "100", "--report",
-                                         dir.file("report")}, dir.path());
+    const RunResult text = run_driftlab(
+        {"gap", corrupt, "--replicates", "10", "--locate-only", "--from", "100", "--report", dir.file("report")},
+        dir.path());
     ASSERT_EQ(text.exit_code, 0) << text.output;
     EXPECT_NE(text.output.find("\nwarning: gyro: " + warning + "\n"), std::string::npos) << text.output;
     const std::string md = read_text(dir.file("report/gap.md"));
@@ -469,9 +518,8 @@ TEST(GapCli, AStuckChannelWithACorruptRowOrTwoIsLeftOut) {
 
     // Two such rows had measured each other, and neither was named: a log's counts have a code, which bounds the step.
     const std::string twice = dir.file("twice.csv");
-    copy_log_editing_rows(log, twice, [](std::vector<std::string>& f, int row) {
-        f[3] = row == 749 || row == 1100 ? "1023" : "512";
-    });
+    copy_log_editing_rows(
+        log, twice, [](std::vector<std::string>& f, int row) { f[3] = row == 749 || row == 1100 ? "1023" : "512"; });
     const RunResult r2 = run_driftlab({"gap", twice, "--replicates", "10", "--locate-only", "--json"}, dir.path());
     ASSERT_EQ(r2.exit_code, 0) << r2.output;
     const auto j2 = nlohmann::json::parse(r2.output);
@@ -545,12 +593,14 @@ TEST(GapCli, ALogTheSimulatorCannotStandBesideIsRefusedNamingTheLine) {
     };
     const std::size_t period = line_of("# sample_period_s:");
     refused(variant("period.csv", [&](auto& v) { v[period] = "# sample_period_s: 10"; }),
-            "period.csv:" + std::to_string(period + 1) + ": metadata 'sample_period_s' is 10 s, but the rows are 1 s apart");
+            "period.csv:" + std::to_string(period + 1) +
+                ": metadata 'sample_period_s' is 10 s, but the rows are 1 s apart");
     const std::size_t bits = line_of("# adc_bits:");
     refused(variant("bits.csv", [&](auto& v) { v[bits] = "# adc_bits: 12"; }),
             "bits.csv:" + std::to_string(bits + 1) + ": adc_bits is 12, but the simulator's converter has 10 bits");
-    refused(variant("window.csv", [&](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(line_of("# window:"))); }),
-            "window.csv: the metadata lacks 'window'");
+    refused(
+        variant("window.csv", [&](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(line_of("# window:"))); }),
+        "window.csv: the metadata lacks 'window'");
     // Without adc_bits a value no 10-bit converter makes had calibrated the gyro to a spread of 1e95 counts and
     // answered "none".
     const std::size_t row = line_of("t_s,") + 10;
@@ -577,11 +627,13 @@ TEST(GapCli, APlainRecordingsTimeColumnMustAgreeWithTau0AndStartAtPowerOn) {
         return dir.file(name);
     };
     const std::string good = table("good.csv", 0.0);
-    const RunResult slow = run_driftlab({"gap", good, "--as", "gyro=gx:0.00875", "--tau0", "0.02", "--block", "10"}, dir.path());
+    const RunResult slow =
+        run_driftlab({"gap", good, "--as", "gyro=gx:0.00875", "--tau0", "0.02", "--block", "10"}, dir.path());
     EXPECT_EQ(slow.exit_code, 2) << slow.output;
-    EXPECT_NE(slow.output.find("--tau0 0.02 s, but the time column's rows are 0.01 s apart"), std::string::npos) << slow.output;
-    const RunResult early = run_driftlab({"gap", table("early.csv", -100.0), "--as", "gyro=gx:0.00875", "--tau0", "0.01", "--block", "10"},
-                                         dir.path());
+    EXPECT_NE(slow.output.find("--tau0 0.02 s, but the time column's rows are 0.01 s apart"), std::string::npos)
+        << slow.output;
+    const RunResult early = run_driftlab(
+        {"gap", table("early.csv", -100.0), "--as", "gyro=gx:0.00875", "--tau0", "0.01", "--block", "10"}, dir.path());
     EXPECT_EQ(early.exit_code, 3) << early.output;
     EXPECT_NE(early.output.find("early.csv:2: the time column starts at -100 s"), std::string::npos) << early.output;
 }
@@ -596,7 +648,8 @@ TEST(GapCli, AnUnusableReportFolderIsRefusedBeforeTheDiagnosis) {
     EXPECT_EQ(gap.exit_code, 4) << gap.output;
     EXPECT_NE(gap.output.find("hil.csv/report: cannot create the report folder"), std::string::npos) << gap.output;
     EXPECT_EQ(gap.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
-    const RunResult model = run_driftlab({"gap", log, "--replicates", "10", "--model-out", dir.file("absent/m.toml")}, dir.path());
+    const RunResult model =
+        run_driftlab({"gap", log, "--replicates", "10", "--model-out", dir.file("absent/m.toml")}, dir.path());
     EXPECT_EQ(model.exit_code, 4) << model.output;
     EXPECT_NE(model.output.find("absent/m.toml: cannot write the model file"), std::string::npos) << model.output;
     EXPECT_EQ(model.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
@@ -613,25 +666,31 @@ TEST(GapCli, NeitherTheModelFileNorTheLogIsWrittenOver) {
     const std::string model_text = "name = \"unit\"\n";
     std::ofstream(dir.file("m.toml")) << model_text;
     const RunResult model = run_driftlab({"gap", dir.file("x.csv"), "--model", dir.file("m.toml"), "--model-out",
-                                          (dir.path() / "." / "m.toml").string()}, dir.path());
+                                          (dir.path() / "." / "m.toml").string()},
+                                         dir.path());
     EXPECT_EQ(model.exit_code, 2) << model.output;
-    EXPECT_NE(model.output.find("--model-out: '" + (dir.path() / "." / "m.toml").string() + "' is the model file this command reads"),
-              std::string::npos) << model.output;
+    EXPECT_NE(model.output.find("--model-out: '" + (dir.path() / "." / "m.toml").string() +
+                                "' is the model file this command reads"),
+              std::string::npos)
+        << model.output;
     EXPECT_EQ(read_text(dir.file("m.toml")), model_text);
 
     std::filesystem::create_directory(dir.file("rep"));
     const std::string table = "t_s y\n0 1\n1 2\n";
     for (const std::string name : {"gap.md", "gap_mean_gyro.dat"}) {
         std::ofstream(dir.file("rep/" + name)) << table;
-        const RunResult log = run_driftlab({"gap", dir.file("rep/" + name), "--tau0", "1", "--report", dir.file("rep")}, dir.path());
+        const RunResult log =
+            run_driftlab({"gap", dir.file("rep/" + name), "--tau0", "1", "--report", dir.file("rep")}, dir.path());
         EXPECT_EQ(log.exit_code, 2) << name << ": " << log.output;
-        EXPECT_NE(log.output.find("--report: '" + dir.file("rep/" + name) + "' is the log this command reads"), std::string::npos)
+        EXPECT_NE(log.output.find("--report: '" + dir.file("rep/" + name) + "' is the log this command reads"),
+                  std::string::npos)
             << log.output;
         EXPECT_EQ(read_text(dir.file("rep/" + name)), table) << name;
     }
     std::ofstream(dir.file("rep/gap_adev_gyro.png")) << model_text;
-    const RunResult plot = run_driftlab({"gap", dir.file("x.csv"), "--model", dir.file("rep/gap_adev_gyro.png"), "--report",
-                                         dir.file("rep")}, dir.path());
+    const RunResult plot = run_driftlab(
+        {"gap", dir.file("x.csv"), "--model", dir.file("rep/gap_adev_gyro.png"), "--report", dir.file("rep")},
+        dir.path());
     EXPECT_EQ(plot.exit_code, 2) << plot.output;
     EXPECT_NE(plot.output.find("is the model file this command reads"), std::string::npos) << plot.output;
 }
@@ -644,19 +703,24 @@ TEST(GapCli, TheModelFileOutIsNoneOfTheReportsFiles) {
     const std::string log = dir.file("hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "-o", log}, dir.path()).exit_code, 0);
     const std::string not_yet = (dir.path() / "rep" / "." / "gap.md").string();
-    const RunResult fresh =
-        run_driftlab({"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out", not_yet}, dir.path());
+    const RunResult fresh = run_driftlab(
+        {"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out", not_yet}, dir.path());
     EXPECT_EQ(fresh.exit_code, 2) << fresh.output;
-    EXPECT_NE(fresh.output.find("--model-out: '" + not_yet + "' is a file --report writes ('" + dir.file("rep") + "/gap.md')"),
-              std::string::npos) << fresh.output;
+    EXPECT_NE(fresh.output.find("--model-out: '" + not_yet + "' is a file --report writes ('" + dir.file("rep") +
+                                "/gap.md')"),
+              std::string::npos)
+        << fresh.output;
     EXPECT_EQ(fresh.output.find("verdict"), std::string::npos) << "no diagnosis before the refusal";
     EXPECT_FALSE(std::filesystem::exists(dir.file("rep"))) << "nothing written";
     // The report's folder itself, spelt another way: a usage error (2), not an unwritable file (4) found later.
-    const RunResult folder =
-        run_driftlab({"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out", dir.file("rep") + "/"}, dir.path());
+    const RunResult folder = run_driftlab(
+        {"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out", dir.file("rep") + "/"},
+        dir.path());
     EXPECT_EQ(folder.exit_code, 2) << folder.output;
-    EXPECT_NE(folder.output.find("is the folder --report writes into; name a file, such as '" + dir.file("rep") + "/model.toml'"),
-              std::string::npos) << folder.output;
+    EXPECT_NE(folder.output.find("is the folder --report writes into; name a file, such as '" + dir.file("rep") +
+                                 "/model.toml'"),
+              std::string::npos)
+        << folder.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("rep"))) << "nothing written";
 
     std::filesystem::create_directory(dir.file("rep"));
@@ -664,13 +728,15 @@ TEST(GapCli, TheModelFileOutIsNoneOfTheReportsFiles) {
     const std::string plot = "an earlier plot\n";
     std::ofstream(dir.file("rep/gap_mean_accel_z.png")) << plot;
     const RunResult linked = run_driftlab({"gap", log, "--replicates", "10", "--report", dir.file("rep"), "--model-out",
-                                           dir.file("alias/gap_mean_accel_z.png")}, dir.path());
+                                           dir.file("alias/gap_mean_accel_z.png")},
+                                          dir.path());
     EXPECT_EQ(linked.exit_code, 2) << linked.output;
     EXPECT_NE(linked.output.find("is a file --report writes"), std::string::npos) << linked.output;
     EXPECT_EQ(read_text(dir.file("rep/gap_mean_accel_z.png")), plot);
 
-    const RunResult beside = run_driftlab({"gap", log, "--replicates", "10", "--locate-only", "--report", dir.file("rep"),
-                                           "--model-out", dir.file("alias/m.toml")}, dir.path());
+    const RunResult beside = run_driftlab({"gap", log, "--replicates", "10", "--locate-only", "--report",
+                                           dir.file("rep"), "--model-out", dir.file("alias/m.toml")},
+                                          dir.path());
     ASSERT_EQ(beside.exit_code, 0) << beside.output;
     EXPECT_TRUE(std::filesystem::exists(dir.file("rep/gap.md")));
     EXPECT_NE(read_text(dir.file("rep/m.toml")).find("# driftlab gap "), std::string::npos);
@@ -683,15 +749,18 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
     std::filesystem::create_directory(dir.file("rep"));
     const std::string log = dir.file("rep/hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "1500", "--seed", "3", "-o", log}, dir.path()).exit_code, 0);
-    const RunResult gap = run_driftlab({"gap", log, "--replicates", "16", "--locate-only", "--report", dir.file("rep")}, dir.path());
+    const RunResult gap =
+        run_driftlab({"gap", log, "--replicates", "16", "--locate-only", "--report", dir.file("rep")}, dir.path());
     ASSERT_EQ(gap.exit_code, 0) << gap.output;
     ASSERT_NE(gap.output.find("located cells (|z| > "), std::string::npos) << gap.output;
     ASSERT_NE(gap.output.find("and beyond the margin): 0\n"), std::string::npos) << gap.output;
     // A hil log's times are evenly spaced but for their rounding (1.5e-13 %), which had been printed as a spread.
-    EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the rows' period)\n"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("; row spacing constant (its sd below 1e-6 % of the rows' period)\n"), std::string::npos)
+        << gap.output;
     // 1500 s is under twice the paper's accelerometer T (about 950 s), not the gyro's (411 s): a `none` that says a
     // slow effect there would be in eq. 1's fit, for the accelerometers alone.
-    const std::size_t slow = gap.output.find("\nslow drift: the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = ");
+    const std::size_t slow =
+        gap.output.find("\nslow drift: the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = ");
     ASSERT_NE(slow, std::string::npos) << gap.output;
     const std::string slow_line = gap.output.substr(slow + 1, gap.output.find('\n', slow + 1) - slow - 1);
     EXPECT_NE(slow_line.find(" s on accel_"), std::string::npos) << slow_line;
@@ -700,8 +769,8 @@ TEST(GapCli, TheReportSaysNoneForAnEmptyTableAndDefinesItsWords) {
     EXPECT_NE(md.find("\n\nSlow drift: the paper's drift model, eq. 1"), std::string::npos) << md.substr(0, 800);
     const std::size_t guide = md.find("## How to read this report\n\n");
     ASSERT_NE(guide, std::string::npos) << md.substr(0, 800);
-    for (const char* word : {"*replicates*", "*battery*", "*cell*", "*located*", "*practical margin*", "*gap score*", "*held-out part*",
-                             "*Shrink*", "*Gain / penalty*", "*ΔIC*", "*level step*", "docs/gap.md"})
+    for (const char* word : {"*replicates*", "*battery*", "*cell*", "*located*", "*practical margin*", "*gap score*",
+                             "*held-out part*", "*Shrink*", "*Gain / penalty*", "*ΔIC*", "*level step*", "docs/gap.md"})
         EXPECT_NE(md.find(word, guide), std::string::npos) << word;
     EXPECT_NE(md.find("## Where: located cells (|z| > "), std::string::npos);
     EXPECT_NE(md.find("None: no cell lies beyond both.\n"), std::string::npos) << md;
@@ -718,7 +787,8 @@ TEST(GapCli, MaxEffectsStopsTheStepwiseSearchAfterThatManyEffects) {
     const std::string real = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt";
     if (!std::filesystem::exists(real)) GTEST_SKIP() << real << " not found (../shared is absent)";
     TempDir dir("gapmaxeffects");
-    const std::vector<std::string> args{"gap", real, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40", "--replicates", "16", "--json"};
+    const std::vector<std::string> args{"gap",     real, "--tau0",       "0.01", "--as",  "gyro=col1:0.00875",
+                                        "--block", "40", "--replicates", "16",   "--json"};
     const auto added = [](const nlohmann::json& j) {
         std::vector<nlohmann::json> out;
         for (const auto& e : j["explanations"])
@@ -761,18 +831,20 @@ TEST(GapCli, AStepTakenWithinTheBoundIsSaidSoOnTheTerminalAndInTheReport) {
     const std::string real = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/gyro2_x.txt";
     if (!std::filesystem::exists(real)) GTEST_SKIP() << real << " not found (../shared is absent)";
     TempDir dir("gapwithinbound");
-    const RunResult r = run_driftlab({"gap", real, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40", "--replicates",
-                                      "16", "--report", dir.file("rep")},
+    const RunResult r = run_driftlab({"gap", real, "--tau0", "0.01", "--as", "gyro=col1:0.00875", "--block", "40",
+                                      "--replicates", "16", "--report", dir.file("rep")},
                                      dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const std::string note = "added with the held-out score already within its bound";
     const std::size_t verdict_end = r.output.find('\n');
-    EXPECT_NE(r.output.substr(0, verdict_end).find(" on gyro (" + note + ")"), std::string::npos) << r.output.substr(0, verdict_end);
+    EXPECT_NE(r.output.substr(0, verdict_end).find(" on gyro (" + note + ")"), std::string::npos)
+        << r.output.substr(0, verdict_end);
     const std::size_t table = r.output.find("explanation (effects added in order");
     ASSERT_NE(table, std::string::npos) << r.output;
     const std::size_t step1 = r.output.find("\n  1 ", table), step2 = r.output.find("\n  2 ", table);
     ASSERT_NE(step2, std::string::npos) << r.output;
-    EXPECT_EQ(r.output.substr(step1, step2 - step1).find(note), std::string::npos) << "the first step is taken beyond the bound";
+    EXPECT_EQ(r.output.substr(step1, step2 - step1).find(note), std::string::npos)
+        << "the first step is taken beyond the bound";
     EXPECT_NE(r.output.substr(step2, r.output.find('\n', step2 + 1) - step2).find(note), std::string::npos) << r.output;
     const std::string md = read_text(dir.file("rep/gap.md"));
     EXPECT_NE(md.find(" (within its bound "), std::string::npos) << md;
@@ -782,16 +854,19 @@ TEST(GapCli, AStepTakenWithinTheBoundIsSaidSoOnTheTerminalAndInTheReport) {
 // a word, the report and the JSON still saying 0.6.
 TEST(GapCli, FitFractionIsRefusedWithoutTheForecastDesign) {
     TempDir dir("gapfitfraction");
-    for (const std::vector<std::string>& args : {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "0.7"},
-                                                 {"gap", "x.csv", "--fit-fraction", "0.7", "--holdout", "interleaved"}}) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"gap", "x.csv", "--fit-fraction", "0.7"},
+          {"gap", "x.csv", "--fit-fraction", "0.7", "--holdout", "interleaved"}}) {
         const RunResult r = run_driftlab(args, dir.path());
         EXPECT_EQ(r.exit_code, 2) << r.output;
-        EXPECT_NE(r.output.find("--fit-fraction sets where --holdout forecast splits the log"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("--fit-fraction sets where --holdout forecast splits the log"), std::string::npos)
+            << r.output;
     }
     const std::string log = dir.file("hil.csv");
     ASSERT_EQ(run_driftlab({"hil", "--duration", "400", "-o", log}, dir.path()).exit_code, 0);
-    const RunResult forecast = run_driftlab({"gap", log, "--holdout", "forecast", "--fit-fraction", "0.7", "--replicates", "10",
-                                             "--locate-only", "--json"}, dir.path());
+    const RunResult forecast = run_driftlab(
+        {"gap", log, "--holdout", "forecast", "--fit-fraction", "0.7", "--replicates", "10", "--locate-only", "--json"},
+        dir.path());
     ASSERT_EQ(forecast.exit_code, 0) << forecast.output;
     const auto j = nlohmann::json::parse(forecast.output);
     EXPECT_EQ(j["holdout"], "forecast");
@@ -803,7 +878,8 @@ TEST(GapEvalCli, AnUnusablePlotFolderIsRefusedBeforeTheRun) {
     TempDir dir("gapevalplot");
     const std::string blocker = dir.file("file");
     std::ofstream(blocker) << "not a folder\n";
-    const RunResult r = run_driftlab({"gap-eval", "--quick", "--effects", "thermal_rc", "--plot", blocker + "/plots"}, dir.path());
+    const RunResult r =
+        run_driftlab({"gap-eval", "--quick", "--effects", "thermal_rc", "--plot", blocker + "/plots"}, dir.path());
     EXPECT_EQ(r.exit_code, 4) << r.output;
     EXPECT_NE(r.output.find("cannot create the plot folder"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("| generator"), std::string::npos) << "no benchmark output before the refusal";
@@ -812,7 +888,8 @@ TEST(GapEvalCli, AnUnusablePlotFolderIsRefusedBeforeTheRun) {
 // --raw-clean makes the clean logs raw-mode: the scores say so, and the false-positive line names them.
 TEST(GapEvalCli, RawCleanLogsAreReportedAsRawMode) {
     TempDir dir("gapevalraw");
-    const std::vector<std::string> base{"gap-eval", "--clean-only", "--quick", "--seeds-score", "11..12", "--clean-per-seed", "2"};
+    const std::vector<std::string> base{"gap-eval", "--clean-only",     "--quick", "--seeds-score",
+                                        "11..12",   "--clean-per-seed", "2"};
     auto with = [&](std::vector<std::string> extra) {
         std::vector<std::string> args = base;
         args.insert(args.end(), extra.begin(), extra.end());
@@ -825,31 +902,39 @@ TEST(GapEvalCli, RawCleanLogsAreReportedAsRawMode) {
     EXPECT_TRUE(j["false_positive"]["raw_mode"].get<bool>());
     const RunResult plain = with({"--json"});
     ASSERT_EQ(plain.exit_code, 0) << plain.output;
-    EXPECT_FALSE(nlohmann::json::parse(plain.output.substr(plain.output.find('{')))["false_positive"]["raw_mode"].get<bool>());
+    EXPECT_FALSE(
+        nlohmann::json::parse(plain.output.substr(plain.output.find('{')))["false_positive"]["raw_mode"].get<bool>());
     const RunResult md = with({"--raw-clean"});
     EXPECT_NE(md.output.find("False-positive rate on clean raw-mode logs: "), std::string::npos) << md.output;
 }
 
-// --clean-only without --clean-per-seed takes as many clean logs per seed as the run has sizes (--quick: one), not none.
+// --clean-only without --clean-per-seed takes as many clean logs per seed as the run has sizes (--quick: one), not
+// none.
 TEST(GapEvalCli, CleanOnlyWithoutACountStillDiagnosesCleanLogs) {
     TempDir dir("gapevalclean");
-    const RunResult r = run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "11..13", "--json"}, dir.path());
+    const RunResult r =
+        run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "11..13", "--json"}, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_EQ(nlohmann::json::parse(r.output.substr(r.output.find('{')))["false_positive"]["clean"], 3);  // 3 seeds x 1 size
+    EXPECT_EQ(nlohmann::json::parse(r.output.substr(r.output.find('{')))["false_positive"]["clean"],
+              3);  // 3 seeds x 1 size
     // It tunes nothing, so scoring seeds among the default tuning ones (1..4) are no overlap.
-    const RunResult low = run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "1..2", "--json"}, dir.path());
+    const RunResult low =
+        run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "1..2", "--json"}, dir.path());
     ASSERT_EQ(low.exit_code, 0) << low.output;
     EXPECT_EQ(nlohmann::json::parse(low.output.substr(low.output.find('{')))["false_positive"]["clean"], 2);
 }
 
-// A seed range is two whole numbers in order, at most kMaxEvalSeed: "-1" is no number (not 2^64 - 1, which ran forever).
+// A seed range is two whole numbers in order, at most kMaxEvalSeed: "-1" is no number (not 2^64 - 1, which ran
+// forever).
 TEST(GapEvalCli, ASeedRangeOfNegativeOrHugeNumbersIsRefused) {
     TempDir dir("gapevalrange");
     for (const std::string range : {"101..-1", "-3..4", "1..2000000", "5..4", "1..2x", "..4"}) {
         const RunResult r = run_driftlab({"gap-eval", "--quick", "--seeds-score", range}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << range << ": " << r.output;
-        EXPECT_NE(r.output.find("--seeds-score: expected A..B with whole numbers 0 <= A <= B <= 1000000, got '" + range + "'"),
-                  std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("--seeds-score: expected A..B with whole numbers 0 <= A <= B <= 1000000, got '" +
+                                range + "'"),
+                  std::string::npos)
+            << r.output;
     }
 }
 
@@ -858,7 +943,8 @@ TEST(GapEvalCli, ASeedRangeOfNegativeOrHugeNumbersIsRefused) {
 TEST(GapEvalCli, ABadPairIsRefusedNamingIt) {
     TempDir dir("gapevalpairs");
     auto refused = [&](const std::string& pair, const std::string& message) {
-        const RunResult r = run_driftlab({"gap-eval", "--quick", "--effects", "thermostat", "--pairs", pair}, dir.path());
+        const RunResult r =
+            run_driftlab({"gap-eval", "--quick", "--effects", "thermostat", "--pairs", pair}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << pair << ": " << r.output;
         EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
         EXPECT_EQ(r.output.find("| generator"), std::string::npos) << "no benchmark output before the refusal";
@@ -872,7 +958,8 @@ TEST(GapEvalCli, ABadPairIsRefusedNamingIt) {
     // A misspelt name is answered with the names there are.
     const RunResult misspelt = run_driftlab({"gap-eval", "--quick", "--effects", "thermostatt"}, dir.path());
     EXPECT_EQ(misspelt.exit_code, 2) << misspelt.output;
-    for (const auto& t : host::gap::truth_list()) EXPECT_NE(misspelt.output.find(t.generator), std::string::npos) << t.generator;
+    for (const auto& t : host::gap::truth_list())
+        EXPECT_NE(misspelt.output.find(t.generator), std::string::npos) << t.generator;
 }
 
 }  // namespace

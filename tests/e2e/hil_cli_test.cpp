@@ -3,8 +3,8 @@
 // faster than the paper's 9600-baud radio (sim/models/hundred_hz.toml).
 #include <gtest/gtest.h>
 
-#include <csignal>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,16 +16,16 @@
 #include "e2e_support.hpp"
 #include "host/log/log_reader.hpp"
 
-
 namespace driftlab::e2e {
 namespace {
 
 TEST(HilCli, ConversionsPerOutputMakesA100HzLogPossible) {
     TempDir dir("hil100");
     const std::string out = dir.file("h100.csv");
-    const RunResult r = run_driftlab(
-        {"hil", "--model", std::string(DRIFTLAB_SOURCE_DIR) + "/sim/models/hundred_hz.toml", "--duration", "2",
-         "--conversions", "6", "--window", "6", "-o", out}, dir.path());
+    const RunResult r =
+        run_driftlab({"hil", "--model", std::string(DRIFTLAB_SOURCE_DIR) + "/sim/models/hundred_hz.toml", "--duration",
+                      "2", "--conversions", "6", "--window", "6", "-o", out},
+                     dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const host::LogData log = host::read_log(out);
     EXPECT_EQ(log.metadata.get_int("conversions_per_output"), 6);
@@ -107,11 +107,14 @@ TEST(HilCli, AModelFilesFirmwareIsCheckedWithTheOptionsOverIt) {
     const RunResult too_many =
         run_driftlab({"hil", "--model", model, "--conversions", "30", "--duration", "1", "-o", out}, dir.path());
     EXPECT_EQ(too_many.exit_code, 5) << too_many.output;
-    EXPECT_NE(too_many.output.find("conversions_per_output 30) gives a conversion period of 21 ticks"), std::string::npos)
+    EXPECT_NE(too_many.output.find("conversions_per_output 30) gives a conversion period of 21 ticks"),
+              std::string::npos)
         << too_many.output;
-    EXPECT_NE(too_many.output.find("on the configuration that would run: the file's firmware fields with any the preset or "
-                                   "the command line sets over them"),
-              std::string::npos) << too_many.output;
+    EXPECT_NE(
+        too_many.output.find("on the configuration that would run: the file's firmware fields with any the preset or "
+                             "the command line sets over them"),
+        std::string::npos)
+        << too_many.output;
 }
 
 // With --pty the recorder configures the board, which boots with the firmware's defaults: a model file's [firmware]
@@ -121,8 +124,8 @@ TEST(HilCli, PtyServesWhateverTheModelsFirmwareSectionAndOutputPeriodSay) {
     TempDir dir("hilptyfw");
     const auto [model, simulated] = plain_hil_with_model(dir, "ten_ms.toml", kTenMsOutputsModel);
     ASSERT_EQ(simulated.exit_code, 5) << simulated.output;  // the check still holds where the file configures the board
-    const RunResult served = run_driftlab({"hil", "--pty", "--model", model, "--speed", "10", "--duration", "1"},
-                                          dir.path());
+    const RunResult served =
+        run_driftlab({"hil", "--pty", "--model", model, "--speed", "10", "--duration", "1"}, dir.path());
     EXPECT_EQ(served.exit_code, 0) << served.output;
     EXPECT_NE(served.output.find("note: " + model + ": [firmware] is not applied with --pty"), std::string::npos)
         << served.output;
@@ -143,7 +146,8 @@ TEST(HilCli, JitterThatWouldReorderConversionsIsAConfigurationErrorNamingTheFile
     TempDir dir("hiljitter");
     const std::string model = dir.file("j.toml");
     std::ofstream(model) << "[effects.gauss_markov]\nsigma_dps = 0.2\n\n[effects.clock_jitter]\njitter_s = 0.01\n";
-    const RunResult r = run_driftlab({"hil", "--model", model, "--duration", "60", "-o", dir.file("h.csv")}, dir.path());
+    const RunResult r =
+        run_driftlab({"hil", "--model", model, "--duration", "60", "-o", dir.file("h.csv")}, dir.path());
     EXPECT_EQ(r.exit_code, 5) << r.output;
     EXPECT_NE(r.output.find("j.toml:5: effects.clock_jitter.jitter_s"), std::string::npos) << r.output;
 }
@@ -158,11 +162,11 @@ TEST(HilCli, AnOutputRateTheLinkCannotCarryIsBlamedOnWhereThePeriodCameFrom) {
     EXPECT_NE(file.output.find("fast.toml: link.baud: the link (link.baud 9600"), std::string::npos) << file.output;
     const std::string slow = dir.file("slow.toml");
     std::ofstream(slow) << "[firmware]\nconversions_per_output = 5\n";
-    const RunResult option =
-        run_driftlab({"hil", "--model", slow, "--period", "0.02", "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
+    const RunResult option = run_driftlab(
+        {"hil", "--model", slow, "--period", "0.02", "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
     EXPECT_EQ(option.exit_code, 2) << option.output;
-    const RunResult no_file =
-        run_driftlab({"hil", "--period", "0.02", "--conversions", "5", "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
+    const RunResult no_file = run_driftlab(
+        {"hil", "--period", "0.02", "--conversions", "5", "--duration", "1", "-o", dir.file("h.csv")}, dir.path());
     EXPECT_EQ(no_file.exit_code, 2) << no_file.output;
 }
 
@@ -171,8 +175,8 @@ TEST(HilCli, AnOutputRateTheLinkCannotCarryIsBlamedOnWhereThePeriodCameFrom) {
 TEST(HilCli, ALogOnStandardOutputReadsBack) {
     TempDir dir("hilstdout");
     const std::string log = dir.file("piped.csv");
-    const std::string command = std::string("'") + DRIFTLAB_BIN + "' hil --duration 30 -o - > '" + log + "' 2> '" +
-                                dir.file("err.txt") + "'";
+    const std::string command =
+        std::string("'") + DRIFTLAB_BIN + "' hil --duration 30 -o - > '" + log + "' 2> '" + dir.file("err.txt") + "'";
     ASSERT_EQ(std::system(command.c_str()), 0);
     const host::LogData read = host::read_log(log);
     EXPECT_EQ(read.size(), 30u);
@@ -184,8 +188,11 @@ TEST(HilCli, ALogOnStandardOutputReadsBack) {
 // their RAW frame was lost (only the JSON had them, so 600 outputs -> 569 rows did not add up from the text).
 TEST(HilCli, TheSummarySaysWhereTheMissingRowsWent) {
     TempDir dir("hilsummary");
-    const std::vector<std::string> run = {"hil", "--model", std::string(DRIFTLAB_SOURCE_DIR) + "/sim/models/lossy_radio.toml",
-                                          "--raw", "--stream", "--duration", "600", "--seed", "3", "-o", dir.file("l.csv")};
+    const std::vector<std::string> run = {
+        "hil",   "--model",        std::string(DRIFTLAB_SOURCE_DIR) + "/sim/models/lossy_radio.toml",
+        "--raw", "--stream",       "--duration",
+        "600",   "--seed",         "3",
+        "-o",    dir.file("l.csv")};
     std::vector<std::string> with_json = run;
     with_json.push_back("--json");
     const RunResult js = run_driftlab(with_json, dir.path());
@@ -196,13 +203,16 @@ TEST(HilCli, TheSummarySaysWhereTheMissingRowsWent) {
     ASSERT_GT(j["link"]["to_host"]["packets_lost"].get<std::uint64_t>(), 0u);
     const RunResult r = run_driftlab(run, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_NE(r.output.find("wrote " + std::to_string(j["rows"].get<std::uint64_t>()) + " rows to " + dir.file("l.csv") +
-                            " (" + std::to_string(missing_raw) + " samples not logged: their RAW frame was lost)"),
-              std::string::npos) << r.output;
+    EXPECT_NE(
+        r.output.find("wrote " + std::to_string(j["rows"].get<std::uint64_t>()) + " rows to " + dir.file("l.csv") +
+                      " (" + std::to_string(missing_raw) + " samples not logged: their RAW frame was lost)"),
+        std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find(std::to_string(j["link"]["to_host"]["packets_damaged"].get<std::uint64_t>()) +
-                            " frames damaged (" + std::to_string(j["link"]["to_host"]["packets_lost"].get<std::uint64_t>()) +
-                            " lost whole)"),
-              std::string::npos) << r.output;
+                            " frames damaged (" +
+                            std::to_string(j["link"]["to_host"]["packets_lost"].get<std::uint64_t>()) + " lost whole)"),
+              std::string::npos)
+        << r.output;
 }
 
 // --cycles profiles a separate short streaming run, not the run the log came from (a polled fig2 run showed its
@@ -216,10 +226,12 @@ TEST(HilCli, TheCycleBudgetSaysItIsASeparateStreamingRun) {
     if (elf.empty() || !std::filesystem::exists(elf)) GTEST_SKIP() << "AVR firmware ELF not built: '" << elf << "'";
     TempDir dir("hilcycles");
     const RunResult r = run_driftlab(
-        {"hil", "--target", "avr", "--preset", "fig2", "--duration", "2", "--cycles", "-o", dir.file("c.csv")}, dir.path());
+        {"hil", "--target", "avr", "--preset", "fig2", "--duration", "2", "--cycles", "-o", dir.file("c.csv")},
+        dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("measured in a separate run of this configuration: 5 s of streaming after 0.5 s"),
-              std::string::npos) << r.output;
+              std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("adc_isr               5000 calls"), std::string::npos) << r.output;  // 1000/s for 5 s
 }
 
@@ -245,8 +257,12 @@ TEST(HilCli, OptionsThatWouldBeIgnoredOrWrappedAreRefused) {
     }
     EXPECT_FALSE(std::filesystem::exists(out));
     // On a pseudo-terminal the recorder configures the board: the firmware options had been ignored there.
-    for (const std::vector<std::string>& extra : std::vector<std::vector<std::string>>{
-             {"--period", "0.5"}, {"--window", "3"}, {"--conversions", "5"}, {"--order", "1"}, {"--raw"}, {"--stream"}}) {
+    for (const std::vector<std::string>& extra : std::vector<std::vector<std::string>>{{"--period", "0.5"},
+                                                                                       {"--window", "3"},
+                                                                                       {"--conversions", "5"},
+                                                                                       {"--order", "1"},
+                                                                                       {"--raw"},
+                                                                                       {"--stream"}}) {
         std::vector<std::string> args = {"hil", "--pty", "--duration", "1"};
         args.insert(args.end(), extra.begin(), extra.end());
         const RunResult r = run_driftlab(args, dir.path());
@@ -255,11 +271,13 @@ TEST(HilCli, OptionsThatWouldBeIgnoredOrWrappedAreRefused) {
             << r.output;
     }
     // A folder given as the model had run the paper's model under the folder's name, exit 0.
-    const RunResult folder = run_driftlab({"hil", "--model", dir.path().string(), "--duration", "2", "-o", out}, dir.path());
+    const RunResult folder =
+        run_driftlab({"hil", "--model", dir.path().string(), "--duration", "2", "-o", out}, dir.path());
     EXPECT_EQ(folder.exit_code, 5) << folder.output;
     EXPECT_NE(folder.output.find("is a folder, not a model file"), std::string::npos) << folder.output;
     EXPECT_FALSE(std::filesystem::exists(out));
-    const RunResult largest = run_driftlab({"hil", "--duration", "2", "--seed", "18446744073709551615", "-o", out}, dir.path());
+    const RunResult largest =
+        run_driftlab({"hil", "--duration", "2", "--seed", "18446744073709551615", "-o", out}, dir.path());
     EXPECT_EQ(largest.exit_code, 0) << largest.output;
 }
 

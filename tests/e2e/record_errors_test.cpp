@@ -63,7 +63,8 @@ public:
         std::vector<std::uint8_t> out;
         for (std::size_t i = 0; i < n; ++i) {
             if (!decoder_.feed(in[i])) continue;
-            do answer(out); while (decoder_.next());
+            do answer(out);
+            while (decoder_.next());
         }
         return out;
     }
@@ -74,28 +75,28 @@ private:
         std::size_t size = 0;
         const std::uint16_t seq = seq_++;
         switch (decoder_.type()) {
-            case proto::MsgType::hello: {
-                proto::VersionPayload v{};
-                v.proto_version = proto::kProtocolVersion;
-                v.adc_bits = 10;
-                v.vref_mv = 5000;
-                v.tick_hz = 250000;
-                v.channel_count = 4;
-                size = proto::encode_version(v, seq, f, sizeof f);
-                break;
-            }
-            case proto::MsgType::status_get: size = proto::encode_status(proto::StatusPayload{}, seq, f, sizeof f); break;
-            case proto::MsgType::config_set:
-                EXPECT_TRUE(proto::parse(decoder_.payload(), decoder_.payload_len(), &config_));
-                size = proto::encode_ack({decoder_.type_id(), decoder_.seq()}, seq, f, sizeof f);
-                break;
-            case proto::MsgType::config_get: size = proto::encode_config(config_, seq, f, sizeof f); break;
-            case proto::MsgType::poll:
-                size = proto::encode_nak({decoder_.type_id(), decoder_.seq(),
-                                          static_cast<std::uint8_t>(proto::Status::not_allowed), proto::kNakFieldNone},
-                                         seq, f, sizeof f);
-                break;
-            default: break;
+        case proto::MsgType::hello: {
+            proto::VersionPayload v{};
+            v.proto_version = proto::kProtocolVersion;
+            v.adc_bits = 10;
+            v.vref_mv = 5000;
+            v.tick_hz = 250000;
+            v.channel_count = 4;
+            size = proto::encode_version(v, seq, f, sizeof f);
+            break;
+        }
+        case proto::MsgType::status_get: size = proto::encode_status(proto::StatusPayload{}, seq, f, sizeof f); break;
+        case proto::MsgType::config_set:
+            EXPECT_TRUE(proto::parse(decoder_.payload(), decoder_.payload_len(), &config_));
+            size = proto::encode_ack({decoder_.type_id(), decoder_.seq()}, seq, f, sizeof f);
+            break;
+        case proto::MsgType::config_get: size = proto::encode_config(config_, seq, f, sizeof f); break;
+        case proto::MsgType::poll:
+            size = proto::encode_nak({decoder_.type_id(), decoder_.seq(),
+                                      static_cast<std::uint8_t>(proto::Status::not_allowed), proto::kNakFieldNone},
+                                     seq, f, sizeof f);
+            break;
+        default: break;
         }
         out.insert(out.end(), f, f + size);
     }
@@ -129,9 +130,8 @@ TEST(RecordErrors, AnOutputFolderThatCannotBeMadeIsNamedBeforeThePort) {
     const RunResult log = run_driftlab({"record", "--port", port, "-o", dir.file("blocked/rec.csv")}, dir.path());
     EXPECT_EQ(log.exit_code, kDeviceErrorExit) << log.output;
     EXPECT_NE(log.output.find(dir.file("blocked") + ": cannot create the log folder"), std::string::npos) << log.output;
-    const RunResult capture = run_driftlab({"record", "--port", port, "-o", dir.file("rec.csv"), "--capture",
-                                            dir.file("blocked/rec.cap")},
-                                           dir.path());
+    const RunResult capture = run_driftlab(
+        {"record", "--port", port, "-o", dir.file("rec.csv"), "--capture", dir.file("blocked/rec.cap")}, dir.path());
     EXPECT_EQ(capture.exit_code, kDeviceErrorExit) << capture.output;
     EXPECT_NE(capture.output.find(dir.file("blocked") + ": cannot create the capture folder"), std::string::npos)
         << capture.output;
@@ -156,7 +156,8 @@ TEST(RecordErrors, ARefusedRunRemovesOnlyTheFoldersItMade) {
     // A folder the run made that holds something else by then is kept with it.
     std::filesystem::create_directories(dir.file("before/new"));
     std::ofstream(dir.file("before/new/notes.txt")) << "mine\n";
-    const RunResult r = run_driftlab({"record", "--port", dir.file("ttyNONE"), "-o", dir.file("before/new/rec.csv")}, dir.path());
+    const RunResult r =
+        run_driftlab({"record", "--port", dir.file("ttyNONE"), "-o", dir.file("before/new/rec.csv")}, dir.path());
     EXPECT_EQ(r.exit_code, kDeviceErrorExit) << r.output;
     EXPECT_EQ(read_text(dir.file("before/new/notes.txt")), "mine\n");
 }
@@ -171,7 +172,8 @@ TEST(RecordErrors, AnEarlierRecordingIsKeptUnlessOverwriteIsGiven) {
     std::ofstream(log) << "an hour of rows\n";
     const RunResult again = run_driftlab({"record", "--port", port, "-o", log}, dir.path());
     EXPECT_EQ(again.exit_code, 2) << again.output;
-    EXPECT_NE(again.output.find(log + ": a log is already there; name another -o, or pass --overwrite"), std::string::npos)
+    EXPECT_NE(again.output.find(log + ": a log is already there; name another -o, or pass --overwrite"),
+              std::string::npos)
         << again.output;
     EXPECT_EQ(read_text(log), "an hour of rows\n");
 
@@ -179,7 +181,8 @@ TEST(RecordErrors, AnEarlierRecordingIsKeptUnlessOverwriteIsGiven) {
     std::ofstream(other + ".cap") << "its capture\n";
     const RunResult capture = run_driftlab({"record", "--port", port, "-o", other}, dir.path());
     EXPECT_EQ(capture.exit_code, 2) << capture.output;
-    EXPECT_NE(capture.output.find(other + ".cap: a capture is already there; name another --capture"), std::string::npos)
+    EXPECT_NE(capture.output.find(other + ".cap: a capture is already there; name another --capture"),
+              std::string::npos)
         << capture.output;
     EXPECT_FALSE(std::filesystem::exists(other));
     EXPECT_EQ(read_text(other + ".cap"), "its capture\n");
@@ -197,18 +200,23 @@ TEST(RecordErrors, ABadPeriodOrConfigurationIsAUsageErrorBeforeThePort) {
     TempDir dir("badconfig");
     const std::string port = dir.file("ttyNONE");
     for (const char* bad : {"-1", "0"}) {
-        const RunResult r = run_driftlab({"record", "--port", port, "--stream", bad, "-o", dir.file("rec.csv")}, dir.path());
+        const RunResult r =
+            run_driftlab({"record", "--port", port, "--stream", bad, "-o", dir.file("rec.csv")}, dir.path());
         EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
     }
-    const RunResult odd = run_driftlab({"record", "--port", port, "--poll", "0.0105", "-o", dir.file("rec.csv")}, dir.path());
+    const RunResult odd =
+        run_driftlab({"record", "--port", port, "--poll", "0.0105", "-o", dir.file("rec.csv")}, dir.path());
     EXPECT_EQ(odd.exit_code, 2) << odd.output;
     EXPECT_NE(odd.output.find("--poll: expected a whole number of milliseconds in [0.01, 60] s, got 0.0105"),
-              std::string::npos) << odd.output;
-    const RunResult fast = run_driftlab({"record", "--port", port, "--stream", "0.01", "-o", dir.file("rec.csv")}, dir.path());
+              std::string::npos)
+        << odd.output;
+    const RunResult fast =
+        run_driftlab({"record", "--port", port, "--stream", "0.01", "-o", dir.file("rec.csv")}, dir.path());
     EXPECT_EQ(fast.exit_code, 2) << fast.output;
     EXPECT_NE(fast.output.find("conversions_per_output: the firmware refuses this configuration (out_of_range): "
                                "output_period_ms 10 / (4 channels x conversions_per_output 25)"),
-              std::string::npos) << fast.output;
+              std::string::npos)
+        << fast.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("rec.csv")));
 }
 
@@ -243,7 +251,8 @@ TEST(RecordErrors, ABoardRefusingPollEndsTheRecordingNamingStreamMode) {
     TempDir dir("pollrefused");
     FakeDevice board(PollRefusingBoard{});
     const std::string out = dir.file("driftlab.out");
-    const pid_t pid = spawn_driftlab({"record", "--port", board.path(), "--poll", "0.1", "-o", dir.file("rec.csv")}, out);
+    const pid_t pid =
+        spawn_driftlab({"record", "--port", board.path(), "--poll", "0.1", "-o", dir.file("rec.csv")}, out);
     // A recorder that ignored the refusals would poll until stopped: after 10 s it is (exit 0, failing below).
     siginfo_t ended{};
     for (int i = 0; i < 1000 && ended.si_pid != pid; ++i) {

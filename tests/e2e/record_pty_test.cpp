@@ -62,7 +62,8 @@ void expect_decode_keeps_logs_and_names_crc_failures(const TempDir& dir, const s
     ASSERT_EQ(replaced.exit_code, 0) << replaced.output;
     EXPECT_EQ(read_text(nested), recorded);
     std::ofstream(dir.file("out.csv")).close();  // standard output is opened there, not created
-    const RunResult to_stdout = run_driftlab_stdout_to({"decode", log + ".cap", "-o", "-"}, dir.file("out.csv"), dir.path());
+    const RunResult to_stdout =
+        run_driftlab_stdout_to({"decode", log + ".cap", "-o", "-"}, dir.file("out.csv"), dir.path());
     ASSERT_EQ(to_stdout.exit_code, 0) << to_stdout.output;
     EXPECT_EQ(read_text(dir.file("out.csv")), recorded);
     EXPECT_NE(to_stdout.output.find("to standard output"), std::string::npos) << to_stdout.output;
@@ -90,7 +91,8 @@ void expect_decode_keeps_logs_and_names_crc_failures(const TempDir& dir, const s
     const RunResult crc = run_driftlab({"decode", dir.file("crc.cap"), "-o", dir.file("crc.csv")}, dir.path());
     ASSERT_EQ(crc.exit_code, 0) << crc.output;
     EXPECT_NE(crc.output.find("crc.cap: 1 frame failed its CRC check and counts as lost (in the record at byte "
-                              "offset " + std::to_string(record_offset) + ")\n"),
+                              "offset " +
+                              std::to_string(record_offset) + ")\n"),
               std::string::npos)
         << crc.output;
     EXPECT_NE(crc.output.find("crc errors 1)"), std::string::npos) << crc.output;
@@ -171,7 +173,8 @@ TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog
     {
         host::io::CaptureReader reader(log + ".cap");
         while (const auto record = reader.next())
-            if (record->kind == host::io::CaptureKind::event && record->text() == "start") start_offset = record->offset;
+            if (record->kind == host::io::CaptureKind::event && record->text() == "start")
+                start_offset = record->offset;
     }
     ASSERT_GT(start_offset, 0u);
     const std::string capture = read_text(log + ".cap");
@@ -183,14 +186,16 @@ TEST(RecordPty, StreamedSixtySecondsEqualWhatTheBoardSentAndDecodeRebuildsTheLog
         std::ofstream(dir.file(name), std::ios::binary) << bytes;
         return dir.file(name);
     };
-    const RunResult one_bit = run_driftlab({"decode", damaged_copy("one.cap", 'c'), "-o", dir.file("one.csv")}, dir.path());
+    const RunResult one_bit =
+        run_driftlab({"decode", damaged_copy("one.cap", 'c'), "-o", dir.file("one.csv")}, dir.path());
     ASSERT_EQ(one_bit.exit_code, 0) << one_bit.output;
     EXPECT_NE(one_bit.output.find("one.cap: byte offset " + std::to_string(start_offset) +
                                   ": event 'stcrt' read as the recording's start"),
               std::string::npos)
         << one_bit.output;
     EXPECT_EQ(read_text(dir.file("one.csv")), read_text(log));
-    const RunResult two_bits = run_driftlab({"decode", damaged_copy("two.cap", 'b'), "-o", dir.file("two.csv")}, dir.path());
+    const RunResult two_bits =
+        run_driftlab({"decode", damaged_copy("two.cap", 'b'), "-o", dir.file("two.csv")}, dir.path());
     EXPECT_EQ(two_bits.exit_code, 3) << two_bits.output;  // 'a' ^ 'b' = 3: two bits
     EXPECT_NE(two_bits.output.find("no recording start"), std::string::npos) << two_bits.output;
 }
@@ -201,9 +206,8 @@ TEST(RecordPty, PolledRecordingHoldsExactlyTheAnswersTheBoardSent) {
     board_opts.truth_log = dir.file("truth.csv");
     BoardThread board(board_opts);
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", board.path(), "--poll", "0.1", "--duration", "2", "--raw",
-                                      "-o", log},
-                                     dir.path());
+    const RunResult r = run_driftlab(
+        {"record", "--port", board.path(), "--poll", "0.1", "--duration", "2", "--raw", "-o", log}, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     // The ground truth is flushed once a second while the board runs: stop it so every answer is on disk.
     board.stop();
@@ -226,13 +230,15 @@ TEST(RecordPty, SigkillLeavesAReadableLogAndTheCaptureRebuildsEveryCompleteLine)
     host::io::PtyBoardOptions board_opts = paced_board(10.0, 600.0);
     BoardThread board(board_opts);
     const std::string log = dir.file("rec.csv");
-    const pid_t pid = spawn_driftlab({"record", "--port", board.path(), "--stream", "0.02", "-o", log},
-                                     dir.file("record.out"));
+    const pid_t pid =
+        spawn_driftlab({"record", "--port", board.path(), "--stream", "0.02", "-o", log}, dir.file("record.out"));
     // Let it record a few flush intervals (until more than 50 rows are on disk, however loaded the machine; at most
     // a minute), then kill it without a chance to clean up.
     const auto rows_on_disk = [&] {
         const auto lines = lines_of(read_text(log));
-        return std::count_if(lines.begin(), lines.end(), [](const std::string& l) { return !l.empty() && l[0] != '#'; }) - 1;
+        return std::count_if(lines.begin(), lines.end(),
+                             [](const std::string& l) { return !l.empty() && l[0] != '#'; }) -
+               1;
     };
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (rows_on_disk() <= 50 && std::chrono::steady_clock::now() < give_up)
@@ -251,7 +257,8 @@ TEST(RecordPty, SigkillLeavesAReadableLogAndTheCaptureRebuildsEveryCompleteLine)
     const auto killed_lines = lines_of(read_text(log));
     const auto decoded_lines = lines_of(read_text(dir.file("decoded.csv")));
     ASSERT_GE(decoded_lines.size(), killed_lines.size());
-    for (std::size_t i = 0; i < killed_lines.size(); ++i) EXPECT_EQ(killed_lines[i], decoded_lines[i]) << "line " << i + 1;
+    for (std::size_t i = 0; i < killed_lines.size(); ++i)
+        EXPECT_EQ(killed_lines[i], decoded_lines[i]) << "line " << i + 1;
     EXPECT_NO_THROW(host::read_log(dir.file("decoded.csv")));
 }
 
@@ -266,8 +273,8 @@ TEST(RecordPty, UnplugAndReplugIsSurvivedWithTheGapRecorded) {
     BoardThread board(board_opts);
     const std::string link = board.path();
     const std::string log = dir.file("rec.csv");
-    const RunResult r = run_driftlab({"record", "--port", link, "--stream", "0.1", "--duration", "16", "-o", log},
-                                     dir.path());
+    const RunResult r =
+        run_driftlab({"record", "--port", link, "--stream", "0.1", "--duration", "16", "-o", log}, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("reconnects 1"), std::string::npos) << r.output;
     board.stop();  // its ground truth is flushed once a second while it runs
@@ -350,9 +357,9 @@ TEST(RecordPty, MissingFoldersOfTheLogAndTheCaptureAreMade) {
     BoardThread board(board_opts);
     const std::string log = dir.file("new/sub/rec.csv");
     const std::string capture = dir.file("captures/rec.cap");
-    const RunResult r = run_driftlab({"record", "--port", board.path(), "--stream", "0.1", "--duration", "1", "-o", log,
-                                      "--capture", capture},
-                                     dir.path());
+    const RunResult r = run_driftlab(
+        {"record", "--port", board.path(), "--stream", "0.1", "--duration", "1", "-o", log, "--capture", capture},
+        dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_GE(host::read_log(log).size(), 11u);
     EXPECT_TRUE(std::filesystem::is_regular_file(capture));
@@ -363,8 +370,8 @@ TEST(RecordPty, MissingFoldersOfTheLogAndTheCaptureAreMade) {
 TEST(RecordPty, HilPtyLinkPrintsTheLinkAndTheTerminalItPointsTo) {
     TempDir dir("hilptylink");
     const std::string link = dir.file("imu");
-    const auto [hil, line] = serve_hil_pty({"--pty-link", link, "--speed", "20", "--duration", "120"},
-                                           dir.file("hil.out"));
+    const auto [hil, line] =
+        serve_hil_pty({"--pty-link", link, "--speed", "20", "--duration", "120"}, dir.file("hil.out"));
     ASSERT_FALSE(line.empty()) << read_text(dir.file("hil.out"));
     const std::string prefix = link + " -> ";
     ASSERT_EQ(line.rfind(prefix, 0), 0u) << line;
@@ -372,8 +379,8 @@ TEST(RecordPty, HilPtyLinkPrintsTheLinkAndTheTerminalItPointsTo) {
     EXPECT_EQ(pts.rfind("/dev/pts/", 0), 0u) << line;
     EXPECT_EQ(std::filesystem::read_symlink(link).string(), pts);
     const std::string log = dir.file("rec.csv");
-    const RunResult r = record_then_end_hil({"record", "--port", pts, "--stream", "0.1", "--duration", "2", "-o", log},
-                                            hil, dir);
+    const RunResult r =
+        record_then_end_hil({"record", "--port", pts, "--stream", "0.1", "--duration", "2", "-o", log}, hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_EQ(host::read_log(log).metadata.get("port"), pts);
 }
@@ -388,8 +395,8 @@ TEST(RecordPty, HilPtyServesAModelWhoseSimulatedLinkCouldNotCarryItsOutputs) {
     const auto [hil, path] = serve_hil_pty({"--model", model, "--speed", "4", "--duration", "60"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = record_then_end_hil({"record", "--port", path, "--stream", "0.02", "--conversions", "5", "--window",
-                                            "5", "--duration", "1", "-o", log},
+    const RunResult r = record_then_end_hil({"record", "--port", path, "--stream", "0.02", "--conversions", "5",
+                                             "--window", "5", "--duration", "1", "-o", log},
                                             hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const host::LogData rec = host::read_log(log);
@@ -404,8 +411,8 @@ TEST(RecordPty, HilPtyServesTheSimulatedBoardToTheRecorder) {
     const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "120"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = record_then_end_hil({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log},
-                                            hil, dir);
+    const RunResult r =
+        record_then_end_hil({"record", "--port", path, "--stream", "0.1", "--duration", "10", "-o", log}, hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const host::LogData rec = host::read_log(log);
     // The recorder stops once its rows span 10 s: outputs 0.1 s apart span at least 101 frames by sequence number.
@@ -428,8 +435,8 @@ TEST(RecordPty, GapReadsAPolledRecordingOfABoardPacedFasterThanTheRecorder) {
     const auto [hil, path] = serve_hil_pty({"--speed", "20", "--duration", "500"}, dir.file("hil.out"));
     ASSERT_FALSE(path.empty()) << read_text(dir.file("hil.out"));
     const std::string log = dir.file("rec.csv");
-    const RunResult r = record_then_end_hil({"record", "--port", path, "--poll", "0.1", "--duration", "440", "-q", "-o", log},
-                                            hil, dir);
+    const RunResult r = record_then_end_hil(
+        {"record", "--port", path, "--poll", "0.1", "--duration", "440", "-q", "-o", log}, hil, dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     ASSERT_EQ(host::read_log(log).metadata.get_double("sample_period_s"), 0.1);
 

@@ -148,7 +148,8 @@ TEST(Commands, WrongLengthIsBadLengthForEveryHostType) {
     expect_nak(decide(id, 3, payload, 1, OutputMode::poll), id, 3, Status::bad_length, proto::kNakFieldNone);
   }
   for (uint8_t len : {uint8_t{0}, uint8_t{6}, uint8_t{8}}) {
-    expect_nak(decide(kConfigSet, 4, payload, len, OutputMode::poll), kConfigSet, 4, Status::bad_length, proto::kNakFieldNone);
+    expect_nak(decide(kConfigSet, 4, payload, len, OutputMode::poll), kConfigSet, 4, Status::bad_length,
+               proto::kNakFieldNone);
   }
 }
 

@@ -81,21 +81,18 @@ TEST(Firmware, PollAnswersSampleWithTheLeastSquaresValuesOfKnownInput) {
   uint32_t lcg = 12345;
   auto code_for = [&](Channel channel, uint64_t tick) -> uint16_t {
     switch (channel) {
-      case Channel::gyro:
-        return 505;
-      case Channel::accel_x:
-        return static_cast<uint16_t>(300 + channel_conversion(tick));
-      case Channel::accel_y: {
-        lcg = lcg * 1103515245U + 12345U;
-        const uint16_t code = static_cast<uint16_t>(1 + (lcg >> 16) % 1022);
-        accel_y_codes.push_back(code);
-        if (accel_y_codes.size() > 25) {
-          accel_y_codes.pop_front();
-        }
-        return code;
+    case Channel::gyro: return 505;
+    case Channel::accel_x: return static_cast<uint16_t>(300 + channel_conversion(tick));
+    case Channel::accel_y: {
+      lcg = lcg * 1103515245U + 12345U;
+      const uint16_t code = static_cast<uint16_t>(1 + (lcg >> 16) % 1022);
+      accel_y_codes.push_back(code);
+      if (accel_y_codes.size() > 25) {
+        accel_y_codes.pop_front();
       }
-      case Channel::accel_z:
-        return 1023;
+      return code;
+    }
+    case Channel::accel_z: return 1023;
     }
     return 0;
   };

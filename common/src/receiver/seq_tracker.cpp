@@ -4,7 +4,8 @@
 namespace driftlab::receiver {
 
 std::uint64_t unwrap_near(std::uint16_t low, std::uint64_t reference) {
-    const auto delta = static_cast<std::int16_t>(static_cast<std::uint16_t>(low - static_cast<std::uint16_t>(reference)));
+    const auto delta =
+        static_cast<std::int16_t>(static_cast<std::uint16_t>(low - static_cast<std::uint16_t>(reference)));
     if (delta < 0 && reference < static_cast<std::uint64_t>(-static_cast<std::int64_t>(delta))) {
         return reference + static_cast<std::uint64_t>(static_cast<std::uint16_t>(delta));
     }

@@ -4,11 +4,11 @@
 //  - The ADC runs at 16 MHz / 128 = 125 kHz (inside the 50..200 kHz the datasheet asks for 10-bit accuracy)
 //    against AVCC; its vector does the round-robin (isr_avr.cpp).
 //  - USART0 runs at 115200 baud with U2X (UBRR 16, +2.1 %, the rate Arduino boards use).
+#include "firmware/port/avr/hal_avr.hpp"
 #include "firmware/core/critical.hpp"
 #include "firmware/core/hal.hpp"
 #include "firmware/core/version.hpp"
 #include "firmware/port/avr/critical_avr.hpp"
-#include "firmware/port/avr/hal_avr.hpp"
 #include "firmware/port/avr/isr_shared_avr.hpp"
 
 #include <avr/interrupt.h>

@@ -15,16 +15,16 @@ namespace fw {
 
 struct IsrShared {
   SpscRing<Conversion, kAdcRingCapacity> adc_ring;  ///< ADC vector -> main loop
-  SpscRing<uint8_t, kRxRingCapacity> rx_ring;        ///< USART RX vector -> main loop
-  SpscRing<uint8_t, kTxRingCapacity> tx_ring;        ///< main loop -> USART UDRE vector
-  volatile uint16_t rx_overflow_bytes;               ///< RX vector only; saturating [bytes]
-  volatile uint32_t trigger_tick;   ///< tick of the latest Timer1 compare match B = ADC trigger [ticks]
-  volatile uint32_t step_ticks;     ///< ticks from the latest trigger to the next: the first wait after
-                                    ///< arming, then period_ticks [ticks]
-  uint16_t period_ticks;            ///< armed conversion period [ticks]; written with interrupts off
-  Channel order[kChannelCount];     ///< channel of each conversion slot; written with interrupts off
-  uint8_t admux[kChannelCount];     ///< ADMUX value of each conversion slot (reference + mux input)
-  volatile uint8_t slot;            ///< ADC vector only: slot of the conversion in progress
+  SpscRing<uint8_t, kRxRingCapacity> rx_ring;       ///< USART RX vector -> main loop
+  SpscRing<uint8_t, kTxRingCapacity> tx_ring;       ///< main loop -> USART UDRE vector
+  volatile uint16_t rx_overflow_bytes;              ///< RX vector only; saturating [bytes]
+  volatile uint32_t trigger_tick;                   ///< tick of the latest Timer1 compare match B = ADC trigger [ticks]
+  volatile uint32_t step_ticks;                     ///< ticks from the latest trigger to the next: the first wait after
+                                                    ///< arming, then period_ticks [ticks]
+  uint16_t period_ticks;                            ///< armed conversion period [ticks]; written with interrupts off
+  Channel order[kChannelCount];                     ///< channel of each conversion slot; written with interrupts off
+  uint8_t admux[kChannelCount];                     ///< ADMUX value of each conversion slot (reference + mux input)
+  volatile uint8_t slot;                            ///< ADC vector only: slot of the conversion in progress
 };
 
 extern IsrShared g_isr;

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-using driftlab::receiver::TickUnwrapper;
 using driftlab::receiver::ticks_run_on;
+using driftlab::receiver::TickUnwrapper;
 
 namespace {
 constexpr std::uint64_t kWrap = std::uint64_t{1} << 32;

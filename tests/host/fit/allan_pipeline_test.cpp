@@ -94,7 +94,8 @@ TEST(AllanPipeline, PackingIsACaveatPastATwentiethOfTheMinimumsTau) {
     ASSERT_TRUE(caveat.has_value());
     EXPECT_NE(caveat->find("10 samples came faster than tau0"), std::string::npos) << *caveat;
     EXPECT_NE(caveat->find("up to 6 slots (6 s) after their time, 6 % of tau = 100 s at the curve's minimum"),
-              std::string::npos) << *caveat;
+              std::string::npos)
+        << *caveat;
     // A curve that only rises (a random walk) reads correlated noise from tau0 on: 2 slots already bias it.
     curve.curve.dev = {1.0, 2.0, 3.0, 4.0};
     r.packed_most_slots = 2;

@@ -39,8 +39,8 @@ Series simulate(const Truth& truth, std::size_t n, double period_s, double sigma
 bool covers(const Estimate& e, double truth) { return e.ci95[0] <= truth && truth <= e.ci95[1]; }
 
 TEST(DriftFit, RisingAndFallingDriftsConvergeFromTheAutomaticStart) {
-    const Truth cases[] = {{3.0, 505.0, 411.0},  {-3.0, 505.0, 411.0},   {28.0, 622.0, 1050.0},
-                           {-40.0, 470.0, 50.0}, {2.0, 470.0, 3000.0},   {-0.5, 10.0, 20.0}};
+    const Truth cases[] = {{3.0, 505.0, 411.0},  {-3.0, 505.0, 411.0}, {28.0, 622.0, 1050.0},
+                           {-40.0, 470.0, 50.0}, {2.0, 470.0, 3000.0}, {-0.5, 10.0, 20.0}};
     std::uint64_t seed = 1;
     for (const Truth& truth : cases) {
         const Series s = simulate(truth, 4000, 1.0, 0.05 * std::fabs(truth.c1), 0.0, seed++);
@@ -86,9 +86,10 @@ TEST(DriftFit, PlainIntervalsCoverTheTruthAboutNinetyFivePercentOnWhiteNoise) {
         t += covers(a.plain.t_s, truth.t_s);
         white += a.whiteness.white;
     }
-    std::printf("coverage of the plain 95 %% intervals over %d white-noise runs: C1 %.3f, C2 %.3f, T %.3f; "
-                "residual judged white in %.3f\n",
-                runs, c1 / double(runs), c2 / double(runs), t / double(runs), white / double(runs));
+    std::printf(
+        "coverage of the plain 95 %% intervals over %d white-noise runs: C1 %.3f, C2 %.3f, T %.3f; "
+        "residual judged white in %.3f\n",
+        runs, c1 / double(runs), c2 / double(runs), t / double(runs), white / double(runs));
     for (int hits : {c1, c2, t}) {
         EXPECT_GE(hits, 363) << "coverage below 90.7 %";
         EXPECT_LE(hits, 397) << "coverage above 99.3 %";
@@ -102,7 +103,8 @@ TEST(DriftFit, WidenedIntervalsRestoreCoverageOnAr1Residuals) {
     const int runs = 200;
     int plain = 0, widened = 0, rejected = 0;
     for (int r = 0; r < runs; ++r) {
-        const DriftAnalysis a = analyse_drift(simulate(truth, 4000, 1.0, 0.5, 0.5, 5000 + static_cast<std::uint64_t>(r)));
+        const DriftAnalysis a =
+            analyse_drift(simulate(truth, 4000, 1.0, 0.5, 0.5, 5000 + static_cast<std::uint64_t>(r)));
         plain += covers(a.plain.c1, truth.c1);
         widened += covers(a.widened.c1, truth.c1);
         rejected += !a.whiteness.white;
@@ -176,8 +178,8 @@ TEST(DriftFit, StandardErrorsMatchALongDoubleInverseOfTheNormalMatrix) {
     long double a[3][3] = {};
     for (double t : s.t_s) {
         const long double e = std::exp(-static_cast<long double>(t) / f.parameters.t_s);
-        const long double j[3] = {1.0L - e, 1.0L, -f.parameters.c1 * e * t / (static_cast<long double>(f.parameters.t_s) *
-                                                                           f.parameters.t_s)};
+        const long double j[3] = {
+            1.0L - e, 1.0L, -f.parameters.c1 * e * t / (static_cast<long double>(f.parameters.t_s) * f.parameters.t_s)};
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) a[r][c] += j[r] * j[c];
     }
@@ -196,9 +198,9 @@ TEST(DriftFit, StandardErrorsMatchALongDoubleInverseOfTheNormalMatrix) {
     EXPECT_NEAR(i.t_s.stderr_ / expected[2], 1.0, 1e-9);
     EXPECT_GT(i.c1.stderr_, 0.0);
     // C1/T by the delta method: g^T (J^T J)^-1 g with g = (1/T, 0, -C1/T^2), the inverse by cofactors (symmetric).
-    const long double g[3] = {1.0L / f.parameters.t_s, 0.0L,
-                              -static_cast<long double>(f.parameters.c1) / (static_cast<long double>(f.parameters.t_s) *
-                                                                           f.parameters.t_s)};
+    const long double g[3] = {
+        1.0L / f.parameters.t_s, 0.0L,
+        -static_cast<long double>(f.parameters.c1) / (static_cast<long double>(f.parameters.t_s) * f.parameters.t_s)};
     long double quad = 0.0L;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) quad += g[r] * cof(r, c) / det * g[c];
@@ -361,7 +363,8 @@ TEST(DriftFit, TooShortOrConstantDataIsADataErrorNamingTheSeries) {
         analyse_drift(s, only_one);
         FAIL() << "1 sample accepted";
     } catch (const DataError& e) {
-        EXPECT_NE(std::string(e.what()).find("series 'sim': 1 sample in the selected time range ("), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("series 'sim': 1 sample in the selected time range ("), std::string::npos)
+            << e.what();
     }
     s.values.assign(s.values.size(), 512.0);
     EXPECT_THROW(analyse_drift(s), DataError);

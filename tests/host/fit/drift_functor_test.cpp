@@ -59,7 +59,8 @@ TEST(DriftFunctor, ItsValuesAndJacobianGiveLmWhatTheResidualsThemselvesWould) {
         ASSERT_EQ(functor.values(), 4);
         ASSERT_EQ(functor.inputs(), 3);
         // Away from the optimum (the start LM is given) and near it.
-        for (const Eigen::Vector3d& x : {Eigen::Vector3d(3.0, 490.0, std::log(40.0)), Eigen::Vector3d(12.0, 500.0, std::log(300.0))}) {
+        for (const Eigen::Vector3d& x :
+             {Eigen::Vector3d(3.0, 490.0, std::log(40.0)), Eigen::Vector3d(12.0, 500.0, std::log(300.0))}) {
             Eigen::VectorXd fvec(4);
             Eigen::MatrixXd fjac(4, 3);
             ASSERT_EQ(functor(x, fvec), 0);
@@ -68,14 +69,16 @@ TEST(DriftFunctor, ItsValuesAndJacobianGiveLmWhatTheResidualsThemselvesWould) {
             const auto tag = ::testing::Message() << "n = " << n << ", x = " << x.transpose();
             EXPECT_NEAR(fvec.norm(), static_cast<double>(d.norm_f), 1e-12 * static_cast<double>(d.norm_f)) << tag;
             // Triangular, its last row zero: LM's QR of it is R again.
-            EXPECT_TRUE(Eigen::MatrixXd(fjac.triangularView<Eigen::StrictlyLower>()).isZero(0.0)) << tag << "\n" << fjac;
+            EXPECT_TRUE(Eigen::MatrixXd(fjac.triangularView<Eigen::StrictlyLower>()).isZero(0.0)) << tag << "\n"
+                                                                                                  << fjac;
             const Eigen::Matrix3d jtj = fjac.transpose() * fjac;
             const Eigen::Vector3d jtf = fjac.transpose() * fvec;
             for (int i = 0; i < 3; ++i) {
                 const double scale_i = std::sqrt(static_cast<double>(d.jtj(i, i)));
                 for (int k = 0; k < 3; ++k) {
                     const double scale = scale_i * std::sqrt(static_cast<double>(d.jtj(k, k)));
-                    EXPECT_NEAR(jtj(i, k), static_cast<double>(d.jtj(i, k)), 1e-12 * scale) << tag << " J^T J(" << i << "," << k << ")";
+                    EXPECT_NEAR(jtj(i, k), static_cast<double>(d.jtj(i, k)), 1e-12 * scale)
+                        << tag << " J^T J(" << i << "," << k << ")";
                 }
                 EXPECT_NEAR(jtf[i], static_cast<double>(d.jtf[i]), 1e-12 * scale_i * static_cast<double>(d.norm_f))
                     << tag << " J^T f(" << i << ")";
@@ -94,7 +97,8 @@ TEST(DriftFunctor, ATrialStepThatOverflowsTheModelHasAnInfiniteNorm) {
     // The next point is reduced afresh, not read from the one before.
     ASSERT_EQ(functor(Eigen::Vector3d(12.0, 500.0, std::log(300.0)), fvec), 0);
     EXPECT_TRUE(std::isfinite(fvec.norm())) << fvec.transpose();
-    EXPECT_NEAR(fvec.norm(), static_cast<double>(direct(t_s, y, Eigen::Vector3d(12.0, 500.0, std::log(300.0))).norm_f), 1e-9);
+    EXPECT_NEAR(fvec.norm(), static_cast<double>(direct(t_s, y, Eigen::Vector3d(12.0, 500.0, std::log(300.0))).norm_f),
+                1e-9);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// analyse_file: a sample period or time column given for a file that carries its own time, and what the analysis says it determines.
+// analyse_file: a sample period or time column given for a file that carries its own time, and what the analysis says
+// it determines.
 #include "host/fit/file_analysis.hpp"
 
 #include <gtest/gtest.h>
@@ -60,7 +61,8 @@ TEST(FileAnalysis, ASamplePeriodTheRowsContradictIsRefused) {
     const FileAnalysis agreed = analyse_file(request);
     ASSERT_EQ(agreed.notes.size(), 1u);
     EXPECT_NE(agreed.notes[0].find("is not used: " + table + " is a table timed by its own time column"),
-              std::string::npos) << agreed.notes[0];
+              std::string::npos)
+        << agreed.notes[0];
 }
 
 TEST(FileAnalysis, ASamplePeriodTheRowsAgreeWithIsNotedAsUnused) {
@@ -88,16 +90,17 @@ TEST(FileAnalysis, ATimeColumnOtherThanALogsTsIsRefusedAndItsTsNoted) {
         analyse_file(request);
         ADD_FAILURE() << "--time-column seq on a log was accepted";
     } catch (const UsageError& e) {
-        EXPECT_EQ(std::string(e.what()), "--time-column seq contradicts " + request.path +
-                                             ": it is a driftlab log, timed by its own t_s column; leave the option out "
-                                             "(it is for plain tables)");
+        EXPECT_EQ(std::string(e.what()),
+                  "--time-column seq contradicts " + request.path +
+                      ": it is a driftlab log, timed by its own t_s column; leave the option out "
+                      "(it is for plain tables)");
     }
     request.time_column = "t_s";
     const FileAnalysis file = analyse_file(request);
     EXPECT_EQ(file.failures(), 0u);
     ASSERT_EQ(file.notes.size(), 1u);
-    EXPECT_EQ(file.notes[0], "--time-column t_s is not used: " + request.path +
-                                 " is a driftlab log, timed by its own t_s column");
+    EXPECT_EQ(file.notes[0],
+              "--time-column t_s is not used: " + request.path + " is a driftlab log, timed by its own t_s column");
     // A table is timed by the column named, without a note.
     const std::string table = dir.file("table.csv");
     {
@@ -128,7 +131,8 @@ TEST(FileAnalysis, WhatTheDataDetermineIsSaid) {
     EXPECT_FALSE(warm.c1_and_t_determined());
     EXPECT_TRUE(warm.c2_determined());
     EXPECT_NE(warm.undetermined_reason().find("T is beyond the record, which determines only the initial slope C1/T"),
-              std::string::npos) << warm.undetermined_reason();
+              std::string::npos)
+        << warm.undetermined_reason();
     EXPECT_NEAR(warm.plain.initial_slope.value, -1e-2, 1e-3);
     const DriftAnalysis& settling = *file.series[1].analysis;
     EXPECT_TRUE(settling.c1_and_t_determined() && settling.c2_determined());

@@ -68,7 +68,8 @@ TEST(RealRecordings, Mpu6050WithGapsEitherFitsOrSaysWhyPerColumn) {
         }
     }
     // The die temperature drifts down by about 0.16 degC over the run (PROVENANCE.md): a settling fall.
-    const auto temp = std::find_if(file.series.begin(), file.series.end(), [](const auto& s) { return s.name == "temp_C"; });
+    const auto temp =
+        std::find_if(file.series.begin(), file.series.end(), [](const auto& s) { return s.name == "temp_C"; });
     ASSERT_NE(temp, file.series.end());
     ASSERT_TRUE(temp->analysis);
     EXPECT_LT(temp->analysis->plain.c1.value, 0.0);

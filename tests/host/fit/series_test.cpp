@@ -3,12 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
-#include <unistd.h>
 
 #include "host/io/capture.hpp"
 
@@ -97,7 +97,8 @@ TEST(Series, RowsKeptAreInRangeAndOutsideEveryWindowWithTheirRawCodes) {
         rows_kept(s, 1.0, 8.0, {{8.5, 9.5, "--exclude"}});
         ADD_FAILURE() << "a window without a row in range was taken";
     } catch (const DataError& e) {
-        EXPECT_STREQ(e.what(), "log.csv: series 'gyro': --exclude 8.5:9.5 holds no row (the series' rows run from 0 s to 9 s)");
+        EXPECT_STREQ(e.what(),
+                     "log.csv: series 'gyro': --exclude 8.5:9.5 holds no row (the series' rows run from 0 s to 9 s)");
     }
 }
 
@@ -108,9 +109,10 @@ TEST(Series, TooFewKeptNamesTheCountTheSeriesSpanAndTheNeed) {
     s.name = "gx";
     s.t_s = {0.25, 1.25, 2999.5};
     s.values = {1, 2, 3};
-    EXPECT_EQ(too_few_kept(s, 1, "the fit", 20),
-              "series 'gx': 1 sample in the selected time range (the series' rows run from 0.25 s to 2999.5 s); the fit "
-              "needs at least 20");
+    EXPECT_EQ(
+        too_few_kept(s, 1, "the fit", 20),
+        "series 'gx': 1 sample in the selected time range (the series' rows run from 0.25 s to 2999.5 s); the fit "
+        "needs at least 20");
     s.t_s.clear();
     EXPECT_EQ(too_few_kept(s, 0, "the Allan deviation", 2),
               "series 'gx': 0 samples in the selected time range; the Allan deviation needs at least 2");
@@ -130,7 +132,8 @@ TEST(Series, SelectionNotesCountWhatTheRangeKeptAndEachWindowTook) {
               (std::vector<std::string>{"--from 1 --to 3.2 kept 5 of 10 rows, t = 1 s to 3 s",
                                         "--exclude 2:2.5 left out 2 rows", "--exclude 2.4:9 left out 2 rows"}));
     EXPECT_EQ(rows_kept(s, 1.0, 3.2).t_s, (std::vector<double>{1, 1.5, 2, 2.5, 3}));
-    EXPECT_EQ(selection_notes(s.t_s, 4.5, inf, {}), (std::vector<std::string>{"--from 4.5 kept 1 of 10 rows, t = 4.5 s"}));
+    EXPECT_EQ(selection_notes(s.t_s, 4.5, inf, {}),
+              (std::vector<std::string>{"--from 4.5 kept 1 of 10 rows, t = 4.5 s"}));
     EXPECT_EQ(selection_notes(s.t_s, -inf, 0.2, {}), (std::vector<std::string>{"--to 0.2 kept 1 of 10 rows, t = 0 s"}));
     // A range without rows is refused where the rows are cut, with their span: no note.
     EXPECT_TRUE(selection_notes(s.t_s, 5.0, 6.0, {}).empty());

@@ -124,8 +124,9 @@ TEST(TimeAxis, BurstyRowsCountSequencesAtTheirMeanSpacing) {
     // Each burst's end counts as a gap against the median: the warning says so, and gives the longest spacing, which
     // tells a real gap from them.
     EXPECT_EQ(a.time_gaps, 1199u);
-    EXPECT_TRUE(any_contains(a.warnings, "1199 gaps in time (spacing > 1.5x the median 0.002 s; the longest 0.042 s, most "
-                                         "of them the ends of the bursts the rows come in)"));
+    EXPECT_TRUE(any_contains(a.warnings,
+                             "1199 gaps in time (spacing > 1.5x the median 0.002 s; the longest 0.042 s, most "
+                             "of them the ends of the bursts the rows come in)"));
     // Evenly spaced rows keep the median.
     Series even = s;
     for (std::size_t k = 0; k < even.t_s.size(); ++k) even.t_s[k] = 1.0 + 0.01 * static_cast<double>(k);

@@ -82,8 +82,9 @@ TEST(Calibrate, TheStatedPeriodMustMatchTheRowsLostFramesTakenOut) {
         smoothing_from_log(log);
         FAIL() << "a period ten times the rows' accepted";
     } catch (const DataError& e) {
-        EXPECT_NE(std::string(e.what()).find("test.csv:4: metadata 'sample_period_s' is 10 s, but the rows are 1 s apart"),
-                  std::string::npos)
+        EXPECT_NE(
+            std::string(e.what()).find("test.csv:4: metadata 'sample_period_s' is 10 s, but the rows are 1 s apart"),
+            std::string::npos)
             << e.what();
     }
 }
@@ -115,7 +116,8 @@ TEST(Calibrate, PolledRowsSlowerThanTheOutputsKeepBothPeriods) {
         smoothing_from_log(log);
         FAIL() << "polled rows faster than the outputs accepted";
     } catch (const DataError& e) {
-        EXPECT_NE(std::string(e.what()).find("polled rows cannot come faster than the outputs"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("polled rows cannot come faster than the outputs"), std::string::npos)
+            << e.what();
     }
 }
 

@@ -17,13 +17,15 @@ namespace {
 TEST(Candidates, EveryLibraryEffectIsACandidateOrNamedNotIdentifiableNeverBoth) {
     std::set<std::string> library, candidates, unidentifiable;
     for (const sim::EffectInfo& e : sim::list_effects()) library.insert(e.name);
-    for (const CandidateInfo& c : candidate_list()) EXPECT_TRUE(candidates.insert(c.effect).second) << c.effect << " twice";
+    for (const CandidateInfo& c : candidate_list())
+        EXPECT_TRUE(candidates.insert(c.effect).second) << c.effect << " twice";
     for (const NotIdentifiable& n : not_identifiable_list()) {
         EXPECT_TRUE(unidentifiable.insert(n.effect).second) << n.effect << " twice";
         EXPECT_FALSE(n.reason.empty()) << n.effect;
     }
     for (const std::string& name : library)
-        EXPECT_NE(candidates.count(name), unidentifiable.count(name)) << name << ": a candidate, or not identifiable, exactly one";
+        EXPECT_NE(candidates.count(name), unidentifiable.count(name))
+            << name << ": a candidate, or not identifiable, exactly one";
     for (const std::string& name : candidates) EXPECT_TRUE(library.count(name)) << name << " is no library effect";
     for (const std::string& name : unidentifiable) EXPECT_TRUE(library.count(name)) << name << " is no library effect";
 }
@@ -101,7 +103,8 @@ TEST(Candidates, AModelFilesProcessIsHeldWithItsOwnSpectrum) {
     ASSERT_EQ(held.gauss_markov.size(), 1 + taus.size());
     for (std::size_t k = 0; k < taus.size(); ++k) {
         EXPECT_DOUBLE_EQ(held.gauss_markov[1 + k].tau_s, taus[k]);
-        EXPECT_DOUBLE_EQ(held.gauss_markov[1 + k].variance_counts2, std::pow(0.02 * cpu * sim::Flicker::component_sigma_per_b(), 2));
+        EXPECT_DOUBLE_EQ(held.gauss_markov[1 + k].variance_counts2,
+                         std::pow(0.02 * cpu * sim::Flicker::component_sigma_per_b(), 2));
     }
     sim::FlickerParams candidate_band;
     candidate_band.f_low_hz = 1e-5;

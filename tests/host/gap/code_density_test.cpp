@@ -93,7 +93,8 @@ TEST(CodeDensity, TransitionsAreFoundWhereTheConverterHasThem) {
         const TransitionFit fit = fit_transitions(r.raw, r.level);
         EXPECT_NEAR(fit.s, 1.05, 0.08) << "the shared deviation, not widened by the moved transition";
         ASSERT_GE(fit.transitions.size(), 5u);
-        for (const auto& t : fit.transitions) EXPECT_NEAR(t.counts, truth(t.code), 0.25) << "seed " << seed << ", code " << t.code;
+        for (const auto& t : fit.transitions)
+            EXPECT_NEAR(t.counts, truth(t.code), 0.25) << "seed " << seed << ", code " << t.code;
         for (std::size_t k = 1; k < fit.transitions.size(); ++k)
             EXPECT_GT(fit.transitions[k].counts, fit.transitions[k - 1].counts);
         const TransitionFit well = fit_transitions(r.raw, r.level, 200);
@@ -139,7 +140,8 @@ TEST(CodeDensity, AgainstTheSmoothedOutputTheWidthsAreTheConvertersOverTheirMean
         for (std::size_t k = 1; k < fit.transitions.size(); ++k) {
             const long code = fit.transitions[k].code;
             if (code != fit.transitions[k - 1].code + 1) continue;
-            const double fitted = fit.transitions[k].counts - fit.transitions[k - 1].counts, width = at(code) - at(code - 1);
+            const double fitted = fit.transitions[k].counts - fit.transitions[k - 1].counts,
+                         width = at(code) - at(code - 1);
             fitted_sum += fitted, true_sum += width;
             const double r = std::log(fitted / width);
             raw_sq += r * r;

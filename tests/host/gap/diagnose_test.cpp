@@ -13,19 +13,19 @@
 #include <gtest/gtest.h>
 
 #include "gap_fixtures.hpp"
-#include "plot_data.hpp"
+#include "host/fit/drift_analysis.hpp"
 #include "host/gap/calibrate.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/gap_json.hpp"
 #include "host/gap/gap_report.hpp"
 #include "host/gap/spectral.hpp"
-#include "host/fit/drift_analysis.hpp"
-#include "host/util/units.hpp"
 #include "host/gap/truth.hpp"
 #include "host/report/gnuplot.hpp"
-#include "sim/effects/adc_dnl.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
+#include "host/util/units.hpp"
+#include "plot_data.hpp"
+#include "sim/effects/adc_dnl.hpp"
 #include "sim/model/board_outputs.hpp"
 
 namespace driftlab::host::gap {
@@ -55,8 +55,9 @@ TEST(Diagnose, CleanLogsHaveNoLocatedCellsAndVerdictNone) {
         EXPECT_NE(verdict_reason(r, o).find("explains the log"), std::string::npos) << verdict_reason(r, o);
         EXPECT_LT(r.gap_before_fit, 3.0) << "seed " << seed;
         gap_sum += r.gap_before_fit;
-        // Calibration recovers the planted base: eq. 1 (T's Fisher standard error on 1200 outputs is about 19 s) and the
-        // white noise before the quantiser (about 0.03 counts here; Calibrate.* checks it sharply on long logs): 4 sigma.
+        // Calibration recovers the planted base: eq. 1 (T's Fisher standard error on 1200 outputs is about 19 s) and
+        // the white noise before the quantiser (about 0.03 counts here; Calibrate.* checks it sharply on long logs): 4
+        // sigma.
         EXPECT_NEAR(r.base.base[0].drift.tau_s, 411.0, 75.0) << "seed " << seed;
         EXPECT_NEAR(r.base.base[0].sigma_n_counts, 1.05, 0.12) << "seed " << seed;
     }
@@ -82,7 +83,8 @@ TEST(Diagnose, AChannelWithoutNoiseIsLeftOutAndNamed) {
     EXPECT_LT(r.noise_free[0].spread_counts, 1e-3);
     EXPECT_EQ(r.verdict, "none");
     for (const Cell& c : r.layout) EXPECT_EQ(c.channel.find("accel_x"), std::string::npos) << c.channel;
-    EXPECT_NE(noise_free_sentence(r).find("accel_x with a short-lag spread of "), std::string::npos) << noise_free_sentence(r);
+    EXPECT_NE(noise_free_sentence(r).find("accel_x with a short-lag spread of "), std::string::npos)
+        << noise_free_sentence(r);
     // A noisy channel is never taken for one: the gyro with its noise at a tenth of a count is still analysed.
     GapModel quiet = m;
     quiet.base[0].sigma_n_counts = 0.1;
@@ -96,12 +98,14 @@ TEST(Diagnose, AChannelWithoutNoiseIsLeftOutAndNamed) {
         diagnose(log, sim::paper_model(), accel);
         FAIL() << "no error";
     } catch (const DataError& e) {
-        EXPECT_NE(std::string(e.what()).find("test.csv: no selected channel has noise to compare (accel_x with a short-lag spread of "),
-                  std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(
+                      "test.csv: no selected channel has noise to compare (accel_x with a short-lag spread of "),
+                  std::string::npos)
+            << e.what();
     }
     // A stuck channel with one corrupt row (512 in every row but one 1023) is left out alike, and its row still named:
-    // lone values are looked for before channels are left out (GapCli.AStuckChannelWithACorruptRowOrTwoIsLeftOut takes a
-    // log whose calibration gives such a channel a little noise).
+    // lone values are looked for before channels are left out (GapCli.AStuckChannelWithACorruptRowOrTwoIsLeftOut takes
+    // a log whose calibration gives such a channel a little noise).
     for (std::size_t k = 0; k < log.size(); ++k) log.counts[1][k] = k == 300 ? 1023.0 : 512.0;
     const GapResult stuck = diagnose(log, sim::paper_model(), o);
     ASSERT_EQ(stuck.noise_free.size(), 1u);
@@ -142,7 +146,8 @@ const Planted& planted_second_time_constant() {
     static const Planted planted = [] {
         const GapModel m = testing::paper_gyro_model(8);
         std::vector<double> added(1500);
-        for (std::size_t k = 0; k < added.size(); ++k) added[k] = -4.0 * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
+        for (std::size_t k = 0; k < added.size(); ++k)
+            added[k] = -4.0 * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
         Planted p{testing::gyro_log(m, 1500, added, 78), {}};
         p.result = diagnose(p.log, sim::paper_model(), small_options());
         return p;
@@ -172,7 +177,8 @@ TEST(Diagnose, PlantedSecondTimeConstantIsAttributedAndShrinks) {
     EXPECT_EQ(j["holdout"], "interleaved");
     EXPECT_EQ(j["replicates"], small_options().replicates);
     const auto& e = j["explanations"][0];
-    for (const char* key : {"effect", "params", "gap_before", "gap_after", "heldout_shrink"}) EXPECT_TRUE(e.contains(key)) << key;
+    for (const char* key : {"effect", "params", "gap_before", "gap_after", "heldout_shrink"})
+        EXPECT_TRUE(e.contains(key)) << key;
     // `added` says which candidates are in the model: the added ones first, then every other tried, whether it
     // passed (`accepted`) or not.
     std::size_t added = 0;
@@ -234,7 +240,8 @@ TEST(Diagnose, TheResultDoesNotDependOnTheThreadCount) {
     one.threads = 1;
     const Planted& p = planted_second_time_constant();
     ASSERT_GE(p.result.tried.size(), 3u) << "several candidates, so that they did run side by side";
-    EXPECT_EQ(gap_to_json(diagnose(p.log, sim::paper_model(), one), one).dump(), gap_to_json(p.result, small_options()).dump());
+    EXPECT_EQ(gap_to_json(diagnose(p.log, sim::paper_model(), one), one).dump(),
+              gap_to_json(p.result, small_options()).dump());
 }
 
 // A step is marked against its channel's held-out bound at the diagnosis's level (GapOptions::alpha), as the gap
@@ -278,7 +285,8 @@ TEST(Diagnose, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     ASSERT_NE(guide, std::string::npos) << md.substr(0, 600);
     EXPECT_LT(guide, md.find("| | fitting part |"));
     // The settings a reader needs to repeat it, the step limit among them (small_options(): one effect).
-    EXPECT_NE(md.find("judged on tenths 1, 2, 3, 6, 8; at most 1 effect added stepwise. "), std::string::npos) << md.substr(0, 1500);
+    EXPECT_NE(md.find("judged on tenths 1, 2, 3, 6, 8; at most 1 effect added stepwise. "), std::string::npos)
+        << md.substr(0, 1500);
     const auto explanation = md.find("## Explanation");
     ASSERT_NE(explanation, std::string::npos);
     EXPECT_NE(md.find("| 1 | thermal_second_tc | gyro | c3_dps=", explanation), std::string::npos);
@@ -365,13 +373,20 @@ TEST(Diagnose, TheVerdictReasonReadsALevelStepAsOutsizedIncrementsOrAsNoLibraryE
     r.level_steps.push_back(s);
     const std::string outsized = verdict_reason(r, small_options());
     EXPECT_EQ(outsized.rfind("on gyro it removes 100 %", 0), 0u) << outsized;
-    EXPECT_NE(outsized.find("level steps on gyro (1.50 counts (0.264 deg/s) at t = 700.5 s, -1.50 counts (-0.264 deg/s) at 1400.5 s; p = 0.012) "
+    EXPECT_NE(outsized.find("level steps on gyro (1.50 counts (0.264 deg/s) at t = 700.5 s, -1.50 counts (-0.264 "
+                            "deg/s) at 1400.5 s; p = 0.012) "
                             "are read as the "
-                            "processes' outsized increments"), std::string::npos) << outsized;
+                            "processes' outsized increments"),
+              std::string::npos)
+        << outsized;
     r.level_steps[0].outsized = false;
     r.level_steps[0].significant = true;
     const std::string unexplained = verdict_reason(r, small_options());
-    EXPECT_EQ(unexplained.rfind("a level step on gyro (1.50 counts (0.264 deg/s) at t = 700.5 s; p = 0.012) that no library effect makes", 0), 0u)
+    EXPECT_EQ(
+        unexplained.rfind(
+            "a level step on gyro (1.50 counts (0.264 deg/s) at t = 700.5 s; p = 0.012) that no library effect makes",
+            0),
+        0u)
         << unexplained;
     EXPECT_EQ(unexplained.find("outsized"), std::string::npos) << unexplained;
 }
@@ -387,7 +402,9 @@ TEST(Diagnose, SentencesSayOneCellAndTwoRows) {
     o.explain = false;
     EXPECT_EQ(verdict_reason(r, o).rfind("1 cell located", 0), 0u) << verdict_reason(r, o);
     r.saturated = {{Channel::gyro, 1, 100.0, 100.0}, {Channel::accel_z, 2, 3.0, 4.0}};
-    EXPECT_EQ(saturated_channels_sentence(r).rfind("gyro in 1 row at t = 100.0 s, accel_z in 2 rows from t = 3.0 s to 4.0 s:", 0), 0u)
+    EXPECT_EQ(saturated_channels_sentence(r).rfind(
+                  "gyro in 1 row at t = 100.0 s, accel_z in 2 rows from t = 3.0 s to 4.0 s:", 0),
+              0u)
         << saturated_channels_sentence(r);
     r.left_out = {{5, 10.0, 10.5, 1, "--exclude"}, {9, 20.0, 22.0, 2, "--exclude-saturated"}};
     EXPECT_EQ(left_out_sentence(r).rfind("1 row from t = 10 s to 10.5 s (--exclude), 2 rows from t = 20 s to 22 s "
@@ -449,7 +466,8 @@ TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLineari
     ASSERT_GE(p.size(), 4u);
     std::vector<double> fitted_width, true_width;
     for (std::size_t k = 1; k < p.size(); ++k) {
-        const int lower = std::stoi(p[k - 1].first.substr(1)), upper = std::stoi(p[k].first.substr(1));  // "t507_counts"
+        const int lower = std::stoi(p[k - 1].first.substr(1)),
+                  upper = std::stoi(p[k].first.substr(1));  // "t507_counts"
         if (upper != lower + 1) continue;
         fitted_width.push_back(p[k].second - p[k - 1].second);
         true_width.push_back(converter.transition_counts(upper) - converter.transition_counts(lower));
@@ -474,7 +492,8 @@ TEST(Diagnose, ARawModeLogsCodeHistogramLocatesAndExplainsDifferentialNonLineari
         std::filesystem::remove_all(dir);
         write_gap_report(r, raw_mode_log(dnl, 22), dir.string(), full);
         ASSERT_TRUE(std::filesystem::exists(dir / "gap_codes_gyro.png"));
-        const auto base = testing::plot_block(dir / "gap_codes_gyro.dat", 0), after = testing::plot_block(dir / "gap_codes_gyro.dat", 1),
+        const auto base = testing::plot_block(dir / "gap_codes_gyro.dat", 0),
+                   after = testing::plot_block(dir / "gap_codes_gyro.dat", 1),
                    real = testing::plot_block(dir / "gap_codes_gyro.dat", 2);
         ASSERT_EQ(real.size(), base.size());
         ASSERT_EQ(real.size(), after.size());
@@ -505,7 +524,8 @@ TEST(Diagnose, ADiffuseGapIsReportedAndSearchedOnRequest) {
     int named = 0;
     for (const auto& [size, seed] : std::vector<std::pair<double, std::uint64_t>>{{3.0, 78}, {2.5, 81}, {2.5, 82}}) {
         std::vector<double> added(1500);
-        for (std::size_t k = 0; k < added.size(); ++k) added[k] = -size * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
+        for (std::size_t k = 0; k < added.size(); ++k)
+            added[k] = -size * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
         const LogData log = testing::gyro_log(m, 1500, added, seed);
         GapOptions o = small_options();
         const GapResult plain = diagnose(log, sim::paper_model(), o);
@@ -523,8 +543,9 @@ TEST(Diagnose, ADiffuseGapIsReportedAndSearchedOnRequest) {
             const GapResult only = diagnose(log, sim::paper_model(), locate);
             EXPECT_FALSE(only.diffuse_searched);
             EXPECT_EQ(only.verdict, "none");
-            EXPECT_EQ(verdict_reason(only, locate), "no cell located, but the held-out score exceeds its bound (a diffuse gap); "
-                                                    "no candidate tried (--locate-only)");
+            EXPECT_EQ(verdict_reason(only, locate),
+                      "no cell located, but the held-out score exceeds its bound (a diffuse gap); "
+                      "no candidate tried (--locate-only)");
         }
         const GapResult searched = diagnose(log, sim::paper_model(), o);
         EXPECT_FALSE(searched.tried.empty()) << "seed " << seed;

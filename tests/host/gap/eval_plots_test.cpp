@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "plot_data.hpp"
 #include "host/gap/eval_plots.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/util/error.hpp"
+#include "plot_data.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -57,7 +57,8 @@ TEST(EvalPlots, SharesAgainstSizeCarryClopperPearsonIntervals) {
 TEST(EvalPlots, ARunThatPlantedNothingHasNoSizeToPlot) {
     EvalScores s;
     s.by_size = {size_score("none", 0.0, 40, 2, 38)};
-    EXPECT_THROW(write_eval_plots(s, (std::filesystem::temp_directory_path() / "driftlab_eval_plots_none").string()), UsageError);
+    EXPECT_THROW(write_eval_plots(s, (std::filesystem::temp_directory_path() / "driftlab_eval_plots_none").string()),
+                 UsageError);
 }
 
 }  // namespace

@@ -139,7 +139,8 @@ TEST(GapEval, AGeneratorsDetectionThresholdDoesNotDependOnTheOthersInTheRun) {
     ASSERT_EQ(alone.size(), 1u);
     EXPECT_EQ(alone[0].a50, both[1].a50);
     ASSERT_EQ(alone[0].curve.size(), both[1].curve.size());
-    for (std::size_t k = 0; k < alone[0].curve.size(); ++k) EXPECT_EQ(alone[0].curve[k].detected, both[1].curve[k].detected);
+    for (std::size_t k = 0; k < alone[0].curve.size(); ++k)
+        EXPECT_EQ(alone[0].curve[k].detected, both[1].curve[k].detected);
 }
 
 // The converter truth: a SAR converter with mismatched bits, planted at 4 x a_50 (0.51 output-noise deviations of
@@ -200,7 +201,6 @@ TEST(GapEval, LogisticFitRecoversTheMidpointOfAKnownCurve) {
     EXPECT_FALSE(logistic_a50(curve).has_value());
 }
 
-
 // Vuong's test over held-out cells: a runner-up whose per-cell losses differ from the best's by noise alone is a
 // close call; one that loses consistently on every cell is not.
 TEST(GapEval, CloseCallIsVuongOverHeldOutCells) {
@@ -256,7 +256,8 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     c.tried[1].residual_step.tested = true;  // flicker leaves a level step at p = 0.03: the log is not explained
     c.tried[1].residual_step.p_value = 0.03;
     EXPECT_EQ(decide(c, th).verdict, "unexplained");
-    EXPECT_EQ(decide(c, {1.0, 0.3, 0.02, InformationCriterion::bic}).verdict, "flicker");  // ... unless the level is below p
+    EXPECT_EQ(decide(c, {1.0, 0.3, 0.02, InformationCriterion::bic}).verdict,
+              "flicker");  // ... unless the level is below p
     c.detected = false;
     EXPECT_EQ(decide(c, th).verdict, "none");
 }
@@ -284,7 +285,7 @@ TEST(GapEval, TuningKeepsTheShippedThresholdsUnlessTheTuningSeedsSignificantlyPr
         e->heldout_loss_gain = 20.0, e->gaussian = true, e->spectral_observations = 1000.0;
     }
     right.loss_gain = 100.0, right.spectral_gain = 40.0, right.spectral_extra_parameters = 1;
-    spurious.loss_gain = 3.0;  // passes at 0.25 x 10, not at 0.5 x 10
+    spurious.loss_gain = 3.0;                                                // passes at 0.25 x 10, not at 0.5 x 10
     spurious.spectral_gain = 400.0, spurious.spectral_extra_parameters = 2;  // the best under AIC and BIC
     planted.tried = {right, spurious};
     ASSERT_EQ(decide(planted, defaults).verdict, "gauss_markov");
@@ -352,7 +353,7 @@ TEST(GapEval, CloseCallBetweenGaussianCandidatesIsVuongOverFrequencies) {
     EXPECT_FALSE(close_call(best, runner, 1.96, bic));  // 10 > 1.96 sqrt(200) 0.2 = 5.5
     best.spectral_extra_parameters = 3;                 // one more parameter: 10 - ln(400) / 2 = 7.0, still separated
     EXPECT_FALSE(close_call(best, runner, 1.96, bic));
-    best.spectral_extra_parameters = 5;                 // three more: 10 - 3 ln(400) / 2 = 1.0 < 5.5
+    best.spectral_extra_parameters = 5;  // three more: 10 - 3 ln(400) / 2 = 1.0 < 5.5
     EXPECT_TRUE(close_call(best, runner, 1.96, bic));
     EXPECT_FALSE(close_call(best, runner, 1.96, aic));  // AIC: 10 - 3 = 7 > 5.5
 }
@@ -398,11 +399,13 @@ TEST(GapEval, ScoresCountTheScoringDecisions) {
         if (detected) c.tried = {flicker};
         return c;
     };
-    const std::vector<EvalCase> cases{
-        make("none", "none", 0.0, false, false),          make("none", "none", 0.0, true, false),  // one false positive
-        make("none", "none", 0.0, false, false),          make("none", "none", 0.0, true, true),   // tuning: not scored
-        make("kasdin_flicker", "flicker", 2.0, true, false), make("kasdin_flicker", "flicker", 2.0, false, false),
-        make("mode_hop", "", 2.0, true, false)};  // out of library, attributed: wrong
+    const std::vector<EvalCase> cases{make("none", "none", 0.0, false, false),
+                                      make("none", "none", 0.0, true, false),  // one false positive
+                                      make("none", "none", 0.0, false, false),
+                                      make("none", "none", 0.0, true, true),  // tuning: not scored
+                                      make("kasdin_flicker", "flicker", 2.0, true, false),
+                                      make("kasdin_flicker", "flicker", 2.0, false, false),
+                                      make("mode_hop", "", 2.0, true, false)};  // out of library, attributed: wrong
     EvalOptions o;
     const EvalScores s = score(cases, Thresholds{1.0, 0.3, 0.05, InformationCriterion::bic}, o, {});
     EXPECT_EQ(s.clean, 3u);
@@ -418,13 +421,15 @@ TEST(GapEval, ScoresCountTheScoringDecisions) {
     EXPECT_NEAR(*f.predicted, 0.9, 1e-12);
     EXPECT_EQ(s.by_size[2].top1, 0);
     const auto j = scores_json(s);
-    for (const char* key : {"thresholds", "a50", "false_positive", "confusion", "by_size"}) EXPECT_TRUE(j.contains(key)) << key;
+    for (const char* key : {"thresholds", "a50", "false_positive", "confusion", "by_size"})
+        EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["confusion"]["mode_hop"]["flicker"], 1);
     EXPECT_EQ(j["by_size"][1]["top1"], 1);
     EXPECT_NE(scores_markdown(s).find("| kasdin_flicker | 2 | 2 | 1 | 1 | 1 |"), std::string::npos);
     // A size the search reached twice (0.4 and 0.4000000000000001) is one entry of both batches in the table.
     const DetectionSize twice{"thermal_rc", 0.26, {{0.2, 0, 4}, {0.2, 1, 4}, {0.4, 4, 4}, {0.4000000000000001, 4, 4}}};
-    const std::string md = scores_markdown(score(cases, Thresholds{1.0, 0.3, 0.05, InformationCriterion::bic}, o, {twice}));
+    const std::string md =
+        scores_markdown(score(cases, Thresholds{1.0, 0.3, 0.05, InformationCriterion::bic}, o, {twice}));
     EXPECT_NE(md.find("| thermal_rc | 0.26 | 0.20: 1/8; 0.40: 8/8 |"), std::string::npos) << md;
 
     // The targets, read at 2 x a_50 with exact intervals: the false-positive rate 1/3 (Clopper-Pearson 0.8-90.6 %),
@@ -444,7 +449,8 @@ TEST(GapEval, ScoresCountTheScoringDecisions) {
     EXPECT_DOUBLE_EQ(s.targets[2].rate, 1.0);
     EXPECT_FALSE(s.targets[2].met);
     EXPECT_EQ(j["targets"].size(), 3u);
-    EXPECT_NE(scores_markdown(s).find("| top-1: kasdin_flicker -> flicker at 2 x a_50 | 1 / 2 | 50.0 % |"), std::string::npos);
+    EXPECT_NE(scores_markdown(s).find("| top-1: kasdin_flicker -> flicker at 2 x a_50 | 1 / 2 | 50.0 % |"),
+              std::string::npos);
 
     // 100 clean logs, none flagged: the interval (0-3.6 %) lies below 5 %, so the target is met and settled; the
     // mode hop now at two sizes also gets its all-sizes row (1 of 2 attributed).
@@ -514,7 +520,8 @@ TEST(GapEval, TruthGeneratorsHaveTheirRequestedSize) {
     EXPECT_NEAR(*std::min_element(th.begin(), th.end()), -1.5, 1e-9);
     const auto hop = make_truth("mode_hop", t, 1.0, 4, 4);
     EXPECT_EQ(hop.front(), 0.0);
-    EXPECT_NEAR(std::abs(*std::max_element(hop.begin(), hop.end(), [](double a, double b) { return std::abs(a) < std::abs(b); })),
+    EXPECT_NEAR(std::abs(*std::max_element(hop.begin(), hop.end(),
+                                           [](double a, double b) { return std::abs(a) < std::abs(b); })),
                 1.0, 1e-12);
 }
 
@@ -522,8 +529,8 @@ TEST(GapEval, TruthGeneratorsHaveTheirRequestedSize) {
 // logs (precision, recall, F1), with a declared close call counted in `or pair` only, and the effects added with the
 // held-out score already within its bound counted apart (true / added).
 TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
-    auto make = [](std::vector<std::string> added, std::vector<std::string> close, std::vector<bool> within, std::string verdict,
-                   double before, double after) {
+    auto make = [](std::vector<std::string> added, std::vector<std::string> close, std::vector<bool> within,
+                   std::string verdict, double before, double after) {
         PairCase c;
         c.first = "thermostat", c.second = "kasdin_flicker", c.level = 2.0, c.detected = true;
         c.added = std::move(added), c.close_calls = std::move(close), c.within_bound = std::move(within);
@@ -533,9 +540,11 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     };
     const std::vector<PairCase> cases{
         make({"ambient_cycle", "flicker"}, {"", ""}, {false, false}, "ambient_cycle", 11.0, 2.0),  // both: shrink 0.9
-        make({"gauss_markov", "ambient_cycle"}, {"flicker", ""}, {false, true}, "gauss_markov", 5.0, 1.0),  // one, one by close call
-        make({"flicker"}, {""}, {false}, "flicker", 21.0, 1.0),                                               // one of two
-        make({"ambient_cycle", "flicker", "spikes"}, {"", "", ""}, {false, false, true}, "ambient_cycle", 3.0, 2.0),  // both, one wrong: 0.5
+        make({"gauss_markov", "ambient_cycle"}, {"flicker", ""}, {false, true}, "gauss_markov", 5.0,
+             1.0),                                               // one, one by close call
+        make({"flicker"}, {""}, {false}, "flicker", 21.0, 1.0),  // one of two
+        make({"ambient_cycle", "flicker", "spikes"}, {"", "", ""}, {false, false, true}, "ambient_cycle", 3.0,
+             2.0),  // both, one wrong: 0.5
         make({}, {}, {}, "unexplained", 4.0, 4.0)};
     const EvalScores s = score({}, Thresholds{}, EvalOptions{}, {}, cases);
     ASSERT_EQ(s.pairs.size(), 1u);
@@ -566,10 +575,12 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     EXPECT_EQ(j["pairs"][0]["within_bound_true"], 1);
     EXPECT_EQ(j["pairs"][0]["effects"].size(), 2u);
     EXPECT_NEAR(j["pairs"][0]["f1"].get<double>(), z.f1, 1e-12);
-    EXPECT_NE(scores_markdown(s).find("| thermostat + kasdin_flicker (ambient_cycle + flicker) | 5 | 5 | 3 | 2 | 2 | 1 | 0.75 | 0.60 | 0.70 | 0.67 | 1 / 2 | 0.90 |"),
+    EXPECT_NE(scores_markdown(s).find("| thermostat + kasdin_flicker (ambient_cycle + flicker) | 5 | 5 | 3 | 2 | 2 | 1 "
+                                      "| 0.75 | 0.60 | 0.70 | 0.67 | 1 / 2 | 0.90 |"),
               std::string::npos)
         << scores_markdown(s);
-    EXPECT_NE(scores_markdown(s).find("within its bound: 1 of 2 true; the others: 5 of 6."), std::string::npos) << scores_markdown(s);
+    EXPECT_NE(scores_markdown(s).find("within its bound: 1 of 2 true; the others: 5 of 6."), std::string::npos)
+        << scores_markdown(s);
 
     // A generator planted alone ("none" second) has one truth effect: an extra effect beside it costs precision only.
     std::vector<PairCase> alone(2, make({"flicker", "gauss_markov"}, {"", ""}, {false, true}, "flicker", 5.0, 1.0));
@@ -584,7 +595,8 @@ TEST(GapEval, TwoEffectLogsAreScoredAsSetsOfEffects) {
     EXPECT_DOUBLE_EQ(a.precision, 2.0 / 3.0);
     const EvalScores sa = score({}, Thresholds{}, EvalOptions{}, {}, alone);
     EXPECT_EQ(scores_json(sa)["pairs"][0]["effects"], nlohmann::json::array({"flicker"}));
-    EXPECT_NE(scores_markdown(sa).find("| kasdin_flicker alone (flicker) | 2 | 2 | 2 | 2 | 1 | 0 | 0.67 | 1.00 | 1.00 | 0.80 | 0 / 1 |"),
+    EXPECT_NE(scores_markdown(sa).find(
+                  "| kasdin_flicker alone (flicker) | 2 | 2 | 2 | 2 | 1 | 0 | 0.67 | 1.00 | 1.00 | 0.80 | 0 / 1 |"),
               std::string::npos)
         << scores_markdown(sa);
 }
@@ -626,7 +638,8 @@ TEST(GapEval, TwoMeanShapesTogetherAreNotSwallowedByARandomWalk) {
     o.score_first = 11;
     o.score_last = 22;
     o.pairs = {{"thermostat", "thermal_rc"}};
-    const auto cases = run_pairs(o, {{"thermostat", 0.23, {}}, {"thermal_rc", 0.19, {}}});  // docs/gap-results.md's a_50
+    const auto cases =
+        run_pairs(o, {{"thermostat", 0.23, {}}, {"thermal_rc", 0.19, {}}});  // docs/gap-results.md's a_50
     ASSERT_EQ(cases.size(), 12u);
     int shape_first = 0, cycle_added = 0;
     for (const auto& c : cases) {

@@ -71,8 +71,8 @@ inline LogData gyro_log(const GapModel& m, std::size_t samples, const std::vecto
 /// A recording of the shared folder's data/real/`file` read as a plain recording (`mappings` as --as gives them, one
 /// row every `sample_period_s`, blocks of `block` rows) into `log`, and the unit it reads as into `unit`; false when
 /// the file is absent, for the test to skip.
-inline bool load_shared_recording(const std::string& file, std::initializer_list<const char*> mappings, double sample_period_s,
-                                  int block, LogData& log, sim::SimModel& unit) {
+inline bool load_shared_recording(const std::string& file, std::initializer_list<const char*> mappings,
+                                  double sample_period_s, int block, LogData& log, sim::SimModel& unit) {
     const std::string path = std::string(DRIFTLAB_SHARED_DIR) + "/data/real/" + file;
     if (!std::filesystem::exists(path)) return false;
     PlainRecording how;

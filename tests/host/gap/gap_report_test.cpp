@@ -27,8 +27,8 @@ Explanation candidate(const std::string& effect, int step, bool accepted, double
 }
 
 // A diagnosis that added one effect on the gyro, with its channel's held-out scores and the whole log's after it.
-GapResult one_added(const std::string& effect, double shrink, double heldout_before, double heldout_after, double gap_after,
-                    double bound) {
+GapResult one_added(const std::string& effect, double shrink, double heldout_before, double heldout_after,
+                    double gap_after, double bound) {
     GapResult r;
     Explanation e = candidate(effect, 1, true, shrink);
     e.heldout_before = heldout_before, e.heldout_after = heldout_after;
@@ -42,8 +42,11 @@ GapResult one_added(const std::string& effect, double shrink, double heldout_bef
 TEST(GapReport, TheVerdictSaysWhoseHeldOutScoreItShrinksAndHow) {
     const GapResult r = one_added("ambient_cycle", 0.9946, 248.17, 2.13, 0.99, 1.24);
     const std::string reason = verdict_reason(r, GapOptions{});
-    EXPECT_EQ(reason.rfind("on gyro it removes 99 % of gyro's own held-out gap excess (gyro's held-out score 248.17 -> 2.13; "
-                           "shrink = (before - after) / (before - 1); the whole log's scores are below); the gap closes", 0), 0u)
+    EXPECT_EQ(
+        reason.rfind("on gyro it removes 99 % of gyro's own held-out gap excess (gyro's held-out score 248.17 -> 2.13; "
+                     "shrink = (before - after) / (before - 1); the whole log's scores are below); the gap closes",
+                     0),
+        0u)
         << reason;
 }
 
@@ -53,13 +56,16 @@ TEST(GapReport, AGapLeftOpenAtTheStepLimitSaysTheSearchStoppedThere) {
     GapResult r = one_added("rate_random_walk", 0.8, 9.0, 2.6, 2.6, 1.3);
     GapOptions one;
     one.explain_options.max_effects = 1;
-    EXPECT_NE(verdict_reason(r, one).find("; the held-out gap stays above its bound after 1 effect, the most --max-effects allows"),
-              std::string::npos) << verdict_reason(r, one);
+    EXPECT_NE(verdict_reason(r, one).find(
+                  "; the held-out gap stays above its bound after 1 effect, the most --max-effects allows"),
+              std::string::npos)
+        << verdict_reason(r, one);
     const std::string below_limit = verdict_reason(r, GapOptions{});
     EXPECT_NE(below_limit.find("; the held-out gap stays above its bound"), std::string::npos) << below_limit;
     EXPECT_EQ(below_limit.find(" the most "), std::string::npos) << below_limit;
     for (int k = 2; k <= 3; ++k) r.accepted.push_back(candidate("flicker", k, true, 0.5));
-    EXPECT_NE(verdict_reason(r, GapOptions{}).find("stays above its bound after 3 effects, the most the search adds"), std::string::npos)
+    EXPECT_NE(verdict_reason(r, GapOptions{}).find("stays above its bound after 3 effects, the most the search adds"),
+              std::string::npos)
         << verdict_reason(r, GapOptions{});
     r.gap_after_heldout = 1.1;  // closed: no limit to speak of
     EXPECT_EQ(verdict_reason(r, GapOptions{}).find(" the most "), std::string::npos) << verdict_reason(r, GapOptions{});
@@ -73,30 +79,33 @@ TEST(GapReport, AStepTakenWithTheHeldOutScoreWithinItsBoundIsMarkedSo) {
     Explanation second = candidate("thermal_second_tc", 2, true, 0.54);
     second.heldout_before = 1.70, second.heldout_after = 1.32, second.heldout_bound = 2.80;
     r.accepted.push_back(second);
-    const std::string marked = "; then thermal_second_tc on gyro (added with the held-out score already within its bound); the gap closes";
+    const std::string marked =
+        "; then thermal_second_tc on gyro (added with the held-out score already within its bound); the gap closes";
     const std::string reason = verdict_reason(r, GapOptions{});
     EXPECT_NE(reason.find(marked), std::string::npos) << reason;
     EXPECT_GT(reason.find("within its bound"), reason.find(marked)) << "the first step is not marked: " << reason;
     r.accepted.back().heldout_bound = 1.70;
     EXPECT_NE(verdict_reason(r, GapOptions{}).find(marked), std::string::npos) << "at the bound";
     r.accepted.back().heldout_bound = 1.69;
-    EXPECT_EQ(verdict_reason(r, GapOptions{}).find("within its bound"), std::string::npos) << verdict_reason(r, GapOptions{});
+    EXPECT_EQ(verdict_reason(r, GapOptions{}).find("within its bound"), std::string::npos)
+        << verdict_reason(r, GapOptions{});
 }
 
 // The diagnosis holds its candidates passed first, then by shrink (a step-3 effect above a step-2 one); the table
 // lists the added in step order, then the others by step, each step's as the diagnosis held them.
 TEST(GapReport, TheCandidateTableListsTheAddedInStepOrderThenTheOthersByStep) {
     GapResult r;
-    r.tried = {candidate("rate_random_walk", 1, true, 1.0), candidate("ambient_cycle", 1, true, 0.99),
-               candidate("thermal_second_tc", 3, true, 0.66), candidate("rate_random_walk", 2, true, 0.46),
+    r.tried = {candidate("rate_random_walk", 1, true, 1.0),    candidate("ambient_cycle", 1, true, 0.99),
+               candidate("thermal_second_tc", 3, true, 0.66),  candidate("rate_random_walk", 2, true, 0.46),
                candidate("thermal_second_tc", 1, false, 0.37), candidate("flicker", 2, false, 0.01),
-               candidate("gauss_markov", 1, false, 0.0), candidate("flicker", 3, false, -0.49)};
+               candidate("gauss_markov", 1, false, 0.0),       candidate("flicker", 3, false, -0.49)};
     r.accepted = {r.tried[1], r.tried[3], r.tried[2]};  // in the order they were added
     std::vector<std::string> order;
-    for (const Explanation* e : candidates_in_table_order(r)) order.push_back(std::to_string(e->step) + " " + e->effect);
-    const std::vector<std::string> expected{"1 ambient_cycle",    "2 rate_random_walk", "3 thermal_second_tc",
-                                            "1 rate_random_walk", "1 thermal_second_tc", "1 gauss_markov",
-                                            "2 flicker",          "3 flicker"};
+    for (const Explanation* e : candidates_in_table_order(r))
+        order.push_back(std::to_string(e->step) + " " + e->effect);
+    const std::vector<std::string> expected{
+        "1 ambient_cycle",     "2 rate_random_walk", "3 thermal_second_tc", "1 rate_random_walk",
+        "1 thermal_second_tc", "1 gauss_markov",     "2 flicker",           "3 flicker"};
     EXPECT_EQ(order, expected);
 }
 
@@ -109,9 +118,12 @@ TEST(GapReport, ASecondTimeConstantBeyondTheRecordIsSaidToBeOneWithItsSlope) {
     e.params = {{"c3_dps", -0.22}, {"t2_s", 7500.0}};
     e.whole_log_params = {{"c3_dps", -0.075}, {"t2_s", 7500.0}};
     const std::string beyond = estimate_text(e, 1500.0);
-    EXPECT_NE(beyond.find("c3_dps=-0.075 t2_s=7500 (whole log; fitting part: c3_dps=-0.22 t2_s=7500)"), std::string::npos) << beyond;
+    EXPECT_NE(beyond.find("c3_dps=-0.075 t2_s=7500 (whole log; fitting part: c3_dps=-0.22 t2_s=7500)"),
+              std::string::npos)
+        << beyond;
     EXPECT_NE(beyond.find("t2 is beyond 3x the log's 1500 s"), std::string::npos) << beyond;
-    EXPECT_NE(beyond.find("initial slope, -0.00001 deg/s per s"), std::string::npos) << beyond;  // -0.075 / 7500, no exponent
+    EXPECT_NE(beyond.find("initial slope, -0.00001 deg/s per s"), std::string::npos)
+        << beyond;  // -0.075 / 7500, no exponent
     e.whole_log_params = {{"c3_dps", -0.075}, {"t2_s", 4000.0}};
     EXPECT_EQ(estimate_text(e, 1500.0).find("beyond"), std::string::npos) << estimate_text(e, 1500.0);
     e.effect = "gauss_markov";
@@ -126,7 +138,8 @@ TEST(GapReport, ASizeTheWholeLogSetsToNearlyNothingIsSaidToBeSo) {
     e.effect = "rate_random_walk";
     e.params = {{"k_dps_per_sqrt_s", 4.543e-4}};
     e.whole_log_params = {{"k_dps_per_sqrt_s", 3.804e-10}};
-    EXPECT_NE(estimate_text(e, 1500.0).find("its k_dps_per_sqrt_s is under 1 % of the fitting part's"), std::string::npos)
+    EXPECT_NE(estimate_text(e, 1500.0).find("its k_dps_per_sqrt_s is under 1 % of the fitting part's"),
+              std::string::npos)
         << estimate_text(e, 1500.0);
     e.whole_log_params = {{"k_dps_per_sqrt_s", 2e-4}};
     EXPECT_EQ(estimate_text(e, 1500.0).find("under 1 %"), std::string::npos) << estimate_text(e, 1500.0);
@@ -144,8 +157,13 @@ TEST(GapReport, ANoneVerdictSaysWhenEq1IsSlowEnoughToAbsorbASlowEffect) {
     LogData log;
     log.t_s = {0.0, 1.0, 1500.0};
     const std::string slow = slow_drift_sentence(r, log);
-    EXPECT_EQ(slow.rfind("the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = 953 s on accel_x, at least "
-                         "half the log's 1500 s, so it still bends at the log's end", 0), 0u) << slow;
+    EXPECT_EQ(
+        slow.rfind(
+            "the paper's drift model, eq. 1: C1(1 - e^(-t/T)) + C2, is fitted with T = 953 s on accel_x, at least "
+            "half the log's 1500 s, so it still bends at the log's end",
+            0),
+        0u)
+        << slow;
     EXPECT_NE(slow.find("taken up by the drift fit"), std::string::npos) << slow;
     log.t_s = {0.0, 1.0, 4000.0};  // Fig. 3's length: both settle within it
     EXPECT_EQ(slow_drift_sentence(r, log), "");
@@ -159,7 +177,8 @@ TEST(GapReport, ALocatedCellShowsTheDigitsItsIntervalWarrants) {
     wide.ratio = 173.285, wide.interval_low = 27.075, wide.interval_high = 1109.073;
     EXPECT_EQ(located_value_text(wide), "ratio 170 [30, 1110]");  // the half-width 541: a last digit at 10
     LocatedCell narrow;
-    narrow.ratio = std::nan(""), narrow.difference = 0.3063, narrow.interval_low = 0.2957, narrow.interval_high = 0.3169;
+    narrow.ratio = std::nan(""), narrow.difference = 0.3063, narrow.interval_low = 0.2957,
+    narrow.interval_high = 0.3169;
     EXPECT_EQ(located_value_text(narrow), "diff 0.306 [0.296, 0.317]");
 }
 
@@ -181,7 +200,8 @@ TEST(GapReport, AMeanCellsDifferenceIsAlsoInTheChannelsUnit) {
     EXPECT_EQ(located_cell_text(r, l), "diff 0.783 [0.744, 0.823]");
 }
 
-// The JSON's cell keys keep their three significant digits; the text shows no exponent and a band of one lag as that lag.
+// The JSON's cell keys keep their three significant digits; the text shows no exponent and a band of one lag as that
+// lag.
 TEST(GapReport, ACellsTextHasNoExponentAndALagBandOfOneLagIsThatLag) {
     std::vector<double> t(1500), y(1500);
     for (std::size_t k = 0; k < t.size(); ++k) {
@@ -203,14 +223,15 @@ TEST(GapReport, ACellsTextHasNoExponentAndALagBandOfOneLagIsThatLag) {
     EXPECT_EQ(find("lag=32s..63s"), "lag=32s..63s");
     EXPECT_EQ(find("tau=64s"), "tau=64s");
     EXPECT_EQ(find("kurtosis"), "kurtosis");  // no number: the key as it is
-    for (const Cell& c : layout) EXPECT_EQ(c.shown().find("e+"), std::string::npos) << c.cell << " shown as " << c.shown();
+    for (const Cell& c : layout)
+        EXPECT_EQ(c.shown().find("e+"), std::string::npos) << c.cell << " shown as " << c.shown();
 }
 
 // A log or model file named as one of the report's files would be written over: report_files() lists them all.
 TEST(GapReport, TheReportsFilesAreListedWhicheverChannelsItPlots) {
     const std::vector<std::string> files = report_files("rep");
-    for (const std::string expected : {"rep/gap.md", "rep/gap_mean_gyro.png", "rep/gap_mean_gyro.dat", "rep/gap_adev_accel_z.png.gp",
-                                       "rep/gap_codes_accel_x.png"})
+    for (const std::string expected : {"rep/gap.md", "rep/gap_mean_gyro.png", "rep/gap_mean_gyro.dat",
+                                       "rep/gap_adev_accel_z.png.gp", "rep/gap_codes_accel_x.png"})
         EXPECT_NE(std::find(files.begin(), files.end(), expected), files.end()) << expected;
     EXPECT_EQ(std::find(files.begin(), files.end(), "rep/h.csv"), files.end());
 }

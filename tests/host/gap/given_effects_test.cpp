@@ -44,11 +44,13 @@ TEST(GivenEffects, AModelsProcessIsHeldAtItsValuesAndExplainsTheLogItMade) {
         ASSERT_EQ(r.given.held.size(), 1u);
         EXPECT_EQ(r.given.held[0].effect, "gauss_markov");
         EXPECT_EQ(r.given.held[0].channel, "gyro");
-        EXPECT_EQ(r.given.held[0].params, (std::vector<std::pair<std::string, double>>{{"sigma_dps", kSigma}, {"tau_s", kTau}}));
+        EXPECT_EQ(r.given.held[0].params,
+                  (std::vector<std::pair<std::string, double>>{{"sigma_dps", kSigma}, {"tau_s", kTau}}));
         EXPECT_TRUE(r.given.refitted.empty());
         EXPECT_EQ(r.given.kept, std::vector<std::string>{"gauss_markov"}) << "what it gives accel_x, not analysed";
         ASSERT_EQ(r.base.held[0].gauss_markov.size(), 1u);
-        EXPECT_DOUBLE_EQ(r.base.held[0].gauss_markov[0].variance_counts2, std::pow(kSigma * counts_per_unit(m, Channel::gyro), 2));
+        EXPECT_DOUBLE_EQ(r.base.held[0].gauss_markov[0].variance_counts2,
+                         std::pow(kSigma * counts_per_unit(m, Channel::gyro), 2));
         EXPECT_TRUE(r.base.held[1].gauss_markov.empty());
         // Simulated as the file gives it, on every channel.
         ASSERT_EQ(r.base.effects.size(), 1u);
@@ -89,7 +91,8 @@ TEST(GivenEffects, AModelsCycleIsRefittedToTheLogAndAMissingOneIsFoundBesideAHel
     EXPECT_DOUBLE_EQ(r.base.effects[1].table["period_s"].value_or(0.0), cycle.params[1].second);
     const std::string said = given_effects_sentence(r.given);
     EXPECT_NE(said.find("refitted to this log: ambient_cycle on gyro"), std::string::npos) << said;
-    EXPECT_NE(said.find("held at the model's values: gauss_markov on gyro sigma_dps=0.15 tau_s=30"), std::string::npos) << said;
+    EXPECT_NE(said.find("held at the model's values: gauss_markov on gyro sigma_dps=0.15 tau_s=30"), std::string::npos)
+        << said;
     const auto j = gap_to_json(r, options());
     EXPECT_EQ(j["given"]["refitted"][0]["effect"], "ambient_cycle");
     EXPECT_EQ(j["given"]["held"][0]["params"]["tau_s"], kTau);
@@ -100,7 +103,8 @@ TEST(GivenEffects, AModelsCycleIsRefittedToTheLogAndAMissingOneIsFoundBesideAHel
     const GapResult found = diagnose(log, process_only, options());
     EXPECT_EQ(found.verdict, "ambient_cycle");
     ASSERT_FALSE(found.tried.empty());
-    for (const Explanation& e : found.tried) EXPECT_EQ(e.replaces_given, e.effect == "gauss_markov" && e.channel == "gyro") << e.effect;
+    for (const Explanation& e : found.tried)
+        EXPECT_EQ(e.replaces_given, e.effect == "gauss_markov" && e.channel == "gyro") << e.effect;
     EXPECT_FALSE(found.accepted.front().replaces_given);
     EXPECT_NEAR(found.accepted.front().params[1].second / period, 1.0, 0.05);
 }
@@ -159,7 +163,8 @@ TEST(GivenEffects, EffectsTheDiagnosisDoesNotFitAreKeptAsTheFileGivesThem) {
     EXPECT_EQ(r.final_model.effects[0].table, tempco.table);
     EXPECT_EQ(r.final_model.effects[1].table, spikes.table);
     EXPECT_EQ(r.verdict, "ambient_cycle");
-    EXPECT_TRUE(std::none_of(r.tried.begin(), r.tried.end(), [](const Explanation& e) { return e.effect == "spikes"; }));
+    EXPECT_TRUE(
+        std::none_of(r.tried.begin(), r.tried.end(), [](const Explanation& e) { return e.effect == "spikes"; }));
 }
 
 }  // namespace

@@ -44,7 +44,8 @@ TEST(Holdout, WindowedCellsFollowTheDesign) {
     int window = 0;
     for (const auto& c : layout) {
         if (c.statistic != "mean") continue;
-        EXPECT_EQ(c.segment, fitting_tenth(static_cast<std::size_t>(window)) ? Segment::fit : Segment::heldout) << c.cell;
+        EXPECT_EQ(c.segment, fitting_tenth(static_cast<std::size_t>(window)) ? Segment::fit : Segment::heldout)
+            << c.cell;
         ++window;
     }
     EXPECT_EQ(window, 10);

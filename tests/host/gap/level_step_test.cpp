@@ -68,7 +68,8 @@ TEST(LevelStep, AHopOnTheWhiteFloorThatAWalkStandsInForIsAStepNoLibraryEffectMak
     const std::vector<double> hop = hop_and_return();
     for (std::uint64_t seed : {31, 32, 33}) {
         const LogData log = testing::gyro_log(testing::paper_gyro_model(8), 2000, hop, seed);
-        const LevelStep s = test_level_step(walk_model(), Channel::gyro, log.t_s, log.counts[0], {"rate_random_walk"}, {kWalk}, 40, 9, 2, 0.05);
+        const LevelStep s = test_level_step(walk_model(), Channel::gyro, log.t_s, log.counts[0], {"rate_random_walk"},
+                                            {kWalk}, 40, 9, 2, 0.05);
         EXPECT_LE(s.process_gain, s.process_margin) << "seed " << seed;
         EXPECT_FALSE(s.process_beside_steps) << "seed " << seed;
         EXPECT_TRUE(s.significant) << "seed " << seed << " p " << s.p_value;
@@ -90,8 +91,10 @@ TEST(LevelStep, AHopInTheWarmUpLeavesNoProcessBesideItsSteps) {
     double total_gain = 0.0;
     for (std::uint64_t seed = 1; seed <= 16; ++seed) {
         const LogData log = testing::gyro_log(testing::paper_gyro_model(8), hop.size(), hop, seed);
-        const LevelStep s = test_level_step(m, Channel::gyro, log.t_s, log.counts[0], {"rate_random_walk"}, {kSlightWalk}, 40, 9, 2, 0.05);
-        EXPECT_FALSE(s.process_beside_steps) << "seed " << seed << ": gain " << s.process_gain << " against " << s.process_margin;
+        const LevelStep s = test_level_step(m, Channel::gyro, log.t_s, log.counts[0], {"rate_random_walk"},
+                                            {kSlightWalk}, 40, 9, 2, 0.05);
+        EXPECT_FALSE(s.process_beside_steps)
+            << "seed " << seed << ": gain " << s.process_gain << " against " << s.process_margin;
         total_gain += s.process_gain;
     }
     EXPECT_LT(total_gain / 16.0, 0.5) << "the nested gain of a process that is not there is about 0";
@@ -151,8 +154,8 @@ TEST(LevelStep, WithoutTheRivalTheCombinedPIsTheImpulses) {
 }
 
 // Instants 1..n s and `mean(k, t)` plus white noise of deviation `sigma`.
-std::pair<std::vector<double>, std::vector<double>> noisy_series(std::size_t n, unsigned seed, double sigma,
-                                                                 const std::function<double(std::size_t, double)>& mean) {
+std::pair<std::vector<double>, std::vector<double>> noisy_series(
+    std::size_t n, unsigned seed, double sigma, const std::function<double(std::size_t, double)>& mean) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> noise(0.0, sigma);
     std::vector<double> t(n), x(n);
@@ -172,7 +175,8 @@ Eigen::MatrixXd level_column(std::size_t n) {
 // hop and a return in white noise they match a brute-force search over every pair of cuts, and lie where planted.
 TEST(StepsOverShape, TheTwoStepsAreTheLeastSquaresOptimumAndLieWherePlanted) {
     const std::size_t n = 400;
-    const auto [t, x] = noisy_series(n, 5, 0.4, [](std::size_t k, double) { return (k >= 150 ? 1.0 : 0.0) - (k >= 290 ? 0.7 : 0.0); });
+    const auto [t, x] =
+        noisy_series(n, 5, 0.4, [](std::size_t k, double) { return (k >= 150 ? 1.0 : 0.0) - (k >= 290 ? 0.7 : 0.0); });
     const StepsOverShape s = steps_over_shape(t, x, x, 2, 1.0, level_column(n));
     ASSERT_TRUE(s.tested);
     EXPECT_NEAR(s.steps[0].t_s, t[150], 3.0);
@@ -250,7 +254,8 @@ TEST(StepsOverShape, BesideFittedColumnsTheStepsAreTheJointLeastSquaresOptimum) 
 // the staircase's own two steps would.
 TEST(StepsOverShape, TheRivalIsAHopAndAReturnNotAStaircase) {
     const std::size_t n = 200;
-    const auto [t, x] = noisy_series(n, 9, 0.3, [](std::size_t k, double) { return (k >= 50 ? 1.0 : 0.0) + (k >= 120 ? 1.0 : 0.0); });
+    const auto [t, x] =
+        noisy_series(n, 9, 0.3, [](std::size_t k, double) { return (k >= 50 ? 1.0 : 0.0) + (k >= 120 ? 1.0 : 0.0); });
     const Eigen::MatrixXd q = level_column(n);
     const StepsOverShape s = steps_over_shape(t, x, x, 2, 1.0, q);
     ASSERT_TRUE(s.tested);

@@ -31,9 +31,11 @@ TEST(ModelOut, TheAnalysedChannelsTheSmoothingAndTheEffectsAreWritten) {
     EXPECT_EQ(s.channels[0].drift.c2_counts, 560.0);
     EXPECT_EQ(s.channels[0].drift.tau_s, 255.0);
     // Raw spread sqrt(sigma^2 + 1/12) counts, in the channel's unit.
-    EXPECT_NEAR(s.channels[0].raw_noise_std_unit * counts_per_unit(m, Channel::gyro), std::sqrt(1.0 + 1.0 / 12.0), 1e-12);
+    EXPECT_NEAR(s.channels[0].raw_noise_std_unit * counts_per_unit(m, Channel::gyro), std::sqrt(1.0 + 1.0 / 12.0),
+                1e-12);
     // accel_y's 0.2 counts would be a raw spread of 0.35: below the file's 0.5, raised to it and said.
-    EXPECT_NEAR(s.channels[2].raw_noise_std_unit * counts_per_unit(m, Channel::accel_y), sim::kMinCalibratedRawStdCounts, 1e-12);
+    EXPECT_NEAR(s.channels[2].raw_noise_std_unit * counts_per_unit(m, Channel::accel_y),
+                sim::kMinCalibratedRawStdCounts, 1e-12);
     ASSERT_EQ(out.notes.size(), 1u);
     EXPECT_NE(out.notes[0].find("accel_y"), std::string::npos) << out.notes[0];
     // accel_x was not analysed: the unit's own.
@@ -55,22 +57,27 @@ TEST(ModelOut, ANoiseRaisedToTheFloorReadsBackAtTheFloor) {
     for (const double lsb : {0.0027, 0.0043, 0.0099, 0.00875, 0.001, 0.0031, 0.0057, 0.0071}) {
         GapModel m = calibrated();
         m.unit.channels[0].front_end.span_unit = 512.0 * lsb;  // one code per LSB, as a plain recording's unit
-        m.base[0].sigma_n_counts = 0.05;                        // a quiet sensor: raised to the floor
+        m.base[0].sigma_n_counts = 0.05;                       // a quiet sensor: raised to the floor
         const ModelOut out = model_out(m, {true, false, false, false}, false, "quiet.txt");
-        EXPECT_GE(out.model.channels[0].raw_noise_std_unit * counts_per_unit(m, Channel::gyro), sim::kMinCalibratedRawStdCounts) << lsb;
+        EXPECT_GE(out.model.channels[0].raw_noise_std_unit * counts_per_unit(m, Channel::gyro),
+                  sim::kMinCalibratedRawStdCounts)
+            << lsb;
         EXPECT_NO_THROW(sim::parse_model(sim::write_model(out.model, "test"), "quiet.toml")) << lsb;
     }
 }
 
 TEST(ModelOut, ASmoothingNoFirmwareConfigExpressesIsRefusedNamingTheLog) {
-    for (const Smoothing& bad : {Smoothing{0.0125, 1, 1, 0}, Smoothing{0.005, 1, 1, 0}, Smoothing{1.0, 100, 100, 0}, Smoothing{1.0, 25, 65, 0}}) {
+    for (const Smoothing& bad : {Smoothing{0.0125, 1, 1, 0}, Smoothing{0.005, 1, 1, 0}, Smoothing{1.0, 100, 100, 0},
+                                 Smoothing{1.0, 25, 65, 0}}) {
         GapModel m = calibrated();
         m.smoothing = bad;
         try {
             model_out(m, {true, false, false, false}, false, "log.csv");
-            ADD_FAILURE() << bad.sample_period_s << " s, " << bad.conversions_per_output << " conversions, window " << bad.window;
+            ADD_FAILURE() << bad.sample_period_s << " s, " << bad.conversions_per_output << " conversions, window "
+                          << bad.window;
         } catch (const DataError& e) {
-            EXPECT_NE(std::string(e.what()).find("log.csv: --model-out: the log's smoothing"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("log.csv: --model-out: the log's smoothing"), std::string::npos)
+                << e.what();
         }
     }
     EXPECT_EQ(firmware_config({0.1, 10, 10, 1}, false, "log.csv").fit_order, 1);

@@ -12,7 +12,9 @@ namespace {
 
 TEST(NelderMead, FindsTheMinimumOfAQuadraticBowl) {
     // (x - 1.5)^2 + 4 (y + 0.25)^2 + 3: minimum 3 at (1.5, -0.25).
-    auto bowl = [](const std::vector<double>& p) { return std::pow(p[0] - 1.5, 2) + 4.0 * std::pow(p[1] + 0.25, 2) + 3.0; };
+    auto bowl = [](const std::vector<double>& p) {
+        return std::pow(p[0] - 1.5, 2) + 4.0 * std::pow(p[1] + 0.25, 2) + 3.0;
+    };
     const auto r = nelder_mead(bowl, {0.0, 0.0}, {0.5, 0.5}, 200);
     EXPECT_NEAR(r.x[0], 1.5, 1e-4);
     EXPECT_NEAR(r.x[1], -0.25, 1e-4);
@@ -21,7 +23,9 @@ TEST(NelderMead, FindsTheMinimumOfAQuadraticBowl) {
 }
 
 TEST(NelderMead, FindsTheRosenbrockValley) {
-    auto rosenbrock = [](const std::vector<double>& p) { return 100.0 * std::pow(p[1] - p[0] * p[0], 2) + std::pow(1.0 - p[0], 2); };
+    auto rosenbrock = [](const std::vector<double>& p) {
+        return 100.0 * std::pow(p[1] - p[0] * p[0], 2) + std::pow(1.0 - p[0], 2);
+    };
     const auto r = nelder_mead(rosenbrock, {-1.2, 1.0}, {0.5, 0.5}, 1000);
     EXPECT_NEAR(r.x[0], 1.0, 1e-3);
     EXPECT_NEAR(r.x[1], 1.0, 2e-3);
@@ -56,7 +60,9 @@ TEST(NelderMead, NonFiniteValuesAreWorseThanAnyFiniteOne) {
     EXPECT_NEAR(r.x[0], 1.0, 1e-3);
     EXPECT_TRUE(std::isfinite(r.value));
     // -inf as well (a log-likelihood term of a zero spread): a failed evaluation, not the best point.
-    auto g = [](const std::vector<double>& p) { return p[0] > 0.0 ? p[0] - std::log(p[0]) : -std::numeric_limits<double>::infinity(); };
+    auto g = [](const std::vector<double>& p) {
+        return p[0] > 0.0 ? p[0] - std::log(p[0]) : -std::numeric_limits<double>::infinity();
+    };
     const auto s = nelder_mead(g, {3.0}, {-4.0}, 200);
     EXPECT_NEAR(s.x[0], 1.0, 1e-3);
     EXPECT_TRUE(std::isfinite(s.value));

@@ -53,7 +53,7 @@ TEST(PlainRecording, ATimeColumnGivesTheInstantsAndColumnsMapToTheirChannels) {
     how.block = 2;
     const LogData log = log_from_table(t, how);
     EXPECT_EQ(log.t_s, (std::vector<double>{0.011, 0.031}));
-    EXPECT_EQ(log.counts[channel_index(Channel::gyro)], (std::vector<double>{510.5, 512.5}));  // median 3
+    EXPECT_EQ(log.counts[channel_index(Channel::gyro)], (std::vector<double>{510.5, 512.5}));     // median 3
     EXPECT_EQ(log.counts[channel_index(Channel::accel_z)], (std::vector<double>{511.0, 512.0}));  // median 9
 }
 
@@ -76,10 +76,12 @@ TEST(PlainRecording, ItsUnitConvertsEachValueToTheCodeTheLogHolds) {
     for (const auto& [c, column] : {std::pair{Channel::gyro, 0}, std::pair{Channel::accel_z, 1}}) {
         const sim::FrontEnd fe(unit.channels[channel_index(c)].front_end, unit.adc.vref_v);
         for (std::size_t k = 0; k < log.size(); ++k)
-            EXPECT_NEAR(adc.counts_from_volts(fe.amplifier_v(fe.sensor_v(t.columns[column][k]))), log.counts[channel_index(c)][k], 1e-6)
+            EXPECT_NEAR(adc.counts_from_volts(fe.amplifier_v(fe.sensor_v(t.columns[column][k]))),
+                        log.counts[channel_index(c)][k], 1e-6)
                 << kChannelNames[channel_index(c)] << " row " << k;
         // At rest the unit reads its input, the column's median: mid-scale.
-        EXPECT_NEAR(adc.counts_from_volts(fe.amplifier_v(fe.sensor_v(unit.channels[channel_index(c)].input_unit))), 512.0, 1e-9);
+        EXPECT_NEAR(adc.counts_from_volts(fe.amplifier_v(fe.sensor_v(unit.channels[channel_index(c)].input_unit))),
+                    512.0, 1e-9);
     }
     EXPECT_EQ(unit.channels[1].front_end.span_unit, paper.channels[1].front_end.span_unit);  // accel_x: not mapped
     EXPECT_THROW(unit_of_recording(paper, how, LogData{}), std::invalid_argument);
@@ -102,11 +104,13 @@ TEST(PlainRecording, AColumnInAnotherUnitReadsAsTheSameRecordingInDegreesPerSeco
     EXPECT_EQ(parse_column_mapping("accel_z=az:0.244:mg").to_model_unit, 1e-3);
     EXPECT_NEAR(parse_column_mapping("accel_z=az:0.0024:m/s2").to_model_unit * 9.80665, 1.0, 1e-15);
     // The spellings allan --unit takes too (one table for both).
-    EXPECT_EQ(parse_column_mapping("accel_z=az:0.0024:m/s^2").to_model_unit, parse_column_mapping("accel_z=az:0.0024:m/s2").to_model_unit);
+    EXPECT_EQ(parse_column_mapping("accel_z=az:0.0024:m/s^2").to_model_unit,
+              parse_column_mapping("accel_z=az:0.0024:m/s2").to_model_unit);
     EXPECT_NEAR(parse_column_mapping("accel_z=az:0.24:cm/s2").to_model_unit * 980.665, 1.0, 1e-15);
     EXPECT_EQ(parse_column_mapping("gyro=gx:0.00875:dps").to_model_unit, 1.0);
     EXPECT_NEAR(parse_column_mapping("gyro=gx:30:deg/h").to_model_unit * 3600.0, 1.0, 1e-15);
-    for (const char* bad : {"gyro=gx:1:g", "accel_x=ax:1:rad/s", "gyro=gx:rad/s", "gyro=gx:1:furlongs", "gyro=:1:deg/s"})
+    for (const char* bad :
+         {"gyro=gx:1:g", "accel_x=ax:1:rad/s", "gyro=gx:rad/s", "gyro=gx:1:furlongs", "gyro=:1:deg/s"})
         EXPECT_THROW(parse_column_mapping(bad), UsageError) << bad;
 
     PlainRecording deg_how, rad_how;

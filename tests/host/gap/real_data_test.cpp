@@ -19,7 +19,9 @@ namespace driftlab::host::gap {
 namespace {
 
 // The log, and the unit it reads as (one count is 8.75 mdps: the parameters come out in the gyro's own deg/s).
-bool load(LogData& log, sim::SimModel& unit) { return testing::load_shared_recording("gyro2_x.txt", {"gyro=col1:0.00875"}, 0.01, 40, log, unit); }
+bool load(LogData& log, sim::SimModel& unit) {
+    return testing::load_shared_recording("gyro2_x.txt", {"gyro=col1:0.00875"}, 0.01, 40, log, unit);
+}
 
 GapOptions options() { return testing::real_data_options(2); }
 
@@ -28,23 +30,27 @@ TEST(RealData, Gyro2xRunsAndReportsItsGap) {
     sim::SimModel unit;
     if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
     const GapResult r = diagnose(log, unit, options());
-    std::printf("gyro2_x: verdict %s, gap fit %.2f heldout %.2f -> fit %.2f heldout %.2f, %zu located\n", r.verdict.c_str(),
-                r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout, r.located.size());
+    std::printf("gyro2_x: verdict %s, gap fit %.2f heldout %.2f -> fit %.2f heldout %.2f, %zu located\n",
+                r.verdict.c_str(), r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout,
+                r.located.size());
     for (const auto& e : r.accepted) {
         std::printf("  accepted %s:", e.effect.c_str());
         for (const auto& [k, v] : e.params) std::printf(" %s=%.4g", k.c_str(), v);
         std::printf(" heldout shrink %.2f\n", e.heldout_shrink);
     }
     for (const auto& s : r.level_steps)
-        std::printf("  level steps %.2f counts at %.1f s, %.2f at %.1f s: rival %.1f (price %.1f, p %.3f), impulse %.2f (p %.3f), "
-                    "p %.3f; processes beside them %.1f (price %.1f)%s\n", s.steps[0].size_counts, s.steps[0].t_s,
-                    s.steps[1].size_counts, s.steps[1].t_s, s.statistic, s.margin, s.rival_p, s.impulse, s.impulse_p, s.p_value,
-                    s.process_gain, s.process_margin, s.outsized ? ": outsized increments" : "");
+        std::printf(
+            "  level steps %.2f counts at %.1f s, %.2f at %.1f s: rival %.1f (price %.1f, p %.3f), impulse %.2f (p "
+            "%.3f), "
+            "p %.3f; processes beside them %.1f (price %.1f)%s\n",
+            s.steps[0].size_counts, s.steps[0].t_s, s.steps[1].size_counts, s.steps[1].t_s, s.statistic, s.margin,
+            s.rival_p, s.impulse, s.impulse_p, s.p_value, s.process_gain, s.process_margin,
+            s.outsized ? ": outsized increments" : "");
     EXPECT_TRUE(std::isfinite(r.gap_before_fit));
     // What follows, up to the warm-up's sign, is a regression snapshot of what the diagnosis found on this recording
-    // (docs/gap-results.md, Real recordings), not an independent truth: no one knows this unit's effects. The 155 s excursion
-    // at 983-1139 s is beyond the two processes' own replicates, but they remain beside it: it is reported as their
-    // outsized increments (JSON level_steps[]) and does not leave the log unexplained.
+    // (docs/gap-results.md, Real recordings), not an independent truth: no one knows this unit's effects. The 155 s
+    // excursion at 983-1139 s is beyond the two processes' own replicates, but they remain beside it: it is reported as
+    // their outsized increments (JSON level_steps[]) and does not leave the log unexplained.
     const auto j = gap_to_json(r, options());
     ASSERT_EQ(j["level_steps"].size(), 1u);  // the gyro, with two processes and no mean shape
     for (const auto& s : j["level_steps"]) {
@@ -74,14 +80,17 @@ TEST(RealData, TheGaussMarkovReadingDoesNotRestOnTheExcursion) {
     const GapResult all = diagnose(whole, unit, options());
     const LogData log = rows_outside(whole, {{975.0, 1150.0, "--exclude"}});
     const GapResult r = diagnose(log, unit, options());
-    std::printf("gyro2_x without 975-1150 s: verdict %s, gap fit %.2f heldout %.2f (whole log %.2f, %.2f) -> fit %.2f heldout %.2f\n",
-                r.verdict.c_str(), r.gap_before_fit, r.gap_before_heldout, all.gap_before_fit, all.gap_before_heldout, r.gap_after_fit,
-                r.gap_after_heldout);
+    std::printf(
+        "gyro2_x without 975-1150 s: verdict %s, gap fit %.2f heldout %.2f (whole log %.2f, %.2f) -> fit %.2f heldout "
+        "%.2f\n",
+        r.verdict.c_str(), r.gap_before_fit, r.gap_before_heldout, all.gap_before_fit, all.gap_before_heldout,
+        r.gap_after_fit, r.gap_after_heldout);
     ASSERT_EQ(r.left_out.size(), 1u);
     EXPECT_NEAR(static_cast<double>(r.left_out[0].rows), 175.0 / 0.4, 2.0);  // an output every 0.4 s
     EXPECT_EQ(r.timing.sequence_jumps, 0u);
     EXPECT_LT(r.gap_before_fit, 0.5 * all.gap_before_fit);
-    EXPECT_GT(r.gap_before_heldout, 0.5 * all.gap_before_heldout);  // the tenths shift by the rows left out; the gap stays
+    EXPECT_GT(r.gap_before_heldout,
+              0.5 * all.gap_before_heldout);  // the tenths shift by the rows left out; the gap stays
     EXPECT_EQ(r.verdict, "gauss_markov");
     ASSERT_FALSE(r.accepted.empty());
     EXPECT_GT(r.accepted[0].heldout_shrink, 0.7);

@@ -33,7 +33,8 @@ std::string preferred(const GapModel& m, const PartPeriodogram& p) {
     std::string best;
     double best_bic = INFINITY;
     for (const std::string e : {"", "gauss_markov", "flicker", "rate_random_walk"}) {
-        const double b = bic(fit_spectral(e.empty() ? std::vector<std::string>{} : std::vector<std::string>{e}, Channel::gyro, m, p), p);
+        const double b = bic(
+            fit_spectral(e.empty() ? std::vector<std::string>{} : std::vector<std::string>{e}, Channel::gyro, m, p), p);
         if (b < best_bic) best_bic = b, best = e.empty() ? "none" : e;
     }
     return best;
@@ -58,7 +59,8 @@ TEST(SpectralFit, TheWhiteFloorIsTheNoiseVariancePlusTheQuantisersTwelfth) {
     const GapModel m = testing::paper_gyro_model(8);
     double sum = 0.0;
     for (std::uint64_t seed = 41; seed < 49; ++seed)
-        sum += fit_spectral({"gauss_markov"}, Channel::gyro, m, residual_of(m, "gauss_markov", {0.05, 30.0}, seed)).white;
+        sum +=
+            fit_spectral({"gauss_markov"}, Channel::gyro, m, residual_of(m, "gauss_markov", {0.05, 30.0}, seed)).white;
     EXPECT_NEAR(sum / 8.0, 1.05 * 1.05 + 1.0 / 12.0, 0.045);
 }
 

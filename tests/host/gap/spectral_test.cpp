@@ -38,8 +38,10 @@ TEST(Spectral, TheSpectrumKeepsTheBinsBelowNyquistOfTheWindowedSeries) {
     for (std::size_t k = 0; k < nfft / 2; ++k) {
         std::complex<double> direct = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            const double hann = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
-            direct += (y[i] - mean) * hann * std::polar(1.0, -2.0 * std::numbers::pi * static_cast<double>(k * i) / static_cast<double>(nfft));
+            const double hann =
+                0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
+            direct += (y[i] - mean) * hann *
+                      std::polar(1.0, -2.0 * std::numbers::pi * static_cast<double>(k * i) / static_cast<double>(nfft));
         }
         EXPECT_NEAR(std::abs(s.bins[k] - direct), 0.0, 1e-10) << "bin " << k;
     }
@@ -86,7 +88,9 @@ TEST(Spectral, BandCoherenceOfASharedComponentMatchesItsShare) {
         // An estimate of squared coherence g over K independent bins (K = bins / 1.94 under the Hann window) scatters
         // by sqrt(2 g (1 - g)^2 / K) and reads high by about (1 - g)^2 / K: 4 of the one beside the other.
         const double k = bins / 1.94;
-        const auto tolerance = [k](double g) { return 4.0 * std::sqrt(2.0 * g * (1.0 - g) * (1.0 - g) / k) + (1.0 - g) * (1.0 - g) / k; };
+        const auto tolerance = [k](double g) {
+            return 4.0 * std::sqrt(2.0 * g * (1.0 - g) * (1.0 - g) / k) + (1.0 - g) * (1.0 - g) / k;
+        };
         const double lag_share = 0.25 * std::pow(std::sin(half_turn) / half_turn, 2);
         EXPECT_NEAR(coh[j], 0.25, tolerance(0.25)) << "band " << j;
         EXPECT_NEAR(lag[j], lag_share, tolerance(lag_share)) << "band " << j;

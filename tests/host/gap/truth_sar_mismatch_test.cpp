@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "host/gap/truth.hpp"
 #include "host/gap/gap_model.hpp"
+#include "host/gap/truth.hpp"
 #include "sim/model/adc.hpp"
 #include "sim/model/board_outputs.hpp"
 #include "sim/model/sim_model.hpp"
@@ -63,8 +63,10 @@ TEST(SarMismatch, CodesWithTheSameCarryDepthHaveTheSameWidth) {
         for (int j = 2; j < 1022; ++j) {  // code 1 begins below the ramp
             int depth = 0;
             while (j & (1 << depth)) ++depth;
-            lowest[static_cast<std::size_t>(depth)] = std::min(lowest[static_cast<std::size_t>(depth)], widths[static_cast<std::size_t>(j)]);
-            highest[static_cast<std::size_t>(depth)] = std::max(highest[static_cast<std::size_t>(depth)], widths[static_cast<std::size_t>(j)]);
+            lowest[static_cast<std::size_t>(depth)] =
+                std::min(lowest[static_cast<std::size_t>(depth)], widths[static_cast<std::size_t>(j)]);
+            highest[static_cast<std::size_t>(depth)] =
+                std::max(highest[static_cast<std::size_t>(depth)], widths[static_cast<std::size_t>(j)]);
         }
         double min_width = 1e9, max_width = -1e9;
         for (std::size_t d = 0; d < 10; ++d) {

@@ -17,8 +17,8 @@
 #include <numeric>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "host/gap/truth.hpp"
 
@@ -34,7 +34,9 @@ std::vector<double> eval_grid(std::size_t n = 1500) {
     return t;
 }
 
-double mean_of(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); }
+double mean_of(const std::vector<double>& v) {
+    return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
 
 // Two-sided tail P(|T| > x) of Student's t with nu = 4, from its closed-form CDF
 // F(x) = 1/2 + (3/8) (x / s) (1 - x^2 / (12 s^2)), s = sqrt(1 + x^2/4).
@@ -124,7 +126,8 @@ TEST(TruthThermalRc, IsTheStepResponseOfThreeCascadedLagsSettlingAtItsSize) {
         ASSERT_GT(p.lambda[2] - p.lambda[1], 1e-6 * p.lambda[2]) << "seed " << seed;
         // The rebuilt response agrees to numerical precision (Prony on exact data: errors ~1e-9; 1e-6 of the size).
         double worst = 0.0;
-        for (std::size_t k = 0; k < u.size(); ++k) worst = std::max(worst, std::abs(u[k] - cascade_step(p.lambda, grid[k])));
+        for (std::size_t k = 0; k < u.size(); ++k)
+            worst = std::max(worst, std::abs(u[k] - cascade_step(p.lambda, grid[k])));
         EXPECT_LT(worst, 1e-6) << "seed " << seed << ": not a three-lag step response settling at +-size";
         // Monotone rise below the steady state, so the log never holds its size (its in-log peak is |s(L)| < size).
         for (std::size_t k = 1; k < u.size(); ++k) ASSERT_GT(u[k], u[k - 1]) << "seed " << seed << " at " << k;
@@ -135,7 +138,8 @@ TEST(TruthThermalRc, IsTheStepResponseOfThreeCascadedLagsSettlingAtItsSize) {
         const std::size_t top = static_cast<std::size_t>(std::max_element(d.begin(), d.end()) - d.begin());
         EXPECT_GT(top, 0u) << "seed " << seed << ": no S-shape (steepest at power-on)";
         for (std::size_t k = 1; k <= top; ++k) ASSERT_GE(d[k], d[k - 1] - 1e-15) << "seed " << seed << " at " << k;
-        for (std::size_t k = top + 1; k < d.size(); ++k) ASSERT_LE(d[k], d[k - 1] + 1e-15) << "seed " << seed << " at " << k;
+        for (std::size_t k = top + 1; k < d.size(); ++k)
+            ASSERT_LE(d[k], d[k - 1] + 1e-15) << "seed " << seed << " at " << k;
     }
     // The sign is a fair coin: 24 draws all alike has probability 2^-23.
     EXPECT_GT(positive, 0);
@@ -380,8 +384,8 @@ TEST(TruthStudentWalk, StepsAreIndependentStudentT4OfTheDocumentedSize) {
     for (std::size_t i = 0; i < c_list.size(); ++i) {
         const double p = t4_two_sided_tail(c_list[i] * std::sqrt(2.0));
         const double tol = 4.0 * std::sqrt(p * (1.0 - p) / n);
-        EXPECT_NEAR(beyond[i] / n, p, tol) << "beyond " << c_list[i] << " step deviations (a Gaussian: "
-                                           << normal_two_sided_tail(c_list[i]) << ")";
+        EXPECT_NEAR(beyond[i] / n, p, tol)
+            << "beyond " << c_list[i] << " step deviations (a Gaussian: " << normal_two_sided_tail(c_list[i]) << ")";
     }
     // Independent steps: the lag-1 autocorrelation of iid steps of finite variance scatters by 1/sqrt(n).
     EXPECT_NEAR(lag1 / lag0, 0.0, 4.0 / std::sqrt(n));
@@ -396,7 +400,8 @@ TEST(TruthStudentWalk, EndsWithTheRequestedDeviation) {
     const double size = 3.0;
     const std::vector<double> t = eval_grid();
     int beyond = 0;
-    for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) beyond += std::abs(make_truth("student_walk", t, size, 11, seed).back()) > size;
+    for (std::uint64_t seed = 1; seed <= kSeeds; ++seed)
+        beyond += std::abs(make_truth("student_walk", t, size, 11, seed).back()) > size;
     const double p = normal_two_sided_tail(1.0);
     EXPECT_NEAR(beyond / static_cast<double>(kSeeds), p, 4.0 * std::sqrt(p * (1.0 - p) / kSeeds) + 2.0 * 0.035);
 }
@@ -467,7 +472,8 @@ TEST(TruthBurstSpikes, BurstsOfOneToThreeOutputsAtTheDocumentedRateWithLaplaceAm
     // little more often, bias this by about p x len, under 2 %).
     const double clean = by_length[1] + by_length[2] + by_length[3];
     for (int len = 1; len <= 3; ++len)
-        EXPECT_NEAR(by_length[static_cast<std::size_t>(len)] / clean, 1.0 / 3.0, 4.0 * std::sqrt(2.0 / 9.0 / clean) + 0.02 / 3.0)
+        EXPECT_NEAR(by_length[static_cast<std::size_t>(len)] / clean, 1.0 / 3.0,
+                    4.0 * std::sqrt(2.0 / 9.0 / clean) + 0.02 / 3.0)
             << "length " << len;
     // Laplace amplitudes: |a| is exponential, E|a| / rms(a) = 1/sqrt(2) (a Gaussian: sqrt(2/pi) = 0.80); by the delta
     // method on (E|a|, E a^2) with |a|/b ~ Exp(1) (moments 1, 2, 6, 24) the ratio's variance is 0.125 / N. Its rms is
@@ -553,9 +559,11 @@ TEST(TruthSarMismatch, IsMonotoneBeyondItsComparatorsNoise) {
 }
 
 // The measured widths err by their two edges' ramp quantisation (variance step^2/6) and the comparator's blur of them
-// (the count of ramp inputs in a blur of deviation s = 0.2 size is a sum of Bernoullis: variance about step s / sqrt(pi)
-// per edge); over 1022 codes this biases the rms up by e^2 / (2 size) and scatters it by about e / sqrt(1022).
-double width_error(double step, double size) { return std::sqrt(step * step / 6.0 + 2.0 * step * 0.2 * size / std::sqrt(kPi)); }
+// (the count of ramp inputs in a blur of deviation s = 0.2 size is a sum of Bernoullis: variance about step s /
+// sqrt(pi) per edge); over 1022 codes this biases the rms up by e^2 / (2 size) and scatters it by about e / sqrt(1022).
+double width_error(double step, double size) {
+    return std::sqrt(step * step / 6.0 + 2.0 * step * 0.2 * size / std::sqrt(kPi));
+}
 
 struct WidthStats {
     double rms = 0.0, widest = 0.0, narrowest = 1e300;
@@ -592,13 +600,15 @@ TEST(TruthSarMismatch, NoCodeIsWiderThanThreeLsb) {
     for (double size : {0.25, 3.0}) {
         const double e = width_error(step, size);
         for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-            const WidthStats s = width_stats(code_widths(make_converter_truth("sar_mismatch", size, {}, seed, seed), step));
+            const WidthStats s =
+                width_stats(code_widths(make_converter_truth("sar_mismatch", size, {}, seed, seed), step));
             EXPECT_LE(s.widest, 3.0 + 4.0 * e) << "size " << size << " seed " << seed;
             if (size > 1.0) {
                 EXPECT_LT(s.rms, size) << "seed " << seed;
             }
             if (s.widest < 3.0 - 4.0 * e && s.narrowest > 4.0 * e) {
-                EXPECT_NEAR(s.rms, size + e * e / (2.0 * size), 4.0 * e / std::sqrt(1022.0)) << "size " << size << " seed " << seed;
+                EXPECT_NEAR(s.rms, size + e * e / (2.0 * size), 4.0 * e / std::sqrt(1022.0))
+                    << "size " << size << " seed " << seed;
             }
         }
     }

@@ -34,11 +34,13 @@ TEST(ParameterSpread, EachAddedEffectGetsOneLineAndOneNotFoundAgainSaysSo) {
     // Each value to the digits half its middle 68 % warrants (%.3g had made 508.532 to 508.668 "509 to 509"): sigma's
     // half-width 0.0068 puts the last digit at 1e-4, tau's 6.8 at 0.1, the transition's 0.068 at 1e-3. Without a
     // spread, four significant digits and no exponent (t2_s had read 1.2e+04).
-    EXPECT_EQ(lines[0], "gauss_markov on gyro (3 of 4 logs): sigma_dps 0.0200 -> 0.0132 to 0.0268 (median 0.0200); "
-                        "tau_s 20.0 -> 13.2 to 26.8 (median 20.0)");
+    EXPECT_EQ(lines[0],
+              "gauss_markov on gyro (3 of 4 logs): sigma_dps 0.0200 -> 0.0132 to 0.0268 (median 0.0200); "
+              "tau_s 20.0 -> 13.2 to 26.8 (median 20.0)");
     EXPECT_EQ(lines[1], "thermal_second_tc on gyro: added again in none of the 4 logs (c3_dps -0.3, t2_s 12000)");
-    EXPECT_EQ(lines[2], "adc_dnl on gyro (3 of 4 logs): t507_counts 507.4 -> not found again; t508_counts 508.600 -> 508.532 to "
-                        "508.668 (median 508.600) in 2");
+    EXPECT_EQ(lines[2],
+              "adc_dnl on gyro (3 of 4 logs): t507_counts 507.4 -> not found again; t508_counts 508.600 -> 508.532 to "
+              "508.668 (median 508.600) in 2");
 }
 
 }  // namespace

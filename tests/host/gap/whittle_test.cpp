@@ -53,7 +53,8 @@ TEST(Whittle, DifferencedAutocovarianceOfAnAr1IsTheDifferenceOfItsAutocovariance
     m.ar1.push_back({2.5, 0.9});
     const auto c = differenced_autocovariance(m, {0.0}, 40);
     auto gamma = [](int k) { return 2.5 * std::pow(0.9, std::abs(k)); };
-    for (int k = 0; k < 40; ++k) EXPECT_NEAR(c[static_cast<std::size_t>(k)], 2.0 * gamma(k) - gamma(k - 1) - gamma(k + 1), 1e-12) << k;
+    for (int k = 0; k < 40; ++k)
+        EXPECT_NEAR(c[static_cast<std::size_t>(k)], 2.0 * gamma(k) - gamma(k - 1) - gamma(k + 1), 1e-12) << k;
     // A random walk's increments are white; the white floor's differences are an MA(1).
     OutputSpectrum w;
     w.white = 3.0;
@@ -120,7 +121,8 @@ std::pair<std::vector<double>, PartPeriodogram> average_periodogram(const std::v
 }
 
 // Average over expected power in ordinates lo..lo + width - 1.
-double band_ratio(const std::vector<double>& average, const std::vector<double>& expected, std::size_t lo, std::size_t width) {
+double band_ratio(const std::vector<double>& average, const std::vector<double>& expected, std::size_t lo,
+                  std::size_t width) {
     double a = 0.0, e = 0.0;
     for (std::size_t j = lo; j < lo + width; ++j) a += average[j], e += expected[j];
     return a / e;
@@ -191,7 +193,6 @@ TEST(Whittle, ExpectedPeriodogramOfAFittedResidualKnowsWhatTheFitAbsorbed) {
     EXPECT_LT(aware, 0.25 * plain_misfit) << aware << " vs " << plain_misfit;
 }
 
-
 // Without a fitted span the expected periodogram is the masked covariance's Fourier sum, sum over tau = -(n-1)..n-1 of
 // mask_overlap(|tau|) c(|tau|) cos(w_j tau): summed directly here, where expected_periodogram() adds its components'
 // FFTs.
@@ -213,7 +214,8 @@ TEST(Whittle, ExpectedPeriodogramIsTheMaskedCovariancesFourierSum) {
     for (std::size_t j = 0; j < expected.size(); ++j) {
         const double w = 2.0 * std::numbers::pi * static_cast<double>(j + 1) / static_cast<double>(p.length);
         double sum = c[0] * p.mask_overlap[0];
-        for (std::size_t tau = 1; tau < p.length; ++tau) sum += 2.0 * c[tau] * p.mask_overlap[tau] * std::cos(w * static_cast<double>(tau));
+        for (std::size_t tau = 1; tau < p.length; ++tau)
+            sum += 2.0 * c[tau] * p.mask_overlap[tau] * std::cos(w * static_cast<double>(tau));
         EXPECT_NEAR(expected[j], sum, 1e-10 * std::abs(sum) + 1e-12) << "ordinate " << j + 1;
     }
 }

@@ -32,7 +32,8 @@ TEST(WholeLogEstimate, AProcessIsEstimatedNearerItsTruthOnTheWholeLogThanOnTheFi
     double part_tau = 0.0, whole_tau = 0.0, part_sigma = 0.0, whole_sigma = 0.0;
     int n = 0;
     for (std::uint64_t seed = 51; seed <= 58; ++seed) {
-        const GapResult r = diagnose(testing::gyro_log(truth, 1500, {}, seed), sim::paper_model(), testing::small_options());
+        const GapResult r =
+            diagnose(testing::gyro_log(truth, 1500, {}, seed), sim::paper_model(), testing::small_options());
         ASSERT_EQ(r.accepted.size(), 1u) << "seed " << seed;
         const Explanation& e = r.accepted[0];
         if (e.effect != "gauss_markov") continue;  // read as flicker or a walk now and then (docs/gap.md)
@@ -43,10 +44,13 @@ TEST(WholeLogEstimate, AProcessIsEstimatedNearerItsTruthOnTheWholeLogThanOnTheFi
         whole_sigma += std::pow(std::log(param(e.whole_log_params, "sigma_dps") / kSigma), 2);
         ++n;
         // The whole-log model holds the estimate; the final model (judged on the held-out part) the fitting part's.
-        EXPECT_DOUBLE_EQ(file_process_params(r.whole_log_model.effects.back(), Channel::gyro).at(1), param(e.whole_log_params, "tau_s"));
-        EXPECT_DOUBLE_EQ(file_process_params(r.final_model.effects.back(), Channel::gyro).at(1), param(e.params, "tau_s"));
+        EXPECT_DOUBLE_EQ(file_process_params(r.whole_log_model.effects.back(), Channel::gyro).at(1),
+                         param(e.whole_log_params, "tau_s"));
+        EXPECT_DOUBLE_EQ(file_process_params(r.final_model.effects.back(), Channel::gyro).at(1),
+                         param(e.params, "tau_s"));
         const auto j = gap_to_json(r, testing::small_options());
-        EXPECT_DOUBLE_EQ(j["explanations"][0]["params_whole_log"]["tau_s"].get<double>(), param(e.whole_log_params, "tau_s"));
+        EXPECT_DOUBLE_EQ(j["explanations"][0]["params_whole_log"]["tau_s"].get<double>(),
+                         param(e.whole_log_params, "tau_s"));
     }
     ASSERT_GE(n, 5);
     const auto root = [n](double sum) { return std::sqrt(sum / n); };

@@ -3,10 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "host/util/error.hpp"
 
@@ -58,8 +58,8 @@ TEST(Avrdude, ArgumentsNameArduinoBootloaderDefaultsAndTheImage) {
     FlashRequest r;
     r.port = "/dev/ttyACM0";
     r.hex_file = "fw.hex";
-    const std::vector<std::string> expected = {"avrdude", "-p", "atmega328p", "-c", "arduino", "-P", "/dev/ttyACM0",
-                                               "-b", "115200", "-D", "-U", "flash:w:fw.hex:i"};
+    const std::vector<std::string> expected = {"avrdude",      "-p", "atmega328p", "-c", "arduino", "-P",
+                                               "/dev/ttyACM0", "-b", "115200",     "-D", "-U",      "flash:w:fw.hex:i"};
     EXPECT_EQ(avrdude_arguments(r), expected);
 }
 

@@ -26,10 +26,10 @@ namespace {
 constexpr std::size_t kRecordHeader = 13;  // kind u8, t_us u64, len u32
 
 struct Written {
-    std::string bytes;                    // the whole file
-    std::size_t header_size = 0;          // up to and with the empty line
-    std::vector<std::size_t> offsets;     // of each record
-    std::vector<std::size_t> sizes;       // of each record, its header included
+    std::string bytes;                 // the whole file
+    std::size_t header_size = 0;       // up to and with the empty line
+    std::vector<std::size_t> offsets;  // of each record
+    std::vector<std::size_t> sizes;    // of each record, its header included
 };
 
 // 200 records of random kind and 1 to 40 payload bytes; the payloads are rich in kind letters, so that damage often
@@ -42,7 +42,8 @@ Written write_capture(const std::string& path, std::mt19937& rng) {
         const CaptureKind kinds[] = {CaptureKind::rx, CaptureKind::tx, CaptureKind::event};
         for (int k = 0; k < 200; ++k) {
             std::vector<std::uint8_t> payload(1 + rng() % 40);
-            for (auto& b : payload) b = rng() % 4 == 0 ? static_cast<std::uint8_t>("RTE"[rng() % 3]) : static_cast<std::uint8_t>(rng());
+            for (auto& b : payload)
+                b = rng() % 4 == 0 ? static_cast<std::uint8_t>("RTE"[rng() % 3]) : static_cast<std::uint8_t>(rng());
             w.offsets.push_back(static_cast<std::size_t>(fs::file_size(path)));
             w.sizes.push_back(kRecordHeader + payload.size());
             writer.write(kinds[rng() % 3], payload.data(), payload.size());
@@ -54,7 +55,8 @@ Written write_capture(const std::string& path, std::mt19937& rng) {
 }
 
 TEST(CaptureFuzz, DamagedCapturesAccountForEveryByteAndLoseNoWholeRecord) {
-    const std::string path = (fs::temp_directory_path() / ("driftlab_capfuzz_" + std::to_string(::getpid()) + ".cap")).string();
+    const std::string path =
+        (fs::temp_directory_path() / ("driftlab_capfuzz_" + std::to_string(::getpid()) + ".cap")).string();
     std::mt19937 rng(2026);
     const Written clean = write_capture(path, rng);
     const std::size_t records = clean.offsets.size();
@@ -109,15 +111,18 @@ TEST(CaptureFuzz, DamagedCapturesAccountForEveryByteAndLoseNoWholeRecord) {
             const bool last_in_file = clean.offsets[r] + clean.sizes[r] == size;
             if (!whole(r) || !(last_in_file || (r + 1 < records && whole(r + 1)))) continue;
             ++checked_whole;
-            const auto at = std::find_if(read.begin(), read.end(), [&](const CaptureRecord& c) { return c.offset == clean.offsets[r]; });
-            ASSERT_NE(at, read.end()) << "trial " << trial << ": whole record " << r << " at byte " << clean.offsets[r] << " not read";
+            const auto at = std::find_if(read.begin(), read.end(),
+                                         [&](const CaptureRecord& c) { return c.offset == clean.offsets[r]; });
+            ASSERT_NE(at, read.end()) << "trial " << trial << ": whole record " << r << " at byte " << clean.offsets[r]
+                                      << " not read";
             EXPECT_EQ(at->payload.size() + kRecordHeader, clean.sizes[r]);
             EXPECT_EQ(std::string(at->payload.begin(), at->payload.end()),
                       clean.bytes.substr(clean.offsets[r] + kRecordHeader, clean.sizes[r] - kRecordHeader));
             EXPECT_EQ(static_cast<char>(at->kind), clean.bytes[clean.offsets[r]]);
             std::uint64_t t_us = 0;
             for (int b = 7; b >= 0; --b)
-                t_us = t_us << 8 | static_cast<std::uint8_t>(clean.bytes[clean.offsets[r] + 1 + static_cast<std::size_t>(b)]);
+                t_us = t_us << 8 |
+                       static_cast<std::uint8_t>(clean.bytes[clean.offsets[r] + 1 + static_cast<std::size_t>(b)]);
             EXPECT_EQ(at->t_us, t_us);
         }
     }

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "host/util/error.hpp"
 
@@ -121,7 +121,8 @@ TEST(Capture, NotACaptureIsADataErrorAndATailOfNoRecordIsDamage) {
         CaptureReader{path};
         ADD_FAILURE() << "a key that is no metadata key was accepted";
     } catch (const DataError& e) {
-        EXPECT_NE(std::string(e.what()).find(":3: header key 'bAud' is not lower_snake_case"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(":3: header key 'bAud' is not lower_snake_case"), std::string::npos)
+            << e.what();
     }
     fs::remove(path);
 }
@@ -134,7 +135,8 @@ TEST(Capture, ADamagedStretchIsSkippedToTheNextWholeRecords) {
     {
         std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
         f.seekp(static_cast<std::streamoff>(offsets[2]));
-        const char junk[13] = {'\x55', '\x01', '\x02', '\x03', '\x04', '\x05', '\x06', '\x07', '\x08', '\x09', '\x0a', '\x0b', '\x0c'};
+        const char junk[13] = {'\x55', '\x01', '\x02', '\x03', '\x04', '\x05', '\x06',
+                               '\x07', '\x08', '\x09', '\x0a', '\x0b', '\x0c'};
         f.write(junk, sizeof junk);
     }
     CaptureReader r(path);
@@ -142,7 +144,8 @@ TEST(Capture, ADamagedStretchIsSkippedToTheNextWholeRecords) {
     while (auto rec = r.next()) {
         read.push_back(rec->offset);
         EXPECT_EQ(rec->payload.size(), 7u);
-        EXPECT_EQ(rec->payload[1], static_cast<std::uint8_t>(std::find(offsets.begin(), offsets.end(), rec->offset) - offsets.begin()));
+        EXPECT_EQ(rec->payload[1],
+                  static_cast<std::uint8_t>(std::find(offsets.begin(), offsets.end(), rec->offset) - offsets.begin()));
     }
     EXPECT_EQ(read, (std::vector<std::uint64_t>{offsets[0], offsets[1], offsets[3], offsets[4], offsets[5]}));
     ASSERT_EQ(r.damaged().size(), 1u);

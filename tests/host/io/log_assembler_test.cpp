@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
-#include <unistd.h>
 
 #include "driftlab/proto/encoder.hpp"
 #include "host/io/status_line.hpp"
@@ -136,7 +136,7 @@ struct Unplugged {
     std::uint32_t rows = 3;
     double gap_s = 6.0;
     std::optional<std::uint32_t> uptime_after;
-    bool answer_status = true;  ///< false: the STATUS request went unanswered (a lossy radio link)
+    bool answer_status = true;     ///< false: the STATUS request went unanswered (a lossy radio link)
     std::uint32_t rows_after = 1;  ///< outputs after the handshake's
 };
 
@@ -182,7 +182,8 @@ LogData recorded_across_an_unplug(const std::string& name, const Unplugged& u, A
 }
 
 // A recording of the frames `send` makes after the handshake (VERSION, CONFIG with `raw`, start), read back.
-LogData recorded(const std::string& name, std::uint8_t raw, const std::function<void(Board&)>& send, AssemblyStats& stats) {
+LogData recorded(const std::string& name, std::uint8_t raw, const std::function<void(Board&)>& send,
+                 AssemblyStats& stats) {
     const std::string path = temp_log(name);
     {
         LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", name + ".cap"}});
@@ -306,9 +307,9 @@ TEST(LogAssembler, WithoutAStatusTheFirstSampleAfterTheGapDecides) {
 // run-on would be: a restart (its rows had been dropped as duplicates, none marked).
 TEST(LogAssembler, AnUptimeShortOfTheRunOnIsARestartEvenAboveTheLastTick) {
     Unplugged u;
-    u.rows = 6000;                     // 600 s from power-on
-    u.gap_s = 1200.0;                  // a run-on would be at 1800 s
-    u.uptime_after = 900 * kTickHz;    // rebooted 300 s into the gap
+    u.rows = 6000;                   // 600 s from power-on
+    u.gap_s = 1200.0;                // a run-on would be at 1800 s
+    u.uptime_after = 900 * kTickHz;  // rebooted 300 s into the gap
     u.rows_after = 100;
     AssemblyStats stats;
     const LogData log = recorded_across_an_unplug("early_restart.csv", u, stats);
@@ -320,11 +321,14 @@ TEST(LogAssembler, ASampleBeyondTheConvertersReachIsSkippedAndCounted) {
     // A frame whose CRC holds can still carry a value no 10-bit estimate reaches (a firmware fault): the rows around
     // it are kept, it is counted, and the log reads back.
     AssemblyStats stats;
-    const LogData log = recorded("reach.csv", 0, [](Board& b) {
-        b.sample(1 * kTicksPerOutput);
-        b.sample(2 * kTicksPerOutput, 1366 * 256);  // beyond 4/3 of full scale
-        b.sample(3 * kTicksPerOutput, -341 * 256);  // within: an order-1 estimate's undershoot
-    }, stats);
+    const LogData log = recorded(
+        "reach.csv", 0,
+        [](Board& b) {
+            b.sample(1 * kTicksPerOutput);
+            b.sample(2 * kTicksPerOutput, 1366 * 256);  // beyond 4/3 of full scale
+            b.sample(3 * kTicksPerOutput, -341 * 256);  // within: an order-1 estimate's undershoot
+        },
+        stats);
     EXPECT_EQ(stats.unreachable_samples, 1u);
     EXPECT_EQ(stats.rows, 2u);
     ASSERT_EQ(log.size(), 2u);
@@ -336,28 +340,35 @@ TEST(LogAssembler, ASampleOfAnEmptyWindowIsSkippedAndCounted) {
     // A POLL answered just after a CONFIG restarted the windows holds no conversion: every value 0, inside the
     // converter's range, so only n_window tells it from a reading (it had put a row of zeros first in a log).
     AssemblyStats stats;
-    const LogData log = recorded("empty.csv", 0, [](Board& b) {
-        b.sample(1 * kTicksPerOutput, 0, 0);
-        b.sample(2 * kTicksPerOutput, 500 * 256, 1);  // one conversion: a reading
-        b.sample(3 * kTicksPerOutput);
-    }, stats);
+    const LogData log = recorded(
+        "empty.csv", 0,
+        [](Board& b) {
+            b.sample(1 * kTicksPerOutput, 0, 0);
+            b.sample(2 * kTicksPerOutput, 500 * 256, 1);  // one conversion: a reading
+            b.sample(3 * kTicksPerOutput);
+        },
+        stats);
     EXPECT_EQ(stats.empty_samples, 1u);
     EXPECT_EQ(stats.rows, 2u);
     ASSERT_EQ(log.size(), 2u);
     EXPECT_DOUBLE_EQ(log.t_s[0], 0.2);
-    EXPECT_EQ(skipped_samples(stats), "skipped 1 sample: 0 repeated (time not after the previous row), 0 beyond the converter's reach, "
-                                      "1 of an empty window (just after a CONFIG restarted the windows)");
+    EXPECT_EQ(skipped_samples(stats),
+              "skipped 1 sample: 0 repeated (time not after the previous row), 0 beyond the converter's reach, "
+              "1 of an empty window (just after a CONFIG restarted the windows)");
 }
 
 TEST(LogAssembler, ARawFrameWithACodeTheConverterCannotMakeIsKeptOutLikeALostOne) {
     AssemblyStats stats;
-    const LogData log = recorded("rawreach.csv", 1, [](Board& b) {
-        b.sample(1 * kTicksPerOutput);
-        b.raw(1 * kTicksPerOutput, 1023);  // the 10-bit converter's top code
-        b.sample(2 * kTicksPerOutput);
-        b.raw(2 * kTicksPerOutput, 1024);  // no 10-bit code
-        b.sample(3 * kTicksPerOutput);
-    }, stats);
+    const LogData log = recorded(
+        "rawreach.csv", 1,
+        [](Board& b) {
+            b.sample(1 * kTicksPerOutput);
+            b.raw(1 * kTicksPerOutput, 1023);  // the 10-bit converter's top code
+            b.sample(2 * kTicksPerOutput);
+            b.raw(2 * kTicksPerOutput, 1024);  // no 10-bit code
+            b.sample(3 * kTicksPerOutput);
+        },
+        stats);
     ASSERT_EQ(log.size(), 3u);
     EXPECT_EQ(log.optional_columns.at("raw_gyro"), (std::vector<double>{1023.0, -1.0, -1.0}));
     EXPECT_EQ(log.optional_columns.at("flags"), (std::vector<double>{0.0, kFlagRawMissing, kFlagRawMissing}));

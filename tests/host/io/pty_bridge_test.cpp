@@ -6,11 +6,11 @@
 
 #include <fcntl.h>
 
+#include <unistd.h>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "host/util/error.hpp"
 

@@ -3,10 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace driftlab::host::io;
@@ -96,7 +96,8 @@ TEST_F(FakeSystem, SysfsAloneListsATwoPortAdapterOnceWithBothNodes) {
     const std::string dev = (root_ / "dev").string();
     const auto ports = ports_from_sysfs(scan_sysfs_usb_ttys((root_ / "sys").string()), scan_by_id_links(dev), dev);
     ASSERT_EQ(ports.size(), 3u);
-    const auto ft2232 = std::find_if(ports.begin(), ports.end(), [](const UsbSerialPort& p) { return p.product_id == 0x6010; });
+    const auto ft2232 =
+        std::find_if(ports.begin(), ports.end(), [](const UsbSerialPort& p) { return p.product_id == 0x6010; });
     ASSERT_NE(ft2232, ports.end());
     EXPECT_EQ(ft2232->vendor_id, 0x0403);
     EXPECT_EQ(ft2232->device_nodes, (std::vector<std::string>{dev + "/ttyUSB1", dev + "/ttyUSB2"}));

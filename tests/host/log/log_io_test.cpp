@@ -90,7 +90,8 @@ TEST(LogIo, WriterOutputReadsBackExactlyWithMetadataGapsAndOptionalColumns) {
 TEST(LogIo, TheColumnsReadHoldNoRoomBeyondTheirRows) {
     std::string text = "# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro\n";
     constexpr std::size_t kRows = 1025;
-    for (std::size_t k = 0; k < kRows; ++k) text += std::to_string(k + 1) + "," + std::to_string(k) + ",512,500,501,620,512\n";
+    for (std::size_t k = 0; k < kRows; ++k)
+        text += std::to_string(k + 1) + "," + std::to_string(k) + ",512,500,501,620,512\n";
     const LogData log = parse(text);
     ASSERT_EQ(log.size(), kRows);
     EXPECT_EQ(log.t_s.capacity(), kRows);
@@ -138,7 +139,8 @@ TEST(LogIo, WriterRefusesRowsItsReaderWouldReject) {
     r.optional_values = {1.0};
     EXPECT_THROW(w.write_row(r), UsageError);  // no optional columns declared
     EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"colour"}), UsageError);
-    EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"tick", "tick"}), UsageError);  // the reader refuses a repeat
+    EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"tick", "tick"}),
+                 UsageError);  // the reader refuses a repeat
     {
         LogMetadata m;
         m.set("adc_bits", std::int64_t{10});
@@ -183,8 +185,9 @@ TEST(LogIo, EachRejectionNamesTheLine) {
     EXPECT_NE(rejection("# driftlab-log: 2\n").find("mem.csv:1: log format version '2'"), std::string::npos);
     EXPECT_NE(rejection("# driftlab-log: 1\n0,0,1,2,3,4\n").find("mem.csv:2: missing header"), std::string::npos);
     EXPECT_NE(rejection("# driftlab-log: 1\n# source: x\n").find("mem.csv:2: missing header"), std::string::npos);
-    EXPECT_NE(rejection("# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y\n").find("mem.csv:2: header lacks the "
-                                                                                "required column 'accel_z'"),
+    EXPECT_NE(rejection("# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y\n")
+                  .find("mem.csv:2: header lacks the "
+                        "required column 'accel_z'"),
               std::string::npos);
     EXPECT_NE(rejection(kHead).find("mem.csv:3: log has a header but no data rows"), std::string::npos);
     EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n" + "t_s,seq,gyro,accel_x,accel_y,accel_z\n")
@@ -202,11 +205,11 @@ TEST(LogIo, EachRejectionNamesTheLine) {
     EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n2,1,1,2,3,4\n1.5,2,1,2,3,4\n")
                   .find("mem.csv:6: t_s 1.5 is not after the previous row's 2"),
               std::string::npos);
-    EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n0,1,1,2,3,4\n").find("mem.csv:5: t_s 0 is not after"),
-              std::string::npos);
+    EXPECT_NE(rejection(kHead + "0,0,1,2,3,4\n0,1,1,2,3,4\n").find("mem.csv:5: t_s 0 is not after"), std::string::npos);
     const std::string flags_head = kHead.substr(0, kHead.size() - 1) + ",sat_flags\n";
     EXPECT_EQ(parse(flags_head + "0,0,1,2,3,4,15\n").optional_columns.at("sat_flags")[0], 15.0);
-    EXPECT_NE(rejection(flags_head + "0,0,1,2,3,4,1.5\n").find("mem.csv:4: field 7 (sat_flags) '1.5': not a set of channel bits"),
+    EXPECT_NE(rejection(flags_head + "0,0,1,2,3,4,1.5\n")
+                  .find("mem.csv:4: field 7 (sat_flags) '1.5': not a set of channel bits"),
               std::string::npos);
     EXPECT_NE(rejection(flags_head + "0,0,1,2,3,4,16\n").find("field 7 (sat_flags) '16'"), std::string::npos);
     // t_s counts from power-on: eq. 1 fitted to negative times had given NaN residuals and a misleading message.
@@ -223,9 +226,10 @@ TEST(LogIo, AValueBeyondTheConvertersReachIsRejectedWhenTheLogNamesItsResolution
     const std::string head = "# driftlab-log: 1\n# adc_bits: 10\nt_s,seq,gyro,accel_x,accel_y,accel_z\n";
     const LogData edge = parse(head + "0,0,-342,1365,512,-341.5\n");  // the reach's ends are values it can hold
     EXPECT_EQ(edge.channel(Channel::accel_x)[0], 1365.0);
-    EXPECT_NE(rejection(head + "0,0,1,2,3,4\n1,1,512,1e308,3,4\n")
-                  .find("mem.csv:5: field 4 (accel_x) '1e308': beyond the 10-bit converter's reach (-342 to 1365 counts)"),
-              std::string::npos);
+    EXPECT_NE(
+        rejection(head + "0,0,1,2,3,4\n1,1,512,1e308,3,4\n")
+            .find("mem.csv:5: field 4 (accel_x) '1e308': beyond the 10-bit converter's reach (-342 to 1365 counts)"),
+        std::string::npos);
     EXPECT_NE(rejection(head + "0,0,-342.01,2,3,4\n").find("mem.csv:4: field 3 (gyro)"), std::string::npos);
     EXPECT_NE(rejection("# driftlab-log: 1\n# adc_bits: 12\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,5461.5\n")
                   .find("field 6 (accel_z) '5461.5': beyond the 12-bit converter's reach (-1366 to 5461 counts)"),
@@ -234,7 +238,8 @@ TEST(LogIo, AValueBeyondTheConvertersReachIsRejectedWhenTheLogNamesItsResolution
     const std::string raw_head = "# driftlab-log: 1\n# adc_bits: 10\nt_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro\n";
     EXPECT_EQ(parse(raw_head + "0,0,1,2,3,4,1023\n1,2,1,2,3,4,-1\n").optional_columns.at("raw_gyro")[1], -1.0);
     EXPECT_NE(rejection(raw_head + "0,0,1,2,3,4,1024\n")
-                  .find("mem.csv:4: field 7 (raw_gyro) '1024': not a code of the 10-bit converter (0 to 1023, or -1 for a lost RAW frame)"),
+                  .find("mem.csv:4: field 7 (raw_gyro) '1024': not a code of the 10-bit converter (0 to 1023, or -1 "
+                        "for a lost RAW frame)"),
               std::string::npos);
     EXPECT_NE(rejection(raw_head + "0,0,1,2,3,4,511.5\n").find("field 7 (raw_gyro) '511.5'"), std::string::npos);
     // Without the resolution no bound is known: the value is kept, unless the reader is told what to assume.
@@ -245,9 +250,10 @@ TEST(LogIo, AValueBeyondTheConvertersReachIsRejectedWhenTheLogNamesItsResolution
         parse(kHead + "0,0,1e9,2,3,4\n", assume);
         ADD_FAILURE() << "1e9 accepted with 10 bits assumed";
     } catch (const DataError& e) {
-        EXPECT_NE(std::string(e.what()).find("mem.csv:4: field 3 (gyro) '1e9': beyond the 10-bit converter's reach (-342 to "
-                                             "1365 counts; the metadata names no adc_bits, 10 assumed)"),
-                  std::string::npos)
+        EXPECT_NE(
+            std::string(e.what()).find("mem.csv:4: field 3 (gyro) '1e9': beyond the 10-bit converter's reach (-342 to "
+                                       "1365 counts; the metadata names no adc_bits, 10 assumed)"),
+            std::string::npos)
             << e.what();
     }
     // The metadata's own resolution wins over the assumption.
@@ -257,8 +263,9 @@ TEST(LogIo, AValueBeyondTheConvertersReachIsRejectedWhenTheLogNamesItsResolution
 }
 
 TEST(LogIo, MetadataKeysKnowTheirLines) {
-    const LogData log = parse("# driftlab-log: 1\n# a free comment\n# window: 8\n\n# fit_order: 1\n"
-                              "t_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n");
+    const LogData log = parse(
+        "# driftlab-log: 1\n# a free comment\n# window: 8\n\n# fit_order: 1\n"
+        "t_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n");
     EXPECT_EQ(log.metadata.line_of("window"), 3u);
     EXPECT_EQ(log.metadata.line_of("fit_order"), 5u);
     EXPECT_EQ(log.metadata.line_of("absent"), 0u);
@@ -284,9 +291,10 @@ TEST(LogIo, TruncatedLastLineIsReportedOrDroppedOnRequest) {
 }
 
 TEST(LogIo, CommentsBlankLinesAndCrLfAreAccepted) {
-    const LogData log = parse("# driftlab-log: 1\r\n# model: paper_default\r\n\r\n# a free comment\r\n"
-                              "t_s,seq,gyro,accel_x,accel_y,accel_z\r\n0,0,1,2,3,4\r\n# note: operator\r\n"
-                              "# gap: reconnect after 2 s\r\n3,9,1,2,3,4\r\n");
+    const LogData log = parse(
+        "# driftlab-log: 1\r\n# model: paper_default\r\n\r\n# a free comment\r\n"
+        "t_s,seq,gyro,accel_x,accel_y,accel_z\r\n0,0,1,2,3,4\r\n# note: operator\r\n"
+        "# gap: reconnect after 2 s\r\n3,9,1,2,3,4\r\n");
     EXPECT_EQ(log.size(), 2u);
     EXPECT_EQ(log.metadata.get("model"), "paper_default");
     ASSERT_EQ(log.gaps.size(), 1u);
@@ -308,18 +316,17 @@ TEST(LogIo, ALogIsKnownByItsMagicLineAsTheReaderTakesIt) {
     EXPECT_FALSE(starts("# a comment\n# driftlab-log: 1\n"));
     // A damaged magic line is a log the reader refuses with its reason, not a plain table.
     EXPECT_TRUE(starts("# driftlab-log 1\nt_s,seq\n"));
-    EXPECT_NE(rejection("# driftlab-log 1\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n")
-                  .find("mem.csv:1: not a driftlab log: the first line must be '# driftlab-log: 1', got '# driftlab-log 1'"),
-              std::string::npos);
+    EXPECT_NE(
+        rejection("# driftlab-log 1\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n")
+            .find("mem.csv:1: not a driftlab log: the first line must be '# driftlab-log: 1', got '# driftlab-log 1'"),
+        std::string::npos);
     EXPECT_FALSE(starts("t_s,gx\n0,1\n"));
     EXPECT_FALSE(starts(""));
     const LogData log = parse("\n# driftlab-log: 1\nt_s,seq,gyro,accel_x,accel_y,accel_z\n0,0,1,2,3,4\n");
     EXPECT_EQ(log.size(), 1u);
 }
 
-TEST(LogIo, MissingFileIsADataError) {
-    EXPECT_THROW(read_log(temp_path("does_not_exist.csv")), DataError);
-}
+TEST(LogIo, MissingFileIsADataError) { EXPECT_THROW(read_log(temp_path("does_not_exist.csv")), DataError); }
 
 }  // namespace
 }  // namespace driftlab::host

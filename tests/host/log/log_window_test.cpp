@@ -70,7 +70,9 @@ TEST(LogWindow, AStretchLeftOutJoinsTheRowsEitherSideAndIsRecordedThere) {
 }
 
 TEST(LogWindow, OverlappingStretchesAreOneCutAndAnEarlierWindowKeepsItsCut) {
-    const LogData w = rows_outside(ten_rows(), {{7.5, 9.0, "--exclude"}, {2.0, 2.5, "--exclude"}, {6.5, 8.0, "--exclude-saturated"}});  // rows 1; rows 6, 7, 8
+    const LogData w = rows_outside(
+        ten_rows(),
+        {{7.5, 9.0, "--exclude"}, {2.0, 2.5, "--exclude"}, {6.5, 8.0, "--exclude-saturated"}});  // rows 1; rows 6, 7, 8
     EXPECT_EQ(w.t_s, (std::vector<double>{1, 3, 4, 5, 6, 10}));
     ASSERT_EQ(w.cuts.size(), 2u);
     EXPECT_EQ(w.cuts[0].before_row, 1u);
@@ -81,7 +83,7 @@ TEST(LogWindow, OverlappingStretchesAreOneCutAndAnEarlierWindowKeepsItsCut) {
     EXPECT_DOUBLE_EQ(w.cuts[1].to_s, 9.0);
     EXPECT_EQ(w.cuts[0].by, "--exclude");
     EXPECT_EQ(w.cuts[1].by, "--exclude-saturated, --exclude");  // merged: both options that asked for it
-    EXPECT_TRUE(w.gaps.empty());  // before row 2 and row 7: each next to a row left out
+    EXPECT_TRUE(w.gaps.empty());                                // before row 2 and row 7: each next to a row left out
     // A window of the rows kept then keeps the cut inside it, renumbered.
     const LogData later = rows_between(w, 2.5, 10.0);
     ASSERT_EQ(later.cuts.size(), 1u);
@@ -119,8 +121,8 @@ TEST(LogWindow, AStretchWithoutRowsOrOneThatLeavesNoneIsRefused) {
 TEST(LogWindow, SaturatedStretchesAreTheFlaggedRunsOfTheChannelsAskedWidenedByTheMargin) {
     LogData log = ten_rows();  // t = 1..10; sat_flags: gyro (bit 0) in row 6
     auto& flags = log.optional_columns["sat_flags"];
-    flags[1] = 8.0;                // accel_z in row 1
-    flags[7] = flags[8] = 3.0;     // gyro and accel_x in rows 7, 8: one run with row 6
+    flags[1] = 8.0;             // accel_z in row 1
+    flags[7] = flags[8] = 3.0;  // gyro and accel_x in rows 7, 8: one run with row 6
     const std::array<bool, kChannelCount> gyro{true, false, false, false};
     const auto g = saturated_stretches(log, gyro, 0.5);
     ASSERT_EQ(g.size(), 1u);

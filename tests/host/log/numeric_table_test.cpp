@@ -68,12 +68,15 @@ TEST(NumericTable, RejectionsNameTheLine) {
     EXPECT_NE(rejection("n.txt", "1 2\n3 nan\n").find(":2: field 2 'nan': not finite"), std::string::npos);
     EXPECT_NE(rejection("m.txt", "1,2\n3,,4\n").find(":2: field 2 '': empty field"), std::string::npos);
     // One name over lines of several fields: the first data line is named, as with several names.
-    EXPECT_NE(rejection("w.txt", "gx\n1 2\n3 4\n").find(":2: expected 1 fields (as the name line), got 2"), std::string::npos);
-    EXPECT_NE(rejection("x.txt", "a b\n1 2 3\n").find(":2: expected 2 fields (as the name line), got 3"), std::string::npos);
+    EXPECT_NE(rejection("w.txt", "gx\n1 2\n3 4\n").find(":2: expected 1 fields (as the name line), got 2"),
+              std::string::npos);
+    EXPECT_NE(rejection("x.txt", "a b\n1 2 3\n").find(":2: expected 2 fields (as the name line), got 3"),
+              std::string::npos);
     // A spreadsheet's export with semicolons and decimal commas is told what the reader expects.
     const std::string semicolons = rejection("s.txt", "t;gx\n0;0,5\n0,01;0,6\n");
     EXPECT_NE(semicolons.find(":2: field 1 '0;0': not a number (fields are separated by blanks, tabs or commas"),
-              std::string::npos) << semicolons;
+              std::string::npos)
+        << semicolons;
     EXPECT_EQ(rejection("a.txt", "1 2\n3 abc\n").find("semicolons"), std::string::npos);  // not said of other words
 }
 

@@ -25,13 +25,14 @@ constexpr std::size_t kRows = 30;
 
 // A log with metadata, a gap line, a raw column and saturation flags: each part of the format the reader checks.
 std::string clean_log() {
-    std::string text = "# driftlab-log: 1\n# source: hil\n# sample_period_s: 0.5\n# adc_bits: 10\n# window: 8\n"
-                       "t_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro,sat_flags\n";
+    std::string text =
+        "# driftlab-log: 1\n# source: hil\n# sample_period_s: 0.5\n# adc_bits: 10\n# window: 8\n"
+        "t_s,seq,gyro,accel_x,accel_y,accel_z,raw_gyro,sat_flags\n";
     for (std::size_t k = 0; k < kRows; ++k) {
         if (k == 12) text += "# gap: link lost 1.0 s\n";
         text += std::to_string(0.5 * static_cast<double>(k) + 0.25) + "," + std::to_string(2 * k) + "," +
-                std::to_string(511.25 + static_cast<double>(k % 7)) + ",470.5,474.125,622," + std::to_string(500 + k % 9) +
-                "," + (k == 20 ? "1" : "0") + "\n";
+                std::to_string(511.25 + static_cast<double>(k % 7)) + ",470.5,474.125,622," +
+                std::to_string(500 + k % 9) + "," + (k == 20 ? "1" : "0") + "\n";
     }
     return text;
 }
@@ -78,8 +79,9 @@ void expect_log_guarantees(const LogData& log, const std::string& text) {
 std::string clean_table() {
     std::string text = "# exported by a logger\nt_s, gx, ax\n";
     for (std::size_t k = 0; k < kRows; ++k)
-        text += std::to_string(0.01 * static_cast<double>(k)) + ", " + std::to_string(0.125 * static_cast<double>(k % 5)) +
-                "  " + std::to_string(-0.0012 + 1e-4 * static_cast<double>(k % 3)) + "\n";
+        text += std::to_string(0.01 * static_cast<double>(k)) + ", " +
+                std::to_string(0.125 * static_cast<double>(k % 5)) + "  " +
+                std::to_string(-0.0012 + 1e-4 * static_cast<double>(k % 3)) + "\n";
     return text;
 }
 
@@ -101,21 +103,22 @@ void expect_table_guarantees(const NumericTable& table, const std::string& text)
 /// `clean` after one to six random edits: bytes replaced, spans cut or copied, tokens a reader must weigh inserted,
 /// the text cut short. Half of them land in the first 300 bytes, where the magic line, metadata and header are.
 std::string damaged(const std::string& clean, std::mt19937& rng) {
-    static const char* const kInsertions[] = {",", "\n", "nan", "-", "1e308", "#", " ", "\r", "inf", "0", "999999", "\"", "\t", "."};
+    static const char* const kInsertions[] = {",",  "\n",  "nan", "-",      "1e308", "#",  " ",
+                                              "\r", "inf", "0",   "999999", "\"",    "\t", "."};
     std::string text = clean;
     const int edits = 1 + static_cast<int>(rng() % 6);
     for (int e = 0; e < edits && !text.empty(); ++e) {
         const std::size_t span = rng() % 2 ? std::min<std::size_t>(300, text.size()) : text.size();
         const std::size_t at = rng() % span;
         switch (rng() % 5) {
-            case 0: text[at] = static_cast<char>(rng() % 256); break;
-            case 1: text.erase(at, 1 + rng() % 50); break;
-            case 2: text.insert(at, kInsertions[rng() % std::size(kInsertions)]); break;
-            case 3: text.resize(at); break;
-            default: {
-                const std::size_t from = rng() % text.size();
-                text.insert(at, text.substr(from, 1 + rng() % 200));
-            }
+        case 0: text[at] = static_cast<char>(rng() % 256); break;
+        case 1: text.erase(at, 1 + rng() % 50); break;
+        case 2: text.insert(at, kInsertions[rng() % std::size(kInsertions)]); break;
+        case 3: text.resize(at); break;
+        default: {
+            const std::size_t from = rng() % text.size();
+            text.insert(at, text.substr(from, 1 + rng() % 200));
+        }
         }
     }
     return text;

@@ -4,16 +4,16 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "host/fit/drift_analysis.hpp"
 #include "host/fit/file_analysis.hpp"
-#include "host/report/analysis_json.hpp"
 #include "host/report/allan_section.hpp"
+#include "host/report/analysis_json.hpp"
 #include "host/report/analysis_plots.hpp"
 #include "host/report/gnuplot.hpp"
 #include "host/report/html_report.hpp"
@@ -195,11 +195,11 @@ std::string write_table(const TempDir& dir, const std::string& name, const std::
 }
 
 // The report's Allan grid: rows in bursts (5 rows 2 ms apart every 50 ms, 100 a second, as the MPU6050 recording)
-// get tau0 = their mean spacing, 10 ms (59.958 s / 5999), and a curve out to seconds; at the median, 2 ms, 80 % of the grid had been
-// gaps and the curve had ended at 16 ms. A 1 s record with a reconnect that lost 30 % keeps tau0 = 1 s and warns.
-// The fit's values of what the data do not determine are arbitrary (C1 = -6.9e11 counts on a warm log): the page
-// says "not determined", why, and gives the initial slope C1/T the record does determine.
-// A fit whose evaluation budget ran out reads so in the fit table, not as the JSON's name iteration_limit.
+// get tau0 = their mean spacing, 10 ms (59.958 s / 5999), and a curve out to seconds; at the median, 2 ms, 80 % of the
+// grid had been gaps and the curve had ended at 16 ms. A 1 s record with a reconnect that lost 30 % keeps tau0 = 1 s
+// and warns. The fit's values of what the data do not determine are arbitrary (C1 = -6.9e11 counts on a warm log): the
+// page says "not determined", why, and gives the initial slope C1/T the record does determine. A fit whose evaluation
+// budget ran out reads so in the fit table, not as the JSON's name iteration_limit.
 TEST(Report, AFitThatStoppedShortSaysSoInWords) {
     const TempDir dir("report_stopped_short");  // a name without the words looked for
     fit::FileAnalysisRequest request;
@@ -254,9 +254,10 @@ TEST(Report, AllanGridOfBurstyRowsIsTheirMeanSpacingAndGapsAreWarned) {
             EXPECT_EQ(section.html.find("class=\"warn\""), std::string::npos) << section.html;
         } else {
             EXPECT_NE(section.html.find("<td>gx</td><td>1</td>"), std::string::npos) << section.html;
-            EXPECT_NE(section.html.find("30 % of the 1000 grid slots at tau0 = 1 s are gaps (rows 1 s apart (median; mean "
-                                        "1.42918 s))"),
-                      std::string::npos)
+            EXPECT_NE(
+                section.html.find("30 % of the 1000 grid slots at tau0 = 1 s are gaps (rows 1 s apart (median; mean "
+                                  "1.42918 s))"),
+                std::string::npos)
                 << section.html;
         }
     }
@@ -277,7 +278,8 @@ TEST(Report, AllanPackingThatCanBiasTheCurveIsWarned) {
     const AllanSection section = allan_section({&*file.series[0].analysis});
     EXPECT_NE(section.html.find("<b>gx:</b> 5996 samples came faster than tau0 (bursts, or a record that changes its "
                                 "rate) and were placed up to 1000 slots (1000 s) after their time"),
-              std::string::npos) << section.html;
+              std::string::npos)
+        << section.html;
 }
 
 /// The number in the first cell after `<tr><td>name</td>` that follows `heading` in `html`; NaN when absent.
@@ -317,7 +319,8 @@ TEST(Report, AllanTermsInNavigationUnitsWhereTheQuantityIsKnown) {
     // One unit: named in the headers, no unit column. A unit the table does not know gives no navigation table.
     const std::string gx_only = allan_section({&*file.series[0].analysis}).html;
     EXPECT_NE(gx_only.find("<th>channel</th><th>&tau;0 [s]</th><th>OADEV &sigma;(&tau;0) raw [deg/s]</th>"),
-              std::string::npos) << gx_only;
+              std::string::npos)
+        << gx_only;
     EXPECT_EQ(gx_only.find("Accelerometers"), std::string::npos) << gx_only;
     file.series[0].analysis->data.unit = "";
     const std::string plain = allan_section({&*file.series[0].analysis}).html;

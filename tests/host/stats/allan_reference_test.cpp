@@ -21,9 +21,9 @@ using test::allan_reference_dir;
 using test::read_column;
 using test::read_stable32;
 
-#define SKIP_WITHOUT_REFERENCE()                                                                         \
-    if (!std::filesystem::exists(allan_reference_dir()))                                                 \
-    GTEST_SKIP() << "Allan reference data not found at " << allan_reference_dir()                        \
+#define SKIP_WITHOUT_REFERENCE()                                                  \
+    if (!std::filesystem::exists(allan_reference_dir()))                          \
+    GTEST_SKIP() << "Allan reference data not found at " << allan_reference_dir() \
                  << " (set DRIFTLAB_SHARED_DIR to the shared folder)"
 
 constexpr double kRelTolerance = 1e-4;

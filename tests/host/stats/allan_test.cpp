@@ -151,7 +151,8 @@ TEST(AllanInvariance, ScalingByAPowerOfTwoScalesEveryDeviationExactlyAtAnyMagnit
     }
     // Rate input: the deviation of the rate does not depend on tau0.
     const PhaseRecord tiny_tau0 = PhaseRecord::from_rate(y, std::ldexp(1.0, -1000));
-    for (std::int64_t m : {1, 7, 300}) EXPECT_DOUBLE_EQ(one(tiny_tau0, Deviation::oadev, m), one(base, Deviation::oadev, m));
+    for (std::int64_t m : {1, 7, 300})
+        EXPECT_DOUBLE_EQ(one(tiny_tau0, Deviation::oadev, m), one(base, Deviation::oadev, m));
     // Phase input of 1e199: the differences are formed before anything is squared.
     std::vector<double> x(y.size() + 1, 0.0);
     for (std::size_t i = 0; i < y.size(); ++i) x[i + 1] = x[i] + std::ldexp(y[i] * tau0, 660);

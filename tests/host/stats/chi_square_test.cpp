@@ -35,8 +35,10 @@ TEST(ChiSquare, QuantileInvertsTheCdfInBothTailsForFractionalDof) {
     for (double dof : {0.7, 1.0, 3.3, 47.5, 1e4}) {
         for (double p : {1e-9, 0.025, 0.5, 0.975, 1.0 - 1e-9}) {
             const double x = chi_square_quantile(p, dof);
-            if (p > 0.5) EXPECT_NEAR(chi_square_survival(x, dof), 1.0 - p, 1e-11 * (1.0 - p)) << dof << " " << p;
-            else EXPECT_NEAR(chi_square_cdf(x, dof), p, 1e-11 * p) << dof << " " << p;
+            if (p > 0.5)
+                EXPECT_NEAR(chi_square_survival(x, dof), 1.0 - p, 1e-11 * (1.0 - p)) << dof << " " << p;
+            else
+                EXPECT_NEAR(chi_square_cdf(x, dof), p, 1e-11 * p) << dof << " " << p;
         }
     }
     EXPECT_NEAR(chi_square_quantile(0.95, 10), 18.307038, 1e-6);

@@ -160,7 +160,8 @@ TEST(LoneValues, TheWarningNamesEachTimeAndValueUpToFive) {
     x[100] = 32767.0;
     const auto one = lone_values_warning(times(400), x);
     ASSERT_TRUE(one);
-    EXPECT_EQ(one->rfind("1 lone value (t = 50 s: 32767) carries 100 % of the sample-to-sample variance", 0), 0u) << *one;
+    EXPECT_EQ(one->rfind("1 lone value (t = 50 s: 32767) carries 100 % of the sample-to-sample variance", 0), 0u)
+        << *one;
     // Rows 0.5 s apart: the shortest numbers between 49.5 and 50 and between 50 and 50.5 (49.75 and 50.25 rounded).
     EXPECT_TRUE(one->ends_with("correct that row, or leave it out with --exclude 49.8:50.2")) << *one;
     for (std::size_t k = 110; k <= 160; k += 10) x[k] = -32768.0;
@@ -171,8 +172,9 @@ TEST(LoneValues, TheWarningNamesEachTimeAndValueUpToFive) {
                            0),
               0u)
         << *seven;
-    EXPECT_TRUE(seven->ends_with("leave them out with --exclude 49.8:50.2 --exclude 54.8:55.2 --exclude 59.8:60.2 "
-                                 "--exclude 64.8:65.2 --exclude 69.8:70.2 and so on"))
+    EXPECT_TRUE(
+        seven->ends_with("leave them out with --exclude 49.8:50.2 --exclude 54.8:55.2 --exclude 59.8:60.2 "
+                         "--exclude 64.8:65.2 --exclude 69.8:70.2 and so on"))
         << *seven;
 }
 

@@ -100,7 +100,8 @@ TEST(NoiseId, WhitePhaseIsWhitePm) {
 
 // White PM given as rate (first differences of white phase): lag-1 correlation -1/2, where rho = r1 / (1 + r1) runs
 // off to minus infinity on a short averaged series. The type stays within what the statistic converges for (Allan
-// -2..2, Hadamard -4..2), and is white PM in most logs; a random walk of a random walk (alpha -4) reads at Allan's limit.
+// -2..2, Hadamard -4..2), and is white PM in most logs; a random walk of a random walk (alpha -4) reads at Allan's
+// limit.
 TEST(NoiseId, TypesStayWithinTheStatisticsRange) {
     int white_pm = 0, runs = 0;
     for (std::uint64_t seed = 10; seed < 60; ++seed) {

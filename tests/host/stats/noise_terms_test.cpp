@@ -71,7 +71,8 @@ TEST(NoiseTerms, ScalingTheCurveByAPowerOfTwoScalesEveryTermExactly) {
             EXPECT_DOUBLE_EQ(fit.value[j], std::ldexp(base.value[j], k)) << j << " 2^" << k;
             EXPECT_DOUBLE_EQ(fit.std_error[j], std::ldexp(base.std_error[j], k)) << j << " 2^" << k;
         }
-        for (std::size_t i = 0; i < tau.size(); ++i) EXPECT_DOUBLE_EQ(fit.model_adev[i], std::ldexp(base.model_adev[i], k));
+        for (std::size_t i = 0; i < tau.size(); ++i)
+            EXPECT_DOUBLE_EQ(fit.model_adev[i], std::ldexp(base.model_adev[i], k));
         EXPECT_DOUBLE_EQ(fit.chi_square, base.chi_square);
     }
 }
@@ -129,7 +130,8 @@ TEST(NoiseTerms, ATermPinnedAtZeroIsUnresolvedWithTheCurvesBound) {
     std::vector<double> y(200000);
     for (double& v : y) v = g(rng);
     const PhaseRecord r = PhaseRecord::from_rate(y, tau0);
-    const AnalysedCurve a = analyse_deviation(r, Deviation::oadev, analysis_factors(r, Deviation::oadev, {TauGrid::octave}));
+    const AnalysedCurve a =
+        analyse_deviation(r, Deviation::oadev, analysis_factors(r, Deviation::oadev, {TauGrid::octave}));
     const NoiseTermFit fit = fit_noise_terms(a.curve.tau_s, a.curve.dev, a.edf);
     ASSERT_TRUE(fit.ok);
     ASSERT_TRUE(fit.at_bound[2]) << "B = " << fit.value[2];

@@ -22,19 +22,19 @@ TEST(RateUnit, EachSpellingIsItsDefinitionInSI) {
         RateQuantity quantity;
         double si;
     };
-    for (const Case& c : {Case{"deg/s", "deg/s", RateQuantity::angular_rate, deg},
-                          Case{"dps", "deg/s", RateQuantity::angular_rate, deg},
-                          Case{"mdps", "mdps", RateQuantity::angular_rate, deg / 1000.0},
-                          Case{"deg/h", "deg/h", RateQuantity::angular_rate, deg / 3600.0},
-                          Case{"rad/s", "rad/s", RateQuantity::angular_rate, 1.0},
-                          Case{"g", "g", RateQuantity::acceleration, 9.80665},
-                          Case{"mg", "mg", RateQuantity::acceleration, 9.80665e-3},
-                          Case{"m/s^2", "m/s^2", RateQuantity::acceleration, 1.0},
-                          Case{"m/s2", "m/s^2", RateQuantity::acceleration, 1.0},
-                          Case{"cm/s^2", "cm/s^2", RateQuantity::acceleration, 0.01},
-                          Case{"cm/s2", "cm/s^2", RateQuantity::acceleration, 0.01},
-                          Case{"mm/s^2", "mm/s^2", RateQuantity::acceleration, 0.001},
-                          Case{"mm/s2", "mm/s^2", RateQuantity::acceleration, 0.001}}) {
+    for (const Case& c :
+         {Case{"deg/s", "deg/s", RateQuantity::angular_rate, deg},
+          Case{"dps", "deg/s", RateQuantity::angular_rate, deg},
+          Case{"mdps", "mdps", RateQuantity::angular_rate, deg / 1000.0},
+          Case{"deg/h", "deg/h", RateQuantity::angular_rate, deg / 3600.0},
+          Case{"rad/s", "rad/s", RateQuantity::angular_rate, 1.0}, Case{"g", "g", RateQuantity::acceleration, 9.80665},
+          Case{"mg", "mg", RateQuantity::acceleration, 9.80665e-3},
+          Case{"m/s^2", "m/s^2", RateQuantity::acceleration, 1.0},
+          Case{"m/s2", "m/s^2", RateQuantity::acceleration, 1.0},
+          Case{"cm/s^2", "cm/s^2", RateQuantity::acceleration, 0.01},
+          Case{"cm/s2", "cm/s^2", RateQuantity::acceleration, 0.01},
+          Case{"mm/s^2", "mm/s^2", RateQuantity::acceleration, 0.001},
+          Case{"mm/s2", "mm/s^2", RateQuantity::acceleration, 0.001}}) {
         const auto u = rate_unit(c.spelling);
         ASSERT_TRUE(u) << c.spelling;
         EXPECT_EQ(u->name, c.name) << c.spelling;
@@ -90,7 +90,9 @@ TEST(UnitAssignment, PhaseSamplesTakeTheirIntegralsUnitAndHoldTheRates) {
         ADD_FAILURE() << "a rate's unit was taken for phase samples";
     } catch (const UsageError& e) {
         EXPECT_EQ(std::string(e.what()).rfind("--unit 'gx:deg/s': unknown unit 'deg/s' for phase samples ('deg/s' is a "
-                                              "rate's: give its integral's, e.g. deg for deg/s); angle: deg", 0), 0u)
+                                              "rate's: give its integral's, e.g. deg for deg/s); angle: deg",
+                                              0),
+                  0u)
             << e.what();
     }
 }
@@ -120,7 +122,8 @@ TEST(UnitAssignment, BadValuesAreRefusedNamingThem) {
               "--unit 'gyro:deg/sec': unknown unit 'deg/sec'; angular rate: deg/s, dps, mdps, deg/h, rad/s; "
               "acceleration: g, mg, m/s^2, m/s2, cm/s^2, cm/s2, mm/s^2, mm/s2");
     EXPECT_EQ(message({"gyro:"}).rfind("--unit 'gyro:': no unit; angular rate: deg/s", 0), 0u) << message({"gyro:"});
-    EXPECT_EQ(message({":deg/s"}), "--unit ':deg/s': no column before ':' (COLUMN:UNIT, or UNIT alone for every column)");
+    EXPECT_EQ(message({":deg/s"}),
+              "--unit ':deg/s': no column before ':' (COLUMN:UNIT, or UNIT alone for every column)");
     EXPECT_EQ(message({"gyro:deg/s", "gyro:rad/s"}),
               "--unit 'gyro:rad/s': column 'gyro' already has a unit (--unit 'gyro:deg/s')");
     EXPECT_EQ(message({"g", "mg"}), "--unit 'mg': every column already has a unit (--unit 'g')");

@@ -70,8 +70,7 @@ TEST(TauGrid, Stable32AllTauListReproducesTheReferenceTables) {
         std::vector<std::int64_t> expected;
         for (const auto& row : test::read_stable32(path)) expected.push_back(row.m);
         const TauGridOptions o{TauGrid::stable32_all, 10, t.step_divisor};
-        EXPECT_EQ(averaging_factors(o, stable32_max_factor(t.phase_samples, stable32_factor_divisor(t.dev))),
-                  expected)
+        EXPECT_EQ(averaging_factors(o, stable32_max_factor(t.phase_samples, stable32_factor_divisor(t.dev))), expected)
             << t.folder << "/" << t.table_file;
     }
 }

@@ -121,9 +121,10 @@ TEST(Whiteness, AcceptsWhiteNoiseAboutNinetyFivePercentAndRejectsAr1) {
         fraction_sum += white.fraction_inside;
         rejected_ar1 += !test_whiteness(ar1(4000, 0.5, 9000 + static_cast<std::uint64_t>(s)), 1.0).white;
     }
-    std::printf("white noise judged white in %.3f of %d runs (mean fraction inside %.3f); AR(1) phi=0.5 rejected in "
-                "%.3f\n",
-                accepted_white / double(runs), runs, fraction_sum / runs, rejected_ar1 / double(runs));
+    std::printf(
+        "white noise judged white in %.3f of %d runs (mean fraction inside %.3f); AR(1) phi=0.5 rejected in "
+        "%.3f\n",
+        accepted_white / double(runs), runs, fraction_sum / runs, rejected_ar1 / double(runs));
     // Test size 5 %: acceptance 95 % with binomial sd 1.1 points over 400 runs.
     EXPECT_GE(accepted_white, 368);
     EXPECT_LE(accepted_white, 392);

@@ -93,9 +93,9 @@ TEST(SignificantPlain, AtMostTheDigitsAndNoExponentForOrdinaryMagnitudes) {
     EXPECT_EQ(significant_plain(9.776e-05, 4), "0.00009776");
     EXPECT_EQ(significant_plain(-0.34061, 4), "-0.3406");
     EXPECT_EQ(significant_plain(507.44, 4), "507.4");
-    EXPECT_EQ(significant_plain(30.0, 4), "30");       // no trailing zeros, as %g
+    EXPECT_EQ(significant_plain(30.0, 4), "30");  // no trailing zeros, as %g
     EXPECT_EQ(significant_plain(0.0250, 3), "0.025");
-    EXPECT_EQ(significant_plain(9.99996, 4), "10");     // rounding carries into a new leading digit
+    EXPECT_EQ(significant_plain(9.99996, 4), "10");  // rounding carries into a new leading digit
     EXPECT_EQ(significant_plain(-1.0e-5, 2), "-0.00001");
     EXPECT_EQ(significant_plain(-0.0, 4), "0");
 }

@@ -17,7 +17,8 @@ TEST(ParallelFor, CallsEveryIndexExactlyOnceWhateverTheThreadCount) {
         for (std::size_t count : {0u, 1u, 2u, 7u, 100u}) {
             std::vector<std::atomic<int>> calls(count);
             parallel_for(count, threads, [&](std::size_t i) { ++calls[i]; });
-            for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(calls[i], 1) << "index " << i << " of " << count << ", threads " << threads;
+            for (std::size_t i = 0; i < count; ++i)
+                EXPECT_EQ(calls[i], 1) << "index " << i << " of " << count << ", threads " << threads;
         }
     }
 }

@@ -13,7 +13,8 @@ namespace {
 
 std::vector<double> series(std::size_t n) {
     std::vector<double> x(n);
-    for (std::size_t t = 0; t < n; ++t) x[t] = std::sin(0.37 * static_cast<double>(t * t % 97)) + 0.01 * static_cast<double>(t);
+    for (std::size_t t = 0; t < n; ++t)
+        x[t] = std::sin(0.37 * static_cast<double>(t * t % 97)) + 0.01 * static_cast<double>(t);
     return x;
 }
 

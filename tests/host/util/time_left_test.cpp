@@ -35,7 +35,7 @@ TEST(TimeLeft, TheRestTakesThePaceSoFar) {
 }
 
 TEST(TimeLeft, NothingIsGuessedBeforeThePaceIsKnownOrOnceDone) {
-    EXPECT_EQ(time_left(0.5, 0.5), "");   // under a second: start-up dominates
+    EXPECT_EQ(time_left(0.5, 0.5), "");     // under a second: start-up dominates
     EXPECT_EQ(time_left(0.005, 10.0), "");  // under 1 % done
     EXPECT_EQ(time_left(1.0, 10.0), "");
     EXPECT_EQ(time_left(0.99, 10.0), "");  // 0.1 s left: "about 0 s" says nothing

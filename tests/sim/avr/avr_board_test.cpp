@@ -188,8 +188,8 @@ TEST_F(AvrTwin, MalformedAndOutOfRangeCommandsAreNakedAndChangeNothing) {
     at(frame_of(proto::encode_ack(proto::AckPayload{1, 2}, seq++, ack, sizeof ack), ack));  // firmware-to-host type
     // Framing errors are not answered (the decoder cannot trust the header); the firmware counts them.
     at({0xD7, 0x1A, 0x01, 0x04, 0x07, 0x00, 0x06, 100, 0, 25, 25, 0, 0, 0x00, 0x00});  // CONFIG_SET, len 6
-    at({0xD7, 0x1A, 0x01, 0x7E, 0x08, 0x00, 0x00, 0x00, 0x00});                       // unknown type 0x7E
-    at({0xD7, 0x1A, 0x01, 0x06, 0x09, 0x00, 0x00, 0x12, 0x34});                       // POLL, bad CRC
+    at({0xD7, 0x1A, 0x01, 0x7E, 0x08, 0x00, 0x00, 0x00, 0x00});                        // unknown type 0x7E
+    at({0xD7, 0x1A, 0x01, 0x06, 0x09, 0x00, 0x00, 0x12, 0x34});                        // POLL, bad CRC
     at(empty_frame(proto::MsgType::status_get, seq++));
     at(empty_frame(proto::MsgType::config_get, seq++));
 

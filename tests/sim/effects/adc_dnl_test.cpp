@@ -14,7 +14,8 @@ namespace {
 std::vector<double> histogram(const AdcDnl& dnl, std::size_t n, std::uint64_t seed) {
     std::vector<double> counts(AdcDnl::kCodeCount, 0.0);
     Rng rng(seed, 0);
-    for (std::size_t i = 0; i < n; ++i) counts[static_cast<std::size_t>(dnl.code_of(0.5 + 1022.0 * rng.uniform()))] += 1.0;
+    for (std::size_t i = 0; i < n; ++i)
+        counts[static_cast<std::size_t>(dnl.code_of(0.5 + 1022.0 * rng.uniform()))] += 1.0;
     return counts;
 }
 

@@ -1,8 +1,8 @@
 // E9 cross_axis: the accel output equals (I + S/100) a, checked against an Eigen matrix product.
 #include "sim/effects/cross_axis.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "effect_test_support.hpp"
 #include "sim/model/rng.hpp"

@@ -37,22 +37,26 @@ inline std::vector<std::vector<double>> run_added(Effect& effect, std::size_t n,
 // One non-default configuration per effect (also the examples of docs/effects.md).
 inline const std::map<std::string, std::string> kEffectExamples = {
     {"thermal_second_tc", "c3_dps = 0.2\nc3_g = [0.004, -0.003, 0.01]\nt2_s = 2400.0"},
-    {"ambient_cycle", "waveform = \"square\"\namplitude_k_pp = 1.5\nperiod_s = 1800.0\nlag_s = 400.0\n"
-                      "coupling_dps_per_k = 0.03\ncoupling_g_per_k = [0.001, 0.001, 0.002]"},
+    {"ambient_cycle",
+     "waveform = \"square\"\namplitude_k_pp = 1.5\nperiod_s = 1800.0\nlag_s = 400.0\n"
+     "coupling_dps_per_k = 0.03\ncoupling_g_per_k = [0.001, 0.001, 0.002]"},
     {"temp_scale_factor", "scale_pct_per_k = [0.03, 0.01, 0.01, 0.02]\nreference_degc = 25.0"},
     {"flicker", "b_dps = 0.03\nb_g = 0.0005\nf_low_hz = 0.0005\nf_high_hz = 1.0"},
     {"rate_random_walk", "k_dps_per_sqrt_s = 0.001\nk_g_per_sqrt_s = [2e-5, 2e-5, 3e-5]"},
     {"gauss_markov", "sigma_dps = 0.05\nsigma_g = 0.001\ntau_s = [300.0, 100.0, 100.0, 150.0]"},
     {"adc_dnl", "dnl_rms_lsb = 0.15\nmissing_codes = [511]\ncarry_bits = 8\ncarry_dnl_lsb = 0.4\npattern_seed = 7"},
     {"adc_inl", "a2_lsb = 0.8\na3_lsb = -0.3\na4_lsb = 0.1"},
-    {"supply_coupling", "sensor_ratiometric = [0.0, 1.0, 1.0, 1.0]\nripple_v = 0.01\nripple_hz = 100.0\n"
-                        "drift_v = -0.02\ndrift_tau_s = 900.0"},
+    {"supply_coupling",
+     "sensor_ratiometric = [0.0, 1.0, 1.0, 1.0]\nripple_v = 0.01\nripple_hz = 100.0\n"
+     "drift_v = -0.02\ndrift_tau_s = 900.0"},
     {"cross_axis", "matrix_pct = [[0.0, 1.2, -0.5], [0.8, 0.0, 2.0], [-1.0, 0.3, 0.0]]"},
     {"g_sensitivity", "g_dps_per_g = [0.05, 0.05, 0.1]\ng2_dps_per_g2 = [0.0, 0.0, 0.02]"},
-    {"vibration", "tone_hz = [29.0]\ntone_g_z = [0.01]\nrandom_rms_g = [0.002, 0.002, 0.004]\n"
-                  "band_low_hz = 10.0\nband_high_hz = 80.0"},
-    {"mains_alias", "amplitude_v = 0.002\nfrequency_hz = 50.0\nharmonic_ratio = [0.3, 0.1]\n"
-                    "mux_skew_s = [0.0, 0.0001, 0.0002, 0.0003]"},
+    {"vibration",
+     "tone_hz = [29.0]\ntone_g_z = [0.01]\nrandom_rms_g = [0.002, 0.002, 0.004]\n"
+     "band_low_hz = 10.0\nband_high_hz = 80.0"},
+    {"mains_alias",
+     "amplitude_v = 0.002\nfrequency_hz = 50.0\nharmonic_ratio = [0.3, 0.1]\n"
+     "mux_skew_s = [0.0, 0.0001, 0.0002, 0.0003]"},
     {"clock_jitter", "drift_ppm = 30.0\njitter_s = 2e-6"},
     {"saturation", "min_dps = -90.0\nmax_dps = 90.0\nmin_g = [-1.0, -1.0, 0.0]\nmax_g = [1.0, 1.0, 2.0]"},
     {"spikes", "rate_hz = 0.001\ndistribution = \"student_t\"\nscale_counts = 3.0\nstudent_dof = 3"},
@@ -110,8 +114,15 @@ inline Tone fit_tone(const std::vector<double>& y, const std::vector<double>& t_
     for (std::size_t k = 0; k < y.size(); ++k) {
         const double s = std::sin(2.0 * std::numbers::pi * f_hz * t_s[k]);
         const double c = std::cos(2.0 * std::numbers::pi * f_hz * t_s[k]);
-        ss += s * s; sc += s * c; cc += c * c; s1 += s; c1 += c; n += 1.0;
-        ys += y[k] * s; yc += y[k] * c; y1 += y[k];
+        ss += s * s;
+        sc += s * c;
+        cc += c * c;
+        s1 += s;
+        c1 += c;
+        n += 1.0;
+        ys += y[k] * s;
+        yc += y[k] * c;
+        y1 += y[k];
     }
     // Solve the 3x3 normal equations by Cramer's rule.
     const double a[3][3] = {{ss, sc, s1}, {sc, cc, c1}, {s1, c1, n}};

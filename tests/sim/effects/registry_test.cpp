@@ -2,8 +2,8 @@
 // and the expected unit.
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -89,8 +89,10 @@ TEST(EffectRegistry, OnlyAmbientCycleModelsTheTemperature) {
     for (const EffectInfo& info : list_effects()) {
         const auto e = make_effect(info.name);
         for (const double t : {0.0, 1.3, 600.0, 1e6}) {
-            if (info.name == "ambient_cycle") EXPECT_EQ(e->temperature_degc(t), 25.0) << t;
-            else EXPECT_TRUE(std::isnan(e->temperature_degc(t))) << info.name << " at " << t;
+            if (info.name == "ambient_cycle")
+                EXPECT_EQ(e->temperature_degc(t), 25.0) << t;
+            else
+                EXPECT_TRUE(std::isnan(e->temperature_degc(t))) << info.name << " at " << t;
         }
     }
 }
@@ -129,7 +131,7 @@ TEST(EffectRegistry, ParsedValuesReachTheParameterStruct) {
     const auto& p = dynamic_cast<const GaussMarkov&>(*e).params();
     EXPECT_EQ(p.sigma_dps, 0.05);
     EXPECT_EQ(p.sigma_g, (std::array<double, 3>{0.002, 0.002, 0.002}));  // a scalar broadcasts
-    EXPECT_EQ(p.tau_s, (ChannelValues{1.0, 2.0, 3.0, 4.5}));              // integers are accepted as numbers
+    EXPECT_EQ(p.tau_s, (ChannelValues{1.0, 2.0, 3.0, 4.5}));             // integers are accepted as numbers
     const auto v = test::effect_from("vibration", "tone_hz = [10.0, 20.0]\ntone_g_x = [0.1, 0.2]");
     EXPECT_EQ(dynamic_cast<const Vibration&>(*v).params().tone_g_x, (std::vector<double>{0.1, 0.2}));
 }
@@ -158,7 +160,8 @@ TEST(EffectRegistry, BadValuesNameTheKeyAndTheExpectedUnit) {
     EXPECT_NE(codes.find("missing_codes: expected an array of integers [counts] in [1, 1022]"), std::string::npos)
         << codes;
     const std::string table = error_of("adc_dnl", "transition_codes = [506, 507]\ntransition_counts = [505.2]");
-    EXPECT_NE(table.find("transition_counts: expected one value per entry of transition_codes"), std::string::npos) << table;
+    EXPECT_NE(table.find("transition_counts: expected one value per entry of transition_codes"), std::string::npos)
+        << table;
     const std::string far = error_of("adc_dnl", "transition_codes = [506]\ntransition_counts = [507.0]");
     EXPECT_NE(far.find("within 1 LSB of its ideal place"), std::string::npos) << far;
     const std::string band = error_of("flicker", "f_low_hz = 1.0\nf_high_hz = 0.1");
@@ -167,8 +170,9 @@ TEST(EffectRegistry, BadValuesNameTheKeyAndTheExpectedUnit) {
     EXPECT_NE(tones.find("tone_dps: expected 2 values"), std::string::npos) << tones;
     // Finite, but its run had ended in NaN at the converter input, reported as an internal error.
     const std::string huge = error_of("flicker", "b_dps = 1e308");
-    EXPECT_NE(huge.find("effects.flicker.b_dps: got 1e+308: beyond +-1e+100, where the simulation's arithmetic overflows"),
-              std::string::npos)
+    EXPECT_NE(
+        huge.find("effects.flicker.b_dps: got 1e+308: beyond +-1e+100, where the simulation's arithmetic overflows"),
+        std::string::npos)
         << huge;
     EXPECT_NE(error_of("vibration", "tone_hz = [1.0]\ntone_dps = [-2e100]").find("tone_dps: got -2e+100: beyond"),
               std::string::npos);

@@ -39,8 +39,9 @@ TEST(Spikes, GaussianAmplitudesHaveTheConfiguredScale) {
 }
 
 TEST(Spikes, StudentTAmplitudesHaveHeavierTailsThanGaussian) {
-    const auto e = test::effect_from("spikes", "rate_hz = 50.0\nscale_counts = 1.0\ndistribution = \"student_t\"\n"
-                                               "student_dof = 5");
+    const auto e = test::effect_from("spikes",
+                                     "rate_hz = 50.0\nscale_counts = 1.0\ndistribution = \"student_t\"\n"
+                                     "student_dof = 5");
     e->reset(12);
     const auto y = test::run_added(*e, 400'000, 0.01);
     std::vector<double> amps;

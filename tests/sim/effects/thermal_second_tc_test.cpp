@@ -39,7 +39,11 @@ TEST(ThermalSecondTc, RemainingGapDecaysWithSlopeMinusOneOverT2) {
         ChannelValues v{};
         e.apply(v, ctx);
         const double ly = std::log(1.0 - v[0]);
-        st += t; sy += ly; stt += t * t; sty += t * ly; n += 1;
+        st += t;
+        sy += ly;
+        stt += t * t;
+        sty += t * ly;
+        n += 1;
     }
     const double slope = (n * sty - st * sy) / (n * stt - st * st);
     EXPECT_NEAR(slope, -1.0 / 900.0, 1e-9);

@@ -4,8 +4,8 @@
 // of the simulator and of host/fit.
 #include <cmath>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "tests/sim/hil/hil_test_support.hpp"
 
@@ -16,8 +16,8 @@ using testing::preset;
 using testing::run_into_memory;
 
 struct Fit {
-    Eigen::Vector3d p;    // C1 [counts], C2 [counts], T [s]
-    Eigen::Vector3d se;   // standard errors
+    Eigen::Vector3d p;   // C1 [counts], C2 [counts], T [s]
+    Eigen::Vector3d se;  // standard errors
 };
 
 // eq. 1 residuals r = y - model and Jacobian of the model.

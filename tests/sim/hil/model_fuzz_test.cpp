@@ -16,18 +16,18 @@
 #include <string>
 #include <vector>
 
-#include "sim/sim_error.hpp"
 #include "sim/effects/effect.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/model/model_file.hpp"
+#include "sim/sim_error.hpp"
 
 namespace driftlab::sim {
 namespace {
 
 // Zero, signs, both ends of a double's range, the non-finite, integer-width edges, and the wrong types.
-const std::vector<std::string> kExtremes = {"0",     "-1",   "-0.0",  "0.5",    "1e-12",      "5e-324", "1e-308",
-                                            "1e9",   "1e100", "1e308", "-1e308", "nan",        "inf",    "-inf",
-                                            "65535", "65536", "4294967296",      "\"x\"",      "true",   "[]"};
+const std::vector<std::string> kExtremes = {"0",     "-1",    "-0.0",       "0.5",    "1e-12", "5e-324", "1e-308",
+                                            "1e9",   "1e100", "1e308",      "-1e308", "nan",   "inf",    "-inf",
+                                            "65535", "65536", "4294967296", "\"x\"",  "true",  "[]"};
 
 constexpr double kRunS = 10.0;
 
@@ -161,9 +161,7 @@ TEST(ModelFuzz, RandomModelsOfSeveralEffectsWithManyValuesChanged) {
     const std::vector<EffectInfo>& effects = list_effects();
     auto random_value = [&]() -> std::string {
         const double r = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
-        auto magnitude = [&] {
-            return std::pow(10.0, std::uniform_real_distribution<double>(-6.0, 6.0)(rng));
-        };
+        auto magnitude = [&] { return std::pow(10.0, std::uniform_real_distribution<double>(-6.0, 6.0)(rng)); };
         std::ostringstream v;
         v.precision(17);
         if (r < 0.2) return kExtremes[rng() % kExtremes.size()];

@@ -32,9 +32,9 @@ TEST(BaudTiming, BytesArriveTenBitTimesApartFromTheSendTime) {
 TEST(BaudTiming, APacketSentWhileTheLineIsBusyWaitsForIt) {
     LinkDirection d(1000.0, DirectionParams{}, 1, 0);  // 10 ms per byte
     const std::uint8_t a[3] = {1, 2, 3}, b[2] = {4, 5};
-    d.send(0.0, a);     // occupies the line until 30 ms
-    d.send(0.005, b);   // must wait: 40 ms and 50 ms
-    d.send(1.0, b);     // line idle again: 1.01 s and 1.02 s
+    d.send(0.0, a);    // occupies the line until 30 ms
+    d.send(0.005, b);  // must wait: 40 ms and 50 ms
+    d.send(1.0, b);    // line idle again: 1.01 s and 1.02 s
     const auto t = arrivals(d, 10.0);
     const double expected[] = {0.01, 0.02, 0.03, 0.04, 0.05, 1.01, 1.02};
     ASSERT_EQ(t.size(), 7u);

@@ -50,8 +50,10 @@ TEST(LinkDirection, CountsEveryDamagedPacketOnceWhateverDamagedIt) {
         d.send(i * 1e-3, frame);
         std::vector<std::uint8_t> out;
         d.deliver_until(i * 1e-3 + 1.0, out);
-        if (out == frame) ++delivered_intact;
-        else ++damaged;
+        if (out == frame)
+            ++delivered_intact;
+        else
+            ++damaged;
     }
     EXPECT_EQ(d.counters().packets_damaged, damaged);
     EXPECT_EQ(d.counters().packets_sent, delivered_intact + damaged);

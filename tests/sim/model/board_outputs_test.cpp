@@ -55,7 +55,8 @@ TEST(BoardOutputs, PolledRowsSlowerThanTheOutputsConvertAtTheOutputPeriod) {
     const Outputs out = simulate_outputs(m, req, 1);
     for (std::size_t k = 0; k < t.size(); ++k) {
         double mean = 0.0;
-        for (int j = 0; j < 25; ++j) mean += std::floor(800.0 * (1.0 - std::exp(-(t[k] - 0.04 * j) / 100.0)) + 100.0 + 0.5) / 25.0;
+        for (int j = 0; j < 25; ++j)
+            mean += std::floor(800.0 * (1.0 - std::exp(-(t[k] - 0.04 * j) / 100.0)) + 100.0 + 0.5) / 25.0;
         EXPECT_NEAR(out[0][k], mean, 1.0 / 256.0) << "row " << k;
     }
 }
@@ -151,8 +152,8 @@ TEST(BoardOutputs, SharedDriftAtTheConversionsGivesTheSameReplicate) {
     ASSERT_EQ((*drift)[0].size(), 8u + 4u * 399u);
     EXPECT_TRUE((*drift)[1].empty());
     const Drift eq1(m.base[0].drift);
-    EXPECT_EQ((*drift)[0][0], eq1.at_counts(1.0 - 7 * 0.25) - 512.0);      // the first output's oldest conversion
-    EXPECT_EQ((*drift)[0].back(), eq1.at_counts(400.0) - 512.0);           // the last output's newest
+    EXPECT_EQ((*drift)[0][0], eq1.at_counts(1.0 - 7 * 0.25) - 512.0);  // the first output's oldest conversion
+    EXPECT_EQ((*drift)[0].back(), eq1.at_counts(400.0) - 512.0);       // the last output's newest
     OutputRequest req;
     req.t_s = &t;
     req.channels = gyro;

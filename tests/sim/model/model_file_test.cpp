@@ -79,7 +79,8 @@ baud = 115200
 unit = "byte"
 p_good_to_bad = 0.01
 p_bad_to_good = 0.5
-)", "m.toml");
+)",
+                                   "m.toml");
     EXPECT_EQ(m.name, "x");
     EXPECT_EQ(m.channels[2].drift.tau_s, 12.5);
     EXPECT_EQ(m.channels[2].drift.c1_counts, 23.0);  // untouched key keeps the paper's value
@@ -114,17 +115,23 @@ TEST(ModelFile, OutOfRangeValuesNameTheKeyAndTheRange) {
     EXPECT_NE(error_of("[adc]\nbits = 2.5\n").find("adc.bits: expected an integer"), std::string::npos);
     // Checks that join keys name a line too.
     EXPECT_NE(error_of("[link.to_host.packet_loss]\np_good_to_bad = 0.1\np_bad_to_good = 0\n")
-                  .find("m.toml:3: link.to_host.packet_loss.p_bad_to_good: must be > 0 when p_good_to_bad > 0 (the link would never recover)"),
+                  .find("m.toml:3: link.to_host.packet_loss.p_bad_to_good: must be > 0 when p_good_to_bad > 0 (the "
+                        "link would never recover)"),
               std::string::npos);
     // The firmware, 10-bit, is all a model can run on: 12 bits had aborted the run at its first 4-digit code.
-    EXPECT_NE(error_of("[adc]\nbits = 12\n").find("m.toml:2: adc.bits: must be in [10, 10], got 12"), std::string::npos);
+    EXPECT_NE(error_of("[adc]\nbits = 12\n").find("m.toml:2: adc.bits: must be in [10, 10], got 12"),
+              std::string::npos);
     // The firmware's own check, fields joined: 64 conversions per 10 ms output is a conversion every 39 us.
     const std::string fast = error_of("[firmware]\noutput_period_ms = 10\nconversions_per_output = 64\n");
-    EXPECT_NE(fast.find("m.toml:3: firmware.conversions_per_output: the firmware refuses this configuration"), std::string::npos) << fast;
+    EXPECT_NE(fast.find("m.toml:3: firmware.conversions_per_output: the firmware refuses this configuration"),
+              std::string::npos)
+        << fast;
     // With the values it saw (10 000 us / 256 = 39 us, 10 ticks of 4 us), not only the rule.
-    EXPECT_NE(fast.find("output_period_ms 10 / (4 channels x conversions_per_output 64) gives a conversion period of 10 "
-                        "ticks of 4 us; the firmware needs 50 to 65535"),
-              std::string::npos) << fast;
+    EXPECT_NE(
+        fast.find("output_period_ms 10 / (4 channels x conversions_per_output 64) gives a conversion period of 10 "
+                  "ticks of 4 us; the firmware needs 50 to 65535"),
+        std::string::npos)
+        << fast;
 }
 
 // Each field the firmware refuses is named with its own range and value; the conversion-period rule had been given
@@ -138,12 +145,15 @@ TEST(ModelFile, TheFirmwaresRefusalSaysWhatTheFieldMustBe) {
         const auto r = firmware_refusal(fw);
         return r ? r->field + ": " + r->reason : std::string("accepted");
     };
-    EXPECT_NE(reason_for([](auto& fw) { fw.fit_order = 2; }).find("fit_order: the firmware refuses this configuration "
-                                                                  "(out_of_range): must be 0 to 1, got 2"),
+    EXPECT_NE(reason_for([](auto& fw) { fw.fit_order = 2; })
+                  .find("fit_order: the firmware refuses this configuration "
+                        "(out_of_range): must be 0 to 1, got 2"),
               std::string::npos);
-    EXPECT_NE(reason_for([](auto& fw) { fw.output_period_ms = 5; }).find("output_period_ms: ") , std::string::npos);
-    EXPECT_NE(reason_for([](auto& fw) { fw.output_period_ms = 5; }).find("must be 10 to 60000, got 5"), std::string::npos);
-    EXPECT_NE(reason_for([](auto& fw) { fw.conversions_per_output = 0; }).find("must be 1 to 64, got 0"), std::string::npos);
+    EXPECT_NE(reason_for([](auto& fw) { fw.output_period_ms = 5; }).find("output_period_ms: "), std::string::npos);
+    EXPECT_NE(reason_for([](auto& fw) { fw.output_period_ms = 5; }).find("must be 10 to 60000, got 5"),
+              std::string::npos);
+    EXPECT_NE(reason_for([](auto& fw) { fw.conversions_per_output = 0; }).find("must be 1 to 64, got 0"),
+              std::string::npos);
     EXPECT_NE(reason_for([](auto& fw) { fw.raw = 3; }).find("raw: "), std::string::npos);
 }
 
@@ -151,21 +161,28 @@ TEST(ModelFile, TheFirmwaresRefusalSaysWhatTheFieldMustBe) {
 // square root of a negative step); the paper's 1000 ms / 25 conversions is 40 ms a channel, so 4 ms is the most.
 TEST(ModelFile, ClockJitterThatWouldReorderConversionsOrStopTheClockIsRejected) {
     EXPECT_EQ(error_of("[effects.clock_jitter]\njitter_s = 0.004\n"), "no error");
-    const std::string jitter = error_of("[effects.gauss_markov]\nsigma_dps = 0.2\n\n[effects.clock_jitter]\njitter_s = 0.01\n");
-    EXPECT_NE(jitter.find("m.toml:5: effects.clock_jitter.jitter_s: 0.01 s is not well below a channel's conversion interval (0.04 s"),
-              std::string::npos) << jitter;
+    const std::string jitter =
+        error_of("[effects.gauss_markov]\nsigma_dps = 0.2\n\n[effects.clock_jitter]\njitter_s = 0.01\n");
+    EXPECT_NE(jitter.find("m.toml:5: effects.clock_jitter.jitter_s: 0.01 s is not well below a channel's conversion "
+                          "interval (0.04 s"),
+              std::string::npos)
+        << jitter;
     // The interval is the configuration that runs: 10 conversions an output leave 100 ms, room for 10 ms of jitter.
-    EXPECT_EQ(error_of("[effects.clock_jitter]\njitter_s = 0.01\n\n[firmware]\nconversions_per_output = 10\n"), "no error");
+    EXPECT_EQ(error_of("[effects.clock_jitter]\njitter_s = 0.01\n\n[firmware]\nconversions_per_output = 10\n"),
+              "no error");
     const std::string stopped = error_of("[effects.clock_jitter]\ndrift_ppm = -1e6\n");
-    EXPECT_NE(stopped.find("m.toml:2: effects.clock_jitter.drift_ppm: expected drift_ppm > -1e6"), std::string::npos) << stopped;
+    EXPECT_NE(stopped.find("m.toml:2: effects.clock_jitter.drift_ppm: expected drift_ppm > -1e6"), std::string::npos)
+        << stopped;
 }
 
 // Only ambient_cycle gives the chain a temperature: temp_scale_factor alone had loaded and done nothing.
 TEST(ModelFile, TempScaleFactorWithoutATemperatureIsRejected) {
     const std::string alone = error_of("[effects.temp_scale_factor]\nscale_pct_per_k = 0.1\n");
-    EXPECT_NE(alone.find("m.toml:1: effects.temp_scale_factor: needs the unit's temperature"), std::string::npos) << alone;
-    EXPECT_EQ(error_of("[effects.temp_scale_factor]\nscale_pct_per_k = 0.1\n[effects.ambient_cycle]\namplitude_k_pp = 2.0\n"),
-              "no error");
+    EXPECT_NE(alone.find("m.toml:1: effects.temp_scale_factor: needs the unit's temperature"), std::string::npos)
+        << alone;
+    EXPECT_EQ(
+        error_of("[effects.temp_scale_factor]\nscale_pct_per_k = 0.1\n[effects.ambient_cycle]\namplitude_k_pp = 2.0\n"),
+        "no error");
 }
 
 TEST(ModelFile, RawNoiseTooSmallToCalibrateIsRejected) {
@@ -182,12 +199,14 @@ TEST(ModelFile, RawNoiseTooSmallToCalibrateIsRejected) {
 // infinite gain, and the run's first conversion an internal error (NaN at the converter input, blamed on an effect).
 TEST(ModelFile, AFrontEndBeyondTheRangeOfADoubleIsRejected) {
     const std::string tiny_span = error_of("name = \"x\"\n[channels.accel_x]\nspan_g = 1e-308\n");
-    EXPECT_NE(tiny_span.find("m.toml:2: channels.accel_x: its front end leaves the range of a double: amplifier gain "
-                             "vref_v / 2 / (sensitivity_v_per_g x span_g) = inf V/V, converter input at input_g = nan V"),
-              std::string::npos)
+    EXPECT_NE(
+        tiny_span.find("m.toml:2: channels.accel_x: its front end leaves the range of a double: amplifier gain "
+                       "vref_v / 2 / (sensitivity_v_per_g x span_g) = inf V/V, converter input at input_g = nan V"),
+        std::string::npos)
         << tiny_span;
     // A gain that underflows to 0 would stick the channel at mid-scale whatever its input.
-    const std::string huge = error_of("[adc]\nvref_v = 1e-300\n[channels.gyro]\nsensitivity_v_per_dps = 1e100\nspan_dps = 1e100\n");
+    const std::string huge =
+        error_of("[adc]\nvref_v = 1e-300\n[channels.gyro]\nsensitivity_v_per_dps = 1e100\nspan_dps = 1e100\n");
     EXPECT_NE(huge.find("channels.gyro: its front end leaves the range of a double: amplifier gain vref_v / 2 / "
                         "(sensitivity_v_per_dps x span_dps) = 0 V/V"),
               std::string::npos)
@@ -197,7 +216,8 @@ TEST(ModelFile, AFrontEndBeyondTheRangeOfADoubleIsRejected) {
     EXPECT_NE(input.find("converter input at input_g = inf V"), std::string::npos) << input;
     // A number near the largest double is refused at its key, whatever the front end makes of it.
     const std::string c1 = error_of("[channels.gyro]\ndrift_c1_counts = -1e200\n");
-    EXPECT_NE(c1.find("m.toml:2: channels.gyro.drift_c1_counts: got -1e+200: beyond +-1e+100"), std::string::npos) << c1;
+    EXPECT_NE(c1.find("m.toml:2: channels.gyro.drift_c1_counts: got -1e+200: beyond +-1e+100"), std::string::npos)
+        << c1;
     // Extreme but representable front ends still load.
     EXPECT_NO_THROW(parse_model("[channels.gyro]\nspan_dps = 1e-6\nraw_noise_std_dps = 0\n", "m.toml"));
 }
@@ -207,9 +227,7 @@ TEST(ModelFile, SyntaxErrorNamesTheLine) {
     EXPECT_NE(e.find("m.toml:2"), std::string::npos) << e;
 }
 
-TEST(ModelFile, MissingFileIsAConfigError) {
-    EXPECT_THROW(load_model_file("/nonexistent/model.toml"), ModelFileError);
-}
+TEST(ModelFile, MissingFileIsAConfigError) { EXPECT_THROW(load_model_file("/nonexistent/model.toml"), ModelFileError); }
 
 // Every field of two models, so that a written file can be checked to read back as what was written.
 void expect_same(const SimModel& a, const SimModel& b, const std::string& what) {
@@ -236,7 +254,8 @@ void expect_same(const SimModel& a, const SimModel& b, const std::string& what) 
     }
     EXPECT_EQ(std::memcmp(&a.firmware, &b.firmware, sizeof a.firmware), 0);
     EXPECT_EQ(a.link.baud, b.link.baud);
-    for (const auto& [x, y] : {std::pair{a.link.to_host, b.link.to_host}, std::pair{a.link.to_firmware, b.link.to_firmware}}) {
+    for (const auto& [x, y] :
+         {std::pair{a.link.to_host, b.link.to_host}, std::pair{a.link.to_firmware, b.link.to_firmware}}) {
         EXPECT_EQ(x.latency_s, y.latency_s);
         EXPECT_EQ(x.byte_error_rate, y.byte_error_rate);
         EXPECT_EQ(x.byte_drop_rate, y.byte_drop_rate);
@@ -254,7 +273,8 @@ TEST(ModelFile, AWrittenModelReadsBackAsItself) {
     for (const auto& e : std::filesystem::directory_iterator(DRIFTLAB_MODELS_DIR)) {
         if (e.path().extension() != ".toml") continue;
         const SimModel m = load_model_file(e.path().string());
-        expect_same(parse_model(write_model(m, "from " + e.path().filename().string()), "written"), m, e.path().string());
+        expect_same(parse_model(write_model(m, "from " + e.path().filename().string()), "written"), m,
+                    e.path().string());
     }
     SimModel m = parse_model(R"(
 [[effects.gauss_markov]]
@@ -266,13 +286,19 @@ tau_s = [100.0, 100.0, 7.5, 100.0]
 [effects.spikes]
 rate_hz = 0.01
 scale_counts = 40.0
-)", "two.toml");
+)",
+                             "two.toml");
     ASSERT_EQ(m.effects.size(), 3u);
     m.name = "odd \"quoted\" name";
     m.adc = {10, 3.3};  // the only resolution a model takes; the reference is odd
     for (std::size_t i = 0; i < kChannelCount; ++i) {
         ChannelModel& ch = m.channels[i];
-        ch.front_end = {0.1 + 0.2 * static_cast<double>(i), 1.0 / 3.0, 7.0 / 9.0, -1e-7, };
+        ch.front_end = {
+            0.1 + 0.2 * static_cast<double>(i),
+            1.0 / 3.0,
+            7.0 / 9.0,
+            -1e-7,
+        };
         ch.input_unit = std::nextafter(1.0, 2.0);
         ch.raw_noise_std_unit = 0.2 / 3.0;
         ch.drift = {std::sqrt(2.0), 511.0 + 1.0 / 7.0, 1234.5678901234567};
@@ -287,7 +313,8 @@ scale_counts = 40.0
 }
 
 TEST(ModelFile, AnEffectsArrayOfTablesIsOneInstanceEachAndABadOneIsNamed) {
-    const std::string e = error_of("[[effects.gauss_markov]]\nsigma_dps = 0.1\n[[effects.gauss_markov]]\nsigma_dps = -1.0\n");
+    const std::string e =
+        error_of("[[effects.gauss_markov]]\nsigma_dps = 0.1\n[[effects.gauss_markov]]\nsigma_dps = -1.0\n");
     EXPECT_NE(e.find("effects.gauss_markov[1]"), std::string::npos) << e;
 }
 

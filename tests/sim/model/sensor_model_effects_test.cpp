@@ -120,7 +120,8 @@ TEST(SensorModelEffects, TempScaleFactorFollowsTheAmbientCyclesTemperature) {
     const std::string cycle = "[effects.ambient_cycle]\namplitude_k_pp = 20.0\nperiod_s = 100.0\nlag_s = 0.0\n";
     // Same seed: the noise cancels in the difference.
     SensorModel plain(model_with(cycle), kSeed);
-    SensorModel scaled(model_with(cycle + "[effects.temp_scale_factor]\nscale_pct_per_k = [0.0, 0.0, 0.0, 1.0]\n"), kSeed);
+    SensorModel scaled(model_with(cycle + "[effects.temp_scale_factor]\nscale_pct_per_k = [0.0, 0.0, 0.0, 1.0]\n"),
+                       kSeed);
     const double per_g = plain.counts_per_unit(Channel::accel_z);
     for (const double t : {10.0, 30.0, 60.0, 80.0}) {
         const double kelvin_from_reference = t < 50.0 ? 10.0 : -10.0;

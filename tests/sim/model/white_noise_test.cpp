@@ -28,7 +28,8 @@ TEST(WhiteNoise, AnalogSigmaRemovesTheQuantisationVariance) {
     EXPECT_NEAR(analog_sigma_for_raw_std_counts(1.0), std::sqrt(1.0 - 1.0 / 12.0), 1e-15);
     EXPECT_EQ(analog_sigma_for_raw_std_counts(0.0), 0.0);
     // The inverse, for a model file written from a calibrated sigma: back and forth lands where it started.
-    for (double raw : {0.5, 1.0, 1.0625, 7.3}) EXPECT_NEAR(raw_std_counts_for_analog_sigma(analog_sigma_for_raw_std_counts(raw)), raw, 1e-14);
+    for (double raw : {0.5, 1.0, 1.0625, 7.3})
+        EXPECT_NEAR(raw_std_counts_for_analog_sigma(analog_sigma_for_raw_std_counts(raw)), raw, 1e-14);
     EXPECT_EQ(raw_std_counts_for_analog_sigma(0.0), 0.0);
 }
 

@@ -18,28 +18,28 @@ namespace proto {
 
 /// VERSION (0x02, fw->host): what the firmware is and how it samples. Sent in answer to HELLO.
 struct VersionPayload {
-  uint8_t proto_version;                ///< kProtocolVersion of the firmware
-  uint8_t fw_major;                     ///< firmware version, semantic
+  uint8_t proto_version;  ///< kProtocolVersion of the firmware
+  uint8_t fw_major;       ///< firmware version, semantic
   uint8_t fw_minor;
   uint8_t fw_patch;
-  uint8_t board_id;                     ///< board variant (docs/hardware.md)
-  uint8_t adc_bits;                     ///< converter resolution [bits]
-  uint16_t vref_mv;                     ///< converter reference [mV]
-  uint32_t tick_hz;                     ///< firmware tick rate [Hz]; 250000 on the ATmega328P
-  uint8_t channel_count;                ///< channels sampled (kChannelCount)
-  uint8_t adc_pin[kChannelCount];       ///< ADC multiplexer input of gyro, accel_x, accel_y, accel_z
-  uint8_t reset_cause;                  ///< MCUSR bits of the last reset
-  uint16_t assert_line;                 ///< source line of the assertion that caused the last reset, 0 = none
+  uint8_t board_id;                ///< board variant (docs/hardware.md)
+  uint8_t adc_bits;                ///< converter resolution [bits]
+  uint16_t vref_mv;                ///< converter reference [mV]
+  uint32_t tick_hz;                ///< firmware tick rate [Hz]; 250000 on the ATmega328P
+  uint8_t channel_count;           ///< channels sampled (kChannelCount)
+  uint8_t adc_pin[kChannelCount];  ///< ADC multiplexer input of gyro, accel_x, accel_y, accel_z
+  uint8_t reset_cause;             ///< MCUSR bits of the last reset
+  uint16_t assert_line;            ///< source line of the assertion that caused the last reset, 0 = none
 };
 
 /// CONFIG_SET (0x04, host->fw) and CONFIG (0x05, fw->host): sampling and output configuration.
 struct ConfigPayload {
-  uint16_t output_period_ms;      ///< time between outputs [ms], kOutputPeriodMinMs..kOutputPeriodMaxMs
-  uint8_t conversions_per_output; ///< ADC conversions per channel per output, 1..64
-  uint8_t window;                 ///< N of the sliding least-squares fit [conversions], 1..64
-  uint8_t fit_order;              ///< 0 = mean, 1 = line (estimate at the newest conversion)
-  uint8_t mode;                   ///< OutputMode
-  uint8_t raw;                    ///< 1 = also send RAW after each SAMPLE
+  uint16_t output_period_ms;       ///< time between outputs [ms], kOutputPeriodMinMs..kOutputPeriodMaxMs
+  uint8_t conversions_per_output;  ///< ADC conversions per channel per output, 1..64
+  uint8_t window;                  ///< N of the sliding least-squares fit [conversions], 1..64
+  uint8_t fit_order;               ///< 0 = mean, 1 = line (estimate at the newest conversion)
+  uint8_t mode;                    ///< OutputMode
+  uint8_t raw;                     ///< 1 = also send RAW after each SAMPLE
 };
 
 /// SAMPLE (0x07, fw->host): the smoothed value of every channel.
@@ -53,33 +53,33 @@ struct ConfigPayload {
 /// first conversion or right after an ACKed CONFIG_SET emptied the windows gets 0 on every channel with the last
 /// `tick` seen; only n_window tells it from a real estimate (the firmware does not NAK such a POLL).
 struct SamplePayload {
-  uint32_t tick;                   ///< trigger tick of the newest conversion of any channel [ticks]
-  int32_t value_q8[kChannelCount]; ///< least-squares fit of each channel at that channel's own newest conversion,
-                                   ///< not at `tick` (above) [counts, Q8 = 1/256 count], Channel order
-  uint8_t sat_flags;               ///< bit c: channel c saw code 0 or 1023 inside its window
-  uint8_t n_window;                ///< conversions in the least filled window now [conversions]; < window at start,
-                                   ///< 0 = a window is empty, its value is 0 and no reading
-  uint16_t dropped;                ///< conversions lost since boot, saturating [conversions]
+  uint32_t tick;                    ///< trigger tick of the newest conversion of any channel [ticks]
+  int32_t value_q8[kChannelCount];  ///< least-squares fit of each channel at that channel's own newest conversion,
+                                    ///< not at `tick` (above) [counts, Q8 = 1/256 count], Channel order
+  uint8_t sat_flags;                ///< bit c: channel c saw code 0 or 1023 inside its window
+  uint8_t n_window;                 ///< conversions in the least filled window now [conversions]; < window at start,
+                                    ///< 0 = a window is empty, its value is 0 and no reading
+  uint16_t dropped;                 ///< conversions lost since boot, saturating [conversions]
 };
 
 /// RAW (0x08, fw->host): the newest raw code of every channel.
 struct RawPayload {
-  uint32_t tick;                ///< time of the newest conversion [ticks]
-  uint16_t code[kChannelCount]; ///< ADC code [counts], Channel order
+  uint32_t tick;                 ///< time of the newest conversion [ticks]
+  uint16_t code[kChannelCount];  ///< ADC code [counts], Channel order
 };
 
 /// ACK (0x09, fw->host): a request was accepted (and applied).
 struct AckPayload {
-  uint8_t acked_type; ///< MsgType id of the request
-  uint16_t acked_seq; ///< seq of the request frame
+  uint8_t acked_type;  ///< MsgType id of the request
+  uint16_t acked_seq;  ///< seq of the request frame
 };
 
 /// NAK (0x0A, fw->host): a request was refused and nothing changed.
 struct NakPayload {
-  uint8_t nacked_type; ///< MsgType id of the request (as received, may be unknown)
-  uint16_t nacked_seq; ///< seq of the request frame
-  uint8_t status;      ///< Status number (status.hpp)
-  uint8_t field;       ///< index of the offending field in the payload's field list, kNakFieldNone = n/a
+  uint8_t nacked_type;  ///< MsgType id of the request (as received, may be unknown)
+  uint16_t nacked_seq;  ///< seq of the request frame
+  uint8_t status;       ///< Status number (status.hpp)
+  uint8_t field;        ///< index of the offending field in the payload's field list, kNakFieldNone = n/a
 };
 
 /// STATUS (0x0C, fw->host): firmware health counters, all saturating. There is no counter for the decoder's

@@ -24,15 +24,15 @@ namespace driftlab::receiver {
 
 /// One row of the canonical log as a board's frames give it.
 struct Row {
-    double t_s = 0.0;                                      ///< unwrapped tick / tick_hz [s since power-on]
-    std::uint64_t seq = 0;                                 ///< the SAMPLE frame's unwrapped seq
-    std::uint64_t tick = 0;                                ///< newest conversion's unwrapped tick [ticks]
-    std::array<double, kChannelCount> value_counts{};      ///< least-squares estimate, q8_to_counts [counts]
-    bool has_raw = false;                                  ///< raw mode: raw_counts holds the RAW frame's codes
-    std::array<std::uint16_t, kChannelCount> raw_counts{}; ///< newest raw codes [counts]
-    std::uint8_t sat_flags = 0;                            ///< bit c: channel c saturated inside its window
-    std::uint8_t n_window = 0;                             ///< conversions in the window [conversions]
-    std::uint16_t dropped = 0;                             ///< conversions the firmware lost since boot
+    double t_s = 0.0;                                       ///< unwrapped tick / tick_hz [s since power-on]
+    std::uint64_t seq = 0;                                  ///< the SAMPLE frame's unwrapped seq
+    std::uint64_t tick = 0;                                 ///< newest conversion's unwrapped tick [ticks]
+    std::array<double, kChannelCount> value_counts{};       ///< least-squares estimate, q8_to_counts [counts]
+    bool has_raw = false;                                   ///< raw mode: raw_counts holds the RAW frame's codes
+    std::array<std::uint16_t, kChannelCount> raw_counts{};  ///< newest raw codes [counts]
+    std::uint8_t sat_flags = 0;                             ///< bit c: channel c saturated inside its window
+    std::uint8_t n_window = 0;                              ///< conversions in the window [conversions]
+    std::uint16_t dropped = 0;                              ///< conversions the firmware lost since boot
 };
 
 /// What becomes of a raw-mode SAMPLE whose RAW frame was lost.
@@ -79,8 +79,8 @@ private:
 
     RowOptions options_;
     Sink sink_;
-    std::optional<Row> waiting_;            // raw mode: a SAMPLE waiting for its RAW
-    std::uint32_t waiting_tick32_ = 0;      // its tick as the frames carry it
+    std::optional<Row> waiting_;        // raw mode: a SAMPLE waiting for its RAW
+    std::uint32_t waiting_tick32_ = 0;  // its tick as the frames carry it
     std::optional<double> last_t_s_;
     RowCounts counts_;
 };

@@ -57,8 +57,8 @@ inline std::optional<std::uint64_t> ticks_run_on(std::uint32_t last, std::uint32
                                                  double tolerance) {
     constexpr double kWrap = 4294967296.0;
     const double forward = static_cast<double>(static_cast<std::uint32_t>(uptime - last));
-    const double wraps = elapsed > forward ? static_cast<double>(static_cast<std::uint64_t>((elapsed - forward) / kWrap + 0.5))
-                                     : 0.0;
+    const double wraps =
+        elapsed > forward ? static_cast<double>(static_cast<std::uint64_t>((elapsed - forward) / kWrap + 0.5)) : 0.0;
     const double run_on = forward + wraps * kWrap;
     if (!(run_on - elapsed <= tolerance && elapsed - run_on <= tolerance)) return std::nullopt;
     return static_cast<std::uint64_t>(run_on);
