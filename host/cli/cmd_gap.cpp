@@ -268,8 +268,8 @@ void print_text(const gap::GapResult& r, const gap::GapOptions& options, const L
 std::string rows_used(const GapCommandOptions& o, const LogData& log) {
     if (!o.windowed() && log.cuts.empty()) return "";
     char text[80];
-    std::snprintf(text, sizeof text, " (rows from %g s to %g s", log.t_s.front(),
-                  log.t_s.back());  // rows remain, or it was refused
+    // Rows remain, or it was refused
+    std::snprintf(text, sizeof text, " (rows from %g s to %g s", log.t_s.front(), log.t_s.back());
     std::string out = text;
     for (std::size_t i = 0; i < log.cuts.size(); ++i) {
         std::snprintf(text, sizeof text, "%s%g s to %g s", i == 0 ? ", without " : " and ", log.cuts[i].from_s,
@@ -297,8 +297,8 @@ void run(const GapCommandOptions& o) {
         }
     const auto [log, unit, notes] = load(o);
     for (const std::string& note : notes) print_note(note, o.json);
-    print_note(dropped_cut_line_note(log),
-               o.json);  // only when the rows analysed reach it: --to before it loses nothing
+    // Only when the rows analysed reach it: --to before it loses nothing
+    print_note(dropped_cut_line_note(log), o.json);
     if (!o.report_dir.empty()) make_output_folder(o.report_dir, "report");  // at once, not after the diagnosis
     if (!o.model_out.empty()) {
         check_output_file(o.model_out, "model file");

@@ -20,8 +20,8 @@ struct AllanRequest {
     std::vector<stats::Deviation> deviations = {
         stats::Deviation::oadev};  ///< oadev is always evaluated (the terms need it)
     bool remove_drift = true;      ///< fit eq. 1 and also analyse the residual (rate input only)
-    std::string kept_drift_status =
-        "not requested";   ///< drift_not_fitted when remove_drift is false: the caller's reason
+    /// drift_not_fitted when remove_drift is false: the caller's reason
+    std::string kept_drift_status = "not requested";
     FitOptions drift_fit;  ///< the eq. 1 fit's options
     double confidence = stats::kOneSigmaConfidence;
 };

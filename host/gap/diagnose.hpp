@@ -109,10 +109,10 @@ struct GapResult {
     /// No cell located, yet the held-out gap score exceeds its bound: many cells a little off, none alone beyond
     /// the family-wise threshold. The verdict stays "none" unless the search (diffuse_searched) accepts an effect.
     bool diffuse_gap = false;
-    bool diffuse_searched =
-        false;            ///< the candidates were tried on the diffuse gap (--search-diffuse, not --locate-only)
-    std::string verdict;  ///< an effect name, "none" or "unexplained" (also when a level step remains)
-    TimingCheck timing;   ///< without the joins of left_out
+    /// The candidates were tried on the diffuse gap (--search-diffuse, not --locate-only)
+    bool diffuse_searched = false;
+    std::string verdict;           ///< an effect name, "none" or "unexplained" (also when a level step remains)
+    TimingCheck timing;            ///< without the joins of left_out
     std::vector<LogCut> left_out;  ///< stretches the user left out of the log (LogData::cuts)
 };
 

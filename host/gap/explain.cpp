@@ -80,7 +80,7 @@ void match_channel_noise(GapModel& m, const Judge& judge, std::uint64_t seed) {
 }
 
 // An accepted effect of this channel that is fitted again beside each new candidate.
-struct Earlier {
+struct AcceptedProcess {
     std::size_t accepted_index;  ///< into ExplainResult::accepted
     std::size_t slot;            ///< into GapModel::effects
     std::string effect;
@@ -152,18 +152,19 @@ PartPeriodogram residual_periodogram(const GapModel& m, const Judge& judge, cons
 
 // Whittle fit on `p` of the earlier spectral effects plus `extra` ("" = none); writes the refitted parameters into
 // `m` (earlier slots in place, `extra` appended) and, when `refits` is not null, lists the earlier ones there.
-SpectralFit fit_noise(GapModel& m, const Judge& judge, const PartPeriodogram& p, const std::vector<Earlier>& earlier,
-                      const std::string& extra, std::vector<std::pair<std::size_t, std::vector<double>>>* refits) {
+SpectralFit fit_noise(GapModel& m, const Judge& judge, const PartPeriodogram& p,
+                      const std::vector<AcceptedProcess>& earlier, const std::string& extra,
+                      std::vector<std::pair<std::size_t, std::vector<double>>>* refits) {
     std::vector<std::string> effects;
     std::vector<double> known;
-    for (const Earlier& e : earlier) {
+    for (const AcceptedProcess& e : earlier) {
         effects.push_back(e.effect);
         known.insert(known.end(), e.params.begin(), e.params.end());
     }
     if (!extra.empty()) effects.push_back(extra);
     const SpectralFit fit = fit_spectral(effects, judge.channel, m, p, known);
     std::size_t k = 0;
-    for (const Earlier& e : earlier) {
+    for (const AcceptedProcess& e : earlier) {
         const std::vector<double> q(fit.params.begin() + static_cast<std::ptrdiff_t>(k),
                                     fit.params.begin() + static_cast<std::ptrdiff_t>(k + e.params.size()));
         m.effects[e.slot] = make_candidate_effect(e.effect, judge.channel, q, m);
@@ -318,7 +319,7 @@ Explanation judge_candidate(const std::string& effect, const Fitted& fitted, con
 // whole log) against the current model's (`base_nll`, `base_parameters`): the gain, the parameters added and the
 // per-frequency terms.
 void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& judge,
-                       const std::vector<Earlier>& earlier, double base_nll, int base_parameters) {
+                       const std::vector<AcceptedProcess>& earlier, double base_nll, int base_parameters) {
     const std::vector<bool> all(judge.t_s.size(), true);
     const bool shape = candidate(ex.effect).route == FitRoute::deterministic;
     GapModel m = shape ? fit_deterministic(ex.effect, current, judge, all).model : current;
@@ -345,11 +346,11 @@ void spectral_evidence(Explanation& ex, const GapModel& current, const Judge& ju
 
 // The level-step test of the model with Gaussian-process candidate `spectral`: its Gaussian processes on this
 // channel (the earlier ones and the candidate, with their parameters) whiten the residual.
-LevelStep step_test(const GapModel& m, const Judge& judge, const std::vector<Earlier>& earlier,
+LevelStep step_test(const GapModel& m, const Judge& judge, const std::vector<AcceptedProcess>& earlier,
                     const std::string& spectral, const std::vector<double>& params, const ExplainOptions& options) {
     std::vector<std::string> effects;
     std::vector<double> known;
-    for (const Earlier& e : earlier)
+    for (const AcceptedProcess& e : earlier)
         effects.push_back(e.effect), known.insert(known.end(), e.params.begin(), e.params.end());
     effects.push_back(spectral);
     known.insert(known.end(), params.begin(), params.end());
@@ -426,23 +427,23 @@ Choice choose(const std::vector<const Explanation*>& passing, InformationCriteri
 
 namespace {
 
-struct Option {
+struct CandidateOutcome {
     Explanation ex;
     GapModel model;
     std::vector<std::pair<std::size_t, std::vector<double>>> refits;
 };
 
 // The stepwise search's state after some steps.
-struct Path {
+struct SearchPath {
     ExplainResult result;
     std::array<std::vector<std::string>, kChannelCount> used;  ///< effects added per channel
     std::array<bool, kChannelCount> open;                      ///< channels still searched
 };
 
 // A channel's choice at one step and, when that is a Gaussian process, the best accepted mean shape beside it.
-struct Chosen {
-    Option best;
-    std::optional<Option> shape;
+struct ChannelChoice {
+    CandidateOutcome best;
+    std::optional<CandidateOutcome> shape;
 };
 
 struct Search {
@@ -457,8 +458,8 @@ struct Search {
     std::vector<bool> everywhere;
 
     // The Gaussian processes accepted on channel `i`, with their parameters and model slots.
-    std::vector<Earlier> processes(const ExplainResult& r, std::size_t i) const {
-        std::vector<Earlier> out;
+    std::vector<AcceptedProcess> processes(const ExplainResult& r, std::size_t i) const {
+        std::vector<AcceptedProcess> out;
         for (std::size_t k = 0; k < r.accepted.size(); ++k) {
             const Explanation& e = r.accepted[k];
             if (e.channel != kChannelNames[i] || candidate(e.effect).route != FitRoute::spectral) continue;
@@ -501,8 +502,8 @@ struct Search {
     }
 
     // Every open channel's candidates fitted and judged beside the path's model; tried fits are added to the path.
-    std::vector<Chosen> step(Path& path, int step) const {
-        std::vector<Chosen> chosen;
+    std::vector<ChannelChoice> step(SearchPath& path, int step) const {
+        std::vector<ChannelChoice> chosen;
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             if (!path.open[i]) continue;
             const Channel c = static_cast<Channel>(i);
@@ -521,7 +522,7 @@ struct Search {
             }
             // Gaussian processes accepted earlier on this channel are fitted again beside each new candidate:
             // one sized alone may have swallowed what the candidate explains (a broad flicker covers a sinusoid).
-            const std::vector<Earlier> earlier = processes(path.result, i);
+            const std::vector<AcceptedProcess> earlier = processes(path.result, i);
             const bool shaped =
                 std::any_of(path.result.accepted.begin(), path.result.accepted.end(), [&](const Explanation& e) {
                     return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
@@ -539,7 +540,7 @@ struct Search {
             }
             // The candidates' fits are independent and mostly serial (the spectral fits): they run side by side, and
             // keep the list's order, so that the result does not depend on which finishes first.
-            std::vector<std::optional<Option>> slots(to_try.size());
+            std::vector<std::optional<CandidateOutcome>> slots(to_try.size());
             std::mutex progress_mutex;
             parallel_for(to_try.size(), options.threads, [&](std::size_t n) {
                 const std::string& effect = to_try[n];
@@ -549,7 +550,7 @@ struct Search {
                 }
                 const FitRoute route = candidate(effect).route;
                 // A process the base holds on this channel (not yet replaced on this path: the name is then in `used`)
-                // is fitted in place of the model file's: the model it is judged against lacks that one here.
+                // is fitted in place of the model file's: the model it is judged against lacks that one outcomes.
                 const bool replaces = route == FitRoute::spectral && holds(options.given, effect, c);
                 const std::optional<GapModel> replaced =
                     replaces ? std::optional<GapModel>(without_held(path.result.model, *options.given, effect, c))
@@ -589,46 +590,46 @@ struct Search {
                 if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
                     ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
                 ex.step = step;
-                slots[n] = Option{ex, fitted.model, std::move(fitted.refits)};
+                slots[n] = CandidateOutcome{ex, fitted.model, std::move(fitted.refits)};
             });
-            std::vector<Option> here;
+            std::vector<CandidateOutcome> outcomes;  // this channel's candidates fitted at this step
             for (auto& o : slots)
-                if (o) here.push_back(std::move(*o));
+                if (o) outcomes.push_back(std::move(*o));
             std::vector<const Explanation*> passing;
-            for (const auto& o : here)
+            for (const auto& o : outcomes)
                 if (o.ex.accepted) passing.push_back(&o.ex);
             const Choice choice = choose(passing, options.information_criterion);
-            std::size_t best_index = here.size();
-            for (std::size_t k = 0; k < here.size(); ++k)
-                if (&here[k].ex == choice.best) best_index = k;
+            std::size_t best_index = outcomes.size();
+            for (std::size_t k = 0; k < outcomes.size(); ++k)
+                if (&outcomes[k].ex == choice.best) best_index = k;
             if (choice.best && choice.runner_up &&
                 close_call(*choice.best, *choice.runner_up, options.ambiguity_z, options.information_criterion)) {
-                Explanation& b = here[best_index].ex;
+                Explanation& b = outcomes[best_index].ex;
                 b.ambiguous_with = choice.runner_up->effect;
                 b.settle += "; vs " + choice.runner_up->effect + ": " + choice.runner_up->settle;
             }
-            for (const auto& o : here) path.result.tried.push_back(o.ex);
-            if (best_index == here.size()) {
-                path.open[i] =
-                    false;  // nothing passed, and the later steps change other channels only: the same fits again
+            for (const auto& o : outcomes) path.result.tried.push_back(o.ex);
+            if (best_index == outcomes.size()) {
+                // Nothing passed, and the later steps change other channels only: they would make the same fits again.
+                path.open[i] = false;
                 continue;
             }
             // A process chosen over an accepted mean shape may have taken the shape's signal with the rest: the shape's
             // path is followed too (run()). A shape that two level steps beat is no explanation to follow.
-            const Option* shape = nullptr;
-            if (candidate(here[best_index].ex.effect).route == FitRoute::spectral)
-                for (const auto& o : here)
+            const CandidateOutcome* shape = nullptr;
+            if (candidate(outcomes[best_index].ex.effect).route == FitRoute::spectral)
+                for (const auto& o : outcomes)
                     if (o.ex.accepted && candidate(o.ex.effect).route == FitRoute::deterministic &&
                         !o.ex.shape_steps.steps_win &&
                         (!shape || delta_ic(o.ex, options.information_criterion) >
                                        delta_ic(shape->ex, options.information_criterion)))
                         shape = &o;
-            chosen.push_back({here[best_index], shape ? std::optional<Option>(*shape) : std::nullopt});
+            chosen.push_back({outcomes[best_index], shape ? std::optional<CandidateOutcome>(*shape) : std::nullopt});
         }
         return chosen;
     }
 
-    static Path with(Path path, const Option& o) {
+    static SearchPath with(SearchPath path, const CandidateOutcome& o) {
         path.result.model = o.model;
         for (const auto& [k, params] : o.refits)
             for (std::size_t p = 0; p < params.size(); ++p) path.result.accepted[k].params[p].second = params[p];
@@ -643,7 +644,7 @@ struct Search {
     double criterion(const ExplainResult& r, std::size_t i) const {
         const Judge judge{t_s,        *y[i],        static_cast<Channel>(i), battery, {},           {}, {}, 0.0,
                           everywhere, options.seed, options.threads,         nullptr, options.alpha};
-        const std::vector<Earlier> earlier = processes(r, i);
+        const std::vector<AcceptedProcess> earlier = processes(r, i);
         int shape_parameters = 0;
         for (const Explanation& e : r.accepted)
             if (e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic)
@@ -665,13 +666,13 @@ struct Search {
         GapModel& m = r.whole_log_model;
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             const Channel c = static_cast<Channel>(i);
-            bool here = false, noise = false;
+            bool outcomes = false, noise = false;
             for (std::size_t k = from; k < r.accepted.size(); ++k)
                 if (r.accepted[k].channel == kChannelNames[i]) {
-                    here = true;
+                    outcomes = true;
                     noise = noise || candidate(r.accepted[k].effect).route == FitRoute::spectral;
                 }
-            if (!here) continue;
+            if (!outcomes) continue;
             const Judge judge = judge_for(i, everywhere);
             const auto record = [&](Explanation& e, const std::vector<double>& q) {
                 e.whole_log_params = e.params;
@@ -700,13 +701,14 @@ struct Search {
     // Steps from `step` on. Across channels the choice with the largest held-out likelihood gain is added; where a
     // process was chosen over an accepted mean shape of its channel, the path with the shape instead is searched
     // as well and the one whose final model has the lower criterion on that channel is kept.
-    ExplainResult run(Path path, int step) const {
+    ExplainResult run(SearchPath path, int step) const {
         if (step > options.max_effects) return std::move(path.result);
-        std::vector<Chosen> chosen = this->step(path, step);
+        std::vector<ChannelChoice> chosen = this->step(path, step);
         if (chosen.empty()) return std::move(path.result);
-        const auto best = std::max_element(chosen.begin(), chosen.end(), [](const Chosen& a, const Chosen& b) {
-            return a.best.ex.heldout_loss_gain < b.best.ex.heldout_loss_gain;
-        });
+        const auto best =
+            std::max_element(chosen.begin(), chosen.end(), [](const ChannelChoice& a, const ChannelChoice& b) {
+                return a.best.ex.heldout_loss_gain < b.best.ex.heldout_loss_gain;
+            });
         ExplainResult process_first = run(with(path, best->best), step + 1);
         if (!best->shape) return process_first;
         ExplainResult shape_first = run(with(path, *best->shape), step + 1);
@@ -802,7 +804,7 @@ ExplainResult explain(const GapModel& base, const std::vector<double>& t_s,
                   std::vector<bool>(t_s.size(), true)};
     if (search.names.empty())
         for (const auto& info : candidate_list()) search.names.push_back(info.effect);
-    Path start{{}, {}, channels};
+    SearchPath start{{}, {}, channels};
     start.result.model = base;
     if (options.given) {
         start.result.accepted = options.given->refitted;

@@ -34,8 +34,8 @@ struct ExplainOptions {
     /// Family-wise level of the cells a candidate leaves located, and of the held-out bound a step is marked
     /// against (Explanation::heldout_bound); diagnose() sets it from GapOptions::alpha.
     double alpha = 0.05;
-    InformationCriterion information_criterion =
-        InformationCriterion::aic;  ///< choice among Gaussian candidates (tuned)
+    /// Choice among Gaussian candidates (tuned)
+    InformationCriterion information_criterion = InformationCriterion::aic;
     /// Where a Gaussian process is chosen over an accepted mean shape, the path that takes the shape instead is
     /// searched too, and kept when its final model's spectral criterion is lower by more than this (2 x nll units).
     /// On single-process logs of tuning seeds it won by more in 2 of 240 (docs/gap.md §Choice).

@@ -21,8 +21,8 @@ void make_folder_of(const std::string& path, const std::string& what) {
 NewFolders::~NewFolders() {
     for (auto it = made_.rbegin(); it != made_.rend(); ++it) {
         std::error_code ec;
-        std::filesystem::remove(*it,
-                                ec);  // a folder is removed only when empty: what is in it stays, and so do its parents
+        // A folder is removed only when empty: what is in it stays, and so do its parents
+        std::filesystem::remove(*it, ec);
     }
 }
 

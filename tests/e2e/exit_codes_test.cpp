@@ -252,8 +252,8 @@ TEST(ExitCodes, FlashFromACopiedBinaryNamesHexInsteadOfADerivedPath) {
     std::filesystem::create_directories(dir.file("x"));
     const std::string copy = dir.file("x/driftlab");
     std::error_code ec;
-    std::filesystem::create_hard_link(DRIFTLAB_BIN, copy,
-                                      ec);  // the binary is large; a link where the file system allows
+    // The binary is large; a link where the file system allows
+    std::filesystem::create_hard_link(DRIFTLAB_BIN, copy, ec);
     if (ec) std::filesystem::copy_file(DRIFTLAB_BIN, copy);
     const std::string out = dir.file("flash.out");
     const RunResult r = wait_child(spawn_program(copy, {"flash", "--port", "/dev/null", "--dry-run"}, out), out);

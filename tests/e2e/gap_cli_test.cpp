@@ -915,8 +915,8 @@ TEST(GapEvalCli, CleanOnlyWithoutACountStillDiagnosesCleanLogs) {
     const RunResult r =
         run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "11..13", "--json"}, dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_EQ(nlohmann::json::parse(r.output.substr(r.output.find('{')))["false_positive"]["clean"],
-              3);  // 3 seeds x 1 size
+    // 3 seeds x 1 size
+    EXPECT_EQ(nlohmann::json::parse(r.output.substr(r.output.find('{')))["false_positive"]["clean"], 3);
     // It tunes nothing, so scoring seeds among the default tuning ones (1..4) are no overlap.
     const RunResult low =
         run_driftlab({"gap-eval", "--clean-only", "--quick", "--seeds-score", "1..2", "--json"}, dir.path());

@@ -256,8 +256,8 @@ TEST(GapEval, DecisionNamesACloseRunnerUpAsAmbiguous) {
     c.tried[1].residual_step.tested = true;  // flicker leaves a level step at p = 0.03: the log is not explained
     c.tried[1].residual_step.p_value = 0.03;
     EXPECT_EQ(decide(c, th).verdict, "unexplained");
-    EXPECT_EQ(decide(c, {1.0, 0.3, 0.02, InformationCriterion::bic}).verdict,
-              "flicker");  // ... unless the level is below p
+    // ... unless the level is below p
+    EXPECT_EQ(decide(c, {1.0, 0.3, 0.02, InformationCriterion::bic}).verdict, "flicker");
     c.detected = false;
     EXPECT_EQ(decide(c, th).verdict, "none");
 }

@@ -139,8 +139,8 @@ TEST(LogIo, WriterRefusesRowsItsReaderWouldReject) {
     r.optional_values = {1.0};
     EXPECT_THROW(w.write_row(r), UsageError);  // no optional columns declared
     EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"colour"}), UsageError);
-    EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"tick", "tick"}),
-                 UsageError);  // the reader refuses a repeat
+    // The reader refuses a repeat
+    EXPECT_THROW(LogWriter(temp_path("x.csv"), LogMetadata{}, {"tick", "tick"}), UsageError);
     {
         LogMetadata m;
         m.set("adc_bits", std::int64_t{10});
