@@ -69,7 +69,6 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
     } else if (text == "lost") {
         decoder_.reset();
         if (rows_) rows_->end_of_stream();
-        count_rows();
         if (!holding_) {
             holding_ = true;
             lost_t_us_ = t_us;
@@ -213,13 +212,15 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
     }
     default: break;
     }
-    count_rows();
 }
 
-void LogAssembler::count_rows() {
-    if (!rows_) return;
-    stats_.stale_samples = rows_->counts().stale_samples;
-    stats_.empty_samples = rows_->counts().empty_samples;
+AssemblyStats LogAssembler::stats() const {
+    AssemblyStats s = stats_;
+    if (rows_) {
+        s.stale_samples = rows_->counts().stale_samples;
+        s.empty_samples = rows_->counts().empty_samples;
+    }
+    return s;
 }
 
 void LogAssembler::start_log() {
@@ -250,7 +251,8 @@ bool LogAssembler::write(const receiver::Row& r) {
             return range->holds_raw_code(static_cast<double>(code));
         }))
         row.has_raw = false;
-    const bool raw = config_->raw != 0;
+    // The columns are the recording's start's: a CONFIG arriving later changes none of them.
+    const bool raw = rows_->options().raw;
     if (raw && !row.has_raw) ++stats_.raw_missing;
     writer_->write_row(board_log_row(row, raw, true));
     ++stats_.rows;
@@ -268,7 +270,6 @@ void LogAssembler::flush() {
 void LogAssembler::finish() {
     if (holding_) release_held();
     if (rows_) rows_->end_of_stream();
-    count_rows();
     if (writer_) writer_->close();
 }
 

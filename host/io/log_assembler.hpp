@@ -65,7 +65,8 @@ public:
     void flush();
 
     bool started() const { return writer_ != nullptr; }
-    const AssemblyStats& stats() const { return stats_; }
+    /// What has been assembled so far, the receiver's counts of samples that made no row included.
+    AssemblyStats stats() const;
     /// The frame decoder's rejects (bad CRC among them), which AssemblyStats counts only as lost sequence numbers.
     const proto::DecoderCounters& decoder_counters() const { return decoder_.counters(); }
     const std::optional<proto::VersionPayload>& version() const { return version_; }
@@ -81,8 +82,6 @@ private:
     bool settle_gap(const Stamped& evidence);
     /// Board ticks elapsed from the newest SAMPLE to host time `t_us`, and how far off that may be.
     std::optional<std::pair<double, double>> board_ticks_since_newest(std::uint64_t t_us) const;
-    /// Takes the receiver's counts of samples that made no row into stats_.
-    void count_rows();
     /// Writes a row of the receiver; false when a value is one no converter makes.
     bool write(const receiver::Row& row);
     void start_log();

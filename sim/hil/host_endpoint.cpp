@@ -60,10 +60,19 @@ void HostEndpoint::enter(Phase next, double t_s) {
     if (next == Phase::done) send_at_s_.reset();
     // The last output's RAW may still be on the line when a stream run ends; it is awaited until the firmware has
     // acknowledged the stop (a RAW before that ACK is the stream's), and missing only then.
-    if ((next == Phase::status || next == Phase::done) && rows_) {
-        rows_->end_of_stream();
-        counters_.rows_missing_raw = rows_->counts().dropped_rows;
+    if ((next == Phase::status || next == Phase::done) && rows_) rows_->end_of_stream();
+}
+
+HostCounters HostEndpoint::counters() const {
+    HostCounters c = counters_;
+    c.frames_lost = seq_.lost();
+    c.last_seq = seq_.newest();
+    if (rows_) {
+        c.samples_received = rows_->counts().samples;
+        c.empty_samples = rows_->counts().empty_samples;
+        c.rows_missing_raw = rows_->counts().dropped_rows;
     }
+    return c;
 }
 
 void HostEndpoint::act(double t_s, std::vector<std::vector<std::uint8_t>>& out) {
@@ -122,8 +131,6 @@ void HostEndpoint::receive(double t_s, std::span<const std::uint8_t> bytes) {
 void HostEndpoint::handle_frame(double t_s) {
     ++counters_.frames_received;
     const receiver::SeqResult accepted = seq_.accept(decoder_.seq());
-    counters_.frames_lost = seq_.lost();
-    counters_.last_seq = seq_.newest();
     if (accepted.verdict == receiver::SeqVerdict::duplicate) return;
     const std::uint64_t seq = accepted.unwrapped;
 
@@ -170,12 +177,7 @@ void HostEndpoint::handle_frame(double t_s) {
     }
     case proto::MsgType::sample: {
         proto::SamplePayload s{};
-        if (phase_ == Phase::running && proto::parse(p, len, &s)) {
-            rows_->sample(s, seq, ticks_.unwrap(s.tick));
-            counters_.samples_received = rows_->counts().samples;
-            counters_.empty_samples = rows_->counts().empty_samples;
-            counters_.rows_missing_raw = rows_->counts().dropped_rows;
-        }
+        if (phase_ == Phase::running && proto::parse(p, len, &s)) rows_->sample(s, seq, ticks_.unwrap(s.tick));
         break;
     }
     case proto::MsgType::raw: {

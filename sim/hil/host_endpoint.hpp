@@ -34,14 +34,14 @@ struct HostPlan {
 /// Counts of the host's side.
 struct HostCounters {
     std::uint64_t frames_received = 0;  ///< valid frames decoded
-    std::uint64_t frames_lost = 0;      ///< sum of seq gaps between consecutive received frames
+    std::uint64_t frames_lost = 0;      ///< seq numbers never received (SeqTracker: a late frame is not lost)
     std::uint64_t polls_sent = 0;
     std::uint64_t samples_received = 0;  ///< SAMPLE frames received while running
     std::uint64_t empty_samples = 0;     ///< SAMPLEs with n_window 0 (no estimate behind a value): not logged
     std::uint64_t rows = 0;              ///< records handed to the sink
     std::uint64_t rows_missing_raw = 0;  ///< raw mode: SAMPLEs dropped because their RAW frame was lost
     std::uint64_t retries = 0;           ///< requests sent again after a timeout
-    std::uint64_t last_seq = 0;          ///< unwrapped seq of the last frame received
+    std::uint64_t last_seq = 0;          ///< the newest unwrapped seq received
 };
 
 class HostEndpoint {
@@ -62,7 +62,8 @@ public:
 
     Phase phase() const { return phase_; }
     bool done() const { return phase_ == Phase::done; }
-    const HostCounters& counters() const { return counters_; }
+    /// The host's counts, those of its seq tracker and row assembler included.
+    HostCounters counters() const;
     const proto::DecoderCounters& decoder_counters() const { return decoder_.counters(); }
     /// VERSION and the final STATUS as received (valid once past their phases).
     const proto::VersionPayload& version() const { return version_; }

@@ -374,3 +374,22 @@ TEST(LogAssembler, ARawFrameWithACodeTheConverterCannotMakeIsKeptOutLikeALostOne
     EXPECT_EQ(log.optional_columns.at("flags"), (std::vector<double>{0.0, kFlagRawMissing, kFlagRawMissing}));
     EXPECT_EQ(stats.raw_missing, 2u);  // the unmakeable code and the last row's RAW that never came
 }
+
+// A CONFIG turning raw on that arrives mid-recording (a stray or forged frame) changes neither how rows are read nor
+// which columns they fill: it had ended `record` with "log row has 9 optional values, header has 4".
+TEST(LogAssembler, AConfigArrivingMidRecordingChangesNoRow) {
+    AssemblyStats stats;
+    const LogData log = recorded(
+        "midconfig.csv", 0,
+        [](Board& b) {
+            b.sample(1 * kTicksPerOutput);
+            b.config(1);
+            b.sample(2 * kTicksPerOutput);
+            b.raw(2 * kTicksPerOutput, 501);
+            b.sample(3 * kTicksPerOutput);
+        },
+        stats);
+    ASSERT_EQ(log.size(), 3u);
+    EXPECT_EQ(log.optional_columns.count("raw_gyro"), 0u);
+    EXPECT_EQ(stats.raw_missing, 0u);
+}

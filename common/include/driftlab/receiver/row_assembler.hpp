@@ -69,6 +69,7 @@ public:
     /// The stream ended, or broke (a lost link): a SAMPLE still waiting for its RAW is one whose RAW was lost.
     void end_of_stream();
 
+    const RowOptions& options() const { return options_; }
     const RowCounts& counts() const { return counts_; }
     /// Time of the newest row the sink took [s], none before the first.
     const std::optional<double>& last_t_s() const { return last_t_s_; }
