@@ -71,8 +71,6 @@ public:
     /// Converter counts per physical unit of a channel [counts per °/s or per g].
     double counts_per_unit(Channel c) const;
     const Adc& adc() const { return adc_; }
-    /// True when a timing effect moves the instants (they then depend on the seed).
-    bool moves_instants() const { return !by_stage_[static_cast<std::size_t>(Stage::timing)].empty(); }
 
 private:
     Adc adc_;
