@@ -14,12 +14,13 @@
 #include "host/fit/series.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/log/log_window.hpp"
-#include "host/report/gnuplot.hpp"
-#include "host/report/json_out.hpp"
 #include "host/stats/lone_values.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
+#include "host/view/allan_view.hpp"
+#include "host/view/analysis_notes.hpp"
+#include "host/view/json_out.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -53,173 +54,6 @@ std::vector<stats::Deviation> parse_deviations(const std::string& s) {
     throw UsageError("--deviation: expected oadev, mdev, hdev or all, got '" + s + "'");
 }
 
-json curve_json(const stats::AnalysedCurve& c, const char* dev_key) {
-    json j;
-    j["tau"] = report::json_array(c.curve.tau_s);
-    j[dev_key] = report::json_array(c.curve.dev);
-    j["ci_low"] = report::json_array(c.ci_low);
-    j["ci_high"] = report::json_array(c.ci_high);
-    j["noise"] = c.alpha;
-    j["noise_identified"] = c.alpha_identified;
-    j["n"] = c.curve.n;
-    j["n_skipped"] = c.curve.n_skipped;
-    j["edf"] = report::json_array(c.edf);
-    return j;
-}
-
-json terms_json(const stats::NoiseTermFit& t, const stats::SampleUnit& u) {
-    if (!t.ok) return nullptr;
-    const std::string& U = u.name;
-    const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", "", "/sqrt(s)", "/s"};
-    json j = {{"unit", U},
-              {"model", "AVAR = 3Q^2/tau^2 + N^2/tau + (2 ln2/pi) B^2 + K^2 tau/3 + R^2 tau^2/2"},
-              {"bias_instability_factor", stats::kBiasInstabilityFactor}};
-    for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
-        // A term pinned at 0 keeps its value 0 for readers of `value`; the null error and the bound say it is
-        // not a measured zero.
-        json term = {{"value", report::json_number(t.value[k])},
-                     {"std_error", t.at_bound[k] ? json(nullptr) : report::json_number(t.std_error[k])},
-                     {"unit", U + units[k]}};
-        if (t.at_bound[k]) term["upper_bound"] = report::json_number(t.upper_bound[k]);
-        j[stats::kNoiseTermSymbols[k]] = term;
-    }
-    // An unresolved term's NamedValue::value is NaN: null here, never a 0 to paste into a filter's configuration.
-    json phys = json::object();
-    for (const auto& nv : stats::physical_terms(t, u.quantity, u.si_per_unit))
-        phys[nv.key] = report::json_number(nv.value);
-    j["physical"] = phys;
-    return j;
-}
-
-json version_json(const fit::AllanCurves& v, const stats::SampleUnit& u) {
-    json j = curve_json(v.curves.front(), "adev");
-    if (const auto* m = v.find(stats::Deviation::mdev)) j["mdev"] = curve_json(*m, "dev");
-    if (const auto* h = v.find(stats::Deviation::ohdev)) j["hdev"] = curve_json(*h, "dev");
-    j["terms"] = terms_json(v.terms, u);
-    json k = json::object();
-    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit))
-        k[nv.key] = report::json_number(nv.value);
-    j["kalibr"] = k.empty() ? json(nullptr) : k;
-    return j;
-}
-
-void print_named(const char* prefix, const stats::NamedValue& nv) {
-    const int width = 26 - static_cast<int>(std::string(prefix).size());
-    if (nv.resolved)
-        std::printf("      %s%-*s %.5g\n", prefix, width, nv.key.c_str(), nv.value);
-    else
-        std::printf("      %s%-*s not resolved (<= %.5g)\n", prefix, width, nv.key.c_str(), nv.upper_bound);
-}
-
-// The table's n hides what the gaps cost: from the first tau where they skip more than 20 % of the terms, say so
-// and why the curve may end early (JSON has n_skipped per tau).
-void print_skipped_note(const stats::DeviationCurve& c, double longest_gap_free_s) {
-    constexpr double kNotable = 0.2;
-    const auto share = [&](std::size_t i) {
-        const auto all = static_cast<double>(c.n[i] + c.n_skipped[i]);
-        return all > 0.0 ? static_cast<double>(c.n_skipped[i]) / all : 0.0;
-    };
-    std::size_t first = 0;
-    while (first < c.m.size() && share(first) <= kNotable) ++first;
-    if (first == c.m.size()) return;
-    std::size_t most = first;
-    for (std::size_t i = first; i < c.m.size(); ++i)
-        if (share(i) > share(most)) most = i;
-    std::printf(
-        "    note: gaps skip more than 20 %% of the terms from tau = %.5g s on (%.0f %% at tau = %.5g s); the longest "
-        "gap-free stretch is %.5g s, and a term spans 2 tau (3 tau for mdev and hdev)\n",
-        c.tau_s[first], 100.0 * share(most), c.tau_s[most], longest_gap_free_s);
-}
-
-void print_version(const char* title, const fit::AllanCurves& v, const stats::SampleUnit& u,
-                   double longest_gap_free_s) {
-    std::printf("  %s\n", title);
-    for (const auto& c : v.curves) {
-        std::printf("    %-6s %12s %10s %5s %12s %12s %12s\n", std::string(stats::deviation_name(c.curve.type)).c_str(),
-                    "tau [s]", "n", "alpha", "low", "dev", "high");
-        for (std::size_t i = 0; i < c.curve.m.size(); ++i) {
-            std::printf("    %-6s %12.5g %10lld %5d %12.5g %12.5g %12.5g\n", "", c.curve.tau_s[i],
-                        static_cast<long long>(c.curve.n[i]), c.alpha[i], c.ci_low[i], c.curve.dev[i], c.ci_high[i]);
-        }
-        print_skipped_note(c.curve, longest_gap_free_s);
-    }
-    if (!v.terms.ok) return;
-    const char* units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", " (ADEV floor = 0.664 B)", "/sqrt(s)", "/s"};
-    const char* bound_units[stats::kNoiseTermCount] = {"*s", "/sqrt(Hz)", ", the ADEV minimum / 0.664", "/sqrt(s)",
-                                                       "/s"};
-    std::printf("    IEEE 952 terms [%s]:", u.name.c_str());
-    for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
-        if (v.terms.at_bound[k])
-            std::printf(" %s not resolved (<= %.4g%s)", stats::kNoiseTermSymbols[k], v.terms.upper_bound[k],
-                        bound_units[k]);
-        else
-            std::printf(" %s = %.4g%s", stats::kNoiseTermSymbols[k], v.terms.value[k], units[k]);
-        std::printf("%s", k + 1 < stats::kNoiseTermCount ? "," : "\n");
-    }
-    for (const auto& nv : stats::physical_terms(v.terms, u.quantity, u.si_per_unit)) print_named("", nv);
-    for (const auto& nv : stats::kalibr_densities(v.terms, u.quantity, u.si_per_unit)) print_named("kalibr ", nv);
-}
-
-report::Plot allan_plot(const std::string& name, const fit::AllanResult& r, const stats::SampleUnit& u) {
-    report::Plot p;
-    p.title = "Allan deviation: " + name;
-    p.x_label = "tau [s]";
-    p.y_label = "overlapping ADEV [" + u.name + "]";
-    p.log_x = p.log_y = true;
-    const fit::AllanCurves& main = r.primary();
-    const stats::AnalysedCurve& c = main.curves.front();
-    report::PlotSeries band{r.drift_removed ? "drift removed (68 % CI)" : "ADEV (68 % CI)",
-                            c.curve.tau_s,
-                            c.curve.dev,
-                            c.ci_low,
-                            c.ci_high,
-                            report::SeriesStyle::error_bars,
-                            false,
-                            "#1f77b4",
-                            1.5};
-    p.series.push_back(band);
-    if (r.drift_removed) {
-        const auto& raw = r.raw.curves.front();
-        p.series.push_back({"raw (with drift)",
-                            raw.curve.tau_s,
-                            raw.curve.dev,
-                            {},
-                            {},
-                            report::SeriesStyle::lines,
-                            false,
-                            "#7f7f7f",
-                            1.5});
-    }
-    if (main.terms.ok) {
-        p.series.push_back({"IEEE 952 fit",
-                            c.curve.tau_s,
-                            main.terms.model_adev,
-                            {},
-                            {},
-                            report::SeriesStyle::lines,
-                            false,
-                            "#d62728",
-                            2.0});
-        for (std::size_t k = 0; k < stats::kNoiseTermCount; ++k) {
-            if (main.terms.value[k] <= 0.0) continue;
-            std::array<double, stats::kNoiseTermCount> only{};
-            only[k] = main.terms.value[k];
-            std::vector<double> y;
-            for (double t : c.curve.tau_s) y.push_back(std::sqrt(stats::noise_term_avar(only, t)));
-            p.series.push_back({std::string(stats::kNoiseTermSymbols[k]) + " term",
-                                c.curve.tau_s,
-                                y,
-                                {},
-                                {},
-                                report::SeriesStyle::lines,
-                                true,
-                                "",
-                                1.0});
-        }
-    }
-    return p;
-}
-
 void run(const AllanCommandOptions& o) {
     fit::AllanRequest req;
     req.deviations = parse_deviations(o.deviation);
@@ -242,7 +76,7 @@ void run(const AllanCommandOptions& o) {
         if (!o.units.empty())
             throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
         const LogData data = parse_log(source.in, o.path, read);
-        print_note(dropped_cut_line_note(data), o.json);
+        view::print_note(dropped_cut_line_note(data), o.json);
         series = fit::series_from_log(data, names);
     } else {
         if (o.kind.empty() || o.tau0_s <= 0.0) {
@@ -263,7 +97,7 @@ void run(const AllanCommandOptions& o) {
     const std::vector<std::string> selection =
         series.empty() ? std::vector<std::string>{}
                        : fit::selection_notes(series.front().t_s, o.from_s, o.to_s, o.excluded);
-    for (const std::string& note : selection) print_note(note, o.json);
+    for (const std::string& note : selection) view::print_note(note, o.json);
     for (fit::Series& s : series) {
         fit::Series kept = fit::rows_kept(s, o.from_s, o.to_s, o.excluded);
         // The grid needs two samples: where --from/--to leave fewer, say where the rows are.
@@ -301,38 +135,23 @@ void run(const AllanCommandOptions& o) {
             throw DataError(o.path, 0, "series '" + s.name + "': " + e.what());
         }
         const auto unit = units.for_column(s.name);
-        const stats::SampleUnit u =
-            s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(unit ? unit->name : "unit");
-        const std::optional<std::string> packing = fit::packing_caveat(r, r.primary().curves.front());
-        const std::optional<std::string> lone = stats::lone_values_warning(s.t_s, s.values, fit::code_of(s));
-        if (o.json) {
-            json c = version_json(r.primary(), u);
-            c["tau0_s"] = tau0;
-            c["samples"] = r.samples;
-            c["t_first_s"] = s.t_s.front();  // as fit gives them: the rows --from/--to kept
-            c["t_last_s"] = s.t_s.back();
-            c["gap_samples"] = r.gap_samples;
-            c["packed_samples"] = r.packed_samples;
-            c["packed_most_slots"] = r.packed_most_slots;
-            c["packing_warning"] = packing ? json(*packing) : json(nullptr);
-            c["lone_values_warning"] = lone ? json(*lone) : json(nullptr);
-            c["drift_removed"] = r.drift_removed.has_value();
-            c["drift_status"] = r.drift_status_name();
-            if (r.drift) c["drift"] = {{"C1", r.drift->c1}, {"C2", r.drift->c2}, {"T_s", r.drift->t_s}};
-            if (r.drift_removed) c["raw"] = version_json(r.raw, u);
-            out["channels"][s.name] = c;
-        } else {
-            std::printf("%s: %s, tau0 = %.6g s, %zu samples, %zu gap samples, drift: %s\n", o.path.c_str(),
-                        s.name.c_str(), tau0, r.samples, r.gap_samples,
-                        r.drift_removed ? "removed (eq. 1)" : r.drift_status_words().c_str());
-            if (lone) std::printf("  warning: %s\n", lone->c_str());
-            if (packing) std::printf("  warning: %s\n", packing->c_str());
-            if (r.drift_removed) print_version("drift removed", *r.drift_removed, u, r.longest_gap_free_s);
-            print_version(r.drift_removed ? "raw" : "as given", r.raw, u, r.longest_gap_free_s);
-        }
-        if (!o.plot_dir.empty()) report::render_plot(allan_plot(s.name, r, u), o.plot_dir, "allan_" + s.name);
+        fit::AllanSeriesResult shown{
+            s.name,
+            tau0,
+            s.t_s.front(),
+            s.t_s.back(),
+            std::move(r),
+            s.channel ? stats::unit_of_channel(*s.channel) : stats::unit_of_name(unit ? unit->name : "unit"),
+            {},
+            stats::lone_values_warning(s.t_s, s.values, fit::code_of(s))};
+        shown.packing_warning = fit::packing_caveat(shown.result, shown.result.primary().curves.front());
+        if (o.json)
+            out["channels"][s.name] = view::allan_json(shown);
+        else
+            view::print_allan_text(o.path, shown);
+        if (!o.plot_dir.empty()) view::write_allan_plot(shown, o.plot_dir);
     }
-    if (o.json) report::write_json(std::cout, out);
+    if (o.json) view::write_json(std::cout, out);
 }
 
 }  // namespace

@@ -12,10 +12,10 @@
 #include "host/io/capture.hpp"
 #include "host/io/log_assembler.hpp"
 #include "host/io/status_line.hpp"
-#include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/view/json_out.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -238,7 +238,7 @@ void run_decode(const DecodeOptions& o) {
     }
     const io::AssemblyStats& s = assembler->stats();
     if (o.json) {
-        report::write_json(std::cout, summary_json(o, *reader, *assembler, *crc_failures, rescued_start));
+        view::write_json(std::cout, summary_json(o, *reader, *assembler, *crc_failures, rescued_start));
     } else {
         // With the log on standard output, the summary goes beside the warnings rather than after its last row.
         std::FILE* summary = o.output == "-" ? stderr : stdout;

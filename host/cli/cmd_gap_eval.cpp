@@ -10,13 +10,13 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
-#include "host/gap/eval_plots.hpp"
-#include "host/gap/eval_scores.hpp"
-#include "host/gap/truth.hpp"
+#include "host/gap_eval/eval_scores.hpp"
+#include "host/gap_eval/truth.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
 #include "host/util/time_left.hpp"
+#include "host/view/gap_eval_view.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -149,12 +149,12 @@ void run(const GapEvalCommandOptions& o) {
     const gap::EvalScores scores = gap::score(cases, th, options, sizes, pair_cases);
     // The scores first: a plot that fails must not lose a run of many minutes.
     if (o.json)
-        std::cout << gap::scores_json(scores).dump(2) << "\n";
+        std::cout << view::scores_json(scores).dump(2) << "\n";
     else
-        std::cout << gap::scores_markdown(scores);
+        std::cout << view::scores_markdown(scores);
     std::cout.flush();
     if (!o.plot_dir.empty()) {
-        gap::write_eval_plots(scores, o.plot_dir);
+        view::write_eval_plots(scores, o.plot_dir);
         std::fprintf(stderr, "gap-eval: plots in %s (gap_eval_detected, gap_eval_top1)\n", o.plot_dir.c_str());
     }
 }

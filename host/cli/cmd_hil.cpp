@@ -24,12 +24,12 @@
 #include "host/io/log_assembler.hpp"
 #include "host/io/pty_board.hpp"
 #include "host/log/log_writer.hpp"
-#include "host/report/json_out.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 #include "host/util/time_left.hpp"
+#include "host/view/json_out.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/model_file.hpp"
@@ -377,7 +377,7 @@ void run_hil_command(const HilCliOptions& o) {
         }
 #endif
         j["interrupted"] = s.interrupted;
-        report::write_json(std::cout, j);
+        view::write_json(std::cout, j);
         if (s.interrupted) throw Interrupted(interrupted);
         return;
     }

@@ -1,5 +1,5 @@
 // `driftlab report LOG -o report.html`: the drift fit, whiteness and Allan analysis of a log in one
-// self-contained HTML file (host/report/html_report; docs/analysis.md §6).
+// self-contained HTML file (host/view/html_report; docs/analysis.md §6).
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -8,13 +8,14 @@
 
 #include "host/cli/commands.hpp"
 #include "host/fit/file_analysis.hpp"
-#include "host/report/analysis_json.hpp"
-#include "host/report/html_report.hpp"
-#include "host/report/json_out.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/util/error.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/view/analysis_notes.hpp"
+#include "host/view/fit_view.hpp"
+#include "host/view/html_report.hpp"
+#include "host/view/json_out.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -48,22 +49,21 @@ void run(const ReportCommandOptions& opts) {
     assign_units(units, file);
     // A page of empty tables had been written where no series could be analysed; one that failed is shown there.
     if (file.failures() == file.series.size()) throw_if_failed(file, false);
-    report::ReportOptions ropts;
+    view::ReportOptions ropts;
     ropts.plots = !opts.no_plots;
-    const std::string html = report::render_html_report(file, ropts);
+    const std::string html = view::render_html_report(file, ropts);
     std::ofstream out(opts.output, std::ios::binary);
     out << html;
     out.close();
     if (!out) throw DeviceError(opts.output, "cannot write the report");
     if (opts.json) {
-        nlohmann::json j = {{"file", file.path}, {"report", opts.output}, {"channels", nlohmann::json::object()}};
-        for (const auto& s : file.series)
-            j["channels"][s.name] = s.analysis ? report::fit_json(*s.analysis) : nlohmann::json{{"error", s.error}};
-        report::write_json(std::cout, j);
+        nlohmann::json j = view::fit_to_json(file);
+        j["report"] = opts.output;
+        view::write_json(std::cout, j);
     } else {
         std::cout << "wrote " << opts.output << " (" << html.size() / 1024 << " KiB)\n";
     }
-    print_file_notes(file, opts.json);
+    view::print_file_notes(file, opts.json);
     throw_if_failed(file, false);  // the reasons are in the page, not on the terminal
 }
 

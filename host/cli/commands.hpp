@@ -60,15 +60,6 @@ void add_drop_cut_line_flag(CLI::App* cmd, bool& drop);
 /// parse with stats::parse_unit_assignment); `takes_phase`: allan, whose phase samples name their integral's unit.
 void add_unit_option(CLI::App* cmd, std::vector<std::string>& units, bool takes_phase = false);
 
-/// A series' analysis warnings, one "  warning: ..." line each, as fit and whiteness print them (cmd_fit.cpp).
-void print_analysis_warnings(const fit::DriftAnalysis& analysis);
-
-/// "note: ...": on the standard output, or on the error output beside JSON; nothing for "" (cmd_fit.cpp).
-void print_note(const std::string& note, bool json);
-
-/// The file's notes (an option it does not use, a cut last line dropped), with print_note() (cmd_fit.cpp).
-void print_file_notes(const fit::FileAnalysis& file, bool json);
-
 /// The non-zero exit (DataError) for series that could not be analysed. With `reasons_printed` (a text table gave
 /// each) it names them only; else it gives every reason (cmd_fit.cpp).
 void throw_if_failed(const fit::FileAnalysis& file, bool reasons_printed);

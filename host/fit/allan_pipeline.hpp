@@ -11,6 +11,7 @@
 #include "host/fit/lm_fit.hpp"
 #include "host/stats/allan_analysis.hpp"
 #include "host/stats/noise_terms.hpp"
+#include "host/stats/rate_unit.hpp"
 
 namespace driftlab::host::fit {
 
@@ -51,6 +52,17 @@ struct AllanResult {
     std::string drift_status_words() const;
     /// The curves the result is read from: drift removed when it was, else raw.
     const AllanCurves& primary() const { return drift_removed ? *drift_removed : raw; }
+};
+
+/// One series' Allan analysis as `allan` shows it: the result with the sample period it was computed at, the time span
+/// of the rows kept, the unit of its samples, and what to warn of (rows packed onto the grid, a few lone values).
+struct AllanSeriesResult {
+    std::string name;
+    double tau0_s = 0.0;
+    double t_first_s = 0.0, t_last_s = 0.0;
+    AllanResult result;
+    stats::SampleUnit unit;
+    std::optional<std::string> packing_warning, lone_values_warning;
 };
 
 /// Analyses samples `values` taken at times `t_s` [s] (strictly increasing) on a grid of `tau0_s`.

@@ -27,7 +27,7 @@ struct FileAnalysisRequest {
 };
 
 /// A canonical log as a whole, before the time range and the channel choice: what the report's recording table
-/// shows (host/report/recording_section.hpp).
+/// shows (host/view/recording_section.hpp).
 struct LogOverview {
     LogMetadata metadata;
     std::size_t rows = 0;

@@ -4,7 +4,7 @@
 // says how often the model the log was read as would be read the same way again: near 1 for a clear shape, lower
 // where noise processes are a close call. It is repeatability under the fitted model, not the chance of being right
 // (a wrong flicker reading of a Gauss-Markov log repeats well: flicker's own logs read as flicker).
-// docs/gap.md §Verdict stability.
+// Its words are in host/view/gap_phrases.hpp; docs/gap.md §Verdict stability.
 #pragma once
 
 #include <cstddef>
@@ -41,21 +41,5 @@ struct VerdictStability {
 /// the run repeats exactly; options.progress is told each log as it starts.
 VerdictStability verdict_stability(const GapResult& result, const LogData& log, const sim::SimModel& unit,
                                    const GapOptions& options, std::size_t logs);
-
-/// The result in words the terminal and the report share: "of N logs ... k (p %) are called V; v1 n1 v2 n2".
-std::string stability_sentence(const VerdictStability& stability, const std::string& verdict);
-
-/// What introduces spread_lines() wherever they are shown.
-inline constexpr const char* kSpreadHeading =
-    "estimates on those logs (middle 68 %, where each added the effect again):";
-
-/// The middle 68 % of the simulated logs' estimates (about one standard deviation either side), one line per added
-/// effect, each value to the digits half that range warrants (parameter_text() where there is no range):
-/// "gauss_markov on gyro (19 of 20 logs): sigma_dps 0.0253 -> 0.0213 to 0.0291 (median 0.0248); ...".
-std::vector<std::string> spread_lines(const VerdictStability& stability);
-
-/// The plain-text block the terminal and a model file's comments share: "verdict stability: " and the sentence, then
-/// kSpreadHeading and the spread lines indented by two spaces when there are any.
-std::vector<std::string> stability_text(const VerdictStability& stability, const std::string& verdict);
 
 }  // namespace driftlab::host::gap

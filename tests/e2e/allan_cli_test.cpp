@@ -16,7 +16,7 @@
 
 #include "e2e_support.hpp"
 #include "host/fit/file_analysis.hpp"
-#include "host/report/allan_section.hpp"
+#include "host/view/allan_section.hpp"
 #include "sim/model/sim_model.hpp"
 
 namespace driftlab::e2e {
@@ -271,7 +271,7 @@ TEST(AllanCli, ALogInBurstsGetsTheReportsTau0) {
     request.names = {"gyro"};
     const host::fit::FileAnalysis file = host::fit::analyse_file(request);
     ASSERT_EQ(file.failures(), 0u) << file.failure_summary();
-    const host::report::AllanSection section = host::report::allan_section({&*file.series[0].analysis});
+    const host::view::AllanSection section = host::view::allan_section({&*file.series[0].analysis});
     ASSERT_EQ(section.plots.size(), 1u);
     EXPECT_NEAR(section.plots[0].series[0].x.front() / tau0, 1.0, 1e-12);  // the octave grid's first tau is tau0
 }

@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "e2e_support.hpp"
-#include "host/gap/truth.hpp"
+#include "host/gap_eval/truth.hpp"
 #include "sim/model/model_file.hpp"
 
 namespace driftlab::e2e {

@@ -96,4 +96,24 @@ inline GapOptions real_data_options(int max_effects) {
     return o;
 }
 
+// An opposite-sign slower exponential: an overshoot that one exponential cannot absorb. Diagnosed once, shared by
+// the tests that read the result, its JSON and its report.
+struct Planted {
+    LogData log;
+    GapResult result;
+};
+
+inline const Planted& planted_second_time_constant() {
+    static const Planted planted = [] {
+        const GapModel m = paper_gyro_model(8);
+        std::vector<double> added(1500);
+        for (std::size_t k = 0; k < added.size(); ++k)
+            added[k] = -4.0 * -std::expm1(-static_cast<double>(k + 1) / 1500.0);
+        Planted p{gyro_log(m, 1500, added, 78), {}};
+        p.result = diagnose(p.log, sim::paper_model(), small_options());
+        return p;
+    }();
+    return planted;
+}
+
 }  // namespace driftlab::host::gap::testing

@@ -11,8 +11,8 @@
 #include "gap_fixtures.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/diagnose.hpp"
-#include "host/gap/gap_json.hpp"
-#include "host/gap/gap_report.hpp"
+#include "host/view/gap_phrases.hpp"
+#include "host/view/gap_view.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -78,7 +78,7 @@ TEST(GivenEffects, AModelsCycleIsRefittedToTheLogAndAMissingOneIsFoundBesideAHel
     both.effects.push_back(process_on_gyro_and_accel_x(m));
     both.effects.push_back(make_candidate_effect("ambient_cycle", Channel::gyro, {0.2, 240.0, 0.0}, m));
     const GapResult r = diagnose(log, both, options());
-    EXPECT_EQ(r.verdict, "none") << gap_to_json(r, options()).dump();
+    EXPECT_EQ(r.verdict, "none") << view::gap_to_json(r, options()).dump();
     ASSERT_EQ(r.given.refitted.size(), 1u);
     const Explanation& cycle = r.given.refitted[0];
     EXPECT_EQ(cycle.effect, "ambient_cycle");
@@ -89,11 +89,11 @@ TEST(GivenEffects, AModelsCycleIsRefittedToTheLogAndAMissingOneIsFoundBesideAHel
     ASSERT_EQ(r.base.effects.size(), 2u);
     EXPECT_EQ(r.base.effects[1].name, "ambient_cycle");
     EXPECT_DOUBLE_EQ(r.base.effects[1].table["period_s"].value_or(0.0), cycle.params[1].second);
-    const std::string said = given_effects_sentence(r.given);
+    const std::string said = view::given_effects_sentence(r.given);
     EXPECT_NE(said.find("refitted to this log: ambient_cycle on gyro"), std::string::npos) << said;
     EXPECT_NE(said.find("held at the model's values: gauss_markov on gyro sigma_dps=0.15 tau_s=30"), std::string::npos)
         << said;
-    const auto j = gap_to_json(r, options());
+    const auto j = view::gap_to_json(r, options());
     EXPECT_EQ(j["given"]["refitted"][0]["effect"], "ambient_cycle");
     EXPECT_EQ(j["given"]["held"][0]["params"]["tau_s"], kTau);
     EXPECT_EQ(j["given"]["kept"], nlohmann::json::array({"gauss_markov"}));
@@ -135,7 +135,7 @@ TEST(GivenEffects, AHeldProcessTheLogDisagreesWithIsRefittedInItsPlaceAndNamed) 
         EXPECT_EQ(r.final_model.effects[1].name, "gauss_markov");
         EXPECT_LT(r.gap_after_heldout, r.gap_before_heldout / 5.0) << "stated " << stated;
         after.push_back(e.params);
-        EXPECT_TRUE(gap_to_json(r, options())["explanations"][0]["replaces_model"].get<bool>());
+        EXPECT_TRUE(view::gap_to_json(r, options())["explanations"][0]["replaces_model"].get<bool>());
     }
     // What replaces the model's process is fitted to the log alone: whatever the file stated, the same.
     ASSERT_EQ(after.size(), 2u);

@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "host/gap/diagnose.hpp"
-#include "host/gap/gap_json.hpp"
 #include "host/log/log_window.hpp"
+#include "host/view/gap_view.hpp"
 
 #include "gap_fixtures.hpp"
 
@@ -51,7 +51,7 @@ TEST(RealData, Gyro2xRunsAndReportsItsGap) {
     // (docs/gap-results.md, Real recordings), not an independent truth: no one knows this unit's effects. The 155 s
     // excursion at 983-1139 s is beyond the two processes' own replicates, but they remain beside it: it is reported as
     // their outsized increments (JSON level_steps[]) and does not leave the log unexplained.
-    const auto j = gap_to_json(r, options());
+    const auto j = view::gap_to_json(r, options());
     ASSERT_EQ(j["level_steps"].size(), 1u);  // the gyro, with two processes and no mean shape
     for (const auto& s : j["level_steps"]) {
         EXPECT_LE(s["p"].get<double>(), 0.05);

@@ -9,7 +9,7 @@
 #include "gap_fixtures.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/diagnose.hpp"
-#include "host/gap/gap_json.hpp"
+#include "host/view/gap_view.hpp"
 
 namespace driftlab::host::gap {
 namespace {
@@ -48,7 +48,7 @@ TEST(WholeLogEstimate, AProcessIsEstimatedNearerItsTruthOnTheWholeLogThanOnTheFi
                          param(e.whole_log_params, "tau_s"));
         EXPECT_DOUBLE_EQ(file_process_params(r.final_model.effects.back(), Channel::gyro).at(1),
                          param(e.params, "tau_s"));
-        const auto j = gap_to_json(r, testing::small_options());
+        const auto j = view::gap_to_json(r, testing::small_options());
         EXPECT_DOUBLE_EQ(j["explanations"][0]["params_whole_log"]["tau_s"].get<double>(),
                          param(e.whole_log_params, "tau_s"));
     }

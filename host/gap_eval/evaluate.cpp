@@ -1,0 +1,580 @@
+// The withheld-effect benchmark; see evaluate.hpp.
+#include "host/gap_eval/evaluate.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+
+#include "host/fit/lm_fit.hpp"
+#include "host/gap/candidates.hpp"
+#include "host/gap/comparison.hpp"
+#include "host/gap/diagnose.hpp"
+#include "host/gap/replicates.hpp"
+#include "host/gap_eval/truth.hpp"
+#include "host/util/format_number.hpp"
+#include "host/util/parallel_for.hpp"
+#include "sim/model/board_outputs.hpp"
+#include "sim/model/drift.hpp"
+#include "sim/model/rng.hpp"
+#include "sim/model/white_noise.hpp"
+
+namespace driftlab::host::gap {
+
+namespace {
+
+constexpr double kSamplePeriodS = 1.0;
+constexpr int kWindow = 8;
+constexpr double kMaxPeakPerSize = 300.0;  // a deterministic truth's peak, at most this many times its unabsorbed RMS
+
+// Where the search for a_50 starts, in units of the smoothed output's white-noise standard deviation (deterministic
+// generators: the RMS of their unabsorbed part): near the sizes the battery starts to see on a 1500-sample log.
+// Only a starting point; detection_sizes() measures a_50.
+double first_guess(const std::string& generator) {
+    static const std::map<std::string, double> guess = {
+        {"thermal_rc", 0.2},   {"thermostat", 0.25},  {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
+        {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2},       {"sar_mismatch", 0.5}};
+    return guess.at(generator);
+}
+
+GapModel randomised_truth(std::uint64_t seed) {
+    sim::Rng rng(seed, 0x60);
+    auto factor = [&] { return std::exp(std::log(0.5) + rng.uniform() * std::log(4.0)); };  // x[0.5, 2]
+    GapModel m;
+    m.unit = sim::paper_model();
+    m.unit.effects.clear();
+    m.smoothing = {kSamplePeriodS, kWindow, kWindow, 0};
+    const sim::DriftParams paper = sim::kPaperDrift[0];
+    m.base[0].drift = {paper.c1_counts * factor(), paper.c2_counts, paper.tau_s * factor()};
+    const double raw_counts = 0.187 * 512.0 / 90.0 * std::sqrt(factor());
+    m.base[0].sigma_n_counts =
+        sim::analog_sigma_for_raw_std_counts(std::max(raw_counts, sim::kMinCalibratedRawStdCounts));
+    return m;
+}
+
+bool raw_mode(const std::string& generator) {
+    return generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter;
+}
+
+// A gyro log of `truth` with `added` at the converter input and, when given, `quantiser` as its converter. A `raw`
+// log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
+// numbers stepping by two (a SAMPLE and a RAW frame per row).
+LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
+                 std::size_t samples, std::uint64_t seed, bool raw_mode) {
+    LogData log;
+    log.source_name = "gap-eval";
+    log.t_s.resize(samples);
+    for (std::size_t k = 0; k < samples; ++k) log.t_s[k] = static_cast<double>(k + 1) * kSamplePeriodS;
+    sim::OutputRequest req;
+    req.t_s = &log.t_s;
+    req.channels = {true, false, false, false};
+    if (!added.empty()) req.added_counts[0] = added;
+    req.quantiser[0] = quantiser;
+    sim::Outputs raw;
+    if (raw_mode) req.raw_codes = &raw;
+    const sim::Outputs sim = sim::simulate_outputs(truth, req, seed ^ 0xA5A5A5A5ull);
+    log.counts[0] = sim[0];
+    for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
+    log.recorded = {true, false, false, false};
+    if (raw_mode) log.optional_columns["raw_gyro"] = raw[0];
+    log.seq.resize(samples);
+    for (std::size_t k = 0; k < samples; ++k) log.seq[k] = raw_mode ? 2 * k : k;
+    log.metadata.set("sample_period_s", kSamplePeriodS);
+    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(kWindow));
+    log.metadata.set("window", static_cast<std::int64_t>(kWindow));
+    log.metadata.set("fit_order", static_cast<std::int64_t>(0));
+    return log;
+}
+
+double output_noise_sd(const GapModel& m) {
+    const double s = m.base[0].sigma_n_counts;
+    return std::sqrt((s * s + 1.0 / 12.0) / kWindow);
+}
+
+struct Planted {
+    GapModel model;
+    LogData log;
+    double size_counts = 0.0;       ///< the planted size [counts]
+    double scale = 0.0;             ///< make_truth()'s size argument that plants it
+    std::vector<double> occupancy;  ///< a converter truth's: the codes of the log made with the model's converter
+};
+
+// Root mean square of what the base's eq. 1 fit leaves of `signal` added to the noise-free warm-up of `model`.
+double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const std::vector<double>& signal) {
+    const sim::Drift drift(model.base[0].drift);
+    std::vector<double> y(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) y[k] = drift.at_counts(t[k]) + signal[k];
+    double sum = 0.0;
+    for (double r : fit::fit_drift(t, y).residual) sum += r * r;
+    return std::sqrt(sum / static_cast<double>(t.size()));
+}
+
+// `generator`, acting at the converter input, at `size_sd` output-noise deviations on `model`: the signal added and
+// its planted size. A random generator's size is its standard deviation; a deterministic one's is the RMS of the
+// part the base's eq. 1 fit cannot absorb, since only that part can be detected (a slow RC-network rise is 98-99 %
+// absorbed, by a share that varies threefold with its time constants; sizing by the peak made the detection curve
+// non-monotone).
+struct InputSignal {
+    std::vector<double> added;
+    double size_counts = 0.0;  ///< the planted size [counts]
+    double scale = 0.0;        ///< make_truth()'s size argument that plants it
+};
+InputSignal input_signal(const std::string& generator, double size_sd, const GapModel& model, std::uint64_t seed,
+                         std::size_t samples) {
+    InputSignal s;
+    s.size_counts = size_sd * output_noise_sd(model);
+    std::vector<double> t(samples);
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kSamplePeriodS;
+    const std::vector<double> unit = make_truth(generator, t, 1.0, seed, seed);
+    s.scale = s.size_counts;
+    if (truth_info(generator).kind == TruthInfo::Kind::shape) {
+        // eq. 1 is nonlinear in T, so the absorbed share depends a little on the size: one correction.
+        auto scaled = [&](double g) {
+            std::vector<double> v(unit);
+            for (double& x : v) x *= g;
+            return v;
+        };
+        // A shape eq. 1 absorbs almost wholly stays almost invisible: its peak is capped at kMaxPeakPerSize sizes.
+        const double cap = kMaxPeakPerSize * s.size_counts;
+        s.scale = std::min(cap, s.size_counts / std::max(unabsorbed_rms(model, t, unit), 1e-12));
+        s.scale = std::min(cap, s.scale * s.size_counts / std::max(unabsorbed_rms(model, t, scaled(s.scale)), 1e-12));
+    }
+    s.added = unit;
+    for (double& x : s.added) x *= s.scale;
+    return s;
+}
+
+// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations (a converter
+// generator's size is its rms DNL).
+Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean) {
+    Planted p;
+    p.model = randomised_truth(seed);
+    std::vector<double> added;
+    sim::Quantiser quantiser;
+    if (raw_mode(generator)) {
+        // Sized by the code widths the log can see: those of the codes it occupies (the same noise path through the
+        // model's converter), as a deterministic shape by the part eq. 1 cannot absorb.
+        p.size_counts = p.scale = size_sd * output_noise_sd(p.model);
+        p.occupancy.assign(std::size_t{1} << p.model.unit.adc.bits, 0.0);
+        for (double code : make_log(p.model, {}, {}, samples, seed, true).optional_columns.at("raw_gyro"))
+            p.occupancy[static_cast<std::size_t>(code)] += 1.0;
+        quantiser = make_converter_truth(generator, p.scale, p.occupancy, seed, seed);
+    } else if (generator != "none") {
+        InputSignal in = input_signal(generator, size_sd, p.model, seed, samples);
+        p.size_counts = in.size_counts;
+        p.scale = in.scale;
+        added = std::move(in.added);
+    }
+    p.log = make_log(p.model, added, quantiser, samples, seed, quantiser || (generator == "none" && raw_clean));
+    return p;
+}
+
+GapOptions gap_options(std::uint64_t seed, const EvalOptions& options) {
+    GapOptions go;
+    go.replicates = options.replicates;
+    go.holdout = options.holdout;
+    go.seed = seed * 7 + 3;
+    go.threads = 1;  // the logs run in parallel instead (options.threads of them): no core waits on a serial fit
+    go.explain_options.fit_replicates = options.fit_replicates;
+    go.explain_options.max_evaluations = options.max_evaluations;
+    go.explain_options.max_effects = 1;
+    go.explain_options.step_test_candidates = true;
+    return go;
+}
+
+double size_of(const std::vector<DetectionSize>& sizes, const std::string& generator) {
+    for (const auto& d : sizes)
+        if (d.generator == generator) return d.a50;
+    throw std::invalid_argument("no detection size measured for " + generator);
+}
+
+EvalCase run_case(const std::string& generator, const std::string& truth, double level, std::uint64_t seed, bool tuning,
+                  const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    EvalCase c{generator, truth, level, 0.0, seed, tuning, false, {}, 0.0, false};
+    Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples,
+                      options.raw_clean);
+    // A log the diagnosis refuses names the case, so that one odd size is found in a run of hundreds.
+    p.log.source_name = "gap-eval log of " + generator +
+                        (generator == "none" ? "" : " at " + format_double(level) + " x a_50") + " (log seed " +
+                        std::to_string(seed) + ")";
+    c.size_counts = p.size_counts;
+    const LogData& log = p.log;
+    GapOptions go = gap_options(seed, options);
+    // Every candidate's metrics are kept; the thresholds are applied afterwards (decide()).
+    go.explain_options.penalty_per_param = 0.0;
+    go.explain_options.min_heldout_shrink = -1e9;
+    const GapResult r = diagnose(log, sim::paper_model(), go);
+    c.detected = !r.located.empty();
+    c.tried = r.tried;
+    const bool right = !r.accepted.empty() && r.accepted.front().effect == truth;
+    if (!c.detected || generator == "none") return c;
+    // Held-out gap on replicates the diagnosis never saw: base, chosen model, and the oracle (true model).
+    BatteryOptions b;
+    b.channels = r.channels;
+    b.holdout = options.holdout;
+    b.sample_period_s = kSamplePeriodS;
+    b.raw_codes = r.raw_codes;
+    std::array<const std::vector<double>*, kChannelCount> y{};
+    y[0] = &log.counts[0];
+    RawCodes raw{};
+    if (r.raw_codes[0]) raw[0] = &log.optional_columns.at("raw_gyro");
+    std::vector<Cell> layout;
+    const auto real = compute_battery(log.t_s, y, b, &layout, raw).values;
+    const auto held = [](const Cell& cell) { return cell.segment == Segment::heldout; };
+    const std::uint64_t fresh = go.seed + 1000003;
+    auto heldout_gap = [&](const GapModel& m, const ReplicateExtra& extra) {
+        return gap_score(
+            compare(real, run_replicates(m, log.t_s, b, go.replicates, fresh, go.threads, extra), go.alpha), layout,
+            held);
+    };
+    const double before = heldout_gap(r.base, {});
+    auto shrink = [before](double after) { return before > 1.0 ? (before - after) / (before - 1.0) : 0.0; };
+    const ReplicateExtra oracle = [&](std::uint64_t rs, sim::OutputRequest& req) {
+        if (raw_mode(generator))
+            req.quantiser[0] = make_converter_truth(generator, p.scale, p.occupancy, seed, rs);
+        else
+            req.added_counts[0] = make_truth(generator, log.t_s, p.scale, seed, rs);
+    };
+    c.oracle_shrink = shrink(heldout_gap(p.model, oracle));
+    c.has_oracle = true;
+    if (right) {
+        c.shrink_check = shrink(heldout_gap(r.final_model, {}));
+        c.has_shrink_check = true;
+    }
+    return c;
+}
+
+// body(n) for every n < count, options.threads logs at a time, telling options.progress after each (one call at a
+// time, as EvalOptions promises).
+template <class Body>
+void run_logs(std::size_t count, const EvalOptions& options, Body body) {
+    std::size_t done = 0;
+    std::mutex progress_mutex;
+    parallel_for(count, options.threads, [&](std::size_t n) {
+        body(n);
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        ++done;
+        if (options.progress) options.progress(done, count);
+    });
+}
+
+// A second generator's noise is drawn apart from the first's (their generators' streams could otherwise coincide).
+constexpr std::uint64_t kSecondGeneratorSeed = 0x5EC0D5EEDull;
+
+PairCase run_pair_case(const std::string& first, const std::string& second, double level, std::uint64_t seed,
+                       const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    PairCase c;
+    c.first = first, c.second = second, c.level = level, c.seed = seed;
+    const GapModel model = randomised_truth(seed);
+    std::vector<double> added = input_signal(first, level * size_of(sizes, first), model, seed, options.samples).added;
+    if (second != "none") {
+        const std::vector<double> more =
+            input_signal(second, level * size_of(sizes, second), model, seed ^ kSecondGeneratorSeed, options.samples)
+                .added;
+        for (std::size_t k = 0; k < added.size(); ++k) added[k] += more[k];
+    }
+    // As `driftlab gap` runs: its shipped thresholds and stepwise limit.
+    GapOptions go = gap_options(seed, options);
+    go.explain_options.max_effects = ExplainOptions{}.max_effects;
+    go.explain_options.step_test_candidates = false;
+    const GapResult r = diagnose(make_log(model, added, {}, options.samples, seed, false), sim::paper_model(), go);
+    c.detected = !r.located.empty();
+    c.verdict = r.verdict;
+    for (const auto& e : r.accepted) {
+        c.added.push_back(e.effect);
+        c.close_calls.push_back(e.ambiguous_with);
+        c.within_bound.push_back(e.within_bound_before());
+    }
+    c.heldout_before = r.gap_before_heldout;
+    c.heldout_after = r.gap_after_heldout;
+    return c;
+}
+
+}  // namespace
+
+std::string pair_refusal(const std::string& first, const std::string& second) {
+    if (first == second) return first + "+" + second + " names one generator twice";
+    for (const std::string& g : {first, second}) {
+        if (g == "none" && g == second) continue;  // the first alone
+        if (g == "none") return "none+" + second + ": the first of a pair is a generator";
+        const TruthInfo& t = truth_info(g);
+        if (t.kind == TruthInfo::Kind::converter) return g + " replaces the converter; pairs act at its input";
+        // A pair is scored by the library effects it holds; an out-of-library one has none to find.
+        if (t.effect.empty()) return g + " stands for no library effect";
+    }
+    return "";
+}
+
+std::vector<std::pair<std::string, std::string>> default_pairs() {
+    return {{"thermostat", "thermal_rc"},
+            {"thermostat", "kasdin_flicker"},
+            {"thermal_rc", "student_walk"},
+            {"wandering_ou", "burst_spikes"}};
+}
+
+bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok) {
+    if (c.truth.empty()) return d.verdict == "unexplained" || d.verdict == "none";
+    return d.verdict == c.truth || (pair_ok && d.ambiguous_with == c.truth);
+}
+
+Decision decide(const EvalCase& c, const Thresholds& th) {
+    if (!c.detected) return {"none", ""};
+    std::vector<const Explanation*> passing;
+    for (const auto& e : c.tried)
+        if (passes(e, th.penalty_per_param, th.min_heldout_shrink)) passing.push_back(&e);
+    const Choice choice = choose(passing, th.information_criterion);
+    if (!choice.best || !closes_gap(*choice.best, th.step_alpha)) return {"unexplained", ""};
+    const bool close = choice.runner_up && close_call(*choice.best, *choice.runner_up, ExplainOptions{}.ambiguity_z,
+                                                      th.information_criterion);
+    return {choice.best->effect, close ? choice.runner_up->effect : ""};
+}
+
+namespace {
+
+std::string truth_of(const std::string& generator) { return truth_info(generator).effect; }
+
+std::vector<std::string> generators_of(const EvalOptions& options) {
+    std::vector<std::string> gens = options.generators;
+    if (gens.empty())
+        for (const auto& t : truth_list()) gens.push_back(t.generator);
+    return gens;
+}
+
+// Seeds of the a_50 logs: drawn from the tuning range, offset far from the case seeds (seed * 1009 + index).
+// `generator` is the generator's place in truth_list(), not in the run's list, so that a run of a few generators
+// measures each a_50 on the same logs as the full run.
+std::uint64_t detection_seed(const EvalOptions& options, std::size_t generator, int step, int log) {
+    const std::uint64_t tune_count = options.tune_last - options.tune_first + 1;
+    const std::uint64_t base = options.tune_first + static_cast<std::uint64_t>(log) % tune_count;
+    return (base << 32) + (generator << 16) + (static_cast<std::uint64_t>(step) << 8) + static_cast<std::uint64_t>(log);
+}
+
+}  // namespace
+
+std::optional<double> logistic_a50(const std::vector<DetectionPoint>& curve) {
+    // Newton's method on the binomial log-likelihood in (a, b), x = ln size.
+    double a = 0.0, b = 1.0;
+    double mean_x = 0.0;
+    for (const auto& p : curve) mean_x += std::log(p.size) / static_cast<double>(curve.size());
+    a = -b * mean_x;
+    for (int it = 0; it < 50; ++it) {
+        Eigen::Vector2d grad = Eigen::Vector2d::Zero();
+        Eigen::Matrix2d info = Eigen::Matrix2d::Zero();
+        for (const auto& p : curve) {
+            const double x = std::log(p.size);
+            const double n = p.logs + 0.5, y = p.detected + 0.25;
+            const double q = 1.0 / (1.0 + std::exp(-(a + b * x)));
+            const Eigen::Vector2d v(1.0, x);
+            grad += (y - n * q) * v;
+            info += n * q * (1.0 - q) * v * v.transpose();
+        }
+        const Eigen::Vector2d step = info.ldlt().solve(grad);
+        if (!step.allFinite()) return std::nullopt;
+        a += step(0);
+        b += step(1);
+        if (step.norm() < 1e-10) break;
+    }
+    if (!(b > 0.0) || !std::isfinite(a)) return std::nullopt;
+    return std::exp(-a / b);
+}
+
+std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
+    auto gens = generators_of(options);
+    for (const auto& [first, second] : options.pairs)
+        for (const std::string& g : {first, second})
+            if (g != "none" && std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
+    std::vector<DetectionSize> out;
+    for (std::size_t g = 0; g < gens.size(); ++g) {
+        DetectionSize d{gens[g], first_guess(gens[g]), {}};
+        const auto& list = truth_list();
+        const auto place = static_cast<std::size_t>(
+            std::find_if(list.begin(), list.end(), [&](const TruthInfo& t) { return t.generator == gens[g]; }) -
+            list.begin());
+        auto fraction_at = [&](double size, int step) {
+            std::atomic<int> hits{0};
+            parallel_for(static_cast<std::size_t>(options.detection_logs), options.threads, [&](std::size_t k) {
+                const std::uint64_t seed = detection_seed(options, place, step, static_cast<int>(k));
+                GapOptions go = gap_options(seed, options);
+                go.explain = false;
+                hits += !diagnose(plant(gens[g], size, seed, options.samples, false).log, sim::paper_model(), go)
+                             .located.empty();
+            });
+            d.curve.push_back({size, hits, options.detection_logs});
+            return static_cast<double>(hits) / options.detection_logs;
+        };
+        // Double or halve until the detected fraction crosses 1/2 (at most 6 steps).
+        double size = d.a50;
+        double f = fraction_at(size, 0);
+        const bool above = f >= 0.5;
+        double prev_size = size, prev_f = f;
+        int step = 1;
+        for (; step <= 6 && (f >= 0.5) == above; ++step) {
+            prev_size = size, prev_f = f;
+            size = above ? size / 2.0 : size * 2.0;
+            f = fraction_at(size, step);
+        }
+        if ((f >= 0.5) == above) {
+            d.a50 = size;  // never crossed within 64x of the guess: report the last size tried
+        } else {
+            const double lo = std::min(size, prev_size), hi = std::max(size, prev_size);
+            const double f_lo = size < prev_size ? f : prev_f, f_hi = size < prev_size ? prev_f : f;
+            const double w = f_hi > f_lo ? (0.5 - f_lo) / (f_hi - f_lo) : 0.5;
+            const double crossing = std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo)));
+            fraction_at(crossing / std::sqrt(2.0), step++);
+            fraction_at(crossing * std::sqrt(2.0), step++);
+            d.a50 = logistic_a50(d.curve).value_or(crossing);
+        }
+        std::sort(d.curve.begin(), d.curve.end(),
+                  [](const DetectionPoint& a, const DetectionPoint& b) { return a.size < b.size; });
+        out.push_back(std::move(d));
+        if (options.progress) options.progress(g + 1, gens.size());
+    }
+    return out;
+}
+
+std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    const auto gens = generators_of(options);
+    struct Job {
+        std::string generator, truth;
+        double level;
+        std::uint64_t seed;
+        bool tune;
+    };
+    std::vector<Job> jobs;
+    // Raw-mode generators' logs come after all the others, so that the others' places (their seeds), and so their
+    // logs, are the same whether or not a raw-mode generator is in the run.
+    for (const bool raw : {false, true}) {
+        for (int set = 0; set < 2; ++set) {
+            const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
+            const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
+            for (std::uint64_t s = first; s <= last; ++s) {
+                // By default as many clean logs per seed as planted ones per generator: the false-positive rate needs
+                // them.
+                const std::size_t clean = options.clean_per_seed > 0 ? static_cast<std::size_t>(options.clean_per_seed)
+                                                                     : options.levels.size();
+                if (!raw)
+                    for (std::size_t k = 0; k < clean; ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
+                for (const auto& g : gens)
+                    if (raw_mode(g) == raw)
+                        for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
+            }
+        }
+    }
+    // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in
+    // the list) and hence the log itself are the same either way.
+    const auto runs = [&](const Job& j) { return options.tune || !j.tune; };
+    std::vector<std::size_t> places;
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+        if (runs(jobs[i])) places.push_back(i);
+    std::vector<std::uint64_t> run_seeds(jobs.size());
+    for (std::size_t i = 0; i < jobs.size(); ++i) run_seeds[i] = jobs[i].seed;
+    const std::vector<std::uint64_t> log_seeds = case_seeds(run_seeds);
+    std::vector<EvalCase> out(places.size());
+    run_logs(places.size(), options, [&](std::size_t n) {
+        const std::size_t i = places[n];
+        const Job& j = jobs[i];
+        out[n] = run_case(j.generator, j.truth, j.level, log_seeds[i], j.tune, options, sizes);
+    });
+    return out;
+}
+
+std::vector<std::uint64_t> case_seeds(const std::vector<std::uint64_t>& run_seeds) {
+    std::vector<std::uint64_t> out(run_seeds.size());
+    std::set<std::uint64_t> taken;
+    for (std::size_t i = 0; i < run_seeds.size(); ++i) {
+        out[i] = run_seeds[i] * 1009 + i;
+        // A long run's later places can land on an earlier seed's (the raw-mode logs come last): such a log moves
+        // to a seed of its own above every other, so no two logs of a run share a noise path.
+        if (!taken.insert(out[i]).second) taken.insert(out[i] = kMovedCaseSeed + i);
+    }
+    return out;
+}
+
+bool significantly_better(std::size_t only_best, std::size_t only_shipped) {
+    // Exact one-sided sign test (McNemar's, conditioned on the discordant logs): P(X >= only_best), X ~ Bin(n, 1/2).
+    const std::size_t n = only_best + only_shipped;
+    if (n == 0) return false;
+    double tail = 0.0;
+    for (std::size_t k = only_best; k <= n; ++k)
+        tail += std::exp(std::lgamma(static_cast<double>(n) + 1.0) - std::lgamma(static_cast<double>(k) + 1.0) -
+                         std::lgamma(static_cast<double>(n - k) + 1.0) - static_cast<double>(n) * std::log(2.0));
+    return tail < 0.05;
+}
+
+std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    for (const auto& [first, second] : options.pairs)
+        if (const std::string why = pair_refusal(first, second); !why.empty()) throw std::invalid_argument(why);
+    struct Job {
+        std::size_t pair;
+        std::uint64_t seed;
+    };
+    std::vector<Job> jobs;
+    // Seeds apart from run_cases()': seed * 1009 + place stays below 2^32 for the seeds a run takes (kMaxEvalSeed),
+    // and its moved seeds lie above 2^62.
+    for (std::uint64_t s = options.score_first; s <= options.score_last; ++s)
+        for (std::size_t k = 0; k < options.pairs.size(); ++k) jobs.push_back({k, (s << 32) + 0x9A1Bull + k});
+    std::vector<PairCase> out(jobs.size());
+    run_logs(jobs.size(), options, [&](std::size_t n) {
+        const auto& [first, second] = options.pairs[jobs[n].pair];
+        out[n] = run_pair_case(first, second, options.pair_level, jobs[n].seed, options, sizes);
+    });
+    return out;
+}
+
+Thresholds tune(const std::vector<EvalCase>& cases) {
+    std::vector<const EvalCase*> tuning;
+    for (const auto& c : cases)
+        if (c.tune) tuning.push_back(&c);
+    const auto right_of = [&](const Thresholds& th) {
+        std::vector<bool> right;
+        for (const EvalCase* c : tuning) right.push_back(is_correct(*c, decide(*c, th), false));
+        return right;
+    };
+    const auto score = [&](const Thresholds& th) {
+        std::size_t none = 0, fp = 0, right = 0;
+        for (const EvalCase* c : tuning) {
+            const Decision d = decide(*c, th);
+            if (c->truth == "none") {
+                ++none;
+                fp += d.verdict != "none";
+            }
+            right += is_correct(*c, d, false);
+        }
+        const double fpr = none ? static_cast<double>(fp) / static_cast<double>(none) : 0.0;
+        return static_cast<double>(right) / static_cast<double>(std::max<std::size_t>(1, tuning.size())) -
+               (fpr > 0.05 ? 1.0 : 0.0);
+    };
+    const Thresholds shipped;
+    const double shipped_score = score(shipped);
+    Thresholds best = shipped;
+    double best_score = shipped_score;
+    for (double pen : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0}) {
+        for (double shrink : {0.3, 0.4, 0.5, 0.6, 0.7}) {  // a clear margin: at least 30 % of the excess
+            // The level-step test's level trades out-of-library logs called unexplained against library effects
+            // wrongly called so; among the rest, the conventional 5 % comes first, so it wins ties.
+            for (double step_alpha : {0.05, 0.02, 0.1, 0.2}) {
+                for (InformationCriterion ic : {InformationCriterion::bic, InformationCriterion::aic}) {
+                    const Thresholds th{pen, shrink, step_alpha, ic};
+                    const double s = score(th);
+                    if (s > best_score) best_score = s, best = th;
+                }
+            }
+        }
+    }
+    // The shipped thresholds change only when the best does significantly better on the same logs: a one-sided
+    // McNemar test of the logs one gets right and the other wrong (or when the shipped ones break the
+    // false-positive bound). With a few hundred tuning logs the best of 280 threshold sets beats any fixed one by a
+    // log or two by chance alone, and such a choice does not carry over to other seeds.
+    if (shipped_score < 0.0 && best_score >= 0.0) return best;
+    const std::vector<bool> a = right_of(shipped), b = right_of(best);
+    std::size_t only_best = 0, only_shipped = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) only_best += b[k] && !a[k], only_shipped += a[k] && !b[k];
+    return significantly_better(only_best, only_shipped) ? best : shipped;
+}
+
+}  // namespace driftlab::host::gap

@@ -1,0 +1,67 @@
+// The views of a gap result (`driftlab gap`): the terminal's text, the stable JSON (docs/gap.md §JSON) and the
+// report DIR/gap.md with its plots (docs/gap.md §Report). The three say the same thing in the same words
+// (gap_phrases.hpp); a new field of GapResult is shown here and nowhere else.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "host/gap/diagnose.hpp"
+#include "host/gap/verdict_stability.hpp"
+#include "host/log/log_data.hpp"
+
+namespace driftlab::host::view {
+
+/// The diagnosis of `log` run with `options`, as the terminal shows it; with `stability` (--stability), the verdict's
+/// stability under it.
+void print_gap_text(const gap::GapResult& result, const gap::GapOptions& options, const LogData& log,
+                    const gap::VerdictStability* stability = nullptr);
+
+/// The top-level keys of gap_to_json(), in the order --help lists them (a test holds the two together).
+inline constexpr auto kGapJsonKeys = std::to_array<const char*>({"verdict",
+                                                                 "explanations",
+                                                                 "paths",
+                                                                 "located",
+                                                                 "located_after",
+                                                                 "diffuse_gap",
+                                                                 "diffuse_searched",
+                                                                 "gap_before",
+                                                                 "gap_after",
+                                                                 "information_criterion",
+                                                                 "level_steps",
+                                                                 "not_identifiable",
+                                                                 "not_tried",
+                                                                 "constant_channels",
+                                                                 "noise_free_channels",
+                                                                 "saturated",
+                                                                 "lone_values",
+                                                                 "left_out",
+                                                                 "given",
+                                                                 "calibration",
+                                                                 "timing",
+                                                                 "replicates",
+                                                                 "holdout",
+                                                                 "fit_fraction",
+                                                                 "max_effects",
+                                                                 "threshold_z",
+                                                                 "cells"});
+
+/// The diagnosis run with `options` under the keys kGapJsonKeys (docs/gap.md §JSON).
+nlohmann::json gap_to_json(const gap::GapResult& result, const gap::GapOptions& options);
+
+/// --stability's result: logs, verdicts, same (a share), params[] {effect, channel, param, estimate, values (sorted),
+/// median, p16, p84; null medians where no log added the effect again}.
+nlohmann::json stability_to_json(const gap::VerdictStability& stability);
+
+/// Every file write_gap_report() may write into `dir`, whichever channels it plots: an input among them is refused.
+std::vector<std::string> report_files(const std::string& dir);
+
+/// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
+/// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.
+void write_gap_report(const gap::GapResult& result, const LogData& log, const std::string& dir,
+                      const gap::GapOptions& options, const gap::VerdictStability* stability = nullptr);
+
+}  // namespace driftlab::host::view

@@ -1,0 +1,18 @@
+// One self-contained HTML report of a log (docs/analysis.md §6): Table 1 equivalent, intervals, whiteness
+// verdicts, the Allan analysis, and the paper's figures as inline SVG. No external resources.
+#pragma once
+
+#include <string>
+
+#include "host/fit/file_analysis.hpp"
+
+namespace driftlab::host::view {
+
+struct ReportOptions {
+    bool plots = true;  ///< render figures (needs gnuplot; without it the report says so and goes on)
+};
+
+/// The HTML document for `file`.
+std::string render_html_report(const fit::FileAnalysis& file, const ReportOptions& options = {});
+
+}  // namespace driftlab::host::view
