@@ -10,6 +10,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/io/capture.hpp"
+#include "host/io/crc_failures.hpp"
 #include "host/io/log_assembler.hpp"
 #include "host/io/status_line.hpp"
 #include "host/util/error.hpp"
@@ -26,45 +27,6 @@ struct DecodeOptions {
     bool overwrite = false;
     bool json = false;
     bool strict = false;
-};
-
-/// Frames of the capture that failed their CRC check in each record, as "byte offset N" notes (a damaged copy of
-/// the file, or a noisy link the live log lost them to as well): the warning names the first few records and counts
-/// the rest, --json lists them all.
-class CrcFailures {
-public:
-    void after_record(std::uint32_t bad_crc_so_far, std::uint64_t record_offset) {
-        if (bad_crc_so_far > seen_) records_.push_back({record_offset, bad_crc_so_far - seen_});
-        seen_ = bad_crc_so_far;
-    }
-    void warn(const std::string& capture) const {
-        if (seen_ == 0) return;
-        const std::size_t named = std::min(records_.size(), kNamed);
-        std::string where;
-        for (std::size_t i = 0; i < named; ++i)
-            where += (where.empty() ? "" : ", ") + std::to_string(records_[i].offset);
-        const bool one = seen_ == 1;
-        std::fprintf(stderr, "driftlab: warning: %s: %u %s CRC check and %s as lost (in the %s at byte %s %s%s)\n",
-                     capture.c_str(), static_cast<unsigned>(seen_), one ? "frame failed its" : "frames failed their",
-                     one ? "counts" : "count", named == 1 ? "record" : "records", named == 1 ? "offset" : "offsets",
-                     where.c_str(), records_.size() > named ? " and later ones" : "");
-    }
-    /// [{"offset": record's byte offset, "frames": failures in it}, ...] in file order.
-    nlohmann::json json() const {
-        nlohmann::json out = nlohmann::json::array();
-        for (const Located& r : records_) out.push_back({{"offset", r.offset}, {"frames", r.frames}});
-        return out;
-    }
-    std::uint32_t frames() const { return seen_; }
-
-private:
-    static constexpr std::size_t kNamed = 5;
-    struct Located {
-        std::uint64_t offset = 0;  ///< of the record whose bytes completed the failing frames
-        std::uint32_t frames = 0;
-    };
-    std::uint32_t seen_ = 0;
-    std::vector<Located> records_;
 };
 
 /// True when `text` is "start" with one bit flipped.
@@ -107,7 +69,7 @@ std::optional<std::uint64_t> damaged_start(const std::string& capture) {
 /// Feeds every record of `reader` to `assembler`, the event at `rescued_start` read as the start; true when the
 /// log started.
 bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& assembler,
-          std::optional<std::uint64_t> rescued_start, CrcFailures& crc_failures) {
+          std::optional<std::uint64_t> rescued_start, io::CrcFailures& crc_failures) {
     bool started = false;
     while (auto rec = reader.next()) {
         if (rec->kind == io::CaptureKind::rx) {
@@ -139,7 +101,7 @@ bool feed(const DecodeOptions& o, io::CaptureReader& reader, io::LogAssembler& a
 
 /// The capture's damage that cost bytes (a frame failing its CRC, a damaged stretch, a cut last record), for
 /// --strict: "" when none.
-std::string bytes_not_decoded(const io::CaptureReader& reader, const CrcFailures& crc_failures) {
+std::string bytes_not_decoded(const io::CaptureReader& reader, const io::CrcFailures& crc_failures) {
     std::string what;
     const auto add = [&what](const std::string& part) { what += (what.empty() ? "" : ", ") + part; };
     if (const std::uint32_t n = crc_failures.frames())
@@ -155,7 +117,7 @@ std::string bytes_not_decoded(const io::CaptureReader& reader, const CrcFailures
 
 /// The summary as one JSON object (docs/recording.md lists the keys).
 nlohmann::json summary_json(const DecodeOptions& o, const io::CaptureReader& reader, const io::LogAssembler& assembler,
-                            const CrcFailures& crc_failures, std::optional<std::uint64_t> rescued_start) {
+                            const io::CrcFailures& crc_failures, std::optional<std::uint64_t> rescued_start) {
     const io::AssemblyStats& s = assembler.stats();
     const proto::DecoderCounters& d = assembler.decoder_counters();
     nlohmann::json damaged = nlohmann::json::array();
@@ -201,14 +163,14 @@ void run_decode(const DecodeOptions& o) {
     NewFolders folders;  // taken away again, when empty, if no log can be rebuilt
     folders.make_folder_of(o.output, "log");
     auto assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
-    auto crc_failures = std::make_unique<CrcFailures>();
+    auto crc_failures = std::make_unique<io::CrcFailures>();
     bool started = feed(o, *reader, *assembler, std::nullopt, *crc_failures);
     // Only a capture without a start is read again, for a damaged one (the assembler wrote nothing without it).
     const std::optional<std::uint64_t> rescued_start = started ? std::nullopt : damaged_start(o.capture);
     if (rescued_start) {
         reader = std::make_unique<io::CaptureReader>(o.capture);
         assembler = std::make_unique<io::LogAssembler>(o.output, reader->header());
-        crc_failures = std::make_unique<CrcFailures>();
+        crc_failures = std::make_unique<io::CrcFailures>();
         started = feed(o, *reader, *assembler, rescued_start, *crc_failures);
     }
     if (!started) {

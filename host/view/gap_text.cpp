@@ -152,4 +152,19 @@ void print_gap_text(const GapResult& r, const GapOptions& options, const LogData
         for (const std::string& line : stability_text(*stability, r.verdict)) std::printf("%s\n", line.c_str());
 }
 
+std::string model_file_comment(const GapResult& r, const std::string& source, const std::vector<std::string>& notes,
+                               const gap::VerdictStability* stability) {
+    std::string effects;
+    for (const auto& e : r.accepted) effects += " " + e.effect + " (" + e.channel + ")";
+    std::string comment = "driftlab gap " + source + ": verdict " + r.verdict +
+                          "\ncalibrated eq. 1 and white noise of the analysed channels, the log's smoothing, effects "
+                          "added:" +
+                          (effects.empty() ? " none" : effects);
+    if (const std::string given = given_effects_sentence(r.given); !given.empty()) comment += "\n" + given;
+    for (const std::string& n : notes) comment += "\nnote: " + n;
+    if (stability)
+        for (const std::string& line : stability_text(*stability, r.verdict)) comment += "\n" + line;
+    return comment;
+}
+
 }  // namespace driftlab::host::view

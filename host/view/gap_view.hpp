@@ -59,6 +59,12 @@ nlohmann::json stability_to_json(const gap::VerdictStability& stability);
 /// Every file write_gap_report() may write into `dir`, whichever channels it plots: an input among them is refused.
 std::vector<std::string> report_files(const std::string& dir);
 
+/// The comments a model file written by `gap --model-out` opens with: where it comes from (`source`, the log and the
+/// rows used), the verdict, what the file holds, the model's own effects, the model's `notes`, and with `stability`
+/// the verdict's stability.
+std::string model_file_comment(const gap::GapResult& result, const std::string& source,
+                               const std::vector<std::string>& notes, const gap::VerdictStability* stability);
+
 /// Writes DIR/gap.md, DIR/gap_adev_<channel>.png and DIR/gap_mean_<channel>.png (plots skipped with a note when
 /// gnuplot is missing); with `stability` (--stability), the verdict's stability under the verdict.
 void write_gap_report(const gap::GapResult& result, const LogData& log, const std::string& dir,

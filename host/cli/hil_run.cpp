@@ -1,0 +1,149 @@
+// What `driftlab hil` is asked to run; see hil_run.hpp.
+#include "host/cli/hil_run.hpp"
+
+#include <cstdio>
+
+#include "host/cli/commands.hpp"
+#include "host/util/error.hpp"
+#include "host/util/format_number.hpp"
+#include "sim/hil/hil_preset.hpp"
+#include "sim/model/model_file.hpp"
+#include "sim/sim_error.hpp"
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+#include "sim/avr/avr_error.hpp"
+#include "sim/avr/avr_hil.hpp"
+#endif
+
+namespace driftlab::host::cli {
+
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+std::string firmware_elf(const HilCliOptions& o) { return o.elf.empty() ? sim::avr::default_elf_path() : o.elf; }
+
+sim::avr::CycleBudget cycle_budget(const HilCliOptions& o, const sim::HilOptions& h) {
+    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5, 5.0, true);
+}
+#endif
+
+sim::HilSummary run_board(const sim::HilOptions& h, const sim::RecordSink& on_record) {
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+    try {
+        return sim::run_hil(h, on_record);
+    } catch (const sim::avr::AvrError& e) {
+        throw DeviceError("--target avr", e.what());
+    }
+#else
+    return sim::run_hil(h, on_record);
+#endif
+}
+
+namespace {
+
+// Options that belong to another way of running are refused rather than silently ignored.
+void check_option_combinations(const HilCliOptions& o) {
+    if (!o.pty && (o.speed || !o.pty_link.empty()))
+        throw UsageError(std::string(o.speed ? "--speed" : "--pty-link") + ": only with --pty");
+    if (o.pty && (!o.output.empty() || o.json))
+        throw UsageError(std::string(o.json ? "--json" : "-o") +
+                         ": --pty serves the board and writes no log; the recorder does (driftlab record -o LOG)");
+    // On a pseudo-terminal the recorder configures the board, as it does hardware: these had been ignored.
+    if (o.pty && (o.period_s || o.window || o.conversions || o.order || o.raw || o.stream))
+        throw UsageError(std::string(o.period_s      ? "--period"
+                                     : o.window      ? "--window"
+                                     : o.conversions ? "--conversions"
+                                     : o.order       ? "--order"
+                                     : o.raw         ? "--raw"
+                                                     : "--stream") +
+                         ": with --pty the recorder configures the board (driftlab record --poll/--stream, --window, "
+                         "--conversions, --order, --raw)");
+    if (o.target != "avr" && (!o.elf.empty() || o.gdb_port > 0 || o.cycles))
+        throw UsageError(std::string(!o.elf.empty()   ? "--elf"
+                                     : o.gdb_port > 0 ? "--gdb"
+                                                      : "--cycles") +
+                         ": only with --target avr");
+}
+
+// The command line's CONFIG fields over the model's.
+void apply_firmware_options(const HilCliOptions& o, proto::ConfigPayload& fw) {
+    if (o.period_s) fw.output_period_ms = output_period_ms(*o.period_s, "--period");
+    if (o.window) fw.window = static_cast<std::uint8_t>(*o.window);
+    if (o.conversions) fw.conversions_per_output = static_cast<std::uint8_t>(*o.conversions);
+    if (o.order) fw.fit_order = static_cast<std::uint8_t>(*o.order);
+    if (o.raw) fw.raw = 1;
+    if (o.stream) fw.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
+}
+
+// --target: the native firmware core (the default) or the real ELF in simavr.
+void set_target(const HilCliOptions& o, sim::HilOptions& h) {
+    if (o.target == "avr") {
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+        sim::avr::AvrBoardOptions avr{firmware_elf(o), o.gdb_port};
+        try {
+            h.make_board = sim::avr::avr_board_factory(avr);
+        } catch (const sim::avr::AvrError& e) {
+            throw UsageError(std::string("--elf: ") + e.what());
+        }
+#else
+        throw UsageError("--target avr: this driftlab was built without libsimavr-dev");
+#endif
+    } else if (o.target != "native") {
+        throw UsageError("--target: expected native or avr, got '" + o.target + "'");
+    }
+}
+
+}  // namespace
+
+sim::HilOptions build_options(const HilCliOptions& o) {
+    check_option_combinations(o);
+    const auto preset = sim::preset_from_name(o.preset);
+    if (!preset) throw UsageError("--preset: expected fig3 or fig2, got '" + o.preset + "'");
+    // The preset's and the options' CONFIG fields go over the model's, once; a file's get them before the
+    // firmware's check of the joined fields, which then sees the configuration that will run.
+    proto::ConfigPayload file_fw{};  // the file's own CONFIG, to tell whose figures a refusal is about
+    const auto adjust = [&o, &preset, &file_fw](proto::ConfigPayload& fw) {
+        file_fw = fw;
+        sim::apply_preset_firmware(*preset, fw);
+        apply_firmware_options(o, fw);
+    };
+    sim::HilOptions h;
+    if (o.model_file.empty()) {
+        h.model = sim::paper_model();
+        adjust(h.model.firmware);
+    } else {
+        // With --pty the board boots with the firmware's defaults and the recorder's CONFIG replaces them: the
+        // file's, the preset's and the options' fields never reach a firmware, which therefore has nothing to refuse.
+        h.model = sim::load_model_file(o.model_file, {adjust, !o.pty});
+    }
+    h.seed = o.seed;
+    sim::apply_preset_run(*preset, h);
+    const proto::ConfigPayload& fw = h.model.firmware;
+    if (const auto refusal = o.pty ? std::nullopt : sim::firmware_refusal(fw))
+        throw UsageError(refusal->field + ": " + refusal->reason);
+    // Unused there, but a [firmware] section the firmware would refuse is likely a mistake: say so rather than stop.
+    if (const auto refusal = o.pty && !o.model_file.empty() ? sim::firmware_refusal(file_fw) : std::nullopt)
+        std::fprintf(stderr,
+                     "note: %s: [firmware] is not applied with --pty (the board starts with the firmware's "
+                     "defaults and the recorder configures it); as written the firmware would refuse it: "
+                     "%s: %s\n",
+                     o.model_file.c_str(), refusal->field.c_str(), refusal->reason.c_str());
+    // A model file's own period, raw flag and baud that its link cannot carry are its configuration's fault; a
+    // period or raw flag from the command line (or the preset) is the command line's. A pseudo-terminal carries the
+    // bytes as fast as they come (serve_pty_command): no baud rate is simulated there, so nothing to refuse.
+    if (const auto refusal = o.pty ? std::nullopt : sim::link_capacity_refusal(h.model)) {
+        const bool options_changed = fw.output_period_ms != file_fw.output_period_ms || fw.raw != file_fw.raw;
+        if (!o.model_file.empty() && !options_changed) throw ConfigError(o.model_file, "link.baud", *refusal);
+        throw UsageError(*refusal);
+    }
+    if (o.duration_s) h.duration_s = *o.duration_s;
+    if (o.warm_s) h.warm_up_s = *o.warm_s;
+    // A billion seconds (32 years of board time) is far beyond any run, and keeps the output count exact.
+    if (h.duration_s > 1e9) {
+        throw UsageError("--duration: at most 1e9 s, got " + significant(h.duration_s, 6));
+    }
+    // With --pty the output period is the recorder's, and --duration only bounds how long the board is served.
+    if (!o.pty && h.duration_s < fw.output_period_ms / 1000.0)
+        throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
+    set_target(o, h);
+    return h;
+}
+
+}  // namespace driftlab::host::cli

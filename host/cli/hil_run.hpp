@@ -1,0 +1,60 @@
+// What `driftlab hil` is asked to run (cmd_hil.cpp): its options, checked against each other, the run they make
+// (the model with the preset's and the command line's CONFIG over its own, the duration, the target), and running it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "sim/hil/hil.hpp"
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+#include "sim/avr/avr_hil.hpp"
+#endif
+
+namespace driftlab::host::cli {
+
+struct HilCliOptions {
+    std::string preset = "fig3";
+    std::optional<double> duration_s;
+    std::optional<double> period_s;
+    std::optional<int> window;
+    std::optional<int> conversions;
+    std::optional<int> order;
+    std::optional<double> warm_s;
+    std::string model_file;
+    std::uint64_t seed = 1;
+    bool raw = false;
+    bool stream = false;
+    std::string output;
+    bool json = false;
+    std::string target = "native";  // native | avr (the real ELF in simavr, docs/avr-in-the-loop.md)
+    std::string elf;                // AVR firmware; default: the one this build made
+    int gdb_port = 0;               // > 0: simavr's gdb stub on this port, CPU stopped until avr-gdb continues
+    bool cycles = false;            // AVR: also print the firmware's cycle budget at this configuration
+    bool pty = false;               // serve the board on a pseudo-terminal instead of running a host
+    std::optional<double> speed;    // --pty: virtual seconds per wall second (1 when not given)
+    std::string pty_link;           // --pty: stable symlink to the pseudo-terminal
+};
+
+/// The run `o` asks for. Throws UsageError for options that belong to another way of running, a configuration the
+/// firmware or the link would refuse because of the command line, and a duration shorter than one output; ConfigError
+/// where the model file's own configuration is at fault.
+sim::HilOptions build_options(const HilCliOptions& o);
+
+/// The run; an emulated AVR that fails (the firmware crashed or stopped converting) is a device's failure
+/// (DeviceError).
+sim::HilSummary run_board(const sim::HilOptions& h, const sim::RecordSink& on_record);
+
+#ifdef DRIFTLAB_HAVE_SIM_AVR
+/// --elf, or the firmware this build made.
+std::string firmware_elf(const HilCliOptions& o);
+
+/// What --cycles measures: every instruction profiled, so a short run of its own rather than the run the log came
+/// from.
+inline const std::string kCycleRun = "5 s of streaming after 0.5 s (no POLL, so no receive interrupts)";
+
+/// The firmware's cycle budget at `h`'s configuration, over kCycleRun.
+sim::avr::CycleBudget cycle_budget(const HilCliOptions& o, const sim::HilOptions& h);
+#endif
+
+}  // namespace driftlab::host::cli
