@@ -12,11 +12,11 @@
 #include "host/gap/comparison.hpp"
 #include "host/gap/explain_parts.hpp"
 #include "host/gap/mean_shapes.hpp"
-#include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
 #include "host/gap/whittle.hpp"
 #include "host/stats/median.hpp"
+#include "host/stats/nelder_mead.hpp"
 #include "host/util/channel_name.hpp"
 #include "host/util/parallel_for.hpp"
 
@@ -194,8 +194,8 @@ Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOpti
         const double v = objective(s);
         if (v < best_value) best_value = v, best = s;
     }
-    const auto nm = nelder_mead(objective, best, {0.7, 0.7},
-                                std::max(8, options.max_evaluations - static_cast<int>(starts.size())));
+    const auto nm = stats::nelder_mead(objective, best, {0.7, 0.7},
+                                       std::max(8, options.max_evaluations - static_cast<int>(starts.size())));
     return {model_at(nm.x), {std::exp(nm.x[0]), std::exp(nm.x[1])}, {}, {}};
 }
 

@@ -12,11 +12,11 @@
 #include "host/gap/comparison.hpp"
 #include "host/gap/explain_parts.hpp"
 #include "host/gap/mean_shapes.hpp"
-#include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
 #include "host/gap/whittle.hpp"
 #include "host/stats/median.hpp"
+#include "host/stats/nelder_mead.hpp"
 #include "host/util/channel_name.hpp"
 #include "host/util/parallel_for.hpp"
 

@@ -9,9 +9,9 @@
 
 #include "host/gap/candidates.hpp"
 #include "host/gap/mean_shapes.hpp"
-#include "host/gap/nelder_mead.hpp"
 #include "host/gap/replicates.hpp"
 #include "host/gap/spectral_fit.hpp"
+#include "host/stats/nelder_mead.hpp"
 #include "host/util/fft_length.hpp"
 #include "host/util/thread_fft.hpp"
 
@@ -219,7 +219,7 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
         explanation.white = std::exp(ln_white[0]);
         return spectral_nll(explanation, c, model, real_p);
     };
-    explanation.white = std::exp(nelder_mead(floor_nll, {std::log(floor_start)}, {0.3}, kFloorEvaluations).x[0]);
+    explanation.white = std::exp(stats::nelder_mead(floor_nll, {std::log(floor_start)}, {0.3}, kFloorEvaluations).x[0]);
     // Whitening compares levels before and after each instant over at most a tenth of the log: a slight random walk
     // (its filter's memory is sqrt(white / increment) samples) keeps a stationary spectrum's 1/w^2 low-frequency gain
     // from weighing the whole log's mean, which the eq. 1 fit has already bent. The rival's steps are located under

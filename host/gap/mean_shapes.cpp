@@ -13,8 +13,8 @@
 
 #include <Eigen/Dense>
 
-#include "host/gap/nelder_mead.hpp"
 #include "host/gap/whittle.hpp"
+#include "host/stats/nelder_mead.hpp"
 
 namespace driftlab::host::gap {
 
@@ -154,7 +154,7 @@ TwoExponentials fit_two_exponentials(const std::vector<double>& t_s, const std::
     // amplitudes that grow without bound while the residual hardly changes.
     const auto on_grid = [&](double x) { return std::clamp(std::exp(x), grid.front(), grid.back()); };
     double level = 0.0;
-    const auto nm = nelder_mead(
+    const auto nm = stats::nelder_mead(
         [&](const std::vector<double>& x) {
             Eigen::VectorXd c;
             double l;
@@ -227,7 +227,7 @@ ExponentialAndSine fit_exponential_and_sine(const std::vector<double>& t_s, cons
     // Within the grid's range: a period beyond the span is a slope with an unbounded amplitude.
     const auto tau_of = [&](double x) { return std::clamp(std::exp(x), taus.front(), taus.back()); };
     const auto period_of = [&](double x) { return std::clamp(std::exp(x), periods.front(), periods.back()); };
-    const auto nm = nelder_mead(
+    const auto nm = stats::nelder_mead(
         [&](const std::vector<double>& x) {
             Eigen::VectorXd coef;
             double level;

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "host/gap/candidates.hpp"
-#include "host/gap/nelder_mead.hpp"
+#include "host/stats/nelder_mead.hpp"
 #include "sim/effects/flicker.hpp"
 
 namespace driftlab::host::gap {
@@ -93,8 +93,8 @@ SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, con
         const auto nll_at = [&](const std::vector<double>& ln_white) {
             return whittle_nll(p, expected(model_spectrum({}, c, {}, model, std::exp(ln_white[0]))));
         };
-        const auto nm = nelder_mead(nll_at, {std::log(floor_only_white(p, unit_floor, p.power.size() / 2))}, {0.5},
-                                    kRefineEvaluationsPerParameter);
+        const auto nm = stats::nelder_mead(nll_at, {std::log(floor_only_white(p, unit_floor, p.power.size() / 2))},
+                                           {0.5}, kRefineEvaluationsPerParameter);
         out.white = std::exp(nm.x[0]);
         out.nll = nm.value;
         return out;
@@ -139,8 +139,8 @@ SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, con
             if (value < best_value) best_value = value, best = x;
         }
     }
-    const auto nm = nelder_mead(nll_at, best, std::vector<double>(best.size(), 0.5),
-                                kRefineEvaluationsPerParameter * static_cast<int>(best.size()));
+    const auto nm = stats::nelder_mead(nll_at, best, std::vector<double>(best.size(), 0.5),
+                                       kRefineEvaluationsPerParameter * static_cast<int>(best.size()));
     out.white = std::exp(nm.x[0]);
     out.params = params_of(nm.x);
     out.nll = nm.value;

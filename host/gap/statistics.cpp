@@ -11,7 +11,7 @@
 #include "host/fit/lm_fit.hpp"
 #include "host/gap/code_density.hpp"
 #include "host/gap/event_statistics.hpp"
-#include "host/gap/spectral.hpp"
+#include "host/stats/spectral.hpp"
 #include "host/util/format_number.hpp"
 
 namespace driftlab::host::gap {
@@ -170,7 +170,7 @@ BatteryResult compute_battery(const std::vector<double>& t_s,
     const std::array<Runs, 2> parts{runs_of(fitting, true), runs_of(fitting, false)};  // fitting, held-out
     const double tau0 = options.sample_period_s;
     // Each analysed channel's transform per part (fitting, held-out), shared by its band power and the coherences.
-    std::array<std::array<BandSpectrum, 2>, kChannelCount> spectra;
+    std::array<std::array<stats::BandSpectrum, 2>, kChannelCount> spectra;
     const auto band_label = [&](std::size_t j) {
         const double f_hi = 0.5 / tau0 / std::ldexp(1.0, static_cast<int>(j));
         return "f=" + short_number(f_hi / 2) + ".." + short_number(f_hi) + "Hz";
@@ -215,7 +215,7 @@ BatteryResult compute_battery(const std::vector<double>& t_s,
             const std::vector<double> part = part_of(e, rows);
             const std::vector<double> part_y = part_of(yc, rows);
             const std::size_t len = part.size();
-            const auto adev = octave_oadev(part, std::max<std::size_t>(1, len / 8));
+            const auto adev = stats::octave_oadev(part, std::max<std::size_t>(1, len / 8));
             for (std::size_t j = 0; j < adev.size(); ++j) {
                 const double tau = tau0 * std::ldexp(1.0, static_cast<int>(j));
                 out.add(log_floor(adev[j]),
@@ -223,12 +223,12 @@ BatteryResult compute_battery(const std::vector<double>& t_s,
                          kLogRatioMargin},
                         out.wants_layout() ? "tau=" + multiple_seconds_text(tau) : "");
             }
-            spectra[c][static_cast<std::size_t>(s)] = band_spectrum(part);
-            const auto psd = octave_band_power(spectra[c][static_cast<std::size_t>(s)]);
+            spectra[c][static_cast<std::size_t>(s)] = stats::band_spectrum(part);
+            const auto psd = stats::octave_band_power(spectra[c][static_cast<std::size_t>(s)]);
             for (std::size_t j = 0; j < psd.size(); ++j)
                 out.add(log_floor(psd[j]),
                         {"psd", name, ci, out.wants_layout() ? band_label(j) : "", seg, true, kPsdMargin});
-            const auto acf = octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
+            const auto acf = stats::octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
             for (std::size_t j = 0; j < acf.size(); ++j) {
                 std::string label, text;
                 if (out.wants_layout()) {
@@ -262,8 +262,8 @@ BatteryResult compute_battery(const std::vector<double>& t_s,
                 const double r = correlation(part_of(result.residual[a], rows), part_of(result.residual[b], rows));
                 out.add(r, {"corr", pair, -1, "lag 0", seg, false, kCorrMargin});
                 // Shared content in one band (a common disturbance), or at a short lag, which lag 0 dilutes or misses.
-                const auto coh = octave_band_coherence(spectra[a][static_cast<std::size_t>(s)],
-                                                       spectra[b][static_cast<std::size_t>(s)]);
+                const auto coh = stats::octave_band_coherence(spectra[a][static_cast<std::size_t>(s)],
+                                                              spectra[b][static_cast<std::size_t>(s)]);
                 // atanh(sqrt(coherence)) is near Gaussian with a variance set by the band's bins alone (Enochson and
                 // Goodman's transform): raw coherence in a band of few bins is skewed, and its z would inflate the
                 // family-wise threshold of every cell.

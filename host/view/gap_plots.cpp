@@ -8,7 +8,7 @@
 
 #include "host/fit/lm_fit.hpp"
 #include "host/gap/replicates.hpp"
-#include "host/gap/spectral.hpp"
+#include "host/stats/spectral.hpp"
 #include "host/util/format_number.hpp"
 #include "host/view/gap_phrases.hpp"
 #include "host/view/gnuplot.hpp"
@@ -99,7 +99,7 @@ ReplicateBands replicate_bands(const GapModel& model, const LogData& log, std::s
         if (range.real) req.raw_codes = &raw;
         const sim::Outputs sim = sim::simulate_outputs(model, req, gap::replicate_seed(seed, r));
         const auto residual = fit::fit_drift(log.t_s, sim[c], start_at_model(model, static_cast<Channel>(c))).residual;
-        bands.adev.widen(gap::octave_oadev(residual, max_m));
+        bands.adev.widen(stats::octave_oadev(residual, max_m));
         bands.mean.widen(binned_mean(residual, edges));
         if (range.real) bands.codes.widen(code_shares(raw[c], range.lowest, range.highest));
     }
@@ -142,7 +142,7 @@ void plot_channel(std::ostream& md, const GapResult& r, const LogData& log, std:
                   const GapOptions& options, const std::vector<std::size_t>& edges, const std::vector<double>& bin_t) {
     const std::size_t max_m = std::max<std::size_t>(1, log.size() / 8);
     const auto residual = fit::fit_drift(log.t_s, log.counts[c]).residual;
-    const auto real = gap::octave_oadev(residual, max_m);
+    const auto real = stats::octave_oadev(residual, max_m);
     CodeRange range;
     if (r.raw_codes[c]) {
         range.real = &log.optional_columns.at(std::string("raw_") + kChannelNames[c]);

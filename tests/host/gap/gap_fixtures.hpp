@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../stats/white_noise.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/plain_recording.hpp"
 #include "host/log/log_data.hpp"
@@ -18,14 +19,7 @@
 
 namespace driftlab::host::gap::testing {
 
-/// n Gaussian samples of standard deviation sigma.
-inline std::vector<double> white(std::size_t n, double sigma, unsigned seed) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> d(0.0, sigma);
-    std::vector<double> v(n);
-    for (double& x : v) x = d(rng);
-    return v;
-}
+using host::testing::white;
 
 /// Diagnosis options for small test logs: 20 replicates, seed 5, one effect added, a short spikes fit.
 inline GapOptions small_options() {

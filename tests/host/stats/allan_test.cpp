@@ -1,6 +1,8 @@
 // Allan-family deviations: closed-form shapes on simulated data, invariances, and gap handling.
 #include <gtest/gtest.h>
 
+#include "white_noise.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -14,13 +16,7 @@
 namespace driftlab::host::stats {
 namespace {
 
-std::vector<double> white(std::size_t n, double sigma, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> g(0.0, sigma);
-    std::vector<double> v(n);
-    for (double& x : v) x = g(rng);
-    return v;
-}
+using testing::white;
 
 double one(const PhaseRecord& r, Deviation d, std::int64_t m) {
     const std::int64_t ms[] = {m};

@@ -15,8 +15,8 @@
 #include "host/fit/drift_analysis.hpp"
 #include "host/gap/calibrate.hpp"
 #include "host/gap/diagnose.hpp"
-#include "host/gap/spectral.hpp"
 #include "host/gap_eval/truth.hpp"
+#include "host/stats/spectral.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/units.hpp"
@@ -85,7 +85,7 @@ TEST(GapReport, TheReportExplainsThePlantedEffectAndItsPlotsShowTheGapClosing) {
     const auto adev_real = testing::plot_block(dir / "gap_adev_gyro.dat", 2);
     ASSERT_FALSE(adev_real.empty());
     const auto residual = fit::fit_drift(p.log.t_s, p.log.counts[channel_index(Channel::gyro)]).residual;
-    const double adev_counts = octave_oadev(residual, p.log.size() / 8).front();
+    const double adev_counts = stats::octave_oadev(residual, p.log.size() / 8).front();
     EXPECT_NEAR(adev_real[0][1], adev_counts * kGyroDpsPerCount, 1e-4 * adev_counts * kGyroDpsPerCount);
     EXPECT_NE(md.find("one count is 0.176 deg/s on gyro."), std::string::npos);
 }

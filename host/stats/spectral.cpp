@@ -1,5 +1,5 @@
 // Octave-grid ADEV, band power, band coherence and lag-band autocorrelation; see spectral.hpp.
-#include "host/gap/spectral.hpp"
+#include "host/stats/spectral.hpp"
 
 #include <cmath>
 #include <complex>
@@ -9,7 +9,7 @@
 #include "host/stats/autocorrelation.hpp"
 #include "host/util/thread_fft.hpp"
 
-namespace driftlab::host::gap {
+namespace driftlab::host::stats {
 
 namespace {
 
@@ -107,4 +107,4 @@ std::vector<double> octave_lag_acf(const std::vector<double>& y, std::size_t max
     return out;
 }
 
-}  // namespace driftlab::host::gap
+}  // namespace driftlab::host::stats

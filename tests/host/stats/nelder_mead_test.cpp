@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "host/gap/nelder_mead.hpp"
+#include "host/stats/nelder_mead.hpp"
 
-namespace driftlab::host::gap {
+namespace driftlab::host::stats {
 namespace {
 
 TEST(NelderMead, FindsTheMinimumOfAQuadraticBowl) {
@@ -79,4 +79,4 @@ TEST(NelderMead, AnExceptionFromTheObjectiveReachesTheCaller) {
 }
 
 }  // namespace
-}  // namespace driftlab::host::gap
+}  // namespace driftlab::host::stats

@@ -1,5 +1,5 @@
 // Nelder-Mead through NLopt; see nelder_mead.hpp.
-#include "host/gap/nelder_mead.hpp"
+#include "host/stats/nelder_mead.hpp"
 
 #include <nlopt.h>
 
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace driftlab::host::gap {
+namespace driftlab::host::stats {
 
 namespace {
 
@@ -60,4 +60,4 @@ NelderMeadResult nelder_mead(const std::function<double(const std::vector<double
     return result;
 }
 
-}  // namespace driftlab::host::gap
+}  // namespace driftlab::host::stats

@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 
-#include "gap_fixtures.hpp"
+#include "white_noise.hpp"
 
-#include "host/gap/spectral.hpp"
+#include "host/stats/spectral.hpp"
 
-namespace driftlab::host::gap {
+namespace driftlab::host::stats {
 namespace {
 
 using testing::white;
@@ -115,4 +115,4 @@ TEST(Spectral, Ar1LagBandsMatchGeometricAutocorrelation) {
 }
 
 }  // namespace
-}  // namespace driftlab::host::gap
+}  // namespace driftlab::host::stats

@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-namespace driftlab::host::gap {
+namespace driftlab::host::stats {
 
 struct NelderMeadResult {
     std::vector<double> x;
@@ -19,4 +19,4 @@ struct NelderMeadResult {
 NelderMeadResult nelder_mead(const std::function<double(const std::vector<double>&)>& f,
                              const std::vector<double>& start, const std::vector<double>& step, int max_evaluations);
 
-}  // namespace driftlab::host::gap
+}  // namespace driftlab::host::stats

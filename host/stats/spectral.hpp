@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace driftlab::host::gap {
+namespace driftlab::host::stats {
 
 /// Overlapping Allan deviation of the rate series `y` (sample spacing tau0) at m = 1, 2, 4, ... while m <= max_m
 /// (NIST SP 1065 eq. 14, via the phase x = cumsum(y) tau0). Returns one value per m [unit of y].
@@ -43,4 +43,4 @@ std::vector<double> octave_band_coherence(const BandSpectrum& a, const BandSpect
 /// [4,7], ... while the band's upper lag is <= max_lag.
 std::vector<double> octave_lag_acf(const std::vector<double>& y, std::size_t max_lag);
 
-}  // namespace driftlab::host::gap
+}  // namespace driftlab::host::stats
