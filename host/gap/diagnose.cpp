@@ -168,7 +168,10 @@ std::string noise_free_text(const std::vector<NoiseFreeChannel>& channels) {
     return out;
 }
 
-GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options) {
+namespace {
+
+// What no diagnosis can run on: too few replicates or samples, a channel the recording lacks.
+void refuse_request(const LogData& log, const GapOptions& options) {
     if (options.replicates < 10) throw UsageError("--replicates: need at least 10");
     if (!(options.fit_fraction > 0.2 && options.fit_fraction < 0.9))
         throw UsageError("fit fraction must be in (0.2, 0.9)");
@@ -180,7 +183,11 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         if (options.channels[c] && !log.recorded[c])
             throw UsageError(std::string("--channel ") + kChannelNames[c] + ": " + log.source_name +
                              " does not record it (a plain recording has the channels its --as options map)");
-    GapResult result;
+}
+
+// The base simulator calibrated to the log, with the model's own effects, and the channels it can be compared on.
+void calibrate_and_select(GapResult& result, const LogData& log, const sim::SimModel& unit, const GapOptions& options,
+                          const std::array<const std::vector<double>*, kChannelCount>& y) {
     result.channels = analysed_channels(log, options);
     result.constant_channels = constant_channels(log, options);
     if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; })) {
@@ -189,17 +196,11 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
             log.source_name, 0,
             "no selected channel varies" + (constant.empty() ? "" : " (" + constant + ")") + ": nothing to compare");
     }
-
-    const auto tell = [&](const std::string& stage) {
-        if (options.progress) options.progress(stage);
-    };
-    tell("calibrating the base simulator");
-    std::array<const std::vector<double>*, kChannelCount> y{};
-    for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &log.counts[c];
+    if (options.progress) options.progress("calibrating the base simulator");
     std::array<double, kChannelCount> spread{};
     result.base = calibrate_base(log, unit, result.channels, options.seed, &spread);
     if (!unit.effects.empty()) {
-        tell("fitting the model's own effects");
+        if (options.progress) options.progress("fitting the model's own effects");
         result.given = add_given_effects(result.base, unit.effects, log.t_s, y, result.channels, spread, options.seed);
     }
     // Before the channels left out below: a stuck channel with one corrupt row is named for the row as well.
@@ -214,6 +215,63 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     if (std::none_of(result.channels.begin(), result.channels.end(), [](bool b) { return b; }))
         throw DataError(log.source_name, 0,
                         "no selected channel has noise to compare (" + noise_free_text(result.noise_free) + ")");
+}
+
+// A raw-mode log's raw column (integral codes, one per row) gives the channel its code-histogram cells.
+RawCodes raw_code_columns(const LogData& log, const std::array<bool, kChannelCount>& channels,
+                          BatteryOptions& battery) {
+    RawCodes raw{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        const auto column = log.optional_columns.find(std::string("raw_") + kChannelNames[c]);
+        if (!channels[c] || column == log.optional_columns.end() || column->second.size() != log.size() ||
+            !std::all_of(column->second.begin(), column->second.end(),
+                         [](double v) { return std::isfinite(v) && v == std::round(v); }))
+            continue;
+        raw[c] = &column->second;
+        battery.raw_codes[c] = true;
+    }
+    return raw;
+}
+
+// The explanation search on the channels with located cells (for a diffuse gap, on every channel), and the verdict.
+void search(GapResult& result, const LogData& log, const GapOptions& options,
+            const std::array<const std::vector<double>*, kChannelCount>& y, const BatteryOptions& battery,
+            const RawCodes& raw) {
+    std::array<bool, kChannelCount> open = result.located.empty() ? result.channels : std::array<bool, kChannelCount>{};
+    for (const auto& l : result.located) {
+        const int ci = result.layout[l.index].channel_index;
+        if (ci >= 0) open[static_cast<std::size_t>(ci)] = true;
+    }
+    ExplainOptions eo = options.explain_options;
+    if (options.search_diffuse) eo.diffuse_alpha = options.alpha;
+    eo.alpha = options.alpha;
+    eo.seed = options.seed;
+    eo.threads = options.threads;
+    eo.eval_replicates = options.replicates;
+    eo.progress = options.progress;
+    eo.given = &result.given;
+    ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo, raw);
+    result.tried = std::move(ex.tried);
+    result.accepted = std::move(ex.accepted);
+    result.paths = std::move(ex.paths);
+    result.final_model = std::move(ex.model);
+    result.whole_log_model = std::move(ex.whole_log_model);
+    // Only located cells make a gap no effect explains; a diffuse gap's search can name an effect or nothing.
+    const char* nothing = result.located.empty() ? "none" : "unexplained";
+    result.verdict = result.accepted.empty() ? nothing : result.accepted.front().effect;
+}
+
+}  // namespace
+
+GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options) {
+    refuse_request(log, options);
+    const auto tell = [&](const std::string& stage) {
+        if (options.progress) options.progress(stage);
+    };
+    std::array<const std::vector<double>*, kChannelCount> y{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) y[c] = &log.counts[c];
+    GapResult result;
+    calibrate_and_select(result, log, unit, options, y);
     result.timing = check_timing(log, result.base.smoothing.sample_period_s);
     result.left_out = log.cuts;
     result.saturated = saturated_channels(log, result.channels);
@@ -223,17 +281,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     battery.holdout = options.holdout;
     battery.fit_fraction = options.fit_fraction;
     battery.sample_period_s = result.base.smoothing.sample_period_s;
-    // A raw-mode log's raw column (integral codes, one per row) gives the channel its code-histogram cells.
-    RawCodes raw{};
-    for (std::size_t c = 0; c < kChannelCount; ++c) {
-        const auto column = log.optional_columns.find(std::string("raw_") + kChannelNames[c]);
-        if (!result.channels[c] || column == log.optional_columns.end() || column->second.size() != log.size() ||
-            !std::all_of(column->second.begin(), column->second.end(),
-                         [](double v) { return std::isfinite(v) && v == std::round(v); }))
-            continue;
-        raw[c] = &column->second;
-        battery.raw_codes[c] = true;
-    }
+    const RawCodes raw = raw_code_columns(log, result.channels, battery);
     result.raw_codes = battery.raw_codes;
     if (!any_raw_codes(result)) result.not_tried = not_tried_without_raw_codes();
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
@@ -258,30 +306,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     if (result.located.empty() && !result.diffuse_searched) {
         result.verdict = "none";
     } else if (options.explain) {
-        // The channels with located cells; for a diffuse gap, every channel (each is judged on its own bound).
-        std::array<bool, kChannelCount> open =
-            result.located.empty() ? result.channels : std::array<bool, kChannelCount>{};
-        for (const auto& l : result.located) {
-            const int ci = result.layout[l.index].channel_index;
-            if (ci >= 0) open[static_cast<std::size_t>(ci)] = true;
-        }
-        ExplainOptions eo = options.explain_options;
-        if (options.search_diffuse) eo.diffuse_alpha = options.alpha;
-        eo.alpha = options.alpha;
-        eo.seed = options.seed;
-        eo.threads = options.threads;
-        eo.eval_replicates = options.replicates;
-        eo.progress = options.progress;
-        eo.given = &result.given;
-        ExplainResult ex = explain(result.base, log.t_s, y, open, battery, eo, raw);
-        result.tried = std::move(ex.tried);
-        result.accepted = std::move(ex.accepted);
-        result.paths = std::move(ex.paths);
-        result.final_model = std::move(ex.model);
-        result.whole_log_model = std::move(ex.whole_log_model);
-        // Only located cells make a gap no effect explains; a diffuse gap's search can name an effect or nothing.
-        const char* nothing = result.located.empty() ? "none" : "unexplained";
-        result.verdict = result.accepted.empty() ? nothing : result.accepted.front().effect;
+        search(result, log, options, y, battery, raw);
     } else {
         result.verdict = "unexplained";
     }

@@ -160,98 +160,86 @@ std::vector<bool> fitting_mask(const std::vector<double>& t_s, const BatteryOpti
     return mask;
 }
 
-BatteryResult compute_battery(const std::vector<double>& t_s,
-                              const std::array<const std::vector<double>*, kChannelCount>& y,
-                              const BatteryOptions& options, std::vector<Cell>* layout, const RawCodes& raw) {
-    BatteryResult result;
-    Builder out(result.values, layout);
+// The label of octave band j of a spectrum sampled at tau0: "f=LO..HIHz".
+std::string band_label(double tau0, std::size_t j) {
+    const double f_hi = 0.5 / tau0 / std::ldexp(1.0, static_cast<int>(j));
+    return "f=" + short_number(f_hi / 2) + ".." + short_number(f_hi) + "Hz";
+}
+
+// The residual `e`'s mean and variance over each tenth of the log.
+void add_window_cells(Builder& out, const std::vector<double>& t_s, const std::vector<double>& e,
+                      const std::vector<bool>& fitting, const std::string& name, int ci) {
     const std::size_t n = t_s.size();
-    const std::vector<bool> fitting = fitting_mask(t_s, options);
-    const std::array<Runs, 2> parts{runs_of(fitting, true), runs_of(fitting, false)};  // fitting, held-out
-    const double tau0 = options.sample_period_s;
-    // Each analysed channel's transform per part (fitting, held-out), shared by its band power and the coherences.
-    std::array<std::array<stats::BandSpectrum, 2>, kChannelCount> spectra;
-    const auto band_label = [&](std::size_t j) {
-        const double f_hi = 0.5 / tau0 / std::ldexp(1.0, static_cast<int>(j));
-        return "f=" + short_number(f_hi / 2) + ".." + short_number(f_hi) + "Hz";
-    };
-
-    for (std::size_t c = 0; c < kChannelCount; ++c) {
-        if (!options.channels[c]) continue;
-        const auto& yc = *y[c];
-        fit::FitOptions fo;
-        fo.start = options.fit_start[c];
-        const fit::FitResult f = fit::fit_drift(t_s, yc, fo);
-        result.drift[c] = f.parameters;
-        result.residual[c] = f.residual;
-        const std::vector<double>& e = result.residual[c];
-        const std::string name = kChannelNames[c];
-        const int ci = static_cast<int>(c);
-        const bool codes = options.raw_codes[c];
-        if (codes && (!raw[c] || raw[c]->size() != n))
-            throw std::invalid_argument(std::string("compute_battery: no raw codes for ") + name);
-
-        for (int w = 0; w < kTimeWindows; ++w) {
-            const std::size_t a = n * static_cast<std::size_t>(w) / kTimeWindows;
-            const std::size_t b = n * static_cast<std::size_t>(w + 1) / kTimeWindows;
-            double mean = 0.0, var = 0.0;
-            for (std::size_t i = a; i < b; ++i) mean += e[i];
-            mean /= static_cast<double>(b - a);
-            for (std::size_t i = a; i < b; ++i) var += (e[i] - mean) * (e[i] - mean);
-            var /= static_cast<double>(std::max<std::size_t>(1, b - a - 1));
-            const Segment seg = fitting[(a + b) / 2] ? Segment::fit : Segment::heldout;
-            std::string label, text;
-            if (out.wants_layout()) {
-                label = "t=" + seconds_label(t_s[a]) + ".." + seconds_label(t_s[b - 1]);
-                const double length = t_s[b - 1] - t_s[a];
-                text = "t=" + window_seconds_text(t_s[a], length) + ".." + window_seconds_text(t_s[b - 1], length);
-            }
-            out.add(mean, {"mean", name, ci, label, seg, false, kMeanMarginCounts}, text);
-            out.add(log_floor(var), {"var", name, ci, label, seg, true, 2.0 * kLogRatioMargin}, text);
+    for (int w = 0; w < kTimeWindows; ++w) {
+        const std::size_t a = n * static_cast<std::size_t>(w) / kTimeWindows;
+        const std::size_t b = n * static_cast<std::size_t>(w + 1) / kTimeWindows;
+        double mean = 0.0, var = 0.0;
+        for (std::size_t i = a; i < b; ++i) mean += e[i];
+        mean /= static_cast<double>(b - a);
+        for (std::size_t i = a; i < b; ++i) var += (e[i] - mean) * (e[i] - mean);
+        var /= static_cast<double>(std::max<std::size_t>(1, b - a - 1));
+        const Segment seg = fitting[(a + b) / 2] ? Segment::fit : Segment::heldout;
+        std::string label, text;
+        if (out.wants_layout()) {
+            label = "t=" + seconds_label(t_s[a]) + ".." + seconds_label(t_s[b - 1]);
+            const double length = t_s[b - 1] - t_s[a];
+            text = "t=" + window_seconds_text(t_s[a], length) + ".." + window_seconds_text(t_s[b - 1], length);
         }
-        for (int s = 0; s < 2; ++s) {
-            const Segment seg = s == 0 ? Segment::fit : Segment::heldout;
-            const Runs& rows = parts[static_cast<std::size_t>(s)];
-            const std::vector<double> part = part_of(e, rows);
-            const std::vector<double> part_y = part_of(yc, rows);
-            const std::size_t len = part.size();
-            const auto adev = stats::octave_oadev(part, std::max<std::size_t>(1, len / 8));
-            for (std::size_t j = 0; j < adev.size(); ++j) {
-                const double tau = tau0 * std::ldexp(1.0, static_cast<int>(j));
-                out.add(log_floor(adev[j]),
-                        {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau) : "", seg, true,
-                         kLogRatioMargin},
-                        out.wants_layout() ? "tau=" + multiple_seconds_text(tau) : "");
-            }
-            spectra[c][static_cast<std::size_t>(s)] = stats::band_spectrum(part);
-            const auto psd = stats::octave_band_power(spectra[c][static_cast<std::size_t>(s)]);
-            for (std::size_t j = 0; j < psd.size(); ++j)
-                out.add(log_floor(psd[j]),
-                        {"psd", name, ci, out.wants_layout() ? band_label(j) : "", seg, true, kPsdMargin});
-            const auto acf = stats::octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
-            for (std::size_t j = 0; j < acf.size(); ++j) {
-                std::string label, text;
-                if (out.wants_layout()) {
-                    const double lo = std::ldexp(1.0, static_cast<int>(j));
-                    label = "lag=" + seconds_label(lo * tau0) + ".." + seconds_label((2 * lo - 1) * tau0);
-                    text = "lag=" + multiple_seconds_text(lo * tau0) +
-                           (lo > 1 ? ".." + multiple_seconds_text((2 * lo - 1) * tau0) : "");
-                }
-                out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin}, text);
-            }
-            out.add(frac_dispersion(part_y),
-                    {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
-            if (codes)
-                out.add(code_density_excess(part_of(*raw[c], rows), part_y),
-                        {"codes", name, ci, "raw-code histogram", seg, true, kLogRatioMargin});
-            out.add(log_kurtosis(part), {"tail", name, ci, "kurtosis", seg, true, kTailMargin});
-            if (len >= kJumpBlocks)
-                out.add(log_jump_ratio(part, kJumpBlocks),
-                        {"jump", name, ci,
-                         out.wants_layout() ? "largest of " + std::to_string(kJumpBlocks) + " block steps" : "", seg,
-                         true, kJumpMargin});
-        }
+        out.add(mean, {"mean", name, ci, label, seg, false, kMeanMarginCounts}, text);
+        out.add(log_floor(var), {"var", name, ci, label, seg, true, 2.0 * kLogRatioMargin}, text);
     }
+}
+
+// One part's (fitting or held-out) cells of a channel: Allan deviation, band power and autocorrelation by octave,
+// fraction-of-count occupancy, raw-code histogram (with `raw`), kurtosis and the largest block step. Returns the
+// part's transform, which the coherences share.
+stats::BandSpectrum add_part_cells(Builder& out, const std::vector<double>& e, const std::vector<double>& yc,
+                                   const std::vector<double>* raw, const Runs& rows, Segment seg, double tau0,
+                                   const std::string& name, int ci) {
+    const std::vector<double> part = part_of(e, rows);
+    const std::vector<double> part_y = part_of(yc, rows);
+    const std::size_t len = part.size();
+    const auto adev = stats::octave_oadev(part, std::max<std::size_t>(1, len / 8));
+    for (std::size_t j = 0; j < adev.size(); ++j) {
+        const double tau = tau0 * std::ldexp(1.0, static_cast<int>(j));
+        out.add(log_floor(adev[j]),
+                {"adev", name, ci, out.wants_layout() ? "tau=" + seconds_label(tau) : "", seg, true, kLogRatioMargin},
+                out.wants_layout() ? "tau=" + multiple_seconds_text(tau) : "");
+    }
+    stats::BandSpectrum spectrum = stats::band_spectrum(part);
+    const auto psd = stats::octave_band_power(spectrum);
+    for (std::size_t j = 0; j < psd.size(); ++j)
+        out.add(log_floor(psd[j]),
+                {"psd", name, ci, out.wants_layout() ? band_label(tau0, j) : "", seg, true, kPsdMargin});
+    const auto acf = stats::octave_lag_acf(part, std::max<std::size_t>(1, len / 8));
+    for (std::size_t j = 0; j < acf.size(); ++j) {
+        std::string label, text;
+        if (out.wants_layout()) {
+            const double lo = std::ldexp(1.0, static_cast<int>(j));
+            label = "lag=" + seconds_label(lo * tau0) + ".." + seconds_label((2 * lo - 1) * tau0);
+            text = "lag=" + multiple_seconds_text(lo * tau0) +
+                   (lo > 1 ? ".." + multiple_seconds_text((2 * lo - 1) * tau0) : "");
+        }
+        out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin}, text);
+    }
+    out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
+    if (raw)
+        out.add(code_density_excess(part_of(*raw, rows), part_y),
+                {"codes", name, ci, "raw-code histogram", seg, true, kLogRatioMargin});
+    out.add(log_kurtosis(part), {"tail", name, ci, "kurtosis", seg, true, kTailMargin});
+    if (len >= kJumpBlocks)
+        out.add(
+            log_jump_ratio(part, kJumpBlocks),
+            {"jump", name, ci, out.wants_layout() ? "largest of " + std::to_string(kJumpBlocks) + " block steps" : "",
+             seg, true, kJumpMargin});
+    return spectrum;
+}
+
+// The cells of each pair of analysed channels: correlation at lag 0 and coherence by octave band, per part.
+void add_pair_cells(Builder& out, const BatteryOptions& options, const BatteryResult& result,
+                    const std::array<Runs, 2>& parts,
+                    const std::array<std::array<stats::BandSpectrum, 2>, kChannelCount>& spectra) {
+    const double tau0 = options.sample_period_s;
     for (std::size_t a = 0; a < kChannelCount; ++a) {
         for (std::size_t b = a + 1; b < kChannelCount; ++b) {
             if (!options.channels[a] || !options.channels[b]) continue;
@@ -268,11 +256,41 @@ BatteryResult compute_battery(const std::vector<double>& t_s,
                 // Goodman's transform): raw coherence in a band of few bins is skewed, and its z would inflate the
                 // family-wise threshold of every cell.
                 for (std::size_t j = 0; j < coh.size(); ++j)
-                    out.add(std::atanh(std::sqrt(std::min(coh[j], 0.999999))),
-                            {"coh", pair, -1, out.wants_layout() ? band_label(j) : "", seg, false, kCoherenceMargin});
+                    out.add(
+                        std::atanh(std::sqrt(std::min(coh[j], 0.999999))),
+                        {"coh", pair, -1, out.wants_layout() ? band_label(tau0, j) : "", seg, false, kCoherenceMargin});
             }
         }
     }
+}
+
+BatteryResult compute_battery(const std::vector<double>& t_s,
+                              const std::array<const std::vector<double>*, kChannelCount>& y,
+                              const BatteryOptions& options, std::vector<Cell>* layout, const RawCodes& raw) {
+    BatteryResult result;
+    Builder out(result.values, layout);
+    const std::vector<bool> fitting = fitting_mask(t_s, options);
+    const std::array<Runs, 2> parts{runs_of(fitting, true), runs_of(fitting, false)};  // fitting, held-out
+    // Each analysed channel's transform per part (fitting, held-out), shared by its band power and the coherences.
+    std::array<std::array<stats::BandSpectrum, 2>, kChannelCount> spectra;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!options.channels[c]) continue;
+        fit::FitOptions fo;
+        fo.start = options.fit_start[c];
+        const fit::FitResult f = fit::fit_drift(t_s, *y[c], fo);
+        result.drift[c] = f.parameters;
+        result.residual[c] = f.residual;
+        const std::string name = kChannelNames[c];
+        const int ci = static_cast<int>(c);
+        if (options.raw_codes[c] && (!raw[c] || raw[c]->size() != t_s.size()))
+            throw std::invalid_argument(std::string("compute_battery: no raw codes for ") + name);
+        add_window_cells(out, t_s, result.residual[c], fitting, name, ci);
+        for (std::size_t s = 0; s < 2; ++s)
+            spectra[c][s] =
+                add_part_cells(out, result.residual[c], *y[c], options.raw_codes[c] ? raw[c] : nullptr, parts[s],
+                               s == 0 ? Segment::fit : Segment::heldout, options.sample_period_s, name, ci);
+    }
+    add_pair_cells(out, options, result, parts, spectra);
     return result;
 }
 

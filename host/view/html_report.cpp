@@ -63,25 +63,9 @@ std::string ci_cell(const fit::Estimate& e) {
     return "[" + to_precision_of(e.ci95[0], e.stderr_) + ", " + to_precision_of(e.ci95[1], e.stderr_) + "]";
 }
 
-}  // namespace
-
-std::string render_html_report(const fit::FileAnalysis& file, const ReportOptions& options) {
-    std::vector<const fit::DriftAnalysis*> ok;
-    for (const auto& s : file.series)
-        if (s.analysis) ok.push_back(&*s.analysis);
-
+// Table 1: the fitted eq. 1 per channel, in counts and in the physical unit.
+std::string drift_table(const fit::FileAnalysis& file) {
     std::string h;
-    h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>driftlab report: " +
-         html_escape(file.path) + "</title><style>" + kStyle + "</style></head><body>\n";
-    const std::time_t now = std::time(nullptr);
-    char stamp[32];
-    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    h += "<h1>Drift analysis</h1>\n<p>File <code>" + html_escape(file.path) + "</code> (" +
-         (file.canonical_log ? "driftlab log" : "plain table") + "), generated " + stamp + " by driftlab.</p>\n";
-    for (const auto& note : file.notes) h += "<p>Note: " + html_escape(note) + "</p>\n";
-    if (file.log) h += recording_section(*file.log);
-
-    // Table 1 equivalent.
     h += "<h2>Turn-on drift, eq. 1: C1 (1 &minus; exp(&minus;t/T)) + C2</h2>\n";
     h += "<table><tr><th>channel</th><th>C1</th><th>C2</th><th>T [s]</th><th>unit</th><th>status</th><th>n</th>"
          "<th>rms</th></tr>\n";
@@ -122,7 +106,12 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     h += "</table>\n" + undetermined;
     if (accel_shown) h += "<p>Note: " + html_escape(kAccelScaleNote) + ".</p>\n";
 
-    // Intervals.
+    return h;
+}
+
+// Each estimate's standard error with its plain and widened 95 % intervals.
+std::string interval_table(const std::vector<const fit::DriftAnalysis*>& ok) {
+    std::string h;
     h += "<h3>Standard errors and 95 % intervals</h3>\n<p>Plain intervals assume a white residual; the widened ones "
          "scale the standard errors by the square root of the residual's integrated autocorrelation time.</p>\n";
     h += "<table><tr><th>channel</th><th>parameter</th><th>value &plusmn; se</th><th>95 %</th><th>95 % widened</th>"
@@ -142,7 +131,11 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     }
     h += "</table>\n";
 
-    // Whiteness.
+    return h;
+}
+
+std::string whiteness_table(const std::vector<const fit::DriftAnalysis*>& ok) {
+    std::string h;
     // 95.5 % had been quoted here: the normal figure, for a constant standard error. The biased estimate (eq. 3)
     // shrinks with the lag, so over lags 1..L-1 white noise lies inside more often (docs/analysis.md §3).
     h += "<h2>Whiteness of the residual (eqs. 2&ndash;4)</h2>\n<p>Ensemble of M sequences of L seconds. For a white "
@@ -165,17 +158,13 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
         for (const auto& warning : a->warnings)
             h += "<div class=\"warn\"><b>" + html_escape(a->data.name) + ":</b> " + html_escape(warning) + "</div>\n";
 
-    // Allan analysis.
-    h += "<h2>Allan analysis</h2>\n";
-    AllanSection allan;
-    try {
-        allan = allan_section(ok);
-        h += allan.html;
-    } catch (const std::exception& e) {
-        h += "<p class=\"bad\">Allan analysis failed: " + html_escape(e.what()) + "</p>\n";
-    }
+    return h;
+}
 
-    // Figures.
+// The paper's Fig. 2-4 per channel and the Allan deviations, as images in the page.
+std::string figures(const std::vector<const fit::DriftAnalysis*>& ok, const AllanSection& allan,
+                    const ReportOptions& options) {
+    std::string h;
     h += "<h2>Figures</h2>\n";
     if (!options.plots) {
         h += "<p>Figures not requested.</p>\n";
@@ -190,6 +179,41 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
             figs.add(allan.plots[i], allan.plot_names[i] + ": overlapping Allan deviation with 68 % intervals");
         h += figs.available ? figs.html : "<p class=\"bad\">Figures unavailable: " + html_escape(figs.error) + "</p>\n";
     }
+    return h;
+}
+
+}  // namespace
+
+std::string render_html_report(const fit::FileAnalysis& file, const ReportOptions& options) {
+    std::vector<const fit::DriftAnalysis*> ok;
+    for (const auto& s : file.series)
+        if (s.analysis) ok.push_back(&*s.analysis);
+
+    std::string h;
+    h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>driftlab report: " +
+         html_escape(file.path) + "</title><style>" + kStyle + "</style></head><body>\n";
+    const std::time_t now = std::time(nullptr);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    h += "<h1>Drift analysis</h1>\n<p>File <code>" + html_escape(file.path) + "</code> (" +
+         (file.canonical_log ? "driftlab log" : "plain table") + "), generated " + stamp + " by driftlab.</p>\n";
+    for (const auto& note : file.notes) h += "<p>Note: " + html_escape(note) + "</p>\n";
+    if (file.log) h += recording_section(*file.log);
+
+    h += drift_table(file);
+    h += interval_table(ok);
+    h += whiteness_table(ok);
+    // Allan analysis.
+    h += "<h2>Allan analysis</h2>\n";
+    AllanSection allan;
+    try {
+        allan = allan_section(ok);
+        h += allan.html;
+    } catch (const std::exception& e) {
+        h += "<p class=\"bad\">Allan analysis failed: " + html_escape(e.what()) + "</p>\n";
+    }
+
+    h += figures(ok, allan, options);
     h += "</body></html>\n";
     return h;
 }
