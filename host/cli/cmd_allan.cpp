@@ -54,18 +54,10 @@ std::vector<stats::Deviation> parse_deviations(const std::string& s) {
     throw UsageError("--deviation: expected oadev, mdev, hdev or all, got '" + s + "'");
 }
 
-void run(const AllanCommandOptions& o) {
-    fit::AllanRequest req;
-    req.deviations = parse_deviations(o.deviation);
-    try {
-        req.grid.grid = stats::parse_tau_grid(o.grid);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--grid: ") + e.what());
-    }
-    req.grid.points_per_decade = o.per_decade;
-    req.remove_drift = !o.keep_drift;
+// The series of a canonical log (`log` set) or a plain file, as --kind and --remove-drift ask (which set `req`).
+std::vector<fit::Series> load_series(const AllanCommandOptions& o, fit::AllanRequest& req, bool& log) {
     fit::OpenedSource source = fit::open_source(o.path);
-    const bool log = source.canonical_log;
+    log = source.canonical_log;
     const ReadOptions read = fit::cut_line_options(source, o.path, o.drop_cut_line);
     std::vector<std::string> names = o.channels;
     if (names.size() == 1 && names[0] == "all") names.clear();
@@ -94,6 +86,21 @@ void run(const AllanCommandOptions& o) {
                                     : "not removed: a plain file is analysed as given";
         series = fit::load_series(std::move(source), o.path, names, "", o.tau0_s);
     }
+    return series;
+}
+
+void run(const AllanCommandOptions& o) {
+    fit::AllanRequest req;
+    req.deviations = parse_deviations(o.deviation);
+    try {
+        req.grid.grid = stats::parse_tau_grid(o.grid);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--grid: ") + e.what());
+    }
+    req.grid.points_per_decade = o.per_decade;
+    req.remove_drift = !o.keep_drift;
+    bool log = false;
+    std::vector<fit::Series> series = load_series(o, req, log);
     const std::vector<std::string> selection =
         series.empty() ? std::vector<std::string>{}
                        : fit::selection_notes(series.front().t_s, o.from_s, o.to_s, o.excluded);

@@ -187,6 +187,43 @@ const char* step_reading(const LevelStep& s) {
 
 bool leaves_step(const LevelStep& s, double alpha) { return s.tested && s.p_value <= alpha && !s.process_beside_steps; }
 
+// The explanation as its replicates simulate it, with only its white floor estimated on the real log's periodogram,
+// so that the statistic means the same on the log and on the replicates.
+SpectralFit explanation_with_floor(const GapModel& model, Channel c, const PartPeriodogram& real_p,
+                                   const std::vector<std::string>& spectral_effects,
+                                   const std::vector<double>& spectral_params) {
+    SpectralFit explanation;
+    explanation.effects = spectral_effects;
+    explanation.params = spectral_params;
+    const double floor_start = fit_spectral({}, c, model, real_p).white;
+    const auto floor_nll = [&](const std::vector<double>& ln_white) {
+        explanation.white = std::exp(ln_white[0]);
+        return spectral_nll(explanation, c, model, real_p);
+    };
+    explanation.white = std::exp(stats::nelder_mead(floor_nll, {std::log(floor_start)}, {0.3}, kFloorEvaluations).x[0]);
+    return explanation;
+}
+
+// Is the explanation more than a stand-in for steps? Its processes refitted beside two steps against the floor
+// beside them (nested: the Schwarz price of the processes' parameters, `count` frequencies). The steps are the
+// least-squares change points in mean placed beside eq. 1's tangent `q`, then refitted together with eq. 1 (linear in
+// its level and rise at a given time constant, which is profiled over a grid): the eq. 1 fit has bent toward a hop
+// and would otherwise leave a slow remainder for a process to take up.
+void test_process_beside_steps(LevelStep& out, const GapModel& model, Channel c, const std::vector<double>& t_s,
+                               const std::vector<double>& y, const std::vector<double>& r, const Eigen::MatrixXd& q,
+                               const std::vector<std::string>& spectral_effects,
+                               const std::vector<double>& spectral_params, std::size_t count) {
+    const std::vector<bool> all(r.size(), true);
+    const auto [c1, c2] = best_two_cuts(StepsBesideColumns(r, q), edge_outputs(r.size()));
+    const std::vector<double> stepped = eq1_and_steps_residual(t_s, y, c1, c2);
+    const PartPeriodogram stepped_p = part_periodogram(stepped, all);
+    const SpectralFit beside = fit_spectral(spectral_effects, c, model, stepped_p, spectral_params);
+    out.process_gain = fit_spectral({}, c, model, stepped_p).nll - beside.nll;
+    out.process_margin =
+        static_cast<double>(spectral_params.size()) * 0.5 * parameter_price(InformationCriterion::bic, count);
+    out.process_beside_steps = out.process_gain > out.process_margin;
+}
+
 LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<double>& t_s,
                           const std::vector<double>& y, const std::vector<std::string>& spectral_effects,
                           const std::vector<double>& spectral_params, int replicates, std::uint64_t seed, int threads,
@@ -211,15 +248,7 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     const std::vector<double> floor_acov = white_floor_autocovariance(model.smoothing);
     // The explanation is the model as its replicates simulate it; only its white floor is estimated, on the real
     // log, so that the statistic means the same on the log and on the replicates.
-    SpectralFit explanation;
-    explanation.effects = spectral_effects;
-    explanation.params = spectral_params;
-    const double floor_start = fit_spectral({}, c, model, real_p).white;
-    const auto floor_nll = [&](const std::vector<double>& ln_white) {
-        explanation.white = std::exp(ln_white[0]);
-        return spectral_nll(explanation, c, model, real_p);
-    };
-    explanation.white = std::exp(stats::nelder_mead(floor_nll, {std::log(floor_start)}, {0.3}, kFloorEvaluations).x[0]);
+    const SpectralFit explanation = explanation_with_floor(model, c, real_p, spectral_effects, spectral_params);
     // Whitening compares levels before and after each instant over at most a tenth of the log: a slight random walk
     // (its filter's memory is sqrt(white / increment) samples) keeps a stationary spectrum's 1/w^2 low-frequency gain
     // from weighing the whole log's mean, which the eq. 1 fit has already bent. The rival's steps are located under
@@ -260,19 +289,7 @@ LevelStep test_level_step(const GapModel& model, Channel c, const std::vector<do
     // price each (the statistic is in nll units).
     const double extra = 4.0 - static_cast<double>(spectral_params.size());
     out.margin = std::max(0.0, extra) * 0.5 * parameter_price(InformationCriterion::bic, real_p.count);
-    // Is the explanation more than a stand-in for steps? Its processes refitted beside two steps against the floor
-    // beside them (nested: the Schwarz price of the processes' parameters). The steps are the least-squares change
-    // points in mean placed beside eq. 1's tangent, then refitted together with eq. 1 (linear in its level and rise
-    // at a given time constant, which is profiled over a grid): the eq. 1 fit has bent toward a hop and would
-    // otherwise leave a slow remainder for a process to take up.
-    const auto [c1, c2] = best_two_cuts(StepsBesideColumns(r, q), edge_outputs(r.size()));
-    const std::vector<double> stepped = eq1_and_steps_residual(t_s, y, c1, c2);
-    const PartPeriodogram stepped_p = part_periodogram(stepped, all);
-    const SpectralFit beside = fit_spectral(spectral_effects, c, model, stepped_p, spectral_params);
-    out.process_gain = fit_spectral({}, c, model, stepped_p).nll - beside.nll;
-    out.process_margin =
-        static_cast<double>(spectral_params.size()) * 0.5 * parameter_price(InformationCriterion::bic, real_p.count);
-    out.process_beside_steps = out.process_gain > out.process_margin;
+    test_process_beside_steps(out, model, c, t_s, y, r, q, spectral_effects, spectral_params, real_p.count);
     out.impulse = real[0];
     out.statistic = real[1];
     const StepPValues p = step_p_values(null, out.impulse, out.statistic, out.margin);

@@ -82,6 +82,55 @@ const std::vector<NavigationTable>& navigation_tables() {
     return tables;
 }
 
+// The table's header: each term in `u` times the power of tau that makes its share of the ADEV a rate
+// (noise_terms.hpp); a column U where the channels' units differ (`one_unit` false).
+std::string header_row(const std::string& u, bool one_unit) {
+    std::string h;
+    const std::string unit_column = one_unit ? "" : "<th>U</th>";
+    h += "<table><tr><th>channel</th>" + unit_column + "<th>&tau;0 [s]</th><th>OADEV &sigma;(&tau;0) raw [" + u +
+         "]</th><th>min OADEV &sigma; residual [" + u + "]</th><th>at &tau; [s]</th>";
+    // Each term in U times the power of tau that makes its share of the ADEV a rate (noise_terms.hpp).
+    constexpr std::array<const char*, stats::kNoiseTermCount> kTermUnits = {"&middot;s", "/&radic;Hz", "", "/&radic;s",
+                                                                            "/s"};
+    for (std::size_t t = 0; t < stats::kNoiseTermCount; ++t)
+        h += "<th>" + std::string(stats::kNoiseTermSymbols[t]) + " [" + u + kTermUnits[t] + "]</th>";
+    h += "</tr>\n";
+    return h;
+}
+
+// A channel's OADEV as recorded and drift-removed, with the IEEE 952 fit where there is one.
+Plot curves_plot(const std::string& name, const std::string& unit, const stats::AnalysedCurve& raw,
+                 const stats::AnalysedCurve& residual, const stats::NoiseTermFit& terms) {
+    Plot p;
+    p.title = name + ": overlapping Allan deviation";
+    p.x_label = "tau [s]";
+    p.y_label = "OADEV [" + unit + "]";
+    p.log_x = p.log_y = true;
+    p.series.push_back(curve_series(raw, "as recorded", "#9a9a9a"));
+    p.series.push_back(curve_series(residual, "drift removed", "#1f5fbf"));
+    if (terms.ok) {
+        PlotSeries model;
+        model.title = "IEEE 952 fit";
+        model.x = residual.curve.tau_s;
+        model.y = terms.model_adev;
+        model.color = "#c0392b";
+        p.series.push_back(model);
+    }
+    return p;
+}
+
+// A channel's row in each table of noise terms in navigation units that its quantity has.
+void add_navigation_rows(std::vector<std::string>& rows, const std::string& name, stats::RateQuantity quantity,
+                         const std::vector<stats::NamedValue>& physical) {
+    for (std::size_t t = 0; t < navigation_tables().size(); ++t) {
+        if (navigation_tables()[t].quantity != quantity || physical.empty()) continue;
+        rows[t] += "<tr><td>" + name + "</td>";
+        for (const auto& column : navigation_tables()[t].columns)
+            rows[t] += "<td>" + named_cell(physical, column.second) + "</td>";
+        rows[t] += "</tr>\n";
+    }
+}
+
 }  // namespace
 
 AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channels) {
@@ -101,16 +150,7 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
     for (const fit::DriftAnalysis* a : channels) units.push_back(unit_of(*a));
     bool one_unit = true;
     for (const stats::SampleUnit& u : units) one_unit &= u.name == units.front().name;
-    const std::string u = one_unit && !units.empty() ? html_escape(unit_label(units.front())) : "U";
-    const std::string unit_column = one_unit ? "" : "<th>U</th>";
-    h += "<table><tr><th>channel</th>" + unit_column + "<th>&tau;0 [s]</th><th>OADEV &sigma;(&tau;0) raw [" + u +
-         "]</th><th>min OADEV &sigma; residual [" + u + "]</th><th>at &tau; [s]</th>";
-    // Each term in U times the power of tau that makes its share of the ADEV a rate (noise_terms.hpp).
-    constexpr std::array<const char*, stats::kNoiseTermCount> kTermUnits = {"&middot;s", "/&radic;Hz", "", "/&radic;s",
-                                                                            "/s"};
-    for (std::size_t t = 0; t < stats::kNoiseTermCount; ++t)
-        h += "<th>" + std::string(stats::kNoiseTermSymbols[t]) + " [" + u + kTermUnits[t] + "]</th>";
-    h += "</tr>\n";
+    h += header_row(one_unit && !units.empty() ? html_escape(unit_label(units.front())) : "U", one_unit);
     std::string warnings;
     std::vector<std::string> navigation_rows(navigation_tables().size());
     for (std::size_t i = 0; i < channels.size(); ++i) {
@@ -152,30 +192,9 @@ AllanSection allan_section(const std::vector<const fit::DriftAnalysis*>& channel
         h += "</tr>\n";
         const std::vector<stats::NamedValue> physical =
             stats::physical_terms(terms, units[i].quantity, units[i].si_per_unit);
-        for (std::size_t t = 0; t < navigation_tables().size(); ++t) {
-            if (navigation_tables()[t].quantity != units[i].quantity || physical.empty()) continue;
-            navigation_rows[t] += "<tr><td>" + name + "</td>";
-            for (const auto& column : navigation_tables()[t].columns)
-                navigation_rows[t] += "<td>" + named_cell(physical, column.second) + "</td>";
-            navigation_rows[t] += "</tr>\n";
-        }
+        add_navigation_rows(navigation_rows, name, units[i].quantity, physical);
 
-        Plot p;
-        p.title = a->data.name + ": overlapping Allan deviation";
-        p.x_label = "tau [s]";
-        p.y_label = "OADEV [" + unit_label(units[i]) + "]";
-        p.log_x = p.log_y = true;
-        p.series.push_back(curve_series(raw, "as recorded", "#9a9a9a"));
-        p.series.push_back(curve_series(residual, "drift removed", "#1f5fbf"));
-        if (terms.ok) {
-            PlotSeries model;
-            model.title = "IEEE 952 fit";
-            model.x = residual.curve.tau_s;
-            model.y = terms.model_adev;
-            model.color = "#c0392b";
-            p.series.push_back(model);
-        }
-        out.plots.push_back(std::move(p));
+        out.plots.push_back(curves_plot(a->data.name, unit_label(units[i]), raw, residual, terms));
         out.plot_names.push_back(a->data.name);
     }
     h += "</table>\n";
