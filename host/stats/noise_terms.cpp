@@ -68,6 +68,69 @@ SubsetSolution solve_nnls(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, un
     return best;
 }
 
+// Iteratively reweighted NNLS on the scaled AVAR y^2 at the points `use`; its last cost is the chi-square.
+SubsetSolution reweighted_fit(std::span<const double> tau_s, std::span<const double> edf, const std::vector<double>& y,
+                              const std::vector<std::size_t>& use, const NoiseTermOptions& options,
+                              double& chi_square) {
+    unsigned mask = 0;
+    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
+        if (options.enabled[j]) mask |= 1u << j;
+    }
+    const auto rows = static_cast<Eigen::Index>(use.size());
+    Eigen::VectorXd model(rows);
+    for (Eigen::Index r = 0; r < rows; ++r)
+        model(r) = y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]];
+
+    SubsetSolution sol;
+    for (int it = 0; it <= options.reweight_iterations; ++it) {
+        // Row r scaled by sqrt(w) = sqrt(edf / 2) / AVAR_model: a relative (log-like) fit where EDF is high.
+        Eigen::MatrixXd a(rows, static_cast<Eigen::Index>(kNoiseTermCount));
+        Eigen::VectorXd b(rows);
+        for (Eigen::Index r = 0; r < rows; ++r) {
+            const std::size_t i = use[static_cast<std::size_t>(r)];
+            const double sw = std::sqrt(edf[i] / 2.0) / model(r);
+            for (std::size_t j = 0; j < kNoiseTermCount; ++j)
+                a(r, static_cast<Eigen::Index>(j)) = sw * basis(j, tau_s[i]);
+            b(r) = sw * y[i] * y[i];
+        }
+        SubsetSolution next = solve_nnls(a, b, mask);
+        if (!std::isfinite(next.cost)) break;
+        sol = next;
+        for (Eigen::Index r = 0; r < rows; ++r) {
+            double v = 0.0;
+            for (std::size_t j = 0; j < kNoiseTermCount; ++j)
+                v += sol.c(static_cast<Eigen::Index>(j)) * basis(j, tau_s[use[static_cast<std::size_t>(r)]]);
+            // Keep the weights finite where the model vanishes (a term fitted to zero at the curve's end).
+            model(r) = std::max(v, 1e-6 * y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]]);
+        }
+        chi_square = sol.cost;
+    }
+    return sol;
+}
+
+// Term values and standard errors from the AVAR coefficients; a term fitted to zero gets its upper bound instead.
+void unpack_terms(const SubsetSolution& sol, std::span<const double> tau_s, const std::vector<double>& y,
+                  const std::vector<std::size_t>& use, const NoiseTermOptions& options, NoiseTermFit& fit) {
+    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        const double c = sol.c(jj);
+        fit.value[j] = std::sqrt(c / kCoefficientScale[j]);
+        // d value / d c = 1 / (2 sqrt(c * scale)).
+        fit.std_error[j] =
+            c > 0.0 ? std::sqrt(std::max(sol.cov(jj, jj), 0.0)) / (2.0 * std::sqrt(c * kCoefficientScale[j])) : 0.0;
+        fit.at_bound[j] = options.enabled[j] && c <= 0.0;
+        fit.upper_bound[j] = std::numeric_limits<double>::quiet_NaN();
+        if (!fit.at_bound[j]) continue;
+        // The term alone may not exceed the curve anywhere: value^2 scale tau^(j-2) <= adev^2 at every tau.
+        double bound = std::numeric_limits<double>::infinity();
+        for (std::size_t i : use) {
+            bound = std::min(bound, y[i] * std::pow(tau_s[i], (2.0 - static_cast<double>(j)) / 2.0) /
+                                        std::sqrt(kCoefficientScale[j]));
+        }
+        fit.upper_bound[j] = bound;
+    }
+}
+
 }  // namespace
 
 double noise_term_avar(const std::array<double, kNoiseTermCount>& value, double tau_s) {
@@ -102,59 +165,9 @@ NoiseTermFit fit_noise_terms(std::span<const double> tau_s, std::span<const doub
     std::vector<double> y(adev.size(), 0.0);
     for (std::size_t i : use) y[i] = std::ldexp(adev[i], -exponent);
 
-    unsigned mask = 0;
-    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
-        if (options.enabled[j]) mask |= 1u << j;
-    }
-    const auto rows = static_cast<Eigen::Index>(use.size());
-    Eigen::VectorXd model(rows);
-    for (Eigen::Index r = 0; r < rows; ++r)
-        model(r) = y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]];
-
-    SubsetSolution sol;
-    for (int it = 0; it <= options.reweight_iterations; ++it) {
-        // Row r scaled by sqrt(w) = sqrt(edf / 2) / AVAR_model: a relative (log-like) fit where EDF is high.
-        Eigen::MatrixXd a(rows, static_cast<Eigen::Index>(kNoiseTermCount));
-        Eigen::VectorXd b(rows);
-        for (Eigen::Index r = 0; r < rows; ++r) {
-            const std::size_t i = use[static_cast<std::size_t>(r)];
-            const double sw = std::sqrt(edf[i] / 2.0) / model(r);
-            for (std::size_t j = 0; j < kNoiseTermCount; ++j)
-                a(r, static_cast<Eigen::Index>(j)) = sw * basis(j, tau_s[i]);
-            b(r) = sw * y[i] * y[i];
-        }
-        SubsetSolution next = solve_nnls(a, b, mask);
-        if (!std::isfinite(next.cost)) break;
-        sol = next;
-        for (Eigen::Index r = 0; r < rows; ++r) {
-            double v = 0.0;
-            for (std::size_t j = 0; j < kNoiseTermCount; ++j)
-                v += sol.c(static_cast<Eigen::Index>(j)) * basis(j, tau_s[use[static_cast<std::size_t>(r)]]);
-            // Keep the weights finite where the model vanishes (a term fitted to zero at the curve's end).
-            model(r) = std::max(v, 1e-6 * y[use[static_cast<std::size_t>(r)]] * y[use[static_cast<std::size_t>(r)]]);
-        }
-        fit.chi_square = sol.cost;
-    }
+    SubsetSolution sol = reweighted_fit(tau_s, edf, y, use, options, fit.chi_square);
     if (!std::isfinite(sol.cost)) return fit;
-
-    for (std::size_t j = 0; j < kNoiseTermCount; ++j) {
-        const auto jj = static_cast<Eigen::Index>(j);
-        const double c = sol.c(jj);
-        fit.value[j] = std::sqrt(c / kCoefficientScale[j]);
-        // d value / d c = 1 / (2 sqrt(c * scale)).
-        fit.std_error[j] =
-            c > 0.0 ? std::sqrt(std::max(sol.cov(jj, jj), 0.0)) / (2.0 * std::sqrt(c * kCoefficientScale[j])) : 0.0;
-        fit.at_bound[j] = options.enabled[j] && c <= 0.0;
-        fit.upper_bound[j] = std::numeric_limits<double>::quiet_NaN();
-        if (!fit.at_bound[j]) continue;
-        // The term alone may not exceed the curve anywhere: value^2 scale tau^(j-2) <= adev^2 at every tau.
-        double bound = std::numeric_limits<double>::infinity();
-        for (std::size_t i : use) {
-            bound = std::min(bound, y[i] * std::pow(tau_s[i], (2.0 - static_cast<double>(j)) / 2.0) /
-                                        std::sqrt(kCoefficientScale[j]));
-        }
-        fit.upper_bound[j] = bound;
-    }
+    unpack_terms(sol, tau_s, y, use, options, fit);
     for (std::size_t i = 0; i < tau_s.size(); ++i) {
         if (tau_s[i] > 0.0) fit.model_adev[i] = std::ldexp(std::sqrt(noise_term_avar(fit.value, tau_s[i])), exponent);
     }
