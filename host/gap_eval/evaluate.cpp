@@ -11,26 +11,19 @@
 
 #include <Eigen/Dense>
 
-#include "host/fit/lm_fit.hpp"
 #include "host/gap/candidates.hpp"
 #include "host/gap/comparison.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/replicates.hpp"
+#include "host/gap_eval/planted_log.hpp"
 #include "host/gap_eval/truth.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/parallel_for.hpp"
 #include "sim/model/board_outputs.hpp"
-#include "sim/model/drift.hpp"
-#include "sim/model/rng.hpp"
-#include "sim/model/white_noise.hpp"
 
 namespace driftlab::host::gap {
 
 namespace {
-
-constexpr double kSamplePeriodS = 1.0;
-constexpr int kWindow = 8;
-constexpr double kMaxPeakPerSize = 300.0;  // a deterministic truth's peak, at most this many times its unabsorbed RMS
 
 // Where the search for a_50 starts, in units of the smoothed output's white-noise standard deviation (deterministic
 // generators: the RMS of their unabsorbed part): near the sizes the battery starts to see on a 1500-sample log.
@@ -40,138 +33,6 @@ double first_guess(const std::string& generator) {
         {"thermal_rc", 0.2},   {"thermostat", 0.25},  {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
         {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2},       {"sar_mismatch", 0.5}};
     return guess.at(generator);
-}
-
-GapModel randomised_truth(std::uint64_t seed) {
-    sim::Rng rng(seed, 0x60);
-    auto factor = [&] { return std::exp(std::log(0.5) + rng.uniform() * std::log(4.0)); };  // x[0.5, 2]
-    GapModel m;
-    m.unit = sim::paper_model();
-    m.unit.effects.clear();
-    m.smoothing = {kSamplePeriodS, kWindow, kWindow, 0};
-    const sim::DriftParams paper = sim::kPaperDrift[0];
-    m.base[0].drift = {paper.c1_counts * factor(), paper.c2_counts, paper.tau_s * factor()};
-    const double raw_counts = 0.187 * 512.0 / 90.0 * std::sqrt(factor());
-    m.base[0].sigma_n_counts =
-        sim::analog_sigma_for_raw_std_counts(std::max(raw_counts, sim::kMinCalibratedRawStdCounts));
-    return m;
-}
-
-bool raw_mode(const std::string& generator) {
-    return generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter;
-}
-
-// A gyro log of `truth` with `added` at the converter input and, when given, `quantiser` as its converter. A `raw`
-// log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
-// numbers stepping by two (a SAMPLE and a RAW frame per row).
-LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
-                 std::size_t samples, std::uint64_t seed, bool raw_mode) {
-    LogData log;
-    log.source_name = "gap-eval";
-    log.t_s.resize(samples);
-    for (std::size_t k = 0; k < samples; ++k) log.t_s[k] = static_cast<double>(k + 1) * kSamplePeriodS;
-    sim::OutputRequest req;
-    req.t_s = &log.t_s;
-    req.channels = {true, false, false, false};
-    if (!added.empty()) req.added_counts[0] = added;
-    req.quantiser[0] = quantiser;
-    sim::Outputs raw;
-    if (raw_mode) req.raw_codes = &raw;
-    const sim::Outputs sim = sim::simulate_outputs(truth, req, seed ^ 0xA5A5A5A5ull);
-    log.counts[0] = sim[0];
-    for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
-    log.recorded = {true, false, false, false};
-    if (raw_mode) log.optional_columns["raw_gyro"] = raw[0];
-    log.seq.resize(samples);
-    for (std::size_t k = 0; k < samples; ++k) log.seq[k] = raw_mode ? 2 * k : k;
-    log.metadata.set("sample_period_s", kSamplePeriodS);
-    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(kWindow));
-    log.metadata.set("window", static_cast<std::int64_t>(kWindow));
-    log.metadata.set("fit_order", static_cast<std::int64_t>(0));
-    return log;
-}
-
-double output_noise_sd(const GapModel& m) {
-    const double s = m.base[0].sigma_n_counts;
-    return std::sqrt((s * s + 1.0 / 12.0) / kWindow);
-}
-
-struct Planted {
-    GapModel model;
-    LogData log;
-    double size_counts = 0.0;       ///< the planted size [counts]
-    double scale = 0.0;             ///< make_truth()'s size argument that plants it
-    std::vector<double> occupancy;  ///< a converter truth's: the codes of the log made with the model's converter
-};
-
-// Root mean square of what the base's eq. 1 fit leaves of `signal` added to the noise-free warm-up of `model`.
-double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const std::vector<double>& signal) {
-    const sim::Drift drift(model.base[0].drift);
-    std::vector<double> y(t.size());
-    for (std::size_t k = 0; k < t.size(); ++k) y[k] = drift.at_counts(t[k]) + signal[k];
-    double sum = 0.0;
-    for (double r : fit::fit_drift(t, y).residual) sum += r * r;
-    return std::sqrt(sum / static_cast<double>(t.size()));
-}
-
-// `generator`, acting at the converter input, at `size_sd` output-noise deviations on `model`: the signal added and
-// its planted size. A random generator's size is its standard deviation; a deterministic one's is the RMS of the
-// part the base's eq. 1 fit cannot absorb, since only that part can be detected (a slow RC-network rise is 98-99 %
-// absorbed, by a share that varies threefold with its time constants; sizing by the peak made the detection curve
-// non-monotone).
-struct InputSignal {
-    std::vector<double> added;
-    double size_counts = 0.0;  ///< the planted size [counts]
-    double scale = 0.0;        ///< make_truth()'s size argument that plants it
-};
-InputSignal input_signal(const std::string& generator, double size_sd, const GapModel& model, std::uint64_t seed,
-                         std::size_t samples) {
-    InputSignal s;
-    s.size_counts = size_sd * output_noise_sd(model);
-    std::vector<double> t(samples);
-    for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kSamplePeriodS;
-    const std::vector<double> unit = make_truth(generator, t, 1.0, seed, seed);
-    s.scale = s.size_counts;
-    if (truth_info(generator).kind == TruthInfo::Kind::shape) {
-        // eq. 1 is nonlinear in T, so the absorbed share depends a little on the size: one correction.
-        auto scaled = [&](double g) {
-            std::vector<double> v(unit);
-            for (double& x : v) x *= g;
-            return v;
-        };
-        // A shape eq. 1 absorbs almost wholly stays almost invisible: its peak is capped at kMaxPeakPerSize sizes.
-        const double cap = kMaxPeakPerSize * s.size_counts;
-        s.scale = std::min(cap, s.size_counts / std::max(unabsorbed_rms(model, t, unit), 1e-12));
-        s.scale = std::min(cap, s.scale * s.size_counts / std::max(unabsorbed_rms(model, t, scaled(s.scale)), 1e-12));
-    }
-    s.added = unit;
-    for (double& x : s.added) x *= s.scale;
-    return s;
-}
-
-// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations (a converter
-// generator's size is its rms DNL).
-Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean) {
-    Planted p;
-    p.model = randomised_truth(seed);
-    std::vector<double> added;
-    sim::Quantiser quantiser;
-    if (raw_mode(generator)) {
-        // Sized by the code widths the log can see: those of the codes it occupies (the same noise path through the
-        // model's converter), as a deterministic shape by the part eq. 1 cannot absorb.
-        p.size_counts = p.scale = size_sd * output_noise_sd(p.model);
-        p.occupancy.assign(std::size_t{1} << p.model.unit.adc.bits, 0.0);
-        for (double code : make_log(p.model, {}, {}, samples, seed, true).optional_columns.at("raw_gyro"))
-            p.occupancy[static_cast<std::size_t>(code)] += 1.0;
-        quantiser = make_converter_truth(generator, p.scale, p.occupancy, seed, seed);
-    } else if (generator != "none") {
-        InputSignal in = input_signal(generator, size_sd, p.model, seed, samples);
-        p.size_counts = in.size_counts;
-        p.scale = in.scale;
-        added = std::move(in.added);
-    }
-    p.log = make_log(p.model, added, quantiser, samples, seed, quantiser || (generator == "none" && raw_clean));
-    return p;
 }
 
 GapOptions gap_options(std::uint64_t seed, const EvalOptions& options) {
@@ -217,7 +78,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     BatteryOptions b;
     b.channels = r.channels;
     b.holdout = options.holdout;
-    b.sample_period_s = kSamplePeriodS;
+    b.sample_period_s = kEvalSamplePeriodS;
     b.raw_codes = r.raw_codes;
     std::array<const std::vector<double>*, kChannelCount> y{};
     y[0] = &log.counts[0];

@@ -1,0 +1,131 @@
+// Planting a truth generator in a gyro log of a domain-randomised base; see planted_log.hpp.
+#include "host/gap_eval/planted_log.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "host/fit/lm_fit.hpp"
+#include "host/gap_eval/truth.hpp"
+#include "sim/model/board_outputs.hpp"
+#include "sim/model/drift.hpp"
+#include "sim/model/rng.hpp"
+#include "sim/model/white_noise.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+constexpr int kWindow = 8;
+constexpr double kMaxPeakPerSize = 300.0;  // a deterministic truth's peak, at most this many times its unabsorbed RMS
+
+double output_noise_sd(const GapModel& m) {
+    const double s = m.base[0].sigma_n_counts;
+    return std::sqrt((s * s + 1.0 / 12.0) / kWindow);
+}
+
+// Root mean square of what the base's eq. 1 fit leaves of `signal` added to the noise-free warm-up of `model`.
+double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const std::vector<double>& signal) {
+    const sim::Drift drift(model.base[0].drift);
+    std::vector<double> y(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) y[k] = drift.at_counts(t[k]) + signal[k];
+    double sum = 0.0;
+    for (double r : fit::fit_drift(t, y).residual) sum += r * r;
+    return std::sqrt(sum / static_cast<double>(t.size()));
+}
+
+}  // namespace
+
+GapModel randomised_truth(std::uint64_t seed) {
+    sim::Rng rng(seed, 0x60);
+    auto factor = [&] { return std::exp(std::log(0.5) + rng.uniform() * std::log(4.0)); };  // x[0.5, 2]
+    GapModel m;
+    m.unit = sim::paper_model();
+    m.unit.effects.clear();
+    m.smoothing = {kEvalSamplePeriodS, kWindow, kWindow, 0};
+    const sim::DriftParams paper = sim::kPaperDrift[0];
+    m.base[0].drift = {paper.c1_counts * factor(), paper.c2_counts, paper.tau_s * factor()};
+    const double raw_counts = 0.187 * 512.0 / 90.0 * std::sqrt(factor());
+    m.base[0].sigma_n_counts =
+        sim::analog_sigma_for_raw_std_counts(std::max(raw_counts, sim::kMinCalibratedRawStdCounts));
+    return m;
+}
+
+bool raw_mode(const std::string& generator) {
+    return generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter;
+}
+
+LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
+                 std::size_t samples, std::uint64_t seed, bool raw_mode) {
+    LogData log;
+    log.source_name = "gap-eval";
+    log.t_s.resize(samples);
+    for (std::size_t k = 0; k < samples; ++k) log.t_s[k] = static_cast<double>(k + 1) * kEvalSamplePeriodS;
+    sim::OutputRequest req;
+    req.t_s = &log.t_s;
+    req.channels = {true, false, false, false};
+    if (!added.empty()) req.added_counts[0] = added;
+    req.quantiser[0] = quantiser;
+    sim::Outputs raw;
+    if (raw_mode) req.raw_codes = &raw;
+    const sim::Outputs sim = sim::simulate_outputs(truth, req, seed ^ 0xA5A5A5A5ull);
+    log.counts[0] = sim[0];
+    for (std::size_t c = 1; c < kChannelCount; ++c) log.counts[c].assign(samples, 512.0);
+    log.recorded = {true, false, false, false};
+    if (raw_mode) log.optional_columns["raw_gyro"] = raw[0];
+    log.seq.resize(samples);
+    for (std::size_t k = 0; k < samples; ++k) log.seq[k] = raw_mode ? 2 * k : k;
+    log.metadata.set("sample_period_s", kEvalSamplePeriodS);
+    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(kWindow));
+    log.metadata.set("window", static_cast<std::int64_t>(kWindow));
+    log.metadata.set("fit_order", static_cast<std::int64_t>(0));
+    return log;
+}
+
+InputSignal input_signal(const std::string& generator, double size_sd, const GapModel& model, std::uint64_t seed,
+                         std::size_t samples) {
+    InputSignal s;
+    s.size_counts = size_sd * output_noise_sd(model);
+    std::vector<double> t(samples);
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k + 1) * kEvalSamplePeriodS;
+    const std::vector<double> unit = make_truth(generator, t, 1.0, seed, seed);
+    s.scale = s.size_counts;
+    if (truth_info(generator).kind == TruthInfo::Kind::shape) {
+        // eq. 1 is nonlinear in T, so the absorbed share depends a little on the size: one correction.
+        auto scaled = [&](double g) {
+            std::vector<double> v(unit);
+            for (double& x : v) x *= g;
+            return v;
+        };
+        // A shape eq. 1 absorbs almost wholly stays almost invisible: its peak is capped at kMaxPeakPerSize sizes.
+        const double cap = kMaxPeakPerSize * s.size_counts;
+        s.scale = std::min(cap, s.size_counts / std::max(unabsorbed_rms(model, t, unit), 1e-12));
+        s.scale = std::min(cap, s.scale * s.size_counts / std::max(unabsorbed_rms(model, t, scaled(s.scale)), 1e-12));
+    }
+    s.added = unit;
+    for (double& x : s.added) x *= s.scale;
+    return s;
+}
+
+Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean) {
+    Planted p;
+    p.model = randomised_truth(seed);
+    std::vector<double> added;
+    sim::Quantiser quantiser;
+    if (raw_mode(generator)) {
+        // Sized by the code widths the log can see: those of the codes it occupies (the same noise path through the
+        // model's converter), as a deterministic shape by the part eq. 1 cannot absorb.
+        p.size_counts = p.scale = size_sd * output_noise_sd(p.model);
+        p.occupancy.assign(std::size_t{1} << p.model.unit.adc.bits, 0.0);
+        for (double code : make_log(p.model, {}, {}, samples, seed, true).optional_columns.at("raw_gyro"))
+            p.occupancy[static_cast<std::size_t>(code)] += 1.0;
+        quantiser = make_converter_truth(generator, p.scale, p.occupancy, seed, seed);
+    } else if (generator != "none") {
+        InputSignal in = input_signal(generator, size_sd, p.model, seed, samples);
+        p.size_counts = in.size_counts;
+        p.scale = in.scale;
+        added = std::move(in.added);
+    }
+    p.log = make_log(p.model, added, quantiser, samples, seed, quantiser || (generator == "none" && raw_clean));
+    return p;
+}
+
+}  // namespace driftlab::host::gap

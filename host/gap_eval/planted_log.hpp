@@ -1,0 +1,59 @@
+// The benchmark's logs: a gyro log of a domain-randomised base (eq. 1 and noise drawn about the paper's unit) with
+// one truth generator (truth.hpp) planted at a chosen size, as gap-eval makes them. docs/gap.md §Evaluation.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "host/gap/gap_model.hpp"
+#include "host/log/log_data.hpp"
+#include "sim/model/sensor_model.hpp"
+
+namespace driftlab::host::gap {
+
+/// The benchmark's output period: 1 s per sample.
+inline constexpr double kEvalSamplePeriodS = 1.0;
+
+/// The base of log `seed`: the paper's gyro with C1 and T each scaled by a factor in [0.5, 2], its raw noise by the
+/// square root of one.
+GapModel randomised_truth(std::uint64_t seed);
+
+/// Whether `generator` replaces the converter (its log is raw-mode and sized by its rms DNL).
+bool raw_mode(const std::string& generator);
+
+/// A gyro log of `truth` with `added` at the converter input and, when given, `quantiser` as its converter. A `raw`
+/// log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
+/// numbers stepping by two (a SAMPLE and a RAW frame per row).
+LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
+                 std::size_t samples, std::uint64_t seed, bool raw_mode);
+
+/// A generator acting at the converter input, sized: the signal added, its planted size and make_truth()'s scale.
+struct InputSignal {
+    std::vector<double> added;
+    double size_counts = 0.0;  ///< the planted size [counts]
+    double scale = 0.0;        ///< make_truth()'s size argument that plants it
+};
+
+/// `generator`, acting at the converter input, at `size_sd` output-noise deviations on `model`. A random
+/// generator's size is its standard deviation; a deterministic one's is the RMS of the part the base's eq. 1 fit
+/// cannot absorb, since only that part can be detected (a slow RC-network rise is 98-99 % absorbed, by a share that
+/// varies threefold with its time constants; sizing by the peak made the detection curve non-monotone).
+InputSignal input_signal(const std::string& generator, double size_sd, const GapModel& model, std::uint64_t seed,
+                         std::size_t samples);
+
+/// A log with its true model and what was planted in it.
+struct Planted {
+    GapModel model;
+    LogData log;
+    double size_counts = 0.0;       ///< the planted size [counts]
+    double scale = 0.0;             ///< make_truth()'s size argument that plants it
+    std::vector<double> occupancy;  ///< a converter truth's: the codes of the log made with the model's converter
+};
+
+/// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations (a converter
+/// generator's size is its rms DNL); "none" plants nothing (raw-mode when `raw_clean`).
+Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean);
+
+}  // namespace driftlab::host::gap
