@@ -1,4 +1,4 @@
-// `driftlab gap-eval`: the withheld-effect benchmark of the gap diagnosis (host/gap/evaluate, docs/gap.md §Evaluation).
+// `driftlab gap-eval`: the withheld-effect benchmark of the gap diagnosis (host/gap_eval, docs/gap.md §Evaluation).
 #include <unistd.h>
 #include <chrono>
 #include <cstdio>

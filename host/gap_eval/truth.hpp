@@ -16,7 +16,7 @@
 // the random signals (kasdin_flicker, wandering_ou; student_walk's end point), the standard deviation of one burst's
 // Laplace amplitude (burst_spikes: the signal's own is sqrt(2/150) of it, bursts being rare), the step (mode hop),
 // or the rms of the converter's DAC step errors over the codes a log occupies (sar_mismatch: its rms DNL while no
-// code goes missing). Tests: tests/host/gap/truth_test.cpp.
+// code goes missing). Tests: tests/host/gap_eval/truth_*_test.cpp.
 // gap-eval sizes a deterministic generator by the part of it the base's eq. 1 fit cannot absorb (evaluate.cpp).
 // docs/gap.md §Evaluation.
 #pragma once

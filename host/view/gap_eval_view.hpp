@@ -1,5 +1,5 @@
-// The views of a withheld-effect benchmark run (`driftlab gap-eval`): the markdown tables of docs/gap.md, the JSON of
-// --json, and the plots of --plot DIR. docs/gap.md §Evaluation.
+// The views of a withheld-effect benchmark run (`driftlab gap-eval`): the markdown tables of docs/gap-results.md, the
+// JSON of --json, and the plots of --plot DIR. docs/gap.md §Evaluation.
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@
 
 namespace driftlab::host::view {
 
-/// The markdown tables of docs/gap.md.
+/// The markdown tables of docs/gap-results.md.
 std::string scores_markdown(const gap::EvalScores& scores);
 
 /// The same as JSON: keys `thresholds`, `tune_seeds`, `score_seeds`, `samples`, `replicates`, `a50[]`
