@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,7 @@
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/model_file.hpp"
 #include "sim/model/sensor_model.hpp"
+#include "sim/motion/trajectories.hpp"
 #ifdef DRIFTLAB_HAVE_SIM_AVR
 #include "sim/avr/avr_error.hpp"
 #include "sim/avr/avr_hil.hpp"
@@ -58,6 +60,10 @@ void stop_on_signals() {
 void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
     if (o.target != "native") throw UsageError("--pty: only the native target is served on a pseudo-terminal");
     sim::SensorModel sensor(h.model, o.seed, h.warm_up_s);
+    if (h.trajectory) {
+        sensor.set_motion(sim::motion_source(h.trajectory));
+        std::fprintf(stderr, "note: no ground truth is written with --pty (driftlab hil without --pty writes one)\n");
+    }
     const auto impaired = [](const sim::DirectionParams& d) {
         return d.latency_s > 0.0 || d.byte_error_rate > 0.0 || d.byte_drop_rate > 0.0 ||
                d.packet_loss.loss_in_good > 0.0 ||
@@ -102,25 +108,14 @@ nlohmann::json cycles_json(const sim::avr::CycleBudget& b) {
 }
 #endif
 
-// The run's own metadata beside the board's: the effects the model file switches on, by name (their parameters are
-// in the file), so that a log says what was simulated without the file beside it.
-io::CaptureHeader run_metadata(const HilCliOptions& o, const sim::HilOptions& h, const std::string& effects) {
-    return {{"seed", std::to_string(o.seed)},
-            {"effects", effects.empty() ? "none" : effects},
-            {"model", o.model_file.empty() ? "paper (built in)" : o.model_file},
-            {"model_name", h.model.name},
-            {"preset", o.preset},
-            {"target", o.target},
-            {"warm_up_s", format_double(h.warm_up_s)},
-            {"link_baud", format_double(h.model.link.baud)}};
-}
-
 void run_hil_command(const HilCliOptions& o) {
     refuse_writing_over_input(o.output, "-o", o.model_file, "model file");
     sim::HilOptions h = build_options(o);
     if (o.pty) return serve_pty_command(o, h);
     const std::string path = o.output.empty() ? "out/" + o.preset + ".csv" : o.output;
     if (path == "-" && o.json) throw UsageError("--json: the log goes to standard output (-o -); write it to a file");
+    if (path == "-" && h.trajectory)
+        throw UsageError("--trajectory: the ground truth goes beside the log; write it to a file");
     if (path != "-") make_folder_of(path, "log");
 
     std::string effects;
@@ -144,9 +139,14 @@ void run_hil_command(const HilCliOptions& o) {
                      o.gdb_port, firmware_elf(o).c_str(), o.gdb_port);
 #endif
     const auto wall0 = std::chrono::steady_clock::now();
-    const sim::HilSummary s = run_board(h, [&log](const sim::HilRecord& r) { log.write(r); });
+    std::vector<double> rows_t_s;  // the ground truth's instants
+    const sim::HilSummary s = run_board(h, [&](const sim::HilRecord& r) {
+        log.write(r);
+        if (h.trajectory) rows_t_s.push_back(r.t_s);
+    });
     const double wall_s = seconds_since(wall0);
     log.close();
+    if (h.trajectory) write_truth(o, h, path, rows_t_s);
     if (s.interrupted && h.progress) std::fprintf(stderr, "\n");
     const std::string interrupted = "interrupted after " + significant(s.simulated_s, 6) + " s of board time (" +
                                     significant(h.duration_s, 6) + " s asked for): " + path + " holds the " +
@@ -219,6 +219,12 @@ void register_hil(CLI::App& app) {
     cmd->add_option("--pty-link", opts->pty_link,
                     "--pty: also make this symlink to the pseudo-terminal (printed as PATH -> /dev/pts/N)")
         ->check(non_empty_path());
+    cmd->add_option("--trajectory", opts->trajectory,
+                    "The robot the unit rides: rest, square, figure8, stop-and-go, turntable, or a profile file "
+                    "(docs/sim.md); writes LOG.truth.csv beside the log")
+        ->check(non_empty_path());
+    cmd->add_option("--rest-before", opts->rest_before_s, "--trajectory: at rest this long first [s]")
+        ->check(non_negative_number());
     cmd->add_option("--target", opts->target, "native (firmware core on the host) or avr (the real ELF in simavr)")
         ->capture_default_str();
     cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)")

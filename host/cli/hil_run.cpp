@@ -2,12 +2,17 @@
 #include "host/cli/hil_run.hpp"
 
 #include <cstdio>
+#include <memory>
+#include <stdexcept>
 
 #include "host/cli/commands.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
+#include "host/util/output_file.hpp"
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/model_file.hpp"
+#include "sim/motion/trajectories.hpp"
+#include "sim/motion/truth_table.hpp"
 #include "sim/sim_error.hpp"
 #ifdef DRIFTLAB_HAVE_SIM_AVR
 #include "sim/avr/avr_error.hpp"
@@ -90,6 +95,22 @@ void set_target(const HilCliOptions& o, sim::HilOptions& h) {
     }
 }
 
+// The robot the unit rides (sim/motion): a built-in profile long enough for the run, or the user's file.
+void set_trajectory(const HilCliOptions& o, sim::HilOptions& h) {
+    if (o.trajectory.empty()) {
+        if (o.rest_before_s) throw UsageError("--rest-before: needs --trajectory");
+        return;
+    }
+    // The handshake takes a little board time before the recording: a minute more covers it.
+    const double covered_s = h.duration_s + 60.0;
+    try {
+        h.trajectory = std::make_shared<const sim::Trajectory>(
+            sim::make_trajectory(o.trajectory, covered_s, o.rest_before_s.value_or(0.0), o.seed));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--trajectory: ") + e.what());
+    }
+}
+
 }  // namespace
 
 sim::HilOptions build_options(const HilCliOptions& o) {
@@ -142,8 +163,33 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     // With --pty the output period is the recorder's, and --duration only bounds how long the board is served.
     if (!o.pty && h.duration_s < fw.output_period_ms / 1000.0)
         throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
+    set_trajectory(o, h);
     set_target(o, h);
     return h;
+}
+
+// The run's own metadata beside the board's: the effects the model file switches on, by name (their parameters are
+// in the file), so that a log says what was simulated without the file beside it.
+io::CaptureHeader run_metadata(const HilCliOptions& o, const sim::HilOptions& h, const std::string& effects) {
+    io::CaptureHeader header = {{"seed", std::to_string(o.seed)},
+                                {"effects", effects.empty() ? "none" : effects},
+                                {"model", o.model_file.empty() ? "paper (built in)" : o.model_file},
+                                {"model_name", h.model.name},
+                                {"preset", o.preset},
+                                {"target", o.target},
+                                {"warm_up_s", format_double(h.warm_up_s)},
+                                {"link_baud", format_double(h.model.link.baud)}};
+    if (h.trajectory) {
+        header.push_back({"trajectory", o.trajectory});
+        header.push_back({"rest_before_s", format_double(o.rest_before_s.value_or(0.0))});
+    }
+    return header;
+}
+
+void write_truth(const HilCliOptions& o, const sim::HilOptions& h, const std::string& log_path,
+                 const std::vector<double>& rows_t_s) {
+    const std::string text = sim::truth_table(*h.trajectory, o.trajectory, o.rest_before_s.value_or(0.0), rows_t_s);
+    write_output_file(sim::truth_path_for(log_path), text, "ground truth");
 }
 
 }  // namespace driftlab::host::cli

@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "host/io/capture.hpp"
 #include "sim/hil/hil.hpp"
 #ifdef DRIFTLAB_HAVE_SIM_AVR
 #include "sim/avr/avr_hil.hpp"
@@ -27,19 +29,30 @@ struct HilCliOptions {
     bool stream = false;
     std::string output;
     bool json = false;
-    std::string target = "native";  // native | avr (the real ELF in simavr, docs/avr-in-the-loop.md)
-    std::string elf;                // AVR firmware; default: the one this build made
-    int gdb_port = 0;               // > 0: simavr's gdb stub on this port, CPU stopped until avr-gdb continues
-    bool cycles = false;            // AVR: also print the firmware's cycle budget at this configuration
-    bool pty = false;               // serve the board on a pseudo-terminal instead of running a host
-    std::optional<double> speed;    // --pty: virtual seconds per wall second (1 when not given)
-    std::string pty_link;           // --pty: stable symlink to the pseudo-terminal
+    std::string target = "native";        // native | avr (the real ELF in simavr, docs/avr-in-the-loop.md)
+    std::string elf;                      // AVR firmware; default: the one this build made
+    int gdb_port = 0;                     // > 0: simavr's gdb stub on this port, CPU stopped until avr-gdb continues
+    bool cycles = false;                  // AVR: also print the firmware's cycle budget at this configuration
+    bool pty = false;                     // serve the board on a pseudo-terminal instead of running a host
+    std::optional<double> speed;          // --pty: virtual seconds per wall second (1 when not given)
+    std::string pty_link;                 // --pty: stable symlink to the pseudo-terminal
+    std::string trajectory;               // the robot the unit rides: a built-in name or a profile file; empty: at rest
+    std::optional<double> rest_before_s;  // at rest this long before the trajectory starts [s of board time]
 };
 
 /// The run `o` asks for. Throws UsageError for options that belong to another way of running, a configuration the
 /// firmware or the link would refuse because of the command line, and a duration shorter than one output; ConfigError
 /// where the model file's own configuration is at fault.
 sim::HilOptions build_options(const HilCliOptions& o);
+
+/// The run's own metadata beside the board's: the effects the model file switches on, by name (their parameters are
+/// in the file), and the trajectory, so that a log says what was simulated without the file beside it.
+io::CaptureHeader run_metadata(const HilCliOptions& o, const sim::HilOptions& h, const std::string& effects);
+
+/// Writes the ground truth of `h`'s trajectory beside the log at `log_path`, a row at each of its rows' `rows_t_s`,
+/// whole or not at all (sim/motion/truth_table.hpp).
+void write_truth(const HilCliOptions& o, const sim::HilOptions& h, const std::string& log_path,
+                 const std::vector<double>& rows_t_s);
 
 /// The run; an emulated AVR that fails (the firmware crashed or stopped converting) is a device's failure
 /// (DeviceError).

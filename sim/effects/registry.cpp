@@ -15,6 +15,7 @@
 #include "sim/effects/params.hpp"
 #include "sim/effects/rate_random_walk.hpp"
 #include "sim/effects/saturation.hpp"
+#include "sim/effects/scale_factor.hpp"
 #include "sim/effects/spikes.hpp"
 #include "sim/effects/supply_coupling.hpp"
 #include "sim/effects/temp_scale_factor.hpp"
@@ -45,10 +46,11 @@ const std::vector<Entry>& entries() {
         // additive biases, couplings on the true input, clipping last; INL shifts transitions before DNL quantises;
         // bit-flip spikes act on the quantised code.
         return std::vector<Entry>{
-            entry<Vibration>(),      entry<ThermalSecondTc>(), entry<AmbientCycle>(),    entry<Flicker>(),
-            entry<RateRandomWalk>(), entry<GaussMarkov>(),     entry<TempScaleFactor>(), entry<CrossAxis>(),
-            entry<GSensitivity>(),   entry<Saturation>(),      entry<SupplyCoupling>(),  entry<MainsAlias>(),
-            entry<AdcInl>(),         entry<AdcDnl>(),          entry<Spikes>(),          entry<ClockJitter>(),
+            entry<Vibration>(),      entry<ThermalSecondTc>(), entry<AmbientCycle>(), entry<Flicker>(),
+            entry<RateRandomWalk>(), entry<GaussMarkov>(),     entry<ScaleFactor>(),  entry<TempScaleFactor>(),
+            entry<CrossAxis>(),      entry<GSensitivity>(),    entry<Saturation>(),   entry<SupplyCoupling>(),
+            entry<MainsAlias>(),     entry<AdcInl>(),          entry<AdcDnl>(),       entry<Spikes>(),
+            entry<ClockJitter>(),
         };
     }();
     return table;

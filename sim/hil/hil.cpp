@@ -12,6 +12,7 @@
 #include "driftlab/proto/wire.hpp"
 #include "sim/hil/native_target.hpp"
 #include "sim/model/sensor_model.hpp"
+#include "sim/motion/trajectories.hpp"
 #include "sim/sim_error.hpp"
 
 namespace driftlab::sim {
@@ -22,7 +23,9 @@ namespace {
 class SensorSource final : public ConversionSource {
 public:
     explicit SensorSource(const HilOptions& options)
-        : sensor_(options.model, options.seed, options.warm_up_s), observer_(options.on_conversion) {}
+        : sensor_(options.model, options.seed, options.warm_up_s), observer_(options.on_conversion) {
+        if (options.trajectory) sensor_.set_motion(motion_source(options.trajectory));
+    }
     std::uint16_t code(Channel c, double t_s) override {
         const std::uint16_t code = sensor_.convert(c, t_s).code;
         if (observer_) observer_(c, t_s, code);

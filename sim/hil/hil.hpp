@@ -18,6 +18,7 @@
 #include "sim/hil/host_endpoint.hpp"
 #include "sim/link/link.hpp"
 #include "sim/model/sim_model.hpp"
+#include "sim/motion/trajectory.hpp"
 
 namespace driftlab::sim {
 
@@ -25,10 +26,12 @@ namespace driftlab::sim {
 enum class TargetKind : std::uint8_t { native };
 
 struct HilOptions {
-    SimModel model;                ///< sensor, effects, firmware CONFIG, link
-    double duration_s = 4000.0;    ///< recording time after the handshake [s] (output count = duration/period)
-    std::uint64_t seed = 1;        ///< every random component derives its substream from it
-    double warm_up_s = 0.0;        ///< the sensor was powered this long before the board booted [s] (eq. 1 time)
+    SimModel model;              ///< sensor, effects, firmware CONFIG, link
+    double duration_s = 4000.0;  ///< recording time after the handshake [s] (output count = duration/period)
+    std::uint64_t seed = 1;      ///< every random component derives its substream from it
+    double warm_up_s = 0.0;      ///< the sensor was powered this long before the board booted [s] (eq. 1 time)
+    /// The robot the unit rides, on the board's clock; null: at rest on the table.
+    std::shared_ptr<const Trajectory> trajectory;
     double reply_timeout_s = 0.5;  ///< host's resend timeout for requests [s]
     TargetKind target = TargetKind::native;
     /// When set, builds the board instead of `target`: how the AVR board (sim/avr, a library that depends on this

@@ -76,10 +76,15 @@ Conversion SensorModel::convert(Channel c, double board_t_s, const ConversionExt
         ctx.since_power_on_s = ctx.t_s;
     started_[i] = true;
     last_t_s_[i] = ctx.t_s;
-    ctx.true_physical = inputs_unit_;
+    ChannelValues values = inputs_unit_;
+    if (motion_) {
+        // The unit's motion is on the board's clock, which runs from the board's start, not the sensor's power-on.
+        const ChannelValues moving = motion_(ctx.t_s - powered_before_boot_s_);
+        for (std::size_t k = 0; k < kChannelCount; ++k) values[k] += moving[k];
+    }
+    ctx.true_physical = values;
     if (temperature_ != nullptr) ctx.temperature_degc = temperature_->temperature_degc(ctx.t_s);
 
-    ChannelValues values = inputs_unit_;
     // apply_in_chain gives input effects (vibration) to all four channels' true motion, so cross-couplings
     // (g_sensitivity reads the accel axes while the gyro is converted) see them.
     for (auto& e : by_stage_[stage_index(Stage::physical)]) apply_in_chain(*e, values, ctx);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "sim/effects/effect.hpp"
@@ -66,6 +67,11 @@ public:
     /// previous one. Throws std::logic_error when an effect makes the converter input NaN.
     Conversion convert(Channel c, double board_t_s, const ConversionExtras& extras = {});
 
+    /// The unit's motion: what each channel's true input gains over the model's at-rest input (gyro [deg/s], accel
+    /// [g]) at an instant of the board's clock [s since its start]. Empty (the default): the unit at rest.
+    using MotionSource = std::function<ChannelValues(double board_t_s)>;
+    void set_motion(MotionSource motion) { motion_ = std::move(motion); }
+
     /// Analog noise sigma of a channel [counts].
     double analog_sigma_counts(Channel c) const { return noise_[channel_index(c)].sigma_counts(); }
     /// Converter counts per physical unit of a channel [counts per °/s or per g].
@@ -80,6 +86,7 @@ private:
     std::vector<Drift> drifts_;
     std::vector<WhiteNoise> noise_;
     ChannelValues inputs_unit_{};
+    MotionSource motion_;
     std::array<std::vector<std::unique_ptr<Effect>>, 4> by_stage_;  // indexed by Stage
     const Effect* temperature_ = nullptr;  // the first effect that models the unit's temperature, when there is one
     std::array<double, kChannelCount> last_t_s_{};

@@ -9,5 +9,6 @@ namespace driftlab::sim {
 inline constexpr std::uint64_t kNoiseStreamBase = 0x100;       ///< + channel index: white noise
 inline constexpr std::uint64_t kToHostStreamBase = 0x200;      ///< + behaviour: firmware -> host link
 inline constexpr std::uint64_t kToFirmwareStreamBase = 0x300;  ///< + behaviour: host -> firmware link
+inline constexpr std::uint64_t kTrajectoryStream = 0x400;      ///< stop-and-go's stretches
 
 }  // namespace driftlab::sim
