@@ -1,22 +1,24 @@
 // Host-in-the-loop speed on one core: the fig3 preset end to end (sensor model, firmware core on NativeBoard,
-// link, host decoder), as simulated seconds per wall second, and the sensor model alone per conversion.
+// link, host decoder), as simulated seconds per wall second, the same with the unit riding the figure8 and
+// stop-and-go trajectories at 0.1 s outputs, and the sensor model alone per conversion.
 // Prints figures only; the target is >= 1000x real time.
 #include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
 
 #include "sim/hil/hil.hpp"
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/model_file.hpp"
 #include "sim/model/sensor_model.hpp"
+#include "sim/motion/trajectories.hpp"
 
 namespace {
 
 using driftlab::Channel;
 using namespace driftlab::sim;
 
-void run_preset(benchmark::State& state, Preset preset) {
-    HilOptions o;
-    o.model = paper_model();
-    apply_preset(preset, o);
+void run_options(benchmark::State& state, const HilOptions& o) {
     double simulated_s = 0.0;
     double conversions = 0.0;
     std::uint64_t rows = 0;
@@ -32,11 +34,35 @@ void run_preset(benchmark::State& state, Preset preset) {
         benchmark::Counter(conversions, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_HilFig3(benchmark::State& state) { run_preset(state, Preset::fig3); }
+HilOptions preset_options(Preset preset) {
+    HilOptions o;
+    o.model = paper_model();
+    apply_preset(preset, o);
+    return o;
+}
+
+// An hour on a trajectory at 0.1 s outputs (4 conversions per channel each).
+HilOptions moving(const std::string& trajectory) {
+    HilOptions o = preset_options(Preset::fig3);
+    o.model.firmware.output_period_ms = 100;
+    o.model.firmware.conversions_per_output = 4;
+    o.model.firmware.window = 4;
+    o.duration_s = 3600.0;
+    o.trajectory = std::make_shared<const Trajectory>(make_trajectory(trajectory, o.duration_s + 60.0, 10.0, 1));
+    return o;
+}
+
+void BM_HilFig3(benchmark::State& state) { run_options(state, preset_options(Preset::fig3)); }
 BENCHMARK(BM_HilFig3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_HilFig2(benchmark::State& state) { run_preset(state, Preset::fig2); }
+void BM_HilFig2(benchmark::State& state) { run_options(state, preset_options(Preset::fig2)); }
 BENCHMARK(BM_HilFig2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_HilFigure8Hour(benchmark::State& state) { run_options(state, moving("figure8")); }
+BENCHMARK(BM_HilFigure8Hour)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_HilStopAndGoHour(benchmark::State& state) { run_options(state, moving("stop-and-go")); }
+BENCHMARK(BM_HilStopAndGoHour)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_SensorModelConversion(benchmark::State& state) {
     SensorModel sensor(paper_model(), 1);

@@ -61,6 +61,12 @@ LogData read_canonical(std::istream& in, const std::string& path, ReadOptions op
             "the metadata lacks " + missing +
                 ": gap repeats the firmware's smoothing in every replicate and "
                 "needs all of 'window', 'fit_order' and 'conversions_per_output' (record, decode and hil write them)");
+    // The replicates are a unit at rest: a log in motion would read as one huge gap, every cell located.
+    if (const auto trajectory = log.metadata.get("trajectory"); trajectory && *trajectory != "rest")
+        throw DataError(path, log.metadata.line_of("trajectory"),
+                        "recorded in motion (trajectory " + *trajectory +
+                            "): gap compares the log with a unit at rest, and reads the motion as a gap; diagnose a "
+                            "log at rest (a motion-aware diagnosis with the ground truth is not available yet)");
     return log;
 }
 

@@ -56,6 +56,28 @@ LogOverview overview_of(const LogData& log) {
     return o;
 }
 
+// Rows whose SAMPLE frame flags a channel saturated (a conversion of the output's window on a rail): there the rail
+// is read, not the sensor, and a fit or a deviation through them says so only here. One note per flagged channel.
+std::vector<std::string> saturation_notes(const LogData& log) {
+    std::vector<std::string> notes;
+    const auto column = log.optional_columns.find("sat_flags");
+    if (column == log.optional_columns.end()) return notes;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        std::size_t rows = 0, first = 0, last = 0;
+        for (std::size_t k = 0; k < column->second.size(); ++k) {
+            if (!flags_saturation(column->second[k], c)) continue;
+            if (rows++ == 0) first = k;
+            last = k;
+        }
+        if (rows == 0) continue;
+        notes.push_back(std::string(kChannelNames[c]) + " saturated (sat_flags) in " + std::to_string(rows) +
+                        (rows == 1 ? " row" : " rows") + " from t = " + significant(log.t_s[first], 6) + " s to " +
+                        significant(log.t_s[last], 6) +
+                        " s: the rail is read there, not the sensor (--exclude FROM:TO leaves such rows out)");
+    }
+    return notes;
+}
+
 }  // namespace
 
 std::size_t FileAnalysis::failures() const {
@@ -100,6 +122,7 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
         const LogData log = parse_log(source.in, request.path, read);
         if (const std::string note = dropped_cut_line_note(log); !note.empty()) out.notes.push_back(note);
         out.log = overview_of(log);
+        for (std::string& note : saturation_notes(log)) out.notes.push_back(std::move(note));
         all = series_from_log(log, request.names);
     } else {
         all = series_from_table(parse_numeric_table(source.in, request.path), request.names, request.time_column,

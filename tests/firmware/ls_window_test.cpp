@@ -140,6 +140,26 @@ TEST(LsWindow, RoundsToTheNearestQ8StepOnBothSides) {
   EXPECT_EQ(lsw.estimate_q8(FitOrder::line), 640);
 }
 
+// The smoother's lag on a changing input (docs/sim.md §Motion): on a ramp of k counts per conversion the mean of the
+// last N conversions reads the value of (N - 1) / 2 conversions before the newest, k (N - 1) / 2 counts behind it,
+// while the line fit reads the newest value itself. In closed form, so checked exactly (Q8).
+TEST(LsWindow, OnARampTheMeanLagsHalfTheWindowAndTheLineDoesNot) {
+  for (int window : {1, 2, 8, 25, 64}) {
+    for (int slope : {1, 3, -2}) {
+      LsWindow lsw;
+      lsw.reset(static_cast<uint8_t>(window));
+      int newest = 0;
+      for (int k = 0; k < 2 * window; ++k) {
+        newest = 300 + slope * k;
+        lsw.push(static_cast<uint16_t>(newest));
+      }
+      // 256 x (newest - slope (N - 1) / 2) is a whole number: 128 x slope x (N - 1).
+      EXPECT_EQ(lsw.estimate_q8(FitOrder::mean), 256 * newest - 128 * slope * (window - 1)) << window << " " << slope;
+      EXPECT_EQ(lsw.estimate_q8(FitOrder::line), 256 * newest) << window << " " << slope;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fw
 }  // namespace driftlab

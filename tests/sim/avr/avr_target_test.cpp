@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "sim/avr/avr_target.hpp"
 #include "sim/hil/hil.hpp"
 #include "sim/model/model_file.hpp"
+#include "sim/motion/trajectories.hpp"
 #include "tests/sim/avr/twin_driver.hpp"
 
 namespace driftlab::sim::avr::test {
@@ -60,6 +62,20 @@ TEST_F(AvrHil, PaperModelPolledGivesTheSameRecordsAsNative) {
     options.duration_s = 60.0;
     options.seed = 5;
     expect_same_records(run(options, true), run(options, false), 59);
+}
+
+// The unit on a robot: the real firmware reads the same moving input at the same instants as the native core, so a
+// minute of figure8 at 0.1 s outputs gives the same records.
+TEST_F(AvrHil, AFigureEightMinuteGivesTheSameRecordsAsNative) {
+    HilOptions options;
+    options.model = paper_model();
+    options.model.firmware.output_period_ms = 100;
+    options.model.firmware.conversions_per_output = 10;  // 2.5 ms per conversion: a whole number of ticks
+    options.model.firmware.window = 10;
+    options.duration_s = 60.0;
+    options.seed = 3;
+    options.trajectory = std::make_shared<const Trajectory>(make_trajectory("figure8", 120.0, 2.0, 3));
+    expect_same_records(run(options, true), run(options, false), 590);
 }
 
 }  // namespace
