@@ -139,14 +139,16 @@ void run_hil_command(const HilCliOptions& o) {
                      o.gdb_port, firmware_elf(o).c_str(), o.gdb_port);
 #endif
     const auto wall0 = std::chrono::steady_clock::now();
-    std::vector<double> rows_t_s;  // the ground truth's instants
+    MotionRows rows;  // where the ground truth is drawn
     const sim::HilSummary s = run_board(h, [&](const sim::HilRecord& r) {
         log.write(r);
-        if (h.trajectory) rows_t_s.push_back(r.t_s);
+        if (!h.trajectory) return;
+        rows.t_s.push_back(r.t_s);
+        rows.gyro_counts.push_back(r.value_counts[channel_index(Channel::gyro)]);
     });
     const double wall_s = seconds_since(wall0);
     log.close();
-    if (h.trajectory) write_truth(o, h, path, rows_t_s);
+    if (h.trajectory) write_motion_outputs(o, h, path, rows);
     if (s.interrupted && h.progress) std::fprintf(stderr, "\n");
     const std::string interrupted = "interrupted after " + significant(s.simulated_s, 6) + " s of board time (" +
                                     significant(h.duration_s, 6) + " s asked for): " + path + " holds the " +
@@ -225,6 +227,8 @@ void register_hil(CLI::App& app) {
         ->check(non_empty_path());
     cmd->add_option("--rest-before", opts->rest_before_s, "--trajectory: at rest this long first [s]")
         ->check(non_negative_number());
+    cmd->add_option("--plot", opts->plot_dir, "--trajectory: draw the truth's and the gyro's yaw rate in this folder")
+        ->check(non_empty_path());
     cmd->add_option("--target", opts->target, "native (firmware core on the host) or avr (the real ELF in simavr)")
         ->capture_default_str();
     cmd->add_option("--elf", opts->elf, "AVR firmware ELF for --target avr (default: the one this build made)")

@@ -1,6 +1,7 @@
 // What `driftlab hil` is asked to run; see hil_run.hpp.
 #include "host/cli/hil_run.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -9,8 +10,11 @@
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
+#include "host/view/motion_view.hpp"
 #include "sim/hil/hil_preset.hpp"
+#include "sim/model/drift.hpp"
 #include "sim/model/model_file.hpp"
+#include "sim/model/sensor.hpp"
 #include "sim/motion/trajectories.hpp"
 #include "sim/motion/truth_table.hpp"
 #include "sim/sim_error.hpp"
@@ -99,6 +103,7 @@ void set_target(const HilCliOptions& o, sim::HilOptions& h) {
 void set_trajectory(const HilCliOptions& o, sim::HilOptions& h) {
     if (o.trajectory.empty()) {
         if (o.rest_before_s) throw UsageError("--rest-before: needs --trajectory");
+        if (!o.plot_dir.empty()) throw UsageError("--plot: needs --trajectory");
         return;
     }
     // The handshake takes a little board time before the recording: a minute more covers it.
@@ -186,10 +191,21 @@ io::CaptureHeader run_metadata(const HilCliOptions& o, const sim::HilOptions& h,
     return header;
 }
 
-void write_truth(const HilCliOptions& o, const sim::HilOptions& h, const std::string& log_path,
-                 const std::vector<double>& rows_t_s) {
-    const std::string text = sim::truth_table(*h.trajectory, o.trajectory, o.rest_before_s.value_or(0.0), rows_t_s);
+void write_motion_outputs(const HilCliOptions& o, const sim::HilOptions& h, const std::string& log_path,
+                          const MotionRows& rows) {
+    const std::string text = sim::truth_table(*h.trajectory, o.trajectory, o.rest_before_s.value_or(0.0), rows.t_s);
     write_output_file(sim::truth_path_for(log_path), text, "ground truth");
+    if (o.plot_dir.empty()) return;
+    const sim::ChannelModel& gyro = h.model.channels[channel_index(Channel::gyro)];
+    const double per_dps =
+        sim::FrontEnd(gyro.front_end, h.model.adc.vref_v).counts_per_unit(std::ldexp(1.0, h.model.adc.bits));
+    const sim::Drift eq1(gyro.drift);
+    std::vector<double> truth, measured;
+    for (std::size_t k = 0; k < rows.t_s.size(); ++k) {
+        truth.push_back(h.trajectory->input_at(rows.t_s[k]).yaw_rate_dps);
+        measured.push_back((rows.gyro_counts[k] - eq1.at_counts(rows.t_s[k] + h.warm_up_s)) / per_dps);
+    }
+    view::write_yaw_rate_plot(o.plot_dir, rows.t_s, truth, measured);
 }
 
 }  // namespace driftlab::host::cli

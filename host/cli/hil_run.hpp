@@ -38,6 +38,7 @@ struct HilCliOptions {
     std::string pty_link;                 // --pty: stable symlink to the pseudo-terminal
     std::string trajectory;               // the robot the unit rides: a built-in name or a profile file; empty: at rest
     std::optional<double> rest_before_s;  // at rest this long before the trajectory starts [s of board time]
+    std::string plot_dir;                 // --trajectory: draw the truth's and the gyro's yaw rate here
 };
 
 /// The run `o` asks for. Throws UsageError for options that belong to another way of running, a configuration the
@@ -49,10 +50,16 @@ sim::HilOptions build_options(const HilCliOptions& o);
 /// in the file), and the trajectory, so that a log says what was simulated without the file beside it.
 io::CaptureHeader run_metadata(const HilCliOptions& o, const sim::HilOptions& h, const std::string& effects);
 
-/// Writes the ground truth of `h`'s trajectory beside the log at `log_path`, a row at each of its rows' `rows_t_s`,
-/// whole or not at all (sim/motion/truth_table.hpp).
-void write_truth(const HilCliOptions& o, const sim::HilOptions& h, const std::string& log_path,
-                 const std::vector<double>& rows_t_s);
+/// The log's instants and gyro values, which the truth and the plot of a run in motion are drawn at.
+struct MotionRows {
+    std::vector<double> t_s, gyro_counts;
+};
+
+/// Writes the ground truth of `h`'s trajectory beside the log at `log_path`, a row at each of its rows, whole or not
+/// at all (sim/motion/truth_table.hpp); with --plot, the truth's yaw rate beside the gyro's reading of it (its
+/// counts less the model's eq. 1, over the front end's counts per deg/s).
+void write_motion_outputs(const HilCliOptions& o, const sim::HilOptions& h, const std::string& log_path,
+                          const MotionRows& rows);
 
 /// The run; an emulated AVR that fails (the firmware crashed or stopped converting) is a device's failure
 /// (DeviceError).
