@@ -109,6 +109,7 @@ const std::vector<NotIdentifiable>& not_identifiable_list() {
          "a static log has constant inputs: misalignment is absorbed in the biases (needs multi-position data)"},
         {"g_sensitivity",
          "gravity is constant on a static table: the gyro's g-sensitivity is absorbed in its bias (needs tilts)"},
+        {"bandwidth", "a static input has no frequency content to filter (needs rate steps or turns)"},
         {"scale_factor", "the true rate is zero at rest: a scale-factor error multiplies zero (needs a turntable)"},
         {"temp_scale_factor",
          "the true rate is zero at rest: a scale-factor tempco multiplies zero (needs a turntable)"},

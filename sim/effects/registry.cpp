@@ -5,6 +5,7 @@
 #include "sim/effects/adc_dnl.hpp"
 #include "sim/effects/adc_inl.hpp"
 #include "sim/effects/ambient_cycle.hpp"
+#include "sim/effects/bandwidth.hpp"
 #include "sim/effects/clock_jitter.hpp"
 #include "sim/effects/cross_axis.hpp"
 #include "sim/effects/effect.hpp"
@@ -48,9 +49,9 @@ const std::vector<Entry>& entries() {
         return std::vector<Entry>{
             entry<Vibration>(),      entry<ThermalSecondTc>(), entry<AmbientCycle>(), entry<Flicker>(),
             entry<RateRandomWalk>(), entry<GaussMarkov>(),     entry<ScaleFactor>(),  entry<TempScaleFactor>(),
-            entry<CrossAxis>(),      entry<GSensitivity>(),    entry<Saturation>(),   entry<SupplyCoupling>(),
-            entry<MainsAlias>(),     entry<AdcInl>(),          entry<AdcDnl>(),       entry<Spikes>(),
-            entry<ClockJitter>(),
+            entry<CrossAxis>(),      entry<GSensitivity>(),    entry<Bandwidth>(),    entry<Saturation>(),
+            entry<SupplyCoupling>(), entry<MainsAlias>(),      entry<AdcInl>(),       entry<AdcDnl>(),
+            entry<Spikes>(),         entry<ClockJitter>(),
         };
     }();
     return table;

@@ -41,6 +41,7 @@ inline const std::map<std::string, std::string> kEffectExamples = {
      "waveform = \"square\"\namplitude_k_pp = 1.5\nperiod_s = 1800.0\nlag_s = 400.0\n"
      "coupling_dps_per_k = 0.03\ncoupling_g_per_k = [0.001, 0.001, 0.002]"},
     {"scale_factor", "error_pct = [1.5, -0.8, 0.5, 2.0]"},
+    {"bandwidth", "cutoff_hz = [7.0, 20.0, 20.0, 20.0]"},
     {"temp_scale_factor", "scale_pct_per_k = [0.03, 0.01, 0.01, 0.02]\nreference_degc = 25.0"},
     {"flicker", "b_dps = 0.03\nb_g = 0.0005\nf_low_hz = 0.0005\nf_high_hz = 1.0"},
     {"rate_random_walk", "k_dps_per_sqrt_s = 0.001\nk_g_per_sqrt_s = [2e-5, 2e-5, 3e-5]"},

@@ -25,7 +25,7 @@ const std::map<std::string, Stage> kExpected = {
     {"g_sensitivity", Stage::physical},     {"vibration", Stage::physical},
     {"mains_alias", Stage::analog},         {"clock_jitter", Stage::timing},
     {"saturation", Stage::physical},        {"spikes", Stage::converter},
-    {"scale_factor", Stage::physical},
+    {"scale_factor", Stage::physical},      {"bandwidth", Stage::physical},
 };
 
 std::string text_of(const toml::node& node) {

@@ -109,7 +109,10 @@ TEST(ChainParity, HilAndTheReplicatePathGiveTheSameCodesForEveryEffect) {
         const HilConversions hil = through_hil(model);
         ASSERT_EQ(hil.t_s, base.t_s) << label(effects) << ": the board's schedule does not depend on the sensor";
         ASSERT_GT(hil.codes[0].size(), 5000u);  // 20 conversions a second per channel
-        EXPECT_NE(hil.codes, base.codes) << label(effects) << " changed no code: the comparison would be vacuous";
+        // A low-pass of a constant input is that input: bandwidth alone changes nothing at rest, and is compared
+        // where it filters something, beside vibration.
+        if (effects != std::vector<std::string>{"bandwidth"})
+            EXPECT_NE(hil.codes, base.codes) << label(effects) << " changed no code: the comparison would be vacuous";
         const Codes replicated = through_replicates(model, hil);
         for (std::size_t c = 0; c < kChannelCount; ++c) {
             ASSERT_EQ(replicated[c].size(), hil.codes[c].size());
