@@ -117,6 +117,7 @@ void run_hil_command(const HilCliOptions& o) {
     if (path == "-" && h.trajectory)
         throw UsageError("--trajectory: the ground truth goes beside the log; write it to a file");
     if (path != "-") make_folder_of(path, "log");
+    if (!o.plot_dir.empty()) make_output_folder(o.plot_dir, "plot");
 
     std::string effects;
     for (const sim::EffectSpec& e : h.model.effects) effects += (effects.empty() ? "" : ",") + e.name;
