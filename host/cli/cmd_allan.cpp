@@ -11,6 +11,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/fit/allan_pipeline.hpp"
+#include "host/fit/file_analysis.hpp"
 #include "host/fit/series.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/log/log_window.hpp"
@@ -69,6 +70,7 @@ std::vector<fit::Series> load_series(const AllanCommandOptions& o, fit::AllanReq
             throw UsageError("--unit: a canonical log is in counts; physical units follow the channel");
         const LogData data = parse_log(source.in, o.path, read);
         view::print_note(dropped_cut_line_note(data), o.json);
+        for (const std::string& note : fit::saturation_notes(data)) view::print_note(note, o.json);
         series = fit::series_from_log(data, names);
     } else {
         if (o.kind.empty() || o.tau0_s <= 0.0) {

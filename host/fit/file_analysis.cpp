@@ -56,8 +56,8 @@ LogOverview overview_of(const LogData& log) {
     return o;
 }
 
-// Rows whose SAMPLE frame flags a channel saturated (a conversion of the output's window on a rail): there the rail
-// is read, not the sensor, and a fit or a deviation through them says so only here. One note per flagged channel.
+}  // namespace
+
 std::vector<std::string> saturation_notes(const LogData& log) {
     std::vector<std::string> notes;
     const auto column = log.optional_columns.find("sat_flags");
@@ -77,8 +77,6 @@ std::vector<std::string> saturation_notes(const LogData& log) {
     }
     return notes;
 }
-
-}  // namespace
 
 std::size_t FileAnalysis::failures() const {
     std::size_t n = 0;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "host/fit/drift_analysis.hpp"
+#include "host/log/log_data.hpp"
 #include "host/log/log_metadata.hpp"
 
 namespace driftlab::host::fit {
@@ -55,6 +56,10 @@ struct FileAnalysis {
     /// "file: series 'x': why; series 'y': why" for the failures.
     std::string failure_summary() const;
 };
+
+/// One note per channel that rows of `log` flag saturated (sat_flags: a conversion of the output's window on a
+/// rail): there the rail is read, not the sensor, and a fit or a deviation through those rows says so only here.
+std::vector<std::string> saturation_notes(const LogData& log);
 
 /// Reads the file (DataError when unreadable or malformed) and analyses each series. UsageError when a sample period
 /// is given for a file with its own time and the rows' spacing disagrees with it, or a time column other than t_s for

@@ -64,7 +64,7 @@ TEST(MotionCli, ATurntableLogRegressedOnItsTruthRecoversScaleFactorAndBias) {
 }
 
 // A gyro of ±60 deg/s span on a turntable that reaches 80: the clipped outputs sit at the converter's rails, the
-// firmware flags them, and `fit` says where.
+// firmware flags them, and `fit` and `allan` say where.
 TEST(MotionCli, BeyondItsRangeTheGyroSitsAtTheRailAndFitSaysWhere) {
     TempDir dir("turntable_sat");
     const TurntableRun run = run_turntable(dir, kQuietGyro + "span_dps = 60.0\n");
@@ -81,8 +81,10 @@ TEST(MotionCli, BeyondItsRangeTheGyroSitsAtTheRailAndFitSaysWhere) {
     }
     EXPECT_GT(high, 100);
     EXPECT_GT(low, 100);
-    const RunResult fit = run_driftlab({"fit", dir.file("t.csv"), "--channel", "gyro"}, dir.path());
-    EXPECT_NE(fit.output.find("note: gyro saturated (sat_flags) in "), std::string::npos) << fit.output;
+    for (const char* command : {"fit", "allan"}) {
+        const RunResult r = run_driftlab({command, dir.file("t.csv"), "--channel", "gyro"}, dir.path());
+        EXPECT_NE(r.output.find("note: gyro saturated (sat_flags) in "), std::string::npos) << command << r.output;
+    }
 }
 
 // gap's replicates are a unit at rest: a log in motion is refused naming its trajectory's line, not read as a gap.
