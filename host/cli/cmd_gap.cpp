@@ -16,6 +16,7 @@
 #include "host/cli/gap_input.hpp"
 #include "host/gap/calibrate.hpp"
 #include "host/gap/diagnose.hpp"
+#include "host/gap/diagnose_motion.hpp"
 #include "host/gap/model_out.hpp"
 #include "host/gap/verdict_stability.hpp"
 #include "host/log/log_reader.hpp"
@@ -54,6 +55,8 @@ void refuse_clashing_outputs(const GapCommandOptions& o) {
             "--fit-fraction sets where --holdout forecast splits the log; the default interleaved design fits on "
             "tenths 0, 4, 5, 7, 9 of the log whatever the fraction: add --holdout forecast, or leave --fit-fraction "
             "out");
+    if (!o.input.truth_path.empty() && o.stability > 0)
+        throw UsageError("--stability simulates logs at rest from the estimated model; it does not take --truth");
     refuse_writing_over_input(o.model_out, "--model-out", o.input.path, "log");
     refuse_writing_over_input(o.model_out, "--model-out", o.input.model_path, "model file");
     refuse_file_on_output_folder(o.model_out, "--model-out", o.report_dir, "--report");
@@ -94,7 +97,7 @@ std::vector<std::string> write_model_out(const GapCommandOptions& o, const gap::
 
 void run(const GapCommandOptions& o) {
     refuse_clashing_outputs(o);
-    const auto [log, unit, notes] = load_recording(o.input);
+    const auto [log, unit, notes, truth] = load_recording(o.input);
     for (const std::string& note : notes) view::print_note(note, o.json);
     // Only when the rows analysed reach it: --to before it loses nothing
     view::print_note(dropped_cut_line_note(log), o.json);
@@ -105,7 +108,8 @@ void run(const GapCommandOptions& o) {
         gap::firmware_config(gap::smoothing_from_log(log), false, o.input.path);
     }
     const gap::GapOptions options = diagnosis_options(o);
-    const gap::GapResult r = gap::diagnose(log, unit, options);
+    const gap::GapResult r =
+        truth ? gap::diagnose_in_motion(log, *truth, unit, options) : gap::diagnose(log, unit, options);
     const gap::VerdictStability stability = gap::verdict_stability(r, log, unit, options, o.stability);
     if (options.progress) std::fprintf(stderr, "\r\033[K");
     const gap::VerdictStability* stable = stability.logs > 0 ? &stability : nullptr;
@@ -177,6 +181,10 @@ void register_gap(CLI::App& app) {
            "(e.g. 0.5 for what a shock leaves after the rail), joined as with --exclude")
         ->check(non_negative_number());
     add_drop_cut_line_flag(cmd, o->input.drop_cut_line);
+    cmd->add_option("--truth", o->input.truth_path,
+                    "Ground truth of a log in motion (hil --trajectory writes LOG.truth.csv): its known input is "
+                    "taken out first, and scale factor, cross-axis coupling and g-sensitivity join the candidates")
+        ->check(non_empty_path());
     cmd->add_option("--channel", o->input.channels, "Channels to analyse (default: every channel that varies)")
         ->delimiter(',');
     cmd->add_option("--replicates", o->replicates, "Simulated replicates R (>= 10)")

@@ -45,7 +45,8 @@ std::vector<std::string> cut_to_window(const GapInput& o, LogData& log) {
 
 // A canonical log the simulator can stand beside: its converter, and the smoothing the replicates must repeat (a
 // window of 1 assumed for a missing one makes every averaged log look broken).
-LogData read_canonical(std::istream& in, const std::string& path, ReadOptions options, const sim::SimModel& unit) {
+LogData read_canonical(std::istream& in, const std::string& path, ReadOptions options, const sim::SimModel& unit,
+                       bool with_truth) {
     options.assumed_adc_bits = unit.adc.bits;
     LogData log = parse_log(in, path, options);
     if (const auto bits = log.metadata.get_int("adc_bits"); bits && *bits != unit.adc.bits)
@@ -62,11 +63,11 @@ LogData read_canonical(std::istream& in, const std::string& path, ReadOptions op
                 ": gap repeats the firmware's smoothing in every replicate and "
                 "needs all of 'window', 'fit_order' and 'conversions_per_output' (record, decode and hil write them)");
     // The replicates are a unit at rest: a log in motion would read as one huge gap, every cell located.
-    if (const auto trajectory = log.metadata.get("trajectory"); trajectory && *trajectory != "rest")
+    if (const auto trajectory = log.metadata.get("trajectory"); trajectory && *trajectory != "rest" && !with_truth)
         throw DataError(path, log.metadata.line_of("trajectory"),
                         "recorded in motion (trajectory " + *trajectory +
-                            "): gap compares the log with a unit at rest, and reads the motion as a gap; diagnose a "
-                            "log at rest (a motion-aware diagnosis with the ground truth is not available yet)");
+                            "): gap compares the log with a unit at rest, and would read the motion as a gap; give "
+                            "its ground truth with --truth (hil writes it beside the log as LOG.truth.csv)");
     return log;
 }
 
@@ -79,10 +80,17 @@ LoadedRecording load_recording(const GapInput& o) {
     if (source.canonical_log) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        LoadedRecording out{read_canonical(source.in, o.path, read, unit), unit, {}};
+        LoadedRecording out{read_canonical(source.in, o.path, read, unit, !o.truth_path.empty()), unit, {}, {}};
         out.notes = cut_to_window(o, out.log);
+        if (!o.truth_path.empty()) {
+            out.truth = read_truth_file(o.truth_path);
+            match_truth_rows(*out.truth, out.log, o.windowed() || !out.log.cuts.empty());
+        }
         return out;
     }
+    if (!o.truth_path.empty())
+        throw UsageError("--truth takes the ground truth of a canonical log (hil --trajectory writes both); " + o.path +
+                         " is a plain recording");
     if (o.mappings.empty() || !(o.tau0_s > 0.0))
         throw UsageError(o.path +
                          " is not a canonical log: a plain recording needs --tau0 SECONDS and at least one "
@@ -91,7 +99,7 @@ LoadedRecording load_recording(const GapInput& o) {
     for (const auto& m : o.mappings) how.columns.push_back(gap::parse_column_mapping(m));
     how.sample_period_s = o.tau0_s;
     how.block = o.block;
-    LoadedRecording out{gap::log_from_table(parse_numeric_table(source.in, o.path), how), unit, {}};
+    LoadedRecording out{gap::log_from_table(parse_numeric_table(source.in, o.path), how), unit, {}, {}};
     out.unit = gap::unit_of_recording(unit, how, out.log);
     out.notes = cut_to_window(o, out.log);
     return out;

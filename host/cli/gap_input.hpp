@@ -5,12 +5,14 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "driftlab/channels.hpp"
 #include "host/log/log_data.hpp"
 #include "host/log/log_window.hpp"
+#include "host/log/truth_file.hpp"
 #include "sim/model/sim_model.hpp"
 
 namespace driftlab::host::cli {
@@ -27,6 +29,7 @@ struct GapInput {
     std::vector<TimeWindow> excluded;  ///< --exclude: stretches left out
     double saturated_margin_s = -1.0;  ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
     bool drop_cut_line = false;        ///< canonical logs: a cut last line is dropped (and noted), not refused
+    std::string truth_path;            ///< --truth: the ground truth of a canonical log in motion
 
     bool windowed() const { return from_s != -INFINITY || to_s != INFINITY; }
 };
@@ -35,6 +38,7 @@ struct LoadedRecording {
     LogData log;
     sim::SimModel unit;
     std::vector<std::string> notes;  ///< what --from/--to kept (--exclude's windows are the result's left_out)
+    std::optional<TruthFile> truth;  ///< --truth, its rows matched to the log's (match_truth_rows())
 };
 
 /// --channel: the channels named (none named: all false, which selects every one).
@@ -42,7 +46,7 @@ std::array<bool, kChannelCount> channels_named(const GapInput& input);
 
 /// A canonical log as it is, with the unit of --model or the paper's; a plain table through its column mappings
 /// (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to and
-/// --exclude.
+/// --exclude; with --truth, the ground truth checked against the rows kept.
 LoadedRecording load_recording(const GapInput& input);
 
 /// " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else

@@ -130,13 +130,16 @@ const std::vector<NotIdentifiable>& not_identifiable_list() {
     return list;
 }
 
-std::vector<NotIdentifiable> not_tried_without_raw_codes() {
+std::vector<NotIdentifiable> not_tried_without_raw_codes(bool codes_carry_motion) {
     std::vector<NotIdentifiable> out;
     for (const auto& info : candidate_list())
         if (info.route == FitRoute::code_density)
-            out.push_back({info.effect,
-                           "fitted to the raw codes of a raw-mode log (a raw_<channel> column), which this log "
-                           "lacks; on smoothed outputs alone the frac cells locate it, weakly"});
+            out.push_back({info.effect, codes_carry_motion
+                                            ? "fitted to the raw codes of a raw-mode log, whose codes in motion carry "
+                                              "the motion as well as the converter"
+                                            : "fitted to the raw codes of a raw-mode log (a raw_<channel> column), "
+                                              "which this log lacks; on smoothed outputs alone the frac cells locate "
+                                              "it, weakly"});
     return out;
 }
 

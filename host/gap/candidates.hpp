@@ -44,7 +44,7 @@ struct NotIdentifiable {
 const std::vector<NotIdentifiable>& not_identifiable_list();
 
 /// The candidates a log without raw codes cannot have tried (those fitted to raw codes), with the reason.
-std::vector<NotIdentifiable> not_tried_without_raw_codes();
+std::vector<NotIdentifiable> not_tried_without_raw_codes(bool codes_carry_motion = false);
 
 /// The library effect for candidate `effect` on channel `c` with parameters `params` (candidate_list() keys,
 /// physical units). Throws std::invalid_argument for an unknown name.

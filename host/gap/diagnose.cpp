@@ -281,9 +281,10 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     battery.holdout = options.holdout;
     battery.fit_fraction = options.fit_fraction;
     battery.sample_period_s = result.base.smoothing.sample_period_s;
-    const RawCodes raw = raw_code_columns(log, result.channels, battery);
+    battery.frac_cells = !options.less_known_input;
+    const RawCodes raw = options.less_known_input ? RawCodes{} : raw_code_columns(log, result.channels, battery);
     result.raw_codes = battery.raw_codes;
-    if (!any_raw_codes(result)) result.not_tried = not_tried_without_raw_codes();
+    if (!any_raw_codes(result)) result.not_tried = not_tried_without_raw_codes(options.less_known_input);
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
     auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit,

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "host/gap/explain.hpp"
 #include "host/gap/gap_model.hpp"
 #include "host/gap/level_step.hpp"
+#include "host/gap/motion_terms.hpp"
 #include "host/gap/statistics.hpp"
 #include "host/log/log_data.hpp"
 
@@ -34,6 +36,9 @@ struct GapOptions {
     bool search_diffuse = false;
     ExplainOptions explain_options;
     int threads = 2;
+    /// A log in motion less its known input (diagnose_in_motion()): its raw codes still carry the motion and its
+    /// values have left the codes' lattice, so neither the raw codes nor the fraction-of-count cells are used.
+    bool less_known_input = false;
     std::function<void(const std::string& stage)> progress;  ///< optional: told each stage as it starts
 };
 
@@ -114,6 +119,8 @@ struct GapResult {
     std::string verdict;           ///< an effect name, "none" or "unexplained" (also when a level step remains)
     TimingCheck timing;            ///< without the joins of left_out
     std::vector<LogCut> left_out;  ///< stretches the user left out of the log (LogData::cuts)
+    /// `gap --truth`: the known input taken out first and the motion terms judged (diagnose_in_motion()).
+    std::optional<MotionFindings> motion;
 };
 
 /// Diagnoses `log` against the unit `unit` (front ends and converter). Throws DataError (naming the log) when it

@@ -191,11 +191,11 @@ void add_window_cells(Builder& out, const std::vector<double>& t_s, const std::v
 }
 
 // One part's (fitting or held-out) cells of a channel: Allan deviation, band power and autocorrelation by octave,
-// fraction-of-count occupancy, raw-code histogram (with `raw`), kurtosis and the largest block step. Returns the
-// part's transform, which the coherences share.
+// fraction-of-count occupancy (with `frac`), raw-code histogram (with `raw`), kurtosis and the largest block step.
+// Returns the part's transform, which the coherences share.
 stats::BandSpectrum add_part_cells(Builder& out, const std::vector<double>& e, const std::vector<double>& yc,
                                    const std::vector<double>* raw, const Runs& rows, Segment seg, double tau0,
-                                   const std::string& name, int ci) {
+                                   const std::string& name, int ci, bool frac) {
     const std::vector<double> part = part_of(e, rows);
     const std::vector<double> part_y = part_of(yc, rows);
     const std::size_t len = part.size();
@@ -222,7 +222,8 @@ stats::BandSpectrum add_part_cells(Builder& out, const std::vector<double>& e, c
         }
         out.add(acf[j], {"acf", name, ci, label, seg, false, kAcfMargin}, text);
     }
-    out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
+    if (frac)
+        out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
     if (raw)
         out.add(code_density_excess(part_of(*raw, rows), part_y),
                 {"codes", name, ci, "raw-code histogram", seg, true, kLogRatioMargin});
@@ -286,9 +287,9 @@ BatteryResult compute_battery(const std::vector<double>& t_s,
             throw std::invalid_argument(std::string("compute_battery: no raw codes for ") + name);
         add_window_cells(out, t_s, result.residual[c], fitting, name, ci);
         for (std::size_t s = 0; s < 2; ++s)
-            spectra[c][s] =
-                add_part_cells(out, result.residual[c], *y[c], options.raw_codes[c] ? raw[c] : nullptr, parts[s],
-                               s == 0 ? Segment::fit : Segment::heldout, options.sample_period_s, name, ci);
+            spectra[c][s] = add_part_cells(out, result.residual[c], *y[c], options.raw_codes[c] ? raw[c] : nullptr,
+                                           parts[s], s == 0 ? Segment::fit : Segment::heldout, options.sample_period_s,
+                                           name, ci, options.frac_cells);
     }
     add_pair_cells(out, options, result, parts, spectra);
     return result;

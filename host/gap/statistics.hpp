@@ -61,6 +61,9 @@ struct BatteryOptions {
     /// Channels whose raw codes (a raw-mode log's raw column) get the `codes` cells: the log and every replicate
     /// then pass them to compute_battery.
     std::array<bool, kChannelCount> raw_codes{};
+    /// The fraction-of-count cells; off for a log in motion less its known input, whose values have left the
+    /// lattice of the codes' averages that the cells compare.
+    bool frac_cells = true;
 };
 
 /// Per sample of `t_s`: true where it belongs to the fitting part. Interleaved: tenths 0, 4, 5, 7, 9 by index

@@ -204,7 +204,8 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     put_left_out(j, r);
     put_level_steps(j, r);
     json ni = json::array();
-    for (const auto& n : gap::not_identifiable_list()) ni.push_back({{"effect", n.effect}, {"reason", n.reason}});
+    for (const auto& n : gap::not_identifiable_list())
+        if (!tried_in_motion(r, n.effect)) ni.push_back({{"effect", n.effect}, {"reason", n.reason}});
     j["not_identifiable"] = ni;
     json nt = json::array();
     for (const auto& n : r.not_tried) nt.push_back({{"effect", n.effect}, {"reason", n.reason}});
@@ -216,6 +217,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["max_effects"] = options.explain_options.max_effects;
     j["threshold_z"] = json_number(r.before.threshold);
     j["cells"] = r.layout.size();
+    j["motion"] = motion_to_json(r);
     return j;
 }
 

@@ -125,7 +125,8 @@ void print_limits(const GapResult& r) {
             step_size_text(r.base, s.channel, s.steps[1].size_counts, 2).c_str(), s.steps[1].t_s, s.statistic, s.margin,
             s.p_value, gap::step_reading(s));
     std::printf("not identifiable from a static log:");
-    for (const auto& n : gap::not_identifiable_list()) std::printf(" %s", n.effect.c_str());
+    for (const auto& n : gap::not_identifiable_list())
+        if (!tried_in_motion(r, n.effect)) std::printf(" %s", n.effect.c_str());
     std::printf("\n");
     for (const auto& n : r.not_tried) std::printf("not tried: %s (%s)\n", n.effect.c_str(), n.reason.c_str());
     // Always: clock_jitter's not-identifiable reason points here for the log's own timestamps. A spread below 1e-6 %
@@ -147,6 +148,7 @@ void print_gap_text(const GapResult& r, const GapOptions& options, const LogData
     print_where(r, options, log);
     print_explanation(r, options, log);
     print_candidates(r, options);
+    print_motion_text(r);
     print_limits(r);
     if (stability)
         for (const std::string& line : stability_text(*stability, r.verdict)) std::printf("%s\n", line.c_str());

@@ -47,7 +47,15 @@ inline constexpr auto kGapJsonKeys = std::to_array<const char*>({"verdict",
                                                                  "fit_fraction",
                                                                  "max_effects",
                                                                  "threshold_z",
-                                                                 "cells"});
+                                                                 "cells",
+                                                                 "motion"});
+
+/// `gap --truth`'s motion section (GapResult::motion): the terms, their estimates and verdicts; nothing (null in
+/// JSON) without it.
+void print_motion_text(const gap::GapResult& result);
+nlohmann::json motion_to_json(const gap::GapResult& result);
+/// Whether `effect` was judged as a motion term, so it is not among the effects a static log cannot identify.
+bool tried_in_motion(const gap::GapResult& result, const std::string& effect);
 
 /// The diagnosis run with `options` under the keys kGapJsonKeys (docs/gap.md §JSON).
 nlohmann::json gap_to_json(const gap::GapResult& result, const gap::GapOptions& options);

@@ -87,7 +87,8 @@ TEST(MotionCli, BeyondItsRangeTheGyroSitsAtTheRailAndFitSaysWhere) {
     }
 }
 
-// gap's replicates are a unit at rest: a log in motion is refused naming its trajectory's line, not read as a gap.
+// gap's replicates are a unit at rest: a log in motion without its truth is refused naming its trajectory's line,
+// not read as a gap.
 TEST(MotionCli, GapRefusesALogInMotion) {
     TempDir dir("gapmotion");
     ASSERT_EQ(run_driftlab({"hil", "--trajectory", "square", "--duration", "60", "-o", dir.file("s.csv")}, dir.path())
@@ -97,6 +98,7 @@ TEST(MotionCli, GapRefusesALogInMotion) {
     EXPECT_EQ(gap.exit_code, 3) << gap.output;
     EXPECT_NE(gap.output.find(dir.file("s.csv") + ":"), std::string::npos) << gap.output;
     EXPECT_NE(gap.output.find("recorded in motion (trajectory square)"), std::string::npos) << gap.output;
+    EXPECT_NE(gap.output.find("give its ground truth with --truth"), std::string::npos) << gap.output;
 }
 
 TEST(MotionCli, AnUnknownTrajectoryOrABadFileIsRefusedAndNothingIsWritten) {
