@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <functional>
 #include <limits>
-#include <stdexcept>
 
 #include <Eigen/QR>
 
@@ -14,7 +13,6 @@
 #include "firmware/core/hal.hpp"
 #include "host/gap/calibrate.hpp"
 #include "sim/model/board_outputs.hpp"
-#include "sim/model/model_file.hpp"
 #include "sim/motion/trajectories.hpp"
 
 namespace driftlab::host::gap {

@@ -29,14 +29,6 @@ struct ColumnPlan {
     std::vector<std::string> optional_names;  // same order
 };
 
-std::optional<std::pair<std::string, std::string>> split_comment_key_value(std::string_view body) {
-    const auto colon = body.find(':');
-    if (colon == std::string_view::npos) return std::nullopt;
-    const std::string key(trim_blanks(body.substr(0, colon)));
-    if (key.empty() || key.find(' ') != std::string::npos) return std::nullopt;
-    return std::make_pair(key, std::string(trim_blanks(body.substr(colon + 1))));
-}
-
 // The key and value of a magic line (text without its line end, not blank); none for another line.
 std::optional<std::pair<std::string, std::string>> magic_key_value(std::string_view text) {
     auto kv = text.front() == '#' ? split_comment_key_value(text.substr(1)) : std::nullopt;
@@ -335,6 +327,14 @@ bool starts_as_log(std::istream& in) {
                (trim_blanks(text).rfind('#', 0) == 0 && text.find("driftlab-log") != std::string::npos);
     }
     return false;
+}
+
+std::optional<std::pair<std::string, std::string>> split_comment_key_value(std::string_view body) {
+    const auto colon = body.find(':');
+    if (colon == std::string_view::npos) return std::nullopt;
+    const std::string key(trim_blanks(body.substr(0, colon)));
+    if (key.empty() || key.find(' ') != std::string::npos) return std::nullopt;
+    return std::make_pair(key, std::string(trim_blanks(body.substr(colon + 1))));
 }
 
 }  // namespace driftlab::host

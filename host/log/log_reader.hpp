@@ -13,6 +13,8 @@
 #include <istream>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "host/log/log_data.hpp"
 
@@ -40,5 +42,9 @@ std::string dropped_cut_line_note(const LogData& log);
 /// (`# driftlab-log: N`, any version, blanks around the key allowed), or a comment naming `driftlab-log` (a damaged
 /// magic line, which read_log() then refuses). Reads from the stream's position.
 bool starts_as_log(std::istream& in);
+
+/// The key and value of a comment's body (the text after `#`) of the form `key: value`, blanks trimmed; none where
+/// there is no colon or the key is empty or holds a blank (free text).
+std::optional<std::pair<std::string, std::string>> split_comment_key_value(std::string_view body);
 
 }  // namespace driftlab::host

@@ -5,23 +5,12 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "host/log/log_reader.hpp"
 #include "host/log/numeric_table.hpp"
 #include "host/util/error.hpp"
 
 namespace driftlab::host {
 namespace {
-
-// The value of the comment line `key: value`, if any.
-const std::string* comment_value(const std::vector<std::string>& comments, const std::string& key, std::string& out) {
-    for (const std::string& c : comments) {
-        const std::size_t start = c.find_first_not_of(' ');
-        if (start == std::string::npos || c.compare(start, key.size() + 1, key + ":") != 0) continue;
-        const std::size_t value = c.find_first_not_of(' ', start + key.size() + 1);
-        out = value == std::string::npos ? "" : c.substr(value);
-        return &out;
-    }
-    return nullptr;
-}
 
 std::vector<double> column(const NumericTable& table, const std::string& path, const char* name) {
     for (std::size_t i = 0; i < table.names.size(); ++i)
@@ -44,10 +33,11 @@ TruthFile read_truth_file(const std::string& path) {
     const NumericTable table = read_numeric_table(path);
     TruthFile truth;
     truth.path = path;
-    std::string value;
-    if (comment_value(table.comments, "trajectory", value)) truth.trajectory = value;
-    if (comment_value(table.comments, "rest_before_s", value))
-        truth.rest_before_s = std::strtod(value.c_str(), nullptr);
+    for (const std::string& comment : table.comments) {
+        const auto kv = split_comment_key_value(comment);
+        if (kv && kv->first == "trajectory") truth.trajectory = kv->second;
+        if (kv && kv->first == "rest_before_s") truth.rest_before_s = std::strtod(kv->second.c_str(), nullptr);
+    }
     truth.t_s = column(table, path, "t_s");
     truth.x_m = column(table, path, "x_m");
     truth.y_m = column(table, path, "y_m");

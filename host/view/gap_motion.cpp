@@ -1,8 +1,6 @@
 // The motion section of a gap result (`gap --truth`), in the terminal's text and the JSON; see gap_view.hpp.
-#include <cmath>
 #include <cstdio>
 
-#include "host/gap/candidates.hpp"
 #include "host/util/format_number.hpp"
 #include "host/view/gap_phrases.hpp"
 #include "host/view/gap_view.hpp"
