@@ -119,10 +119,6 @@ void run_hil_command(const HilCliOptions& o) {
     if (path != "-") make_folder_of(path, "log");
     if (!o.plot_dir.empty()) make_output_folder(o.plot_dir, "plot");
 
-    std::string effects;
-    for (const sim::EffectSpec& e : h.model.effects) effects += (effects.empty() ? "" : ",") + e.name;
-    io::HilLog log(path, run_metadata(o, h, effects));
-    h.on_ready = [&log](const proto::VersionPayload& v, const proto::ConfigPayload& c) { log.open(v, c); };
     if (::isatty(STDERR_FILENO) && !o.json && path != "-") h.progress = progress_bar();
 
     // Under a debugger the stopped CPU waits inside the board's run, where no stop is looked at: Ctrl-C keeps its
@@ -140,22 +136,14 @@ void run_hil_command(const HilCliOptions& o) {
                      o.gdb_port, firmware_elf(o).c_str(), o.gdb_port);
 #endif
     const auto wall0 = std::chrono::steady_clock::now();
-    MotionRows rows;  // where the ground truth is drawn
-    const sim::HilSummary s = run_board(h, [&](const sim::HilRecord& r) {
-        log.write(r);
-        if (!h.trajectory) return;
-        rows.t_s.push_back(r.t_s);
-        rows.gyro_counts.push_back(r.value_counts[channel_index(Channel::gyro)]);
-    });
+    const sim::HilSummary s = write_hil_log(o, h, path);
     const double wall_s = seconds_since(wall0);
-    log.close();
-    if (h.trajectory) write_motion_outputs(o, h, path, rows);
     if (s.interrupted && h.progress) std::fprintf(stderr, "\n");
     const std::string interrupted = "interrupted after " + significant(s.simulated_s, 6) + " s of board time (" +
                                     significant(h.duration_s, 6) + " s asked for): " + path + " holds the " +
                                     std::to_string(s.host.rows) + " rows made so far";
 
-    const view::HilRun run{path, o.preset, h.model.name, effects, o.seed, h.duration_s, wall_s, s};
+    const view::HilRun run{path, o.preset, h.model.name, effect_names(h), o.seed, h.duration_s, wall_s, s};
     if (o.json) {
         nlohmann::json j = view::hil_json(run);
 #ifdef DRIFTLAB_HAVE_SIM_AVR

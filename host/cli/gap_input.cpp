@@ -80,7 +80,11 @@ LoadedRecording load_recording(const GapInput& o) {
     if (source.canonical_log) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
-        LoadedRecording out{read_canonical(source.in, o.path, read, unit, !o.truth_path.empty()), unit, {}, {}};
+        LoadedRecording out{
+            read_canonical(source.in, o.path, read, unit, !o.truth_path.empty() || o.motion_without_truth),
+            unit,
+            {},
+            {}};
         out.notes = cut_to_window(o, out.log);
         if (!o.truth_path.empty()) {
             out.truth = read_truth_file(o.truth_path);

@@ -30,6 +30,7 @@ struct GapInput {
     double saturated_margin_s = -1.0;  ///< --exclude-saturated: seconds either side of each saturated stretch; < 0: off
     bool drop_cut_line = false;        ///< canonical logs: a cut last line is dropped (and noted), not refused
     std::string truth_path;            ///< --truth: the ground truth of a canonical log in motion
+    bool motion_without_truth = false;  ///< a log in motion is read without its truth (nav: the motion is the point)
 
     bool windowed() const { return from_s != -INFINITY || to_s != INFINITY; }
 };

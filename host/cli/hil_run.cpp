@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "host/cli/commands.hpp"
+#include "host/io/hil_log.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
@@ -206,6 +207,27 @@ void write_motion_outputs(const HilCliOptions& o, const sim::HilOptions& h, cons
         measured.push_back((rows.gyro_counts[k] - eq1.at_counts(rows.t_s[k] + h.warm_up_s)) / per_dps);
     }
     view::write_yaw_rate_plot(o.plot_dir, rows.t_s, truth, measured);
+}
+
+std::string effect_names(const sim::HilOptions& h) {
+    std::string effects;
+    for (const sim::EffectSpec& e : h.model.effects) effects += (effects.empty() ? "" : ",") + e.name;
+    return effects;
+}
+
+sim::HilSummary write_hil_log(const HilCliOptions& o, sim::HilOptions& h, const std::string& path) {
+    io::HilLog log(path, run_metadata(o, h, effect_names(h)));
+    h.on_ready = [&log](const proto::VersionPayload& v, const proto::ConfigPayload& c) { log.open(v, c); };
+    MotionRows rows;  // where the ground truth is drawn
+    const sim::HilSummary s = run_board(h, [&](const sim::HilRecord& r) {
+        log.write(r);
+        if (!h.trajectory) return;
+        rows.t_s.push_back(r.t_s);
+        rows.gyro_counts.push_back(r.value_counts[channel_index(Channel::gyro)]);
+    });
+    log.close();
+    if (h.trajectory) write_motion_outputs(o, h, path, rows);
+    return s;
 }
 
 }  // namespace driftlab::host::cli

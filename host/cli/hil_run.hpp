@@ -61,6 +61,13 @@ struct MotionRows {
 void write_motion_outputs(const HilCliOptions& o, const sim::HilOptions& h, const std::string& log_path,
                           const MotionRows& rows);
 
+/// The effects `h`'s model switches on, by name, comma-separated ("" for none).
+std::string effect_names(const sim::HilOptions& h);
+
+/// Runs `h` (made from `o` by build_options()) into the canonical log at `path`, and in motion its ground truth
+/// beside it (write_motion_outputs()): what `hil` writes, and `nav-eval` for each of its runs.
+sim::HilSummary write_hil_log(const HilCliOptions& o, sim::HilOptions& h, const std::string& path);
+
 /// The run; an emulated AVR that fails (the firmware crashed or stopped converting) is a device's failure
 /// (DeviceError).
 sim::HilSummary run_board(const sim::HilOptions& h, const sim::RecordSink& on_record);
