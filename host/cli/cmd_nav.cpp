@@ -43,16 +43,9 @@ std::optional<nav::UnitDrift> unit_drift(const NavCommandOptions& o) {
 }
 
 void set_aids(NavCommandOptions& o) {
-    for (const std::string& a : o.aids) {
-        if (a == "zupt")
-            o.nav.aid.zupt = true;
-        else if (a == "odometry")
-            o.nav.aid.odometry = true;
-        else if (a == "fixes")
-            o.nav.aid.fixes = true;
-        else
+    for (const std::string& a : o.aids)
+        if (!nav::enable_aid(o.nav.aid, a))
             throw UsageError("--aid: '" + a + "' is not an aid (zupt, odometry, fixes)");
-    }
 }
 
 void run(NavCommandOptions& o) {

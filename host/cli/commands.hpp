@@ -44,6 +44,7 @@ void register_allan(CLI::App& app);
 void register_gap(CLI::App& app);
 void register_gap_eval(CLI::App& app);
 void register_nav(CLI::App& app);
+void register_nav_eval(CLI::App& app);
 
 /// The input flags fit, whiteness and report share (defined in cmd_fit.cpp).
 void add_analysis_input_options(CLI::App* cmd, fit::FileAnalysisRequest& request);

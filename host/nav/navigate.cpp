@@ -139,6 +139,15 @@ Track run_variant(const RunContext& ctx, const VariantSpec& spec, const InputCor
 
 }  // namespace
 
+bool enable_aid(AidOptions& aid, const std::string& name) {
+    bool* flag = name == "zupt"       ? &aid.zupt
+                 : name == "odometry" ? &aid.odometry
+                 : name == "fixes"    ? &aid.fixes
+                                      : nullptr;
+    if (flag) *flag = true;
+    return flag != nullptr;
+}
+
 NavTruth::NavTruth(const TruthFile& file, std::vector<std::size_t> rows) : file_(&file), rows_(std::move(rows)) {
     if (rows_.empty()) return;
     x0_ = file.x_m[rows_[0]];

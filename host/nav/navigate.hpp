@@ -30,6 +30,9 @@ struct AidOptions {
     std::uint64_t seed = 1;         ///< the aids' noise
 };
 
+/// Switches on the aid `name` (zupt, odometry, fixes); false for any other name.
+bool enable_aid(AidOptions& aid, const std::string& name);
+
 struct NavOptions {
     double rest_s = 10.0;        ///< the first seconds, where the unit stands (raw's bias, the filters' start)
     double stop_window_s = 1.0;  ///< a stop is this long a window of quiet readings

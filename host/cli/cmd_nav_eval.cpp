@@ -1,0 +1,155 @@
+// `driftlab nav-eval`: navigation over many simulated runs with the firmware in the loop (native or the AVR binary
+// in simavr): per seed a rest recording of the unit to fit its drift on, and a run along each trajectory from
+// power-on with its ground truth; each scored as `nav` scores it, then summarised (host/nav/nav_eval, docs/nav.md
+// §Monte Carlo).
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "host/cli/commands.hpp"
+#include "host/cli/hil_run.hpp"
+#include "host/log/log_reader.hpp"
+#include "host/log/truth_file.hpp"
+#include "host/nav/nav_eval.hpp"
+#include "host/nav/navigate.hpp"
+#include "host/nav/unit_drift.hpp"
+#include "host/util/error.hpp"
+#include "host/util/output_folder.hpp"
+#include "host/util/progress_bar.hpp"
+#include "host/view/json_out.hpp"
+#include "host/view/nav_eval_view.hpp"
+#include "sim/model/model_file.hpp"
+#include "sim/motion/truth_table.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct NavEvalOptions {
+    int runs = 10;
+    std::uint64_t seed = 1;
+    std::vector<std::string> trajectories = {"stop-and-go"};
+    double duration_s = 1810.0;
+    double period_s = 0.1;
+    double rest_before_s = 10.0;
+    double fit_duration_s = 1800.0;
+    std::string model_file;
+    std::string target = "native";
+    std::vector<std::string> aids = {"zupt"};
+    nav::NavOptions nav;
+    std::string work_dir;
+    bool json = false;
+    std::string plot_dir;
+};
+
+// The canonical log `path` of the unit, simulated as `hil` would: at rest, or along `trajectory`.
+void simulate(const NavEvalOptions& o, const std::string& trajectory, double duration_s, std::uint64_t seed,
+              const std::string& path) {
+    HilCliOptions h;
+    h.duration_s = duration_s;
+    h.period_s = o.period_s;
+    h.model_file = o.model_file;
+    h.seed = seed;
+    h.target = o.target;
+    h.trajectory = trajectory;
+    if (!trajectory.empty()) h.rest_before_s = o.rest_before_s;
+    sim::HilOptions run = build_options(h);
+    write_hil_log(h, run, path);
+}
+
+// Seed s: the unit's rest recording is simulated with seed 2s, its runs with 2s + 1, so that no two logs share
+// their noise.
+nav::EvalRun evaluate_run(const NavEvalOptions& o, const std::string& trajectory, std::uint64_t seed,
+                          const std::string& dir) {
+    const std::string stem = dir + "/s" + std::to_string(seed);
+    const std::string rest = stem + "_rest.csv", moving = stem + "_" + trajectory + ".csv";
+    if (!std::filesystem::exists(rest)) simulate(o, "", o.fit_duration_s, 2 * seed, rest);
+    simulate(o, trajectory, o.duration_s, 2 * seed + 1, moving);
+    const nav::UnitDrift drift = nav::fit_unit_drift(read_log(rest), -INFINITY, INFINITY);
+    const LogData log = read_log(moving);
+    const TruthFile truth = read_truth_file(sim::truth_path_for(moving));
+    const nav::NavTruth nav_truth(truth, match_truth_rows(truth, log, false));
+    nav::NavOptions options = o.nav;
+    options.aid.seed = seed;
+    const sim::SimModel unit = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file);
+    const nav::NavRun run = nav::navigate(log, unit, drift, nav_truth, options);
+    return {trajectory, seed, nav::score(run, nav_truth)};
+}
+
+void run(NavEvalOptions& o) {
+    for (const std::string& a : o.aids)
+        if (!nav::enable_aid(o.nav.aid, a))
+            throw UsageError("--aid: '" + a + "' is not an aid (zupt, odometry, fixes)");
+    if (!o.plot_dir.empty()) make_output_folder(o.plot_dir, "plot");
+    const bool keep = !o.work_dir.empty();
+    const std::string dir =
+        keep ? o.work_dir
+             : (std::filesystem::temp_directory_path() / ("driftlab-nav-eval-" + std::to_string(getpid()))).string();
+    make_output_folder(dir, "work");
+    const auto progress = isatty(2) ? progress_bar() : std::function<void(double)>{};
+    std::vector<nav::EvalRun> runs;
+    const std::size_t total = o.trajectories.size() * static_cast<std::size_t>(o.runs);
+    try {
+        for (int k = 0; k < o.runs; ++k)
+            for (const std::string& t : o.trajectories) {
+                runs.push_back(evaluate_run(o, t, o.seed + static_cast<std::uint64_t>(k), dir));
+                if (progress) progress(static_cast<double>(runs.size()) / static_cast<double>(total));
+            }
+    } catch (...) {
+        if (!keep) std::filesystem::remove_all(dir);
+        throw;
+    }
+    if (!keep) std::filesystem::remove_all(dir);
+    const view::NavEvalReport report{o.trajectories, o.target, o.aids, o.duration_s, &runs, nav::summarise(runs)};
+    if (o.json)
+        view::write_json(std::cout, view::nav_eval_json(report));
+    else
+        view::print_nav_eval_text(std::cout, report);
+    if (!o.plot_dir.empty()) view::write_nav_eval_plots(o.plot_dir, report);
+}
+
+}  // namespace
+
+void register_nav_eval(CLI::App& app) {
+    auto o = std::make_shared<NavEvalOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "nav-eval", "Navigation over many simulated runs, the firmware in the loop: each variant's errors over time");
+    cmd->add_option("--runs", o->runs, "Seeds per trajectory")
+        ->capture_default_str()
+        ->check(whole_number_in(1, 100000));
+    cmd->add_option("--seed", o->seed, "First seed")->capture_default_str()->check(seed_number());
+    cmd->add_option("--trajectories", o->trajectories, "Built-in trajectories or profile files, comma-separated")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--duration", o->duration_s, "Each run's recording time [s]")
+        ->capture_default_str()
+        ->check(positive_number());
+    cmd->add_option("--period", o->period_s, "Output period [s]")->capture_default_str()->check(positive_number());
+    cmd->add_option("--rest-before", o->rest_before_s, "At rest this long before the trajectory starts [s]")
+        ->capture_default_str()
+        ->check(positive_number());
+    cmd->add_option("--fit-duration", o->fit_duration_s, "The rest recording eq. 1 is fitted on [s from power-on]")
+        ->capture_default_str()
+        ->check(positive_number());
+    cmd->add_option("--model", o->model_file, "Model file of the unit; default: the paper's")->check(non_empty_path());
+    cmd->add_option("--target", o->target, "native, or avr (the firmware's ELF in simavr)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"native", "avr"}));
+    cmd->add_option("--aid", o->aids, "Aids of the filter variants: zupt, odometry, fixes, comma-separated")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--work", o->work_dir, "Keep every run's logs and truths in this folder (default: a temporary one)")
+        ->check(non_empty_path());
+    cmd->add_flag("--json", o->json,
+                  "Print JSON (keys: at_s, variants.<name>.{heading_error_deg,heading_error_deg_p95,position_error_m,"
+                  "position_error_m_p95,nees_inside_fraction,...}, per_run)");
+    cmd->add_option("--plot", o->plot_dir, "Write the errors against time into this folder")->check(non_empty_path());
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace driftlab::host::cli
