@@ -45,7 +45,7 @@ std::optional<nav::UnitDrift> unit_drift(const NavCommandOptions& o) {
 void set_aids(NavCommandOptions& o) {
     for (const std::string& a : o.aids)
         if (!nav::enable_aid(o.nav.aid, a))
-            throw UsageError("--aid: '" + a + "' is not an aid (zupt, odometry, fixes)");
+            throw UsageError("--aid: '" + a + "' is not an aid (zupt, odometry, fixes, none)");
 }
 
 void run(NavCommandOptions& o) {

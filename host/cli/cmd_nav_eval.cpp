@@ -84,7 +84,7 @@ nav::EvalRun evaluate_run(const NavEvalOptions& o, const std::string& trajectory
 void run(NavEvalOptions& o) {
     for (const std::string& a : o.aids)
         if (!nav::enable_aid(o.nav.aid, a))
-            throw UsageError("--aid: '" + a + "' is not an aid (zupt, odometry, fixes)");
+            throw UsageError("--aid: '" + a + "' is not an aid (zupt, odometry, fixes, none)");
     if (!o.plot_dir.empty()) make_output_folder(o.plot_dir, "plot");
     const bool keep = !o.work_dir.empty();
     const std::string dir =

@@ -140,6 +140,7 @@ Track run_variant(const RunContext& ctx, const VariantSpec& spec, const InputCor
 }  // namespace
 
 bool enable_aid(AidOptions& aid, const std::string& name) {
+    if (name == "none") return true;
     bool* flag = name == "zupt"       ? &aid.zupt
                  : name == "odometry" ? &aid.odometry
                  : name == "fixes"    ? &aid.fixes

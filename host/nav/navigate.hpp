@@ -30,7 +30,7 @@ struct AidOptions {
     std::uint64_t seed = 1;         ///< the aids' noise
 };
 
-/// Switches on the aid `name` (zupt, odometry, fixes); false for any other name.
+/// Switches on the aid `name` (zupt, odometry, fixes; none switches on nothing); false for any other name.
 bool enable_aid(AidOptions& aid, const std::string& name);
 
 struct NavOptions {
