@@ -14,6 +14,8 @@ packages=(
   zlib1g-dev
   # plots
   gnuplot-nox
+  # tests: the HTML report opened in a headless browser (tests/e2e/report_browser_test.cpp)
+  chromium
   # AVR cross build, flashing and emulation
   gcc-avr binutils-avr avr-libc avrdude gdb-avr simavr libsimavr-dev
 )

@@ -154,19 +154,7 @@ void register_gap(CLI::App& app) {
     cmd->add_option("file", o->input.path, "Real log: a canonical log, or a plain table with --tau0 and --as")
         ->required()
         ->check(non_empty_path());
-    cmd->add_option(
-        "--as", o->input.mappings,
-        "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
-        "LSB (its resolution in the column's unit: deg/s or g unless UNIT is mdps, rad/s, mg or m/s2), "
-        "e.g. gyro=col1:0.00875 or gyro=gx:1.33e-4:rad/s; repeat per channel");
-    cmd->add_option("--tau0", o->input.tau0_s,
-                    "Plain recordings: the raw sample period [s] (timing from a time column, as fit finds it, "
-                    "if there is one)")
-        ->check(positive_number());
-    cmd->add_option("--block", o->input.block,
-                    "Plain recordings: samples averaged per output (an order-0 smoother of that "
-                    "window; default 1)")
-        ->check(whole_number_in(1, proto::kConversionsPerOutputMax));
+    add_plain_recording_options(cmd, o->input);
     cmd->add_option("--model", o->input.model_path,
                     "Model file of the unit (front ends, converter) and its effects, part of the base: Gaussian "
                     "processes held at "

@@ -9,7 +9,6 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/gap_input.hpp"
-#include "host/log/log_reader.hpp"
 #include "host/nav/nav_score.hpp"
 #include "host/nav/navigate.hpp"
 #include "host/nav/unit_drift.hpp"
@@ -35,11 +34,17 @@ struct NavCommandOptions {
     std::string output;
 };
 
+// --fit-from reads its recording as the log is read (a plain table through the same --as and --tau0), up to --fit-to.
 std::optional<nav::UnitDrift> unit_drift(const NavCommandOptions& o) {
     if (!o.drift_path.empty() && !o.fit_from.empty()) throw UsageError("--drift and --fit-from: give one");
     if (!o.drift_path.empty()) return nav::read_unit_drift(o.drift_path);
     if (o.fit_from.empty()) return std::nullopt;
-    return nav::fit_unit_drift(read_log(o.fit_from), -INFINITY, o.fit_to_s);
+    GapInput rest = o.input;
+    rest.path = o.fit_from;
+    rest.truth_path.clear();
+    rest.from_s = -INFINITY;
+    rest.to_s = o.fit_to_s;
+    return nav::fit_unit_drift(load_recording(rest).log, -INFINITY, INFINITY);
 }
 
 void set_aids(NavCommandOptions& o) {
@@ -66,16 +71,20 @@ void run(NavCommandOptions& o) {
     const std::optional<nav::UnitDrift> drift = unit_drift(o);
     const nav::NavRun run = nav::navigate(rec.log, rec.unit, drift, truth, o.nav);
 
-    view::NavReport report{o.input.path, drift ? drift->source : "",
-                           o.aids,       rec.truth ? o.input.truth_path : (o.at_rest ? "at rest" : ""),
-                           &run,         std::nullopt};
+    view::NavReport report{o.input.path,
+                           drift ? drift->source : "",
+                           o.aids,
+                           rec.truth ? o.input.truth_path : (o.at_rest ? "at rest" : ""),
+                           &run,
+                           std::nullopt,
+                           view::nav_curves(run, truth, view::kNavJsonPoints)};
     if (truth) report.score = nav::score(run, *truth);
     if (o.json)
         view::write_json(std::cout, view::nav_json(report));
     else
         view::print_nav_text(std::cout, report);
     if (!o.output.empty()) view::write_nav_estimate_csv(o.output, run);
-    if (!o.plot_dir.empty()) view::write_nav_plots(o.plot_dir, report, truth);
+    if (!o.plot_dir.empty()) view::write_nav_plots(o.plot_dir, view::nav_curves(run, truth, run.t_s.size()));
 }
 
 }  // namespace
@@ -84,9 +93,12 @@ void register_nav(CLI::App& app) {
     auto o = std::make_shared<NavCommandOptions>();
     CLI::App* cmd = app.add_subcommand(
         "nav", "Navigate a log in the plane: dead reckoning and an EKF, with and without the unit's drift model");
-    cmd->add_option("log", o->input.path, "Canonical log of the unit riding the robot (hil --trajectory writes one)")
+    cmd->add_option("log", o->input.path,
+                    "Canonical log of the unit riding the robot (hil --trajectory writes one), or a plain table with "
+                    "--tau0 and --as")
         ->required()
         ->check(non_empty_path());
+    add_plain_recording_options(cmd, o->input);
     cmd->add_option("--truth", o->input.truth_path, "Ground truth to score against (hil writes LOG.truth.csv)")
         ->check(non_empty_path());
     cmd->add_flag("--at-rest", o->at_rest, "Score against a unit at rest throughout (a static recording)");

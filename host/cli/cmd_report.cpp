@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,12 +11,14 @@
 #include "host/fit/file_analysis.hpp"
 #include "host/stats/rate_unit.hpp"
 #include "host/util/error.hpp"
+#include "host/util/input_file.hpp"
 #include "host/util/output_file.hpp"
 #include "host/util/output_folder.hpp"
 #include "host/view/analysis_notes.hpp"
 #include "host/view/fit_view.hpp"
 #include "host/view/html_report.hpp"
 #include "host/view/json_out.hpp"
+#include "host/view/nav_section.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -26,7 +29,22 @@ struct ReportCommandOptions {
     bool json = false;
     bool no_plots = false;
     std::vector<std::string> units;  ///< --unit [COLUMN:]UNIT, plain tables
+    std::string nav_path;            ///< --nav: what nav --json printed
 };
+
+// --nav's JSON, read before the analysis so that a wrong file costs nothing.
+std::optional<nlohmann::json> read_nav(const std::string& path) {
+    if (path.empty()) return std::nullopt;
+    std::ifstream in = open_input_file(path);
+    nlohmann::json nav;
+    try {
+        nav = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw DataError(path, 0, "not JSON (byte " + std::to_string(e.byte) + "): give what nav --json prints");
+    }
+    view::nav_section(nav, path);  // refuses what nav --json does not print
+    return nav;
+}
 
 /// Gives the plain table's analysed columns the units of --unit, so that the page reads in them (Allan headers,
 /// noise terms in navigation units). A column --unit names that is not among them is refused, naming the columns.
@@ -45,12 +63,14 @@ void run(const ReportCommandOptions& opts) {
         throw UsageError("--unit: " + opts.request.path +
                          " is a driftlab log: its channels are in counts, whose physical units are known");
     make_folder_of(opts.output, "report");  // before the work, as --plot does
+    const std::optional<nlohmann::json> nav = read_nav(opts.nav_path);
     fit::FileAnalysis file = fit::analyse_file(opts.request);
     assign_units(units, file);
     // A page of empty tables had been written where no series could be analysed; one that failed is shown there.
     if (file.failures() == file.series.size()) throw_if_failed(file, false);
     view::ReportOptions ropts;
     ropts.plots = !opts.no_plots;
+    if (nav) ropts.nav = &*nav, ropts.nav_path = opts.nav_path;
     const std::string html = view::render_html_report(file, ropts);
     std::ofstream out(opts.output, std::ios::binary);
     out << html;
@@ -87,6 +107,8 @@ void register_report(CLI::App& app) {
     add_analysis_input_options(cmd, opts->request);
     cmd->add_option("-o,--output", opts->output, "HTML file to write (default report.html)")->check(non_empty_path());
     cmd->add_flag("--json", opts->json, "Also print the fit results as JSON (same keys as `fit --json`)");
+    cmd->add_option("--nav", opts->nav_path, "Add a navigation section: what nav --json printed for a run of this unit")
+        ->check(non_empty_path());
     cmd->add_flag("--no-plots", opts->no_plots, "Leave the figures out (no gnuplot needed)");
     add_unit_option(cmd, opts->units);
     cmd->callback([opts] { run(*opts); });

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <optional>
 
+#include "driftlab/proto/messages.hpp"
+#include "host/cli/commands.hpp"
 #include "host/fit/series.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/plain_recording.hpp"
@@ -121,6 +123,22 @@ std::string rows_used(const GapInput& o, const LogData& log) {
         out += text;
     }
     return out + ")";
+}
+
+void add_plain_recording_options(CLI::App* cmd, GapInput& input) {
+    cmd->add_option(
+        "--as", input.mappings,
+        "Plain recordings: analyse COLUMN (its name, or col1... without a name line) as CHANNEL, in codes of "
+        "LSB (its resolution in the column's unit: deg/s or g unless UNIT is mdps, rad/s, mg or m/s2), "
+        "e.g. gyro=col1:0.00875 or gyro=gx:1.33e-4:rad/s; repeat per channel");
+    cmd->add_option("--tau0", input.tau0_s,
+                    "Plain recordings: the raw sample period [s] (timing from a time column, as fit finds it, "
+                    "if there is one)")
+        ->check(positive_number());
+    cmd->add_option("--block", input.block,
+                    "Plain recordings: samples averaged per output (an order-0 smoother of that "
+                    "window; default 1)")
+        ->check(whole_number_in(1, proto::kConversionsPerOutputMax));
 }
 
 }  // namespace driftlab::host::cli

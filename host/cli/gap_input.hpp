@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "driftlab/channels.hpp"
 #include "host/log/log_data.hpp"
 #include "host/log/log_window.hpp"
@@ -49,6 +51,9 @@ std::array<bool, kChannelCount> channels_named(const GapInput& input);
 /// (never guessed), with a unit whose codes are the columns' LSBs (set by the whole table); then --from/--to and
 /// --exclude; with --truth, the ground truth checked against the rows kept.
 LoadedRecording load_recording(const GapInput& input);
+
+/// --as, --tau0 and --block: how a plain recording is read (gap, nav).
+void add_plain_recording_options(CLI::App* cmd, GapInput& input);
 
 /// " (rows from X s to Y s, without A s to B s)" where --from/--to, --exclude or --exclude-saturated chose them, else
 /// "".

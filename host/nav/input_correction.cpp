@@ -64,7 +64,8 @@ ImuReading reading(const LogData& log, std::size_t i, const InputCorrection& cor
                    const std::array<double, kNavAxes>& counts_per_si) {
     std::array<double, kNavAxes> v{};
     for (std::size_t k = 0; k < kNavAxes; ++k)
-        v[k] = (log.channel(kNavChannels[k])[i] - correction.counts(k, log.t_s[i])) / counts_per_si[k];
+        if (log.recorded[channel_index(kNavChannels[k])])
+            v[k] = (log.channel(kNavChannels[k])[i] - correction.counts(k, log.t_s[i])) / counts_per_si[k];
     return {v[0], v[1], v[2]};
 }
 

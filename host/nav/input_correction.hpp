@@ -45,7 +45,7 @@ private:
     std::array<double, kNavAxes> sd_{};
 };
 
-/// Row `i` of `log` as the unit read it, less `correction`, in SI units.
+/// Row `i` of `log` as the unit read it, less `correction`, in SI units; 0 on an axis the log does not record.
 ImuReading reading(const LogData& log, std::size_t i, const InputCorrection& correction,
                    const std::array<double, kNavAxes>& counts_per_si);
 

@@ -8,7 +8,7 @@
 
 namespace driftlab::host::nav {
 
-NeesBand pose_nees_band() { return {stats::chi_square_quantile(0.025, 3.0), stats::chi_square_quantile(0.975, 3.0)}; }
+NeesBand nees_band(int dof) { return {stats::chi_square_quantile(0.025, dof), stats::chi_square_quantile(0.975, dof)}; }
 
 namespace {
 
@@ -29,13 +29,14 @@ NavScore score(const NavRun& run, const NavTruth& truth, const std::vector<doubl
     out.duration_s = t.back() - t.front();
     for (std::size_t i = 1; i < t.size(); ++i)
         out.distance_m += std::hypot(truth.x(i) - truth.x(i - 1), truth.y(i) - truth.y(i - 1));
-    const NeesBand band = pose_nees_band();
+    out.nees_dof = run.heading_only ? 1 : 3;
+    const NeesBand band = nees_band(out.nees_dof);
     for (const Track& tr : run.tracks) {
         VariantScore v;
         v.name = tr.name;
         const auto heading_error = [&](std::size_t i) { return std::abs(tr.heading_deg[i] - truth.heading_deg(i)); };
         const auto position_error = [&](std::size_t i) {
-            return std::hypot(tr.x_m[i] - truth.x(i), tr.y_m[i] - truth.y(i));
+            return run.heading_only ? NAN : std::hypot(tr.x_m[i] - truth.x(i), tr.y_m[i] - truth.y(i));
         };
         for (const double a : at_s) {
             const auto i = row_at(t, t.front() + a);

@@ -27,14 +27,15 @@ struct NavScore {
     std::vector<double> at_s;
     double duration_s = 0.0;
     double distance_m = 0.0;  ///< travelled, along the truth
+    int nees_dof = 3;         ///< 1 for a run of the heading alone
     std::vector<VariantScore> variants;
 };
 
-/// The two-sided 95 % band of the pose NEES (chi-square, 3 degrees of freedom).
+/// The two-sided 95 % band of a NEES with `dof` degrees of freedom (3 for the pose, 1 for the heading alone).
 struct NeesBand {
     double low, high;
 };
-NeesBand pose_nees_band();
+NeesBand nees_band(int dof);
 
 NavScore score(const NavRun& run, const NavTruth& truth, const std::vector<double>& at_s = kNavEvalTimesS);
 

@@ -47,7 +47,8 @@ FilterNoise filter_noise(const std::optional<UnitDrift>& drift, const InitialRes
 
 class TrackRecorder {
 public:
-    TrackRecorder(Track& t, const std::optional<NavTruth>& truth) : t_(t), truth_(truth) {}
+    TrackRecorder(Track& t, const std::optional<NavTruth>& truth, bool heading_only)
+        : t_(t), truth_(truth), heading_only_(heading_only) {}
     void record(std::size_t i, double t_s, const PlanarEkf& f, bool stopped) {
         const auto& s = f.state();
         const auto& p = f.covariance();
@@ -58,7 +59,9 @@ public:
         t_.position_sd_m.push_back(std::sqrt(p(PlanarEkf::x, PlanarEkf::x) + p(PlanarEkf::y, PlanarEkf::y)));
         if (truth_)
             t_.nees.push_back(i == 0 ? NAN
-                                     : f.pose_nees(truth_->x(i), truth_->y(i), truth_->heading_deg(i) / kDegPerRad));
+                              : heading_only_
+                                  ? f.heading_nees(truth_->heading_deg(i) / kDegPerRad)
+                                  : f.pose_nees(truth_->x(i), truth_->y(i), truth_->heading_deg(i) / kDegPerRad));
         if (stopped && (t_.stops.empty() || t_.stops.back().to_s != last_t_)) t_.stops.push_back({t_s, t_s});
         if (stopped) t_.stops.back().to_s = t_s;
         last_t_ = t_s;
@@ -67,6 +70,7 @@ public:
 private:
     Track& t_;
     const std::optional<NavTruth>& truth_;
+    bool heading_only_;
     double last_t_ = NAN;
 };
 
@@ -76,6 +80,7 @@ struct RunContext {
     const NavOptions& options;
     std::array<double, kNavAxes> cps;
     double period_s;
+    bool heading_only;
 };
 
 Track run_variant(const RunContext& ctx, const VariantSpec& spec, const InputCorrection& correction,
@@ -94,7 +99,7 @@ Track run_variant(const RunContext& ctx, const VariantSpec& spec, const InputCor
     std::mt19937_64 rng(aid.seed);  // the same aid noise for every variant
     std::normal_distribution<double> unit_normal;
     const double gate = stats::chi_square_quantile(0.99, 2.0);
-    TrackRecorder rec(track, ctx.truth);
+    TrackRecorder rec(track, ctx.truth, ctx.heading_only);
 
     ImuReading prev = reading(ctx.log, 0, correction, ctx.cps);
     rec.record(0, ctx.log.t_s[0], f, false);
@@ -175,17 +180,25 @@ double NavTruth::heading_deg(std::size_t i) const { return file_ ? file_->headin
 NavRun navigate(const LogData& log, const sim::SimModel& unit, const std::optional<UnitDrift>& drift,
                 const std::optional<NavTruth>& truth, const NavOptions& options) {
     if (log.size() < 3) throw DataError(log.source_name, 0, "fewer than 3 rows: nothing to navigate");
-    for (const Channel c : kNavChannels)
-        if (!log.recorded[channel_index(c)])
-            throw DataError(log.source_name, 0,
-                            std::string("no ") + kChannelNames[channel_index(c)] +
-                                " channel: planar navigation reads the gyro, accel_x and accel_y");
+    if (!log.recorded[channel_index(Channel::gyro)])
+        throw DataError(log.source_name, 0, "no gyro channel: planar navigation needs at least the heading's rate");
+    const bool ax = log.recorded[channel_index(Channel::accel_x)], ay = log.recorded[channel_index(Channel::accel_y)];
+    if (ax != ay)
+        throw DataError(log.source_name, 0,
+                        "one horizontal accelerometer without the other: give accel_x and accel_y, or neither "
+                        "(heading only)");
+    if (drift && ax && !(drift->axes[1].present && drift->axes[2].present))
+        throw DataError(log.source_name, 0,
+                        "the drift model has no accelerometers (" + drift->source +
+                            "), the log has: give a model of "
+                            "the same channels");
     if ((options.aid.odometry || options.aid.fixes) && !truth)
         throw UsageError("--aid odometry and fixes are drawn from the ground truth: give --truth (or --at-rest)");
     const InitialRest rest = initial_rest(log, options.rest_s);
-    const RunContext ctx{log, truth, options, counts_per_si(unit), median_period(log)};
+    const RunContext ctx{log, truth, options, counts_per_si(unit), median_period(log), !ax};
     NavRun run;
     run.t_s = log.t_s;
+    run.heading_only = !ax;
     for (const VariantSpec& v : kVariants) {
         if (v.eq1 && !drift) continue;
         const InputCorrection correction = v.eq1 ? InputCorrection::eq1(*drift) : InputCorrection::constant(rest);
@@ -198,6 +211,8 @@ NavRun navigate(const LogData& log, const sim::SimModel& unit, const std::option
             "noise is the initial rest's spread with biases that do not walk");
     else
         run.notes.insert(run.notes.end(), drift->notes.begin(), drift->notes.end());
+    if (run.heading_only)
+        run.notes.push_back("no accelerometers: the heading alone is navigated, and its NEES has 1 degree of freedom");
     return run;
 }
 

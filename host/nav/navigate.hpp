@@ -58,6 +58,7 @@ struct NavRun {
     std::vector<double> t_s;  ///< the log's rows [s since power-on]
     std::vector<Track> tracks;
     std::vector<std::string> notes;
+    bool heading_only = false;  ///< no accelerometers: the position stays at the origin and is not scored
 };
 
 /// The truth a run is scored against: the truth file's rows matched to the log's, or a unit at rest throughout; in

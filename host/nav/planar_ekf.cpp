@@ -129,6 +129,11 @@ void PlanarEkf::update_position(double px, double py, double sd) {
     update<2>(Eigen::Vector2d(px, py) - x_.segment<2>(x), h, Eigen::Matrix2d::Identity() * sd * sd);
 }
 
+double PlanarEkf::heading_nees(double true_heading_rad) const {
+    const double e = x_(heading) - true_heading_rad;
+    return e * e / p_(heading, heading);
+}
+
 double PlanarEkf::pose_nees(double true_x, double true_y, double true_heading_rad) const {
     const Eigen::Vector3d e(x_(x) - true_x, x_(y) - true_y, x_(heading) - true_heading_rad);
     return e.dot(p_.block<3, 3>(x, x).ldlt().solve(e));

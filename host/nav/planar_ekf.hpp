@@ -52,6 +52,8 @@ public:
     /// The normalised estimation error squared of the pose (x, y, heading) against the truth: chi-square with 3
     /// degrees of freedom when the filter is consistent.
     double pose_nees(double true_x, double true_y, double true_heading_rad) const;
+    /// The same for the heading alone (1 degree of freedom): a log without accelerometers navigates nothing else.
+    double heading_nees(double true_heading_rad) const;
 
 private:
     template <int M>

@@ -103,8 +103,11 @@ UnitDrift read_unit_drift(const std::string& path) {
     bool walks = true;
     for (std::size_t k = 0; k < kNavAxes; ++k) {
         const std::string name = kChannelNames[channel_index(kNavChannels[k])];
-        if (!j["channels"].contains(name))
-            throw DataError(path, 0, "no channel '" + name + "': navigation needs gyro, accel_x and accel_y");
+        if (!j["channels"].contains(name)) {
+            if (k == 0) throw DataError(path, 0, "no channel 'gyro': navigation needs at least the gyro");
+            u.axes[k].present = false;  // a gyro-only recording: heading only
+            continue;
+        }
         const json& c = j["channels"][name];
         if (c.contains("error")) throw DataError(path, 0, name + ": the fit failed there: " + c["error"].dump());
         u.axes[k] = c.contains("C1") ? axis_from_fit_json(c, path, name) : axis_from_allan_json(c, path, name);
@@ -128,6 +131,11 @@ UnitDrift fit_unit_drift(const LogData& rest, double from_s, double to_s) {
     const double tau0 = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
     for (std::size_t k = 0; k < kNavAxes; ++k) {
         const Channel c = kNavChannels[k];
+        if (!rest.recorded[channel_index(c)]) {
+            if (k == 0) throw DataError(rest.source_name, 0, "no gyro channel to fit the unit's drift on");
+            u.axes[k].present = false;
+            continue;
+        }
         std::vector<double> v;
         v.reserve(rows.size());
         for (const std::size_t i : rows) v.push_back(rest.channel(c)[i]);

@@ -28,6 +28,7 @@ struct AxisModel {
     double bias_instability_tau_s = 0.0;  ///< the averaging time of the ADEV minimum, where B shows [s]
     double rate_random_walk = 0.0;        ///< K [counts / sqrt(s)]; 0 when not known or not resolved
     bool walks_known = false;             ///< B and K come from an Allan analysis (a fit file has neither)
+    bool present = true;                  ///< false: the recording has no such channel (a gyro-only log: heading only)
 
     /// The bias random walk's power spectral density [counts^2 / s] the filter is driven with: K^2, plus the walk
     /// that reaches the flicker floor 0.664 B at the averaging time of the ADEV minimum, 3 (0.664 B)^2 / tau_B (a

@@ -10,6 +10,7 @@
 #include "host/view/analysis_plots.hpp"
 #include "host/view/gnuplot.hpp"
 #include "host/view/html.hpp"
+#include "host/view/nav_section.hpp"
 #include "host/view/recording_section.hpp"
 
 namespace driftlab::host::view {
@@ -182,6 +183,17 @@ std::string figures(const std::vector<const fit::DriftAnalysis*>& ok, const Alla
     return h;
 }
 
+// `report --nav`: the run's table and its figures.
+std::string navigation(const ReportOptions& options) {
+    const NavSection nav = nav_section(*options.nav, options.nav_path);
+    std::string h = nav.html;
+    if (!options.plots) return h + "<p>Figures not requested.</p>\n";
+    Figures figs;
+    for (const NamedPlot& p : nav.plots) figs.add(p.plot, p.plot.title);
+    return h +
+           (figs.available ? figs.html : "<p class=\"bad\">Figures unavailable: " + html_escape(figs.error) + "</p>\n");
+}
+
 }  // namespace
 
 std::string render_html_report(const fit::FileAnalysis& file, const ReportOptions& options) {
@@ -214,6 +226,7 @@ std::string render_html_report(const fit::FileAnalysis& file, const ReportOption
     }
 
     h += figures(ok, allan, options);
+    if (options.nav) h += navigation(options);
     h += "</body></html>\n";
     return h;
 }

@@ -4,12 +4,17 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "host/fit/file_analysis.hpp"
 
 namespace driftlab::host::view {
 
 struct ReportOptions {
     bool plots = true;  ///< render figures (needs gnuplot; without it the report says so and goes on)
+    /// `report --nav`: what nav --json printed, for a navigation section (null: none), and its file.
+    const nlohmann::json* nav = nullptr;
+    std::string nav_path;
 };
 
 /// The HTML document for `file`.

@@ -1,9 +1,11 @@
 // The views of a navigation run; see nav_view.hpp.
 #include "host/view/nav_view.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/view/gnuplot.hpp"
@@ -44,7 +46,8 @@ void print_errors(std::ostream& out, const nav::NavScore& s) {
         out << buf;
     }
     out << "errors are |estimate - truth|: heading [deg] and position [m] at each time after the first row; drift is "
-           "the last row's heading error per minute of the run; NEES of the pose (x, y, heading) inside "
+           "the last row's heading error per minute of the run; NEES of the pose (x, y, heading; the heading alone "
+           "without accelerometers) inside "
            "chi-square(3)'s "
            "two-sided 95 % band\n";
 }
@@ -121,12 +124,14 @@ json nav_json(const NavReport& r) {
                 {"aids", r.aids},
                 {"truth", r.truth_source.empty() ? json(nullptr) : json(r.truth_source)},
                 {"variants", variants},
-                {"notes", run.notes}};
+                {"notes", run.notes},
+                {"series", nav_curves_json(r.curves)}};
     if (r.score) {
         out["at_s"] = r.score->at_s;
         out["distance_m"] = json_number(r.score->distance_m);
-        const nav::NeesBand band = nav::pose_nees_band();
+        const nav::NeesBand band = nav::nees_band(r.score->nees_dof);
         out["nees_band"] = {json_number(band.low), json_number(band.high)};
+        out["nees_dof"] = r.score->nees_dof;
     }
     return out;
 }
@@ -147,38 +152,112 @@ void write_nav_estimate_csv(const std::string& path, const nav::NavRun& run) {
     write_output_file(path, text, "estimate");
 }
 
-void write_nav_plots(const std::string& dir, const NavReport& r, const std::optional<nav::NavTruth>& truth) {
-    const nav::NavRun& run = *r.run;
+NavCurves nav_curves(const nav::NavRun& run, const std::optional<nav::NavTruth>& truth, std::size_t max_points) {
+    NavCurves c;
+    const std::size_t n = run.t_s.size();
+    const std::size_t step = std::max<std::size_t>(1, (n + max_points - 1) / std::max<std::size_t>(max_points, 1));
+    std::vector<std::size_t> rows;
+    for (std::size_t i = 0; i < n; i += step) rows.push_back(i);
+    if (rows.back() != n - 1) rows.push_back(n - 1);
+    for (const std::size_t i : rows) c.t_s.push_back(run.t_s[i]);
+    if (truth) {
+        c.truth.emplace();
+        for (const std::size_t i : rows) {
+            c.truth->x_m.push_back(truth->x(i));
+            c.truth->y_m.push_back(truth->y(i));
+            c.truth->heading_deg.push_back(truth->heading_deg(i));
+        }
+    }
+    for (const nav::Track& t : run.tracks) {
+        NavCurves::Pose p;
+        for (const std::size_t i : rows) {
+            p.x_m.push_back(t.x_m[i]);
+            p.y_m.push_back(t.y_m[i]);
+            p.heading_deg.push_back(t.heading_deg[i]);
+        }
+        c.variants.emplace_back(t.name, std::move(p));
+    }
+    return c;
+}
+
+namespace {
+
+json pose_json(const NavCurves::Pose& p) {
+    return {{"x_m", json_array(p.x_m)}, {"y_m", json_array(p.y_m)}, {"heading_deg", json_array(p.heading_deg)}};
+}
+
+NavCurves::Pose pose_from_json(const json& j, const std::string& path, const std::string& what) {
+    NavCurves::Pose p;
+    try {
+        p.x_m = j.at("x_m").get<std::vector<double>>();
+        p.y_m = j.at("y_m").get<std::vector<double>>();
+        p.heading_deg = j.at("heading_deg").get<std::vector<double>>();
+    } catch (const json::exception&) {
+        throw DataError(path, 0, "series." + what + ": not the x_m, y_m and heading_deg arrays nav --json writes");
+    }
+    return p;
+}
+
+}  // namespace
+
+json nav_curves_json(const NavCurves& c) {
+    json variants = json::object();
+    for (const auto& [name, pose] : c.variants) variants[name] = pose_json(pose);
+    return {
+        {"t_s", json_array(c.t_s)}, {"truth", c.truth ? pose_json(*c.truth) : json(nullptr)}, {"variants", variants}};
+}
+
+NavCurves nav_curves_from_json(const json& series, const std::string& path) {
+    NavCurves c;
+    if (!series.is_object() || !series.contains("t_s") || !series.contains("variants"))
+        throw DataError(path, 0, "no 'series' of nav --json (t_s, variants)");
+    c.t_s = series["t_s"].get<std::vector<double>>();
+    if (series.contains("truth") && !series["truth"].is_null())
+        c.truth = pose_from_json(series["truth"], path, "truth");
+    for (const auto& [name, pose] : series["variants"].items())
+        c.variants.emplace_back(name, pose_from_json(pose, path, "variants." + name));
+    for (const auto& v : c.variants)
+        if (v.second.x_m.size() != c.t_s.size())
+            throw DataError(path, 0, "series." + v.first + ": not one value per t_s");
+    if (c.truth && c.truth->x_m.size() != c.t_s.size()) throw DataError(path, 0, "series.truth: not one value per t_s");
+    return c;
+}
+
+std::vector<NamedPlot> nav_plots(const NavCurves& c) {
     std::vector<double> minutes_axis;
-    for (const double t : run.t_s) minutes_axis.push_back((t - run.t_s.front()) / 60.0);
+    for (const double t : c.t_s) minutes_axis.push_back((t - c.t_s.front()) / 60.0);
     const auto plot = [](const char* title, const char* x, const char* y) {
         Plot p;
         p.title = title, p.x_label = x, p.y_label = y;
         return p;
     };
+    const bool truth = c.truth.has_value();
     Plot heading = plot(truth ? "Heading error per variant" : "Heading per variant", "t [min after the first row]",
                         truth ? "estimate - truth [deg]" : "heading [deg]");
     Plot position = plot("Position error per variant", "t [min after the first row]", "|estimate - truth| [m]");
     Plot path = plot("Trajectory", "x [m]", "y [m]");
-    for (std::size_t k = 0; k < run.tracks.size(); ++k) {
-        const nav::Track& t = run.tracks[k];
-        std::vector<double> dh(t.heading_deg), dp(t.x_m.size());
+    for (std::size_t k = 0; k < c.variants.size(); ++k) {
+        const auto& [name, p] = c.variants[k];
+        std::vector<double> dh(p.heading_deg), dp(p.x_m.size());
         for (std::size_t i = 0; truth && i < dh.size(); ++i) {
-            dh[i] -= truth->heading_deg(i);
-            dp[i] = std::hypot(t.x_m[i] - truth->x(i), t.y_m[i] - truth->y(i));
+            dh[i] -= c.truth->heading_deg[i];
+            dp[i] = std::hypot(p.x_m[i] - c.truth->x_m[i], p.y_m[i] - c.truth->y_m[i]);
         }
         const std::string colour = kColours[k % 4];
-        heading.series.push_back({t.name, minutes_axis, dh, {}, {}, SeriesStyle::lines, false, colour, 1.5});
-        position.series.push_back({t.name, minutes_axis, dp, {}, {}, SeriesStyle::lines, false, colour, 1.5});
-        path.series.push_back({t.name, t.x_m, t.y_m, {}, {}, SeriesStyle::lines, false, colour, 1.5});
+        heading.series.push_back({name, minutes_axis, dh, {}, {}, SeriesStyle::lines, false, colour, 1.5});
+        position.series.push_back({name, minutes_axis, dp, {}, {}, SeriesStyle::lines, false, colour, 1.5});
+        path.series.push_back({name, p.x_m, p.y_m, {}, {}, SeriesStyle::lines, false, colour, 1.5});
     }
-    render_plot(heading, dir, "nav_heading");
-    if (!truth) return;
-    std::vector<double> tx, ty;
-    for (std::size_t i = 0; i < run.t_s.size(); ++i) tx.push_back(truth->x(i)), ty.push_back(truth->y(i));
-    path.series.push_back({"truth", tx, ty, {}, {}, SeriesStyle::lines, true, "#d62728", 2.0});
-    render_plot(position, dir, "nav_position_error");
-    render_plot(path, dir, "nav_trajectory");
+    std::vector<NamedPlot> out = {{"nav_heading", heading}};
+    if (!truth) return out;
+    path.series.push_back({"truth", c.truth->x_m, c.truth->y_m, {}, {}, SeriesStyle::lines, true, "#d62728", 2.0});
+    out.push_back({"nav_position_error", position});
+    out.push_back({"nav_trajectory", path});
+    return out;
+}
+
+void write_nav_plots(const std::string& dir, const NavCurves& curves) {
+    for (const NamedPlot& p : nav_plots(curves)) render_plot(p.plot, dir, p.name);
 }
 
 }  // namespace driftlab::host::view

@@ -5,14 +5,28 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "host/nav/nav_score.hpp"
 #include "host/nav/navigate.hpp"
+#include "host/view/gnuplot.hpp"
 
 namespace driftlab::host::view {
+
+/// A run's curves as its plots draw them: the rows' times, the truth's pose (in the frame of the first row, when
+/// known) and each variant's, at up to a given number of rows (the first, every k-th, the last).
+struct NavCurves {
+    struct Pose {
+        std::vector<double> x_m, y_m, heading_deg;
+    };
+    std::vector<double> t_s;
+    std::optional<Pose> truth;
+    std::vector<std::pair<std::string, Pose>> variants;
+};
+NavCurves nav_curves(const nav::NavRun& run, const std::optional<nav::NavTruth>& truth, std::size_t max_points);
 
 /// What a run was, beside its result.
 struct NavReport {
@@ -22,13 +36,27 @@ struct NavReport {
     std::string truth_source;       ///< "" without a truth; "at rest" for --at-rest
     const nav::NavRun* run = nullptr;
     std::optional<nav::NavScore> score;  ///< with a truth
+    NavCurves curves;                    ///< JSON's `series`: the run at up to kNavJsonPoints rows
 };
+
+/// The rows nav --json's `series` holds at most: enough for a report's figures, small beside the log.
+inline constexpr std::size_t kNavJsonPoints = 2000;
 
 void print_nav_text(std::ostream& out, const NavReport& r);
 nlohmann::json nav_json(const NavReport& r);
 /// `t_s`, then `<variant>.x_m`, `<variant>.y_m`, `<variant>.heading_deg` per variant, a row per log row.
 void write_nav_estimate_csv(const std::string& path, const nav::NavRun& run);
-/// nav_heading.png/svg (and nav_trajectory, nav_position_error with a truth) into `dir`.
-void write_nav_plots(const std::string& dir, const NavReport& r, const std::optional<nav::NavTruth>& truth);
+/// nav --json's `series`, and back (DataError naming `path` where it is not that).
+nlohmann::json nav_curves_json(const NavCurves& c);
+NavCurves nav_curves_from_json(const nlohmann::json& series, const std::string& path);
+
+struct NamedPlot {
+    std::string name;
+    Plot plot;
+};
+/// nav_heading (heading error with a truth, else heading), and with a truth nav_position_error and nav_trajectory.
+std::vector<NamedPlot> nav_plots(const NavCurves& c);
+/// nav_plots() as PNG and SVG into `dir`.
+void write_nav_plots(const std::string& dir, const NavCurves& curves);
 
 }  // namespace driftlab::host::view
