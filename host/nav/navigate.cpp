@@ -35,9 +35,9 @@ double median_period(const LogData& log) {
 
 // The filter's noise in SI units: the unit's Allan terms where known, else the white noise of the initial rest.
 FilterNoise filter_noise(const std::optional<UnitDrift>& drift, const InitialRest& rest, double period_s,
-                         const std::array<double, kNavAxes>& cps, bool walks) {
+                         const std::array<double, kNavAxes>& cps, bool walks, bool heading_only) {
     FilterNoise n;
-    for (std::size_t k = 0; k < kNavAxes; ++k) {
+    for (std::size_t k = 0; k < (heading_only ? 1 : kNavAxes); ++k) {  // an axis not recorded has no noise
         const double white = drift ? drift->axes[k].white_density : rest.sd[k] * std::sqrt(period_s);
         n.white_density[k] = white / cps[k];
         if (walks && drift) n.bias_walk_psd[k] = drift->axes[k].bias_walk_psd() / (cps[k] * cps[k]);
@@ -202,8 +202,8 @@ NavRun navigate(const LogData& log, const sim::SimModel& unit, const std::option
     for (const VariantSpec& v : kVariants) {
         if (v.eq1 && !drift) continue;
         const InputCorrection correction = v.eq1 ? InputCorrection::eq1(*drift) : InputCorrection::constant(rest);
-        run.tracks.push_back(
-            run_variant(ctx, v, correction, filter_noise(drift, rest, ctx.period_s, ctx.cps, v.filter)));
+        run.tracks.push_back(run_variant(ctx, v, correction,
+                                         filter_noise(drift, rest, ctx.period_s, ctx.cps, v.filter, ctx.heading_only)));
     }
     if (!drift)
         run.notes.push_back(

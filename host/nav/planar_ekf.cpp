@@ -98,14 +98,16 @@ bool PlanarEkf::update_zero_velocity(double sd, double gate, bool apply) {
 }
 
 void PlanarEkf::update_bias_at_rest(const ImuReading& reading, double dt) {
-    Eigen::Matrix<double, 3, kStates> h = Eigen::Matrix<double, 3, kStates>::Zero();
-    Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
+    // One axis at a time (the noise is independent between them), and none without noise: an axis the log does not
+    // record reads nothing about its bias.
+    const std::array<double, 3> z = {reading.yaw_rate, reading.ax, reading.ay};
     for (int k = 0; k < 3; ++k) {
-        h(k, bias_gyro + k) = 1.0;
-        r(k, k) = noise_.white_density[k] * noise_.white_density[k] / dt;
+        const double r = noise_.white_density[k] * noise_.white_density[k] / dt;
+        if (!(r > 0.0)) continue;
+        Eigen::Matrix<double, 1, kStates> h = Eigen::Matrix<double, 1, kStates>::Zero();
+        h(0, bias_gyro + k) = 1.0;
+        update<1>(Eigen::Matrix<double, 1, 1>(z[k] - x_(bias_gyro + k)), h, Eigen::Matrix<double, 1, 1>(r));
     }
-    const Eigen::Vector3d z(reading.yaw_rate, reading.ax, reading.ay);
-    update<3>(z - x_.segment<3>(bias_gyro), h, r);
 }
 
 void PlanarEkf::update_odometry(double speed, double speed_sd, double lateral_sd) {

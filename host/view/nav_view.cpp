@@ -46,10 +46,9 @@ void print_errors(std::ostream& out, const nav::NavScore& s) {
         out << buf;
     }
     out << "errors are |estimate - truth|: heading [deg] and position [m] at each time after the first row; drift is "
-           "the last row's heading error per minute of the run; NEES of the pose (x, y, heading; the heading alone "
-           "without accelerometers) inside "
-           "chi-square(3)'s "
-           "two-sided 95 % band\n";
+           "the last row's heading error per minute of the run; NEES of the "
+        << (s.nees_dof == 1 ? "heading" : "pose (x, y, heading)") << " inside chi-square(" << s.nees_dof
+        << ")'s two-sided 95 % band\n";
 }
 
 }  // namespace

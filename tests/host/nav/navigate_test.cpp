@@ -151,6 +151,34 @@ TEST(Nav, Eq1DriftAloneIsLeftByRawAndRemovedByForwardToItsModelsOwnError) {
     EXPECT_GT(std::abs(raw_expected), 50.0 * std::abs(fwd_expected));
 }
 
+// A gyro alone (a plain recording of one axis): the heading is navigated, zero-velocity updates read the gyro's bias
+// and leave the accelerometers' (which read nothing) alone, and the NEES counts one degree of freedom.
+TEST(Nav, AGyroAloneNavigatesTheHeadingAndItsStopsLearnTheBias) {
+    const sim::Trajectory rest = sim::make_trajectory("rest", 600.0, 0.0, 1);
+    const auto cps = counts_per_si(kUnit);
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> noise(0.0, 0.5);  // [counts]
+    Synthetic s = synthetic(rest, 600.0, 0.1, [&](std::size_t k, double t) {
+        return k == 0 ? 0.1 * kRadPerDeg * cps[0] * t / 60.0 + noise(rng) : 0.0;  // a bias rising 0.1 deg/s a minute
+    });
+    s.log.recorded[channel_index(Channel::accel_x)] = s.log.recorded[channel_index(Channel::accel_y)] = false;
+    // The unit's model: no eq. 1, its white noise, and a bias that walks fast enough to follow the ramp.
+    UnitDrift walks = drift_of({{{0.0, 512.0, 100.0}, {0.0, 512.0, 100.0}, {0.0, 512.0, 100.0}}}, 0.5 * std::sqrt(0.1));
+    walks.axes[0].rate_random_walk = 0.05;
+    walks.axes[1].present = walks.axes[2].present = false;
+    NavOptions o;
+    o.aid.zupt = true;
+    const NavRun run = navigate(s.log, kUnit, walks, s.nav_truth(), o);
+    EXPECT_TRUE(run.heading_only);
+    const Track& raw = track(run, "raw");
+    const Track& ekf = track(run, "ekf");
+    ASSERT_TRUE(std::isfinite(ekf.heading_deg.back()));
+    EXPECT_GT(ekf.zero_velocity_updates, 5000u);  // of 6000 rows
+    EXPECT_LT(std::abs(ekf.heading_deg.back()) * 20.0, std::abs(raw.heading_deg.back()));
+    EXPECT_EQ(ekf.x_m.back(), 0.0);
+    EXPECT_EQ(score(run, s.nav_truth()).nees_dof, 1);
+}
+
 TEST(Nav, TheStrapdownsJacobianIsItsFiniteDifference) {
     PlanarEkf::State x0;
     x0 << 3.0, -2.0, 0.7, 0.4, -0.3, 0.01, 0.02, -0.03;
