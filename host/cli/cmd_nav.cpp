@@ -9,6 +9,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/gap_input.hpp"
+#include "host/nav/effect_noise.hpp"
 #include "host/nav/nav_score.hpp"
 #include "host/nav/navigate.hpp"
 #include "host/nav/unit_drift.hpp"
@@ -17,6 +18,7 @@
 #include "host/util/output_folder.hpp"
 #include "host/view/json_out.hpp"
 #include "host/view/nav_view.hpp"
+#include "sim/model/model_file.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -27,6 +29,7 @@ struct NavCommandOptions {
     std::string drift_path;
     std::string fit_from;
     double fit_to_s = INFINITY;
+    std::string effects_path;
     std::vector<std::string> aids;
     nav::NavOptions nav;
     bool json = false;
@@ -69,6 +72,15 @@ void run(NavCommandOptions& o) {
     else if (o.at_rest)
         truth = nav::NavTruth();
     const std::optional<nav::UnitDrift> drift = unit_drift(o);
+    if (!o.effects_path.empty()) {
+        const nav::EffectNoise e = nav::effect_noise(sim::load_model_file(o.effects_path));
+        if (e.used.empty())
+            throw DataError(
+                o.effects_path, 0,
+                "no bias process among its effects (gauss_markov, rate_random_walk, flicker): nothing to add");
+        o.nav.effects_bias_psd = e.bias_walk_psd;
+        o.nav.effects_used = e.used + " (" + o.effects_path + ")";
+    }
     const nav::NavRun run = nav::navigate(rec.log, rec.unit, drift, truth, o.nav);
 
     view::NavReport report{o.input.path,
@@ -109,6 +121,10 @@ void register_nav(CLI::App& app) {
         ->check(non_empty_path());
     cmd->add_option("--fit-to", o->fit_to_s, "--fit-from: only its rows up to this time [s since power-on]")
         ->check(positive_number());
+    cmd->add_option("--effects", o->effects_path,
+                    "A model file of the effects gap found (gap --model-out): their bias processes join the filters' "
+                    "process noise")
+        ->check(non_empty_path());
     cmd->add_option("--model", o->input.model_path,
                     "Model file of the unit (front ends, converter); default: the paper's")
         ->check(non_empty_path());

@@ -16,6 +16,7 @@
 #include "host/cli/hil_run.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/log/truth_file.hpp"
+#include "host/nav/effect_noise.hpp"
 #include "host/nav/nav_eval.hpp"
 #include "host/nav/navigate.hpp"
 #include "host/nav/unit_drift.hpp"
@@ -41,6 +42,7 @@ struct NavEvalOptions {
     std::string model_file;
     std::string target = "native";
     std::vector<std::string> aids = {"zupt"};
+    bool effects_noise = false;
     nav::NavOptions nav;
     std::string work_dir;
     bool json = false;
@@ -77,6 +79,11 @@ nav::EvalRun evaluate_run(const NavEvalOptions& o, const std::string& trajectory
     nav::NavOptions options = o.nav;
     options.aid.seed = seed;
     const sim::SimModel unit = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file);
+    if (o.effects_noise) {
+        const nav::EffectNoise e = nav::effect_noise(unit);
+        options.effects_bias_psd = e.bias_walk_psd;
+        options.effects_used = e.used;
+    }
     const nav::NavRun run = nav::navigate(log, unit, drift, nav_truth, options);
     return {trajectory, seed, nav::score(run, nav_truth)};
 }
@@ -143,6 +150,9 @@ void register_nav_eval(CLI::App& app) {
     cmd->add_option("--aid", o->aids, "Aids of the filter variants: zupt, odometry, fixes, comma-separated")
         ->delimiter(',')
         ->capture_default_str();
+    cmd->add_flag("--effects-noise", o->effects_noise,
+                  "The bias processes among --model's effects join the filters' process noise (what gap would find), "
+                  "beside the Allan terms of the rest log");
     cmd->add_option("--work", o->work_dir, "Keep every run's logs and truths in this folder (default: a temporary one)")
         ->check(non_empty_path());
     cmd->add_flag("--json", o->json,

@@ -35,12 +35,14 @@ double median_period(const LogData& log) {
 
 // The filter's noise in SI units: the unit's Allan terms where known, else the white noise of the initial rest.
 FilterNoise filter_noise(const std::optional<UnitDrift>& drift, const InitialRest& rest, double period_s,
-                         const std::array<double, kNavAxes>& cps, bool walks, bool heading_only) {
+                         const std::array<double, kNavAxes>& cps, bool walks, bool heading_only,
+                         const std::array<double, kNavAxes>& effects_psd) {
     FilterNoise n;
     for (std::size_t k = 0; k < (heading_only ? 1 : kNavAxes); ++k) {  // an axis not recorded has no noise
         const double white = drift ? drift->axes[k].white_density : rest.sd[k] * std::sqrt(period_s);
         n.white_density[k] = white / cps[k];
         if (walks && drift) n.bias_walk_psd[k] = drift->axes[k].bias_walk_psd() / (cps[k] * cps[k]);
+        if (walks) n.bias_walk_psd[k] += effects_psd[k];
     }
     return n;
 }
@@ -202,8 +204,9 @@ NavRun navigate(const LogData& log, const sim::SimModel& unit, const std::option
     for (const VariantSpec& v : kVariants) {
         if (v.eq1 && !drift) continue;
         const InputCorrection correction = v.eq1 ? InputCorrection::eq1(*drift) : InputCorrection::constant(rest);
-        run.tracks.push_back(run_variant(ctx, v, correction,
-                                         filter_noise(drift, rest, ctx.period_s, ctx.cps, v.filter, ctx.heading_only)));
+        run.tracks.push_back(run_variant(
+            ctx, v, correction,
+            filter_noise(drift, rest, ctx.period_s, ctx.cps, v.filter, ctx.heading_only, options.effects_bias_psd)));
     }
     if (!drift)
         run.notes.push_back(
@@ -211,6 +214,9 @@ NavRun navigate(const LogData& log, const sim::SimModel& unit, const std::option
             "noise is the initial rest's spread with biases that do not walk");
     else
         run.notes.insert(run.notes.end(), drift->notes.begin(), drift->notes.end());
+    if (!options.effects_used.empty())
+        run.notes.push_back("the filters' bias walks add the bias processes of the effects given: " +
+                            options.effects_used);
     if (run.heading_only)
         run.notes.push_back("no accelerometers: the heading alone is navigated, and its NEES has 1 degree of freedom");
     return run;

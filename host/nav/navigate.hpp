@@ -7,6 +7,7 @@
 // the covariance they believe in.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -34,6 +35,9 @@ struct AidOptions {
 bool enable_aid(AidOptions& aid, const std::string& name);
 
 struct NavOptions {
+    /// Added to the filter variants' bias walks [(rad/s)^2/s, (m/s^2)^2/s per axis]: the effects gap found.
+    std::array<double, kNavAxes> effects_bias_psd{};
+    std::string effects_used;    ///< their names, for the notes ("" for none)
     double rest_s = 10.0;        ///< the first seconds, where the unit stands (raw's bias, the filters' start)
     double stop_window_s = 1.0;  ///< a stop is this long a window of quiet readings
     AidOptions aid;

@@ -16,12 +16,15 @@ namespace driftlab::host::nav {
 
 using nlohmann::json;
 
+double flicker_walk_psd(double b, double tau_s) {
+    const double floor = stats::kBiasInstabilityFactor * b;
+    return 3.0 * floor * floor / tau_s;
+}
+
 double AxisModel::bias_walk_psd() const {
     double q = rate_random_walk * rate_random_walk;
-    if (bias_instability > 0.0 && bias_instability_tau_s > 0.0) {
-        const double floor = stats::kBiasInstabilityFactor * bias_instability;
-        q += 3.0 * floor * floor / bias_instability_tau_s;
-    }
+    if (bias_instability > 0.0 && bias_instability_tau_s > 0.0)
+        q += flicker_walk_psd(bias_instability, bias_instability_tau_s);
     return q;
 }
 

@@ -36,6 +36,10 @@ struct AxisModel {
     double bias_walk_psd() const;
 };
 
+/// The random walk's power spectral density that reaches a flicker floor 0.664 B at the averaging time `tau_s` (a
+/// random walk's ADEV is K sqrt(tau / 3)): how far bias instability B wanders up to there [unit^2 / s].
+double flicker_walk_psd(double b, double tau_s);
+
 struct UnitDrift {
     std::array<AxisModel, kNavAxes> axes;
     std::string source;              ///< where it came from, for the output
