@@ -112,7 +112,10 @@ void run(NavEvalOptions& o) {
         throw;
     }
     if (!keep) std::filesystem::remove_all(dir);
-    const view::NavEvalReport report{o.trajectories, o.target, o.aids, o.duration_s, &runs, nav::summarise(runs)};
+    const std::string noise =
+        o.effects_noise ? "the rest log's Allan terms and the model's bias effects" : "the rest log's Allan terms";
+    const view::NavEvalReport report{o.trajectories,      o.target, o.aids, o.duration_s, noise, &runs,
+                                     nav::summarise(runs)};
     if (o.json)
         view::write_json(std::cout, view::nav_eval_json(report));
     else

@@ -28,7 +28,8 @@ void print_nav_eval_text(std::ostream& out, const NavEvalReport& r) {
     std::string aids;
     for (const auto& a : r.aids) aids += (aids.empty() ? "" : ", ") + a;
     out << "nav-eval: " << r.summary.runs << " runs (" << trajectories << "), " << significant_plain(r.duration_s, 6)
-        << " s each from power-on, target " << r.target << ", aids: " << (aids.empty() ? "none" : aids) << "\n";
+        << " s each from power-on, target " << r.target << ", aids: " << (aids.empty() ? "none" : aids)
+        << "; process noise: " << r.noise << "\n";
     const auto& s = r.summary;
     char buf[128];
     for (const bool heading : {true, false}) {
@@ -88,7 +89,7 @@ json nav_eval_json(const NavEvalReport& r) {
     }
     return {{"at_s", r.summary.at_s}, {"runs", r.summary.runs}, {"trajectories", r.trajectories},
             {"target", r.target},     {"aids", r.aids},         {"duration_s", json_number(r.duration_s)},
-            {"variants", variants},   {"per_run", runs}};
+            {"noise", r.noise},       {"variants", variants},   {"per_run", runs}};
 }
 
 void write_nav_eval_plots(const std::string& dir, const NavEvalReport& r) {

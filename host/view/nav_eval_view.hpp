@@ -18,6 +18,7 @@ struct NavEvalReport {
     std::string target;
     std::vector<std::string> aids;
     double duration_s = 0.0;
+    std::string noise;  ///< where the filters' process noise came from
     const std::vector<nav::EvalRun>* runs = nullptr;
     nav::EvalSummary summary;
 };
