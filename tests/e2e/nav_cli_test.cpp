@@ -108,6 +108,14 @@ TEST(NavCli, BadInputIsRefusedWithItsReason) {
     // An unknown aid.
     r = run_driftlab({"nav", dir.file("sg.csv"), "--aid", "gps"}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << r.output;
+    // A table without the channels: no gyro; one horizontal accelerometer without the other.
+    std::ofstream table(dir.file("acc.csv"));
+    table << "t_s,ax,ay\n";
+    for (int i = 0; i < 200; ++i) table << i * 0.1 << "," << 0.001 * (i % 7) << "," << 0.002 * (i % 5) << "\n";
+    table.close();
+    r = run_driftlab({"nav", dir.file("acc.csv"), "--tau0", "0.1", "--as", "accel_x=ax:0.001"}, dir.path());
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("no gyro"), std::string::npos) << r.output;
 }
 
 TEST(NavCli, ADriftFileFromFitJsonWorksAsFitFrom) {
