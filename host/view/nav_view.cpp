@@ -231,16 +231,19 @@ std::vector<NamedPlot> nav_plots(const NavCurves& c) {
         return p;
     };
     const bool truth = c.truth.has_value();
+    // With a truth the errors span decades between the variants: |error| on a log scale, from 0.0001 deg.
     Plot heading = plot(truth ? "Heading error per variant" : "Heading per variant", "t [min after the first row]",
-                        truth ? "estimate - truth [deg]" : "heading [deg]");
+                        truth ? "|estimate - truth| [deg]" : "heading [deg]");
+    heading.log_y = truth;
     Plot position = plot("Position error per variant", "t [min after the first row]", "|estimate - truth| [m]");
+    position.log_y = true;
     Plot path = plot("Trajectory", "x [m]", "y [m]");
     for (std::size_t k = 0; k < c.variants.size(); ++k) {
         const auto& [name, p] = c.variants[k];
         std::vector<double> dh(p.heading_deg), dp(p.x_m.size());
         for (std::size_t i = 0; truth && i < dh.size(); ++i) {
-            dh[i] -= c.truth->heading_deg[i];
-            dp[i] = std::hypot(p.x_m[i] - c.truth->x_m[i], p.y_m[i] - c.truth->y_m[i]);
+            dh[i] = std::max(std::abs(dh[i] - c.truth->heading_deg[i]), 1e-4);
+            dp[i] = std::max(std::hypot(p.x_m[i] - c.truth->x_m[i], p.y_m[i] - c.truth->y_m[i]), 1e-4);
         }
         const std::string colour = kColours[k % 4];
         heading.series.push_back({name, minutes_axis, dh, {}, {}, SeriesStyle::lines, false, colour, 1.5});
@@ -250,6 +253,15 @@ std::vector<NamedPlot> nav_plots(const NavCurves& c) {
     std::vector<NamedPlot> out = {{"nav_heading", heading}};
     if (!truth) return out;
     path.series.push_back({"truth", c.truth->x_m, c.truth->y_m, {}, {}, SeriesStyle::lines, true, "#d62728", 2.0});
+    // Framed on the truth: a variant kilometres off leaves the frame rather than shrink the path to a dot.
+    const auto frame = [](const std::vector<double>& v) {
+        const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+        const double margin = std::max(0.25 * (*hi - *lo), 1.0);
+        return std::make_pair(*lo - margin, *hi + margin);
+    };
+    path.x_range = frame(c.truth->x_m);
+    path.y_range = frame(c.truth->y_m);
+    path.title = "Trajectory, framed on the truth";
     out.push_back({"nav_position_error", position});
     out.push_back({"nav_trajectory", path});
     return out;
