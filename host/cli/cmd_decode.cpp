@@ -141,6 +141,11 @@ nlohmann::json summary_json(const DecodeOptions& o, const io::CaptureReader& rea
              {{"repeated", s.stale_samples},
               {"beyond_converter", s.unreachable_samples},
               {"empty_window", s.empty_samples}}},
+            {"untrusted_frames",
+             {{"conflicting", s.conflicting_frames},
+              {"conflicting_rows", s.conflicting_rows},
+              {"unexpected_versions", s.unexpected_versions},
+              {"unexpected_configs", s.unexpected_configs}}},
             {"crc_errors", d.bad_crc},
             {"bad_length", d.bad_length},
             {"resync_bytes", d.resync_bytes},
@@ -211,6 +216,8 @@ void run_decode(const DecodeOptions& o) {
                      static_cast<unsigned long long>(s.gaps));
         if (const std::string skipped = io::skipped_samples(s); !skipped.empty())
             std::fprintf(summary, "%s\n", skipped.c_str());
+        if (const std::string untrusted = io::untrusted_frames(s); !untrusted.empty())
+            std::fprintf(summary, "%s\n", untrusted.c_str());
     }
     // After the log and the summary are written: a script is told, and no good row is lost for it.
     if (const std::string lost = o.strict ? bytes_not_decoded(*reader, *crc_failures) : ""; !lost.empty())

@@ -90,6 +90,8 @@ void run_record(const RecordCliOptions& o) {
                 static_cast<unsigned long long>(s.reordered_frames), static_cast<unsigned long long>(sum.polls_sent),
                 static_cast<unsigned long long>(sum.reconnects));
     if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::printf("%s\n", skipped.c_str());
+    if (const std::string untrusted = io::untrusted_frames(s); !untrusted.empty())
+        std::printf("%s\n", untrusted.c_str());
 }
 
 }  // namespace

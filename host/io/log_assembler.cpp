@@ -50,6 +50,55 @@ LogMetadata board_metadata(std::string_view source, const proto::VersionPayload&
     return m;
 }
 
+namespace {
+
+// FNV-1a over a frame's type and payload: what tells a repeated frame from another of the same seq.
+std::uint64_t fingerprint(const Frame& f) {
+    std::uint64_t h = 14695981039346656037ULL;
+    const auto mix = [&h](std::uint8_t b) { h = (h ^ b) * 1099511628211ULL; };
+    mix(static_cast<std::uint8_t>(f.type));
+    mix(f.payload_len);
+    for (std::size_t i = 0; i < f.payload_len; ++i) mix(f.payload[i]);
+    return h;
+}
+
+void add_difference(std::string& out, const char* name, long long was, long long is) {
+    if (was != is)
+        out += (out.empty() ? "" : ", ") + std::string(name) + " " + std::to_string(was) + " -> " + std::to_string(is);
+}
+
+// "tick_hz 250000 -> 0, adc_bits 10 -> 12": what a VERSION changes of the board and how it is read (not the cause
+// of its last reset, which a restart changes).
+std::string differences(const proto::VersionPayload& a, const proto::VersionPayload& b) {
+    std::string out;
+    const auto field = [&out](const char* name, long long x, long long y) { add_difference(out, name, x, y); };
+    field("proto_version", a.proto_version, b.proto_version);
+    field("fw_major", a.fw_major, b.fw_major);
+    field("fw_minor", a.fw_minor, b.fw_minor);
+    field("fw_patch", a.fw_patch, b.fw_patch);
+    field("board_id", a.board_id, b.board_id);
+    field("adc_bits", a.adc_bits, b.adc_bits);
+    field("vref_mv", a.vref_mv, b.vref_mv);
+    field("tick_hz", a.tick_hz, b.tick_hz);
+    field("channel_count", a.channel_count, b.channel_count);
+    for (std::size_t c = 0; c < kChannelCount; ++c) field("adc_pin", a.adc_pin[c], b.adc_pin[c]);
+    return out;
+}
+
+std::string differences(const proto::ConfigPayload& a, const proto::ConfigPayload& b) {
+    std::string out;
+    const auto field = [&out](const char* name, long long x, long long y) { add_difference(out, name, x, y); };
+    field("output_period_ms", a.output_period_ms, b.output_period_ms);
+    field("conversions_per_output", a.conversions_per_output, b.conversions_per_output);
+    field("window", a.window, b.window);
+    field("fit_order", a.fit_order, b.fit_order);
+    field("mode", a.mode, b.mode);
+    field("raw", a.raw, b.raw);
+    return out;
+}
+
+}  // namespace
+
 LogAssembler::LogAssembler(std::string log_path, CaptureHeader capture_header)
     : log_path_(std::move(log_path)), capture_header_(std::move(capture_header)) {}
 
@@ -69,6 +118,7 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
     } else if (text == "lost") {
         decoder_.reset();
         if (rows_) rows_->end_of_stream();
+        write_held_rows(0);
         if (!holding_) {
             holding_ = true;
             lost_t_us_ = t_us;
@@ -79,6 +129,7 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
         if (holding_) release_held();
     } else if (text.rfind("gap: ", 0) == 0) {
         ++stats_.gaps;
+        write_held_rows(0);
         if (writer_) writer_->write_gap(text.substr(5));
     }
     // Other events are notes for a person reading the capture; the log does not depend on them.
@@ -143,6 +194,7 @@ bool LogAssembler::settle_gap(const Stamped& evidence) {
     epoch_first_sample_.reset();
     newest_sample_.reset();
     if (writer_) {
+        write_held_rows(0);
         writer_->write_gap("firmware restarted during the gap (uptime " +
                            format_double(version_ ? static_cast<double>(uptime) / version_->tick_hz : 0.0) +
                            " s); tick and seq continue after the last row");
@@ -168,7 +220,9 @@ void LogAssembler::release_held() {
     }
     std::vector<std::pair<std::uint64_t, Frame>> frames;
     frames.swap(held_);
+    replaying_held_ = true;
     for (const auto& [t_us, f] : frames) process_frame(t_us, f);
+    replaying_held_ = false;
 }
 
 void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
@@ -181,18 +235,28 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
     stats_.lost_frames = seq_.lost();
     stats_.duplicate_frames = seq_.duplicates();
     stats_.reordered_frames = seq_.reordered();
-    if (seq.verdict == receiver::SeqVerdict::duplicate) return;
+    if (seq.verdict == receiver::SeqVerdict::duplicate) {
+        check_conflict(seq.unwrapped, frame);
+        return;
+    }
+    fingerprints_[seq.unwrapped % fingerprints_.size()] = {seq.unwrapped, fingerprint(frame)};
 
     const std::uint8_t* p = frame.payload.data();
     switch (frame.type) {
     case proto::MsgType::version: {
         proto::VersionPayload v{};
-        if (proto::parse(p, frame.payload_len, &v)) version_ = v;
+        if (writer_)
+            check_after_start(frame);
+        else if (proto::parse(p, frame.payload_len, &v))
+            version_ = v;
         break;
     }
     case proto::MsgType::config: {
         proto::ConfigPayload c{};
-        if (proto::parse(p, frame.payload_len, &c)) config_ = c;
+        if (writer_)
+            check_after_start(frame);
+        else if (proto::parse(p, frame.payload_len, &c))
+            config_ = c;
         break;
     }
     case proto::MsgType::sample: {
@@ -251,16 +315,60 @@ bool LogAssembler::write(const receiver::Row& r) {
             return range->holds_raw_code(static_cast<double>(code));
         }))
         row.has_raw = false;
-    // The columns are the recording's start's: a CONFIG arriving later changes none of them.
-    const bool raw = rows_->options().raw;
-    if (raw && !row.has_raw) ++stats_.raw_missing;
-    writer_->write_row(board_log_row(row, raw, true));
-    ++stats_.rows;
-    if (!stats_.first_t_s) stats_.first_t_s = row.t_s;
-    stats_.last_t_s = row.t_s;
-    stats_.last_counts = row.value_counts;
-    stats_.last_dropped = row.dropped;
+    held_rows_.push_back(row);
+    write_held_rows(kHeldRows);
     return true;
+}
+
+void LogAssembler::write_held_rows(std::size_t keep) {
+    // The columns are the recording's start's: a CONFIG arriving later changes none of them.
+    while (held_rows_.size() > keep) {
+        const receiver::Row& row = held_rows_.front();
+        const bool raw = rows_->options().raw;
+        if (raw && !row.has_raw) ++stats_.raw_missing;
+        writer_->write_row(board_log_row(row, raw, true));
+        ++stats_.rows;
+        if (!stats_.first_t_s) stats_.first_t_s = row.t_s;
+        stats_.last_t_s = row.t_s;
+        stats_.last_counts = row.value_counts;
+        stats_.last_dropped = row.dropped;
+        held_rows_.pop_front();
+    }
+}
+
+void LogAssembler::check_conflict(std::uint64_t seq, const Frame& frame) {
+    const auto& [seen_seq, seen_print] = fingerprints_[seq % fingerprints_.size()];
+    if (seen_seq != seq || seen_print == fingerprint(frame)) return;  // a repeat, or too old to tell
+    ++stats_.conflicting_frames;
+    // Neither frame can be trusted: a row of that SAMPLE (or of the SAMPLE before that RAW) stays out while held.
+    const auto before = held_rows_.size();
+    const std::uint64_t row_seq = frame.type == proto::MsgType::raw ? seq - 1 : seq;  // a RAW follows its SAMPLE
+    std::erase_if(held_rows_, [row_seq](const receiver::Row& r) { return r.seq == row_seq; });
+    stats_.conflicting_rows += before - held_rows_.size();
+}
+
+void LogAssembler::check_after_start(const Frame& frame) {
+    if (replaying_held_) return;  // the reconnect's handshake, which the recorder verified
+    const std::uint8_t* p = frame.payload.data();
+    std::string what;
+    if (frame.type == proto::MsgType::version) {
+        proto::VersionPayload v{};
+        if (!proto::parse(p, frame.payload_len, &v)) return;
+        what = differences(*version_, v);
+        if (what.empty()) return;
+        ++stats_.unexpected_versions;
+        what = "VERSION " + what;
+    } else {
+        proto::ConfigPayload c{};
+        if (!proto::parse(p, frame.payload_len, &c)) return;
+        what = differences(*config_, c);
+        if (what.empty()) return;
+        ++stats_.unexpected_configs;
+        what = "CONFIG " + what;
+    }
+    write_held_rows(0);
+    writer_->write_unexpected(what + " (frame seq " + std::to_string(frame.seq) +
+                              ") ignored: the rows are read as the handshake set them");
 }
 
 void LogAssembler::flush() {
@@ -270,6 +378,7 @@ void LogAssembler::flush() {
 void LogAssembler::finish() {
     if (holding_) release_held();
     if (rows_) rows_->end_of_stream();
+    if (writer_) write_held_rows(0);
     if (writer_) writer_->close();
 }
 

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,8 +48,14 @@ struct AssemblyStats {
     std::uint64_t raw_missing = 0;
     std::uint64_t gaps = 0;
     std::uint64_t firmware_restarts = 0;
-    std::optional<double> first_t_s;                  ///< [s] of the first row
-    std::optional<double> last_t_s;                   ///< [s] of the newest row
+    /// Frames sharing a seq with an earlier one of other content (a forged or corrupted frame that passed its CRC):
+    /// the second is dropped, and a row either made is kept out of the log when still held back.
+    std::uint64_t conflicting_frames = 0;
+    std::uint64_t conflicting_rows = 0;     ///< rows kept out of the log for a conflict
+    std::uint64_t unexpected_versions = 0;  ///< VERSIONs after the start that differ from the handshake's: ignored
+    std::uint64_t unexpected_configs = 0;   ///< CONFIGs after the start that differ from the handshake's: ignored
+    std::optional<double> first_t_s;        ///< [s] of the first row
+    std::optional<double> last_t_s;         ///< [s] of the newest row
     std::array<double, kChannelCount> last_counts{};  ///< [counts] newest row
     std::uint16_t last_dropped = 0;                   ///< firmware's dropped-conversion counter in the newest SAMPLE
 };
@@ -82,8 +89,16 @@ private:
     bool settle_gap(const Stamped& evidence);
     /// Board ticks elapsed from the newest SAMPLE to host time `t_us`, and how far off that may be.
     std::optional<std::pair<double, double>> board_ticks_since_newest(std::uint64_t t_us) const;
-    /// Writes a row of the receiver; false when a value is one no converter makes.
+    /// Takes a row of the receiver into the held-back rows; false when a value is one no converter makes.
     bool write(const receiver::Row& row);
+    /// Writes the held-back rows down to `keep` of them (the newest), oldest first.
+    void write_held_rows(std::size_t keep);
+    /// A VERSION or CONFIG after the start: one that differs from the handshake's is counted, noted in the log and
+    /// ignored (how rows are read and written is the handshake's for the whole recording).
+    void check_after_start(const Frame& frame);
+    /// Whether a frame whose seq was seen before carries other content; if so, counts it and drops a held row of
+    /// that seq.
+    void check_conflict(std::uint64_t seq, const Frame& frame);
     void start_log();
 
     std::string log_path_;
@@ -95,7 +110,14 @@ private:
     std::optional<proto::VersionPayload> version_;
     std::optional<proto::ConfigPayload> config_;
     std::optional<receiver::RowAssembler> rows_;  ///< from the "start" event on
-    struct Stamped {                              // host time [us] of something the board sent
+    /// Rows are written kHeldRows behind the newest, so that a frame of the same seq arriving after a forged one (or
+    /// before it) keeps both out of the log.
+    static constexpr std::size_t kHeldRows = 2;
+    std::deque<receiver::Row> held_rows_;
+    /// Content fingerprint of recent frames by unwrapped seq (slot seq % size), to tell a repeat from a conflict.
+    std::array<std::pair<std::uint64_t, std::uint64_t>, 256> fingerprints_{};
+    bool replaying_held_ = false;  ///< frames held over a reconnect: its handshake may legitimately differ
+    struct Stamped {               // host time [us] of something the board sent
         std::uint64_t t_us;
         std::uint64_t tick;  // the board's unwrapped tick (a SAMPLE) or 32-bit uptime (a STATUS)
     };

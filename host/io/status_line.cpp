@@ -53,4 +53,17 @@ std::string skipped_samples(const AssemblyStats& stats) {
            " of an empty window (just after a CONFIG restarted the windows)";
 }
 
+std::string untrusted_frames(const AssemblyStats& stats) {
+    std::string out;
+    if (stats.conflicting_frames > 0)
+        out += std::to_string(stats.conflicting_frames) +
+               (stats.conflicting_frames == 1 ? " shared its seq" : " shared their seq") +
+               " with another of other content (neither used; " + counted(stats.conflicting_rows, "row") + " kept out)";
+    if (stats.unexpected_versions + stats.unexpected_configs > 0)
+        out += (out.empty() ? "" : ", ") + std::to_string(stats.unexpected_versions) + " VERSION and " +
+               std::to_string(stats.unexpected_configs) +
+               " CONFIG differing from the handshake's ignored (each noted in the log)";
+    return out.empty() ? out : "untrusted frames: " + out;
+}
+
 }  // namespace driftlab::host::io

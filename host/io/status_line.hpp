@@ -35,4 +35,9 @@ double loss_percent(const AssemblyStats& stats);
 /// "skipped 3 samples: 2 repeated (time not after the previous row), 1 beyond the converter's reach".
 std::string skipped_samples(const AssemblyStats& stats);
 
+/// What arrived that the recording did not trust, for a summary: "" when nothing, else e.g. "untrusted frames: 1
+/// shared its seq with another of other content (neither used; 1 row kept out), 1 VERSION and 0 CONFIG differing
+/// from the handshake's ignored (each noted in the log)".
+std::string untrusted_frames(const AssemblyStats& stats);
+
 }  // namespace driftlab::host::io

@@ -89,9 +89,14 @@ void LogWriter::write_row(const LogRow& row) {
     append_line_end();
 }
 
-void LogWriter::write_gap(const std::string& text) {
-    if (text.find_first_of("\r\n") != std::string::npos) throw UsageError("log gap text contains a line break");
-    pending_ += "# gap: " + text;
+void LogWriter::write_gap(const std::string& text) { write_event_line("gap", text); }
+
+void LogWriter::write_unexpected(const std::string& text) { write_event_line("unexpected", text); }
+
+void LogWriter::write_event_line(const std::string& kind, const std::string& text) {
+    if (text.find_first_of("\r\n") != std::string::npos)
+        throw UsageError("log " + kind + " text contains a line break");
+    pending_ += "# " + kind + ": " + text;
     append_line_end();
 }
 

@@ -48,6 +48,8 @@ public:
     void write_row(const LogRow& row);
     /// Appends `# gap: text` (text without newlines).
     void write_gap(const std::string& text);
+    /// `# unexpected: text` among the rows: a frame the recording ignored (docs/log-format.md §5).
+    void write_unexpected(const std::string& text);
 
     /// Writes all pending lines. Throws DeviceError when the OS refuses.
     void flush();
@@ -55,6 +57,7 @@ public:
     void close();
 
 private:
+    void write_event_line(const std::string& kind, const std::string& text);
     void append_line_end();
 
     std::string path_;

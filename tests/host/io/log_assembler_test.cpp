@@ -8,7 +8,9 @@
 
 #include <unistd.h>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <optional>
 #include <string>
 
@@ -37,17 +39,17 @@ public:
         ASSERT_GT(n, 0u);
         a_.on_rx(t_us_ += 1000, buf, n);
     }
-    void version() {
+    void version(std::uint32_t tick_hz = kTickHz) {
         proto::VersionPayload v{};
         v.proto_version = proto::kProtocolVersion;
         v.adc_bits = 10;
         v.vref_mv = 5000;
-        v.tick_hz = kTickHz;
+        v.tick_hz = tick_hz;
         v.channel_count = kChannelCount;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_version(v, s, o, n); });
     }
-    void config(std::uint8_t raw = 0) {
-        const proto::ConfigPayload c{100, 8, 8, 0, static_cast<std::uint8_t>(proto::OutputMode::stream), raw};
+    void config(std::uint8_t raw = 0, std::uint8_t window = 8) {
+        const proto::ConfigPayload c{100, 8, window, 0, static_cast<std::uint8_t>(proto::OutputMode::stream), raw};
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_config(c, s, o, n); });
     }
     void ack() {
@@ -75,6 +77,8 @@ public:
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_raw(r, s, o, n); });
     }
     void skip(std::uint64_t frames) { seq_ = static_cast<std::uint16_t>(seq_ + frames); }
+    /// The next frame reuses the seq of the one `frames` back (a forged or repeated frame).
+    void rewind(std::uint16_t frames) { seq_ = static_cast<std::uint16_t>(seq_ - frames); }
     void event(const std::string& text) { a_.on_event(t_us_ += 1000, text); }
     void wait_us(std::uint64_t us) { t_us_ += us; }
 
@@ -392,4 +396,71 @@ TEST(LogAssembler, AConfigArrivingMidRecordingChangesNoRow) {
     ASSERT_EQ(log.size(), 3u);
     EXPECT_EQ(log.optional_columns.count("raw_gyro"), 0u);
     EXPECT_EQ(stats.raw_missing, 0u);
+}
+
+// The link is untrusted (docs/security.md): a VERSION or CONFIG after the start that differs from the handshake's is
+// counted, noted among the rows and ignored, so that rows keep their time base and columns.
+TEST(LogAssembler, AVersionOrConfigDifferingFromTheHandshakesIsNotedAndIgnored) {
+    const std::string path = temp_log("unexpected.csv");
+    AssemblyStats stats;
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "unexpected.cap"}});
+        Board b(a);
+        b.version();
+        b.config();
+        b.event("start");
+        b.sample(1 * kTicksPerOutput);
+        b.version(0);  // a tick rate of 0 had made t_s infinite
+        b.sample(2 * kTicksPerOutput);
+        b.config(1, 4);  // raw on, another window
+        b.sample(3 * kTicksPerOutput);
+        b.version();  // the handshake's own: nothing to note
+        b.config();
+        b.sample(4 * kTicksPerOutput);
+        a.finish();
+        stats = a.stats();
+    }
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("# unexpected: VERSION tick_hz 250000 -> 0 (frame seq 3) ignored"), std::string::npos) << text;
+    EXPECT_NE(text.find("# unexpected: CONFIG window 8 -> 4, raw 0 -> 1 (frame seq 5) ignored"), std::string::npos)
+        << text;
+    const LogData log = read_log(path);
+    fs::remove(path);
+    ASSERT_EQ(log.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(log.t_s[i], 0.1 * static_cast<double>(i + 1));
+    EXPECT_EQ(stats.unexpected_versions, 1u);
+    EXPECT_EQ(stats.unexpected_configs, 1u);
+    EXPECT_EQ(
+        untrusted_frames(stats),
+        "untrusted frames: 1 VERSION and 1 CONFIG differing from the handshake's ignored (each noted in the log)");
+}
+
+// A forged SAMPLE with the next seq, before or after the real one: the two frames share a seq with different content,
+// and neither becomes a row; a frame repeated as it was is a duplicate, no conflict.
+TEST(LogAssembler, TwoFramesOfOneSeqWithDifferentContentKeepEachOtherOutOfTheLog) {
+    AssemblyStats stats;
+    const LogData log = recorded(
+        "conflict.csv", 0,
+        [](Board& b) {
+            b.sample(1 * kTicksPerOutput);
+            b.sample(2 * kTicksPerOutput, 900 * 256);  // forged, with the seq the real output will carry
+            b.rewind(1);
+            b.sample(2 * kTicksPerOutput);  // the real one
+            b.sample(3 * kTicksPerOutput);
+            b.rewind(1);
+            b.sample(3 * kTicksPerOutput);  // a repeat of the same frame
+            b.sample(4 * kTicksPerOutput);
+        },
+        stats);
+    ASSERT_EQ(log.size(), 3u);
+    EXPECT_DOUBLE_EQ(log.t_s[0], 0.1);
+    EXPECT_DOUBLE_EQ(log.t_s[1], 0.3);
+    EXPECT_DOUBLE_EQ(log.t_s[2], 0.4);
+    for (std::size_t i = 0; i < log.size(); ++i) EXPECT_DOUBLE_EQ(log.channel(Channel::gyro)[i], 500.0);
+    EXPECT_EQ(stats.conflicting_frames, 1u);
+    EXPECT_EQ(stats.conflicting_rows, 1u);
+    EXPECT_EQ(stats.duplicate_frames, 2u);  // the real frame of the conflict, and the repeat
+    EXPECT_EQ(untrusted_frames(stats),
+              "untrusted frames: 1 shared its seq with another of other content (neither used; 1 row kept out)");
 }
