@@ -5,6 +5,8 @@
 #include <fcntl.h>
 #include <libserial/SerialPort.h>
 #include <poll.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -12,6 +14,7 @@
 #include <cstring>
 #include <map>
 
+#include "host/io/port_holders.hpp"
 #include "host/util/error.hpp"
 
 namespace driftlab::host::io {
@@ -52,10 +55,26 @@ SerialPort::SerialPort(const std::string& path, int baud) : path_(path), baud_(b
 
 SerialPort::~SerialPort() { close(); }
 
+// The port is the recording's alone: a second program that opened it could reconfigure the board behind its back.
+// An advisory lock refuses a second driftlab (or any program that locks), TIOCEXCL every later open(2) but root's.
+void SerialPort::take_exclusively(int fd) const {
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        const std::string holders = port_holders(path_);
+        throw DeviceError(path_, "in use by another program" + (holders.empty() ? std::string() : ": " + holders) +
+                                     " (a recording needs the port to itself)");
+    }
+    ::ioctl(fd, TIOCEXCL);
+}
+
 void SerialPort::open_or_throw() {
     // LibSerial throws from its destructor when Open() failed half-way on a non-tty (tcgetattr), which would
     // end the program: check first that the path is a terminal at all.
     const int fd = ::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0 && errno == EBUSY) {
+        const std::string holders = port_holders(path_);
+        throw DeviceError(path_, "in use by another program, which holds it exclusively" +
+                                     (holders.empty() ? std::string() : ": " + holders));
+    }
     if (fd < 0) throw DeviceError(path_, open_failure_cause(path_, std::strerror(errno)));
     const bool tty = ::isatty(fd) == 1;
     ::close(fd);
@@ -70,6 +89,10 @@ void SerialPort::open_or_throw() {
         port->SetStopBits(LibSerial::StopBits::STOP_BITS_1);
         port->SetFlowControl(LibSerial::FlowControl::FLOW_CONTROL_NONE);
         port->FlushInputBuffer();
+        take_exclusively(port->GetFileDescriptor());
+    } catch (const DeviceError&) {
+        static_cast<void>(port.release());
+        throw;
     } catch (const std::exception& e) {
         // Same destructor hazard as above: abandon the half-open object rather than risk terminate().
         static_cast<void>(port.release());

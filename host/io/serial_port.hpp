@@ -37,6 +37,7 @@ public:
 
 private:
     void open_or_throw();
+    void take_exclusively(int fd) const;
 
     std::string path_;
     int baud_;

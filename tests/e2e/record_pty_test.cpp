@@ -447,3 +447,27 @@ TEST(RecordPty, GapReadsAPolledRecordingOfABoardPacedFasterThanTheRecorder) {
     EXPECT_NEAR(j["calibration"]["outputs_per_row"].get<double>(), 20.0, 1.0);
     EXPECT_NEAR(j["calibration"]["channels"]["gyro"]["sigma_n_counts"].get<double>() / 1.0239, 1.0, 0.25);
 }
+
+// The port is the recording's alone (docs/security.md): a second recorder started on it is refused, naming the first
+// by its process id, and the first records on to a whole log.
+TEST(RecordPty, ASecondProgramCannotOpenThePortDuringARecording) {
+    TempDir dir("exclusive");
+    BoardThread board(paced_board(4.0, 120.0));
+    const std::string log = dir.file("rec.csv");
+    const pid_t first = spawn_driftlab(
+        {"record", "--port", board.path(), "--stream", "0.1", "--duration", "20", "-o", log}, dir.file("first.out"));
+    // The recording holds the port once its log has begun.
+    for (int i = 0; i < 200 && !std::filesystem::exists(log); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    ASSERT_TRUE(std::filesystem::exists(log)) << read_text(dir.file("first.out"));
+    const RunResult second = run_driftlab(
+        {"record", "--port", board.path(), "--stream", "0.1", "--duration", "1", "-o", dir.file("second.csv")},
+        dir.path());
+    EXPECT_EQ(second.exit_code, 4) << second.output;
+    // The holders are named: the first recorder (and the board's own end, which this test process keeps open).
+    EXPECT_NE(second.output.find("in use by another program: "), std::string::npos) << second.output;
+    EXPECT_NE(second.output.find("PID " + std::to_string(first) + " ("), std::string::npos) << second.output;
+    const RunResult r = wait_child(first, dir.file("first.out"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_GT(host::read_log(log).size(), 150u);
+}
