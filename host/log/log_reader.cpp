@@ -298,9 +298,10 @@ LogData parse_log(std::istream& in, const std::string& source_name, const ReadOp
     Parser parser(source_name, options);
     std::string text;
     std::uint64_t number = 0;
-    while (std::getline(in, text)) {
+    bool ended = true;
+    while (read_line(in, text, source_name, number + 1, &ended)) {
         ++number;
-        parser.line(text, number, !in.eof());
+        parser.line(text, number, ended);
     }
     if (in.bad()) throw DataError(source_name, number, "read error");
     return parser.finish(number);
@@ -318,7 +319,16 @@ std::string dropped_cut_line_note(const LogData& log) {
 }
 
 bool starts_as_log(std::istream& in) {
-    for (std::string text; std::getline(in, text);) {
+    std::uint64_t number = 0;
+    std::string text;
+    const auto next = [&]() {
+        try {
+            return read_line(in, text, "", ++number);
+        } catch (const DataError&) {
+            return false;  // a line too long for a log: not one; the table reader refuses it naming the file
+        }
+    };
+    while (next()) {
         if (!text.empty() && text.back() == '\r') text.pop_back();
         if (trim_blanks(text).empty()) continue;  // the reader skips blank lines before the magic too
         // A damaged magic line ("# driftlab-log 1") is still a log, which the reader refuses saying why; read as a

@@ -50,7 +50,7 @@ NumericTable parse_numeric_table(std::istream& in, const std::string& path) {
     std::vector<std::uint64_t> line_numbers;
     std::uint64_t number = 0;
     bool any_line = false;
-    while (std::getline(in, text)) {
+    while (read_line(in, text, path, number + 1)) {
         ++number;
         any_line = true;
         // A byte-order mark (editors on Windows write one) would make the first name unrecognisable.

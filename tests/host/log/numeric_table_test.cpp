@@ -3,9 +3,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
+#include "host/log/log_reader.hpp"
 #include "host/log/numeric_table.hpp"
 #include "host/util/error.hpp"
+#include "host/util/input_file.hpp"
 
 namespace driftlab::host {
 namespace {
@@ -99,3 +102,27 @@ TEST(NumericTable, ReadsTheRealRecordings) {
 
 }  // namespace
 }  // namespace driftlab::host
+
+// Readers of untrusted files are bounded (docs/security.md): a line past kMaxLineBytes is refused naming its line,
+// in a table and in a log alike, and one just under it is read.
+TEST(NumericTable, ALineLongerThanTheLimitIsRefusedNamingIt) {
+    using driftlab::host::kMaxLineBytes;
+    std::string values;
+    while (values.size() < kMaxLineBytes - 16) values += "1.25 ";
+    std::istringstream under(values + "\n");
+    EXPECT_NO_THROW(driftlab::host::parse_numeric_table(under, "under.txt"));
+    std::istringstream over("# a comment\n" + values + values + "\n");
+    try {
+        driftlab::host::parse_numeric_table(over, "over.txt");
+        FAIL() << "a line past the limit was read";
+    } catch (const driftlab::host::DataError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("over.txt:2: a line longer than 16777216 bytes", 0), 0u) << e.what();
+    }
+    std::istringstream log("# driftlab-log: 1\n" + values + values + "\n");
+    try {
+        driftlab::host::parse_log(log, "over.csv");
+        FAIL() << "a log line past the limit was read";
+    } catch (const driftlab::host::DataError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("over.csv:2: a line longer than", 0), 0u) << e.what();
+    }
+}
