@@ -72,6 +72,11 @@ std::uint64_t CaptureWriter::now_us() const {
         std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start_).count());
 }
 
+void CaptureWriter::sync() {
+    if (fd_ >= 0 && ::fdatasync(fd_) != 0 && errno != EINVAL)
+        throw DeviceError(path_, std::string("cannot sync capture to disk: ") + std::strerror(errno));
+}
+
 std::uint64_t CaptureWriter::write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count) {
     const std::uint64_t t_us = now_us();
     std::string record;

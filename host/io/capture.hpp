@@ -52,6 +52,8 @@ public:
     /// `decode` see the same times.
     std::uint64_t write(CaptureKind kind, const std::uint8_t* bytes, std::size_t count);
     std::uint64_t write_event(const std::string& text);
+    /// fdatasync(2): every record written so far is on the disk. Throws DeviceError when the OS refuses.
+    void sync();
     /// [us] since the capture started (the t_us of a record written now).
     std::uint64_t now_us() const;
     const std::string& path() const { return path_; }

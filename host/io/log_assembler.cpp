@@ -371,8 +371,8 @@ void LogAssembler::check_after_start(const Frame& frame) {
                               ") ignored: the rows are read as the handshake set them");
 }
 
-void LogAssembler::flush() {
-    if (writer_) writer_->flush();
+void LogAssembler::sync() {
+    if (writer_) writer_->sync();
 }
 
 void LogAssembler::finish() {

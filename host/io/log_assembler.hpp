@@ -69,7 +69,8 @@ public:
     void on_event(std::uint64_t t_us, const std::string& text);
     /// Writes a pending row and closes the log. Throws what LogWriter throws.
     void finish();
-    void flush();
+    /// The log's pending lines to the disk (LogWriter::sync()).
+    void sync();
 
     bool started() const { return writer_ != nullptr; }
     /// What has been assembled so far, the receiver's counts of samples that made no row included.

@@ -141,7 +141,9 @@ std::optional<std::string> run_session(Session& s, RecordSummary& summary) {
 
         const auto now = Clock::now();
         if (now - last_flush >= kFlushInterval) {
-            s.assembler.flush();
+            // On the disk, not only with the OS: a power loss of the PC costs at most this second (docs/recording.md).
+            s.assembler.sync();
+            s.capture.sync();
             last_flush = now;
         }
         if (s.progress && now - last_progress >= kProgressInterval) {

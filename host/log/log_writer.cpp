@@ -113,12 +113,24 @@ void LogWriter::flush() {
         const ssize_t n = ::write(fd_, pending_.data() + done, pending_.size() - done);
         if (n < 0) {
             if (errno == EINTR) continue;
-            throw DeviceError(path_, std::string("cannot write log: ") + std::strerror(errno));
+            const int error = errno;
+            // A full disk or a file-size limit can take part of the lines: cut the file back to its last whole line,
+            // so that the log stays readable (a regular file; a pipe keeps what it took).
+            if (done > 0 && owns_fd_ && ::ftruncate(fd_, static_cast<off_t>(written_)) == 0)
+                static_cast<void>(::lseek(fd_, static_cast<off_t>(written_), SEEK_SET));
+            throw DeviceError(path_, std::string("cannot write log: ") + std::strerror(error));
         }
         done += static_cast<std::size_t>(n);
     }
+    written_ += pending_.size();
     pending_.clear();
     last_flush_ = std::chrono::steady_clock::now();
+}
+
+void LogWriter::sync() {
+    flush();
+    if (fd_ >= 0 && ::fdatasync(fd_) != 0 && errno != EINVAL)  // EINVAL: a pipe or terminal, nothing to sync
+        throw DeviceError(path_, std::string("cannot sync log to disk: ") + std::strerror(errno));
 }
 
 void LogWriter::close() {

@@ -53,6 +53,9 @@ public:
 
     /// Writes all pending lines. Throws DeviceError when the OS refuses.
     void flush();
+    /// flush(), then fdatasync(2): the lines are on the disk, not only with the OS (a recording's each second, so
+    /// that a power loss of the PC costs at most that second). Throws DeviceError when the OS refuses either.
+    void sync();
     /// Flushes and closes; later calls do nothing.
     void close();
 
@@ -63,6 +66,7 @@ private:
     std::string path_;
     int fd_ = -1;
     bool owns_fd_ = false;
+    std::uint64_t written_ = 0;  // bytes handed to the OS, every one in whole lines
     std::vector<std::string> optional_columns_;
     std::string pending_;
     std::chrono::milliseconds flush_interval_{1000};

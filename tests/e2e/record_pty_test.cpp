@@ -471,3 +471,26 @@ TEST(RecordPty, ASecondProgramCannotOpenThePortDuringARecording) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_GT(host::read_log(log).size(), 150u);
 }
+
+// A full disk, as a file-size limit (prlimit --fsize, which the recorder meets as EFBIG): the recording ends with
+// exit 4, its log is cut back to its last whole line and reads as it is, and the capture rebuilds the log of which
+// the recorded one is the beginning (docs/recording.md "Durability").
+TEST(RecordPty, AFullDiskEndsTheRecordingWithExit4AWholeLogAndACaptureThatRebuildsIt) {
+    if (!std::filesystem::exists("/usr/bin/prlimit")) GTEST_SKIP() << "prlimit (util-linux) is not installed";
+    TempDir dir("fulldisk");
+    BoardThread board(paced_board(4.0, 120.0));
+    const std::string log = dir.file("rec.csv");
+    const pid_t pid = spawn_program("/usr/bin/prlimit", {"--fsize=20000", DRIFTLAB_BIN, "record", "--port",
+                                                         board.path(), "--stream", "0.1", "--duration", "60", "-o", log},
+                                    dir.file("rec.out"));
+    const RunResult r = wait_child(pid, dir.file("rec.out"));
+    EXPECT_EQ(r.exit_code, 4) << r.output;
+    EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
+    const host::LogData rec = host::read_log(log);  // whole: no cut line to drop
+    ASSERT_GT(rec.size(), 50u);
+    const RunResult d = run_driftlab({"decode", log + ".cap", "-o", dir.file("rebuilt.csv")}, dir.path());
+    ASSERT_EQ(d.exit_code, 0) << d.output;
+    const std::string recorded = read_text(log), rebuilt = read_text(dir.file("rebuilt.csv"));
+    EXPECT_GE(rebuilt.size(), recorded.size());
+    EXPECT_EQ(rebuilt.compare(0, recorded.size(), recorded), 0);
+}
