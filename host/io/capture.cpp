@@ -135,8 +135,8 @@ std::optional<std::string> CaptureReader::header_value(const std::string& key) c
     return std::nullopt;
 }
 
-std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::uint64_t after_us,
-                                                      std::uint64_t max_step_us) const {
+std::optional<CaptureReader::Probe> CaptureReader::probe_at(std::size_t offset, std::uint64_t after_us,
+                                                            std::uint64_t max_step_us) const {
     if (data_.size() - offset < kRecordHeaderSize) return std::nullopt;
     const std::uint8_t* p = data_.data() + offset;
     if (!known_kind(p[0])) return std::nullopt;
@@ -144,19 +144,42 @@ std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::u
     const std::uint64_t len = get_le(p + 9, 4);
     if (t_us < after_us || t_us - after_us > max_step_us || data_.size() - offset - kRecordHeaderSize < len)
         return std::nullopt;
+    return Probe{t_us, static_cast<std::size_t>(len)};
+}
+
+std::optional<CaptureRecord> CaptureReader::record_at(std::size_t offset, std::uint64_t after_us,
+                                                      std::uint64_t max_step_us) const {
+    const auto probe = probe_at(offset, after_us, max_step_us);
+    if (!probe) return std::nullopt;
     CaptureRecord rec;
-    rec.kind = static_cast<CaptureKind>(p[0]);
-    rec.t_us = t_us;
+    rec.kind = static_cast<CaptureKind>(data_[offset]);
+    rec.t_us = probe->t_us;
     rec.offset = offset;
-    rec.payload.assign(p + kRecordHeaderSize, p + kRecordHeaderSize + len);
+    const std::uint8_t* p = data_.data() + offset + kRecordHeaderSize;
+    rec.payload.assign(p, p + probe->len);
     return rec;
 }
 
 bool CaptureReader::records_resume_at(std::size_t offset) const {
-    const auto first = record_at(offset, last_t_us_);
+    const auto first = probe_at(offset, last_t_us_);
     if (!first) return false;
-    const std::size_t end = offset + kRecordHeaderSize + first->payload.size();
-    return end == data_.size() || record_at(end, first->t_us).has_value();
+    const std::size_t end = offset + kRecordHeaderSize + first->len;
+    return end == data_.size() || probe_at(end, first->t_us).has_value();
+}
+
+std::size_t CaptureReader::first_resume(std::size_t from) {
+    const bool same = scan_.valid && scan_.after_us == last_t_us_;
+    if (same && from >= scan_.from && from <= scan_.at) return scan_.at;
+    std::size_t k = from;
+    while (k < data_.size() && !records_resume_at(k)) {
+        ++k;
+        if (same && k == scan_.from) {  // joined the last scan: its answer holds
+            k = scan_.at;
+            break;
+        }
+    }
+    scan_ = {from, k, last_t_us_, true};
+    return k;
 }
 
 // A record of a known kind that runs past the end of the file: the recorder was killed while writing it.
@@ -167,7 +190,13 @@ bool CaptureReader::cut_record_at(std::size_t offset) const {
 }
 
 std::optional<CaptureRecord> CaptureReader::next() {
-    if (pos_ >= data_.size() || truncated_at_) return std::nullopt;
+    // A loop, not a recursion per damaged stretch: a crafted capture of a million stretches had no stack for it.
+    while (pos_ < data_.size() && !truncated_at_)
+        if (auto rec = read_or_skip()) return rec;
+    return std::nullopt;
+}
+
+std::optional<CaptureRecord> CaptureReader::read_or_skip() {
     // A stream-mode recorder writes nothing while the board is silent: a record more than a day after the last is
     // believed where a whole record follows it within a day (a damaged time is followed by none).
     auto rec = record_at(pos_, last_t_us_);
@@ -176,38 +205,35 @@ std::optional<CaptureRecord> CaptureReader::next() {
     if (rec) {
         const std::size_t end = pos_ + kRecordHeaderSize + rec->payload.size();
         const bool at_end = end == data_.size();
-        const bool followed = !at_end && record_at(end, rec->t_us).has_value();
+        const bool followed = !at_end && probe_at(end, rec->t_us).has_value();
         if (!in_a_day && !followed) rec.reset();
         // A damaged time that jumps ahead: the next record does not follow it but follows the one before. Read at the
         // previous record's time, so that its time does not become the reference every later record falls behind.
-        const bool retimed = rec && in_a_day && !at_end && !followed && record_at(end, last_t_us_).has_value();
+        const bool retimed = rec && in_a_day && !at_end && !followed && probe_at(end, last_t_us_).has_value();
         if (retimed) {
             rec->t_us = last_t_us_;
             retimed_.push_back(pos_);
         }
         // A damaged length swallows the records after it: its end then falls among bytes that are no record, while
         // whole records start inside what it claims. (A whole record followed by damage has none inside.)
-        if (in_a_day && !at_end && !followed && !retimed && !cut_record_at(end))
-            for (std::size_t k = pos_ + kRecordHeaderSize; k < end && rec; ++k)
-                if (records_resume_at(k)) rec.reset();
+        if (rec && in_a_day && !at_end && !followed && !retimed && !cut_record_at(end) &&
+            first_resume(pos_ + kRecordHeaderSize) < end)
+            rec.reset();
     }
     if (rec) {
         pos_ += kRecordHeaderSize + rec->payload.size();
         last_t_us_ = rec->t_us;
         return rec;
     }
-    std::size_t resume = pos_ + 1;
-    while (resume < data_.size() && !records_resume_at(resume)) ++resume;
-    if (resume == data_.size()) {
-        // Nothing whole follows: a record cut by a kill (its kind known, its length past the end), or a damaged tail.
-        if (known_kind(data_[pos_])) {
-            truncated_at_ = pos_;
-            return std::nullopt;
-        }
+    const std::size_t resume = first_resume(pos_ + 1);
+    if (resume == data_.size() && known_kind(data_[pos_])) {
+        // Nothing whole follows: a record cut by a kill (its kind known, its length past the end).
+        truncated_at_ = pos_;
+        return std::nullopt;
     }
     damaged_.push_back({pos_, resume - pos_});
     pos_ = resume;
-    return next();
+    return std::nullopt;
 }
 
 }  // namespace driftlab::host::io

@@ -94,10 +94,24 @@ public:
 private:
     /// A day: the longest wait between two records believed on their own (a recorder polling writes every period).
     static constexpr std::uint64_t kMaxStepUs = 86'400'000'000ULL;
+    /// A whole record's header at `offset` (its time and length), its payload not copied: what every probe of a
+    /// damaged stretch needs, at constant cost.
+    struct Probe {
+        std::uint64_t t_us = 0;
+        std::size_t len = 0;
+    };
+    std::optional<Probe> probe_at(std::size_t offset, std::uint64_t after_us,
+                                  std::uint64_t max_step_us = kMaxStepUs) const;
     std::optional<CaptureRecord> record_at(std::size_t offset, std::uint64_t after_us,
                                            std::uint64_t max_step_us = kMaxStepUs) const;
     bool records_resume_at(std::size_t offset) const;
+    /// The first offset at or after `from` where records resume (records_resume_at), or the end of the file. Scans
+    /// on from the last answer while the reference time is the same, so that each byte of a damaged stretch is
+    /// probed a bounded number of times however the stretch is crafted (a scan from every offset had been quadratic).
+    std::size_t first_resume(std::size_t from);
     bool cut_record_at(std::size_t offset) const;
+    /// One step of next(): a record, or nullopt having skipped a damaged stretch (more may follow) or reached the end.
+    std::optional<CaptureRecord> read_or_skip();
 
     std::string path_;
     std::vector<std::uint8_t> data_;
@@ -107,6 +121,11 @@ private:
     std::optional<std::uint64_t> truncated_at_;
     std::vector<Damage> damaged_;
     std::vector<std::uint64_t> retimed_;
+    struct ResumeScan {  // first_resume()'s last answer: no resume in [from, at)
+        std::size_t from = 0, at = 0;
+        std::uint64_t after_us = 0;
+        bool valid = false;
+    } scan_;
 };
 
 }  // namespace driftlab::host::io
