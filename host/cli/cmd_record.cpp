@@ -68,7 +68,8 @@ void run_record(const RecordCliOptions& o) {
     // the recorder survives, not a reason to die.
     ::signal(SIGHUP, SIG_IGN);
     ::signal(SIGPIPE, SIG_IGN);
-    // A file-size limit (ulimit -f) reached is a write the OS refused (EFBIG: exit 4, the log whole so far), not a kill.
+    // A file-size limit (ulimit -f) reached is a write the OS refused (EFBIG: exit 4, the log whole so far), not a
+    // kill.
     ::signal(SIGXFSZ, SIG_IGN);
 
     const bool live = !o.quiet && ::isatty(STDERR_FILENO);

@@ -480,8 +480,9 @@ TEST(RecordPty, AFullDiskEndsTheRecordingWithExit4AWholeLogAndACaptureThatRebuil
     TempDir dir("fulldisk");
     BoardThread board(paced_board(4.0, 120.0));
     const std::string log = dir.file("rec.csv");
-    const pid_t pid = spawn_program("/usr/bin/prlimit", {"--fsize=20000", DRIFTLAB_BIN, "record", "--port",
-                                                         board.path(), "--stream", "0.1", "--duration", "60", "-o", log},
+    const pid_t pid = spawn_program("/usr/bin/prlimit",
+                                    {"--fsize=20000", DRIFTLAB_BIN, "record", "--port", board.path(), "--stream", "0.1",
+                                     "--duration", "60", "-o", log},
                                     dir.file("rec.out"));
     const RunResult r = wait_child(pid, dir.file("rec.out"));
     EXPECT_EQ(r.exit_code, 4) << r.output;
