@@ -259,9 +259,21 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
             config_ = c;
         break;
     }
+    case proto::MsgType::ack: {
+        proto::AckPayload k{};
+        const bool foreign = writer_ && !replaying_held_ && proto::parse(p, frame.payload_len, &k) &&
+                             k.acked_type == static_cast<std::uint8_t>(proto::MsgType::config_set);
+        if (foreign && ++stats_.foreign_config_acks == 1) {
+            write_held_rows(0);
+            writer_->write_unexpected("ACK of a CONFIG_SET this recording did not send (frame seq " +
+                                      std::to_string(frame.seq) +
+                                      "): the board was reconfigured by someone else; no row follows");
+        }
+        break;
+    }
     case proto::MsgType::sample: {
         proto::SamplePayload s{};
-        if (!proto::parse(p, frame.payload_len, &s)) break;
+        if (!proto::parse(p, frame.payload_len, &s) || stats_.foreign_config_acks > 0) break;
         last_epoch_tick_ = s.tick;
         const std::uint64_t tick = ticks_.unwrap(s.tick);
         newest_sample_ = Stamped{t_us, tick};

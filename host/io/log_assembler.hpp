@@ -54,8 +54,11 @@ struct AssemblyStats {
     std::uint64_t conflicting_rows = 0;     ///< rows kept out of the log for a conflict
     std::uint64_t unexpected_versions = 0;  ///< VERSIONs after the start that differ from the handshake's: ignored
     std::uint64_t unexpected_configs = 0;   ///< CONFIGs after the start that differ from the handshake's: ignored
-    std::optional<double> first_t_s;        ///< [s] of the first row
-    std::optional<double> last_t_s;         ///< [s] of the newest row
+    /// ACKs of a CONFIG_SET after the start, outside a reconnect: someone else reconfigured the board. No SAMPLE after
+    /// the first is a row (its outputs follow a configuration the log does not state); `record` stops there.
+    std::uint64_t foreign_config_acks = 0;
+    std::optional<double> first_t_s;                  ///< [s] of the first row
+    std::optional<double> last_t_s;                   ///< [s] of the newest row
     std::array<double, kChannelCount> last_counts{};  ///< [counts] newest row
     std::uint16_t last_dropped = 0;                   ///< firmware's dropped-conversion counter in the newest SAMPLE
 };

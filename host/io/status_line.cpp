@@ -63,6 +63,10 @@ std::string untrusted_frames(const AssemblyStats& stats) {
         out += (out.empty() ? "" : ", ") + std::to_string(stats.unexpected_versions) + " VERSION and " +
                std::to_string(stats.unexpected_configs) +
                " CONFIG differing from the handshake's ignored (each noted in the log)";
+    if (stats.foreign_config_acks > 0)
+        out += (out.empty() ? "" : ", ") + std::string(
+                                               "an ACK of a CONFIG_SET the recording did not send (the board was "
+                                               "reconfigured by someone else: no row after it)");
     return out.empty() ? out : "untrusted frames: " + out;
 }
 

@@ -51,6 +51,15 @@ public:
     int exit_code() const override { return kExitCode; }
 };
 
+/// The board was reconfigured by a request the recorder did not send (an over-the-air CONFIG_SET): the recording
+/// stops, its log whole up to the reconfiguration (docs/security.md).
+class BoardReconfigured : public Error {
+public:
+    using Error::Error;
+    static constexpr int kExitCode = 6;
+    int exit_code() const override { return kExitCode; }
+};
+
 /// The user stopped a run that has an end of its own (Ctrl-C, SIGTERM) before it: what it made so far is kept and
 /// said; 130 (128 + SIGINT), as a shell reports an interrupted command, so that a script does not go on as if done.
 class Interrupted : public Error {

@@ -464,3 +464,35 @@ TEST(LogAssembler, TwoFramesOfOneSeqWithDifferentContentKeepEachOtherOutOfTheLog
     EXPECT_EQ(untrusted_frames(stats),
               "untrusted frames: 1 shared its seq with another of other content (neither used; 1 row kept out)");
 }
+
+// An ACK of a CONFIG_SET the recording did not send: another transmitter reconfigured the board. No SAMPLE after it is
+// a row (its outputs follow a configuration the log does not state), and the log says so; an ACK inside a reconnect's
+// handshake is the recorder's own (AnOutputStreamedDuringTheReconnectHandshakeIsARowAfterTheGap).
+TEST(LogAssembler, AConfigSetAcknowledgedThatTheRecordingDidNotSendEndsItsRows) {
+    const std::string path = temp_log("foreign_ack.csv");
+    AssemblyStats stats;
+    {
+        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "foreign_ack.cap"}});
+        Board b(a);
+        b.version();
+        b.config();
+        b.event("start");
+        b.sample(1 * kTicksPerOutput);
+        b.sample(2 * kTicksPerOutput);
+        b.ack();
+        b.sample(3 * kTicksPerOutput);
+        b.ack();
+        a.finish();
+        stats = a.stats();
+    }
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("# unexpected: ACK of a CONFIG_SET this recording did not send (frame seq 4)"),
+              std::string::npos)
+        << text;
+    const LogData log = read_log(path);
+    fs::remove(path);
+    ASSERT_EQ(log.size(), 2u);
+    EXPECT_DOUBLE_EQ(log.t_s[1], 0.2);
+    EXPECT_EQ(stats.foreign_config_acks, 2u);
+}
