@@ -64,27 +64,41 @@ void simulate(const NavEvalOptions& o, const std::string& trajectory, double dur
     write_hil_log(h, run, path);
 }
 
-// Seed s: the unit's rest recording is simulated with seed 2s, its runs with 2s + 1, so that no two logs share
-// their noise.
-nav::EvalRun evaluate_run(const NavEvalOptions& o, const std::string& trajectory, std::uint64_t seed,
-                          const std::string& dir) {
-    const std::string stem = dir + "/s" + std::to_string(seed);
-    const std::string rest = stem + "_rest.csv", moving = stem + "_" + trajectory + ".csv";
-    if (!std::filesystem::exists(rest)) simulate(o, "", o.fit_duration_s, 2 * seed, rest);
+// What every run of the campaign shares: the unit simulated and the navigation's options (with the bias processes of
+// its effects when --effects-noise), read and derived once.
+struct Campaign {
+    sim::SimModel unit;
+    nav::NavOptions options;
+};
+
+Campaign campaign(const NavEvalOptions& o) {
+    Campaign c{o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file), o.nav};
+    if (o.effects_noise) {
+        const nav::EffectNoise e = nav::effect_noise(c.unit);
+        c.options.effects_bias_psd = e.bias_walk_psd;
+        c.options.effects_used = e.used;
+    }
+    return c;
+}
+
+// Seed s: the unit's rest recording is simulated with seed 2s and its drift fitted once, for every trajectory of the
+// seed; its runs are simulated with 2s + 1, so that no two logs share their noise.
+nav::UnitDrift unit_drift_of_seed(const NavEvalOptions& o, std::uint64_t seed, const std::string& dir) {
+    const std::string rest = dir + "/s" + std::to_string(seed) + "_rest.csv";
+    simulate(o, "", o.fit_duration_s, 2 * seed, rest);
+    return nav::fit_unit_drift(read_log(rest), -INFINITY, INFINITY);
+}
+
+nav::EvalRun evaluate_run(const NavEvalOptions& o, const Campaign& c, const nav::UnitDrift& drift,
+                          const std::string& trajectory, std::uint64_t seed, const std::string& dir) {
+    const std::string moving = dir + "/s" + std::to_string(seed) + "_" + trajectory + ".csv";
     simulate(o, trajectory, o.duration_s, 2 * seed + 1, moving);
-    const nav::UnitDrift drift = nav::fit_unit_drift(read_log(rest), -INFINITY, INFINITY);
     const LogData log = read_log(moving);
     const TruthFile truth = read_truth_file(sim::truth_path_for(moving));
     const nav::NavTruth nav_truth(truth, match_truth_rows(truth, log, false));
-    nav::NavOptions options = o.nav;
+    nav::NavOptions options = c.options;
     options.aid.seed = seed;
-    const sim::SimModel unit = o.model_file.empty() ? sim::paper_model() : sim::load_model_file(o.model_file);
-    if (o.effects_noise) {
-        const nav::EffectNoise e = nav::effect_noise(unit);
-        options.effects_bias_psd = e.bias_walk_psd;
-        options.effects_used = e.used;
-    }
-    const nav::NavRun run = nav::navigate(log, unit, drift, nav_truth, options);
+    const nav::NavRun run = nav::navigate(log, c.unit, drift, nav_truth, options);
     return {trajectory, seed, nav::score(run, nav_truth)};
 }
 
@@ -102,11 +116,15 @@ void run(NavEvalOptions& o) {
     std::vector<nav::EvalRun> runs;
     const std::size_t total = o.trajectories.size() * static_cast<std::size_t>(o.runs);
     try {
-        for (int k = 0; k < o.runs; ++k)
+        const Campaign c = campaign(o);
+        for (int k = 0; k < o.runs; ++k) {
+            const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(k);
+            const nav::UnitDrift drift = unit_drift_of_seed(o, seed, dir);
             for (const std::string& t : o.trajectories) {
-                runs.push_back(evaluate_run(o, t, o.seed + static_cast<std::uint64_t>(k), dir));
+                runs.push_back(evaluate_run(o, c, drift, t, seed, dir));
                 if (progress) progress(static_cast<double>(runs.size()) / static_cast<double>(total));
             }
+        }
     } catch (...) {
         if (!keep) std::filesystem::remove_all(dir);
         throw;

@@ -9,6 +9,7 @@
 #include "host/nav/input_correction.hpp"
 #include "host/nav/stop_detector.hpp"
 #include "host/stats/chi_square.hpp"
+#include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 
 namespace driftlab::host::nav {
@@ -25,13 +26,6 @@ struct VariantSpec {
 };
 constexpr std::array<VariantSpec, 4> kVariants = {
     {{"raw", false, false}, {"forward", true, false}, {"ekf", false, true}, {"forward+ekf", true, true}}};
-
-double median_period(const LogData& log) {
-    std::vector<double> d;
-    for (std::size_t i = 1; i < log.size(); ++i) d.push_back(log.t_s[i] - log.t_s[i - 1]);
-    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-    return d[d.size() / 2];
-}
 
 // The filter's noise in SI units: the unit's Allan terms where known, else the white noise of the initial rest.
 FilterNoise filter_noise(const std::optional<UnitDrift>& drift, const InitialRest& rest, double period_s,
@@ -197,7 +191,7 @@ NavRun navigate(const LogData& log, const sim::SimModel& unit, const std::option
     if ((options.aid.odometry || options.aid.fixes) && !truth)
         throw UsageError("--aid odometry and fixes are drawn from the ground truth: give --truth (or --at-rest)");
     const InitialRest rest = initial_rest(log, options.rest_s);
-    const RunContext ctx{log, truth, options, counts_per_si(unit), median_period(log), !ax};
+    const RunContext ctx{log, truth, options, counts_per_si(unit), stats::median_spacing_s(log.t_s), !ax};
     NavRun run;
     run.t_s = log.t_s;
     run.heading_only = !ax;

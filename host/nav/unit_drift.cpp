@@ -9,6 +9,7 @@
 #include "host/fit/allan_pipeline.hpp"
 #include "host/fit/drift_analysis.hpp"
 #include "host/stats/noise_terms.hpp"
+#include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/input_file.hpp"
 
@@ -131,7 +132,7 @@ UnitDrift fit_unit_drift(const LogData& rest, double from_s, double to_s) {
     for (std::size_t i = 0; i < rest.size(); ++i)
         if (rest.t_s[i] >= from_s && rest.t_s[i] <= to_s) t.push_back(rest.t_s[i]), rows.push_back(i);
     if (t.size() < 16) throw DataError(rest.source_name, 0, "fewer than 16 rows to fit the unit's drift on");
-    const double tau0 = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+    const double tau0 = stats::mean_spacing_s(t);
     for (std::size_t k = 0; k < kNavAxes; ++k) {
         const Channel c = kNavChannels[k];
         if (!rest.recorded[channel_index(c)]) {
