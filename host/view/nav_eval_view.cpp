@@ -7,6 +7,7 @@
 #include "host/util/format_number.hpp"
 #include "host/view/gnuplot.hpp"
 #include "host/view/json_out.hpp"
+#include "host/view/nav_view.hpp"
 
 namespace driftlab::host::view {
 namespace {
@@ -17,8 +18,6 @@ std::string cell(double median, double p95) {
     if (!std::isfinite(median)) return "-";
     return significant_plain(median, 3) + " (" + significant_plain(p95, 3) + ")";
 }
-
-const char* kColours[] = {"#7f7f7f", "#1f77b4", "#ff7f0e", "#2ca02c"};
 
 }  // namespace
 
@@ -106,8 +105,9 @@ void write_nav_eval_plots(const std::string& dir, const NavEvalReport& r) {
             const auto& v = r.summary.variants[k];
             const auto& med = heading ? v.heading_error_deg : v.position_error_m;
             const auto& hi = heading ? v.heading_error_deg_p95 : v.position_error_m_p95;
-            p.series.push_back({v.name, minutes, med, med, hi, SeriesStyle::error_bars, false, kColours[k % 4], 1.5});
-            p.series.push_back({"", minutes, med, {}, {}, SeriesStyle::lines, false, kColours[k % 4], 1.5});
+            p.series.push_back(
+                {v.name, minutes, med, med, hi, SeriesStyle::error_bars, false, nav_variant_colour(k), 1.5});
+            p.series.push_back({"", minutes, med, {}, {}, SeriesStyle::lines, false, nav_variant_colour(k), 1.5});
         }
         render_plot(p, dir, heading ? "nav_eval_heading" : "nav_eval_position");
     }

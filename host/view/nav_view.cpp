@@ -20,8 +20,6 @@ std::string cell(double v, int decimals) { return std::isfinite(v) ? fixed_point
 
 std::string minutes(double s) { return significant_plain(s / 60.0, 4) + " min"; }
 
-const char* kColours[] = {"#7f7f7f", "#1f77b4", "#ff7f0e", "#2ca02c"};
-
 void print_errors(std::ostream& out, const nav::NavScore& s) {
     std::string head = "variant      ";
     for (const double a : s.at_s) head += "  hdg@" + minutes(a);
@@ -245,7 +243,7 @@ std::vector<NamedPlot> nav_plots(const NavCurves& c) {
             dh[i] = std::max(std::abs(dh[i] - c.truth->heading_deg[i]), 1e-4);
             dp[i] = std::max(std::hypot(p.x_m[i] - c.truth->x_m[i], p.y_m[i] - c.truth->y_m[i]), 1e-4);
         }
-        const std::string colour = kColours[k % 4];
+        const std::string colour = nav_variant_colour(k);
         heading.series.push_back({name, minutes_axis, dh, {}, {}, SeriesStyle::lines, false, colour, 1.5});
         position.series.push_back({name, minutes_axis, dp, {}, {}, SeriesStyle::lines, false, colour, 1.5});
         path.series.push_back({name, p.x_m, p.y_m, {}, {}, SeriesStyle::lines, false, colour, 1.5});

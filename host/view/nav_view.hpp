@@ -2,6 +2,8 @@
 // as CSV, and plots (heading and position error against time, the trajectory against the truth).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -15,6 +17,10 @@
 #include "host/view/gnuplot.hpp"
 
 namespace driftlab::host::view {
+
+/// Each variant's colour in every navigation plot (nav, nav-eval, the report), in the variants' order.
+inline constexpr std::array<const char*, 4> kNavVariantColours = {"#7f7f7f", "#1f77b4", "#ff7f0e", "#2ca02c"};
+inline const char* nav_variant_colour(std::size_t k) { return kNavVariantColours[k % kNavVariantColours.size()]; }
 
 /// A run's curves as its plots draw them: the rows' times, the truth's pose (in the frame of the first row, when
 /// known) and each variant's, at up to a given number of rows (the first, every k-th, the last).
