@@ -4,7 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <vector>
+#include <memory>
 
 #include "host/util/error.hpp"
 
@@ -20,17 +20,18 @@ std::ifstream open_input_file(const std::string& path) {
 
 bool read_line(std::istream& in, std::string& text, const std::string& path, std::uint64_t line, bool* ended) {
     // Bulk reads into a buffer one byte longer than the limit: a line that fills it is too long, and nothing more of
-    // it is read.
-    thread_local std::vector<char> buffer(kMaxLineBytes + 2);
-    in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    // it is read. Left uninitialised, so that only the pages a line reaches are ever touched.
+    constexpr std::size_t kBufferBytes = kMaxLineBytes + 2;
+    thread_local const std::unique_ptr<char[]> buffer(new char[kBufferBytes]);
+    in.getline(buffer.get(), static_cast<std::streamsize>(kBufferBytes));
     const std::streamsize got = in.gcount();
-    if (in.fail() && !in.eof() && got == static_cast<std::streamsize>(buffer.size()) - 1)
+    if (in.fail() && !in.eof() && got == static_cast<std::streamsize>(kBufferBytes) - 1)
         throw DataError(path, line,
                         "a line longer than " + std::to_string(kMaxLineBytes) +
                             " bytes: no line of a log, table or capture (refused without reading it whole)");
     if (got == 0 && (in.eof() || in.fail())) return false;
     const bool newline = !in.eof();
-    text.assign(buffer.data(), static_cast<std::size_t>(got) - (newline ? 1 : 0));
+    text.assign(buffer.get(), static_cast<std::size_t>(got) - (newline ? 1 : 0));
     if (ended) *ended = newline;
     if (in.fail()) in.clear(in.rdstate() & ~std::ios::failbit);  // an empty last line read fully
     return true;
