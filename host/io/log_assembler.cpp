@@ -236,17 +236,20 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
     stats_.duplicate_frames = seq_.duplicates();
     stats_.reordered_frames = seq_.reordered();
     if (seq.verdict == receiver::SeqVerdict::duplicate) {
-        check_conflict(seq.unwrapped, frame);
+        if (check_conflict(seq.unwrapped, frame)) take_frame(t_us, frame, seq.unwrapped);
         return;
     }
-    fingerprints_[seq.unwrapped % fingerprints_.size()] = {seq.unwrapped, fingerprint(frame)};
+    fingerprints_[seq.unwrapped % fingerprints_.size()] = {seq.unwrapped, fingerprint(frame), false};
+    take_frame(t_us, frame, seq.unwrapped);
+}
 
+void LogAssembler::take_frame(std::uint64_t t_us, const Frame& frame, std::uint64_t unwrapped_seq) {
     const std::uint8_t* p = frame.payload.data();
     switch (frame.type) {
     case proto::MsgType::version: {
         proto::VersionPayload v{};
         if (writer_)
-            check_after_start(frame);
+            note_if_unexpected(frame, unwrapped_seq);
         else if (proto::parse(p, frame.payload_len, &v))
             version_ = v;
         break;
@@ -254,7 +257,7 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
     case proto::MsgType::config: {
         proto::ConfigPayload c{};
         if (writer_)
-            check_after_start(frame);
+            note_if_unexpected(frame, unwrapped_seq);
         else if (proto::parse(p, frame.payload_len, &c))
             config_ = c;
         break;
@@ -278,7 +281,7 @@ void LogAssembler::process_frame(std::uint64_t t_us, const Frame& frame) {
         const std::uint64_t tick = ticks_.unwrap(s.tick);
         newest_sample_ = Stamped{t_us, tick};
         if (!epoch_first_sample_) epoch_first_sample_ = newest_sample_;
-        if (rows_) rows_->sample(s, seq.unwrapped, tick);
+        if (rows_) rows_->sample(s, unwrapped_seq, tick);
         break;
     }
     case proto::MsgType::raw: {
@@ -348,39 +351,51 @@ void LogAssembler::write_held_rows(std::size_t keep) {
     }
 }
 
-void LogAssembler::check_conflict(std::uint64_t seq, const Frame& frame) {
-    const auto& [seen_seq, seen_print] = fingerprints_[seq % fingerprints_.size()];
-    if (seen_seq != seq || seen_print == fingerprint(frame)) return;  // a repeat, or too old to tell
+bool LogAssembler::check_conflict(std::uint64_t seq, const Frame& frame) {
+    Seen& seen = fingerprints_[seq % fingerprints_.size()];
+    if (seen.seq != seq || seen.print == fingerprint(frame)) return false;  // a repeat, or too old to tell
     ++stats_.conflicting_frames;
-    // Neither frame can be trusted: a row of that SAMPLE (or of the SAMPLE before that RAW) stays out while held.
+    // A VERSION or CONFIG that differs from the handshake cannot be the board's (its own changes only follow a
+    // CONFIG_SET, whose ACK ends the rows): it is the forged one of the two, noted and ignored, and a SAMPLE of that
+    // seq, before or after it, stays a row.
+    if (note_if_unexpected(frame, seq)) return false;
+    if (seen.unexpected && frame.type == proto::MsgType::sample) {
+        seen = {seq, fingerprint(frame), false};
+        return true;
+    }
+    // Else neither frame can be trusted: a row of that SAMPLE (or of the SAMPLE before that RAW) stays out while held.
     const auto before = held_rows_.size();
     const std::uint64_t row_seq = frame.type == proto::MsgType::raw ? seq - 1 : seq;  // a RAW follows its SAMPLE
     std::erase_if(held_rows_, [row_seq](const receiver::Row& r) { return r.seq == row_seq; });
     stats_.conflicting_rows += before - held_rows_.size();
+    return false;
 }
 
-void LogAssembler::check_after_start(const Frame& frame) {
-    if (replaying_held_) return;  // the reconnect's handshake, which the recorder verified
+std::string LogAssembler::unexpected_difference(const Frame& frame) const {
+    if (!writer_ || replaying_held_) return {};  // before the start, or the reconnect's handshake the recorder verified
     const std::uint8_t* p = frame.payload.data();
-    std::string what;
     if (frame.type == proto::MsgType::version) {
         proto::VersionPayload v{};
-        if (!proto::parse(p, frame.payload_len, &v)) return;
-        what = differences(*version_, v);
-        if (what.empty()) return;
-        ++stats_.unexpected_versions;
-        what = "VERSION " + what;
-    } else {
-        proto::ConfigPayload c{};
-        if (!proto::parse(p, frame.payload_len, &c)) return;
-        what = differences(*config_, c);
-        if (what.empty()) return;
-        ++stats_.unexpected_configs;
-        what = "CONFIG " + what;
+        if (!proto::parse(p, frame.payload_len, &v)) return {};
+        const std::string what = differences(*version_, v);
+        return what.empty() ? what : "VERSION " + what;
     }
+    proto::ConfigPayload c{};
+    if (frame.type != proto::MsgType::config || !proto::parse(p, frame.payload_len, &c)) return {};
+    const std::string what = differences(*config_, c);
+    return what.empty() ? what : "CONFIG " + what;
+}
+
+bool LogAssembler::note_if_unexpected(const Frame& frame, std::uint64_t seq) {
+    const std::string what = unexpected_difference(frame);
+    if (what.empty()) return false;
+    ++(frame.type == proto::MsgType::version ? stats_.unexpected_versions : stats_.unexpected_configs);
+    Seen& seen = fingerprints_[seq % fingerprints_.size()];
+    if (seen.seq == seq) seen.unexpected = true;
     write_held_rows(0);
     writer_->write_unexpected(what + " (frame seq " + std::to_string(frame.seq) +
                               ") ignored: the rows are read as the handshake set them");
+    return true;
 }
 
 void LogAssembler::sync() {

@@ -97,12 +97,18 @@ private:
     bool write(const receiver::Row& row);
     /// Writes the held-back rows down to `keep` of them (the newest), oldest first.
     void write_held_rows(std::size_t keep);
-    /// A VERSION or CONFIG after the start: one that differs from the handshake's is counted, noted in the log and
-    /// ignored (how rows are read and written is the handshake's for the whole recording).
-    void check_after_start(const Frame& frame);
-    /// Whether a frame whose seq was seen before carries other content; if so, counts it and drops a held row of
-    /// that seq.
-    void check_conflict(std::uint64_t seq, const Frame& frame);
+    /// A frame whose seq is new: what it is, read (the handshake's VERSION and CONFIG, a SAMPLE's row...).
+    void take_frame(std::uint64_t t_us, const Frame& frame, std::uint64_t unwrapped_seq);
+    /// What a VERSION or CONFIG after the start changes of the handshake's ("CONFIG raw 0 -> 1"); "" when nothing,
+    /// or before the start, or in a reconnect's verified handshake.
+    std::string unexpected_difference(const Frame& frame) const;
+    /// A VERSION or CONFIG that changes the handshake's is counted, noted in the log and ignored (how rows are read
+    /// and written is the handshake's for the whole recording); true when it was one.
+    bool note_if_unexpected(const Frame& frame, std::uint64_t seq);
+    /// Whether a frame whose seq was seen before carries other content; if so, counts it and settles which to
+    /// believe: a VERSION or CONFIG that changes the handshake's loses to the SAMPLE of its seq (true: take this
+    /// SAMPLE); otherwise a held row of that seq is dropped.
+    bool check_conflict(std::uint64_t seq, const Frame& frame);
     void start_log();
 
     std::string log_path_;
@@ -118,8 +124,14 @@ private:
     /// before it) keeps both out of the log.
     static constexpr std::size_t kHeldRows = 2;
     std::deque<receiver::Row> held_rows_;
-    /// Content fingerprint of recent frames by unwrapped seq (slot seq % size), to tell a repeat from a conflict.
-    std::array<std::pair<std::uint64_t, std::uint64_t>, 256> fingerprints_{};
+    /// Recent frames by unwrapped seq (slot seq % size): their content's fingerprint, to tell a repeat from a
+    /// conflict, and whether it was an unexpected VERSION or CONFIG.
+    struct Seen {
+        std::uint64_t seq = 0;
+        std::uint64_t print = 0;
+        bool unexpected = false;
+    };
+    std::array<Seen, 256> fingerprints_{};
     bool replaying_held_ = false;  ///< frames held over a reconnect: its handshake may legitimately differ
     struct Stamped {               // host time [us] of something the board sent
         std::uint64_t t_us;

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace driftlab::e2e {
@@ -141,6 +142,22 @@ std::vector<std::string> lines_of(const std::string& text) {
         start = nl + 1;
     }
     return lines;
+}
+
+// Every recorded row must be a row the firmware sent: same tick, same seq, same four values.
+void expect_rows_in_truth(const host::LogData& log, const host::LogData& truth) {
+    std::map<std::uint64_t, std::size_t> truth_by_tick;
+    const auto& truth_ticks = truth.optional_columns.at("tick");
+    for (std::size_t i = 0; i < truth.size(); ++i) truth_by_tick[static_cast<std::uint64_t>(truth_ticks[i])] = i;
+    const auto& ticks = log.optional_columns.at("tick");
+    for (std::size_t r = 0; r < log.size(); ++r) {
+        const auto it = truth_by_tick.find(static_cast<std::uint64_t>(ticks[r]));
+        ASSERT_NE(it, truth_by_tick.end()) << "row " << r << " tick " << ticks[r] << " was never sent";
+        const std::size_t i = it->second;
+        EXPECT_EQ(log.seq[r], truth.seq[i]) << "row " << r;
+        EXPECT_EQ(log.t_s[r], truth.t_s[i]) << "row " << r;
+        for (std::uint8_t c = 0; c < kChannelCount; ++c) EXPECT_EQ(log.counts[c][r], truth.counts[c][i]) << "row " << r;
+    }
 }
 
 }  // namespace driftlab::e2e

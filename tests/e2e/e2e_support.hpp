@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "host/io/pty_board.hpp"
+#include "host/log/log_data.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace driftlab::e2e {
@@ -91,5 +92,9 @@ std::string read_text(const std::string& path);
 /// Returns that line's number.
 std::string cut_last_row(const std::string& log);
 std::vector<std::string> lines_of(const std::string& text);
+
+/// Every row of `log` is a row the firmware sent (in `truth`, the board's own decoding of its output): same tick, same
+/// seq, same time, same four values.
+void expect_rows_in_truth(const host::LogData& log, const host::LogData& truth);
 
 }  // namespace driftlab::e2e

@@ -29,22 +29,6 @@ using namespace driftlab::e2e;
 
 namespace {
 
-// Every recorded row must be a row the firmware sent: same tick, same seq, same four values.
-void expect_rows_in_truth(const host::LogData& log, const host::LogData& truth) {
-    std::map<std::uint64_t, std::size_t> truth_by_tick;
-    const auto& truth_ticks = truth.optional_columns.at("tick");
-    for (std::size_t i = 0; i < truth.size(); ++i) truth_by_tick[static_cast<std::uint64_t>(truth_ticks[i])] = i;
-    const auto& ticks = log.optional_columns.at("tick");
-    for (std::size_t r = 0; r < log.size(); ++r) {
-        const auto it = truth_by_tick.find(static_cast<std::uint64_t>(ticks[r]));
-        ASSERT_NE(it, truth_by_tick.end()) << "row " << r << " tick " << ticks[r] << " was never sent";
-        const std::size_t i = it->second;
-        EXPECT_EQ(log.seq[r], truth.seq[i]) << "row " << r;
-        EXPECT_EQ(log.t_s[r], truth.t_s[i]) << "row " << r;
-        for (std::uint8_t c = 0; c < kChannelCount; ++c) EXPECT_EQ(log.counts[c][r], truth.counts[c][i]) << "row " << r;
-    }
-}
-
 // `decode run.csv.cap -o run.csv` of a damaged capture had replaced the intact recording beside it; a frame failing
 // its CRC in a damaged copy had been counted only as a lost sequence number, like a radio loss.
 void expect_decode_keeps_logs_and_names_crc_failures(const TempDir& dir, const std::string& log) {

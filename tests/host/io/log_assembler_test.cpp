@@ -17,80 +17,15 @@
 #include "driftlab/proto/encoder.hpp"
 #include "host/io/status_line.hpp"
 #include "host/log/log_reader.hpp"
+#include "tests/host/io/assembler_board.hpp"
 
 namespace fs = std::filesystem;
 using namespace driftlab;
 using namespace driftlab::host;
 using namespace driftlab::host::io;
+using namespace driftlab::host::io::test_board;
 
 namespace {
-
-constexpr std::uint32_t kTickHz = 250000;
-constexpr std::uint32_t kTicksPerOutput = 25000;  // 0.1 s
-
-// The board side of the link: frames with consecutive seq numbers, each handed to the assembler as received bytes.
-class Board {
-public:
-    explicit Board(LogAssembler& a) : a_(a) {}
-    template <class Encode>
-    void send(Encode encode) {
-        std::uint8_t buf[64];
-        const std::size_t n = encode(seq_++, buf, sizeof buf);
-        ASSERT_GT(n, 0u);
-        a_.on_rx(t_us_ += 1000, buf, n);
-    }
-    void version(std::uint32_t tick_hz = kTickHz) {
-        proto::VersionPayload v{};
-        v.proto_version = proto::kProtocolVersion;
-        v.adc_bits = 10;
-        v.vref_mv = 5000;
-        v.tick_hz = tick_hz;
-        v.channel_count = kChannelCount;
-        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_version(v, s, o, n); });
-    }
-    void config(std::uint8_t raw = 0, std::uint8_t window = 8) {
-        const proto::ConfigPayload c{100, 8, window, 0, static_cast<std::uint8_t>(proto::OutputMode::stream), raw};
-        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_config(c, s, o, n); });
-    }
-    void ack() {
-        const proto::AckPayload k{static_cast<std::uint8_t>(proto::MsgType::config_set), 7};
-        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_ack(k, s, o, n); });
-    }
-    void status(std::uint32_t uptime) {
-        proto::StatusPayload st{};
-        st.uptime_ticks = uptime;
-        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_status(st, s, o, n); });
-    }
-    void sample(std::uint32_t tick, std::int32_t gyro_q8 = 500 * 256, std::uint8_t n_window = 8) {
-        proto::SamplePayload p{};
-        p.tick = tick;
-        for (auto& v : p.value_q8) v = n_window ? 500 * 256 : 0;
-        p.value_q8[0] = n_window ? gyro_q8 : 0;
-        p.n_window = n_window;
-        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_sample(p, s, o, n); });
-    }
-    void raw(std::uint32_t tick, std::uint16_t gyro_code) {
-        proto::RawPayload r{};
-        r.tick = tick;
-        for (auto& c : r.code) c = 500;
-        r.code[0] = gyro_code;
-        send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_raw(r, s, o, n); });
-    }
-    void skip(std::uint64_t frames) { seq_ = static_cast<std::uint16_t>(seq_ + frames); }
-    /// The next frame reuses the seq of the one `frames` back (a forged or repeated frame).
-    void rewind(std::uint16_t frames) { seq_ = static_cast<std::uint16_t>(seq_ - frames); }
-    void event(const std::string& text) { a_.on_event(t_us_ += 1000, text); }
-    void wait_us(std::uint64_t us) { t_us_ += us; }
-
-private:
-    LogAssembler& a_;
-    std::uint16_t seq_ = 0;
-    std::uint64_t t_us_ = 0;
-};
-
-std::string temp_log(const std::string& name) {
-    return (fs::temp_directory_path() / ("driftlab_asm_" + std::to_string(::getpid()) + "_" + name)).string();
-}
 
 // Three rows, then the link is lost for 6 s while the board streams on (60 outputs never received).
 void record_until_unplugged(Board& b) {
@@ -177,25 +112,6 @@ LogData recorded_across_an_unplug(const std::string& name, const Unplugged& u, A
             b.wait_us(output_us - 1000);
             b.sample(next + k * kTicksPerOutput);
         }
-        a.finish();
-        stats = a.stats();
-    }
-    LogData log = read_log(path);
-    fs::remove(path);
-    return log;
-}
-
-// A recording of the frames `send` makes after the handshake (VERSION, CONFIG with `raw`, start), read back.
-LogData recorded(const std::string& name, std::uint8_t raw, const std::function<void(Board&)>& send,
-                 AssemblyStats& stats) {
-    const std::string path = temp_log(name);
-    {
-        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", name + ".cap"}});
-        Board b(a);
-        b.version();
-        b.config(raw);
-        b.event("start");
-        send(b);
         a.finish();
         stats = a.stats();
     }
@@ -396,103 +312,4 @@ TEST(LogAssembler, AConfigArrivingMidRecordingChangesNoRow) {
     ASSERT_EQ(log.size(), 3u);
     EXPECT_EQ(log.optional_columns.count("raw_gyro"), 0u);
     EXPECT_EQ(stats.raw_missing, 0u);
-}
-
-// The link is untrusted (docs/security.md): a VERSION or CONFIG after the start that differs from the handshake's is
-// counted, noted among the rows and ignored, so that rows keep their time base and columns.
-TEST(LogAssembler, AVersionOrConfigDifferingFromTheHandshakesIsNotedAndIgnored) {
-    const std::string path = temp_log("unexpected.csv");
-    AssemblyStats stats;
-    {
-        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "unexpected.cap"}});
-        Board b(a);
-        b.version();
-        b.config();
-        b.event("start");
-        b.sample(1 * kTicksPerOutput);
-        b.version(0);  // a tick rate of 0 had made t_s infinite
-        b.sample(2 * kTicksPerOutput);
-        b.config(1, 4);  // raw on, another window
-        b.sample(3 * kTicksPerOutput);
-        b.version();  // the handshake's own: nothing to note
-        b.config();
-        b.sample(4 * kTicksPerOutput);
-        a.finish();
-        stats = a.stats();
-    }
-    std::ifstream in(path);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("# unexpected: VERSION tick_hz 250000 -> 0 (frame seq 3) ignored"), std::string::npos) << text;
-    EXPECT_NE(text.find("# unexpected: CONFIG window 8 -> 4, raw 0 -> 1 (frame seq 5) ignored"), std::string::npos)
-        << text;
-    const LogData log = read_log(path);
-    fs::remove(path);
-    ASSERT_EQ(log.size(), 4u);
-    for (std::size_t i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(log.t_s[i], 0.1 * static_cast<double>(i + 1));
-    EXPECT_EQ(stats.unexpected_versions, 1u);
-    EXPECT_EQ(stats.unexpected_configs, 1u);
-    EXPECT_EQ(
-        untrusted_frames(stats),
-        "untrusted frames: 1 VERSION and 1 CONFIG differing from the handshake's ignored (each noted in the log)");
-}
-
-// A forged SAMPLE with the next seq, before or after the real one: the two frames share a seq with different content,
-// and neither becomes a row; a frame repeated as it was is a duplicate, no conflict.
-TEST(LogAssembler, TwoFramesOfOneSeqWithDifferentContentKeepEachOtherOutOfTheLog) {
-    AssemblyStats stats;
-    const LogData log = recorded(
-        "conflict.csv", 0,
-        [](Board& b) {
-            b.sample(1 * kTicksPerOutput);
-            b.sample(2 * kTicksPerOutput, 900 * 256);  // forged, with the seq the real output will carry
-            b.rewind(1);
-            b.sample(2 * kTicksPerOutput);  // the real one
-            b.sample(3 * kTicksPerOutput);
-            b.rewind(1);
-            b.sample(3 * kTicksPerOutput);  // a repeat of the same frame
-            b.sample(4 * kTicksPerOutput);
-        },
-        stats);
-    ASSERT_EQ(log.size(), 3u);
-    EXPECT_DOUBLE_EQ(log.t_s[0], 0.1);
-    EXPECT_DOUBLE_EQ(log.t_s[1], 0.3);
-    EXPECT_DOUBLE_EQ(log.t_s[2], 0.4);
-    for (std::size_t i = 0; i < log.size(); ++i) EXPECT_DOUBLE_EQ(log.channel(Channel::gyro)[i], 500.0);
-    EXPECT_EQ(stats.conflicting_frames, 1u);
-    EXPECT_EQ(stats.conflicting_rows, 1u);
-    EXPECT_EQ(stats.duplicate_frames, 2u);  // the real frame of the conflict, and the repeat
-    EXPECT_EQ(untrusted_frames(stats),
-              "untrusted frames: 1 shared its seq with another of other content (neither used; 1 row kept out)");
-}
-
-// An ACK of a CONFIG_SET the recording did not send: another transmitter reconfigured the board. No SAMPLE after it is
-// a row (its outputs follow a configuration the log does not state), and the log says so; an ACK inside a reconnect's
-// handshake is the recorder's own (AnOutputStreamedDuringTheReconnectHandshakeIsARowAfterTheGap).
-TEST(LogAssembler, AConfigSetAcknowledgedThatTheRecordingDidNotSendEndsItsRows) {
-    const std::string path = temp_log("foreign_ack.csv");
-    AssemblyStats stats;
-    {
-        LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "foreign_ack.cap"}});
-        Board b(a);
-        b.version();
-        b.config();
-        b.event("start");
-        b.sample(1 * kTicksPerOutput);
-        b.sample(2 * kTicksPerOutput);
-        b.ack();
-        b.sample(3 * kTicksPerOutput);
-        b.ack();
-        a.finish();
-        stats = a.stats();
-    }
-    std::ifstream in(path);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("# unexpected: ACK of a CONFIG_SET this recording did not send (frame seq 4)"),
-              std::string::npos)
-        << text;
-    const LogData log = read_log(path);
-    fs::remove(path);
-    ASSERT_EQ(log.size(), 2u);
-    EXPECT_DOUBLE_EQ(log.t_s[1], 0.2);
-    EXPECT_EQ(stats.foreign_config_acks, 2u);
 }
