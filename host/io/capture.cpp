@@ -122,6 +122,8 @@ CaptureReader::CaptureReader(const std::string& path) : path_(path) {
         // Its keys become the log's metadata keys: a damaged one is the capture's fault, named here.
         if (!LogMetadata::is_valid_key(text.substr(0, colon)))
             throw DataError(path, line, "header key '" + text.substr(0, colon) + "' is not lower_snake_case");
+        if (!LogMetadata::is_valid_value(text.substr(colon + 2)))
+            throw DataError(path, line, "header value of '" + text.substr(0, colon) + "' holds a carriage return");
         header_.emplace_back(text.substr(0, colon), text.substr(colon + 2));
     }
     if (line == 0) throw DataError(path, 1, "not a driftlab capture (empty or no magic line)");

@@ -17,10 +17,11 @@ bool LogMetadata::is_valid_key(const std::string& key) {
                        [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; });
 }
 
+bool LogMetadata::is_valid_value(const std::string& value) { return value.find_first_of("\r\n") == std::string::npos; }
+
 void LogMetadata::set(const std::string& key, const std::string& value) {
     if (!is_valid_key(key)) throw UsageError("log metadata key '" + key + "' is not lower_snake_case or is reserved");
-    if (value.find_first_of("\r\n") != std::string::npos)
-        throw UsageError("log metadata value of '" + key + "' contains a line break");
+    if (!is_valid_value(value)) throw UsageError("log metadata value of '" + key + "' contains a line break");
     for (auto& [k, v] : entries_) {
         if (k == key) {
             v = value;

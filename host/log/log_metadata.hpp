@@ -35,6 +35,8 @@ public:
 
     /// True when `key` can be written: [a-z0-9_]+ starting with a letter, and not the reserved `gap`.
     static bool is_valid_key(const std::string& key);
+    /// A value is one line: no carriage return or line feed (a reader taking one from a file refuses it first).
+    static bool is_valid_value(const std::string& value);
 
 private:
     std::vector<std::pair<std::string, std::string>> entries_;

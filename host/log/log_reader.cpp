@@ -185,6 +185,8 @@ private:
             throw DataError(log_.source_name, number, "metadata key '" + kv->first + "' is not lower_snake_case");
         if (log_.metadata.has(kv->first))
             throw DataError(log_.source_name, number, "metadata key '" + kv->first + "' appears twice");
+        if (!LogMetadata::is_valid_value(kv->second))
+            throw DataError(log_.source_name, number, "metadata value of '" + kv->first + "' holds a carriage return");
         log_.metadata.set(kv->first, kv->second);
         log_.metadata.set_line(kv->first, number);
     }

@@ -218,6 +218,11 @@ TEST(LogIo, EachRejectionNamesTheLine) {
               std::string::npos);
     EXPECT_NE(rejection("# driftlab-log: 1\n# a: 1\n# a: 2\n").find("mem.csv:3: metadata key 'a' appears twice"),
               std::string::npos);
+    // A carriage return inside a value (found by the log_reader fuzzer) had escaped as a usage error, exit 2.
+    EXPECT_NE(rejection("# driftlab-log: 1\n# fit_order: 0\r0\n")
+                  .find("mem.csv:2: metadata value of 'fit_order' "
+                        "holds a carriage return"),
+              std::string::npos);
 }
 
 // A 10-bit converter's least-squares estimate reaches from -1023/3 to 4 x 1023/3 counts (the order-1 weights at the
