@@ -115,8 +115,9 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
         // model's converter), as a deterministic shape by the part eq. 1 cannot absorb.
         p.size_counts = p.scale = size_sd * output_noise_sd(p.model);
         p.occupancy.assign(std::size_t{1} << p.model.unit.adc.bits, 0.0);
-        for (double code : make_log(p.model, {}, {}, samples, seed, true).optional_columns.at("raw_gyro"))
-            p.occupancy[static_cast<std::size_t>(code)] += 1.0;
+        // Held by name: a range-for over a member of the returned log would read it after its end (before C++23).
+        const LogData clean = make_log(p.model, {}, {}, samples, seed, true);
+        for (double code : clean.optional_columns.at("raw_gyro")) p.occupancy[static_cast<std::size_t>(code)] += 1.0;
         quantiser = make_converter_truth(generator, p.scale, p.occupancy, seed, seed);
     } else if (generator != "none") {
         InputSignal in = input_signal(generator, size_sd, p.model, seed, samples);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "firmware/core/version.hpp"
@@ -24,6 +25,23 @@
 
 namespace driftlab::sim::avr {
 namespace {
+
+// What elf_read_firmware allocates (flash, EEPROM, fuses, lock bits, the symbol table), freed when this goes out of
+// scope: simavr has no call that frees it, and avr_load_firmware copies what the core keeps. LeakSanitizer found it.
+struct ElfFirmware {
+    elf_firmware_t f;
+    ElfFirmware() { std::memset(&f, 0, sizeof f); }
+    ~ElfFirmware() {
+        std::free(f.flash);
+        std::free(f.eeprom);
+        std::free(f.fuse);
+        std::free(f.lockbits);
+        for (std::uint32_t i = 0; i < f.symbolcount; ++i) std::free(f.symbol[i]);
+        std::free(f.symbol);
+    }
+    ElfFirmware(const ElfFirmware&) = delete;
+    ElfFirmware& operator=(const ElfFirmware&) = delete;
+};
 
 constexpr std::uint8_t kTimer1CompbVector = 12;  // ATmega328P datasheet, "Interrupts": TIMER1 COMPB
 constexpr std::uint16_t kMcusrAddress = 0x54;    // MCUSR in data space
@@ -78,8 +96,8 @@ AvrBoard::AvrBoard(const AvrBoardOptions& options, VoltageSource source)
     data_end_address_ = symbols.require("_end").address - kAvrDataOffset;
 
     avr_global_logger_set(stderr_logger);
-    elf_firmware_t firmware;
-    std::memset(&firmware, 0, sizeof firmware);
+    ElfFirmware elf;
+    elf_firmware_t& firmware = elf.f;
     if (elf_read_firmware(options.elf_path.c_str(), &firmware) != 0) {
         throw AvrError(options.elf_path + ": simavr cannot load this ELF");
     }
