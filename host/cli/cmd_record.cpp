@@ -95,11 +95,14 @@ void run_record(const RecordCliOptions& o) {
     if (const std::string skipped = io::skipped_samples(s); !skipped.empty()) std::printf("%s\n", skipped.c_str());
     if (const std::string untrusted = io::untrusted_frames(s); !untrusted.empty())
         std::printf("%s\n", untrusted.c_str());
-    if (s.foreign_config_acks > 0)
-        throw BoardReconfigured(r.port +
-                                ": the board acknowledged a CONFIG_SET this recording did not send (another "
-                                "transmitter reconfigured it): recording stopped, " +
-                                r.log_path + " holds every row up to it");
+    if (s.board_reconfigured())
+        throw BoardReconfigured(r.port + ": " +
+                                (s.foreign_config_acks > 0
+                                     ? "the board acknowledged a CONFIG_SET this recording did not send (another "
+                                       "transmitter reconfigured it)"
+                                     : "the board's outputs left the recording's window (it was reconfigured, its "
+                                       "ACK lost, or it restarted)") +
+                                ": recording stopped, " + r.log_path + " holds every row up to it");
 }
 
 }  // namespace

@@ -117,6 +117,7 @@ void LogAssembler::on_event(std::uint64_t t_us, const std::string& text) {
         start_log();
     } else if (text == "lost") {
         decoder_.reset();
+        window_filled_ = false;  // the reconnect's CONFIG_SET restarts the board's windows
         if (rows_) rows_->end_of_stream();
         write_held_rows(0);
         if (!holding_) {
@@ -266,17 +267,15 @@ void LogAssembler::take_frame(std::uint64_t t_us, const Frame& frame, std::uint6
         proto::AckPayload k{};
         const bool foreign = writer_ && !replaying_held_ && proto::parse(p, frame.payload_len, &k) &&
                              k.acked_type == static_cast<std::uint8_t>(proto::MsgType::config_set);
-        if (foreign && ++stats_.foreign_config_acks == 1) {
-            write_held_rows(0);
-            writer_->write_unexpected("ACK of a CONFIG_SET this recording did not send (frame seq " +
-                                      std::to_string(frame.seq) +
-                                      "): the board was reconfigured by someone else; no row follows");
-        }
+        if (foreign && !stats_.board_reconfigured())
+            end_rows("ACK of a CONFIG_SET this recording did not send (frame seq " + std::to_string(frame.seq) +
+                     "): the board was reconfigured by someone else; no row follows");
+        if (foreign) ++stats_.foreign_config_acks;
         break;
     }
     case proto::MsgType::sample: {
         proto::SamplePayload s{};
-        if (!proto::parse(p, frame.payload_len, &s) || stats_.foreign_config_acks > 0) break;
+        if (!proto::parse(p, frame.payload_len, &s) || stats_.board_reconfigured() || check_window(s, frame.seq)) break;
         last_epoch_tick_ = s.tick;
         const std::uint64_t tick = ticks_.unwrap(s.tick);
         newest_sample_ = Stamped{t_us, tick};
@@ -396,6 +395,22 @@ bool LogAssembler::note_if_unexpected(const Frame& frame, std::uint64_t seq) {
     writer_->write_unexpected(what + " (frame seq " + std::to_string(frame.seq) +
                               ") ignored: the rows are read as the handshake set them");
     return true;
+}
+
+bool LogAssembler::check_window(const proto::SamplePayload& s, std::uint16_t frame_seq) {
+    if (!writer_ || replaying_held_) return false;
+    if (s.n_window == config_->window) window_filled_ = true;
+    if (s.n_window == config_->window || (!window_filled_ && s.n_window < config_->window)) return false;
+    ++stats_.other_window_samples;
+    end_rows("SAMPLE of a window of " + std::to_string(s.n_window) + " conversions after the handshake's " +
+             std::to_string(config_->window) + " had filled (frame seq " + std::to_string(frame_seq) +
+             "): the board was reconfigured (its ACK lost) or restarted; no row follows");
+    return true;
+}
+
+void LogAssembler::end_rows(const std::string& why) {
+    write_held_rows(0);
+    writer_->write_unexpected(why);
 }
 
 void LogAssembler::sync() {

@@ -57,6 +57,11 @@ struct AssemblyStats {
     /// ACKs of a CONFIG_SET after the start, outside a reconnect: someone else reconfigured the board. No SAMPLE after
     /// the first is a row (its outputs follow a configuration the log does not state); `record` stops there.
     std::uint64_t foreign_config_acks = 0;
+    /// SAMPLEs whose window (n_window) is not the handshake's once it had filled, outside a reconnect: the board was
+    /// reconfigured (its ACK lost) or restarted. As for a foreign ACK, no SAMPLE after it is a row.
+    std::uint64_t other_window_samples = 0;
+    /// Whether the board left the handshake's configuration (a foreign ACK, or another window): the rows end there.
+    bool board_reconfigured() const { return foreign_config_acks + other_window_samples > 0; }
     std::optional<double> first_t_s;                  ///< [s] of the first row
     std::optional<double> last_t_s;                   ///< [s] of the newest row
     std::array<double, kChannelCount> last_counts{};  ///< [counts] newest row
@@ -109,6 +114,10 @@ private:
     /// believe: a VERSION or CONFIG that changes the handshake's loses to the SAMPLE of its seq (true: take this
     /// SAMPLE); otherwise a held row of that seq is dropped.
     bool check_conflict(std::uint64_t seq, const Frame& frame);
+    /// Whether SAMPLE `s` shows a window the handshake did not set, once it had filled: if so, ends the rows.
+    bool check_window(const proto::SamplePayload& s, std::uint16_t frame_seq);
+    /// Writes the held rows and a `# unexpected: WHY` line; no SAMPLE after it is a row (stats' board_reconfigured()).
+    void end_rows(const std::string& why);
     void start_log();
 
     std::string log_path_;
@@ -132,6 +141,8 @@ private:
         bool unexpected = false;
     };
     std::array<Seen, 256> fingerprints_{};
+    /// Whether a SAMPLE has shown the handshake's window full since the start or the last reconnect.
+    bool window_filled_ = false;
     bool replaying_held_ = false;  ///< frames held over a reconnect: its handshake may legitimately differ
     struct Stamped {               // host time [us] of something the board sent
         std::uint64_t t_us;

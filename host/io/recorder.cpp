@@ -39,7 +39,7 @@ std::string bring_up(BoardClient& client, const proto::ConfigPayload& config) {
 }
 
 bool done(const AssemblyStats& s, double duration_s) {
-    if (s.foreign_config_acks > 0) return true;  // reconfigured by someone else: nothing more is this recording's
+    if (s.board_reconfigured()) return true;  // reconfigured by someone else: nothing more is this recording's
     return duration_s > 0.0 && s.first_t_s && s.last_t_s && *s.last_t_s - *s.first_t_s >= duration_s;
 }
 

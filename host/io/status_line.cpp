@@ -67,6 +67,10 @@ std::string untrusted_frames(const AssemblyStats& stats) {
         out += (out.empty() ? "" : ", ") + std::string(
                                                "an ACK of a CONFIG_SET the recording did not send (the board was "
                                                "reconfigured by someone else: no row after it)");
+    else if (stats.other_window_samples > 0)
+        out += (out.empty() ? "" : ", ") + std::string(
+                                               "a SAMPLE of a window the recording did not set (the board was "
+                                               "reconfigured or restarted: no row after it)");
     return out.empty() ? out : "untrusted frames: " + out;
 }
 

@@ -147,3 +147,36 @@ TEST(LogAssembler, AConfigSetAcknowledgedThatTheRecordingDidNotSendEndsItsRows) 
     EXPECT_DOUBLE_EQ(log.t_s[1], 0.2);
     EXPECT_EQ(stats.foreign_config_acks, 2u);
 }
+
+// A CONFIG_SET from someone else whose ACK was lost: the board's windows restart, and a SAMPLE whose n_window is not
+// the handshake's once that had filled ends the rows, as the ACK would have. Before it fills, a window of more
+// conversions than the handshake set is as telling.
+TEST(LogAssembler, ASampleOfAnotherWindowEndsTheRowsWhenTheAckWasLost) {
+    AssemblyStats stats;
+    const LogData log = recorded(
+        "other_window.csv", 0,
+        [](Board& b) {
+            b.sample(1 * kTicksPerOutput, 500 * 256, 4);  // filling: a row
+            b.sample(2 * kTicksPerOutput);                // full (8)
+            b.sample(3 * kTicksPerOutput);
+            b.sample(4 * kTicksPerOutput, 500 * 256, 3);  // restarted windows: reconfigured
+            b.sample(5 * kTicksPerOutput);
+        },
+        stats);
+    ASSERT_EQ(log.size(), 3u);
+    EXPECT_DOUBLE_EQ(log.t_s[2], 0.3);
+    EXPECT_EQ(stats.other_window_samples, 1u);
+    EXPECT_TRUE(stats.board_reconfigured());
+    EXPECT_NE(untrusted_frames(stats).find("a SAMPLE of a window the recording did not set"), std::string::npos);
+
+    AssemblyStats wider;
+    const LogData early = recorded(
+        "wider_window.csv", 0,
+        [](Board& b) {
+            b.sample(1 * kTicksPerOutput, 500 * 256, 4);
+            b.sample(2 * kTicksPerOutput, 500 * 256, 9);  // more than the handshake's 8
+        },
+        wider);
+    ASSERT_EQ(early.size(), 1u);
+    EXPECT_EQ(wider.other_window_samples, 1u);
+}
