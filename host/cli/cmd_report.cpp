@@ -35,10 +35,10 @@ struct ReportCommandOptions {
 // --nav's JSON, read before the analysis so that a wrong file costs nothing.
 std::optional<nlohmann::json> read_nav(const std::string& path) {
     if (path.empty()) return std::nullopt;
-    std::ifstream in = open_input_file(path);
+    const std::string text = read_small_file(path, kMaxJsonFileBytes);
     nlohmann::json nav;
     try {
-        nav = nlohmann::json::parse(in);
+        nav = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         throw DataError(path, 0, "not JSON (byte " + std::to_string(e.byte) + "): give what nav --json prints");
     }

@@ -92,10 +92,10 @@ AxisModel axis_from_allan_json(const json& c, const std::string& file, const std
 }  // namespace
 
 UnitDrift read_unit_drift(const std::string& path) {
-    std::ifstream in = open_input_file(path);
+    const std::string text = read_small_file(path, kMaxJsonFileBytes);
     json j;
     try {
-        j = json::parse(in);
+        j = json::parse(text);
     } catch (const json::parse_error& e) {
         throw DataError(path, 0,
                         "not JSON (byte " + std::to_string(e.byte) + "): give what fit --json or allan --json print");

@@ -18,6 +18,20 @@ std::ifstream open_input_file(const std::string& path) {
     return in;
 }
 
+std::string read_small_file(const std::string& path, std::size_t max_bytes) {
+    std::ifstream in = open_input_file(path);
+    std::string text;
+    char chunk[1 << 16];
+    while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+        text.append(chunk, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > max_bytes)
+            throw DataError(path, 0,
+                            "longer than " + std::to_string(max_bytes >> 20) + " MiB, the most this file may hold");
+    }
+    if (in.bad()) throw DataError(path, 0, std::string("cannot read: ") + std::strerror(errno));
+    return text;
+}
+
 bool read_line(std::istream& in, std::string& text, const std::string& path, std::uint64_t line, bool* ended) {
     // Bulk reads into a buffer one byte longer than the limit: a line that fills it is too long, and nothing more of
     // it is read. Left uninitialised, so that only the pages a line reaches are ever touched.

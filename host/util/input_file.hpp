@@ -21,4 +21,12 @@ inline constexpr std::size_t kMaxLineBytes = std::size_t{16} << 20;
 /// kMaxLineBytes, having read no more than that of it. `ended` tells whether the line ended with '\n' (not cut).
 bool read_line(std::istream& in, std::string& text, const std::string& path, std::uint64_t line, bool* ended = nullptr);
 
+/// The largest JSON file a command reads whole (fit, allan and nav --json output, read by nav --drift and report --nav)
+/// [bytes]: theirs are kilobytes; a parsed JSON document takes several times its text.
+inline constexpr std::size_t kMaxJsonFileBytes = std::size_t{16} << 20;
+
+/// The whole of `path`, a file a command reads at once (a JSON document). Throws DataError(path, 0, ...) naming the
+/// limit when it holds more than `max_bytes`, having read no more than that of it.
+std::string read_small_file(const std::string& path, std::size_t max_bytes);
+
 }  // namespace driftlab::host

@@ -8,7 +8,6 @@
 #include <fstream>
 #include <limits>
 #include <set>
-#include <sstream>
 
 #include "driftlab/proto/status.hpp"
 #include "firmware/core/config.hpp"
@@ -430,9 +429,16 @@ SimModel load_model_file(const std::string& path, const FirmwareAdjust& adjust) 
     if (std::filesystem::is_directory(path, ec)) throw ModelFileError(path, "file", "is a folder, not a model file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ModelFileError(path, "file", "cannot open the model file (does it exist and is it readable?)");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_model(text.str(), path, adjust);
+    // A model file is a few kilobytes; a larger one is refused before it is held (its parse tree takes several times
+    // its text).
+    std::string text;
+    char chunk[1 << 16];
+    while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+        text.append(chunk, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxModelFileBytes)
+            throw ModelFileError(path, "file", "longer than 1 MiB, the most a model file may hold");
+    }
+    return parse_model(text, path, adjust);
 }
 
 std::optional<FirmwareRefusal> firmware_refusal(const proto::ConfigPayload& fw) {

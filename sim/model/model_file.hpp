@@ -29,6 +29,9 @@ struct FirmwareAdjust {
     bool check = true;
 };
 
+/// The largest model file load_model_file() reads [bytes]; the project's own are under 4 KB.
+inline constexpr std::size_t kMaxModelFileBytes = std::size_t{1} << 20;
+
 /// Reads `path`. Throws ModelFileError ("file:line: key: what") on any bad content, and when the file cannot
 /// be read.
 SimModel load_model_file(const std::string& path, const FirmwareAdjust& adjust = {});

@@ -105,6 +105,14 @@ TEST(NavCli, BadInputIsRefusedWithItsReason) {
     r = run_driftlab({"nav", dir.file("sg.csv"), "--drift", dir.file("bad.json")}, dir.path());
     EXPECT_EQ(r.exit_code, 3) << r.output;
     EXPECT_NE(r.output.find("bad.json"), std::string::npos) << r.output;
+    // A JSON file past kMaxJsonFileBytes is refused before it is held (docs/security.md), here a 17 MiB array.
+    {
+        std::ofstream big(dir.file("big.json"));
+        big << "[" << std::string(17 << 20, ' ') << "]";
+    }
+    r = run_driftlab({"nav", dir.file("sg.csv"), "--drift", dir.file("big.json")}, dir.path());
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("big.json: longer than 16 MiB"), std::string::npos) << r.output;
     // An unknown aid.
     r = run_driftlab({"nav", dir.file("sg.csv"), "--aid", "gps"}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << r.output;

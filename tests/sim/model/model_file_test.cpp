@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -62,6 +63,25 @@ TEST(ModelFile, AFolderIsNotAModelFile) {
     } catch (const ModelFileError& e) {
         EXPECT_NE(std::string(e.what()).find("is a folder, not a model file"), std::string::npos) << e.what();
     }
+}
+
+// Model files are untrusted input read whole (docs/security.md): one past kMaxModelFileBytes is refused before it is
+// parsed, even when it is valid TOML, and one just under the limit is read.
+TEST(ModelFile, AFileLongerThanTheLimitIsRefusedBeforeItIsParsed) {
+    const std::string path = (std::filesystem::temp_directory_path() / "driftlab_long_model.toml").string();
+    const std::string comment = "# " + std::string(98, 'x') + "\n";
+    std::string text;
+    while (text.size() + comment.size() <= kMaxModelFileBytes) text += comment;
+    std::ofstream(path, std::ios::binary) << text;
+    EXPECT_NO_THROW(load_model_file(path));
+    std::ofstream(path, std::ios::binary | std::ios::app) << comment;
+    try {
+        load_model_file(path);
+        ADD_FAILURE() << "a model file past the limit was read";
+    } catch (const ModelFileError& e) {
+        EXPECT_NE(std::string(e.what()).find("longer than 1 MiB"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(path);
 }
 
 TEST(ModelFile, KeysOverrideThePaperDefaults) {
