@@ -16,6 +16,8 @@ packages=(
   gnuplot-nox
   # tests: the HTML report opened in a headless browser (tests/e2e/report_browser_test.cpp)
   chromium
+  # CI's sanitizer and fuzzing jobs (scripts/sanitize.sh, scripts/fuzz.sh): clang with libFuzzer, readable stacks
+  clang libclang-rt-14-dev llvm
   # AVR cross build, flashing and emulation
   gcc-avr binutils-avr avr-libc avrdude gdb-avr simavr libsimavr-dev
 )

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Sets up a fresh machine, builds the native tree and the ATmega328P firmware, and runs every test.
+# Sets up a fresh machine, builds the native tree and the ATmega328P firmware, runs every test, then the sanitizer
+# and fuzzing jobs (README "Tests under the sanitizers and a fuzzer").
 # Usage: scripts/test.sh        (this is what .ci/run calls)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,3 +15,5 @@ cmake --build --preset native -j "$jobs"
 cmake --preset avr >/dev/null
 cmake --build --preset avr -j "$jobs"
 ctest --preset native -j "$jobs"
+scripts/sanitize.sh asan tsan
+scripts/fuzz.sh

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace driftlab::test_support {
@@ -27,5 +28,14 @@ public:
 private:
     std::filesystem::path path_;
 };
+
+/// Writes `text` to a file `name` of this process under the system temp dir (its pid in the name, as TempDir's) and
+/// returns its path: a file a reader under test is given.
+inline std::string write_temp_file(const std::string& name, const std::string& text) {
+    const auto path =
+        (std::filesystem::temp_directory_path() / ("driftlab_" + std::to_string(::getpid()) + "_" + name)).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
 
 }  // namespace driftlab::test_support

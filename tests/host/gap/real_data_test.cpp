@@ -19,7 +19,7 @@ namespace driftlab::host::gap {
 namespace {
 
 // The log, and the unit it reads as (one count is 8.75 mdps: the parameters come out in the gyro's own deg/s).
-bool load(LogData& log, sim::SimModel& unit) {
+bool load_gyro2_x(LogData& log, sim::SimModel& unit) {
     return testing::load_shared_recording("gyro2_x.txt", {"gyro=col1:0.00875"}, 0.01, 40, log, unit);
 }
 
@@ -28,7 +28,8 @@ GapOptions options() { return testing::real_data_options(2); }
 TEST(RealData, Gyro2xRunsAndReportsItsGap) {
     LogData log;
     sim::SimModel unit;
-    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
+    if (!load_gyro2_x(log, unit))
+        GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
     const GapResult r = diagnose(log, unit, options());
     std::printf("gyro2_x: verdict %s, gap fit %.2f heldout %.2f -> fit %.2f heldout %.2f, %zu located\n",
                 r.verdict.c_str(), r.gap_before_fit, r.gap_before_heldout, r.gap_after_fit, r.gap_after_heldout,
@@ -76,7 +77,8 @@ TEST(RealData, Gyro2xRunsAndReportsItsGap) {
 TEST(RealData, TheGaussMarkovReadingDoesNotRestOnTheExcursion) {
     LogData whole;
     sim::SimModel unit;
-    if (!load(whole, unit)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
+    if (!load_gyro2_x(whole, unit))
+        GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
     const GapResult all = diagnose(whole, unit, options());
     const LogData log = rows_outside(whole, {{975.0, 1150.0, "--exclude"}});
     const GapResult r = diagnose(log, unit, options());
@@ -105,7 +107,8 @@ TEST(RealData, TheGaussMarkovReadingDoesNotRestOnTheExcursion) {
 TEST(RealData, InjectedSinusoidIsRecoveredAtItsSize) {
     LogData log;
     sim::SimModel unit;
-    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
+    if (!load_gyro2_x(log, unit))
+        GTEST_SKIP() << "shared/data/real/gyro2_x.txt not found under " << DRIFTLAB_SHARED_DIR;
     const double amplitude = 8.0, period_s = 120.0, phase = 0.5;
     for (std::size_t k = 0; k < log.size(); ++k)
         log.counts[0][k] += amplitude * std::sin(2.0 * std::numbers::pi * log.t_s[k] / period_s + phase);

@@ -17,7 +17,7 @@
 namespace driftlab::host::gap {
 namespace {
 
-bool load(LogData& log, sim::SimModel& unit) {
+bool load_mpu6050(LogData& log, sim::SimModel& unit) {
     return testing::load_shared_recording("mpu6050_unmoved-with-x-pointing-forward-10min.csv",
                                           {"gyro=gx_dps:0.0076335877862595417", "accel_x=ax_g:0.000244140625",
                                            "accel_y=ay_g:0.000244140625", "accel_z=az_g:0.000244140625"},
@@ -29,7 +29,8 @@ GapOptions test_options() { return testing::real_data_options(1); }
 TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
     LogData log;
     sim::SimModel unit;
-    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
+    if (!load_mpu6050(log, unit))
+        GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
     const GapOptions o = test_options();
     const GapResult r = diagnose(log, unit, o);
     std::printf(
@@ -62,7 +63,8 @@ TEST(RealData, Mpu6050RunsOnAllFourChannelsAndSeesItsIrregularTiming) {
 TEST(RealData, Mpu6050sDiffuseGapIsSearchedOnRequest) {
     LogData log;
     sim::SimModel unit;
-    if (!load(log, unit)) GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
+    if (!load_mpu6050(log, unit))
+        GTEST_SKIP() << "shared/data/real/mpu6050_*.csv not found under " << DRIFTLAB_SHARED_DIR;
     GapOptions o = test_options();
     o.search_diffuse = true;
     const GapResult r = diagnose(log, unit, o);

@@ -9,18 +9,13 @@
 #include "host/log/numeric_table.hpp"
 #include "host/util/error.hpp"
 #include "host/util/input_file.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace driftlab::host {
 namespace {
 
-std::string write_temp(const std::string& name, const std::string& text) {
-    const auto path = (std::filesystem::temp_directory_path() / ("driftlab_table_test_" + name)).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
 std::string rejection(const std::string& name, const std::string& text) {
-    const std::string path = write_temp(name, text);
+    const std::string path = test_support::write_temp_file(name, text);
     try {
         read_numeric_table(path);
     } catch (const DataError& e) {
@@ -31,7 +26,8 @@ std::string rejection(const std::string& name, const std::string& text) {
 }
 
 TEST(NumericTable, ColumnsSplitByBlanksOrCommasWithNamesAndComments) {
-    const auto t = read_numeric_table(write_temp("a.txt", "# comment\nt, x  y\n0, 1 2\n1,3,4\n\n2\t5 6\n"));
+    const auto t =
+        read_numeric_table(test_support::write_temp_file("a.txt", "# comment\nt, x  y\n0, 1 2\n1,3,4\n\n2\t5 6\n"));
     ASSERT_EQ(t.columns.size(), 3u);
     EXPECT_EQ(t.names, (std::vector<std::string>{"t", "x", "y"}));
     EXPECT_EQ(t.columns[2], (std::vector<double>{2, 4, 6}));
@@ -45,12 +41,12 @@ TEST(NumericTable, ColumnsSplitByBlanksOrCommasWithNamesAndComments) {
 }
 
 TEST(NumericTable, OneLineFileIsOneSeries) {
-    const auto t = read_numeric_table(write_temp("b.txt", "1.5 2.5 3.5 4.5"));
+    const auto t = read_numeric_table(test_support::write_temp_file("b.txt", "1.5 2.5 3.5 4.5"));
     ASSERT_EQ(t.columns.size(), 1u);
     EXPECT_EQ(t.columns[0], (std::vector<double>{1.5, 2.5, 3.5, 4.5}));
     EXPECT_EQ(t.names[0], "col1");
     // With a name: the one line is still one named series.
-    const auto named = read_numeric_table(write_temp("o.txt", "gx\n1 2 3 4 5 6\n"));
+    const auto named = read_numeric_table(test_support::write_temp_file("o.txt", "gx\n1 2 3 4 5 6\n"));
     ASSERT_EQ(named.columns.size(), 1u);
     EXPECT_EQ(named.names[0], "gx");
     EXPECT_EQ(named.rows(), 6u);
@@ -59,7 +55,7 @@ TEST(NumericTable, OneLineFileIsOneSeries) {
 
 // A byte-order mark before the name line is not part of the first name: the time column is still found by name.
 TEST(NumericTable, AByteOrderMarkIsNotPartOfTheFirstName) {
-    const auto t = read_numeric_table(write_temp("bom.csv", "\xEF\xBB\xBFt_s,gx\n0,1\n0.01,2\n"));
+    const auto t = read_numeric_table(test_support::write_temp_file("bom.csv", "\xEF\xBB\xBFt_s,gx\n0,1\n0.01,2\n"));
     EXPECT_EQ(t.names, (std::vector<std::string>{"t_s", "gx"}));
     EXPECT_EQ(t.columns[0], (std::vector<double>{0.0, 0.01}));
 }

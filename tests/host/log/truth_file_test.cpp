@@ -7,6 +7,7 @@
 
 #include "host/log/truth_file.hpp"
 #include "host/util/error.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace driftlab::host {
 namespace {
@@ -14,12 +15,6 @@ namespace {
 const std::string kHeader =
     "# driftlab ground truth v1\n# trajectory: figure8\n# rest_before_s: 5\n"
     "t_s,x_m,y_m,heading_deg,speed_mps,yaw_rate_dps,accel_x_g,accel_y_g,accel_z_g\n";
-
-std::string write_temp(const std::string& name, const std::string& text) {
-    const auto path = (std::filesystem::temp_directory_path() / ("driftlab_truth_test_" + name)).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
 
 std::string rows(int n) {
     std::string out;
@@ -44,7 +39,7 @@ std::string error_of(const TruthFile& truth, const LogData& log, bool cut) {
 }
 
 TEST(TruthFile, ReadsTheColumnsAndTheTrajectoryLines) {
-    const TruthFile t = read_truth_file(write_temp("ok", kHeader + rows(3)));
+    const TruthFile t = read_truth_file(test_support::write_temp_file("ok", kHeader + rows(3)));
     EXPECT_EQ(t.trajectory, "figure8");
     EXPECT_EQ(t.rest_before_s, 5.0);
     ASSERT_EQ(t.size(), 3u);
@@ -54,7 +49,7 @@ TEST(TruthFile, ReadsTheColumnsAndTheTrajectoryLines) {
 }
 
 TEST(TruthFile, AMissingColumnOrTimesThatDoNotIncreaseNameTheLine) {
-    const std::string no_yaw = write_temp("noyaw", "t_s,x_m\n0.1,0\n0.2,0\n");
+    const std::string no_yaw = test_support::write_temp_file("noyaw", "t_s,x_m\n0.1,0\n0.2,0\n");
     EXPECT_THROW(
         {
             try {
@@ -65,7 +60,8 @@ TEST(TruthFile, AMissingColumnOrTimesThatDoNotIncreaseNameTheLine) {
             }
         },
         DataError);
-    const std::string back = write_temp("back", kHeader + "0.2,0,0,0,0,0,0,0,1\n0.1,0,0,0,0,0,0,0,1\n");
+    const std::string back =
+        test_support::write_temp_file("back", kHeader + "0.2,0,0,0,0,0,0,0,1\n0.1,0,0,0,0,0,0,0,1\n");
     try {
         read_truth_file(back);
         FAIL() << "times going back are accepted";
@@ -75,7 +71,7 @@ TEST(TruthFile, AMissingColumnOrTimesThatDoNotIncreaseNameTheLine) {
 }
 
 TEST(TruthFile, ATruthThatPartsFromItsLogNamesWhere) {
-    const TruthFile t = read_truth_file(write_temp("match", kHeader + rows(5)));
+    const TruthFile t = read_truth_file(test_support::write_temp_file("match", kHeader + rows(5)));
     // The truth goes on after the log: its line 8 (row 4) has no log row.
     EXPECT_NE(error_of(t, log_of(3), false).find(":8: the truth goes on after the last row"), std::string::npos);
     // A log row the truth lacks.

@@ -14,7 +14,8 @@
 namespace driftlab::host::stats {
 namespace {
 
-std::vector<double> white(std::size_t n, double sigma, unsigned seed) {
+// White noise of deviation `sigma` around mid-scale (512 counts).
+std::vector<double> white_codes(std::size_t n, double sigma, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> g(0.0, sigma);
     std::vector<double> x(n);
@@ -30,7 +31,7 @@ std::vector<double> times(std::size_t n) {
 
 TEST(LoneValues, ACorruptRowIsFoundAtItsPlaceWhateverItsSize) {
     for (double spike : {1e3, 1e30, 1e300, std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()}) {
-        std::vector<double> x = white(4000, 0.01, 1);
+        std::vector<double> x = white_codes(4000, 0.01, 1);
         x[1500] = spike;
         const LoneValues found = lone_values(x);
         ASSERT_EQ(found.indices, std::vector<std::size_t>{1500}) << spike;
@@ -45,21 +46,22 @@ TEST(LoneValues, ACorruptRowIsFoundAtItsPlaceWhateverItsSize) {
 // Differences of white noise are normal with sigma sqrt(2) s; both neighbours of a sample 10 robust sigmas away have
 // probability below 1e-20 per sample, so a million samples have none.
 TEST(LoneValues, GaussianNoiseHasNone) {
-    for (unsigned seed : {1u, 2u, 3u}) EXPECT_TRUE(lone_values(white(1'000'000, 3.0, seed)).indices.empty()) << seed;
+    for (unsigned seed : {1u, 2u, 3u})
+        EXPECT_TRUE(lone_values(white_codes(1'000'000, 3.0, seed)).indices.empty()) << seed;
 }
 
 TEST(LoneValues, AStepIsNotALoneValue) {
-    std::vector<double> x = white(2000, 0.01, 4);
+    std::vector<double> x = white_codes(2000, 0.01, 4);
     for (std::size_t k = 1000; k < x.size(); ++k) x[k] += 1e6;
     EXPECT_TRUE(lone_values(x).indices.empty());
     // Two rows out together are a short plateau, not a single corrupt value.
-    std::vector<double> y = white(2000, 0.01, 5);
+    std::vector<double> y = white_codes(2000, 0.01, 5);
     y[700] = y[701] = 1e6;
     EXPECT_TRUE(lone_values(y).indices.empty());
 }
 
 TEST(LoneValues, ASpikeBelowTheFactorIsNotLone) {
-    std::vector<double> x = white(20000, 1.0, 6);
+    std::vector<double> x = white_codes(20000, 1.0, 6);
     // 7 from its neighbours' mean is about 5 standard deviations of the differences (sqrt(2)) from each neighbour:
     // under kLoneFactor. 30 is about 21.
     x[5000] = x[4999] / 2.0 + x[5001] / 2.0 + 7.0;
@@ -125,13 +127,13 @@ TEST(LoneValues, AKnownCodeBoundsTheStepOfAStuckChannel) {
     EXPECT_EQ(lone_values(flip, 1.0).indices, std::vector<std::size_t>{700});
 
     // Noise of 0.01 code: the robust scale, not the code, measures a row; a 1-code row is 70 of it from both sides.
-    std::vector<double> quiet = white(2000, 0.01, 9);
+    std::vector<double> quiet = white_codes(2000, 0.01, 9);
     quiet[900] += 1.0;
     EXPECT_EQ(lone_values(quiet, 1.0).indices, std::vector<std::size_t>{900});
 }
 
 TEST(LoneValues, TheEndsAreNeverLone) {
-    std::vector<double> x = white(500, 0.01, 7);
+    std::vector<double> x = white_codes(500, 0.01, 7);
     x.front() = 1e9;
     x.back() = -1e9;
     EXPECT_TRUE(lone_values(x).indices.empty());
@@ -143,7 +145,7 @@ TEST(LoneValues, TheEndsAreNeverLone) {
 // differences of about 30 sigma against n of sqrt(2) sigma each, a share of about 900 / (900 + n).
 TEST(LoneValues, TheWarningNeedsItsShareOfTheVariance) {
     for (std::size_t n : {1000u, 100'000u}) {
-        std::vector<double> x = white(n, 1.0, 8);
+        std::vector<double> x = white_codes(n, 1.0, 8);
         x[n / 2] = x[n / 2 - 1] / 2.0 + x[n / 2 + 1] / 2.0 + 30.0;
         const LoneValues found = lone_values(x);
         ASSERT_EQ(found.indices.size(), 1u) << n;
@@ -152,11 +154,11 @@ TEST(LoneValues, TheWarningNeedsItsShareOfTheVariance) {
         EXPECT_EQ(found.variance_share >= kLoneShare, n == 1000u) << n;
         EXPECT_EQ(lone_values_warning(times(n), x).has_value(), n == 1000u) << n;
     }
-    EXPECT_TRUE(lone_values_warning(times(1000), white(1000, 1.0, 9)) == std::nullopt);
+    EXPECT_TRUE(lone_values_warning(times(1000), white_codes(1000, 1.0, 9)) == std::nullopt);
 }
 
 TEST(LoneValues, TheWarningNamesEachTimeAndValueUpToFive) {
-    std::vector<double> x = white(400, 0.01, 10);
+    std::vector<double> x = white_codes(400, 0.01, 10);
     x[100] = 32767.0;
     const auto one = lone_values_warning(times(400), x);
     ASSERT_TRUE(one);
@@ -180,7 +182,7 @@ TEST(LoneValues, TheWarningNamesEachTimeAndValueUpToFive) {
 
 // Rows 10 ms apart at Unix time: the time and the window have the digits that tell the row from its neighbours.
 TEST(LoneValues, AnEpochTimeNamesOneRow) {
-    std::vector<double> t(300), x = white(300, 0.01, 12);
+    std::vector<double> t(300), x = white_codes(300, 0.01, 12);
     for (std::size_t k = 0; k < t.size(); ++k) t[k] = 1.7e9 + 0.01 * static_cast<double>(k);
     x[123] = 99.0;
     const auto warning = lone_values_warning(t, x);
