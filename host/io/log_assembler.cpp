@@ -268,8 +268,8 @@ void LogAssembler::take_frame(std::uint64_t t_us, const Frame& frame, std::uint6
         const bool foreign = writer_ && !replaying_held_ && proto::parse(p, frame.payload_len, &k) &&
                              k.acked_type == static_cast<std::uint8_t>(proto::MsgType::config_set);
         if (foreign && !stats_.board_reconfigured())
-            end_rows("ACK of a CONFIG_SET this recording did not send (frame seq " + std::to_string(frame.seq) +
-                     "): the board was reconfigured by someone else; no row follows");
+            write_note("ACK of a CONFIG_SET this recording did not send (frame seq " + std::to_string(frame.seq) +
+                       "): the board was reconfigured by someone else; no row follows");
         if (foreign) ++stats_.foreign_config_acks;
         break;
     }
@@ -352,14 +352,15 @@ void LogAssembler::write_held_rows(std::size_t keep) {
 
 bool LogAssembler::check_conflict(std::uint64_t seq, const Frame& frame) {
     Seen& seen = fingerprints_[seq % fingerprints_.size()];
-    if (seen.seq != seq || seen.print == fingerprint(frame)) return false;  // a repeat, or too old to tell
+    const std::uint64_t print = fingerprint(frame);
+    if (seen.seq != seq || seen.print == print) return false;  // a repeat, or too old to tell
     ++stats_.conflicting_frames;
     // A VERSION or CONFIG that differs from the handshake cannot be the board's (its own changes only follow a
     // CONFIG_SET, whose ACK ends the rows): it is the forged one of the two, noted and ignored, and a SAMPLE of that
     // seq, before or after it, stays a row.
     if (note_if_unexpected(frame, seq)) return false;
     if (seen.unexpected && frame.type == proto::MsgType::sample) {
-        seen = {seq, fingerprint(frame), false};
+        seen = {seq, print, false};
         return true;
     }
     // Else neither frame can be trusted: a row of that SAMPLE (or of the SAMPLE before that RAW) stays out while held.
@@ -391,9 +392,8 @@ bool LogAssembler::note_if_unexpected(const Frame& frame, std::uint64_t seq) {
     ++(frame.type == proto::MsgType::version ? stats_.unexpected_versions : stats_.unexpected_configs);
     Seen& seen = fingerprints_[seq % fingerprints_.size()];
     if (seen.seq == seq) seen.unexpected = true;
-    write_held_rows(0);
-    writer_->write_unexpected(what + " (frame seq " + std::to_string(frame.seq) +
-                              ") ignored: the rows are read as the handshake set them");
+    write_note(what + " (frame seq " + std::to_string(frame.seq) +
+               ") ignored: the rows are read as the handshake set them");
     return true;
 }
 
@@ -402,13 +402,13 @@ bool LogAssembler::check_window(const proto::SamplePayload& s, std::uint16_t fra
     if (s.n_window == config_->window) window_filled_ = true;
     if (s.n_window == config_->window || (!window_filled_ && s.n_window < config_->window)) return false;
     ++stats_.other_window_samples;
-    end_rows("SAMPLE of a window of " + std::to_string(s.n_window) + " conversions after the handshake's " +
-             std::to_string(config_->window) + " had filled (frame seq " + std::to_string(frame_seq) +
-             "): the board was reconfigured (its ACK lost) or restarted; no row follows");
+    write_note("SAMPLE of a window of " + std::to_string(s.n_window) + " conversions after the handshake's " +
+               std::to_string(config_->window) + " had filled (frame seq " + std::to_string(frame_seq) +
+               "): the board was reconfigured (its ACK lost) or restarted; no row follows");
     return true;
 }
 
-void LogAssembler::end_rows(const std::string& why) {
+void LogAssembler::write_note(const std::string& why) {
     write_held_rows(0);
     writer_->write_unexpected(why);
 }

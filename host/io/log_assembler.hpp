@@ -116,8 +116,9 @@ private:
     bool check_conflict(std::uint64_t seq, const Frame& frame);
     /// Whether SAMPLE `s` shows a window the handshake did not set, once it had filled: if so, ends the rows.
     bool check_window(const proto::SamplePayload& s, std::uint16_t frame_seq);
-    /// Writes the held rows and a `# unexpected: WHY` line; no SAMPLE after it is a row (stats' board_reconfigured()).
-    void end_rows(const std::string& why);
+    /// Writes the held rows, then a `# unexpected: WHY` line after them (what follows is the caller's: ignored frames,
+    /// or no more rows once stats' board_reconfigured()).
+    void write_note(const std::string& why);
     void start_log();
 
     std::string log_path_;
