@@ -91,13 +91,18 @@ Decoder::Verdict Decoder::check_header_byte(uint8_t i) {
   case kOffsetSync0: return byte == kSync0 ? Verdict::pass : Verdict::reject;
   case kOffsetSync1: return byte == kSync1 ? Verdict::pass : Verdict::reject;
   case kOffsetVersion:
-    if (byte != kProtocolVersion) {
+    if (byte != kProtocolVersion && byte != kLegacyProtocolVersion) {
       saturating_add(&counters_.bad_version, 1);
       return Verdict::reject;
     }
     crc_ = crc16_ibm3740_update(kCrc16Ibm3740Init, byte);
     return Verdict::pass;
   case kOffsetType: {
+    // Of version 1, only HELLO is taken (its layout and seed are v2's): a v2 board answers it by number.
+    if (buf_[kOffsetVersion] == kLegacyProtocolVersion && byte != proto::type_id(MsgType::hello)) {
+      saturating_add(&counters_.bad_version, 1);
+      return Verdict::reject;
+    }
     MsgSpec spec{};
     if (!find_spec(byte, &spec)) {
       saturating_add(&counters_.unknown_type, 1);

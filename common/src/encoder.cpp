@@ -11,10 +11,11 @@ namespace proto {
 namespace {
 
 // Writes header and CRC around a payload already at out + kOffsetPayload; the caller checked type and sizes.
-size_t finish_frame(uint8_t type, uint8_t crc_seed, uint16_t seq, uint8_t payload_len, uint8_t* out) {
+size_t finish_frame(uint8_t type, uint8_t crc_seed, uint16_t seq, uint8_t payload_len, uint8_t* out,
+                    uint8_t version = kProtocolVersion) {
   out[kOffsetSync0] = kSync0;
   out[kOffsetSync1] = kSync1;
-  out[kOffsetVersion] = kProtocolVersion;
+  out[kOffsetVersion] = version;
   out[kOffsetType] = type;
   put_u16_le(out + kOffsetSeq, seq);
   out[kOffsetLen] = payload_len;
@@ -110,6 +111,35 @@ size_t encode_status_get(uint16_t seq, uint8_t* out, size_t out_size) {
 
 size_t encode_status(const StatusPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
   return encode_typed(MsgType::status, p, seq, out, out_size);
+}
+
+size_t encode_cal_set(const CalPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::cal_set, p, seq, out, out_size);
+}
+
+size_t encode_cal_get(const CalGetPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::cal_get, p, seq, out, out_size);
+}
+
+size_t encode_cal(const CalPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  return encode_typed(MsgType::cal, p, seq, out, out_size);
+}
+
+size_t encode_legacy_hello(uint16_t seq, uint8_t* out, size_t out_size) {
+  if (out_size < frame_size(0)) {
+    return 0;
+  }
+  return finish_frame(type_id(MsgType::hello), kLegacyHelloSeed, seq, 0, out, kLegacyProtocolVersion);
+}
+
+size_t encode_legacy_version(const VersionPayload& p, uint16_t seq, uint8_t* out, size_t out_size) {
+  // Version 2 appended its fields, so v1's payload is the first kLegacyVersionPayloadSize bytes of v2's.
+  if (out_size < frame_size(kVersionPayloadSize) ||
+      serialize(p, out + kOffsetPayload, out_size - kOffsetPayload) != kVersionPayloadSize) {
+    return 0;
+  }
+  return finish_frame(type_id(MsgType::version), kLegacyVersionSeed, seq, kLegacyVersionPayloadSize, out,
+                      kLegacyProtocolVersion);
 }
 
 }  // namespace proto

@@ -1,4 +1,4 @@
-// Payload layouts of protocol v1 (messages.hpp; docs/protocol.md §3): fields in declaration order, little-endian,
+// Payload layouts of protocol v2 (messages.hpp; docs/protocol.md §3): fields in declaration order, little-endian,
 // no padding. Each pair below is the single place where that layout is written down in code.
 #include "driftlab/proto/messages.hpp"
 
@@ -25,6 +25,8 @@ size_t serialize(const VersionPayload& p, uint8_t* out, size_t out_size) {
   }
   out[17] = p.reset_cause;
   put_u16_le(out + 18, p.assert_line);
+  out[20] = p.cal_state;
+  put_u16_le(out + 21, p.cal_id);
   return kVersionPayloadSize;
 }
 
@@ -46,6 +48,8 @@ bool parse(const uint8_t* in, size_t in_size, VersionPayload* out) {
   }
   out->reset_cause = in[17];
   out->assert_line = get_u16_le(in + 18);
+  out->cal_state = in[20];
+  out->cal_id = get_u16_le(in + 21);
   return true;
 }
 
@@ -86,6 +90,8 @@ size_t serialize(const SamplePayload& p, uint8_t* out, size_t out_size) {
   out[20] = p.sat_flags;
   out[21] = p.n_window;
   put_u16_le(out + 22, p.dropped);
+  out[24] = p.cal_state;
+  put_u16_le(out + 25, p.cal_id);
   return kSamplePayloadSize;
 }
 
@@ -100,6 +106,8 @@ bool parse(const uint8_t* in, size_t in_size, SamplePayload* out) {
   out->sat_flags = in[20];
   out->n_window = in[21];
   out->dropped = get_u16_le(in + 22);
+  out->cal_state = in[24];
+  out->cal_id = get_u16_le(in + 25);
   return true;
 }
 
@@ -178,6 +186,8 @@ size_t serialize(const StatusPayload& p, uint8_t* out, size_t out_size) {
   put_u16_le(out + 14, p.rx_overflow);
   put_u16_le(out + 16, p.tx_overflow);
   put_u16_le(out + 18, p.dropped);
+  out[20] = p.cal_state;
+  put_u16_le(out + 21, p.cal_id);
   return kStatusPayloadSize;
 }
 
@@ -194,12 +204,66 @@ bool parse(const uint8_t* in, size_t in_size, StatusPayload* out) {
   out->rx_overflow = get_u16_le(in + 14);
   out->tx_overflow = get_u16_le(in + 16);
   out->dropped = get_u16_le(in + 18);
+  out->cal_state = in[20];
+  out->cal_id = get_u16_le(in + 21);
+  return true;
+}
+
+size_t serialize(const CalPayload& p, uint8_t* out, size_t out_size) {
+  if (out_size < kCalPayloadSize) {
+    return 0;
+  }
+  put_u16_le(out, p.cal_id);
+  out[2] = p.channel;
+  out[3] = p.flags;
+  put_i32_le(out + 4, p.c1_q8);
+  put_i32_le(out + 8, p.c2_q8);
+  put_u32_le(out + 12, p.t_ms);
+  return kCalPayloadSize;
+}
+
+bool parse(const uint8_t* in, size_t in_size, CalPayload* out) {
+  if (in_size != kCalPayloadSize) {
+    return false;
+  }
+  out->cal_id = get_u16_le(in);
+  out->channel = in[2];
+  out->flags = in[3];
+  out->c1_q8 = get_i32_le(in + 4);
+  out->c2_q8 = get_i32_le(in + 8);
+  out->t_ms = get_u32_le(in + 12);
+  return true;
+}
+
+size_t serialize(const CalGetPayload& p, uint8_t* out, size_t out_size) {
+  if (out_size < kCalGetPayloadSize) {
+    return 0;
+  }
+  out[0] = p.channel;
+  return kCalGetPayloadSize;
+}
+
+bool parse(const uint8_t* in, size_t in_size, CalGetPayload* out) {
+  if (in_size != kCalGetPayloadSize) {
+    return false;
+  }
+  out->channel = in[0];
   return true;
 }
 
 const char* config_field_name(uint8_t field) {
   static const char* const kNames[] = {
       "output_period_ms", "conversions_per_output", "window", "fit_order", "mode", "raw"};
+  return field < sizeof kNames / sizeof kNames[0] ? kNames[field] : nullptr;
+}
+
+const char* cal_state_name(uint8_t state) {
+  static const char* const kNames[] = {"none", "active", "settled", "damaged", "mixed"};
+  return state < sizeof kNames / sizeof kNames[0] ? kNames[state] : nullptr;
+}
+
+const char* cal_field_name(uint8_t field) {
+  static const char* const kNames[] = {"cal_id", "channel", "flags", "c1_q8", "c2_q8", "t_ms"};
   return field < sizeof kNames / sizeof kNames[0] ? kNames[field] : nullptr;
 }
 

@@ -13,6 +13,7 @@ const char* status_name(Status status) {
   case Status::bad_version: return "bad_version";
   case Status::not_allowed: return "not_allowed";
   case Status::busy: return "busy";
+  case Status::not_stored: return "not_stored";
   }
   return nullptr;
 }

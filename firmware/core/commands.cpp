@@ -2,6 +2,7 @@
 #include "firmware/core/commands.hpp"
 
 #include "driftlab/proto/msg_table.hpp"
+#include "firmware/core/cal_store.hpp"
 
 namespace driftlab {
 namespace fw {
@@ -36,6 +37,34 @@ CommandOutcome decide_config_set(uint8_t type_id, uint16_t seq, const uint8_t* p
   return out;
 }
 
+CommandOutcome decide_cal_set(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len) {
+  CommandOutcome out = {};
+  if (!proto::parse(payload, payload_len, &out.cal)) {
+    return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
+  }
+  const CalCheck check = validate(out.cal);
+  if (check.status != proto::Status::ok) {
+    return nak(type_id, seq, check.status, check.field);
+  }
+  out.reply = Reply::cal_ack;
+  out.ack = proto::AckPayload{type_id, seq};
+  return out;
+}
+
+CommandOutcome decide_cal_get(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len) {
+  proto::CalGetPayload wire = {};
+  if (!proto::parse(payload, payload_len, &wire)) {
+    return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
+  }
+  if (wire.channel >= kChannelCount) {
+    return nak(type_id, seq, proto::Status::out_of_range, 0);
+  }
+  CommandOutcome out = reply(Reply::cal);
+  out.cal.channel = wire.channel;
+  out.nak = proto::NakPayload{type_id, seq, static_cast<uint8_t>(proto::Status::not_stored), proto::kNakFieldNone};
+  return out;
+}
+
 }  // namespace
 
 CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len,
@@ -61,6 +90,8 @@ CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uin
     }
     return reply(Reply::sample);
   case proto::MsgType::status_get: return reply(Reply::status);
+  case proto::MsgType::cal_set: return decide_cal_set(type_id, seq, payload, payload_len);
+  case proto::MsgType::cal_get: return decide_cal_get(type_id, seq, payload, payload_len);
   default:
     // Every host-to-firmware type is listed above; a new one in the table must be added here.
     return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);

@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "driftlab/channels.hpp"
+#include "driftlab/proto/messages.hpp"
 
 namespace driftlab {
 namespace fw {
@@ -25,17 +26,11 @@ namespace fw {
 constexpr uint8_t kCompStepShift = 16;
 constexpr uint32_t kCompStepTicks = static_cast<uint32_t>(1) << kCompStepShift;
 
-/// Ranges a calibration must respect (docs/protocol.md §3.9): T from 60 s (the interpolation between grid points
-/// keeps its error below 1/100 LSB above it) to 9.4 h (125 T_ms fits 32 bits), |C1| and |C2| within the converter.
-constexpr uint32_t kCalTMinMs = 60000;
-constexpr uint32_t kCalTMaxMs = 34000000;
-constexpr int32_t kCalCountsMaxQ8 = 1023L * 256;
-
 /// One channel's model as the board applies it.
 struct ChannelModel {
   int32_t c1_q8;  ///< C1 [counts Q8]
   int32_t c2_q8;  ///< C2 [counts Q8]
-  uint32_t t_ms;  ///< T [ms], kCalTMinMs..kCalTMaxMs
+  uint32_t t_ms;  ///< T [ms], proto::kCalTMinMs..kCalTMaxMs
   bool zero;      ///< refer the settled level to mid-scale (512 counts) as well
 };
 

@@ -4,6 +4,7 @@
 #include "driftlab/proto/encoder.hpp"
 #include "driftlab/proto/messages.hpp"
 #include "driftlab/proto/wire.hpp"
+#include "firmware/core/cal_store.hpp"
 #include "firmware/core/commands.hpp"
 #include "firmware/core/hal.hpp"
 #include "firmware/core/version.hpp"
@@ -36,12 +37,21 @@ Firmware::Firmware()
       dropped_(0),
       tx_overflow_bytes_(0),
       tx_seq_(0),
+      comp_(),
+      cal_state_(static_cast<uint8_t>(proto::CalState::none)),
+      cal_id_(0),
       decoder_() {
   reset_windows();
 }
 
 void Firmware::start() {
   arm(hal_ticks() + conversion_period_ticks(config_.output_period_ms, config_.conversions_per_output));
+  // After arming: reading the calibration takes the AVR a millisecond or two, which must not move the grid. A reset
+  // that kept the sensor powered leaves t since its cold start unknown (drift_comp.hpp).
+  const uint8_t cause = hal_reset_info().cause;
+  const bool warm = (cause & (kResetPowerOn | kResetBrownOut)) == 0 && (cause & (kResetExternal | kResetWatchdog)) != 0;
+  comp_.reset(warm);
+  load_calibration();
 }
 
 void Firmware::arm(uint32_t first_trigger_tick) {
@@ -59,6 +69,18 @@ void Firmware::reset_windows() {
   }
 }
 
+void Firmware::load_calibration() {
+  const StoredCal stored = read_calibration();
+  cal_id_ = stored.cal_id;
+  if (stored.state != proto::CalState::active) {
+    comp_.unload();
+    cal_state_ = static_cast<uint8_t>(stored.state);
+    return;
+  }
+  comp_.load(stored.models);
+  cal_state_ = static_cast<uint8_t>(comp_.settled() ? proto::CalState::settled : proto::CalState::active);
+}
+
 void Firmware::apply(const Config& next) {
   const bool retime = timing_differs(config_, next);
   const bool rewindow = retime || config_.window != next.window;
@@ -73,6 +95,7 @@ void Firmware::apply(const Config& next) {
 
 void Firmware::on_conversion(Channel channel, uint16_t code_counts, uint32_t tick) {
   DRIFTLAB_ASSERT(code_counts <= LsWindow::kMaxCode && channel_index(channel) < kChannelCount);
+  comp_.advance_to(tick);
   if (rearm_pending_) {
     // The last conversion of the old schedule anchors the new one (firmware.hpp); its code is not used.
     arm(tick + conversion_period_ticks_);
@@ -123,10 +146,16 @@ void Firmware::on_rx_byte(uint8_t byte) {
 }
 
 void Firmware::handle_frame() {
+  if (decoder_.version() == proto::kLegacyProtocolVersion) {
+    // A version-1 host's HELLO: VERSION in v1's layout and framing, whose proto_version 2 that host refuses by
+    // number (docs/protocol.md §1.1).
+    send_version(true);
+    return;
+  }
   const CommandOutcome outcome =
       decide(decoder_.type_id(), decoder_.seq(), decoder_.payload(), decoder_.payload_len(), config_.mode);
   switch (outcome.reply) {
-  case Reply::version: send_version(); break;
+  case Reply::version: send_version(false); break;
   case Reply::config: send_config(); break;
   case Reply::sample: send_sample(); break;
   case Reply::status: send_status(); break;
@@ -135,6 +164,20 @@ void Firmware::handle_frame() {
     send_ack(outcome.ack);
     break;
   case Reply::nak: send_nak(outcome.nak); break;
+  case Reply::cal_ack:
+    store_entry(outcome.cal);
+    load_calibration();
+    send_ack(outcome.ack);
+    break;
+  case Reply::cal: {
+    proto::CalPayload entry = {};
+    if (read_entry(outcome.cal.channel, &entry) == EntryRead::ok) {
+      send_cal(entry);
+    } else {
+      send_nak(outcome.nak);
+    }
+    break;
+  }
   }
 }
 
@@ -154,7 +197,9 @@ void Firmware::send_sample() {
   p.tick = newest_tick_;
   uint8_t n_window = LsWindow::kMaxWindow;
   for (uint8_t c = 0; c < kChannelCount; ++c) {
-    p.value_q8[c] = windows_[c].estimate_q8(config_.fit_order);
+    // An empty window's 0 is no reading (n_window 0 says so) and stays 0.
+    const int32_t estimate_q8 = windows_[c].estimate_q8(config_.fit_order);
+    p.value_q8[c] = windows_[c].n() == 0 ? 0 : comp_.apply(static_cast<Channel>(c), estimate_q8, newest_tick_);
     if (windows_[c].saturated()) {
       p.sat_flags = static_cast<uint8_t>(p.sat_flags | (1U << c));
     }
@@ -163,6 +208,8 @@ void Firmware::send_sample() {
   }
   p.n_window = n_window;
   p.dropped = dropped_;
+  p.cal_state = cal_state_;
+  p.cal_id = cal_id_;
   uint8_t frame[proto::kMaxFrameSize];
   send_frame(frame, static_cast<uint8_t>(proto::encode_sample(p, tx_seq_, frame, sizeof frame)));
   if (config_.raw) {
@@ -180,7 +227,7 @@ void Firmware::send_raw() {
   send_frame(frame, static_cast<uint8_t>(proto::encode_raw(p, tx_seq_, frame, sizeof frame)));
 }
 
-void Firmware::send_version() {
+void Firmware::send_version(bool legacy) {
   const ResetInfo reset = hal_reset_info();
   proto::VersionPayload p = {};
   p.proto_version = proto::kProtocolVersion;
@@ -197,8 +244,11 @@ void Firmware::send_version() {
   }
   p.reset_cause = reset.cause;
   p.assert_line = reset.assert_line;
+  p.cal_state = cal_state_;
+  p.cal_id = cal_id_;
   uint8_t frame[proto::kMaxFrameSize];
-  send_frame(frame, static_cast<uint8_t>(proto::encode_version(p, tx_seq_, frame, sizeof frame)));
+  send_frame(frame, static_cast<uint8_t>(legacy ? proto::encode_legacy_version(p, tx_seq_, frame, sizeof frame)
+                                                : proto::encode_version(p, tx_seq_, frame, sizeof frame)));
 }
 
 void Firmware::send_config() {
@@ -219,6 +269,8 @@ void Firmware::send_status() {
   p.rx_overflow = hal_rx_overflow_count();
   p.tx_overflow = tx_overflow_bytes_;
   p.dropped = dropped_;
+  p.cal_state = cal_state_;
+  p.cal_id = cal_id_;
   uint8_t frame[proto::kMaxFrameSize];
   send_frame(frame, static_cast<uint8_t>(proto::encode_status(p, tx_seq_, frame, sizeof frame)));
 }
@@ -231,6 +283,11 @@ void Firmware::send_ack(const proto::AckPayload& ack) {
 void Firmware::send_nak(const proto::NakPayload& nak) {
   uint8_t frame[proto::kMaxFrameSize];
   send_frame(frame, static_cast<uint8_t>(proto::encode_nak(nak, tx_seq_, frame, sizeof frame)));
+}
+
+void Firmware::send_cal(const proto::CalPayload& cal) {
+  uint8_t frame[proto::kMaxFrameSize];
+  send_frame(frame, static_cast<uint8_t>(proto::encode_cal(cal, tx_seq_, frame, sizeof frame)));
 }
 
 }  // namespace fw

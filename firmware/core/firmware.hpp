@@ -22,6 +22,7 @@
 #include "driftlab/channels.hpp"
 #include "driftlab/proto/decoder.hpp"
 #include "firmware/core/config.hpp"
+#include "firmware/core/drift_comp.hpp"
 #include "firmware/core/ls_window.hpp"
 
 namespace driftlab {
@@ -31,8 +32,9 @@ class Firmware {
  public:
   Firmware();
 
-  /// Main loop, once after the board's own set-up: arms the default schedule (kDefaultConfig) via hal_init(),
-  /// first trigger one period after hal_ticks().
+  /// Main loop, once after the board's own set-up: loads the calibration from EEPROM (a warm restart, per
+  /// hal_reset_info(), takes the transient as over: drift_comp.hpp) and arms the default schedule (kDefaultConfig)
+  /// via hal_init(), first trigger one period after hal_ticks().
   void start();
 
   /// Main loop: one finished conversion, in the order the ADC produced them. `code_counts` is 0..1023 and
@@ -46,20 +48,24 @@ class Firmware {
   /// Conversions lost since boot, saturating [conversions].
   uint16_t dropped() const { return dropped_; }
   const LsWindow& window(Channel channel) const { return windows_[channel_index(channel)]; }
+  /// proto::CalState of the calibration in use.
+  uint8_t cal_state() const { return cal_state_; }
 
  private:
   void apply(const Config& next);
   void arm(uint32_t first_trigger_tick);
   void reset_windows();
+  void load_calibration();
   void handle_frame();
   void send_frame(const uint8_t* frame, uint8_t size);
   void send_sample();
   void send_raw();
-  void send_version();
+  void send_version(bool legacy);
   void send_config();
   void send_status();
   void send_ack(const proto::AckPayload& ack);
   void send_nak(const proto::NakPayload& nak);
+  void send_cal(const proto::CalPayload& cal);
 
   Config config_;
   LsWindow windows_[kChannelCount];
@@ -72,6 +78,9 @@ class Firmware {
   uint16_t dropped_;
   uint16_t tx_overflow_bytes_;
   uint16_t tx_seq_;
+  DriftComp comp_;
+  uint8_t cal_state_;  // proto::CalState
+  uint16_t cal_id_;    // of the calibration applied, 0 when none is
   proto::Decoder decoder_;
 };
 

@@ -32,9 +32,9 @@ static_assert(kTickHz % 1000 == 0, "ms to ticks conversions assume a whole numbe
 /// Ring sizes shared by both ports so that overflow behaviour is the same natively and on the chip.
 /// Conversions: 16 x 7 bytes absorb one output's burst of work (divisions, framing) at the fastest schedule.
 constexpr uint8_t kAdcRingCapacity = 16;
-/// Received bytes: two of the longest host frames (CONFIG_SET, 16 bytes).
-constexpr uint8_t kRxRingCapacity = 32;
-/// Bytes to send: SAMPLE + RAW (54 bytes) plus two replies, with room to spare.
+/// Received bytes: two of the longest host frames (CAL_SET, 25 bytes), with room to spare.
+constexpr uint8_t kRxRingCapacity = 64;
+/// Bytes to send: SAMPLE + RAW (57 bytes) plus two replies, with room to spare.
 constexpr uint8_t kTxRingCapacity = 128;
 
 /// What hal_init() arms: a first conversion at `first_trigger_tick`, then one every `conversion_period_ticks`,
@@ -99,6 +99,18 @@ uint16_t hal_rx_overflow_count();
 
 /// Main loop. Cause of the last reset and the assertion line behind it.
 ResetInfo hal_reset_info();
+
+/// Bytes of EEPROM the core may use (the ATmega328P's 1 KiB); it keeps there what must outlive a reset: the
+/// calibration (cal_store.hpp). An erased byte reads 0xFF.
+constexpr uint16_t kEepromBytes = 1024;
+
+/// Main loop. Copies `count` bytes of EEPROM from `address` into `out` (address + count <= kEepromBytes).
+void hal_eeprom_read(uint16_t address, uint8_t* out, uint8_t count);
+
+/// Main loop. Writes `count` bytes to EEPROM at `address`, skipping bytes that already hold their value (each
+/// write wears a cell, ~100 000 writes). Blocks until written: ~3.4 ms a changed byte on the chip, during which
+/// conversions queue in their ring and may be lost (and counted).
+void hal_eeprom_write(uint16_t address, const uint8_t* bytes, uint8_t count);
 
 /// Any context, never returns. Called by DRIFTLAB_ASSERT with the failing line: natively prints and aborts; on
 /// the chip stores the line for the next VERSION and resets through the watchdog.

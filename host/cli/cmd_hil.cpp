@@ -6,7 +6,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -22,6 +21,7 @@
 #include "firmware/core/hal.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/hil_run.hpp"
+#include "host/cli/stop_signals.hpp"
 #include "host/io/hil_log.hpp"
 #include "host/io/pty_board.hpp"
 #include "host/util/error.hpp"
@@ -44,15 +44,6 @@
 
 namespace driftlab::host::cli {
 namespace {
-
-// Ctrl-C and SIGTERM end a run between events, so that the log keeps every row whole (a kill mid-write had cut the
-// last one) and the summary says how far it got.
-std::atomic<bool> g_stop{false};
-
-void stop_on_signals() {
-    std::signal(SIGINT, [](int) { g_stop.store(true); });
-    std::signal(SIGTERM, [](int) { g_stop.store(true); });
-}
 
 // --pty: the native board serves its UART on a pseudo-terminal, paced to the wall clock, until the duration
 // (only when given) or Ctrl-C; a host such as `driftlab record --port PATH` configures and reads it
@@ -77,12 +68,13 @@ void serve_pty_command(const HilCliOptions& o, const sim::HilOptions& h) {
     p.speed = o.speed.value_or(1.0);
     p.duration_s = o.duration_s.value_or(0.0);
     p.link_path = o.pty_link;
+    p.eeprom = h.eeprom;
     const auto code = [&sensor](Channel c, std::uint64_t tick) {
         return sensor.convert(c, static_cast<double>(tick) / fw::kTickHz).code;
     };
-    stop_on_signals();
+    const std::atomic<bool>& stop = stop_on_signals();
     // With --pty-link the link and the terminal it points to, "/tmp/imu -> /dev/pts/5": some tools refuse a symlink.
-    const io::PtyBoardSummary s = io::serve_pty_board(p, code, g_stop, [&o](const std::string& path) {
+    const io::PtyBoardSummary s = io::serve_pty_board(p, code, stop, [&o](const std::string& path) {
         const std::string shown =
             o.pty_link.empty() ? path : path + " -> " + std::filesystem::read_symlink(path).string();
         std::printf("%s\n", shown.c_str());
@@ -124,8 +116,7 @@ void run_hil_command(const HilCliOptions& o) {
     // Under a debugger the stopped CPU waits inside the board's run, where no stop is looked at: Ctrl-C keeps its
     // default action there.
     if (o.gdb_port == 0) {
-        h.stop = &g_stop;
-        stop_on_signals();
+        h.stop = &stop_on_signals();
     }
 #ifdef DRIFTLAB_HAVE_SIM_AVR
     // The CPU is stopped until a debugger continues it: say so, or the run looks hung.
@@ -192,6 +183,10 @@ void register_hil(CLI::App& app) {
     cmd->add_option("--warm", opts->warm_s,
                     "The sensor was powered this long before the board booted [s] (default: the preset's)")
         ->check(non_negative_number());
+    cmd->add_option("--cal", opts->cal_file,
+                    "Calibration (driftlab calibrate) in the board's EEPROM when it powers on, as an earlier "
+                    "`driftlab upload` leaves it")
+        ->check(non_empty_path());
     cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)")
         ->check(non_empty_path());
     cmd->add_option("--seed", opts->seed, "Seed of every random component")

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/stop_signals.hpp"
 #include "host/io/recorder.hpp"
 #include "host/io/status_line.hpp"
 #include "host/util/error.hpp"
@@ -17,10 +18,6 @@
 
 namespace driftlab::host::cli {
 namespace {
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void on_stop_signal(int) { g_stop.store(true); }
 
 struct RecordCliOptions {
     std::string port;
@@ -59,11 +56,7 @@ void run_record(const RecordCliOptions& o) {
     // only the field, e.g. --stream 0.01 with the default 25 conversions.
     if (const auto refusal = sim::firmware_refusal(r.config)) throw UsageError(refusal->field + ": " + refusal->reason);
 
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
+    const std::atomic<bool>& stop = stop_on_signals();
     // An unplugged adapter or a closed pseudo-terminal may raise SIGHUP/SIGPIPE: that is a lost link, which
     // the recorder survives, not a reason to die.
     ::signal(SIGHUP, SIG_IGN);
@@ -80,7 +73,7 @@ void run_record(const RecordCliOptions& o) {
             std::fflush(stderr);
         };
     }
-    const io::RecordSummary sum = io::record(r, g_stop, progress);
+    const io::RecordSummary sum = io::record(r, stop, progress);
     if (live) std::fprintf(stderr, "\n");
 
     const io::AssemblyStats& s = sum.stats;

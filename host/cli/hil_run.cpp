@@ -6,12 +6,14 @@
 #include <memory>
 #include <stdexcept>
 
+#include "host/cal/cal_file.hpp"
 #include "host/cli/commands.hpp"
 #include "host/io/hil_log.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
 #include "host/view/motion_view.hpp"
+#include "sim/hil/eeprom_image.hpp"
 #include "sim/hil/hil_preset.hpp"
 #include "sim/model/drift.hpp"
 #include "sim/model/model_file.hpp"
@@ -30,7 +32,7 @@ namespace driftlab::host::cli {
 std::string firmware_elf(const HilCliOptions& o) { return o.elf.empty() ? sim::avr::default_elf_path() : o.elf; }
 
 sim::avr::CycleBudget cycle_budget(const HilCliOptions& o, const sim::HilOptions& h) {
-    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5, 5.0, true);
+    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5, 5.0, true, h.eeprom);
 }
 #endif
 
@@ -87,6 +89,7 @@ void set_target(const HilCliOptions& o, sim::HilOptions& h) {
     if (o.target == "avr") {
 #ifdef DRIFTLAB_HAVE_SIM_AVR
         sim::avr::AvrBoardOptions avr{firmware_elf(o), o.gdb_port};
+        avr.eeprom = h.eeprom;
         try {
             h.make_board = sim::avr::avr_board_factory(avr);
         } catch (const sim::avr::AvrError& e) {
@@ -170,6 +173,8 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     if (!o.pty && h.duration_s < fw.output_period_ms / 1000.0)
         throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
     set_trajectory(o, h);
+    if (!o.cal_file.empty())
+        h.eeprom = sim::eeprom_image(cal::to_payloads(cal::read_calibration(o.cal_file), o.cal_file));
     set_target(o, h);
     return h;
 }

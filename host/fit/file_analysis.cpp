@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "host/log/compensation.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
@@ -121,6 +122,8 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
         if (const std::string note = dropped_cut_line_note(log); !note.empty()) out.notes.push_back(note);
         out.log = overview_of(log);
         for (std::string& note : saturation_notes(log)) out.notes.push_back(std::move(note));
+        if (const std::optional<std::string> compensated = compensated_on_board(log.metadata))
+            out.notes.push_back(*compensated + ": what is fitted here is the drift the compensation left");
         all = series_from_log(log, request.names);
     } else {
         all = series_from_table(parse_numeric_table(source.in, request.path), request.names, request.time_column,

@@ -1,4 +1,4 @@
-// BoardClient: handshake, configuration and reception of protocol v1 (board_client.hpp).
+// BoardClient: handshake, requests and reception of protocol v2 (board_client.hpp).
 #include "host/io/board_client.hpp"
 
 #include <chrono>
@@ -46,18 +46,11 @@ const char* status_name(std::uint8_t status) {
 
 BoardClient::BoardClient(ByteLink& link, ClientOptions options) : link_(link), options_(options) {}
 
-LinkStatus BoardClient::send(proto::MsgType type, const proto::ConfigPayload* config, std::uint16_t* seq_used) {
+LinkStatus BoardClient::send(proto::MsgType type, std::span<const std::uint8_t> payload, std::uint16_t* seq_used) {
     std::uint8_t frame[proto::kMaxFrameSize];
     const std::uint16_t seq = tx_seq_++;
-    std::size_t n = 0;
-    switch (type) {
-    case proto::MsgType::hello: n = proto::encode_hello(seq, frame, sizeof frame); break;
-    case proto::MsgType::config_get: n = proto::encode_config_get(seq, frame, sizeof frame); break;
-    case proto::MsgType::config_set: n = proto::encode_config_set(*config, seq, frame, sizeof frame); break;
-    case proto::MsgType::poll: n = proto::encode_poll(seq, frame, sizeof frame); break;
-    case proto::MsgType::status_get: n = proto::encode_status_get(seq, frame, sizeof frame); break;
-    default: break;
-    }
+    const std::size_t n =
+        proto::encode_frame(proto::type_id(type), seq, payload.data(), payload.size(), frame, sizeof frame);
     if (seq_used != nullptr) *seq_used = seq;
     if (tap_) tap_(CaptureKind::tx, frame, n);
     return link_.write(frame, n);
@@ -122,7 +115,7 @@ HelloResult BoardClient::hello() {
     const std::uint64_t bytes_before = counters_.bytes_received;
     const std::uint32_t frames_before = decoder_.counters().frames_ok;
     for (int attempt = 0; attempt < options_.hello_attempts; ++attempt) {
-        if (send(proto::MsgType::hello, nullptr, nullptr) == LinkStatus::lost) {
+        if (send(proto::MsgType::hello, {}, nullptr) == LinkStatus::lost) {
             result.problem = "the port went away during the handshake";
             return result;
         }
@@ -148,6 +141,8 @@ HelloResult BoardClient::hello() {
         result.ok = true;
         return result;
     }
+    // A silent board may be a version-1 one in poll mode, which ignores v2 frames: its own HELLO gets its VERSION.
+    if (counters_.bytes_received == bytes_before) probe_version_one();
     const std::uint64_t bytes = counters_.bytes_received - bytes_before;
     if (foreign_version_ && decoder_.counters().bad_version > 0) {
         result.problem = "the board speaks protocol version " + std::to_string(*foreign_version_) +
@@ -166,84 +161,90 @@ HelloResult BoardClient::hello() {
     return result;
 }
 
-ConfigResult BoardClient::configure(const proto::ConfigPayload& wanted) {
-    ConfigResult result;
-    bool acked = false;
-    for (int attempt = 0; attempt < options_.request_attempts && !acked; ++attempt) {
+BoardClient::Answer BoardClient::request(proto::MsgType type, std::span<const std::uint8_t> payload,
+                                         proto::MsgType reply) {
+    Answer out;
+    const char* name = proto::find_msg(proto::type_id(type))->name;
+    for (int attempt = 0; attempt < options_.request_attempts; ++attempt) {
         std::uint16_t seq = 0;
-        if (send(proto::MsgType::config_set, &wanted, &seq) == LinkStatus::lost) {
-            result.problem = "the port went away while configuring";
-            return result;
-        }
-        const auto set_id = proto::type_id(proto::MsgType::config_set);
-        LinkStatus status;
-        auto answer = await(
-            [&](const Frame& f) {
-                proto::AckPayload ack{};
-                proto::NakPayload nak{};
-                if (f.type == proto::MsgType::ack && proto::parse(f.payload.data(), f.payload_len, &ack)) {
-                    return ack.acked_type == set_id && ack.acked_seq == seq;
-                }
-                if (f.type == proto::MsgType::nak && proto::parse(f.payload.data(), f.payload_len, &nak)) {
-                    return nak.nacked_type == set_id && nak.nacked_seq == seq;
-                }
-                return false;
-            },
-            options_.reply_timeout_ms, &status);
+        LinkStatus status = send(type, payload, &seq);
+        std::optional<Frame> answer;
+        if (status != LinkStatus::lost)
+            answer =
+                await([&](const Frame& f) { return answers(f, type, seq, reply); }, options_.reply_timeout_ms, &status);
         if (status == LinkStatus::lost) {
-            result.problem = "the port went away while configuring";
-            return result;
+            out.problem = std::string("the port went away waiting for an answer to ") + name;
+            return out;
         }
         if (!answer) continue;
-        if (answer->type == proto::MsgType::nak) {
-            proto::NakPayload nak{};
-            if (!proto::parse(answer->payload.data(), answer->payload_len, &nak)) continue;
-            const char* field = proto::config_field_name(nak.field);
-            result.problem = std::string("the board refused CONFIG_SET: ") + status_name(nak.status) +
-                             (field ? std::string(" in field ") + field : "");
-            return result;
-        }
-        acked = true;
+        proto::NakPayload nak{};
+        if (answer->type == proto::MsgType::nak && proto::parse(answer->payload.data(), answer->payload_len, &nak))
+            out.nak = nak;
+        else
+            out.reply = answer;
+        return out;
     }
-    if (!acked) {
-        result.problem = "no ACK or NAK for CONFIG_SET after " + std::to_string(options_.request_attempts) + " tries";
+    out.problem =
+        std::string("no answer to ") + name + " after " + std::to_string(options_.request_attempts) + " tries";
+    return out;
+}
+
+bool BoardClient::answers(const Frame& f, proto::MsgType type, std::uint16_t seq, proto::MsgType reply) {
+    const auto id = proto::type_id(type);
+    proto::AckPayload ack{};
+    proto::NakPayload nak{};
+    if (f.type == proto::MsgType::nak && proto::parse(f.payload.data(), f.payload_len, &nak))
+        return nak.nacked_type == id && nak.nacked_seq == seq;
+    if (f.type != reply) return false;
+    return reply != proto::MsgType::ack ||
+           (proto::parse(f.payload.data(), f.payload_len, &ack) && ack.acked_type == id && ack.acked_seq == seq);
+}
+
+void BoardClient::probe_version_one() {
+    std::uint8_t frame[proto::kMaxFrameSize];
+    const std::size_t n = proto::encode_legacy_hello(tx_seq_++, frame, sizeof frame);
+    if (tap_) tap_(CaptureKind::tx, frame, n);
+    if (link_.write(frame, n) == LinkStatus::lost) return;
+    const auto deadline = Clock::now() + std::chrono::milliseconds(options_.reply_timeout_ms);
+    while (!foreign_version_) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+        if (left <= 0 || pump(static_cast<int>(left)) == LinkStatus::lost) break;
+    }
+}
+
+ConfigResult BoardClient::configure(const proto::ConfigPayload& wanted) {
+    ConfigResult result;
+    std::uint8_t bytes[proto::kConfigPayloadSize];
+    const std::size_t n = proto::serialize(wanted, bytes, sizeof bytes);
+    const Answer set = request(proto::MsgType::config_set, std::span(bytes, n), proto::MsgType::ack);
+    if (set.nak) {
+        const char* field = proto::config_field_name(set.nak->field);
+        result.problem = std::string("the board refused CONFIG_SET: ") + status_name(set.nak->status) +
+                         (field ? std::string(" in field ") + field : "");
         return result;
     }
-    for (int attempt = 0; attempt < options_.request_attempts; ++attempt) {
-        if (send(proto::MsgType::config_get, nullptr, nullptr) == LinkStatus::lost) {
-            result.problem = "the port went away while configuring";
-            return result;
-        }
-        LinkStatus status;
-        auto answer =
-            await([](const Frame& f) { return f.type == proto::MsgType::config; }, options_.reply_timeout_ms, &status);
-        if (status == LinkStatus::lost) {
-            result.problem = "the port went away while configuring";
-            return result;
-        }
-        if (!answer || !proto::parse(answer->payload.data(), answer->payload_len, &result.applied)) continue;
-        const std::string diff = describe_config_difference(wanted, result.applied);
-        if (!diff.empty()) {
-            result.problem = "the board acknowledged CONFIG_SET but CONFIG_GET reads back " + diff;
-            return result;
-        }
-        result.ok = true;
+    if (!set.reply) {
+        result.problem = set.problem;
         return result;
     }
-    result.problem = "no CONFIG in answer to CONFIG_GET after " + std::to_string(options_.request_attempts) + " tries";
+    const Answer get = request(proto::MsgType::config_get, {}, proto::MsgType::config);
+    if (!get.reply || !proto::parse(get.reply->payload.data(), get.reply->payload_len, &result.applied)) {
+        result.problem = get.nak ? "the board refused CONFIG_GET" : get.problem;
+        return result;
+    }
+    const std::string diff = describe_config_difference(wanted, result.applied);
+    if (!diff.empty()) {
+        result.problem = "the board acknowledged CONFIG_SET but CONFIG_GET reads back " + diff;
+        return result;
+    }
+    result.ok = true;
     return result;
 }
 
 std::optional<proto::StatusPayload> BoardClient::status() {
-    for (int attempt = 0; attempt < options_.request_attempts; ++attempt) {
-        if (send(proto::MsgType::status_get, nullptr, nullptr) == LinkStatus::lost) return std::nullopt;
-        LinkStatus link;
-        auto answer =
-            await([](const Frame& f) { return f.type == proto::MsgType::status; }, options_.reply_timeout_ms, &link);
-        if (link == LinkStatus::lost) return std::nullopt;
-        proto::StatusPayload s{};
-        if (answer && proto::parse(answer->payload.data(), answer->payload_len, &s)) return s;
-    }
+    const Answer a = request(proto::MsgType::status_get, {}, proto::MsgType::status);
+    proto::StatusPayload s{};
+    if (a.reply && proto::parse(a.reply->payload.data(), a.reply->payload_len, &s)) return s;
     return std::nullopt;
 }
 
@@ -259,7 +260,7 @@ std::optional<std::string> BoardClient::poll_refusal() const {
 
 LinkStatus BoardClient::send_poll() {
     ++counters_.polls_sent;
-    return send(proto::MsgType::poll, nullptr, nullptr);
+    return send(proto::MsgType::poll, {}, nullptr);
 }
 
 }  // namespace driftlab::host::io

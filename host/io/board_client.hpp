@@ -1,4 +1,4 @@
-// BoardClient: the host side of protocol v1 over any ByteLink (docs/protocol.md, docs/recording.md).
+// BoardClient: the host side of protocol v2 over any ByteLink (docs/protocol.md, docs/recording.md).
 // Handshake (HELLO -> VERSION, refusing another protocol version), configuration (CONFIG_SET answered by
 // ACK, then verified by reading it back with CONFIG_GET), STATUS_GET, POLL, and reception of streamed frames
 // with sequence accounting (SeqTracker).
@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "driftlab/proto/decoder.hpp"
@@ -81,6 +82,16 @@ public:
     ConfigResult configure(const proto::ConfigPayload& wanted);
     std::optional<proto::StatusPayload> status();
 
+    /// The answer to one request: the reply, a NAK of the request, or (neither) why none came.
+    struct Answer {
+        std::optional<Frame> reply;
+        std::optional<proto::NakPayload> nak;
+        std::string problem;
+    };
+    /// Sends `type` with `payload` up to request_attempts times until a frame of type `reply` (an ACK: of this
+    /// request's seq) or a NAK of the request arrives.
+    Answer request(proto::MsgType type, std::span<const std::uint8_t> payload, proto::MsgType reply);
+
     LinkStatus send_poll();
     /// Reads what arrives within `timeout_ms` [ms] and delivers its frames.
     LinkStatus pump(int timeout_ms);
@@ -97,10 +108,14 @@ public:
     const ClientCounters& counters() const { return counters_; }
 
 private:
-    LinkStatus send(proto::MsgType type, const proto::ConfigPayload* config, std::uint16_t* seq_used);
+    LinkStatus send(proto::MsgType type, std::span<const std::uint8_t> payload, std::uint16_t* seq_used);
+    /// Whether `f` answers request `type` of `seq`: a NAK of it, an ACK of it when `reply` is ACK, else a `reply`.
+    static bool answers(const Frame& f, proto::MsgType type, std::uint16_t seq, proto::MsgType reply);
     // Pumps until `match` accepts a frame or the timeout passes; the frame is returned.
     std::optional<Frame> await(const std::function<bool(const Frame&)>& match, int timeout_ms, LinkStatus* status);
     void deliver(const Frame& frame);
+    /// A version-1 HELLO, and what comes back within the reply timeout (a v1 board's VERSION names its version).
+    void probe_version_one();
 
     ByteLink& link_;
     ClientOptions options_;

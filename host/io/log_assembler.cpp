@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "driftlab/proto/msg_table.hpp"
 #include "driftlab/proto/q8_counts.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
@@ -46,6 +47,9 @@ LogMetadata board_metadata(std::string_view source, const proto::VersionPayload&
     m.set("adc_pins", pins);
     m.set("reset_cause", static_cast<std::int64_t>(v.reset_cause));
     m.set("assert_line", static_cast<std::int64_t>(v.assert_line));
+    const char* cal_state = proto::cal_state_name(v.cal_state);
+    m.set("cal_state", cal_state ? std::string(cal_state) : "unknown " + std::to_string(v.cal_state));
+    m.set("cal_id", static_cast<std::int64_t>(v.cal_id));
     for (const auto& [key, value] : extra) m.set(key, value);
     return m;
 }
@@ -266,16 +270,20 @@ void LogAssembler::take_frame(std::uint64_t t_us, const Frame& frame, std::uint6
     case proto::MsgType::ack: {
         proto::AckPayload k{};
         const bool foreign = writer_ && !replaying_held_ && proto::parse(p, frame.payload_len, &k) &&
-                             k.acked_type == static_cast<std::uint8_t>(proto::MsgType::config_set);
+                             (k.acked_type == static_cast<std::uint8_t>(proto::MsgType::config_set) ||
+                              k.acked_type == static_cast<std::uint8_t>(proto::MsgType::cal_set));
         if (foreign && !stats_.board_reconfigured())
-            write_note("ACK of a CONFIG_SET this recording did not send (frame seq " + std::to_string(frame.seq) +
+            write_note(std::string("ACK of a ") + proto::find_msg(k.acked_type)->name +
+                       " this recording did not send (frame seq " + std::to_string(frame.seq) +
                        "): the board was reconfigured by someone else; no row follows");
         if (foreign) ++stats_.foreign_config_acks;
         break;
     }
     case proto::MsgType::sample: {
         proto::SamplePayload s{};
-        if (!proto::parse(p, frame.payload_len, &s) || stats_.board_reconfigured() || check_window(s, frame.seq)) break;
+        if (!proto::parse(p, frame.payload_len, &s) || stats_.board_reconfigured() || check_window(s, frame.seq) ||
+            check_calibration(s, frame.seq))
+            break;
         last_epoch_tick_ = s.tick;
         const std::uint64_t tick = ticks_.unwrap(s.tick);
         newest_sample_ = Stamped{t_us, tick};
@@ -405,6 +413,21 @@ bool LogAssembler::check_window(const proto::SamplePayload& s, std::uint16_t fra
     write_note("SAMPLE of a window of " + std::to_string(s.n_window) + " conversions after the handshake's " +
                std::to_string(config_->window) + " had filled (frame seq " + std::to_string(frame_seq) +
                "): the board was reconfigured (its ACK lost) or restarted; no row follows");
+    return true;
+}
+
+bool LogAssembler::check_calibration(const proto::SamplePayload& s, std::uint16_t frame_seq) {
+    if (!writer_ || replaying_held_ || (s.cal_state == version_->cal_state && s.cal_id == version_->cal_id))
+        return false;
+    ++stats_.other_calibration_samples;
+    const auto state = [](std::uint8_t v) {
+        const char* name = proto::cal_state_name(v);
+        return std::string(name ? name : "unknown");
+    };
+    write_note("SAMPLE of calibration state " + state(s.cal_state) + " id " + std::to_string(s.cal_id) +
+               " after the handshake's " + state(version_->cal_state) + " id " + std::to_string(version_->cal_id) +
+               " (frame seq " + std::to_string(frame_seq) +
+               "): the board's compensation changed (a calibration uploaded, or a warm restart); no row follows");
     return true;
 }
 

@@ -54,14 +54,22 @@ struct AssemblyStats {
     std::uint64_t conflicting_rows = 0;     ///< rows kept out of the log for a conflict
     std::uint64_t unexpected_versions = 0;  ///< VERSIONs after the start that differ from the handshake's: ignored
     std::uint64_t unexpected_configs = 0;   ///< CONFIGs after the start that differ from the handshake's: ignored
-    /// ACKs of a CONFIG_SET after the start, outside a reconnect: someone else reconfigured the board. No SAMPLE after
-    /// the first is a row (its outputs follow a configuration the log does not state); `record` stops there.
+    /// ACKs of a CONFIG_SET or CAL_SET after the start, outside a reconnect: someone else reconfigured the board. No
+    /// SAMPLE after the first is a row (its outputs follow a configuration the log does not state); `record` stops
+    /// there.
     std::uint64_t foreign_config_acks = 0;
     /// SAMPLEs whose window (n_window) is not the handshake's once it had filled, outside a reconnect: the board was
     /// reconfigured (its ACK lost) or restarted. As for a foreign ACK, no SAMPLE after it is a row.
     std::uint64_t other_window_samples = 0;
-    /// Whether the board left the handshake's configuration (a foreign ACK, or another window): the rows end there.
-    bool board_reconfigured() const { return foreign_config_acks + other_window_samples > 0; }
+    /// SAMPLEs whose calibration state or id is not the handshake's VERSION's, outside a reconnect: the outputs are
+    /// compensated otherwise than the log's metadata says (a CAL_SET with its ACK lost, a warm restart). No row
+    /// follows.
+    std::uint64_t other_calibration_samples = 0;
+    /// Whether the board left the handshake's configuration (a foreign ACK, another window or another calibration):
+    /// the rows end there.
+    bool board_reconfigured() const {
+        return foreign_config_acks + other_window_samples + other_calibration_samples > 0;
+    }
     std::optional<double> first_t_s;                  ///< [s] of the first row
     std::optional<double> last_t_s;                   ///< [s] of the newest row
     std::array<double, kChannelCount> last_counts{};  ///< [counts] newest row
@@ -116,6 +124,8 @@ private:
     bool check_conflict(std::uint64_t seq, const Frame& frame);
     /// Whether SAMPLE `s` shows a window the handshake did not set, once it had filled: if so, ends the rows.
     bool check_window(const proto::SamplePayload& s, std::uint16_t frame_seq);
+    /// Whether SAMPLE `s` shows a calibration the handshake's VERSION did not: if so, ends the rows.
+    bool check_calibration(const proto::SamplePayload& s, std::uint16_t frame_seq);
     /// Writes the held rows, then a `# unexpected: WHY` line after them (what follows is the caller's: ignored frames,
     /// or no more rows once stats' board_reconfigured()).
     void write_note(const std::string& why);

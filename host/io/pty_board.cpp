@@ -1,6 +1,8 @@
 // PtyBoard serve loop (pty_board.hpp).
 #include "host/io/pty_board.hpp"
 
+#include <algorithm>
+
 #include <cstring>
 #include <memory>
 
@@ -73,6 +75,7 @@ PtyBoardSummary serve_pty_board(const PtyBoardOptions& options, const CodeSource
                                 const std::function<void(const std::string&)>& on_ready) {
     PtyBoardSummary summary;
     fw::NativeBoard board;
+    std::copy_n(options.eeprom.begin(), std::min<std::size_t>(options.eeprom.size(), fw::kEepromBytes), board.eeprom());
     fw::Firmware firmware;
     firmware.start();
     TruthLog truth(options.truth_log);

@@ -32,6 +32,8 @@ struct PtyBoardOptions {
     std::string link_path;    ///< optional stable symlink to the current /dev/pts/N
     std::string truth_log;    ///< optional log of every SAMPLE the firmware sent
     std::vector<PlannedUnplug> unplugs;
+    /// The board's EEPROM at power-on (fw::kEepromBytes; hil --pty --cal); empty: erased.
+    std::vector<std::uint8_t> eeprom;
 };
 
 struct PtyBoardSummary {

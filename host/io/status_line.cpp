@@ -64,13 +64,18 @@ std::string untrusted_frames(const AssemblyStats& stats) {
                std::to_string(stats.unexpected_configs) +
                " CONFIG differing from the handshake's ignored (each noted in the log)";
     if (stats.foreign_config_acks > 0)
-        out += (out.empty() ? "" : ", ") + std::string(
-                                               "an ACK of a CONFIG_SET the recording did not send (the board was "
-                                               "reconfigured by someone else: no row after it)");
+        out += (out.empty() ? "" : ", ") +
+               std::string(
+                   "an ACK of a CONFIG_SET or CAL_SET the recording did not send (the board was "
+                   "reconfigured by someone else: no row after it)");
     else if (stats.other_window_samples > 0)
         out += (out.empty() ? "" : ", ") + std::string(
                                                "a SAMPLE of a window the recording did not set (the board was "
                                                "reconfigured or restarted: no row after it)");
+    else if (stats.other_calibration_samples > 0)
+        out += (out.empty() ? "" : ", ") + std::string(
+                                               "a SAMPLE of a calibration the handshake did not report (a "
+                                               "calibration uploaded or a warm restart: no row after it)");
     return out.empty() ? out : "untrusted frames: " + out;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <initializer_list>
 
+#include "host/log/compensation.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/units.hpp"
 #include "host/view/html.hpp"
@@ -122,6 +123,9 @@ Rows recording_rows(const fit::LogOverview& log) {
                        (log.gap_events == 0 ? "" : ", " + counted(log.gap_events, "link gap") + " (# gap: lines)"));
     add("output rate", output_rate_text(log));
     add("smoothing", smoothing_text(m));
+    if (const auto state = m.get("cal_state"))
+        add("compensation",
+            compensated_on_board(m).value_or("none on board: outputs as measured (calibration " + *state + ")"));
     add("converter",
         parts_text(m, {{"adc_bits", "", "-bit"}, {"vref_v", "", " V reference"}, {"tick_hz", "", " Hz tick"}}));
     add("channels", channels_text(log));

@@ -2,6 +2,7 @@
 #include "sim/avr/avr_board.hpp"
 
 #include <simavr/avr_adc.h>
+#include <simavr/avr_eeprom.h>
 #include <simavr/avr_uart.h>
 #include <simavr/sim_avr.h>
 #include <simavr/sim_elf.h>
@@ -19,29 +20,13 @@
 #include "firmware/core/version.hpp"
 #include "sim/avr/avr_error.hpp"
 #include "sim/avr/cycle_profiler.hpp"
+#include "sim/avr/elf_firmware.hpp"
 #include "sim/avr/elf_symbols.hpp"
 #include "sim/avr/isr_shared_layout.hpp"
 #include "sim/avr/simavr_adc.hpp"
 
 namespace driftlab::sim::avr {
 namespace {
-
-// What elf_read_firmware allocates (flash, EEPROM, fuses, lock bits, the symbol table), freed when this goes out of
-// scope: simavr has no call that frees it, and avr_load_firmware copies what the core keeps. LeakSanitizer found it.
-struct ElfFirmware {
-    elf_firmware_t f;
-    ElfFirmware() { std::memset(&f, 0, sizeof f); }
-    ~ElfFirmware() {
-        std::free(f.flash);
-        std::free(f.eeprom);
-        std::free(f.fuse);
-        std::free(f.lockbits);
-        for (std::uint32_t i = 0; i < f.symbolcount; ++i) std::free(f.symbol[i]);
-        std::free(f.symbol);
-    }
-    ElfFirmware(const ElfFirmware&) = delete;
-    ElfFirmware& operator=(const ElfFirmware&) = delete;
-};
 
 constexpr std::uint8_t kTimer1CompbVector = 12;  // ATmega328P datasheet, "Interrupts": TIMER1 COMPB
 constexpr std::uint16_t kMcusrAddress = 0x54;    // MCUSR in data space
@@ -112,6 +97,7 @@ AvrBoard::AvrBoard(const AvrBoardOptions& options, VoltageSource source)
     avr_init(avr_);
     avr_->log = LOG_ERROR;  // simavr warns at every trigger that it cannot auto-trigger (we do it, below)
     avr_load_firmware(avr_, &firmware);
+    if (!options.eeprom.empty()) load_eeprom(options.eeprom);
     avr_->frequency = kCpuHz;
     avr_->vcc = kBoardVrefMv;
     avr_->avcc = kBoardVrefMv;
@@ -361,6 +347,17 @@ std::uint64_t AvrBoard::on_run_limit(avr_t*, std::uint64_t, void*) { return 0; }
 void AvrBoard::on_sleep(avr_t* avr, std::uint64_t how_long) {
     // simavr adds 1 + how_long cycles for this sleep step (avr_callback_run_raw).
     board_of(avr)->sleep_cycles_ += 1 + how_long;
+}
+
+void AvrBoard::load_eeprom(const std::vector<std::uint8_t>& image) {
+    std::vector<std::uint8_t> copy = image;  // simavr copies from a non-const pointer
+    avr_eeprom_desc_t desc{copy.data(), 0, static_cast<std::uint32_t>(copy.size())};
+    // simavr's SET returns -1 even when it copied: read the EEPROM back (GET points into it) to know.
+    avr_ioctl(avr_, AVR_IOCTL_EEPROM_SET, &desc);
+    avr_eeprom_desc_t back{nullptr, 0, static_cast<std::uint32_t>(image.size())};
+    avr_ioctl(avr_, AVR_IOCTL_EEPROM_GET, &back);
+    if (back.ee == nullptr || !std::equal(image.begin(), image.end(), back.ee))
+        throw AvrError("simavr did not take the EEPROM image (" + std::to_string(image.size()) + " bytes)");
 }
 
 }  // namespace driftlab::sim::avr

@@ -51,6 +51,8 @@ struct AvrBoardOptions {
     std::string elf_path;  ///< driftlab_fw.elf (ATmega328P build)
     int gdb_port = 0;      ///< > 0: start simavr's gdb stub on this TCP port, the CPU stopped until gdb continues
     bool profile = false;  ///< count cycles per function and ISR (slower; see CycleProfiler)
+    /// The EEPROM at power-on (up to 1024 bytes from address 0; sim/hil/eeprom_image.hpp); empty: erased.
+    std::vector<std::uint8_t> eeprom{};
 };
 
 /// One byte the firmware wrote to UDR0, at the emulated cycle it did.
@@ -117,6 +119,7 @@ public:
     CycleProfiler* profiler() { return profiler_.get(); }
 
 private:
+    void load_eeprom(const std::vector<std::uint8_t>& image);
     static void on_timer1_compb_pending(avr_irq_t* irq, std::uint32_t value, void* param);
     static void on_adc_trigger(avr_irq_t* irq, std::uint32_t value, void* param);
     static void on_uart_output(avr_irq_t* irq, std::uint32_t value, void* param);

@@ -30,14 +30,16 @@ struct CycleBudget {
     std::vector<FunctionCycles> functions;     ///< per-call cycles in the measured time (empty unless profiled)
 };
 
-/// Boots `elf_path`, streams with `config` (its mode forced to stream) for `settle_s` + `measure_s` of emulated
-/// time with inputs around mid-scale, and measures. `profile` adds per-function cycles (slower to run).
+/// Boots `elf_path` with `eeprom` (empty: erased; a calibration there makes every SAMPLE compensated), streams with
+/// `config` (its mode forced to stream) for `settle_s` + `measure_s` of emulated time with inputs around mid-scale,
+/// and measures. `profile` adds per-function cycles (slower to run).
 CycleBudget measure_cycle_budget(const std::string& elf_path, proto::ConfigPayload config, double settle_s,
-                                 double measure_s, bool profile);
+                                 double measure_s, bool profile, const std::vector<std::uint8_t>& eeprom = {});
 
 /// Candidate configurations from the firmware's fastest accepted conversion period (50 ticks) upwards, each
 /// measured for `measure_s` streaming SAMPLE + RAW; returns them fastest first. The highest sustained rate is
 /// the first with accepted, dropped == 0 and tx_overflow == 0.
-std::vector<CycleBudget> search_max_rate(const std::string& elf_path, double measure_s);
+std::vector<CycleBudget> search_max_rate(const std::string& elf_path, double measure_s,
+                                         const std::vector<std::uint8_t>& eeprom = {});
 
 }  // namespace driftlab::sim::avr

@@ -37,9 +37,9 @@ private:
     const std::function<void(Channel, double, std::uint16_t)>& observer_;
 };
 
-std::unique_ptr<EmulatedBoard> make_target(TargetKind kind) {
+std::unique_ptr<EmulatedBoard> make_target(TargetKind kind, std::span<const std::uint8_t> eeprom) {
     switch (kind) {
-    case TargetKind::native: return std::make_unique<NativeTarget>();
+    case TargetKind::native: return std::make_unique<NativeTarget>(eeprom);
     }
     return nullptr;
 }
@@ -93,7 +93,7 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
     plan.reply_timeout_s = options.reply_timeout_s;
     HostEndpoint host(plan, sink, options.on_ready);
     const std::unique_ptr<EmulatedBoard> board =
-        options.make_board ? options.make_board() : make_target(options.target);
+        options.make_board ? options.make_board() : make_target(options.target, options.eeprom);
 
     std::vector<TxChunk> tx;
     std::vector<std::uint8_t> rx;

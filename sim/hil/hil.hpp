@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
@@ -33,6 +34,8 @@ struct HilOptions {
     /// The robot the unit rides, on the board's clock; null: at rest on the table.
     std::shared_ptr<const Trajectory> trajectory;
     double reply_timeout_s = 0.5;  ///< host's resend timeout for requests [s]
+    /// The board's EEPROM at power-on (fw::kEepromBytes, eeprom_image.hpp: `hil --cal`); empty: erased.
+    std::vector<std::uint8_t> eeprom;
     TargetKind target = TargetKind::native;
     /// When set, builds the board instead of `target`: how the AVR board (sim/avr, a library that depends on this
     /// one) plugs in for `driftlab hil --target avr`.

@@ -1,6 +1,8 @@
 // Native target; see native_target.hpp.
 #include "sim/hil/native_target.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace driftlab::sim {
@@ -22,7 +24,12 @@ std::uint64_t ticks_at_or_before(double t_s) {
 
 }  // namespace
 
-NativeTarget::NativeTarget() { firmware_.start(); }
+NativeTarget::NativeTarget(std::span<const std::uint8_t> eeprom) {
+    std::copy(eeprom.begin(),
+              eeprom.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(eeprom.size(), fw::kEepromBytes)),
+              board_.eeprom());
+    firmware_.start();
+}
 
 std::optional<double> NativeTarget::next_conversion_s() const {
     if (!board_.armed()) return std::nullopt;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 
 #include "firmware/core/firmware.hpp"
 #include "firmware/port/native/native_board.hpp"
@@ -12,9 +13,10 @@ namespace driftlab::sim {
 
 class NativeTarget final : public EmulatedBoard {
 public:
-    /// Powers the board on at t = 0: the firmware starts and arms its default schedule. Only one NativeTarget may
-    /// live on a thread at a time (NativeBoard installs itself as the thread's HAL).
-    NativeTarget();
+    /// Powers the board on at t = 0 with `eeprom` in its EEPROM (empty: erased): the firmware starts and arms its
+    /// default schedule. Only one NativeTarget may live on a thread at a time (NativeBoard installs itself as the
+    /// thread's HAL).
+    explicit NativeTarget(std::span<const std::uint8_t> eeprom = {});
 
     std::optional<double> next_conversion_s() const override;
     void advance_to(double t_s, ConversionSource& source, std::vector<TxChunk>& tx) override;

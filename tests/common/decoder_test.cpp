@@ -143,7 +143,7 @@ TEST(Decoder, LengthByte255IsRejectedAtTheLengthByte) {
 }
 
 TEST(Decoder, UnknownTypeCountsOneUnknownType) {
-  const Bytes bad = {kSync0, kSync1, kProtocolVersion, 0x0D};
+  const Bytes bad = {kSync0, kSync1, kProtocolVersion, 0x10};
   Decoder dec;
   const auto got = feed_all(dec, concat({bad, hello(1)}));
   ASSERT_EQ(got.size(), 1u);
@@ -151,12 +151,35 @@ TEST(Decoder, UnknownTypeCountsOneUnknownType) {
 }
 
 TEST(Decoder, OtherVersionCountsOneBadVersion) {
-  // A version-2 frame: the decoder stops at the version byte, before type or length mean anything.
-  const Bytes bad = {kSync0, kSync1, 0x02};
+  // A version-3 frame: the decoder stops at the version byte, before type or length mean anything.
+  const Bytes bad = {kSync0, kSync1, 0x03};
   Decoder dec;
   const auto got = feed_all(dec, concat({bad, hello(1)}));
   ASSERT_EQ(got.size(), 1u);
   expect_counters(dec.counters(), 1, 0, 0, 0, 1, static_cast<uint32_t>(bad.size()));
+}
+
+TEST(Decoder, OfVersionOneOnlyHelloIsTakenAndSaysItsVersion) {
+  // A v1 board's VERSION (type 2) stops at the type byte; a v1 host's HELLO is delivered, flagged version 1.
+  const Bytes v1_version = {kSync0, kSync1, kLegacyProtocolVersion, type_id(MsgType::version)};
+  Bytes v1_hello = hello(7);
+  v1_hello[kOffsetVersion] = kLegacyProtocolVersion;
+  // CRC-16/IBM-3740 over version 1, type 1, seq 7, len 0, then the seed 0x9F, written out independently.
+  const uint8_t covered[] = {0x01, 0x01, 0x07, 0x00, 0x00, kLegacyHelloSeed};
+  const uint16_t crc = crc16_ibm3740(covered, sizeof covered);
+  v1_hello[7] = static_cast<uint8_t>(crc & 0xFF);
+  v1_hello[8] = static_cast<uint8_t>(crc >> 8);
+  Decoder dec;
+  std::vector<uint8_t> versions;
+  for (uint8_t b : concat({v1_version, v1_hello})) {
+    if (dec.feed(b)) {
+      do {
+        versions.push_back(dec.version());
+      } while (dec.next());
+    }
+  }
+  EXPECT_EQ(versions, (std::vector<uint8_t>{kLegacyProtocolVersion}));
+  expect_counters(dec.counters(), 1, 0, 0, 0, 1, static_cast<uint32_t>(v1_version.size()));
 }
 
 TEST(Decoder, GarbageWithoutSyncCountsEachByteAsResync) {
@@ -179,9 +202,9 @@ TEST(Decoder, FalseStartByteIsSkippedAndTheNextSyncReexamined) {
 
 TEST(Decoder, FrameHiddenInsideTruncatedCandidateIsFound) {
   // A SAMPLE header whose frame was cut after 3 payload bytes, then three HELLOs. The SAMPLE candidate swallows
-  // the first HELLOs until its 33 bytes are in and its CRC fails; re-scanning those bytes finds them.
+  // the first HELLOs until its 36 bytes are in and its CRC fails; re-scanning those bytes finds them.
   // (A parser that resumes at the current byte, as MAVLink's does, loses the first two.)
-  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 24, 0x01, 0x02, 0x03};
+  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 27, 0x01, 0x02, 0x03};
   const Bytes h1 = hello(10);
   const Bytes h2 = hello(11);
   const Bytes h3 = hello(12);
@@ -206,7 +229,7 @@ TEST(Decoder, FrameHiddenInsideTruncatedCandidateIsFound) {
 }
 
 TEST(Decoder, HeldFramesStillComeOutInOrderWithoutNext) {
-  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 24, 0x01, 0x02, 0x03};
+  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 27, 0x01, 0x02, 0x03};
   const Bytes stream = concat({cut, hello(10), hello(11), hello(12), hello(13)});
   Decoder dec;
   std::vector<uint16_t> seqs;

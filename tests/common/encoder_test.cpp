@@ -19,12 +19,19 @@ using testing::expect_fields_equal;
 using testing::randomize;
 
 // Golden frames: Python's struct.pack for the payload and a bitwise CRC-16/IBM-3740, from docs/protocol.md.
-const std::vector<uint8_t> kHelloSeq0x1234 = {0xD7, 0x1A, 0x01, 0x01, 0x34, 0x12, 0x00, 0xAC, 0x58};
+const std::vector<uint8_t> kHelloSeq0x1234 = {0xD7, 0x1A, 0x02, 0x01, 0x34, 0x12, 0x00, 0x4C, 0x96};
+// The same HELLO in version 1 (what encode_legacy_hello sends to find a v1 board).
+const std::vector<uint8_t> kV1HelloSeq0x1234 = {0xD7, 0x1A, 0x01, 0x01, 0x34, 0x12, 0x00, 0xAC, 0x58};
 // SAMPLE seq 0xFFFF: tick 0x01020304, value_q8 {512 counts, -3 counts - 1/256, INT32_MAX, INT32_MIN},
-// sat_flags 0x0A, n_window 64, dropped 0xFFFF.
-const std::vector<uint8_t> kSampleSeq0xFFFF = {0xD7, 0x1A, 0x01, 0x07, 0xFF, 0xFF, 0x18, 0x04, 0x03, 0x02, 0x01,
-                                               0x00, 0x00, 0x02, 0x00, 0xFF, 0xFC, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF,
-                                               0x7F, 0x00, 0x00, 0x00, 0x80, 0x0A, 0x40, 0xFF, 0xFF, 0xAD, 0x32};
+// sat_flags 0x0A, n_window 64, dropped 0xFFFF, cal_state 1 (active), cal_id 0xBEEF.
+const std::vector<uint8_t> kSampleSeq0xFFFF = {0xD7, 0x1A, 0x02, 0x07, 0xFF, 0xFF, 0x1B, 0x04, 0x03, 0x02, 0x01, 0x00,
+                                               0x00, 0x02, 0x00, 0xFF, 0xFC, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x7F, 0x00,
+                                               0x00, 0x00, 0x80, 0x0A, 0x40, 0xFF, 0xFF, 0x01, 0xEF, 0xBE, 0x83, 0x7D};
+// A v1 VERSION as a v2 board answers a v1 HELLO (seq 5): proto_version 2, firmware 0.2.0, board 3, 10 bits,
+// 5000 mV, 250 kHz, 4 channels on ADC0..3, reset cause 1, no assertion; v1's 20 bytes and seed 0x59.
+const std::vector<uint8_t> kV1VersionSeq5 = {0xD7, 0x1A, 0x01, 0x02, 0x05, 0x00, 0x14, 0x02, 0x00, 0x02,
+                                             0x00, 0x03, 0x0A, 0x88, 0x13, 0x90, 0xD0, 0x03, 0x00, 0x04,
+                                             0x00, 0x01, 0x02, 0x03, 0x01, 0x00, 0x00, 0x7F, 0xCE};
 
 TEST(Encoder, HelloMatchesGoldenFrame) {
   uint8_t out[kMaxFrameSize] = {};
@@ -43,10 +50,32 @@ TEST(Encoder, SampleMatchesGoldenFrame) {
   p.sat_flags = 0x0A;
   p.n_window = 64;
   p.dropped = 0xFFFF;
+  p.cal_state = 1;
+  p.cal_id = 0xBEEF;
   uint8_t out[kMaxFrameSize] = {};
   const size_t n = encode_sample(p, 0xFFFF, out, sizeof(out));
   ASSERT_EQ(n, kSampleSeq0xFFFF.size());
   EXPECT_EQ(std::vector<uint8_t>(out, out + n), kSampleSeq0xFFFF);
+}
+
+TEST(Encoder, VersionOneFramesMatchTheirGoldenFrames) {
+  uint8_t out[kMaxFrameSize] = {};
+  size_t n = encode_legacy_hello(0x1234, out, sizeof(out));
+  EXPECT_EQ(std::vector<uint8_t>(out, out + n), kV1HelloSeq0x1234);
+  VersionPayload v{};
+  v.proto_version = 2;
+  v.fw_minor = 2;
+  v.board_id = 3;
+  v.adc_bits = 10;
+  v.vref_mv = 5000;
+  v.tick_hz = 250000;
+  v.channel_count = 4;
+  for (uint8_t c = 0; c < 4; ++c) v.adc_pin[c] = c;
+  v.reset_cause = 1;
+  v.cal_state = 1;  // v2's own fields are cut from the v1 frame
+  v.cal_id = 77;
+  n = encode_legacy_version(v, 5, out, sizeof(out));
+  EXPECT_EQ(std::vector<uint8_t>(out, out + n), kV1VersionSeq5);
 }
 
 // Feeds one frame and returns true if the decoder delivered it exactly at its last byte.
@@ -89,6 +118,9 @@ TEST(Encoder, RawRoundTripsWithRandomFields) { round_trip(MsgType::raw, encode_r
 TEST(Encoder, AckRoundTripsWithRandomFields) { round_trip(MsgType::ack, encode_ack, 6); }
 TEST(Encoder, NakRoundTripsWithRandomFields) { round_trip(MsgType::nak, encode_nak, 7); }
 TEST(Encoder, StatusRoundTripsWithRandomFields) { round_trip(MsgType::status, encode_status, 8); }
+TEST(Encoder, CalSetRoundTripsWithRandomFields) { round_trip(MsgType::cal_set, encode_cal_set, 9); }
+TEST(Encoder, CalGetRoundTripsWithRandomFields) { round_trip(MsgType::cal_get, encode_cal_get, 10); }
+TEST(Encoder, CalRoundTripsWithRandomFields) { round_trip(MsgType::cal, encode_cal, 11); }
 
 struct EmptyEncoder {
   MsgType type;
@@ -152,11 +184,11 @@ TEST(Encoder, EncodeFrameRefusesUnknownTypeAndWrongLength) {
   uint8_t payload[kMaxPayload] = {};
   uint8_t out[kMaxFrameSize + 8] = {};
   EXPECT_EQ(encode_frame(0x00, 0, payload, 0, out, sizeof(out)), 0u);
-  EXPECT_EQ(encode_frame(0x0D, 0, payload, 0, out, sizeof(out)), 0u);
+  EXPECT_EQ(encode_frame(0x10, 0, payload, 0, out, sizeof(out)), 0u);
   EXPECT_EQ(encode_frame(type_id(MsgType::hello), 0, payload, 1, out, sizeof(out)), 0u);
-  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 23, out, sizeof(out)), 0u);
+  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 26, out, sizeof(out)), 0u);
   EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, kMaxPayload, out, sizeof(out)), 0u);
-  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 24, out, sizeof(out)), frame_size(24));
+  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 27, out, sizeof(out)), frame_size(27));
 }
 
 TEST(Encoder, EncodeFrameEqualsTypedEncoder) {

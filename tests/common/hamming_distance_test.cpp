@@ -1,4 +1,4 @@
-// Hamming distance of the frame check at the longest frame of protocol v1 (SAMPLE), the figure
+// Hamming distance of the frame check at the longest frame of protocol v2 (SAMPLE), the figure
 // docs/protocol.md §7 quotes: every error of 1-3 bits is detected, and some 4-bit errors are not.
 //
 // The CRC is linear: flipping a set of bits is undetected exactly when the XOR of the per-bit "syndromes"

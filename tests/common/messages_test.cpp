@@ -42,7 +42,10 @@ TEST(Messages, VersionLayoutMatchesSpecOffsets) {
   p.adc_pin[3] = 3;
   p.reset_cause = 0x08;
   p.assert_line = 0x0102;
-  const Bytes expected = {1, 2, 3, 4, 5, 10, 0x88, 0x13, 0x90, 0xD0, 0x03, 0x00, 4, 0, 1, 2, 3, 0x08, 0x02, 0x01};
+  p.cal_state = 2;
+  p.cal_id = 0xA1B2;
+  const Bytes expected = {1, 2, 3, 4, 5, 10,   0x88, 0x13, 0x90, 0xD0, 0x03, 0x00,
+                          4, 0, 1, 2, 3, 0x08, 0x02, 0x01, 2,    0xB2, 0xA1};
   EXPECT_EQ(serialized(p, kVersionPayloadSize), expected);
 }
 
@@ -91,8 +94,24 @@ TEST(Messages, StatusLayoutMatchesSpecOffsets) {
   p.rx_overflow = 0x0606;
   p.tx_overflow = 0x0707;
   p.dropped = 0xFFFF;
-  const Bytes expected = {0x44, 0x33, 0x22, 0x11, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 0xFF, 0xFF};
+  p.cal_state = 3;
+  p.cal_id = 0x0102;
+  const Bytes expected = {0x44, 0x33, 0x22, 0x11, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 0xFF, 0xFF, 3, 2, 1};
   EXPECT_EQ(serialized(p, kStatusPayloadSize), expected);
+}
+
+TEST(Messages, CalLayoutMatchesSpecOffsets) {
+  CalPayload p{};
+  p.cal_id = 0x1234;
+  p.channel = 3;
+  p.flags = kCalFlagZero;
+  p.c1_q8 = -2;          // 0xFFFFFFFE
+  p.c2_q8 = 0x00020000;  // 512 counts
+  p.t_ms = 411000;       // 0x00064578
+  const Bytes expected = {0x34, 0x12, 3, 1, 0xFE, 0xFF, 0xFF, 0xFF, 0x00, 0x00, 0x02, 0x00, 0x78, 0x45, 0x06, 0x00};
+  EXPECT_EQ(serialized(p, kCalPayloadSize), expected);
+  CalGetPayload g{2};
+  EXPECT_EQ(serialized(g, kCalGetPayloadSize), (Bytes{2}));
 }
 
 TEST(Messages, SampleNegativeValuesAreTwosComplement) {

@@ -1,4 +1,4 @@
-// Message table (msg_table.hpp) against protocol v1 as specified in docs/protocol.md §2-§3: ids, lengths,
+// Message table (msg_table.hpp) against protocol v2 as specified in docs/protocol.md §2-§3: ids, lengths,
 // directions, and each CRC seed recomputed from its definition string.
 #include "driftlab/proto/msg_table.hpp"
 
@@ -26,23 +26,27 @@ struct Expected {
 // Written from the protocol contract, independently of kMsgTable.
 const Expected kContract[] = {
     {0x01, "HELLO", 0, Direction::host_to_fw, "HELLO"},
-    {0x02, "VERSION", 20, Direction::fw_to_host,
+    {0x02, "VERSION", 23, Direction::fw_to_host,
      "VERSION u8 proto_version u8 fw_major u8 fw_minor u8 fw_patch u8 board_id u8 adc_bits u16 vref_mv "
-     "u32 tick_hz u8 channel_count u8[4] adc_pin u8 reset_cause u16 assert_line"},
+     "u32 tick_hz u8 channel_count u8[4] adc_pin u8 reset_cause u16 assert_line u8 cal_state u16 cal_id"},
     {0x03, "CONFIG_GET", 0, Direction::host_to_fw, "CONFIG_GET"},
     {0x04, "CONFIG_SET", 7, Direction::host_to_fw,
      "CONFIG_SET u16 output_period_ms u8 conversions_per_output u8 window u8 fit_order u8 mode u8 raw"},
     {0x05, "CONFIG", 7, Direction::fw_to_host,
      "CONFIG u16 output_period_ms u8 conversions_per_output u8 window u8 fit_order u8 mode u8 raw"},
     {0x06, "POLL", 0, Direction::host_to_fw, "POLL"},
-    {0x07, "SAMPLE", 24, Direction::fw_to_host, "SAMPLE u32 tick i32[4] value_q8 u8 sat_flags u8 n_window u16 dropped"},
+    {0x07, "SAMPLE", 27, Direction::fw_to_host,
+     "SAMPLE u32 tick i32[4] value_q8 u8 sat_flags u8 n_window u16 dropped u8 cal_state u16 cal_id"},
     {0x08, "RAW", 12, Direction::fw_to_host, "RAW u32 tick u16[4] code"},
     {0x09, "ACK", 3, Direction::fw_to_host, "ACK u8 acked_type u16 acked_seq"},
     {0x0A, "NAK", 5, Direction::fw_to_host, "NAK u8 nacked_type u16 nacked_seq u8 status u8 field"},
     {0x0B, "STATUS_GET", 0, Direction::host_to_fw, "STATUS_GET"},
-    {0x0C, "STATUS", 20, Direction::fw_to_host,
+    {0x0C, "STATUS", 23, Direction::fw_to_host,
      "STATUS u32 uptime_ticks u16 rx_frames u16 rx_bad_crc u16 rx_bad_length u16 rx_unknown_type "
-     "u16 rx_resync_bytes u16 rx_overflow u16 tx_overflow u16 dropped"},
+     "u16 rx_resync_bytes u16 rx_overflow u16 tx_overflow u16 dropped u8 cal_state u16 cal_id"},
+    {0x0D, "CAL_SET", 16, Direction::host_to_fw, "CAL_SET u16 cal_id u8 channel u8 flags i32 c1_q8 i32 c2_q8 u32 t_ms"},
+    {0x0E, "CAL_GET", 1, Direction::host_to_fw, "CAL_GET u8 channel"},
+    {0x0F, "CAL", 16, Direction::fw_to_host, "CAL u16 cal_id u8 channel u8 flags i32 c1_q8 i32 c2_q8 u32 t_ms"},
 };
 
 uint8_t seed_of(const char* definition) {
@@ -89,7 +93,7 @@ TEST(MsgTable, PayloadsFitTheContractMaximumOf32Bytes) {
 
 TEST(MsgTable, UnknownIdsAreNotFound) {
   MsgSpec spec{};
-  for (int id : {0x00, 0x0D, 0x7F, 0x80, 0xFF}) {
+  for (int id : {0x00, 0x10, 0x7F, 0x80, 0xFF}) {
     EXPECT_EQ(find_msg(static_cast<uint8_t>(id)), nullptr) << id;
     EXPECT_FALSE(find_spec(static_cast<uint8_t>(id), &spec)) << id;
   }

@@ -33,6 +33,8 @@ inline void randomize(std::mt19937& rng, VersionPayload* p) {
   }
   p->reset_cause = random_int<uint8_t>(rng);
   p->assert_line = random_int<uint16_t>(rng);
+  p->cal_state = random_int<uint8_t>(rng);
+  p->cal_id = random_int<uint16_t>(rng);
 }
 
 inline void randomize(std::mt19937& rng, ConfigPayload* p) {
@@ -52,6 +54,8 @@ inline void randomize(std::mt19937& rng, SamplePayload* p) {
   p->sat_flags = random_int<uint8_t>(rng);
   p->n_window = random_int<uint8_t>(rng);
   p->dropped = random_int<uint16_t>(rng);
+  p->cal_state = random_int<uint8_t>(rng);
+  p->cal_id = random_int<uint16_t>(rng);
 }
 
 inline void randomize(std::mt19937& rng, RawPayload* p) {
@@ -83,7 +87,20 @@ inline void randomize(std::mt19937& rng, StatusPayload* p) {
   p->rx_overflow = random_int<uint16_t>(rng);
   p->tx_overflow = random_int<uint16_t>(rng);
   p->dropped = random_int<uint16_t>(rng);
+  p->cal_state = random_int<uint8_t>(rng);
+  p->cal_id = random_int<uint16_t>(rng);
 }
+
+inline void randomize(std::mt19937& rng, CalPayload* p) {
+  p->cal_id = random_int<uint16_t>(rng);
+  p->channel = random_int<uint8_t>(rng);
+  p->flags = random_int<uint8_t>(rng);
+  p->c1_q8 = random_int<int32_t>(rng);
+  p->c2_q8 = random_int<int32_t>(rng);
+  p->t_ms = random_int<uint32_t>(rng);
+}
+
+inline void randomize(std::mt19937& rng, CalGetPayload* p) { p->channel = random_int<uint8_t>(rng); }
 
 inline void expect_fields_equal(const VersionPayload& a, const VersionPayload& b) {
   EXPECT_EQ(a.proto_version, b.proto_version);
@@ -100,6 +117,8 @@ inline void expect_fields_equal(const VersionPayload& a, const VersionPayload& b
   }
   EXPECT_EQ(a.reset_cause, b.reset_cause);
   EXPECT_EQ(a.assert_line, b.assert_line);
+  EXPECT_EQ(a.cal_state, b.cal_state);
+  EXPECT_EQ(a.cal_id, b.cal_id);
 }
 
 inline void expect_fields_equal(const ConfigPayload& a, const ConfigPayload& b) {
@@ -119,6 +138,8 @@ inline void expect_fields_equal(const SamplePayload& a, const SamplePayload& b) 
   EXPECT_EQ(a.sat_flags, b.sat_flags);
   EXPECT_EQ(a.n_window, b.n_window);
   EXPECT_EQ(a.dropped, b.dropped);
+  EXPECT_EQ(a.cal_state, b.cal_state);
+  EXPECT_EQ(a.cal_id, b.cal_id);
 }
 
 inline void expect_fields_equal(const RawPayload& a, const RawPayload& b) {
@@ -150,7 +171,20 @@ inline void expect_fields_equal(const StatusPayload& a, const StatusPayload& b) 
   EXPECT_EQ(a.rx_overflow, b.rx_overflow);
   EXPECT_EQ(a.tx_overflow, b.tx_overflow);
   EXPECT_EQ(a.dropped, b.dropped);
+  EXPECT_EQ(a.cal_state, b.cal_state);
+  EXPECT_EQ(a.cal_id, b.cal_id);
 }
+
+inline void expect_fields_equal(const CalPayload& a, const CalPayload& b) {
+  EXPECT_EQ(a.cal_id, b.cal_id);
+  EXPECT_EQ(a.channel, b.channel);
+  EXPECT_EQ(a.flags, b.flags);
+  EXPECT_EQ(a.c1_q8, b.c1_q8);
+  EXPECT_EQ(a.c2_q8, b.c2_q8);
+  EXPECT_EQ(a.t_ms, b.t_ms);
+}
+
+inline void expect_fields_equal(const CalGetPayload& a, const CalGetPayload& b) { EXPECT_EQ(a.channel, b.channel); }
 
 }  // namespace testing
 }  // namespace proto

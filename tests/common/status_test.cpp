@@ -18,7 +18,8 @@ TEST(Status, NumbersAreTheContractOnes) {
   EXPECT_EQ(static_cast<int>(Status::bad_version), 4);
   EXPECT_EQ(static_cast<int>(Status::not_allowed), 5);
   EXPECT_EQ(static_cast<int>(Status::busy), 6);
-  EXPECT_EQ(kStatusCount, 7);
+  EXPECT_EQ(static_cast<int>(Status::not_stored), 7);
+  EXPECT_EQ(kStatusCount, 8);
 }
 
 TEST(Status, EveryNumberHasADistinctNameAndUnknownOnesHaveNone) {

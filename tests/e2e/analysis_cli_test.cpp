@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "driftlab/proto/wire.hpp"
 #include "e2e_support.hpp"
 #include "firmware/core/version.hpp"
 
@@ -287,8 +288,8 @@ TEST(AnalysisCli, ReportOpensWithTheRecordingOfAHilLog) {
         EXPECT_NE(page.find(row), std::string::npos) << row << "\n" << page;
     // The firmware in the loop reports its own version in VERSION, which the log keeps.
     const std::string firmware = "<tr><th>firmware</th><td>version " + std::to_string(fw::kFwMajor) + "." +
-                                 std::to_string(fw::kFwMinor) + "." + std::to_string(fw::kFwPatch) +
-                                 ", protocol 1</td></tr>";
+                                 std::to_string(fw::kFwMinor) + "." + std::to_string(fw::kFwPatch) + ", protocol " +
+                                 std::to_string(proto::kProtocolVersion) + "</td></tr>";
     EXPECT_NE(page.find(firmware), std::string::npos) << firmware << "\n" << page;
     EXPECT_EQ(page.find("<th>start</th>"), std::string::npos);  // hil runs in virtual time: no start to show
 }

@@ -274,15 +274,32 @@ TEST(RecordErrors, ABoardOfAnotherProtocolVersionIsRefusedByNumber) {
     TempDir dir("version");
     FakeDevice future([](const std::uint8_t*, std::size_t) {
         proto::VersionPayload v{};
-        v.proto_version = 2;
+        v.proto_version = 3;
         v.tick_hz = 250000;
         std::vector<std::uint8_t> out(64);
         out.resize(proto::encode_version(v, 0, out.data(), out.size()));
-        out[proto::kOffsetVersion] = 2;  // a version-2 frame header, as a newer firmware would send
+        out[proto::kOffsetVersion] = 3;  // a version-3 frame header, as a newer firmware would send
         return out;
     });
     const RunResult r = run_driftlab({"record", "--port", future.path(), "-o", dir.file("rec.csv")}, dir.path());
-    expect_refused(r, "protocol version 2", dir);
+    expect_refused(r, "protocol version 3", dir);
+}
+
+TEST(RecordErrors, AVersionOneBoardInPollModeIsFoundByItsOwnHelloAndNamed) {
+    // A v1 board ignores v2 frames and answers only a v1 HELLO, with its v1 VERSION.
+    TempDir dir("version1");
+    FakeDevice old([](const std::uint8_t* bytes, std::size_t n) {
+        std::vector<std::uint8_t> out;
+        if (n < proto::kFrameOverhead || bytes[proto::kOffsetVersion] != proto::kLegacyProtocolVersion) return out;
+        proto::VersionPayload v{};
+        v.proto_version = 1;
+        v.tick_hz = 250000;
+        out.resize(proto::kMaxFrameSize);
+        out.resize(proto::encode_legacy_version(v, 0, out.data(), out.size()));
+        return out;
+    });
+    const RunResult r = run_driftlab({"record", "--port", old.path(), "-o", dir.file("rec.csv")}, dir.path());
+    expect_refused(r, "the board speaks protocol version 1; this driftlab speaks version 2", dir);
 }
 
 namespace driftlab::e2e {

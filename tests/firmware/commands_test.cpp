@@ -154,7 +154,7 @@ TEST(Commands, WrongLengthIsBadLengthForEveryHostType) {
 }
 
 TEST(Commands, UnknownTypeIsUnknownType) {
-  for (uint8_t id : {uint8_t{0x00}, uint8_t{0x0D}, uint8_t{0x7F}, uint8_t{0xFF}}) {
+  for (uint8_t id : {uint8_t{0x00}, uint8_t{0x10}, uint8_t{0x7F}, uint8_t{0xFF}}) {
     expect_nak(decide(id, 5, nullptr, 0, OutputMode::poll), id, 5, Status::unknown_type, proto::kNakFieldNone);
   }
 }

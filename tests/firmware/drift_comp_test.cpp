@@ -23,7 +23,8 @@ double reference_correction_q8(const ChannelModel& m, double t_s) {
 }
 
 TEST(DriftComp, TheStepConstantHas30SignificantBitsWhateverT) {
-  for (uint32_t t_ms : {kCalTMinMs, kCalTMinMs + 1, 411000U, 953000U, 3600000U, 33554431U, kCalTMaxMs}) {
+  for (uint32_t t_ms :
+       {proto::kCalTMinMs, proto::kCalTMinMs + 1, 411000U, 953000U, 3600000U, 33554431U, proto::kCalTMaxMs}) {
     const double x = (65536.0 / kTickHz) / (t_ms / 1000.0);
     const StepDecay s = step_decay(t_ms);
     EXPECT_GE(s.mantissa, 1UL << 29) << "T = " << t_ms << " ms";
@@ -71,19 +72,19 @@ TEST(DriftComp, TableOneStaysWithinHalfAnLsbOfTheDoubleReferenceOver10Hours) {
 
 TEST(DriftComp, TheRangesExtremesStayWithinHalfAnLsbOver10Hours) {
   // The largest amplitude with the shortest and the longest time constant, both signs, an odd period.
-  const ChannelModel extremes[kChannelCount] = {{kCalCountsMaxQ8, 0, kCalTMinMs, false},
-                                                {-kCalCountsMaxQ8, 0, kCalTMinMs, false},
-                                                {kCalCountsMaxQ8, 0, kCalTMaxMs, false},
-                                                {-kCalCountsMaxQ8, 0, kCalTMaxMs, false}};
+  const ChannelModel extremes[kChannelCount] = {{proto::kCalCountsMaxQ8, 0, proto::kCalTMinMs, false},
+                                                {-proto::kCalCountsMaxQ8, 0, proto::kCalTMinMs, false},
+                                                {proto::kCalCountsMaxQ8, 0, proto::kCalTMaxMs, false},
+                                                {-proto::kCalCountsMaxQ8, 0, proto::kCalTMaxMs, false}};
   const double worst = worst_error_q8(extremes, 10.0, 24977);
   EXPECT_LE(worst, 0.5 + kFixedPointSlackQ8);
 }
 
 TEST(DriftComp, ACalibrationLoadedHoursAfterTheResetStartsAtTheRightPointOfTheExponential) {
-  const ChannelModel models[kChannelCount] = {{kCalCountsMaxQ8, 0, 600000, false},
+  const ChannelModel models[kChannelCount] = {{proto::kCalCountsMaxQ8, 0, 600000, false},
                                               {-100 * 256, 0, 3600000, false},
-                                              {kCalCountsMaxQ8, 0, kCalTMaxMs, false},
-                                              {50 * 256, 0, kCalTMinMs, false}};
+                                              {proto::kCalCountsMaxQ8, 0, proto::kCalTMaxMs, false},
+                                              {50 * 256, 0, proto::kCalTMinMs, false}};
   // Loaded 3 h in: past 40 000 grid steps, found by squaring.
   const double worst = worst_error_q8(models, 6.0, 25000, static_cast<uint32_t>(3.0 * 3600.0 * kTickHz));
   EXPECT_LE(worst, 0.5 + kFixedPointSlackQ8);

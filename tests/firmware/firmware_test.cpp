@@ -44,7 +44,7 @@ TEST(Firmware, HelloIsAnsweredWithVersionDescribingTheBoard) {
   ASSERT_TRUE(is(frames[0], MsgType::version));
   EXPECT_EQ(frames[0].seq, 0);
   const auto v = parse_as<proto::VersionPayload>(frames[0]);
-  EXPECT_EQ(v.proto_version, 1);
+  EXPECT_EQ(v.proto_version, 2);
   EXPECT_EQ(v.adc_bits, 10);
   EXPECT_EQ(v.vref_mv, 5000);
   EXPECT_EQ(v.tick_hz, 250000U);
@@ -391,10 +391,11 @@ TEST(Firmware, RejectedFramesGetNoReplyAndAreCountedInStatus) {
   frame[n - 1] ^= 0x01;
   rig.send_bytes(frame, n);
   // A CONFIG_SET header announcing 6 payload bytes instead of 7.
-  const uint8_t short_config[] = {proto::kSync0, proto::kSync1, 1, proto::type_id(MsgType::config_set), 2, 0, 6};
+  const uint8_t short_config[] = {
+      proto::kSync0, proto::kSync1, proto::kProtocolVersion, proto::type_id(MsgType::config_set), 2, 0, 6};
   rig.send_bytes(short_config, sizeof short_config);
   // An unknown type.
-  const uint8_t unknown[] = {proto::kSync0, proto::kSync1, 1, 0x3C, 3, 0, 0};
+  const uint8_t unknown[] = {proto::kSync0, proto::kSync1, proto::kProtocolVersion, 0x3C, 3, 0, 0};
   rig.send_bytes(unknown, sizeof unknown);
   EXPECT_TRUE(rig.receive().empty());
   rig.send_empty(MsgType::status_get);
@@ -411,7 +412,7 @@ TEST(Firmware, RejectedFramesGetNoReplyAndAreCountedInStatus) {
 
 TEST(Firmware, FramesThatDoNotFitTheTxRingAreCountedAndLeaveASeqGap) {
   NativeRig rig;
-  // STATUS frames are 29 bytes: 4 fit the 128-byte ring, the next 6 are lost whole.
+  // STATUS frames are 32 bytes: 4 fill the 128-byte ring, the next 6 are lost whole.
   for (int i = 0; i < 10; ++i) {
     rig.send_empty(MsgType::status_get);
   }
@@ -424,7 +425,7 @@ TEST(Firmware, FramesThatDoNotFitTheTxRingAreCountedAndLeaveASeqGap) {
   frames = rig.receive();
   ASSERT_EQ(frames.size(), 1U);
   EXPECT_EQ(frames[0].seq, 10);
-  EXPECT_EQ(parse_as<proto::StatusPayload>(frames[0]).tx_overflow, 6 * 29);
+  EXPECT_EQ(parse_as<proto::StatusPayload>(frames[0]).tx_overflow, 6 * 32);
   EXPECT_EQ(rig.host_decoder_counters().bad_crc, 0U) << "the firmware never sends a partial frame";
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -29,6 +30,14 @@ class NativeRig {
  public:
   NativeRig() { firmware.start(); }
 
+  /// The board after a reset of cause `reset` that kept `eeprom` (kEepromBytes, another rig's board's): a power cycle
+  /// or a warm restart.
+  NativeRig(const uint8_t* eeprom, const ResetInfo& reset) {
+    std::copy(eeprom, eeprom + kEepromBytes, board.eeprom());
+    board.set_reset_info(reset);
+    firmware.start();
+  }
+
   /// Sends bytes as the UART delivers them: one at a time, each followed by a main-loop pass.
   void send_bytes(const uint8_t* bytes, size_t n) {
     for (size_t i = 0; i < n; ++i) {
@@ -50,6 +59,20 @@ class NativeRig {
   void send_config(const proto::ConfigPayload& p) {
     uint8_t frame[proto::kMaxFrameSize];
     size_t n = proto::encode_config_set(p, host_seq_++, frame, sizeof frame);
+    ASSERT_GT(n, 0U);
+    send_bytes(frame, n);
+  }
+
+  void send_cal(const proto::CalPayload& p) {
+    uint8_t frame[proto::kMaxFrameSize];
+    size_t n = proto::encode_cal_set(p, host_seq_++, frame, sizeof frame);
+    ASSERT_GT(n, 0U);
+    send_bytes(frame, n);
+  }
+
+  void send_cal_get(uint8_t channel) {
+    uint8_t frame[proto::kMaxFrameSize];
+    size_t n = proto::encode_cal_get(proto::CalGetPayload{channel}, host_seq_++, frame, sizeof frame);
     ASSERT_GT(n, 0U);
     send_bytes(frame, n);
   }

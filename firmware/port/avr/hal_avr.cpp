@@ -11,6 +11,7 @@
 #include "firmware/port/avr/critical_avr.hpp"
 #include "firmware/port/avr/isr_shared_avr.hpp"
 
+#include <avr/eeprom.h>
 #include <avr/interrupt.h>
 #include <avr/io.h>
 #include <avr/sleep.h>
@@ -165,6 +166,14 @@ uint16_t hal_rx_overflow_count() {
 }
 
 ResetInfo hal_reset_info() { return g_reset_info; }
+
+void hal_eeprom_read(uint16_t address, uint8_t* out, uint8_t count) {
+  eeprom_read_block(out, reinterpret_cast<const void*>(address), count);
+}
+
+void hal_eeprom_write(uint16_t address, const uint8_t* bytes, uint8_t count) {
+  eeprom_update_block(bytes, reinterpret_cast<void*>(address), count);
+}
 
 void hal_assert_failed(uint16_t line) {
   cli();

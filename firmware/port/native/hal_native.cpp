@@ -28,7 +28,21 @@ void hal_idle() {}
 
 uint16_t hal_rx_overflow_count() { return board().rx_overflow_count(); }
 
-ResetInfo hal_reset_info() { return ResetInfo{kResetPowerOn, 0}; }
+ResetInfo hal_reset_info() { return board().reset_info(); }
+
+void hal_eeprom_read(uint16_t address, uint8_t* out, uint8_t count) {
+  DRIFTLAB_ASSERT(address + count <= kEepromBytes);
+  for (uint8_t i = 0; i < count; ++i) {
+    out[i] = board().eeprom()[address + i];
+  }
+}
+
+void hal_eeprom_write(uint16_t address, const uint8_t* bytes, uint8_t count) {
+  DRIFTLAB_ASSERT(address + count <= kEepromBytes);
+  for (uint8_t i = 0; i < count; ++i) {
+    board().eeprom()[address + i] = bytes[i];
+  }
+}
 
 void hal_assert_failed(uint16_t line) {
   fprintf(stderr, "driftlab firmware: DRIFTLAB_ASSERT failed at firmware line %u\n", static_cast<unsigned>(line));

@@ -17,10 +17,15 @@ NativeBoard::NativeBoard()
       next_trigger_ticks_(0),
       time_ticks_(0),
       rx_overflow_bytes_(0),
+      reset_info_{kResetPowerOn, 0},
+      eeprom_(),
       adc_ring_(),
       rx_ring_(),
       tx_ring_(),
       previous_(t_current_board) {
+  for (uint16_t i = 0; i < kEepromBytes; ++i) {
+    eeprom_[i] = 0xFF;
+  }
   t_current_board = this;
 }
 

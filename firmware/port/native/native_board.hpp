@@ -90,6 +90,15 @@ class NativeBoard {
     service(firmware);
   }
 
+  // ---- What outlives a reset ----
+  /// The EEPROM, erased (0xFF) at construction. A test moves it into the next board to model a reset or a power
+  /// cycle (a Firmware constructed afresh on a board holding the old contents).
+  uint8_t* eeprom() { return eeprom_; }
+  const uint8_t* eeprom() const { return eeprom_; }
+  /// What hal_reset_info() reports: power-on unless a test models another reset.
+  void set_reset_info(const ResetInfo& info) { reset_info_ = info; }
+  const ResetInfo& reset_info() const { return reset_info_; }
+
   // ---- Used by the HAL functions of this port (hal_native.cpp) ----
   void on_hal_init(const AdcSchedule& schedule);
   uint8_t on_hal_uart_write(const uint8_t* bytes, uint8_t count);
@@ -105,6 +114,8 @@ class NativeBoard {
   uint64_t next_trigger_ticks_;
   uint64_t time_ticks_;
   uint16_t rx_overflow_bytes_;
+  ResetInfo reset_info_;
+  uint8_t eeprom_[kEepromBytes];
   SpscRing<Conversion, kAdcRingCapacity> adc_ring_;
   SpscRing<uint8_t, kRxRingCapacity> rx_ring_;
   SpscRing<uint8_t, kTxRingCapacity> tx_ring_;

@@ -37,14 +37,16 @@ public:
         v.vref_mv = 5000;
         v.tick_hz = tick_hz;
         v.channel_count = kChannelCount;
+        v.cal_state = cal_state_;
+        v.cal_id = cal_id_;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_version(v, s, o, n); });
     }
     void config(std::uint8_t raw = 0, std::uint8_t window = 8) {
         const proto::ConfigPayload c{100, 8, window, 0, static_cast<std::uint8_t>(proto::OutputMode::stream), raw};
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_config(c, s, o, n); });
     }
-    void ack() {
-        const proto::AckPayload k{static_cast<std::uint8_t>(proto::MsgType::config_set), 7};
+    void ack(proto::MsgType acked = proto::MsgType::config_set) {
+        const proto::AckPayload k{static_cast<std::uint8_t>(acked), 7};
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_ack(k, s, o, n); });
     }
     void status(std::uint32_t uptime) {
@@ -58,6 +60,8 @@ public:
         for (auto& v : p.value_q8) v = n_window ? 500 * 256 : 0;
         p.value_q8[0] = n_window ? gyro_q8 : 0;
         p.n_window = n_window;
+        p.cal_state = cal_state_;
+        p.cal_id = cal_id_;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_sample(p, s, o, n); });
     }
     void raw(std::uint32_t tick, std::uint16_t gyro_code) {
@@ -66,6 +70,11 @@ public:
         for (auto& c : r.code) c = 500;
         r.code[0] = gyro_code;
         send([&](std::uint16_t s, std::uint8_t* o, std::size_t n) { return proto::encode_raw(r, s, o, n); });
+    }
+    /// The calibration the board reports in the VERSIONs and SAMPLEs that follow.
+    void calibration(proto::CalState state, std::uint16_t id) {
+        cal_state_ = static_cast<std::uint8_t>(state);
+        cal_id_ = id;
     }
     void skip(std::uint64_t frames) { seq_ = static_cast<std::uint16_t>(seq_ + frames); }
     /// The next frame reuses the seq of the one `frames` back (a forged or repeated frame).
@@ -77,6 +86,8 @@ private:
     LogAssembler& a_;
     std::uint16_t seq_ = 0;
     std::uint64_t t_us_ = 0;
+    std::uint8_t cal_state_ = 0;
+    std::uint16_t cal_id_ = 0;
 };
 
 inline std::string temp_log(const std::string& name) {

@@ -180,3 +180,47 @@ TEST(LogAssembler, ASampleOfAnotherWindowEndsTheRowsWhenTheAckWasLost) {
     ASSERT_EQ(early.size(), 1u);
     EXPECT_EQ(wider.other_window_samples, 1u);
 }
+
+namespace driftlab::host::io::test_board {
+namespace {
+
+// A board compensating with calibration 7 at the handshake: its rows are kept, the metadata says so; a SAMPLE of
+// another calibration state (a warm restart: settled) ends the rows, and so does the ACK of a CAL_SET the recording
+// did not send.
+TEST(LogAssembler, ASampleOfAnotherCalibrationOrAForeignCalSetAckEndsTheRows) {
+    for (const bool by_ack : {false, true}) {
+        const std::string path = temp_log(by_ack ? "cal_ack.csv" : "cal_sample.csv");
+        AssemblyStats stats;
+        {
+            LogAssembler a(path, {{"port", "/dev/pts/9"}, {"capture", "cal.cap"}});
+            Board b(a);
+            b.calibration(proto::CalState::active, 7);
+            b.version();
+            b.config();
+            b.event("start");
+            b.sample(1 * kTicksPerOutput);
+            b.sample(2 * kTicksPerOutput);
+            b.sample(3 * kTicksPerOutput);
+            if (by_ack) {
+                b.ack(proto::MsgType::cal_set);
+            } else {
+                b.calibration(proto::CalState::settled, 7);
+            }
+            b.sample(4 * kTicksPerOutput);
+            b.sample(5 * kTicksPerOutput);
+            a.finish();
+            stats = a.stats();
+        }
+        const LogData log = read_log(path);
+        std::filesystem::remove(path);
+        EXPECT_EQ(log.metadata.get("cal_state"), "active");
+        EXPECT_EQ(log.metadata.get_int("cal_id"), 7);
+        EXPECT_EQ(log.size(), 3u) << (by_ack ? "ack" : "sample");
+        EXPECT_EQ(stats.other_calibration_samples, by_ack ? 0u : 1u);
+        EXPECT_EQ(stats.foreign_config_acks, by_ack ? 1u : 0u);
+        EXPECT_TRUE(stats.board_reconfigured());
+    }
+}
+
+}  // namespace
+}  // namespace driftlab::host::io::test_board

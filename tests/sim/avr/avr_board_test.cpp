@@ -34,10 +34,10 @@ CodeSource paper_model_source(std::uint64_t seed) {
 
 // The AVR answers the same conversion a little later than the native board: the ADC takes 104 us after the
 // trigger and UDR0 bytes leave one at a time at the UART's rate (the native board hands a frame over at once). So the
-// AVR runs kAvrTailS longer and may have sent the frames of at most one more output (SAMPLE + RAW = 54 bytes);
+// AVR runs kAvrTailS longer and may have sent the frames of at most one more output (SAMPLE + RAW = 57 bytes);
 // everything the native board sent must be there, byte for byte, in the same order.
 constexpr double kAvrTailS = 0.020;
-constexpr std::size_t kOneOutputBytes = 54;
+constexpr std::size_t kOneOutputBytes = 57;
 
 void expect_same_stream(const std::vector<std::uint8_t>& avr, const std::vector<std::uint8_t>& native) {
     const std::size_t common = std::min(avr.size(), native.size());
@@ -187,9 +187,9 @@ TEST_F(AvrTwin, MalformedAndOutOfRangeCommandsAreNakedAndChangeNothing) {
     std::uint8_t ack[proto::kMaxFrameSize];
     at(frame_of(proto::encode_ack(proto::AckPayload{1, 2}, seq++, ack, sizeof ack), ack));  // firmware-to-host type
     // Framing errors are not answered (the decoder cannot trust the header); the firmware counts them.
-    at({0xD7, 0x1A, 0x01, 0x04, 0x07, 0x00, 0x06, 100, 0, 25, 25, 0, 0, 0x00, 0x00});  // CONFIG_SET, len 6
-    at({0xD7, 0x1A, 0x01, 0x7E, 0x08, 0x00, 0x00, 0x00, 0x00});                        // unknown type 0x7E
-    at({0xD7, 0x1A, 0x01, 0x06, 0x09, 0x00, 0x00, 0x12, 0x34});                        // POLL, bad CRC
+    at({0xD7, 0x1A, 0x02, 0x04, 0x07, 0x00, 0x06, 100, 0, 25, 25, 0, 0, 0x00, 0x00});  // CONFIG_SET, len 6
+    at({0xD7, 0x1A, 0x02, 0x7E, 0x08, 0x00, 0x00, 0x00, 0x00});                        // unknown type 0x7E
+    at({0xD7, 0x1A, 0x02, 0x06, 0x09, 0x00, 0x00, 0x12, 0x34});                        // POLL, bad CRC
     at(empty_frame(proto::MsgType::status_get, seq++));
     at(empty_frame(proto::MsgType::config_get, seq++));
 

@@ -54,8 +54,8 @@ TEST(StreamMode, RawModeKeepsAsManyRowsAsSmoothedOnly) {
     EXPECT_EQ(raw.rows.size(), plain.rows.size());
 }
 
-// The paper's 9600-baud link carries 960 bytes/s: a SAMPLE frame (33 bytes) every 35 ms fits (943 bytes/s), and the
-// run logs every output; every 34 ms does not (971); with RAW (54 bytes) 57 ms fits and 56 ms does not. Beyond it
+// The paper's 9600-baud link carries 960 bytes/s: a SAMPLE frame (36 bytes) every 38 ms fits (947 bytes/s), and the
+// run logs every output; every 37 ms does not (973); with RAW (57 bytes) 60 ms fits and 59 ms does not. Beyond it
 // outputs would queue without end and the run's time would end before most arrived: link_capacity_refusal says so,
 // with the figures, and `driftlab hil` refuses the run (its test: HilCli.AnOutputRateTheLinkCannotCarry...).
 TEST(StreamMode, AnOutputRateBeyondTheLinkIsRefused) {
@@ -64,14 +64,14 @@ TEST(StreamMode, AnOutputRateBeyondTheLinkIsRefused) {
         o.model.firmware.conversions_per_output = 8;
         return o;
     };
-    EXPECT_FALSE(link_capacity_refusal(options(0.035, false).model));
-    EXPECT_GE(run_into_memory(options(0.035, false)).rows.size(), 56u);
-    EXPECT_TRUE(link_capacity_refusal(options(0.034, false).model));
-    EXPECT_FALSE(link_capacity_refusal(options(0.057, true).model));
-    EXPECT_GE(run_into_memory(options(0.057, true)).rows.size(), 34u);
-    const auto refusal = link_capacity_refusal(options(0.056, true).model);
+    EXPECT_FALSE(link_capacity_refusal(options(0.038, false).model));
+    EXPECT_GE(run_into_memory(options(0.038, false)).rows.size(), 51u);  // 52 outputs in 2 s
+    EXPECT_TRUE(link_capacity_refusal(options(0.037, false).model));
+    EXPECT_FALSE(link_capacity_refusal(options(0.060, true).model));
+    EXPECT_GE(run_into_memory(options(0.060, true)).rows.size(), 32u);  // 33 outputs
+    const auto refusal = link_capacity_refusal(options(0.059, true).model);
     ASSERT_TRUE(refusal);
-    EXPECT_NE(refusal->find("cannot carry 54 bytes (SAMPLE + RAW) every 56 ms"), std::string::npos) << *refusal;
+    EXPECT_NE(refusal->find("cannot carry 57 bytes (SAMPLE + RAW) every 59 ms"), std::string::npos) << *refusal;
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Decoder: byte-at-a-time, allocation-free parser of protocol v1 frames with reject counters.
+// Decoder: byte-at-a-time, allocation-free parser of protocol v2 frames (and a v1 HELLO) with reject counters.
 // Spec: docs/protocol.md §6.
 //
 // How to use: feed every received byte to feed(). When it returns true, a complete frame whose CRC matched is
@@ -33,7 +33,7 @@ struct DecoderCounters {
   uint32_t bad_crc;       ///< candidates whose CRC (with the type's seed) did not match [frames]
   uint32_t bad_length;    ///< known type, length byte differs from its fixed length [frames]
   uint32_t unknown_type;  ///< type byte not in the message table [frames]
-  uint32_t bad_version;   ///< version byte is not kProtocolVersion [frames]
+  uint32_t bad_version;   ///< version byte is not kProtocolVersion (nor a v1 HELLO) [frames]
   uint32_t resync_bytes;  ///< bytes dropped while searching for a frame start [bytes]
 };
 
@@ -48,6 +48,8 @@ class Decoder {
   /// Accessors of the available frame; meaningful only after feed() or next() returned true.
   MsgType type() const { return static_cast<MsgType>(buf_[kOffsetType]); }
   uint8_t type_id() const { return buf_[kOffsetType]; }
+  /// kProtocolVersion, or kLegacyProtocolVersion for a version-1 HELLO (the one v1 frame taken).
+  uint8_t version() const { return buf_[kOffsetVersion]; }
   uint16_t seq() const;
   const uint8_t* payload() const { return buf_ + kOffsetPayload; }
   uint8_t payload_len() const { return buf_[kOffsetLen]; }

@@ -31,6 +31,16 @@ DRIFTLAB_NODISCARD size_t encode_ack(const AckPayload& p, uint16_t seq, uint8_t*
 DRIFTLAB_NODISCARD size_t encode_nak(const NakPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
 DRIFTLAB_NODISCARD size_t encode_status_get(uint16_t seq, uint8_t* out, size_t out_size);
 DRIFTLAB_NODISCARD size_t encode_status(const StatusPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_cal_set(const CalPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_cal_get(const CalGetPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_cal(const CalPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
+
+/// Version-1 peers (docs/protocol.md §1.1): a v1 HELLO, which a host sends when a board does not answer v2's (a v1
+/// board answers it with its own VERSION, naming its version); and the v1 VERSION a v2 board answers a v1 HELLO with,
+/// whose proto_version 2 a v1 host refuses by number. `out_size` must hold a v2 VERSION frame (the payload is
+/// serialized whole, then cut to v1's 20 bytes).
+DRIFTLAB_NODISCARD size_t encode_legacy_hello(uint16_t seq, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t encode_legacy_version(const VersionPayload& p, uint16_t seq, uint8_t* out, size_t out_size);
 
 }  // namespace proto
 }  // namespace driftlab

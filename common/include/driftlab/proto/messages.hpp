@@ -1,4 +1,4 @@
-// Payloads of protocol v1 (HELLO..STATUS) as plain structs, with serialize/parse to and from the wire's
+// Payloads of protocol v2 (HELLO..CAL) as plain structs, with serialize/parse to and from the wire's
 // little-endian byte layout. Spec: docs/protocol.md §3. HELLO, CONFIG_GET, POLL and STATUS_GET carry no payload.
 //
 // serialize() writes exactly the type's fixed length and returns it, or 0 when `out_size` is smaller.
@@ -16,6 +16,21 @@
 namespace driftlab {
 namespace proto {
 
+/// What the board does with its calibration (docs/protocol.md §3.12), as VERSION, SAMPLE and STATUS report it.
+/// Outputs are compensated in the states active and settled only.
+enum class CalState : uint8_t {
+  none = 0,     ///< no calibration stored (erased entries, or one cleared with cal_id 0): outputs as measured
+  active = 1,   ///< the four entries agree and pass their CRC: outputs compensated, t counted from a cold start
+  settled = 2,  ///< as active after a warm restart (watchdog, reset pin): the transient taken as over
+  damaged = 3,  ///< an entry fails its CRC: outputs as measured
+  mixed = 4,    ///< the entries carry different calibration ids (an upload cut short): outputs as measured
+};
+
+/// True in the states whose outputs the board compensated.
+constexpr bool is_compensated(uint8_t cal_state) {
+  return cal_state == static_cast<uint8_t>(CalState::active) || cal_state == static_cast<uint8_t>(CalState::settled);
+}
+
 /// VERSION (0x02, fw->host): what the firmware is and how it samples. Sent in answer to HELLO.
 struct VersionPayload {
   uint8_t proto_version;  ///< kProtocolVersion of the firmware
@@ -30,6 +45,8 @@ struct VersionPayload {
   uint8_t adc_pin[kChannelCount];  ///< ADC multiplexer input of gyro, accel_x, accel_y, accel_z
   uint8_t reset_cause;             ///< MCUSR bits of the last reset
   uint16_t assert_line;            ///< source line of the assertion that caused the last reset, 0 = none
+  uint8_t cal_state;               ///< CalState at the answer
+  uint16_t cal_id;                 ///< id of the calibration applied, 0 when cal_state is not compensated
 };
 
 /// CONFIG_SET (0x04, host->fw) and CONFIG (0x05, fw->host): sampling and output configuration.
@@ -60,6 +77,8 @@ struct SamplePayload {
   uint8_t n_window;                 ///< conversions in the least filled window now [conversions]; < window at start,
                                     ///< 0 = a window is empty, its value is 0 and no reading
   uint16_t dropped;                 ///< conversions lost since boot, saturating [conversions]
+  uint8_t cal_state;                ///< CalState: the values are compensated when active or settled
+  uint16_t cal_id;                  ///< id of the calibration applied to the values, 0 when not compensated
 };
 
 /// RAW (0x08, fw->host): the newest raw code of every channel.
@@ -94,7 +113,37 @@ struct StatusPayload {
   uint16_t rx_overflow;      ///< bytes lost because the RX ring was full [bytes]
   uint16_t tx_overflow;      ///< bytes lost because the TX ring was full [bytes]
   uint16_t dropped;          ///< conversions lost [conversions]
+  uint8_t cal_state;         ///< CalState
+  uint16_t cal_id;           ///< id of the calibration applied, 0 when cal_state is not compensated
 };
+
+/// CAL_SET (0x0D, host->fw) and CAL (0x0F, fw->host): one channel's entry of the calibration, eq. 1 in fixed
+/// point. The board compensates once all four entries carry the same non-zero cal_id (docs/protocol.md §3.12).
+struct CalPayload {
+  uint16_t cal_id;  ///< calibration id; 0 clears the entry (no compensation)
+  uint8_t channel;  ///< Channel index 0..3
+  uint8_t flags;    ///< kCalFlagZero: refer the settled level to mid-scale as well
+  int32_t c1_q8;    ///< C1 [counts Q8]
+  int32_t c2_q8;    ///< C2 [counts Q8]
+  uint32_t t_ms;    ///< T [ms]
+};
+
+/// CAL_GET (0x0E, host->fw): which channel's entry to read back.
+struct CalGetPayload {
+  uint8_t channel;  ///< Channel index 0..3
+};
+
+/// CalPayload.flags bits.
+constexpr uint8_t kCalFlagZero = 0x01;
+
+/// Ranges of CalPayload (docs/protocol.md §3.12): T from 60 s (the board's interpolation between its grid points keeps
+/// its error below 1/100 LSB above it) to 9.4 h (125 T_ms fits 32 bits); |C1| and |C2| within the converter.
+constexpr uint32_t kCalTMinMs = 60000;
+constexpr uint32_t kCalTMaxMs = 34000000;
+constexpr int32_t kCalCountsMaxQ8 = 1023L * 256;
+
+/// Field indices of CalPayload, as NAK.field reports them.
+enum class CalField : uint8_t { cal_id = 0, channel = 1, flags = 2, c1_q8 = 3, c2_q8 = 4, t_ms = 5 };
 
 /// ConfigPayload.mode values.
 enum class OutputMode : uint8_t { poll = 0, stream = 1 };
@@ -114,6 +163,10 @@ constexpr uint8_t kNakFieldNone = 0xFF;
 /// A ConfigField's name as docs/protocol.md and model files spell it ("output_period_ms"...); nullptr for a value
 /// that names no field (kNakFieldNone, or a corrupt NAK).
 const char* config_field_name(uint8_t field);
+/// A CalField's name ("t_ms"...), nullptr for a value that names no field.
+const char* cal_field_name(uint8_t field);
+/// A CalState's name as logs spell it ("active"), nullptr for a number this version does not know.
+const char* cal_state_name(uint8_t state);
 
 /// Ranges of ConfigPayload (docs/protocol.md §3.4).
 constexpr uint16_t kOutputPeriodMinMs = 10;
@@ -123,13 +176,15 @@ constexpr uint8_t kWindowMax = 64;
 constexpr uint8_t kFitOrderMax = 1;
 
 /// Wire sizes [bytes]; each equals its table row, checked below.
-constexpr uint8_t kVersionPayloadSize = 20;
+constexpr uint8_t kVersionPayloadSize = 23;
 constexpr uint8_t kConfigPayloadSize = 7;
-constexpr uint8_t kSamplePayloadSize = 24;
+constexpr uint8_t kSamplePayloadSize = 27;
 constexpr uint8_t kRawPayloadSize = 12;
 constexpr uint8_t kAckPayloadSize = 3;
 constexpr uint8_t kNakPayloadSize = 5;
-constexpr uint8_t kStatusPayloadSize = 20;
+constexpr uint8_t kStatusPayloadSize = 23;
+constexpr uint8_t kCalPayloadSize = 16;
+constexpr uint8_t kCalGetPayloadSize = 1;
 
 static_assert(payload_len_of(MsgType::version) == kVersionPayloadSize, "VERSION size differs from the table");
 static_assert(payload_len_of(MsgType::config_set) == kConfigPayloadSize, "CONFIG_SET size differs from the table");
@@ -139,6 +194,9 @@ static_assert(payload_len_of(MsgType::raw) == kRawPayloadSize, "RAW size differs
 static_assert(payload_len_of(MsgType::ack) == kAckPayloadSize, "ACK size differs from the table");
 static_assert(payload_len_of(MsgType::nak) == kNakPayloadSize, "NAK size differs from the table");
 static_assert(payload_len_of(MsgType::status) == kStatusPayloadSize, "STATUS size differs from the table");
+static_assert(payload_len_of(MsgType::cal_set) == kCalPayloadSize, "CAL_SET size differs from the table");
+static_assert(payload_len_of(MsgType::cal_get) == kCalGetPayloadSize, "CAL_GET size differs from the table");
+static_assert(payload_len_of(MsgType::cal) == kCalPayloadSize, "CAL size differs from the table");
 
 DRIFTLAB_NODISCARD size_t serialize(const VersionPayload& p, uint8_t* out, size_t out_size);
 DRIFTLAB_NODISCARD size_t serialize(const ConfigPayload& p, uint8_t* out, size_t out_size);
@@ -147,6 +205,8 @@ DRIFTLAB_NODISCARD size_t serialize(const RawPayload& p, uint8_t* out, size_t ou
 DRIFTLAB_NODISCARD size_t serialize(const AckPayload& p, uint8_t* out, size_t out_size);
 DRIFTLAB_NODISCARD size_t serialize(const NakPayload& p, uint8_t* out, size_t out_size);
 DRIFTLAB_NODISCARD size_t serialize(const StatusPayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const CalPayload& p, uint8_t* out, size_t out_size);
+DRIFTLAB_NODISCARD size_t serialize(const CalGetPayload& p, uint8_t* out, size_t out_size);
 
 DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, VersionPayload* out);
 DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, ConfigPayload* out);
@@ -155,6 +215,8 @@ DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, RawPayload* out
 DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, AckPayload* out);
 DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, NakPayload* out);
 DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, StatusPayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, CalPayload* out);
+DRIFTLAB_NODISCARD bool parse(const uint8_t* in, size_t in_size, CalGetPayload* out);
 
 }  // namespace proto
 }  // namespace driftlab

@@ -1,4 +1,4 @@
-// Message table of protocol v1: per type its id, name, fixed payload length, CRC seed byte and direction, in one
+// Message table of protocol v2: per type its id, name, fixed payload length, CRC seed byte and direction, in one
 // table sorted by id. Spec and the seed derivation: docs/protocol.md §2-§3.
 //
 // The decoder and the firmware use find_spec(), which reads a name-free copy of the table built at compile time,
@@ -26,6 +26,9 @@ enum class MsgType : uint8_t {
   nak = 0x0A,
   status_get = 0x0B,
   status = 0x0C,
+  cal_set = 0x0D,
+  cal_get = 0x0E,
+  cal = 0x0F,
 };
 
 constexpr uint8_t type_id(MsgType type) { return static_cast<uint8_t>(type); }
@@ -45,17 +48,20 @@ struct MsgInfo {
 /// tests/common/msg_table_test.cpp recomputes every one).
 constexpr MsgInfo kMsgTable[] = {
     {MsgType::hello, "HELLO", 0, 0x9F, Direction::host_to_fw},
-    {MsgType::version, "VERSION", 20, 0x59, Direction::fw_to_host},
+    {MsgType::version, "VERSION", 23, 0xE6, Direction::fw_to_host},
     {MsgType::config_get, "CONFIG_GET", 0, 0xF3, Direction::host_to_fw},
     {MsgType::config_set, "CONFIG_SET", 7, 0x6F, Direction::host_to_fw},
     {MsgType::config, "CONFIG", 7, 0x6A, Direction::fw_to_host},
     {MsgType::poll, "POLL", 0, 0x8F, Direction::host_to_fw},
-    {MsgType::sample, "SAMPLE", 24, 0xBA, Direction::fw_to_host},
+    {MsgType::sample, "SAMPLE", 27, 0x24, Direction::fw_to_host},
     {MsgType::raw, "RAW", 12, 0xB0, Direction::fw_to_host},
     {MsgType::ack, "ACK", 3, 0xB4, Direction::fw_to_host},
     {MsgType::nak, "NAK", 5, 0x11, Direction::fw_to_host},
     {MsgType::status_get, "STATUS_GET", 0, 0x90, Direction::host_to_fw},
-    {MsgType::status, "STATUS", 20, 0x24, Direction::fw_to_host},
+    {MsgType::status, "STATUS", 23, 0x45, Direction::fw_to_host},
+    {MsgType::cal_set, "CAL_SET", 16, 0xD0, Direction::host_to_fw},
+    {MsgType::cal_get, "CAL_GET", 1, 0x44, Direction::host_to_fw},
+    {MsgType::cal, "CAL", 16, 0x9E, Direction::fw_to_host},
 };
 
 constexpr size_t kMsgTypeCount = sizeof(kMsgTable) / sizeof(kMsgTable[0]);

@@ -1,9 +1,9 @@
-// Frame layout of protocol v1: sync bytes, header offsets, sizes. Spec: docs/protocol.md §1.
+// Frame layout of protocol v2 (the same as v1's): sync bytes, header offsets, sizes. Spec: docs/protocol.md §1.
 //
 //   off   size  field
 //   0     1     sync0 = 0xD7
 //   1     1     sync1 = 0x1A
-//   2     1     version = 1
+//   2     1     version = 2
 //   3     1     type (msg_table.hpp)
 //   4     2     seq, u16 little-endian, +1 per frame sent by this sender, wraps
 //   6     1     len = payload bytes, equal to the type's fixed length, <= 32
@@ -19,7 +19,14 @@ namespace proto {
 
 constexpr uint8_t kSync0 = 0xD7;
 constexpr uint8_t kSync1 = 0x1A;
-constexpr uint8_t kProtocolVersion = 1;
+constexpr uint8_t kProtocolVersion = 2;
+
+/// Protocol version 1, to which a board and a host give a clear answer (docs/protocol.md §1.1). Its HELLO is v2's (no
+/// payload, the same seed); its VERSION is v2's first 20 bytes under another seed.
+constexpr uint8_t kLegacyProtocolVersion = 1;
+constexpr uint8_t kLegacyHelloSeed = 0x9F;
+constexpr uint8_t kLegacyVersionSeed = 0x59;
+constexpr uint8_t kLegacyVersionPayloadSize = 20;
 
 constexpr size_t kOffsetSync0 = 0;
 constexpr size_t kOffsetSync1 = 1;
