@@ -39,6 +39,17 @@ add_custom_command(TARGET driftlab_fw POST_BUILD
   COMMENT "driftlab_fw.hex and flash/RAM use"
   VERBATIM)
 
+# The MAC candidates, one image each (and a baseline without), for bench/mac_bench.cpp to time in simavr and size.
+set(_mac_names none siphash24 blake2s sha256)
+foreach(i RANGE 3)
+  list(GET _mac_names ${i} _mac)
+  add_executable(driftlab_mac_${_mac} "${CMAKE_CURRENT_SOURCE_DIR}/bench/mac_bench_avr.cpp")
+  set_target_properties(driftlab_mac_${_mac} PROPERTIES SUFFIX ".elf")
+  target_compile_definitions(driftlab_mac_${_mac} PRIVATE DRIFTLAB_MAC=${i})
+  target_compile_options(driftlab_mac_${_mac} PRIVATE -fno-exceptions -fno-rtti)
+  target_link_libraries(driftlab_mac_${_mac} PRIVATE driftlab_proto driftlab_strict_warnings)
+endforeach()
+
 find_program(AVRDUDE avrdude)
 add_custom_target(flash
   COMMAND ${AVRDUDE} -c ${DRIFTLAB_AVRDUDE_PROGRAMMER} -p ${DRIFTLAB_AVRDUDE_PART} -P ${DRIFTLAB_AVRDUDE_PORT}
