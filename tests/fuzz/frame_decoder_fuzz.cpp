@@ -1,5 +1,5 @@
 // libFuzzer harness: the frame decoder (common/proto/decoder) on any byte stream. Beyond memory and UB errors it
-// checks the decoder's promises: a delivered frame is of a known type, its length that type's, its CRC (with the
+// checks the decoder's promises: a delivered frame is of a known type and version, its length that type's, its CRC (with the
 // type's seed) that of its bytes; and every byte fed ends up in a delivered frame, the resync count or the bytes held.
 #include <cstddef>
 #include <cstdint>
@@ -18,7 +18,10 @@ void check_frame(const driftlab::proto::Decoder& decoder) {
     DRIFTLAB_FUZZ_CHECK(decoder.payload_len() == spec.payload_len);
     const std::uint8_t* f = decoder.frame();
     DRIFTLAB_FUZZ_CHECK(f[kOffsetSync0] == kSync0 && f[kOffsetSync1] == kSync1);
-    DRIFTLAB_FUZZ_CHECK(f[kOffsetVersion] == kProtocolVersion);
+    // Version 2, or a version-1 HELLO (the one v1 frame a v2 decoder takes, docs/protocol.md §1.1).
+    DRIFTLAB_FUZZ_CHECK(f[kOffsetVersion] == kProtocolVersion ||
+                        (f[kOffsetVersion] == kLegacyProtocolVersion && decoder.type() == MsgType::hello));
+    DRIFTLAB_FUZZ_CHECK(decoder.version() == f[kOffsetVersion]);
     const std::size_t crc_at = decoder.frame_size() - kCrcSize;
     std::uint16_t crc = crc16_ibm3740(f + kCrcStart, crc_at - kCrcStart);
     crc = crc16_ibm3740_update(crc, spec.crc_seed);
