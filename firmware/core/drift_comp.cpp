@@ -117,17 +117,25 @@ void ChannelDrift::load(const ChannelModel& model, uint32_t steps, bool settled)
   s_ = step_decay(model.t_ms);
   // a^steps by squaring, so a calibration uploaded hours after power-on costs some 64 products, not one per step.
   e_q32_ = settled ? 0 : power_q32(s_.mantissa, s_.shift, steps);
+  prepare_step();
 }
 
-void ChannelDrift::step() { e_q32_ -= mul_shift(e_q32_, s_.mantissa, s_.shift); }
+void ChannelDrift::step() {
+  e_q32_ -= d_q32_;
+  prepare_step();
+}
+
+void ChannelDrift::prepare_step() {
+  // The step's decrement d = E s, and the chord's bow d x/2 (below), once a grid step rather than once a SAMPLE.
+  d_q32_ = mul_shift(e_q32_, s_.mantissa, s_.shift);
+  bend_q32_ = mul_shift(d_q32_, s_.mantissa >> 1, s_.shift);
+}
 
 uint32_t ChannelDrift::e_q32(uint16_t fraction) const {
   // The chord to the next grid point lies above the exponential by E x^2/2 f (1 - f) (to second order); with the
   // step's decrement d = E s ~ E x that is d x/2 f (1 - f). Error left: some x^3 E / 30, below 1e-8 E for T >= 60 s.
-  const uint32_t d = mul_shift(e_q32_, s_.mantissa, s_.shift);
-  const uint32_t along = mul_shift(d, static_cast<uint32_t>(fraction) << 16, 32);
-  const uint32_t bend = mul_shift(d, s_.mantissa >> 1, s_.shift);
-  const uint32_t bow = mul_shift(bend, static_cast<uint32_t>(fraction) * (kCompStepTicks - fraction), 32);
+  const uint32_t along = mul_shift(d_q32_, static_cast<uint32_t>(fraction) << 16, 32);
+  const uint32_t bow = mul_shift(bend_q32_, static_cast<uint32_t>(fraction) * (kCompStepTicks - fraction), 32);
   return e_q32_ - along - bow;
 }
 

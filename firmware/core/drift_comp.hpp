@@ -45,7 +45,7 @@ StepDecay step_decay(uint32_t t_ms);
 /// One channel: E at the current grid point and the step's constants.
 class ChannelDrift {
  public:
-  ChannelDrift() : c1_q8_(0), offset_q8_(0), s_(), e_q32_(0) {}
+  ChannelDrift() : c1_q8_(0), offset_q8_(0), s_(), e_q32_(0), d_q32_(0), bend_q32_(0) {}
 
   /// Takes `model` at grid step `steps` since the cold start (E = a^steps), or, when `settled`, with E = 0 (a warm
   /// restart: the transient is taken as over).
@@ -60,8 +60,12 @@ class ChannelDrift {
  private:
   int32_t c1_q8_;
   int32_t offset_q8_;
+  void prepare_step();
+
   StepDecay s_;
-  uint32_t e_q32_;  // E at the grid point; 0xFFFFFFFF stands for 1
+  uint32_t e_q32_;     // E at the grid point; 0xFFFFFFFF stands for 1
+  uint32_t d_q32_;     // E s: what the next step takes off E
+  uint32_t bend_q32_;  // d s/2 (about E x^2/2): the chord lies above the exponential by this times f (1 - f)
 };
 
 /// The four channels and the grid clock. The grid runs from tick 0 (the reset) whether or not a calibration is
