@@ -1,6 +1,7 @@
 // libFuzzer harness: the frame decoder (common/proto/decoder) on any byte stream. Beyond memory and UB errors it
-// checks the decoder's promises: a delivered frame is of a known type and version, its length that type's, its CRC (with the
-// type's seed) that of its bytes; and every byte fed ends up in a delivered frame, the resync count or the bytes held.
+// checks the decoder's promises: a delivered frame is of a known type and version, its length that type's, its CRC
+// (with the type's seed) that of its bytes; and every byte fed ends up in a delivered frame, the resync count or the
+// bytes held.
 #include <cstddef>
 #include <cstdint>
 
