@@ -1,11 +1,14 @@
-// `driftlab flash`: writes the AVR firmware image to a board through avrdude (host/io/avrdude).
+// `driftlab flash`: writes the AVR firmware image (and with --key the command key) to a board through avrdude
+// (host/io/avrdude).
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
 
 #include "host/cli/commands.hpp"
 #include "host/io/avrdude.hpp"
+#include "host/io/key_file.hpp"
 #include "host/io/usb_ports.hpp"
 #include "host/util/error.hpp"
 
@@ -14,6 +17,7 @@ namespace {
 
 struct FlashOptions {
     io::FlashRequest request;
+    std::string key_file;
     bool dry_run = false;
 };
 
@@ -35,6 +39,7 @@ std::string pick_port() {
 void run_flash(FlashOptions& opts) {
     if (opts.request.hex_file.empty()) opts.request.hex_file = io::default_hex_file("/proc/self/exe");
     if (opts.request.port.empty()) opts.request.port = pick_port();
+    if (!opts.key_file.empty()) opts.request.eeprom_hex_file = io::write_key_eeprom_image(opts.key_file);
     if (opts.dry_run) {
         // The same checks as a real run, so the printed command is one that can run (avrdude aside).
         io::check_image_and_port(opts.request);
@@ -42,11 +47,21 @@ void run_flash(FlashOptions& opts) {
         for (const std::string& a : io::avrdude_arguments(opts.request))
             line += (line.empty() ? "" : " ") + io::shell_quoted(a);
         std::cout << line << "\n";
+        if (!opts.key_file.empty())
+            std::cerr << "note: " << opts.request.eeprom_hex_file
+                      << " holds the key (owner-only); remove it once flashed\n";
         return;
     }
     const char* path = std::getenv("PATH");
-    io::run_avrdude(opts.request, path != nullptr ? path : "/usr/bin:/bin");
-    std::cout << "flashed " << opts.request.hex_file << " to " << opts.request.port << "\n";
+    try {
+        io::run_avrdude(opts.request, path != nullptr ? path : "/usr/bin:/bin");
+    } catch (...) {
+        if (!opts.key_file.empty()) std::filesystem::remove(opts.request.eeprom_hex_file);
+        throw;
+    }
+    if (!opts.key_file.empty()) std::filesystem::remove(opts.request.eeprom_hex_file);
+    std::cout << "flashed " << opts.request.hex_file << " to " << opts.request.port
+              << (opts.key_file.empty() ? "" : " with the key of " + opts.key_file) << "\n";
 }
 
 }  // namespace
@@ -69,6 +84,10 @@ void register_flash(CLI::App& app) {
         ->check(non_empty_path());
     cmd->add_option("--avrdude", opts->request.avrdude, "avrdude program")
         ->capture_default_str()
+        ->check(non_empty_path());
+    cmd->add_option("--key", opts->key_file,
+                    "Also write this command key (driftlab keygen) into the board's EEPROM: needs a bootloader that "
+                    "writes EEPROM, or an ISP programmer")
         ->check(non_empty_path());
     cmd->add_flag("--dry-run", opts->dry_run, "Print the avrdude command instead of running it");
     cmd->callback([opts] { run_flash(*opts); });

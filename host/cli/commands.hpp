@@ -33,6 +33,7 @@ using RegisterFn = void (*)(CLI::App& app);
 // One declaration per cmd_*.cpp; keep in the order `driftlab --help` lists them.
 void register_ports(CLI::App& app);
 void register_flash(CLI::App& app);
+void register_keygen(CLI::App& app);
 void register_record(CLI::App& app);
 void register_upload(CLI::App& app);
 void register_decode(CLI::App& app);

@@ -24,18 +24,20 @@ bool is_executable_file(const std::string& path) {
 }  // namespace
 
 std::vector<std::string> avrdude_arguments(const FlashRequest& request) {
-    return {request.avrdude,
-            "-p",
-            request.part,
-            "-c",
-            request.programmer,
-            "-P",
-            request.port,
-            "-b",
-            std::to_string(request.baud),
-            "-D",
-            "-U",
-            "flash:w:" + request.hex_file + ":i"};
+    std::vector<std::string> args = {request.avrdude,
+                                     "-p",
+                                     request.part,
+                                     "-c",
+                                     request.programmer,
+                                     "-P",
+                                     request.port,
+                                     "-b",
+                                     std::to_string(request.baud),
+                                     "-D",
+                                     "-U",
+                                     "flash:w:" + request.hex_file + ":i"};
+    if (!request.eeprom_hex_file.empty()) args.insert(args.end(), {"-U", "eeprom:w:" + request.eeprom_hex_file + ":i"});
+    return args;
 }
 
 std::string find_in_path(const std::string& program, const std::string& path_env) {

@@ -16,10 +16,12 @@ struct FlashRequest {
     std::string part = "atmega328p";
     std::string hex_file;             ///< Intel HEX image
     std::string avrdude = "avrdude";  ///< program name or path
+    /// Intel HEX of the EEPROM bytes to write as well (the key record, `flash --key`); empty: the EEPROM is left.
+    std::string eeprom_hex_file;
 };
 
 /// avrdude's argument vector (argv[0] included) for `request`: verify on, no chip erase (-D) as the
-/// arduino bootloader requires.
+/// arduino bootloader requires; the EEPROM image after the flash image when there is one.
 std::vector<std::string> avrdude_arguments(const FlashRequest& request);
 
 /// Full path of `program` found in the directories of `path_env` (PATH syntax); empty when absent.
