@@ -1,9 +1,6 @@
 // CalEntry layout (cal_entry.hpp).
 #include "firmware/core/cal_entry.hpp"
 
-#include "driftlab/proto/byte_order.hpp"
-#include "driftlab/proto/crc16.hpp"
-
 namespace driftlab {
 namespace fw {
 
@@ -14,7 +11,7 @@ uint16_t entry_address(uint8_t channel) {
 void entry_bytes(const proto::CalPayload& payload, uint8_t (&out)[kCalEntryBytes]) {
   // The buffer holds the payload exactly, so `n` is its size.
   const size_t n = proto::serialize(payload, out, proto::kCalPayloadSize);
-  proto::put_u16_le(out + proto::kCalPayloadSize, proto::crc16_ibm3740(out, n));
+  seal_record(out, static_cast<uint8_t>(n));
 }
 
 }  // namespace fw

@@ -1,8 +1,6 @@
 // CalStore: entries, CRCs and the state of the set (cal_store.hpp).
 #include "firmware/core/cal_store.hpp"
 
-#include "driftlab/proto/byte_order.hpp"
-#include "driftlab/proto/crc16.hpp"
 #include "firmware/core/hal.hpp"
 
 namespace driftlab {
@@ -42,23 +40,18 @@ void store_entry(const proto::CalPayload& payload) {
   hal_eeprom_write(entry_address(payload.channel), entry, kCalEntryBytes);
 }
 
-EntryRead read_entry(uint8_t channel, proto::CalPayload* out) {
+RecordState read_entry(uint8_t channel, proto::CalPayload* out) {
   uint8_t entry[kCalEntryBytes];
   hal_eeprom_read(entry_address(channel), entry, kCalEntryBytes);
-  uint8_t all = 0xFF;
-  for (uint8_t i = 0; i < kCalEntryBytes; ++i) {
-    all = static_cast<uint8_t>(all & entry[i]);
+  const RecordState state = record_state(entry, proto::kCalPayloadSize);
+  if (state != RecordState::valid) {
+    return state;
   }
-  if (all == 0xFF) {
-    return EntryRead::erased;
-  }
-  const bool crc_ok =
-      proto::get_u16_le(entry + proto::kCalPayloadSize) == proto::crc16_ibm3740(entry, proto::kCalPayloadSize);
-  if (!crc_ok || !proto::parse(entry, proto::kCalPayloadSize, out) || out->channel != channel ||
+  if (!proto::parse(entry, proto::kCalPayloadSize, out) || out->channel != channel ||
       validate(*out).status != proto::Status::ok) {
-    return EntryRead::damaged;
+    return RecordState::damaged;
   }
-  return EntryRead::ok;
+  return RecordState::valid;
 }
 
 StoredCal read_calibration() {
@@ -68,12 +61,12 @@ StoredCal read_calibration() {
   bool ids_differ = false;
   for (uint8_t c = 0; c < kChannelCount; ++c) {
     proto::CalPayload entry = {};
-    const EntryRead read = read_entry(c, &entry);
-    if (read == EntryRead::damaged) {
+    const RecordState read = read_entry(c, &entry);
+    if (read == RecordState::damaged) {
       out.state = proto::CalState::damaged;
       return out;
     }
-    if (read == EntryRead::erased || entry.cal_id == 0) {
+    if (read == RecordState::erased || entry.cal_id == 0) {
       ++unset;
       continue;
     }

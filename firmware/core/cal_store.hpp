@@ -27,11 +27,9 @@ DRIFTLAB_NODISCARD CalCheck validate(const proto::CalPayload& payload);
 /// Writes `payload` as the entry of its channel (validated), with its CRC.
 void store_entry(const proto::CalPayload& payload);
 
-/// How one entry reads back.
-enum class EntryRead : uint8_t { ok, erased, damaged };
-
-/// Reads channel `channel`'s entry into `*out`: erased (every byte 0xFF), damaged (CRC or channel byte wrong) or ok.
-EntryRead read_entry(uint8_t channel, proto::CalPayload* out);
+/// Reads channel `channel`'s entry into `*out`: erased (every byte 0xFF), damaged (CRC, channel byte or a range wrong)
+/// or valid.
+RecordState read_entry(uint8_t channel, proto::CalPayload* out);
 
 /// The four entries judged together.
 struct StoredCal {

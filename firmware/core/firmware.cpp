@@ -171,7 +171,7 @@ void Firmware::handle_frame() {
     break;
   case Reply::cal: {
     proto::CalPayload entry = {};
-    if (read_entry(outcome.cal.channel, &entry) == EntryRead::ok) {
+    if (read_entry(outcome.cal.channel, &entry) == RecordState::valid) {
       send_cal(entry);
     } else {
       send_nak(outcome.nak);

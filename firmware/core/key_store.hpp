@@ -5,12 +5,13 @@
 #include <stdint.h>
 
 #include "driftlab/auth/siphash.hpp"
+#include "firmware/core/eeprom_record.hpp"
 
 namespace driftlab {
 namespace fw {
 
 constexpr uint16_t kKeyEepromAddress = 96;
-constexpr uint8_t kKeyRecordBytes = auth::kKeyBytes + 2;
+constexpr uint8_t kKeyRecordBytes = auth::kKeyBytes + kRecordCrcBytes;
 
 enum class KeyState : uint8_t { none = 0, valid = 1, damaged = 2 };
 

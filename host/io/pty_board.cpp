@@ -1,8 +1,6 @@
 // PtyBoard serve loop (pty_board.hpp).
 #include "host/io/pty_board.hpp"
 
-#include <algorithm>
-
 #include <cstring>
 #include <memory>
 
@@ -75,7 +73,7 @@ PtyBoardSummary serve_pty_board(const PtyBoardOptions& options, const CodeSource
                                 const std::function<void(const std::string&)>& on_ready) {
     PtyBoardSummary summary;
     fw::NativeBoard board;
-    std::copy_n(options.eeprom.begin(), std::min<std::size_t>(options.eeprom.size(), fw::kEepromBytes), board.eeprom());
+    board.load_eeprom(options.eeprom.data(), options.eeprom.size());
     fw::Firmware firmware;
     firmware.start();
     TruthLog truth(options.truth_log);

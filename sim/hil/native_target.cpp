@@ -25,9 +25,7 @@ std::uint64_t ticks_at_or_before(double t_s) {
 }  // namespace
 
 NativeTarget::NativeTarget(std::span<const std::uint8_t> eeprom) {
-    std::copy(eeprom.begin(),
-              eeprom.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(eeprom.size(), fw::kEepromBytes)),
-              board_.eeprom());
+    board_.load_eeprom(eeprom.data(), eeprom.size());
     firmware_.start();
 }
 

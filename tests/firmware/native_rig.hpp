@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -33,7 +32,7 @@ class NativeRig {
   /// The board after a reset of cause `reset` that kept `eeprom` (kEepromBytes, another rig's board's): a power cycle
   /// or a warm restart.
   NativeRig(const uint8_t* eeprom, const ResetInfo& reset) {
-    std::copy(eeprom, eeprom + kEepromBytes, board.eeprom());
+    board.load_eeprom(eeprom, kEepromBytes);
     board.set_reset_info(reset);
     firmware.start();
   }

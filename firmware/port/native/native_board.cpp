@@ -29,6 +29,12 @@ NativeBoard::NativeBoard()
   t_current_board = this;
 }
 
+void NativeBoard::load_eeprom(const uint8_t* image, size_t size) {
+  for (size_t i = 0; i < size && i < kEepromBytes; ++i) {
+    eeprom_[i] = image[i];
+  }
+}
+
 NativeBoard::~NativeBoard() { t_current_board = previous_; }
 
 NativeBoard* NativeBoard::current() { return t_current_board; }

@@ -95,6 +95,9 @@ class NativeBoard {
   /// cycle (a Firmware constructed afresh on a board holding the old contents).
   uint8_t* eeprom() { return eeprom_; }
   const uint8_t* eeprom() const { return eeprom_; }
+  /// Copies `image` (its first kEepromBytes at most) into the EEPROM from address 0: a board powered on with what an
+  /// upload, a programmer or an earlier board left there.
+  void load_eeprom(const uint8_t* image, size_t size);
   /// What hal_reset_info() reports: power-on unless a test models another reset.
   void set_reset_info(const ResetInfo& info) { reset_info_ = info; }
   const ResetInfo& reset_info() const { return reset_info_; }

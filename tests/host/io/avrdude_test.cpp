@@ -52,8 +52,6 @@ protected:
     std::string hex_, port_;
 };
 
-}  // namespace
-
 TEST(Avrdude, ArgumentsNameArduinoBootloaderDefaultsAndTheImage) {
     FlashRequest r;
     r.port = "/dev/ttyACM0";
@@ -155,3 +153,5 @@ TEST(Avrdude, ShellQuotingKeepsEachArgumentOneWord) {
     EXPECT_EQ(shell_quoted("it's"), "'it'\\''s'");
     EXPECT_EQ(shell_quoted(""), "''");
 }
+
+}  // namespace
