@@ -42,7 +42,7 @@ void stream_recording(benchmark::State& state, proto::ConfigPayload config, doub
         });
         board.run_until_armed();
         std::uint8_t frame[proto::kMaxFrameSize];
-        board.receive(frame, proto::encode_config_set(config, 0, frame, sizeof frame));
+        board.receive(frame, proto::encode_config_set(config, {nullptr, 1}, 0, frame, sizeof frame));
         std::uint8_t out[4096];
         std::size_t bytes = 0;
         for (double t = 1.0; t <= duration_s; t += 1.0) {

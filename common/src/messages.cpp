@@ -27,6 +27,8 @@ size_t serialize(const VersionPayload& p, uint8_t* out, size_t out_size) {
   put_u16_le(out + 18, p.assert_line);
   out[20] = p.cal_state;
   put_u16_le(out + 21, p.cal_id);
+  out[23] = p.auth_state;
+  put_u32_le(out + 24, p.auth_counter);
   return kVersionPayloadSize;
 }
 
@@ -50,6 +52,8 @@ bool parse(const uint8_t* in, size_t in_size, VersionPayload* out) {
   out->assert_line = get_u16_le(in + 18);
   out->cal_state = in[20];
   out->cal_id = get_u16_le(in + 21);
+  out->auth_state = in[23];
+  out->auth_counter = get_u32_le(in + 24);
   return true;
 }
 
@@ -188,6 +192,8 @@ size_t serialize(const StatusPayload& p, uint8_t* out, size_t out_size) {
   put_u16_le(out + 18, p.dropped);
   out[20] = p.cal_state;
   put_u16_le(out + 21, p.cal_id);
+  put_u16_le(out + 23, p.auth_refused);
+  put_u16_le(out + 25, p.auth_replayed);
   return kStatusPayloadSize;
 }
 
@@ -206,6 +212,8 @@ bool parse(const uint8_t* in, size_t in_size, StatusPayload* out) {
   out->dropped = get_u16_le(in + 18);
   out->cal_state = in[20];
   out->cal_id = get_u16_le(in + 21);
+  out->auth_refused = get_u16_le(in + 23);
+  out->auth_replayed = get_u16_le(in + 25);
   return true;
 }
 

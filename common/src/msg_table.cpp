@@ -10,9 +10,9 @@ constexpr MsgSpec spec_at(size_t i) {
 }
 
 // Name-free copy evaluated at compile time: only these 3 bytes per type reach the firmware image.
-constexpr MsgSpec kSpecs[] = {spec_at(0),  spec_at(1),  spec_at(2),  spec_at(3),  spec_at(4),
-                              spec_at(5),  spec_at(6),  spec_at(7),  spec_at(8),  spec_at(9),
-                              spec_at(10), spec_at(11), spec_at(12), spec_at(13), spec_at(14)};
+constexpr MsgSpec kSpecs[] = {spec_at(0),  spec_at(1),  spec_at(2),  spec_at(3), spec_at(4),  spec_at(5),
+                              spec_at(6),  spec_at(7),  spec_at(8),  spec_at(9), spec_at(10), spec_at(11),
+                              spec_at(12), spec_at(13), spec_at(14), spec_at(15)};
 static_assert(sizeof(kSpecs) / sizeof(kSpecs[0]) == kMsgTypeCount, "kSpecs must list every row of kMsgTable");
 
 bool is_known(uint8_t id) { return id >= 1 && id <= kMsgTypeCount; }

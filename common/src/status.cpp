@@ -14,6 +14,8 @@ const char* status_name(Status status) {
   case Status::not_allowed: return "not_allowed";
   case Status::busy: return "busy";
   case Status::not_stored: return "not_stored";
+  case Status::unauthenticated: return "unauthenticated";
+  case Status::replayed: return "replayed";
   }
   return nullptr;
 }

@@ -2,6 +2,7 @@
 #include "firmware/core/commands.hpp"
 
 #include "driftlab/proto/msg_table.hpp"
+#include "driftlab/proto/wire.hpp"
 #include "firmware/core/cal_store.hpp"
 
 namespace driftlab {
@@ -23,7 +24,7 @@ CommandOutcome reply(Reply r) {
 
 CommandOutcome decide_config_set(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len) {
   proto::ConfigPayload wire = {};
-  if (!proto::parse(payload, payload_len, &wire)) {
+  if (!proto::parse(payload, static_cast<uint8_t>(payload_len - proto::kAuthTrailerBytes), &wire)) {
     return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
   }
   const ConfigCheck check = validate(wire);
@@ -39,7 +40,7 @@ CommandOutcome decide_config_set(uint8_t type_id, uint16_t seq, const uint8_t* p
 
 CommandOutcome decide_cal_set(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len) {
   CommandOutcome out = {};
-  if (!proto::parse(payload, payload_len, &out.cal)) {
+  if (!proto::parse(payload, static_cast<uint8_t>(payload_len - proto::kAuthTrailerBytes), &out.cal)) {
     return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
   }
   const CalCheck check = validate(out.cal);
@@ -65,10 +66,36 @@ CommandOutcome decide_cal_get(uint8_t type_id, uint16_t seq, const uint8_t* payl
   return out;
 }
 
+CommandOutcome ack(Reply r, uint8_t type_id, uint16_t seq) {
+  CommandOutcome out = reply(r);
+  out.ack = proto::AckPayload{type_id, seq};
+  return out;
+}
+
 }  // namespace
 
+proto::Status check_auth(const uint8_t* frame, const AuthView& auth) {
+  const uint8_t type_id = frame[proto::kOffsetType];
+  proto::MsgSpec spec = {};
+  if (!proto::is_authenticated(type_id) || !proto::find_spec(type_id, &spec) ||
+      frame[proto::kOffsetLen] != spec.payload_len) {
+    return proto::Status::ok;
+  }
+  switch (auth.state) {
+  case proto::AuthState::open:
+    return type_id == proto::type_id(proto::MsgType::key_set) ? proto::Status::not_allowed : proto::Status::ok;
+  case proto::AuthState::keyed:
+    if (!proto::trailer_tag_matches(frame, *auth.key)) {
+      return proto::Status::unauthenticated;
+    }
+    return proto::trailer_counter(frame) > auth.counter ? proto::Status::ok : proto::Status::replayed;
+  case proto::AuthState::damaged: break;
+  }
+  return proto::Status::unauthenticated;
+}
+
 CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uint8_t payload_len,
-                      proto::OutputMode mode) {
+                      proto::OutputMode mode, proto::Status auth) {
   proto::MsgSpec spec = {};
   if (!proto::find_spec(type_id, &spec)) {
     return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);
@@ -78,6 +105,9 @@ CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uin
   }
   if (payload_len != spec.payload_len) {
     return nak(type_id, seq, proto::Status::bad_length, proto::kNakFieldNone);
+  }
+  if (auth != proto::Status::ok) {
+    return nak(type_id, seq, auth, proto::kNakFieldNone);
   }
   switch (static_cast<proto::MsgType>(type_id)) {
   case proto::MsgType::hello: return reply(Reply::version);
@@ -92,6 +122,7 @@ CommandOutcome decide(uint8_t type_id, uint16_t seq, const uint8_t* payload, uin
   case proto::MsgType::status_get: return reply(Reply::status);
   case proto::MsgType::cal_set: return decide_cal_set(type_id, seq, payload, payload_len);
   case proto::MsgType::cal_get: return decide_cal_get(type_id, seq, payload, payload_len);
+  case proto::MsgType::key_set: return ack(Reply::key_ack, type_id, seq);
   default:
     // Every host-to-firmware type is listed above; a new one in the table must be added here.
     return nak(type_id, seq, proto::Status::unknown_type, proto::kNakFieldNone);

@@ -1,11 +1,11 @@
 // Firmware: event handling, output cadence and replies (firmware.hpp; docs/firmware.md, docs/protocol.md §3).
 #include "firmware/core/firmware.hpp"
 
+#include "driftlab/proto/command_auth.hpp"
 #include "driftlab/proto/encoder.hpp"
 #include "driftlab/proto/messages.hpp"
 #include "driftlab/proto/wire.hpp"
 #include "firmware/core/cal_store.hpp"
-#include "firmware/core/commands.hpp"
 #include "firmware/core/hal.hpp"
 #include "firmware/core/version.hpp"
 
@@ -40,6 +40,10 @@ Firmware::Firmware()
       comp_(),
       cal_state_(static_cast<uint8_t>(proto::CalState::none)),
       cal_id_(0),
+      key_(),
+      counter_(),
+      auth_refused_(0),
+      auth_replayed_(0),
       decoder_() {
   reset_windows();
 }
@@ -52,6 +56,8 @@ void Firmware::start() {
   const bool warm = (cause & (kResetPowerOn | kResetBrownOut)) == 0 && (cause & (kResetExternal | kResetWatchdog)) != 0;
   comp_.reset(warm);
   load_calibration();
+  key_.load();
+  counter_.load();
 }
 
 void Firmware::arm(uint32_t first_trigger_tick) {
@@ -152,8 +158,23 @@ void Firmware::handle_frame() {
     send_version(true);
     return;
   }
+  const uint8_t* frame = decoder_.frame();
+  const proto::Status auth = check_auth(frame, AuthView{key_.state(), &key_.key(), counter_.value()});
   const CommandOutcome outcome =
-      decide(decoder_.type_id(), decoder_.seq(), decoder_.payload(), decoder_.payload_len(), config_.mode);
+      decide(decoder_.type_id(), decoder_.seq(), decoder_.payload(), decoder_.payload_len(), config_.mode, auth);
+  const bool changes_board =
+      outcome.reply == Reply::ack || outcome.reply == Reply::cal_ack || outcome.reply == Reply::key_ack;
+  if (changes_board && key_.state() == proto::AuthState::keyed) {
+    // Kept before the command acts, so a reset in between cannot admit it twice (counter_store.hpp).
+    counter_.advance_to(proto::trailer_counter(frame));
+  }
+  if (outcome.reply == Reply::key_ack) {
+    take_key(frame);
+  }
+  act(outcome);
+}
+
+void Firmware::act(const CommandOutcome& outcome) {
   switch (outcome.reply) {
   case Reply::version: send_version(false); break;
   case Reply::config: send_config(); break;
@@ -163,12 +184,16 @@ void Firmware::handle_frame() {
     apply(outcome.config);
     send_ack(outcome.ack);
     break;
-  case Reply::nak: send_nak(outcome.nak); break;
+  case Reply::nak:
+    note_refusal(outcome.nak.status);
+    send_nak(outcome.nak);
+    break;
   case Reply::cal_ack:
     store_entry(outcome.cal);
     load_calibration();
     send_ack(outcome.ack);
     break;
+  case Reply::key_ack: send_ack(outcome.ack); break;
   case Reply::cal: {
     proto::CalPayload entry = {};
     if (read_entry(outcome.cal.channel, &entry) == RecordState::valid) {
@@ -179,6 +204,20 @@ void Firmware::handle_frame() {
     break;
   }
   }
+}
+
+void Firmware::note_refusal(uint8_t status) {
+  if (status == static_cast<uint8_t>(proto::Status::unauthenticated)) {
+    auth_refused_ = add_saturating(auth_refused_, 1);
+  } else if (status == static_cast<uint8_t>(proto::Status::replayed)) {
+    auth_replayed_ = add_saturating(auth_replayed_, 1);
+  }
+}
+
+void Firmware::take_key(const uint8_t* frame) {
+  proto::Key next = {};
+  proto::seal_key(key_.key(), counter_.value(), frame + proto::kOffsetPayload, next);
+  key_.store(next);
 }
 
 void Firmware::send_frame(const uint8_t* frame, uint8_t size) {
@@ -246,6 +285,8 @@ void Firmware::send_version(bool legacy) {
   p.assert_line = reset.assert_line;
   p.cal_state = cal_state_;
   p.cal_id = cal_id_;
+  p.auth_state = static_cast<uint8_t>(key_.state());
+  p.auth_counter = counter_.value();
   uint8_t frame[proto::kMaxFrameSize];
   send_frame(frame, static_cast<uint8_t>(legacy ? proto::encode_legacy_version(p, tx_seq_, frame, sizeof frame)
                                                 : proto::encode_version(p, tx_seq_, frame, sizeof frame)));
@@ -271,6 +312,8 @@ void Firmware::send_status() {
   p.dropped = dropped_;
   p.cal_state = cal_state_;
   p.cal_id = cal_id_;
+  p.auth_refused = auth_refused_;
+  p.auth_replayed = auth_replayed_;
   uint8_t frame[proto::kMaxFrameSize];
   send_frame(frame, static_cast<uint8_t>(proto::encode_status(p, tx_seq_, frame, sizeof frame)));
 }

@@ -21,8 +21,11 @@
 
 #include "driftlab/channels.hpp"
 #include "driftlab/proto/decoder.hpp"
+#include "firmware/core/commands.hpp"
 #include "firmware/core/config.hpp"
+#include "firmware/core/counter_store.hpp"
 #include "firmware/core/drift_comp.hpp"
+#include "firmware/core/key_store.hpp"
 #include "firmware/core/ls_window.hpp"
 
 namespace driftlab {
@@ -32,7 +35,8 @@ class Firmware {
  public:
   Firmware();
 
-  /// Main loop, once after the board's own set-up: loads the calibration from EEPROM (a warm restart, per
+  /// Main loop, once after the board's own set-up: loads the command key, the replay counter and the calibration from
+  /// EEPROM (a warm restart, per
   /// hal_reset_info(), takes the transient as over: drift_comp.hpp) and arms the default schedule (kDefaultConfig)
   /// via hal_init(), first trigger one period after hal_ticks().
   void start();
@@ -57,6 +61,9 @@ class Firmware {
   void reset_windows();
   void load_calibration();
   void handle_frame();
+  void act(const CommandOutcome& outcome);
+  void note_refusal(uint8_t status);
+  void take_key(const uint8_t* frame);
   void send_frame(const uint8_t* frame, uint8_t size);
   void send_sample();
   void send_raw();
@@ -81,6 +88,10 @@ class Firmware {
   DriftComp comp_;
   uint8_t cal_state_;  // proto::CalState
   uint16_t cal_id_;    // of the calibration applied, 0 when none is
+  KeyStore key_;
+  CounterStore counter_;
+  uint16_t auth_refused_;   // NAK unauthenticated sent, saturating
+  uint16_t auth_replayed_;  // NAK replayed sent, saturating
   proto::Decoder decoder_;
 };
 

@@ -6,13 +6,6 @@
 namespace driftlab {
 namespace fw {
 
-void KeyStore::record_bytes(const uint8_t (&key)[auth::kKeyBytes], uint8_t (&out)[kKeyRecordBytes]) {
-  for (uint8_t i = 0; i < auth::kKeyBytes; ++i) {
-    out[i] = key[i];
-  }
-  seal_record(out, auth::kKeyBytes);
-}
-
 void KeyStore::load() {
   uint8_t record[kKeyRecordBytes];
   hal_eeprom_read(kKeyEepromAddress, record, kKeyRecordBytes);
@@ -20,20 +13,20 @@ void KeyStore::load() {
     key_[i] = record[i];
   }
   switch (record_state(record, auth::kKeyBytes)) {
-  case RecordState::erased: state_ = KeyState::none; break;
-  case RecordState::valid: state_ = KeyState::valid; break;
-  case RecordState::damaged: state_ = KeyState::damaged; break;
+  case RecordState::erased: state_ = proto::AuthState::open; break;
+  case RecordState::valid: state_ = proto::AuthState::keyed; break;
+  case RecordState::damaged: state_ = proto::AuthState::damaged; break;
   }
 }
 
 void KeyStore::store(const uint8_t (&key)[auth::kKeyBytes]) {
   uint8_t record[kKeyRecordBytes];
-  record_bytes(key, record);
+  key_record_bytes(key, record);
   hal_eeprom_write(kKeyEepromAddress, record, kKeyRecordBytes);
   for (uint8_t i = 0; i < auth::kKeyBytes; ++i) {
     key_[i] = key[i];
   }
-  state_ = KeyState::valid;
+  state_ = proto::AuthState::keyed;
 }
 
 }  // namespace fw

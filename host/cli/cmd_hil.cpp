@@ -187,6 +187,10 @@ void register_hil(CLI::App& app) {
                     "Calibration (driftlab calibrate) in the board's EEPROM when it powers on, as an earlier "
                     "`driftlab upload` leaves it")
         ->check(non_empty_path());
+    cmd->add_option("--key", opts->key_file,
+                    "Command key (driftlab keygen) in the board's EEPROM when it powers on, as `driftlab flash --key` "
+                    "leaves it; the host signs its commands with it")
+        ->check(non_empty_path());
     cmd->add_option("--model", opts->model_file, "Model file (TOML; default: the paper's unit, built in)")
         ->check(non_empty_path());
     cmd->add_option("--seed", opts->seed, "Seed of every random component")

@@ -11,6 +11,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/stop_signals.hpp"
+#include "host/io/key_file.hpp"
 #include "host/io/recorder.hpp"
 #include "host/io/status_line.hpp"
 #include "host/util/error.hpp"
@@ -33,6 +34,7 @@ struct RecordCliOptions {
     std::string capture;
     bool quiet = false;
     bool overwrite = false;
+    std::string key_file;
 };
 
 void run_record(const RecordCliOptions& o) {
@@ -44,6 +46,7 @@ void run_record(const RecordCliOptions& o) {
     r.capture_path = o.capture;
     r.recorder_name = kProgramVersion;
     r.overwrite = o.overwrite;
+    if (!o.key_file.empty()) r.key = io::read_key_file(o.key_file);
     const bool stream = o.stream_s > 0.0;
     r.config.output_period_ms =
         output_period_ms(stream ? o.stream_s : (o.poll_s > 0.0 ? o.poll_s : 0.1), stream ? "--stream" : "--poll");
@@ -132,6 +135,9 @@ void register_record(CLI::App& app) {
         ->check(non_empty_path());
     cmd->add_flag("-q,--quiet", o->quiet, "No live status line");
     cmd->add_flag("--overwrite", o->overwrite, "Replace a log or capture already there (refused otherwise)");
+    cmd->add_option("--key", o->key_file,
+                    "The board's command key (driftlab keygen; needed once `flash --key` gave it one)")
+        ->check(non_empty_path());
     cmd->callback([o] { run_record(*o); });
 }
 

@@ -8,6 +8,7 @@
 #include "host/cal/calibration.hpp"
 #include "host/cli/commands.hpp"
 #include "host/io/calibration_upload.hpp"
+#include "host/io/key_file.hpp"
 #include "host/io/serial_port.hpp"
 #include "host/util/error.hpp"
 
@@ -19,6 +20,7 @@ struct UploadOptions {
     int baud = 115200;
     std::string cal_path;
     bool clear = false;
+    std::string key_file;
 };
 
 std::array<proto::CalPayload, kChannelCount> cleared() {
@@ -33,6 +35,7 @@ void run(const UploadOptions& o) {
         o.clear ? cleared() : cal::to_payloads(cal::read_calibration(o.cal_path), o.cal_path);
     io::SerialPort port(o.port, o.baud);
     io::BoardClient client(port);
+    if (!o.key_file.empty()) client.set_key(io::read_key_file(o.key_file));
     const io::UploadResult r = io::upload_calibration(client, entries);
     if (!r.ok) throw DeviceError(o.port, r.problem);
     if (o.clear)
@@ -52,6 +55,9 @@ void register_upload(CLI::App& app) {
     cmd->add_option("--cal", opts->cal_path, "Calibration file written by `driftlab calibrate`")
         ->check(non_empty_path());
     cmd->add_flag("--clear", opts->clear, "Clear the board's calibration: outputs as measured");
+    cmd->add_option("--key", opts->key_file,
+                    "The board's command key (driftlab keygen; needed once `flash --key` gave it one)")
+        ->check(non_empty_path());
     cmd->callback([opts] { run(*opts); });
 }
 

@@ -36,6 +36,7 @@ void register_flash(CLI::App& app);
 void register_keygen(CLI::App& app);
 void register_record(CLI::App& app);
 void register_upload(CLI::App& app);
+void register_rekey(CLI::App& app);
 void register_decode(CLI::App& app);
 void register_hil(CLI::App& app);
 void register_effects(CLI::App& app);

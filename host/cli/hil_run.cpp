@@ -1,6 +1,7 @@
 // What `driftlab hil` is asked to run; see hil_run.hpp.
 #include "host/cli/hil_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -9,6 +10,7 @@
 #include "host/cal/cal_file.hpp"
 #include "host/cli/commands.hpp"
 #include "host/io/hil_log.hpp"
+#include "host/io/key_file.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_file.hpp"
@@ -32,7 +34,10 @@ namespace driftlab::host::cli {
 std::string firmware_elf(const HilCliOptions& o) { return o.elf.empty() ? sim::avr::default_elf_path() : o.elf; }
 
 sim::avr::CycleBudget cycle_budget(const HilCliOptions& o, const sim::HilOptions& h) {
-    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5, 5.0, true, h.eeprom);
+    proto::Key key{};
+    if (h.key) std::copy(h.key->begin(), h.key->end(), key);
+    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5, 5.0, true, h.eeprom,
+                                          h.key ? &key : nullptr);
 }
 #endif
 
@@ -122,6 +127,18 @@ void set_trajectory(const HilCliOptions& o, sim::HilOptions& h) {
 
 }  // namespace
 
+// The board's EEPROM at power-on: the calibration (--cal) and the key (--key) it keeps, as upload and flash leave them.
+void set_eeprom(const HilCliOptions& o, sim::HilOptions& h) {
+    if (o.cal_file.empty() && o.key_file.empty()) return;
+    std::vector<proto::CalPayload> calibration;
+    if (!o.cal_file.empty()) {
+        const auto payloads = cal::to_payloads(cal::read_calibration(o.cal_file), o.cal_file);
+        calibration.assign(payloads.begin(), payloads.end());
+    }
+    if (!o.key_file.empty()) h.key = io::read_key_file(o.key_file);
+    h.eeprom = sim::eeprom_image(calibration, h.key);
+}
+
 sim::HilOptions build_options(const HilCliOptions& o) {
     check_option_combinations(o);
     const auto preset = sim::preset_from_name(o.preset);
@@ -173,8 +190,7 @@ sim::HilOptions build_options(const HilCliOptions& o) {
     if (!o.pty && h.duration_s < fw.output_period_ms / 1000.0)
         throw UsageError("--duration: shorter than one output period (" + std::to_string(fw.output_period_ms) + " ms)");
     set_trajectory(o, h);
-    if (!o.cal_file.empty())
-        h.eeprom = sim::eeprom_image(cal::to_payloads(cal::read_calibration(o.cal_file), o.cal_file));
+    set_eeprom(o, h);
     set_target(o, h);
     return h;
 }

@@ -40,6 +40,7 @@ struct HilCliOptions {
     std::optional<double> rest_before_s;  // at rest this long before the trajectory starts [s of board time]
     std::string plot_dir;                 // --trajectory: draw the truth's and the gyro's yaw rate here
     std::string cal_file;                 // CAL.json the board applies: uploaded (CAL_SET) or, with --pty, stored
+    std::string key_file;                 // the board's command key (keygen), in its EEPROM; the host signs with it
 };
 
 /// The run `o` asks for. Throws UsageError for options that belong to another way of running, a configuration the

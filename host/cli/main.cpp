@@ -17,13 +17,13 @@ namespace {
 constexpr driftlab::host::cli::RegisterFn kCommands[] = {
     driftlab::host::cli::register_ports,     driftlab::host::cli::register_flash,
     driftlab::host::cli::register_keygen,    driftlab::host::cli::register_record,
-    driftlab::host::cli::register_upload,    driftlab::host::cli::register_decode,
-    driftlab::host::cli::register_hil,       driftlab::host::cli::register_effects,
-    driftlab::host::cli::register_fit,       driftlab::host::cli::register_calibrate,
-    driftlab::host::cli::register_whiteness, driftlab::host::cli::register_report,
-    driftlab::host::cli::register_allan,     driftlab::host::cli::register_gap,
-    driftlab::host::cli::register_gap_eval,  driftlab::host::cli::register_nav,
-    driftlab::host::cli::register_nav_eval,
+    driftlab::host::cli::register_upload,    driftlab::host::cli::register_rekey,
+    driftlab::host::cli::register_decode,    driftlab::host::cli::register_hil,
+    driftlab::host::cli::register_effects,   driftlab::host::cli::register_fit,
+    driftlab::host::cli::register_calibrate, driftlab::host::cli::register_whiteness,
+    driftlab::host::cli::register_report,    driftlab::host::cli::register_allan,
+    driftlab::host::cli::register_gap,       driftlab::host::cli::register_gap_eval,
+    driftlab::host::cli::register_nav,       driftlab::host::cli::register_nav_eval,
 };
 
 // What a command printed before it failed (a note, a table) goes out before the error, as it happened: into one file

@@ -1,6 +1,7 @@
 // BoardClient: handshake, requests and reception of protocol v2 (board_client.hpp).
 #include "host/io/board_client.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 
@@ -49,8 +50,23 @@ BoardClient::BoardClient(ByteLink& link, ClientOptions options) : link_(link), o
 LinkStatus BoardClient::send(proto::MsgType type, std::span<const std::uint8_t> payload, std::uint16_t* seq_used) {
     std::uint8_t frame[proto::kMaxFrameSize];
     const std::uint16_t seq = tx_seq_++;
-    const std::size_t n =
-        proto::encode_frame(proto::type_id(type), seq, payload.data(), payload.size(), frame, sizeof frame);
+    const std::uint8_t id = proto::type_id(type);
+    std::size_t n = 0;
+    if (proto::is_authenticated(id)) {
+        proto::Key key{};
+        if (key_) std::copy(key_->begin(), key_->end(), key);
+        const proto::CommandAuth auth{key_ ? &key : nullptr, next_counter_++};
+        if (type == proto::MsgType::key_set && payload.size() == sizeof(proto::Key)) {
+            // The new key is sealed under the counter of this very try, so a retry seals it anew.
+            proto::Key next{};
+            std::copy(payload.begin(), payload.end(), next);
+            n = proto::encode_key_set(next, auth, seq, frame, sizeof frame);
+        } else {
+            n = proto::encode_authenticated(id, seq, payload.data(), payload.size(), auth, frame, sizeof frame);
+        }
+    } else {
+        n = proto::encode_frame(id, seq, payload.data(), payload.size(), frame, sizeof frame);
+    }
     if (seq_used != nullptr) *seq_used = seq;
     if (tap_) tap_(CaptureKind::tx, frame, n);
     return link_.write(frame, n);
@@ -138,6 +154,8 @@ HelloResult BoardClient::hello() {
             result.problem = "the board reports a tick rate of 0 Hz in VERSION";
             return result;
         }
+        auth_state_ = result.version.auth_state;
+        next_counter_ = result.version.auth_counter + 1;
         result.ok = true;
         return result;
     }
@@ -165,6 +183,8 @@ BoardClient::Answer BoardClient::request(proto::MsgType type, std::span<const st
                                          proto::MsgType reply) {
     Answer out;
     const char* name = proto::find_msg(proto::type_id(type))->name;
+    if (proto::is_authenticated(proto::type_id(type))) out.problem = auth_obstacle(name);
+    if (!out.problem.empty()) return out;
     for (int attempt = 0; attempt < options_.request_attempts; ++attempt) {
         std::uint16_t seq = 0;
         LinkStatus status = send(type, payload, &seq);
@@ -179,7 +199,10 @@ BoardClient::Answer BoardClient::request(proto::MsgType type, std::span<const st
         if (!answer) continue;
         proto::NakPayload nak{};
         if (answer->type == proto::MsgType::nak && proto::parse(answer->payload.data(), answer->payload_len, &nak))
-            out.nak = nak;
+            if (const std::string why = auth_refusal(name, nak.status); !why.empty())
+                out.problem = why;
+            else
+                out.nak = nak;
         else
             out.reply = answer;
         return out;
@@ -187,6 +210,42 @@ BoardClient::Answer BoardClient::request(proto::MsgType type, std::span<const st
     out.problem =
         std::string("no answer to ") + name + " after " + std::to_string(options_.request_attempts) + " tries";
     return out;
+}
+
+std::string BoardClient::auth_obstacle(const char* name) const {
+    if (auth_state_ == static_cast<std::uint8_t>(proto::AuthState::keyed) && !key_)
+        return std::string("the board obeys only authenticated commands: give its key with --key KEY to send ") + name +
+               " (the key file `driftlab flash --key` provisioned)";
+    if (auth_state_ == static_cast<std::uint8_t>(proto::AuthState::damaged))
+        return std::string("the board's key record is damaged, so it refuses ") + name +
+               " and every other command that changes it: provision the key again with `driftlab flash --key KEY`";
+    return "";
+}
+
+std::string BoardClient::auth_refusal(const char* name, std::uint8_t status) const {
+    if (status == static_cast<std::uint8_t>(proto::Status::unauthenticated))
+        return std::string("the board refused ") + name +
+               " as unauthenticated: the key given with --key is not this board's key";
+    if (status == static_cast<std::uint8_t>(proto::Status::replayed))
+        return std::string("the board refused ") + name +
+               " as replayed: another sender's command took the counter since this one read it; run again";
+    return "";
+}
+
+std::string BoardClient::key_change(const CommandKey& next) {
+    const char* name = "KEY_SET";
+    if (!key_) return "a key change needs the board's current key (--key KEY)";
+    std::string problem = auth_obstacle(name);
+    if (auth_state_ == static_cast<std::uint8_t>(proto::AuthState::open))
+        problem = "the board has no key to change: provision one with `driftlab flash --key KEY`";
+    if (!problem.empty()) return problem;
+    const Answer a = request(proto::MsgType::key_set, next, proto::MsgType::ack);
+    if (a.nak) return std::string("the board refused KEY_SET (NAK ") + status_name(a.nak->status) + ")";
+    if (!a.reply)
+        return a.problem +
+               "; if only its ACK was lost the board has the new key: a command with either --key tells which";
+    key_ = next;
+    return "";
 }
 
 bool BoardClient::answers(const Frame& f, proto::MsgType type, std::uint16_t seq, proto::MsgType reply) {

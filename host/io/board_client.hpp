@@ -26,6 +26,7 @@
 #include "driftlab/receiver/seq_tracker.hpp"
 #include "host/io/byte_link.hpp"
 #include "host/io/capture.hpp"
+#include "host/io/key_file.hpp"
 
 namespace driftlab::host::io {
 
@@ -77,6 +78,11 @@ public:
     /// Sees every valid frame received, in order, duplicates included.
     void set_frame_handler(FrameHandler handler) { handler_ = std::move(handler); }
 
+    /// The board's command key (docs/security.md): CONFIG_SET and CAL_SET then carry its tag, and key_change() is
+    /// possible. Without one a keyed board's commands are refused here, before anything is sent.
+    void set_key(const CommandKey& key) { key_ = key; }
+
+    /// HELLO; VERSION also says whether the board wants authenticated commands and the counter they continue from.
     HelloResult hello();
     /// CONFIG_SET `wanted`, expect ACK, then CONFIG_GET and compare field by field.
     ConfigResult configure(const proto::ConfigPayload& wanted);
@@ -89,8 +95,13 @@ public:
         std::string problem;
     };
     /// Sends `type` with `payload` up to request_attempts times until a frame of type `reply` (an ACK: of this
-    /// request's seq) or a NAK of the request arrives.
+    /// request's seq) or a NAK of the request arrives. An authenticated type (CONFIG_SET, CAL_SET) gets its trailer
+    /// with a new counter each try (after hello()); a refusal of its authentication is a `problem` in words, not a nak.
     Answer request(proto::MsgType type, std::span<const std::uint8_t> payload, proto::MsgType reply);
+
+    /// KEY_SET: the board takes `next` as its key (sealed under the current one), and so does this client. Returns
+    /// why not, "" when ACKed.
+    std::string key_change(const CommandKey& next);
 
     LinkStatus send_poll();
     /// Reads what arrives within `timeout_ms` [ms] and delivers its frames.
@@ -131,6 +142,14 @@ private:
     std::uint8_t sync_state_ = 0;
     std::optional<std::uint8_t> foreign_version_;
     std::optional<proto::NakPayload> poll_nak_;  // the latest NAK of a POLL
+    // Authentication: the key given, and from VERSION the board's state and the next counter to use.
+    std::optional<CommandKey> key_;
+    std::uint8_t auth_state_ = 0;
+    std::uint32_t next_counter_ = 1;
+    /// Why an authenticated `type` cannot be sent (a keyed board and no key, a damaged key), "" when it can.
+    std::string auth_obstacle(const char* name) const;
+    /// A NAK `status` of `name` that refuses its authentication, in words; "" for any other status.
+    std::string auth_refusal(const char* name, std::uint8_t status) const;
 };
 
 /// "out_of_range" and friends, for messages.

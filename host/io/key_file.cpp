@@ -12,7 +12,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "firmware/core/key_store.hpp"
+#include "firmware/core/key_record.hpp"
 #include "host/io/intel_hex.hpp"
 #include "host/util/error.hpp"
 #include "host/util/input_file.hpp"
@@ -80,7 +80,7 @@ std::string write_key_eeprom_image(const std::string& key_path) {
     std::uint8_t raw[16];
     std::copy(key.begin(), key.end(), raw);
     std::uint8_t record[fw::kKeyRecordBytes];
-    fw::KeyStore::record_bytes(raw, record);
+    fw::key_record_bytes(raw, record);
     const std::string path = key_path + ".eeprom.hex";
     const std::string text =
         intel_hex(fw::kKeyEepromAddress, std::vector<std::uint8_t>(record, record + sizeof record));

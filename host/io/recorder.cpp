@@ -192,6 +192,7 @@ RecordSummary record(const RecordOptions& options, const std::atomic<bool>& stop
     auto capture = std::make_unique<CaptureWriter>(capture_path, header);
     LogAssembler assembler(options.log_path, header);
     BoardClient client(port);
+    if (options.key) client.set_key(*options.key);
     client.set_tap([&](CaptureKind kind, const std::uint8_t* bytes, std::size_t n) {
         const std::uint64_t t_us = capture->write(kind, bytes, n);
         if (kind == CaptureKind::rx) assembler.on_rx(t_us, bytes, n);

@@ -26,7 +26,8 @@ struct RecordOptions {
     std::string capture_path;             ///< default: default_capture_path(log_path)
     int reconnect_max_backoff_ms = 4000;  ///< [ms] longest wait between reopen attempts
     std::string recorder_name = "driftlab";
-    bool overwrite = false;  ///< replace a log or capture already there (else refused)
+    bool overwrite = false;         ///< replace a log or capture already there (else refused)
+    std::optional<CommandKey> key;  ///< the board's command key (docs/security.md); none: an open board
 };
 
 /// How the session went, for the final message.

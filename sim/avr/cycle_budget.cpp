@@ -23,7 +23,8 @@ void send(AvrBoard& board, const std::uint8_t* frame, std::size_t n) { board.rec
 }  // namespace
 
 CycleBudget measure_cycle_budget(const std::string& elf_path, proto::ConfigPayload config, double settle_s,
-                                 double measure_s, bool profile, const std::vector<std::uint8_t>& eeprom) {
+                                 double measure_s, bool profile, const std::vector<std::uint8_t>& eeprom,
+                                 const proto::Key* key) {
     config.mode = static_cast<std::uint8_t>(proto::OutputMode::stream);
     CycleBudget b;
     b.config = config;
@@ -36,7 +37,7 @@ CycleBudget measure_cycle_budget(const std::string& elf_path, proto::ConfigPaylo
     AvrBoard board(options, &test_input_mv);
     board.run_until_armed();
     std::uint8_t frame[proto::kMaxFrameSize];
-    send(board, frame, proto::encode_config_set(config, 1, frame, sizeof frame));
+    send(board, frame, proto::encode_config_set(config, {key, 1}, 1, frame, sizeof frame));
     board.run_until_cycle(board.cycle() + AvrBoard::cycles_for_s(settle_s));
 
     const std::uint64_t cycle0 = board.cycle();
@@ -57,7 +58,7 @@ CycleBudget measure_cycle_budget(const std::string& elf_path, proto::ConfigPaylo
     // Back to poll mode so STATUS is not stuck behind the stream, then ask for the counters.
     proto::ConfigPayload poll = config;
     poll.mode = static_cast<std::uint8_t>(proto::OutputMode::poll);
-    send(board, frame, proto::encode_config_set(poll, 2, frame, sizeof frame));
+    send(board, frame, proto::encode_config_set(poll, {key, 2}, 2, frame, sizeof frame));
     board.run_until_cycle(board.cycle() + AvrBoard::cycles_for_s(0.05));
     send(board, frame, proto::encode_status_get(3, frame, sizeof frame));
     board.run_until_cycle(board.cycle() + AvrBoard::cycles_for_s(0.05));

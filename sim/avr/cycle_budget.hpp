@@ -30,11 +30,13 @@ struct CycleBudget {
     std::vector<FunctionCycles> functions;     ///< per-call cycles in the measured time (empty unless profiled)
 };
 
-/// Boots `elf_path` with `eeprom` (empty: erased; a calibration there makes every SAMPLE compensated), streams with
+/// Boots `elf_path` with `eeprom` (empty: erased; a calibration there makes every SAMPLE compensated, a key there
+/// needs `key` to sign the configuration with, counters from 1: sim/hil/eeprom_image.hpp), streams with
 /// `config` (its mode forced to stream) for `settle_s` + `measure_s` of emulated time with inputs around mid-scale,
 /// and measures. `profile` adds per-function cycles (slower to run).
 CycleBudget measure_cycle_budget(const std::string& elf_path, proto::ConfigPayload config, double settle_s,
-                                 double measure_s, bool profile, const std::vector<std::uint8_t>& eeprom = {});
+                                 double measure_s, bool profile, const std::vector<std::uint8_t>& eeprom = {},
+                                 const proto::Key* key = nullptr);
 
 /// Candidate configurations from the firmware's fastest accepted conversion period (50 ticks) upwards, each
 /// measured for `measure_s` streaming SAMPLE + RAW; returns them fastest first. The highest sustained rate is

@@ -1,17 +1,22 @@
-// The board's EEPROM at power-on as an earlier `driftlab upload` left it: erased (0xFF) but for the calibration's
-// entries where the firmware keeps them (firmware/core/cal_store.hpp). What `hil --cal` boots its board with, native,
-// AVR in simavr or on a pseudo-terminal alike.
+// The board's EEPROM at power-on as `driftlab flash --key` and an earlier `driftlab upload` left it: erased (0xFF) but
+// for the calibration's entries and the key record where the firmware keeps them (firmware/core/cal_store.hpp,
+// key_store.hpp), its replay counter never advanced. What `hil --cal`/`--key` boot their board with, native, AVR in
+// simavr or on a pseudo-terminal alike.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "driftlab/auth/siphash.hpp"
 #include "driftlab/proto/messages.hpp"
 
 namespace driftlab::sim {
 
-/// fw::kEepromBytes bytes; empty `calibration`: all erased.
-std::vector<std::uint8_t> eeprom_image(std::span<const proto::CalPayload> calibration);
+/// fw::kEepromBytes bytes; empty `calibration` and no `key`: all erased.
+std::vector<std::uint8_t> eeprom_image(std::span<const proto::CalPayload> calibration,
+                                       const std::optional<std::array<std::uint8_t, auth::kKeyBytes>>& key = {});
 
 }  // namespace driftlab::sim

@@ -91,6 +91,7 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
     plan.config = options.model.firmware;
     plan.duration_s = options.duration_s;
     plan.reply_timeout_s = options.reply_timeout_s;
+    plan.key = options.key;
     HostEndpoint host(plan, sink, options.on_ready);
     const std::unique_ptr<EmulatedBoard> board =
         options.make_board ? options.make_board() : make_target(options.target, options.eeprom);

@@ -4,6 +4,7 @@
 // and seed give the same records bit for bit. docs/sim.md §Host-in-the-loop.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -36,6 +37,9 @@ struct HilOptions {
     double reply_timeout_s = 0.5;  ///< host's resend timeout for requests [s]
     /// The board's EEPROM at power-on (fw::kEepromBytes, eeprom_image.hpp: `hil --cal`); empty: erased.
     std::vector<std::uint8_t> eeprom;
+    /// The key the host signs CONFIG_SET with (the one in `eeprom`: `hil --key`); none: sent unsigned, as to an open
+    /// board.
+    std::optional<std::array<std::uint8_t, auth::kKeyBytes>> key;
     TargetKind target = TargetKind::native;
     /// When set, builds the board instead of `target`: how the AVR board (sim/avr, a library that depends on this
     /// one) plugs in for `driftlab hil --target avr`.

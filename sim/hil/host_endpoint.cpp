@@ -1,6 +1,7 @@
 // The host's end of the line in virtual time; see host_endpoint.hpp.
 #include "sim/hil/host_endpoint.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -103,12 +104,12 @@ void HostEndpoint::request(double t_s, std::vector<std::vector<std::uint8_t>>& o
     std::size_t n = 0;
     switch (phase_) {
     case Phase::hello: n = proto::encode_hello(request_seq_, f.data(), f.size()); break;
-    case Phase::config_set: n = proto::encode_config_set(plan_.config, request_seq_, f.data(), f.size()); break;
+    case Phase::config_set: n = encode_config_set(plan_.config, f); break;
     case Phase::config_get: n = proto::encode_config_get(request_seq_, f.data(), f.size()); break;
     case Phase::stop_stream: {
         proto::ConfigPayload poll = plan_.config;
         poll.mode = static_cast<std::uint8_t>(proto::OutputMode::poll);
-        n = proto::encode_config_set(poll, request_seq_, f.data(), f.size());
+        n = encode_config_set(poll, f);
         break;
     }
     case Phase::status: n = proto::encode_status_get(request_seq_, f.data(), f.size()); break;
@@ -117,6 +118,13 @@ void HostEndpoint::request(double t_s, std::vector<std::vector<std::uint8_t>>& o
     f.resize(n);
     out.push_back(std::move(f));
     send_at_s_ = t_s + plan_.reply_timeout_s;
+}
+
+std::size_t HostEndpoint::encode_config_set(const proto::ConfigPayload& config, std::span<std::uint8_t> frame) {
+    proto::Key key{};
+    if (plan_.key) std::copy(plan_.key->begin(), plan_.key->end(), key);
+    const proto::CommandAuth auth{plan_.key ? &key : nullptr, next_counter_++};
+    return proto::encode_config_set(config, auth, request_seq_, frame.data(), frame.size());
 }
 
 void HostEndpoint::receive(double t_s, std::span<const std::uint8_t> bytes) {
@@ -138,7 +146,10 @@ void HostEndpoint::handle_frame(double t_s) {
     const std::size_t len = decoder_.payload_len();
     switch (decoder_.type()) {
     case proto::MsgType::version:
-        if (phase_ == Phase::hello && proto::parse(p, len, &version_)) enter(Phase::config_set, t_s);
+        if (phase_ == Phase::hello && proto::parse(p, len, &version_)) {
+            next_counter_ = version_.auth_counter + 1;
+            enter(Phase::config_set, t_s);
+        }
         break;
     case proto::MsgType::ack: {
         proto::AckPayload ack{};

@@ -7,6 +7,7 @@
 // 0 carries zeros that are no reading (docs/protocol.md §3.6): it is counted, not logged, as `record` does.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "driftlab/auth/siphash.hpp"
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
 #include "driftlab/receiver/row_assembler.hpp"
@@ -29,6 +31,8 @@ struct HostPlan {
     double duration_s = 0.0;        ///< polls at k · period for k = 1 .. duration/period; listens until then
     double reply_timeout_s = 0.5;   ///< a request unanswered this long is sent again [s]
     int max_tries = 8;              ///< tries per request before the run fails
+    /// The board's command key: CONFIG_SET carries its tag, each try a counter above VERSION's (docs/security.md).
+    std::optional<std::array<std::uint8_t, auth::kKeyBytes>> key;
 };
 
 /// Counts of the host's side.
@@ -73,6 +77,7 @@ private:
     void handle_frame(double t_s);
     void request(double t_s, std::vector<std::vector<std::uint8_t>>& out);
     void enter(Phase next, double t_s);
+    std::size_t encode_config_set(const proto::ConfigPayload& config, std::span<std::uint8_t> frame);
     double period_s() const { return plan_.config.output_period_ms / 1000.0; }
 
     HostPlan plan_;
@@ -84,6 +89,7 @@ private:
     int tries_ = 0;
     std::uint16_t tx_seq_ = 0;
     std::uint16_t request_seq_ = 0;
+    std::uint32_t next_counter_ = 1;  // of the next authenticated command, from VERSION on
     std::uint64_t next_poll_k_ = 1;
     std::uint64_t poll_count_ = 0;
     double run_start_s_ = 0.0;  // configuration verified: polls at run_start + k · period

@@ -48,7 +48,13 @@ std::vector<SentFrame> random_frames(std::mt19937& rng, size_t count) {
       b = static_cast<uint8_t>(rng());
     }
     Bytes frame(kMaxFrameSize);
-    frame.resize(encode_frame(type_id(info.type), seq, payload.data(), payload.size(), frame.data(), frame.size()));
+    const uint8_t id = type_id(info.type);
+    // An authenticated type's random fields get a trailer under no key (counter random, tag zero).
+    frame.resize(is_authenticated(id)
+                     ? encode_authenticated(id, seq, payload.data(), payload.size() - kAuthTrailerBytes,
+                                            CommandAuth{nullptr, static_cast<uint32_t>(rng())}, frame.data(),
+                                            frame.size())
+                     : encode_frame(id, seq, payload.data(), payload.size(), frame.data(), frame.size()));
     EXPECT_EQ(frame.size(), frame_size(info.payload_len));
     frames.push_back({frame, offset});
     offset += frame.size();

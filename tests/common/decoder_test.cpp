@@ -143,7 +143,7 @@ TEST(Decoder, LengthByte255IsRejectedAtTheLengthByte) {
 }
 
 TEST(Decoder, UnknownTypeCountsOneUnknownType) {
-  const Bytes bad = {kSync0, kSync1, kProtocolVersion, 0x10};
+  const Bytes bad = {kSync0, kSync1, kProtocolVersion, 0x11};
   Decoder dec;
   const auto got = feed_all(dec, concat({bad, hello(1)}));
   ASSERT_EQ(got.size(), 1u);

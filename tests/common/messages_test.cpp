@@ -44,8 +44,10 @@ TEST(Messages, VersionLayoutMatchesSpecOffsets) {
   p.assert_line = 0x0102;
   p.cal_state = 2;
   p.cal_id = 0xA1B2;
-  const Bytes expected = {1, 2, 3, 4, 5, 10,   0x88, 0x13, 0x90, 0xD0, 0x03, 0x00,
-                          4, 0, 1, 2, 3, 0x08, 0x02, 0x01, 2,    0xB2, 0xA1};
+  p.auth_state = 1;
+  p.auth_counter = 0x0A0B0C0D;
+  const Bytes expected = {1, 2, 3, 4, 5, 10, 0x88, 0x13, 0x90, 0xD0, 0x03, 0x00, 4,    0,
+                          1, 2, 3, 8, 2, 1,  2,    0xB2, 0xA1, 1,    0x0D, 0x0C, 0x0B, 0x0A};
   EXPECT_EQ(serialized(p, kVersionPayloadSize), expected);
 }
 
@@ -96,7 +98,10 @@ TEST(Messages, StatusLayoutMatchesSpecOffsets) {
   p.dropped = 0xFFFF;
   p.cal_state = 3;
   p.cal_id = 0x0102;
-  const Bytes expected = {0x44, 0x33, 0x22, 0x11, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 0xFF, 0xFF, 3, 2, 1};
+  p.auth_refused = 0x0809;
+  p.auth_replayed = 0x0A0B;
+  const Bytes expected = {0x44, 0x33, 0x22, 0x11, 1,    1,    2, 2, 3, 3, 4, 4,   5,  5,
+                          6,    6,    7,    7,    0xFF, 0xFF, 3, 2, 1, 9, 8, 0xB, 0xA};
   EXPECT_EQ(serialized(p, kStatusPayloadSize), expected);
 }
 

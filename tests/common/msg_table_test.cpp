@@ -26,12 +26,14 @@ struct Expected {
 // Written from the protocol contract, independently of kMsgTable.
 const Expected kContract[] = {
     {0x01, "HELLO", 0, Direction::host_to_fw, "HELLO"},
-    {0x02, "VERSION", 23, Direction::fw_to_host,
+    {0x02, "VERSION", 28, Direction::fw_to_host,
      "VERSION u8 proto_version u8 fw_major u8 fw_minor u8 fw_patch u8 board_id u8 adc_bits u16 vref_mv "
-     "u32 tick_hz u8 channel_count u8[4] adc_pin u8 reset_cause u16 assert_line u8 cal_state u16 cal_id"},
+     "u32 tick_hz u8 channel_count u8[4] adc_pin u8 reset_cause u16 assert_line u8 cal_state u16 cal_id "
+     "u8 auth_state u32 auth_counter"},
     {0x03, "CONFIG_GET", 0, Direction::host_to_fw, "CONFIG_GET"},
-    {0x04, "CONFIG_SET", 7, Direction::host_to_fw,
-     "CONFIG_SET u16 output_period_ms u8 conversions_per_output u8 window u8 fit_order u8 mode u8 raw"},
+    {0x04, "CONFIG_SET", 19, Direction::host_to_fw,
+     "CONFIG_SET u16 output_period_ms u8 conversions_per_output u8 window u8 fit_order u8 mode u8 raw "
+     "u32 auth_counter u8[8] auth_tag"},
     {0x05, "CONFIG", 7, Direction::fw_to_host,
      "CONFIG u16 output_period_ms u8 conversions_per_output u8 window u8 fit_order u8 mode u8 raw"},
     {0x06, "POLL", 0, Direction::host_to_fw, "POLL"},
@@ -41,12 +43,15 @@ const Expected kContract[] = {
     {0x09, "ACK", 3, Direction::fw_to_host, "ACK u8 acked_type u16 acked_seq"},
     {0x0A, "NAK", 5, Direction::fw_to_host, "NAK u8 nacked_type u16 nacked_seq u8 status u8 field"},
     {0x0B, "STATUS_GET", 0, Direction::host_to_fw, "STATUS_GET"},
-    {0x0C, "STATUS", 23, Direction::fw_to_host,
+    {0x0C, "STATUS", 27, Direction::fw_to_host,
      "STATUS u32 uptime_ticks u16 rx_frames u16 rx_bad_crc u16 rx_bad_length u16 rx_unknown_type "
-     "u16 rx_resync_bytes u16 rx_overflow u16 tx_overflow u16 dropped u8 cal_state u16 cal_id"},
-    {0x0D, "CAL_SET", 16, Direction::host_to_fw, "CAL_SET u16 cal_id u8 channel u8 flags i32 c1_q8 i32 c2_q8 u32 t_ms"},
+     "u16 rx_resync_bytes u16 rx_overflow u16 tx_overflow u16 dropped u8 cal_state u16 cal_id "
+     "u16 auth_refused u16 auth_replayed"},
+    {0x0D, "CAL_SET", 28, Direction::host_to_fw,
+     "CAL_SET u16 cal_id u8 channel u8 flags i32 c1_q8 i32 c2_q8 u32 t_ms u32 auth_counter u8[8] auth_tag"},
     {0x0E, "CAL_GET", 1, Direction::host_to_fw, "CAL_GET u8 channel"},
     {0x0F, "CAL", 16, Direction::fw_to_host, "CAL u16 cal_id u8 channel u8 flags i32 c1_q8 i32 c2_q8 u32 t_ms"},
+    {0x10, "KEY_SET", 28, Direction::host_to_fw, "KEY_SET u8[16] sealed_key u32 auth_counter u8[8] auth_tag"},
 };
 
 uint8_t seed_of(const char* definition) {
@@ -93,7 +98,7 @@ TEST(MsgTable, PayloadsFitTheContractMaximumOf32Bytes) {
 
 TEST(MsgTable, UnknownIdsAreNotFound) {
   MsgSpec spec{};
-  for (int id : {0x00, 0x10, 0x7F, 0x80, 0xFF}) {
+  for (int id : {0x00, 0x11, 0x7F, 0x80, 0xFF}) {
     EXPECT_EQ(find_msg(static_cast<uint8_t>(id)), nullptr) << id;
     EXPECT_FALSE(find_spec(static_cast<uint8_t>(id), &spec)) << id;
   }

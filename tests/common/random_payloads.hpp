@@ -35,6 +35,8 @@ inline void randomize(std::mt19937& rng, VersionPayload* p) {
   p->assert_line = random_int<uint16_t>(rng);
   p->cal_state = random_int<uint8_t>(rng);
   p->cal_id = random_int<uint16_t>(rng);
+  p->auth_state = random_int<uint8_t>(rng);
+  p->auth_counter = random_int<uint32_t>(rng);
 }
 
 inline void randomize(std::mt19937& rng, ConfigPayload* p) {
@@ -89,6 +91,8 @@ inline void randomize(std::mt19937& rng, StatusPayload* p) {
   p->dropped = random_int<uint16_t>(rng);
   p->cal_state = random_int<uint8_t>(rng);
   p->cal_id = random_int<uint16_t>(rng);
+  p->auth_refused = random_int<uint16_t>(rng);
+  p->auth_replayed = random_int<uint16_t>(rng);
 }
 
 inline void randomize(std::mt19937& rng, CalPayload* p) {
@@ -119,6 +123,8 @@ inline void expect_fields_equal(const VersionPayload& a, const VersionPayload& b
   EXPECT_EQ(a.assert_line, b.assert_line);
   EXPECT_EQ(a.cal_state, b.cal_state);
   EXPECT_EQ(a.cal_id, b.cal_id);
+  EXPECT_EQ(a.auth_state, b.auth_state);
+  EXPECT_EQ(a.auth_counter, b.auth_counter);
 }
 
 inline void expect_fields_equal(const ConfigPayload& a, const ConfigPayload& b) {
@@ -173,6 +179,8 @@ inline void expect_fields_equal(const StatusPayload& a, const StatusPayload& b) 
   EXPECT_EQ(a.dropped, b.dropped);
   EXPECT_EQ(a.cal_state, b.cal_state);
   EXPECT_EQ(a.cal_id, b.cal_id);
+  EXPECT_EQ(a.auth_refused, b.auth_refused);
+  EXPECT_EQ(a.auth_replayed, b.auth_replayed);
 }
 
 inline void expect_fields_equal(const CalPayload& a, const CalPayload& b) {

@@ -19,7 +19,9 @@ TEST(Status, NumbersAreTheContractOnes) {
   EXPECT_EQ(static_cast<int>(Status::not_allowed), 5);
   EXPECT_EQ(static_cast<int>(Status::busy), 6);
   EXPECT_EQ(static_cast<int>(Status::not_stored), 7);
-  EXPECT_EQ(kStatusCount, 8);
+  EXPECT_EQ(static_cast<int>(Status::unauthenticated), 8);
+  EXPECT_EQ(static_cast<int>(Status::replayed), 9);
+  EXPECT_EQ(kStatusCount, 10);
 }
 
 TEST(Status, EveryNumberHasADistinctNameAndUnknownOnesHaveNone) {

@@ -81,13 +81,13 @@ TEST(GapCli, AStuckChannelIsNamedAndSaturatedRowsAreCounted) {
                                               dir.path());
     ASSERT_EQ(later.exit_code, 0) << later.err;
     EXPECT_TRUE(nlohmann::json::parse(later.out)["saturated"].empty()) << later.out;
-    // What the range kept, beside the JSON as fit and allan say it (rows 1 s apart from 1.101 s to 400.101 s).
-    EXPECT_EQ(later.err, "note: --from 110 kept 291 of 400 rows, t = 110.101 s to 400.101 s\n");
+    // What the range kept, beside the JSON as fit and allan say it (rows 1 s apart from 1.119 s to 400.119 s).
+    EXPECT_EQ(later.err, "note: --from 110 kept 291 of 400 rows, t = 110.119 s to 400.119 s\n");
     {
         std::ifstream file(dir.file("later.toml"));
         std::string first;
         std::getline(file, first);
-        EXPECT_EQ(first.rfind("# driftlab gap " + stuck + " (rows from 110.101 s to 400.101 s): verdict ", 0), 0u)
+        EXPECT_EQ(first.rfind("# driftlab gap " + stuck + " (rows from 110.119 s to 400.119 s): verdict ", 0), 0u)
             << first;  // the rows it came from
     }
     // Spelled as fit's --t-min/--t-max, the same range.
@@ -247,7 +247,7 @@ TEST(GapCli, ACorruptRowIsWarnedWithTheWindowThatLeavesItOut) {
     ASSERT_EQ(without["left_out"].size(), 1u);
     EXPECT_EQ(without["left_out"][0]["rows"], 1);
 
-    // After the first 100 s, which the report says it analysed (rows 1 s apart from t = 1.101 s).
+    // After the first 100 s, which the report says it analysed (rows 1 s apart from t = 1.119 s).
     const RunResult text = run_driftlab(
         {"gap", corrupt, "--replicates", "10", "--locate-only", "--from", "100", "--report", dir.file("report")},
         dir.path());
@@ -255,7 +255,7 @@ TEST(GapCli, ACorruptRowIsWarnedWithTheWindowThatLeavesItOut) {
     EXPECT_NE(text.output.find("\nwarning: gyro: " + warning + "\n"), std::string::npos) << text.output;
     const std::string md = read_text(dir.file("report/gap.md"));
     EXPECT_NE(md.find("\nWarning: gyro: " + warning + "\n"), std::string::npos);
-    EXPECT_NE(md.find("\n501 rows analysed, t = 100.101 s to 600.101 s.\n"), std::string::npos) << md.substr(0, 400);
+    EXPECT_NE(md.find("\n501 rows analysed, t = 100.119 s to 600.119 s.\n"), std::string::npos) << md.substr(0, 400);
 }
 
 // A stuck accelerometer with one corrupt row, in a 1500 s hil log: calibrated to white noise far below a code
@@ -294,7 +294,7 @@ TEST(GapCli, AStuckChannelWithACorruptRowOrTwoIsLeftOut) {
     EXPECT_EQ(j2["lone_values"][0]["t_s"][0], j["lone_values"][0]["t_s"][0]);
     EXPECT_EQ(j2["verdict"], "none");
     // fit and allan take the code of a log's channel alike.
-    const std::string two = "2 lone values (t = 750.101 s: 1023, t = 1101.101 s: 1023)";
+    const std::string two = "2 lone values (t = 750.119 s: 1023, t = 1101.119 s: 1023)";
     const RunResult fit = run_driftlab({"fit", twice, "--channel", "accel_x"}, dir.path());
     ASSERT_EQ(fit.exit_code, 0) << fit.output;
     EXPECT_NE(fit.output.find(two), std::string::npos) << fit.output;

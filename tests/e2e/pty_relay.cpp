@@ -20,7 +20,11 @@ std::vector<std::uint8_t> frame_of(proto::MsgType type, std::uint16_t seq, const
     std::uint8_t body[proto::kMaxPayload];
     const std::size_t len = proto::serialize(payload, body, sizeof body);
     std::vector<std::uint8_t> frame(proto::kMaxFrameSize);
-    frame.resize(proto::encode_frame(proto::type_id(type), seq, body, len, frame.data(), frame.size()));
+    // A command that changes the board goes out as a transmitter without the key sends it: a zero tag, counter 1.
+    const std::uint8_t id = proto::type_id(type);
+    frame.resize(proto::is_authenticated(id)
+                     ? proto::encode_authenticated(id, seq, body, len, {nullptr, 1}, frame.data(), frame.size())
+                     : proto::encode_frame(id, seq, body, len, frame.data(), frame.size()));
     if (len == 0 || frame.empty()) throw std::logic_error("frame_of: payload does not fit its type");
     return frame;
 }

@@ -87,7 +87,7 @@ private:
         }
         case proto::MsgType::status_get: size = proto::encode_status(proto::StatusPayload{}, seq, f, sizeof f); break;
         case proto::MsgType::config_set:
-            EXPECT_TRUE(proto::parse(decoder_.payload(), decoder_.payload_len(), &config_));
+            EXPECT_TRUE(proto::parse(decoder_.payload(), decoder_.payload_len() - proto::kAuthTrailerBytes, &config_));
             size = proto::encode_ack({decoder_.type_id(), decoder_.seq()}, seq, f, sizeof f);
             break;
         case proto::MsgType::config_get: size = proto::encode_config(config_, seq, f, sizeof f); break;

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "driftlab/proto/messages.hpp"
+#include "host/io/key_file.hpp"
 #include "host/log/log_reader.hpp"
+#include "sim/hil/eeprom_image.hpp"
 #include "tests/e2e/e2e_support.hpp"
 #include "tests/e2e/pty_relay.hpp"
 
@@ -27,10 +29,18 @@ struct ForgedRun {
 };
 
 // Records 20 s of 0.1 s outputs from a board paced 4x the wall clock through a relay that, once the board has sent
-// kSamplesBeforeForgery SAMPLEs, asks `forge` (with that SAMPLE's frame) what to inject; once only.
-ForgedRun record_with_forgery(const TempDir& dir, const std::function<Injection(const proto::Decoder&)>& forge) {
+// kSamplesBeforeForgery SAMPLEs, asks `forge` (with that SAMPLE's frame) what to inject; once only. With `key_file`
+// the board has that key (as flash --key leaves it) and the recorder signs with it.
+ForgedRun record_with_forgery(const TempDir& dir, const std::function<Injection(const proto::Decoder&)>& forge,
+                              const std::string& key_file = "") {
     host::io::PtyBoardOptions options = paced_board(4.0, 120.0);
     options.truth_log = dir.file("truth.csv");
+    std::vector<std::string> args = {"record",     "--port", "",   "--stream",         "0.1",
+                                     "--duration", "20",     "-o", dir.file("rec.csv")};
+    if (!key_file.empty()) {
+        options.eeprom = sim::eeprom_image({}, host::io::read_key_file(key_file));
+        args.insert(args.end(), {"--key", key_file});
+    }
     BoardThread board(options);
     int samples = 0;
     ForgedRun run;
@@ -39,9 +49,8 @@ ForgedRun record_with_forgery(const TempDir& dir, const std::function<Injection(
             if (frame.type() != proto::MsgType::sample || ++samples != kSamplesBeforeForgery) return Injection{};
             return forge(frame);
         });
-        run.record = run_driftlab(
-            {"record", "--port", relay.path(), "--stream", "0.1", "--duration", "20", "-o", dir.file("rec.csv")},
-            dir.path());
+        args[2] = relay.path();
+        run.record = run_driftlab(args, dir.path());
         run.injected = relay.injected_to_host() + relay.injected_to_board();
     }
     board.stop();  // the ground truth is flushed once a second: stop the board so all of it is on disk
@@ -126,6 +135,7 @@ TEST(RecordForged, AForgedNextSampleKeepsItselfAndTheRealOneOutAndIsReported) {
 
 // A CONFIG_SET sent to the board by someone else, which the board obeys and acknowledges: the rows after it would
 // follow a window the log does not state. The recording stops with exit 6, its log whole up to there.
+// A board without a key obeys anyone's CONFIG_SET (docs/security.md): the recording stops, its log whole.
 TEST(RecordForged, AConfigSetFromAnotherTransmitterStopsTheRecordingWithExit6AndAWholeLog) {
     TempDir dir("forgedconfigset");
     const ForgedRun run = record_with_forgery(dir, [](const proto::Decoder&) {
@@ -142,4 +152,20 @@ TEST(RecordForged, AConfigSetFromAnotherTransmitterStopsTheRecordingWithExit6And
     const RunResult d = run_driftlab({"decode", dir.file("rec.csv.cap"), "-o", dir.file("decoded.csv")}, dir.path());
     ASSERT_EQ(d.exit_code, 0) << d.output;
     EXPECT_EQ(read_text(dir.file("decoded.csv")), read_text(dir.file("rec.csv")));
+}
+
+// A board with a key refuses the same CONFIG_SET (NAK unauthenticated): it changes nothing, and the recording goes on
+// with every row the board sent.
+TEST(RecordForged, AConfigSetFromAnotherTransmitterIsRefusedByAKeyedBoardAndTheRecordingGoesOn) {
+    TempDir dir("forgedkeyed");
+    ASSERT_EQ(run_driftlab({"keygen", "-o", dir.file("board.key")}, dir.path()).exit_code, 0);
+    const ForgedRun run = record_with_forgery(
+        dir,
+        [](const proto::Decoder&) {
+            const proto::ConfigPayload other{100, 8, 4, 1, static_cast<std::uint8_t>(proto::OutputMode::stream), 0};
+            return Injection{{}, frame_of(proto::MsgType::config_set, 4242, other)};
+        },
+        dir.file("board.key"));
+    expect_recording_went_on(dir, run, 0, "lost 0 (0.000 %", "");
+    EXPECT_EQ(read_text(dir.file("rec.csv")).find("# unexpected: ACK"), std::string::npos);
 }

@@ -17,6 +17,7 @@ namespace {
 
 using proto::CalState;
 using proto::MsgType;
+using test::ask;
 using test::Frame;
 using test::is;
 using test::NativeRig;
@@ -51,14 +52,6 @@ proto::SamplePayload poll(NativeRig& rig) {
   const std::vector<Frame> frames = rig.receive();
   EXPECT_EQ(frames.size(), 1U);
   return parse_as<proto::SamplePayload>(frames.at(0));
-}
-
-template <typename Payload>
-Payload ask(NativeRig& rig, MsgType request) {
-  rig.send_empty(request);
-  const std::vector<Frame> frames = rig.receive();
-  EXPECT_EQ(frames.size(), 1U);
-  return parse_as<Payload>(frames.at(0));
 }
 
 uint16_t constant_code(Channel, uint64_t) { return kCode; }

@@ -412,20 +412,20 @@ TEST(Firmware, RejectedFramesGetNoReplyAndAreCountedInStatus) {
 
 TEST(Firmware, FramesThatDoNotFitTheTxRingAreCountedAndLeaveASeqGap) {
   NativeRig rig;
-  // STATUS frames are 32 bytes: 4 fill the 128-byte ring, the next 6 are lost whole.
+  // STATUS frames are 36 bytes: 3 fill the 128-byte ring, the next 7 are lost whole.
   for (int i = 0; i < 10; ++i) {
     rig.send_empty(MsgType::status_get);
   }
   std::vector<Frame> frames = rig.receive();
-  ASSERT_EQ(frames.size(), 4U);
-  for (uint16_t k = 0; k < 4; ++k) {
+  ASSERT_EQ(frames.size(), 3U);
+  for (uint16_t k = 0; k < 3; ++k) {
     EXPECT_EQ(frames[k].seq, k);
   }
   rig.send_empty(MsgType::status_get);
   frames = rig.receive();
   ASSERT_EQ(frames.size(), 1U);
   EXPECT_EQ(frames[0].seq, 10);
-  EXPECT_EQ(parse_as<proto::StatusPayload>(frames[0]).tx_overflow, 6 * 32);
+  EXPECT_EQ(parse_as<proto::StatusPayload>(frames[0]).tx_overflow, 7 * 36);
   EXPECT_EQ(rig.host_decoder_counters().bad_crc, 0U) << "the firmware never sends a partial frame";
 }
 

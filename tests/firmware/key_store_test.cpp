@@ -19,26 +19,26 @@ TEST(KeyStore, ErasedIsNoKeyAStoredKeySurvivesAResetAndADamagedOneIsNotTaken) {
   NativeBoard board;
   KeyStore fresh;
   fresh.load();
-  EXPECT_EQ(fresh.state(), KeyState::none);
+  EXPECT_EQ(fresh.state(), proto::AuthState::open);
   fresh.store(kKey);
   KeyStore after_reset;
   after_reset.load();
-  ASSERT_EQ(after_reset.state(), KeyState::valid);
+  ASSERT_EQ(after_reset.state(), proto::AuthState::keyed);
   for (uint8_t i = 0; i < auth::kKeyBytes; ++i) EXPECT_EQ(after_reset.key()[i], kKey[i]) << int(i);
   board.eeprom()[kKeyEepromAddress + 5] ^= 0x04;
   KeyStore damaged;
   damaged.load();
-  EXPECT_EQ(damaged.state(), KeyState::damaged);
+  EXPECT_EQ(damaged.state(), proto::AuthState::damaged);
 }
 
 TEST(KeyStore, TheRecordAProgrammerWritesIsTheOneTheBoardReads) {
   NativeBoard board;
   uint8_t record[kKeyRecordBytes];
-  KeyStore::record_bytes(kKey, record);
+  key_record_bytes(kKey, record);
   for (uint8_t i = 0; i < kKeyRecordBytes; ++i) board.eeprom()[kKeyEepromAddress + i] = record[i];
   KeyStore store;
   store.load();
-  EXPECT_EQ(store.state(), KeyState::valid);
+  EXPECT_EQ(store.state(), proto::AuthState::keyed);
   EXPECT_EQ(store.key()[15], 0xEF);
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -45,6 +46,15 @@ class NativeRig {
     }
   }
 
+  /// Signs CONFIG_SET and CAL_SET with `key` from now on, counters from `last_counter` + 1 (docs/security.md).
+  void use_key(const proto::Key& key, uint32_t last_counter) {
+    std::copy(std::begin(key), std::end(key), key_);
+    keyed_ = true;
+    counter_ = last_counter;
+  }
+  /// The trailer of the next authenticated command: the key given, or none (an open board's zeros).
+  proto::CommandAuth next_auth() { return proto::CommandAuth{keyed_ ? &key_ : nullptr, ++counter_}; }
+
   /// Seq the next frame sent to the firmware carries.
   uint16_t next_host_seq() const { return host_seq_; }
 
@@ -57,14 +67,14 @@ class NativeRig {
 
   void send_config(const proto::ConfigPayload& p) {
     uint8_t frame[proto::kMaxFrameSize];
-    size_t n = proto::encode_config_set(p, host_seq_++, frame, sizeof frame);
+    size_t n = proto::encode_config_set(p, next_auth(), host_seq_++, frame, sizeof frame);
     ASSERT_GT(n, 0U);
     send_bytes(frame, n);
   }
 
   void send_cal(const proto::CalPayload& p) {
     uint8_t frame[proto::kMaxFrameSize];
-    size_t n = proto::encode_cal_set(p, host_seq_++, frame, sizeof frame);
+    size_t n = proto::encode_cal_set(p, next_auth(), host_seq_++, frame, sizeof frame);
     ASSERT_GT(n, 0U);
     send_bytes(frame, n);
   }
@@ -118,6 +128,9 @@ class NativeRig {
 
   std::vector<uint8_t> tx_bytes_;
   proto::Decoder decoder_;
+  proto::Key key_ = {};
+  bool keyed_ = false;
+  uint32_t counter_ = 0;
   uint16_t host_seq_ = 100;
 };
 
@@ -129,6 +142,15 @@ Payload parse_as(const Frame& frame) {
 }
 
 inline bool is(const Frame& frame, proto::MsgType type) { return frame.type == proto::type_id(type); }
+
+/// The one answer to an empty request (HELLO, STATUS_GET...), parsed.
+template <typename Payload>
+Payload ask(NativeRig& rig, proto::MsgType request) {
+  rig.send_empty(request);
+  const std::vector<Frame> frames = rig.receive();
+  EXPECT_EQ(frames.size(), 1U);
+  return parse_as<Payload>(frames.at(0));
+}
 
 }  // namespace test
 }  // namespace fw

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "firmware/core/key_store.hpp"
+#include "firmware/core/key_record.hpp"
 #include "host/io/avrdude.hpp"
 #include "host/io/intel_hex.hpp"
 #include "host/util/error.hpp"
@@ -63,7 +63,7 @@ TEST(KeyFile, TheKeyRecordsIntelHexIsTheIndependentlyWrittenOne) {
     std::uint8_t key[16];
     for (std::uint8_t i = 0; i < 16; ++i) key[i] = i;
     std::uint8_t record[fw::kKeyRecordBytes];
-    fw::KeyStore::record_bytes(key, record);
+    fw::key_record_bytes(key, record);
     EXPECT_EQ(intel_hex(fw::kKeyEepromAddress, std::vector<std::uint8_t>(record, record + sizeof record)),
               ":10006000000102030405060708090A0B0C0D0E0F18\n:02007000373B1C\n:00000001FF\n");
     FlashRequest r;

@@ -51,8 +51,6 @@ protected:
     fs::path root_;
 };
 
-}  // namespace
-
 TEST_F(FakeSystem, SysfsScanFindsOnlyUsbTtysWithTheirBusAddressAndIds) {
     const auto nodes = scan_sysfs_usb_ttys((root_ / "sys").string());
     ASSERT_EQ(nodes.size(), 2u);
@@ -128,3 +126,5 @@ TEST(UsbPorts, KnownVendorsAreTheCommonBridgesAndArduino) {
     EXPECT_TRUE(is_known_serial_vendor(0x2341));   // Arduino
     EXPECT_FALSE(is_known_serial_vendor(0x046d));  // a mouse vendor
 }
+
+}  // namespace

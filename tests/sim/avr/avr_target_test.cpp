@@ -2,6 +2,7 @@
 // AVR and native targets (docs/avr-in-the-loop.md).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "sim/hil/hil.hpp"
 #include "sim/model/model_file.hpp"
 #include "sim/motion/trajectories.hpp"
+#include "sim/sim_error.hpp"
 #include "tests/sim/avr/twin_driver.hpp"
 
 namespace driftlab::sim::avr::test {
@@ -52,6 +54,9 @@ void expect_same_records(const Run& avr, const Run& native, std::size_t min_reco
     EXPECT_EQ(avr.summary.host.frames_lost, native.summary.host.frames_lost);
 }
 
+constexpr std::array<std::uint8_t, 16> kKey = {0x51, 0x0C, 0xE7, 0x2A, 0x93, 0x6D, 0xB8, 0x04,
+                                               0x7F, 0xC1, 0x35, 0x9E, 0x48, 0xD2, 0x16, 0xAB};
+
 class AvrHil : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -83,10 +88,10 @@ TEST_F(AvrHil, AFigureEightMinuteGivesTheSameRecordsAsNative) {
     expect_same_records(run(options, true), run(options, false), 590);
 }
 
-// Compensation on the chip: the calibration in the EEPROM at power-on (as an upload leaves it), the same corrected
-// values from the AVR's integer arithmetic as from the native core's, over 10 minutes of the transient at 0.1 s
-// outputs.
-TEST_F(AvrHil, ACompensatedRunGivesTheSameRecordsAsNative) {
+// Compensation and authentication on the chip: the calibration and the key in the EEPROM at power-on (as upload and
+// flash --key leave them), the configuration signed by the host; the same corrected values from the AVR's integer
+// arithmetic as from the native core's, over 10 minutes of the transient at 0.1 s outputs.
+TEST_F(AvrHil, ACompensatedRunWithAnAuthenticatedConfigurationGivesTheSameRecordsAsNative) {
     HilOptions options;
     options.model = paper_model();
     options.model.firmware.output_period_ms = 100;
@@ -101,14 +106,34 @@ TEST_F(AvrHil, ACompensatedRunGivesTheSameRecordsAsNative) {
     for (std::uint8_t c = 0; c < kChannelCount; ++c)
         entries.push_back(proto::CalPayload{4242, c, static_cast<std::uint8_t>(c == 0 ? proto::kCalFlagZero : 0), c1[c],
                                             c2[c], t_ms[c]});
-    options.eeprom = eeprom_image(entries);
+    options.key = kKey;
+    options.eeprom = eeprom_image(entries, kKey);
     const auto avr = run(options, true);
     const auto native = run(options, false);
+    EXPECT_EQ(avr.summary.version.auth_state, static_cast<std::uint8_t>(proto::AuthState::keyed));
     EXPECT_EQ(avr.summary.version.cal_state, static_cast<std::uint8_t>(proto::CalState::active));
     EXPECT_EQ(avr.summary.version.cal_id, 4242);
     expect_same_records(avr, native, 5990);
     // And compensated: the gyro, referred to zero, near mid-scale from the start.
     EXPECT_NEAR(native.records.front().value_counts[0], 512.0, 1.0);
+}
+
+// The AVR refuses a configuration under another key, as the native core does, and the run says why.
+TEST_F(AvrHil, AConfigurationUnderAnotherKeyIsRefusedAsUnauthenticated) {
+    HilOptions options;
+    options.model = paper_model();
+    options.duration_s = 5.0;
+    options.eeprom = eeprom_image({}, kKey);
+    options.key = kKey;
+    options.key->at(0) ^= 1;
+    for (bool on_avr : {true, false}) {
+        try {
+            run(options, on_avr);
+            ADD_FAILURE() << (on_avr ? "AVR" : "native") << ": the run went on";
+        } catch (const ConfigRefused& e) {
+            EXPECT_NE(std::string(e.what()).find("unauthenticated"), std::string::npos) << e.what();
+        }
+    }
 }
 
 }  // namespace

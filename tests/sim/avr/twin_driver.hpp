@@ -42,7 +42,7 @@ inline std::vector<std::uint8_t> empty_frame(proto::MsgType type, std::uint16_t 
 
 inline std::vector<std::uint8_t> config_set_frame(const proto::ConfigPayload& config, std::uint16_t seq) {
     std::uint8_t buf[proto::kMaxFrameSize];
-    const std::size_t n = proto::encode_config_set(config, seq, buf, sizeof buf);
+    const std::size_t n = proto::encode_config_set(config, {nullptr, 1}, seq, buf, sizeof buf);
     return frame_of(n, buf);
 }
 

@@ -111,8 +111,9 @@ TEST(ChainParity, HilAndTheReplicatePathGiveTheSameCodesForEveryEffect) {
         ASSERT_GT(hil.codes[0].size(), 5000u);  // 20 conversions a second per channel
         // A low-pass of a constant input is that input: bandwidth alone changes nothing at rest, and is compared
         // where it filters something, beside vibration.
-        if (effects != std::vector<std::string>{"bandwidth"})
+        if (effects != std::vector<std::string>{"bandwidth"}) {
             EXPECT_NE(hil.codes, base.codes) << label(effects) << " changed no code: the comparison would be vacuous";
+        }
         const Codes replicated = through_replicates(model, hil);
         for (std::size_t c = 0; c < kChannelCount; ++c) {
             ASSERT_EQ(replicated[c].size(), hil.codes[c].size());

@@ -1,4 +1,4 @@
-// Payloads of protocol v2 (HELLO..CAL) as plain structs, with serialize/parse to and from the wire's
+// Payloads of protocol v2 (HELLO..KEY_SET) as plain structs, with serialize/parse to and from the wire's
 // little-endian byte layout. Spec: docs/protocol.md §3. HELLO, CONFIG_GET, POLL and STATUS_GET carry no payload.
 //
 // serialize() writes exactly the type's fixed length and returns it, or 0 when `out_size` is smaller.
@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "driftlab/channels.hpp"
+#include "driftlab/proto/command_auth.hpp"
 #include "driftlab/proto/msg_table.hpp"
 #include "driftlab/proto/nodiscard.hpp"
 
@@ -31,6 +32,13 @@ constexpr bool is_compensated(uint8_t cal_state) {
   return cal_state == static_cast<uint8_t>(CalState::active) || cal_state == static_cast<uint8_t>(CalState::settled);
 }
 
+/// Whether the board takes commands that change it from anyone (docs/security.md), as VERSION reports it.
+enum class AuthState : uint8_t {
+  open = 0,     ///< no key provisioned: CONFIG_SET and CAL_SET are taken without checking their tag; KEY_SET is refused
+  keyed = 1,    ///< a key: CONFIG_SET, CAL_SET and KEY_SET must carry its tag and a counter above the last admitted
+  damaged = 2,  ///< the key record fails its CRC: every command that changes the board is refused
+};
+
 /// VERSION (0x02, fw->host): what the firmware is and how it samples. Sent in answer to HELLO.
 struct VersionPayload {
   uint8_t proto_version;  ///< kProtocolVersion of the firmware
@@ -47,9 +55,12 @@ struct VersionPayload {
   uint16_t assert_line;            ///< source line of the assertion that caused the last reset, 0 = none
   uint8_t cal_state;               ///< CalState at the answer
   uint16_t cal_id;                 ///< id of the calibration applied, 0 when cal_state is not compensated
+  uint8_t auth_state;              ///< AuthState
+  uint32_t auth_counter;           ///< counter of the last command admitted; the next must carry a larger one
 };
 
-/// CONFIG_SET (0x04, host->fw) and CONFIG (0x05, fw->host): sampling and output configuration.
+/// CONFIG (0x05, fw->host), and CONFIG_SET (0x04, host->fw) before its authentication trailer (command_auth.hpp):
+/// sampling and output configuration.
 struct ConfigPayload {
   uint16_t output_period_ms;       ///< time between outputs [ms], kOutputPeriodMinMs..kOutputPeriodMaxMs
   uint8_t conversions_per_output;  ///< ADC conversions per channel per output, 1..64
@@ -115,10 +126,13 @@ struct StatusPayload {
   uint16_t dropped;          ///< conversions lost [conversions]
   uint8_t cal_state;         ///< CalState
   uint16_t cal_id;           ///< id of the calibration applied, 0 when cal_state is not compensated
+  uint16_t auth_refused;     ///< commands refused because their tag did not verify (NAK unauthenticated) [commands]
+  uint16_t auth_replayed;    ///< commands refused because their counter was not new (NAK replayed) [commands]
 };
 
-/// CAL_SET (0x0D, host->fw) and CAL (0x0F, fw->host): one channel's entry of the calibration, eq. 1 in fixed
-/// point. The board compensates once all four entries carry the same non-zero cal_id (docs/protocol.md §3.12).
+/// CAL (0x0F, fw->host), and CAL_SET (0x0D, host->fw) before its authentication trailer: one channel's entry of the
+/// calibration, eq. 1 in fixed point. The board compensates once all four entries carry the same non-zero cal_id
+/// (docs/protocol.md §3.12).
 struct CalPayload {
   uint16_t cal_id;  ///< calibration id; 0 clears the entry (no compensation)
   uint8_t channel;  ///< Channel index 0..3
@@ -176,25 +190,29 @@ constexpr uint8_t kWindowMax = 64;
 constexpr uint8_t kFitOrderMax = 1;
 
 /// Wire sizes [bytes]; each equals its table row, checked below.
-constexpr uint8_t kVersionPayloadSize = 23;
+constexpr uint8_t kVersionPayloadSize = 28;
 constexpr uint8_t kConfigPayloadSize = 7;
 constexpr uint8_t kSamplePayloadSize = 27;
 constexpr uint8_t kRawPayloadSize = 12;
 constexpr uint8_t kAckPayloadSize = 3;
 constexpr uint8_t kNakPayloadSize = 5;
-constexpr uint8_t kStatusPayloadSize = 23;
+constexpr uint8_t kStatusPayloadSize = 27;
 constexpr uint8_t kCalPayloadSize = 16;
 constexpr uint8_t kCalGetPayloadSize = 1;
 
 static_assert(payload_len_of(MsgType::version) == kVersionPayloadSize, "VERSION size differs from the table");
-static_assert(payload_len_of(MsgType::config_set) == kConfigPayloadSize, "CONFIG_SET size differs from the table");
+static_assert(payload_len_of(MsgType::config_set) == kConfigPayloadSize + kAuthTrailerBytes,
+              "CONFIG_SET size differs from the table");
 static_assert(payload_len_of(MsgType::config) == kConfigPayloadSize, "CONFIG size differs from the table");
 static_assert(payload_len_of(MsgType::sample) == kSamplePayloadSize, "SAMPLE size differs from the table");
 static_assert(payload_len_of(MsgType::raw) == kRawPayloadSize, "RAW size differs from the table");
 static_assert(payload_len_of(MsgType::ack) == kAckPayloadSize, "ACK size differs from the table");
 static_assert(payload_len_of(MsgType::nak) == kNakPayloadSize, "NAK size differs from the table");
 static_assert(payload_len_of(MsgType::status) == kStatusPayloadSize, "STATUS size differs from the table");
-static_assert(payload_len_of(MsgType::cal_set) == kCalPayloadSize, "CAL_SET size differs from the table");
+static_assert(payload_len_of(MsgType::cal_set) == kCalPayloadSize + kAuthTrailerBytes,
+              "CAL_SET size differs from the table");
+static_assert(payload_len_of(MsgType::key_set) == kKeySetFieldBytes + kAuthTrailerBytes,
+              "KEY_SET size differs from the table");
 static_assert(payload_len_of(MsgType::cal_get) == kCalGetPayloadSize, "CAL_GET size differs from the table");
 static_assert(payload_len_of(MsgType::cal) == kCalPayloadSize, "CAL size differs from the table");
 

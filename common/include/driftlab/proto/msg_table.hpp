@@ -29,6 +29,7 @@ enum class MsgType : uint8_t {
   cal_set = 0x0D,
   cal_get = 0x0E,
   cal = 0x0F,
+  key_set = 0x10,
 };
 
 constexpr uint8_t type_id(MsgType type) { return static_cast<uint8_t>(type); }
@@ -48,9 +49,9 @@ struct MsgInfo {
 /// tests/common/msg_table_test.cpp recomputes every one).
 constexpr MsgInfo kMsgTable[] = {
     {MsgType::hello, "HELLO", 0, 0x9F, Direction::host_to_fw},
-    {MsgType::version, "VERSION", 23, 0xE6, Direction::fw_to_host},
+    {MsgType::version, "VERSION", 28, 0xA2, Direction::fw_to_host},
     {MsgType::config_get, "CONFIG_GET", 0, 0xF3, Direction::host_to_fw},
-    {MsgType::config_set, "CONFIG_SET", 7, 0x6F, Direction::host_to_fw},
+    {MsgType::config_set, "CONFIG_SET", 19, 0x25, Direction::host_to_fw},
     {MsgType::config, "CONFIG", 7, 0x6A, Direction::fw_to_host},
     {MsgType::poll, "POLL", 0, 0x8F, Direction::host_to_fw},
     {MsgType::sample, "SAMPLE", 27, 0x24, Direction::fw_to_host},
@@ -58,10 +59,11 @@ constexpr MsgInfo kMsgTable[] = {
     {MsgType::ack, "ACK", 3, 0xB4, Direction::fw_to_host},
     {MsgType::nak, "NAK", 5, 0x11, Direction::fw_to_host},
     {MsgType::status_get, "STATUS_GET", 0, 0x90, Direction::host_to_fw},
-    {MsgType::status, "STATUS", 23, 0x45, Direction::fw_to_host},
-    {MsgType::cal_set, "CAL_SET", 16, 0xD0, Direction::host_to_fw},
+    {MsgType::status, "STATUS", 27, 0xDB, Direction::fw_to_host},
+    {MsgType::cal_set, "CAL_SET", 28, 0xC9, Direction::host_to_fw},
     {MsgType::cal_get, "CAL_GET", 1, 0x44, Direction::host_to_fw},
     {MsgType::cal, "CAL", 16, 0x9E, Direction::fw_to_host},
+    {MsgType::key_set, "KEY_SET", 28, 0x1E, Direction::host_to_fw},
 };
 
 constexpr size_t kMsgTypeCount = sizeof(kMsgTable) / sizeof(kMsgTable[0]);
