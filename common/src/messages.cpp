@@ -96,6 +96,7 @@ size_t serialize(const SamplePayload& p, uint8_t* out, size_t out_size) {
   put_u16_le(out + 22, p.dropped);
   out[24] = p.cal_state;
   put_u16_le(out + 25, p.cal_id);
+  put_u16_le(out + 27, p.temp_code);
   return kSamplePayloadSize;
 }
 
@@ -112,6 +113,7 @@ bool parse(const uint8_t* in, size_t in_size, SamplePayload* out) {
   out->dropped = get_u16_le(in + 22);
   out->cal_state = in[24];
   out->cal_id = get_u16_le(in + 25);
+  out->temp_code = get_u16_le(in + 27);
   return true;
 }
 

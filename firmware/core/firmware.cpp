@@ -44,12 +44,19 @@ Firmware::Firmware()
       counter_(),
       auth_refused_(0),
       auth_replayed_(0),
+      temperature_code_(proto::kNoTemperature),
+      outputs_per_temperature_(1),
+      outputs_to_temperature_(0),
       decoder_() {
   reset_windows();
 }
 
 void Firmware::start() {
-  arm(hal_ticks() + conversion_period_ticks(config_.output_period_ms, config_.conversions_per_output));
+  // The die temperature at power-on, while the ADC is idle; the grid is counted from before it, so a port whose
+  // reading takes time arms the same grid as one whose reading takes none.
+  const uint32_t now = hal_ticks();
+  temperature_code_ = hal_read_temperature();
+  arm(now + conversion_period_ticks(config_.output_period_ms, config_.conversions_per_output));
   // After arming: reading the calibration takes the AVR a millisecond or two, which must not move the grid. A reset
   // that kept the sensor powered leaves t since its cold start unknown (drift_comp.hpp).
   const uint8_t cause = hal_reset_info().cause;
@@ -66,7 +73,27 @@ void Firmware::arm(uint32_t first_trigger_tick) {
   rearm_pending_ = false;
   have_conversion_ = false;
   conversions_since_output_ = 0;
+  // About one temperature a second, the first at the first output; a schedule without room for one reports none
+  // rather than an old one.
+  outputs_per_temperature_ =
+      static_cast<uint8_t>(config_.output_period_ms >= 1000U ? 1U : 1000U / config_.output_period_ms);
+  outputs_to_temperature_ = 0;
+  if (conversion_period_ticks_ < kMinTemperaturePeriodTicks) {
+    temperature_code_ = proto::kNoTemperature;
+  }
   hal_init(schedule);
+}
+
+void Firmware::note_output() {
+  if (conversion_period_ticks_ < kMinTemperaturePeriodTicks) {
+    return;
+  }
+  if (outputs_to_temperature_ > 0) {
+    --outputs_to_temperature_;
+    return;
+  }
+  hal_request_temperature();
+  outputs_to_temperature_ = static_cast<uint8_t>(outputs_per_temperature_ - 1U);
 }
 
 void Firmware::reset_windows() {
@@ -100,6 +127,11 @@ void Firmware::apply(const Config& next) {
 }
 
 void Firmware::on_conversion(Channel channel, uint16_t code_counts, uint32_t tick) {
+  if (channel == kTemperatureInput) {
+    // Between two conversions of the round, not one of them: no window, no gap, no output (hal.hpp).
+    temperature_code_ = code_counts;
+    return;
+  }
   DRIFTLAB_ASSERT(code_counts <= LsWindow::kMaxCode && channel_index(channel) < kChannelCount);
   comp_.advance_to(tick);
   if (rearm_pending_) {
@@ -135,6 +167,7 @@ void Firmware::on_conversion(Channel channel, uint16_t code_counts, uint32_t tic
     if (since >= per_output) {
       since %= per_output;  // only after a long loss
     }
+    note_output();
     if (config_.mode == proto::OutputMode::stream) {
       send_sample();
     }
@@ -249,6 +282,7 @@ void Firmware::send_sample() {
   p.dropped = dropped_;
   p.cal_state = cal_state_;
   p.cal_id = cal_id_;
+  p.temp_code = temperature_code_;
   uint8_t frame[proto::kMaxFrameSize];
   send_frame(frame, static_cast<uint8_t>(proto::encode_sample(p, tx_seq_, frame, sizeof frame)));
   if (config_.raw) {

@@ -35,9 +35,9 @@ class Firmware {
  public:
   Firmware();
 
-  /// Main loop, once after the board's own set-up: loads the command key, the replay counter and the calibration from
-  /// EEPROM (a warm restart, per
-  /// hal_reset_info(), takes the transient as over: drift_comp.hpp) and arms the default schedule (kDefaultConfig)
+  /// Main loop, once after the board's own set-up: reads the die temperature (hal_read_temperature(), so that every
+  /// SAMPLE carries one), loads the command key, the replay counter and the calibration from EEPROM (a warm restart,
+  /// per hal_reset_info(), takes the transient as over: drift_comp.hpp) and arms the default schedule (kDefaultConfig)
   /// via hal_init(), first trigger one period after hal_ticks().
   void start();
 
@@ -58,6 +58,7 @@ class Firmware {
  private:
   void apply(const Config& next);
   void arm(uint32_t first_trigger_tick);
+  void note_output();
   void reset_windows();
   void load_calibration();
   void handle_frame();
@@ -90,8 +91,11 @@ class Firmware {
   uint16_t cal_id_;    // of the calibration applied, 0 when none is
   KeyStore key_;
   CounterStore counter_;
-  uint16_t auth_refused_;   // NAK unauthenticated sent, saturating
-  uint16_t auth_replayed_;  // NAK replayed sent, saturating
+  uint16_t auth_refused_;            // NAK unauthenticated sent, saturating
+  uint16_t auth_replayed_;           // NAK replayed sent, saturating
+  uint16_t temperature_code_;        // newest die temperature conversion, proto::kNoTemperature when none is current
+  uint8_t outputs_per_temperature_;  // outputs between two temperature requests: about one a second
+  uint8_t outputs_to_temperature_;   // outputs left until the next request
   proto::Decoder decoder_;
 };
 

@@ -32,9 +32,10 @@ static_assert(kTickHz % 1000 == 0, "ms to ticks conversions assume a whole numbe
 /// Ring sizes shared by both ports so that overflow behaviour is the same natively and on the chip.
 /// Conversions: 16 x 7 bytes absorb one output's burst of work (divisions, framing) at the fastest schedule.
 constexpr uint8_t kAdcRingCapacity = 16;
-/// Received bytes: two of the longest host frames (CAL_SET, 25 bytes), with room to spare.
+/// Received bytes: one of the longest host frames (CAL_SET, KEY_SET: 37 bytes) and most of another; a host sends one
+/// command and waits for its answer.
 constexpr uint8_t kRxRingCapacity = 64;
-/// Bytes to send: SAMPLE + RAW (57 bytes) plus two replies, with room to spare.
+/// Bytes to send: SAMPLE + RAW (59 bytes) plus two replies, with room to spare.
 constexpr uint8_t kTxRingCapacity = 128;
 
 /// What hal_init() arms: a first conversion at `first_trigger_tick`, then one every `conversion_period_ticks`,
@@ -68,6 +69,15 @@ struct Conversion {
                          ///< exactly conversion_period_ticks unless some were lost
 };
 
+/// Conversion.channel of a die temperature conversion (ADC8, against the internal 1.1 V reference): no sensor
+/// channel, never in a round (hal_request_temperature()).
+constexpr Channel kTemperatureInput = static_cast<Channel>(8);
+
+/// The shortest conversion period that leaves the port room for a temperature conversion between the round's last
+/// conversion and the next trigger [ticks]: two conversions of 13 ADC clocks (the first after switching the
+/// reference is discarded), 208 us, after the 108 us of the round's last, with the vectors' latency and a margin.
+constexpr uint16_t kMinTemperaturePeriodTicks = 125;
+
 /// Why the chip last reset, as VERSION reports it: the ATmega328P MCUSR bits.
 constexpr uint8_t kResetPowerOn = 0x01;
 constexpr uint8_t kResetExternal = 0x02;
@@ -83,6 +93,16 @@ struct ResetInfo {
 /// drops conversions still queued from it, and arms `schedule`: conversion 0 samples order[0] at
 /// schedule.first_trigger_tick (see arm_wait_ticks()). hal_ticks() keeps counting across calls.
 void hal_init(const AdcSchedule& schedule);
+
+/// Main loop, before the first hal_init() (the ADC idle): converts the die temperature twice against the internal
+/// 1.1 V reference, the first after switching discarded, and returns the second code, 0..1023 (docs/hal.md §1.4).
+uint16_t hal_read_temperature();
+
+/// Main loop, while a schedule of conversion_period_ticks >= kMinTemperaturePeriodTicks runs: right after the next
+/// conversion of the round's last slot (order[3]) the port converts the die temperature once and queues it as a
+/// Conversion {kTemperatureInput, code, that conversion's trigger tick}, between that conversion and the next, so the
+/// core sees it at the same place in the stream on every port. hal_init() drops a request not yet served.
+void hal_request_temperature();
 
 /// Main loop. Queues `count` bytes for transmission if all of them fit, else none: the core never sends half a
 /// frame. Never blocks. Returns the bytes accepted, `count` or 0.

@@ -95,6 +95,7 @@ void set_target(const HilCliOptions& o, sim::HilOptions& h) {
 #ifdef DRIFTLAB_HAVE_SIM_AVR
         sim::avr::AvrBoardOptions avr{firmware_elf(o), o.gdb_port};
         avr.eeprom = h.eeprom;
+        avr.die_temperature = h.die_temperature;
         try {
             h.make_board = sim::avr::avr_board_factory(avr);
         } catch (const sim::avr::AvrError& e) {

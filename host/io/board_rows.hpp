@@ -15,7 +15,8 @@ namespace driftlab::host::io {
 /// flags column bit: the RAW frame belonging to this SAMPLE was lost.
 inline constexpr int kFlagRawMissing = 1;
 
-/// tick, sat_flags, n_window, dropped; then, in raw mode, the raw codes and, with `flags`, the flags column (a log
+/// tick, sat_flags, n_window, dropped, temp_c (the die temperature [°C], kNoTemperatureC without a reading); then, in
+/// raw mode, the raw codes and, with `flags`, the flags column (a log
 /// that keeps a SAMPLE whose RAW was lost, receiver::MissingRaw::mark).
 std::vector<std::string> board_columns(bool raw, bool flags);
 

@@ -24,11 +24,15 @@ inline constexpr std::array<const char*, 2 + kChannelCount> kRequiredLogColumns 
                                                                                    "accel_x", "accel_y", "accel_z"};
 
 /// Optional columns a reader keeps (by name) when present; any other column is ignored.
-inline constexpr std::array<const char*, 9> kOptionalLogColumns = {
-    "raw_gyro", "raw_accel_x", "raw_accel_y", "raw_accel_z", "tick", "flags", "sat_flags", "n_window", "dropped"};
+inline constexpr std::array<const char*, 10> kOptionalLogColumns = {
+    "raw_gyro", "raw_accel_x", "raw_accel_y", "raw_accel_z", "tick",
+    "flags",    "sat_flags",   "n_window",    "dropped",     "temp_c"};
 
 /// What a raw-code column holds where the row's RAW frame was lost.
 inline constexpr double kLostRawCode = -1.0;
+
+/// What temp_c holds where the board had no temperature reading (a schedule too fast for one): below absolute zero.
+inline constexpr double kNoTemperatureC = -300.0;
 
 /// What a converter of `bits` bits can put in a log (docs/log-format.md §4). Its channel values are the least-squares
 /// estimate of codes 0..full: a fitted line (order 1) is read at the window's end, where its weights sum to at most

@@ -69,7 +69,10 @@ std::uint64_t uart_cycles_per_byte(const avr_t* avr) {
 }  // namespace
 
 AvrBoard::AvrBoard(const AvrBoardOptions& options, VoltageSource source)
-    : source_(std::move(source)), elf_path_(options.elf_path), gdb_(options.gdb_port > 0) {
+    : source_(std::move(source)),
+      die_temperature_(options.die_temperature),
+      elf_path_(options.elf_path),
+      gdb_(options.gdb_port > 0) {
     const ElfSymbols symbols(options.elf_path);
     const ElfSymbol isr_shared = symbols.require(kIsrSharedSymbol);
     if (isr_shared.size_bytes != IsrSharedLayout::kTotalBytes) {
@@ -279,6 +282,14 @@ void AvrBoard::on_adc_trigger(avr_irq_t*, std::uint32_t value, void* param) {
     avr_adc_mux_t mux{};
     static_assert(sizeof mux >= sizeof value, "avr_adc_mux_t holds the IRQ's 32-bit value");
     std::memcpy(&mux, &value, sizeof value);
+    if (mux.kind == ADC_MUX_TEMP) {
+        // At boot, and right after the round's last conversion: the die at that conversion's trigger, as the native
+        // board reads it (NativeTarget), in millivolts against the 1.1 V reference the firmware selects.
+        const double t_s = static_cast<double>(self->last_trigger_tick_) / fw::kTickHz;
+        avr_raise_irq(self->adc_irq_ + ADC_IRQ_TEMP,
+                      millivolts_for_code(self->die_temperature_.code(t_s), kTemperatureVrefMv));
+        return;
+    }
     if (mux.kind != ADC_MUX_SINGLE) {
         return;
     }

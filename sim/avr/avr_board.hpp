@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "driftlab/channels.hpp"
+#include "sim/hil/die_temperature.hpp"
 
 struct avr_t;
 struct avr_irq_t;
@@ -53,6 +54,8 @@ struct AvrBoardOptions {
     bool profile = false;  ///< count cycles per function and ISR (slower; see CycleProfiler)
     /// The EEPROM at power-on (up to 1024 bytes from address 0; sim/hil/eeprom_image.hpp); empty: erased.
     std::vector<std::uint8_t> eeprom{};
+    /// What the die temperature sensor (ADC8) reads, at the trigger of the conversion it follows (0 at boot).
+    DieTemperature die_temperature{};
 };
 
 /// One byte the firmware wrote to UDR0, at the emulated cycle it did.
@@ -135,6 +138,7 @@ private:
 
     avr_t* avr_ = nullptr;
     VoltageSource source_;
+    DieTemperature die_temperature_;
     std::string elf_path_;
     bool gdb_ = false;
     std::unique_ptr<CycleProfiler> profiler_;

@@ -95,7 +95,7 @@ CycleBudget measure_cycle_budget(const std::string& elf_path, proto::ConfigPaylo
 std::vector<CycleBudget> search_max_rate(const std::string& elf_path, double measure_s,
                                          const std::vector<std::uint8_t>& eeprom) {
     // Output every 20..100 ms with 25 conversions per channel per output: conversion periods of 50 (the firmware's
-    // minimum, kMinConversionPeriodTicks) to 250 ticks, SAMPLE + RAW (57 bytes, 4.9 ms at 115200) per output.
+    // minimum, kMinConversionPeriodTicks) to 250 ticks, SAMPLE + RAW (59 bytes, 5.1 ms at 115200) per output.
     const std::uint16_t output_periods_ms[] = {20, 22, 24, 26, 28, 32, 40, 60, 100};
     std::vector<CycleBudget> results;
     for (std::uint16_t period_ms : output_periods_ms) {

@@ -10,6 +10,9 @@ namespace driftlab::sim::avr {
 /// Reference of the 5 V board: AVCC = AREF = VCC [mV] (the firmware selects AVCC, hal_avr.cpp).
 inline constexpr std::uint32_t kBoardVrefMv = 5000;
 
+/// The internal reference the firmware converts the die temperature against (ADC8) [mV].
+inline constexpr std::uint32_t kTemperatureVrefMv = 1100;
+
 /// The smallest input [mV] that simavr converts to `code_counts` (0..1023) against `vref_mv`:
 /// ceil(code * vref / 1023). One LSB is vref/1023 > 1 mV, so every code has such an integer input.
 constexpr std::uint32_t millivolts_for_code(std::uint16_t code_counts, std::uint32_t vref_mv = kBoardVrefMv) {

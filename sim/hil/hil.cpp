@@ -37,9 +37,10 @@ private:
     const std::function<void(Channel, double, std::uint16_t)>& observer_;
 };
 
-std::unique_ptr<EmulatedBoard> make_target(TargetKind kind, std::span<const std::uint8_t> eeprom) {
+std::unique_ptr<EmulatedBoard> make_target(TargetKind kind, std::span<const std::uint8_t> eeprom,
+                                           const DieTemperature& die) {
     switch (kind) {
-    case TargetKind::native: return std::make_unique<NativeTarget>(eeprom);
+    case TargetKind::native: return std::make_unique<NativeTarget>(eeprom, die);
     }
     return nullptr;
 }
@@ -94,7 +95,8 @@ HilSummary run_hil(const HilOptions& options, const RecordSink& sink) {
     plan.key = options.key;
     HostEndpoint host(plan, sink, options.on_ready);
     const std::unique_ptr<EmulatedBoard> board =
-        options.make_board ? options.make_board() : make_target(options.target, options.eeprom);
+        options.make_board ? options.make_board()
+                           : make_target(options.target, options.eeprom, options.die_temperature);
 
     std::vector<TxChunk> tx;
     std::vector<std::uint8_t> rx;

@@ -15,6 +15,7 @@
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
+#include "sim/hil/die_temperature.hpp"
 #include "sim/hil/emulated_board.hpp"
 #include "sim/hil/hil_record.hpp"
 #include "sim/hil/host_endpoint.hpp"
@@ -40,6 +41,8 @@ struct HilOptions {
     /// The key the host signs CONFIG_SET with (the one in `eeprom`: `hil --key`); none: sent unsigned, as to an open
     /// board.
     std::optional<std::array<std::uint8_t, auth::kKeyBytes>> key;
+    /// The board's own die temperature, which its firmware reads at boot and about once a second.
+    DieTemperature die_temperature;
     TargetKind target = TargetKind::native;
     /// When set, builds the board instead of `target`: how the AVR board (sim/avr, a library that depends on this
     /// one) plugs in for `driftlab hil --target avr`.

@@ -2,7 +2,6 @@
 #include "sim/hil/native_target.hpp"
 
 #include <algorithm>
-
 #include <cmath>
 
 namespace driftlab::sim {
@@ -24,8 +23,9 @@ std::uint64_t ticks_at_or_before(double t_s) {
 
 }  // namespace
 
-NativeTarget::NativeTarget(std::span<const std::uint8_t> eeprom) {
+NativeTarget::NativeTarget(std::span<const std::uint8_t> eeprom, const DieTemperature& die) : die_(die) {
     board_.load_eeprom(eeprom.data(), eeprom.size());
+    board_.set_die_temperature_code(die_.code(0.0));
     firmware_.start();
 }
 
@@ -41,6 +41,7 @@ void NativeTarget::advance_to(double t_s, ConversionSource& source, std::vector<
     while (board_.next_conversion_time_ticks() <= target_ticks) {
         const std::uint64_t trigger = board_.next_conversion_time_ticks();
         board_.set_time_ticks(trigger);
+        if (board_.temperature_due()) board_.set_die_temperature_code(die_.code(seconds_of(trigger)));
         // A full conversion ring loses the conversion as on the chip; the firmware counts it from the tick gap.
         static_cast<void>(board_.convert(source.code(board_.next_channel(), seconds_of(trigger))));
         ++conversions_;

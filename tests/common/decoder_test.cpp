@@ -201,14 +201,15 @@ TEST(Decoder, FalseStartByteIsSkippedAndTheNextSyncReexamined) {
 }
 
 TEST(Decoder, FrameHiddenInsideTruncatedCandidateIsFound) {
-  // A SAMPLE header whose frame was cut after 3 payload bytes, then three HELLOs. The SAMPLE candidate swallows
-  // the first HELLOs until its 36 bytes are in and its CRC fails; re-scanning those bytes finds them.
-  // (A parser that resumes at the current byte, as MAVLink's does, loses the first two.)
-  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 27, 0x01, 0x02, 0x03};
+  // A SAMPLE header whose frame was cut after 3 payload bytes, then four HELLOs. The SAMPLE candidate swallows
+  // the first HELLOs until its 38 bytes are in and its CRC fails; re-scanning those bytes finds them.
+  // (A parser that resumes at the current byte, as MAVLink's does, loses the first three.)
+  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 29, 0x01, 0x02, 0x03};
   const Bytes h1 = hello(10);
   const Bytes h2 = hello(11);
   const Bytes h3 = hello(12);
-  const Bytes stream = concat({cut, h1, h2, h3});
+  const Bytes h4 = hello(13);
+  const Bytes stream = concat({cut, h1, h2, h3, h4});
   Decoder dec;
   std::vector<uint16_t> seqs;
   std::vector<size_t> offsets;
@@ -220,16 +221,16 @@ TEST(Decoder, FrameHiddenInsideTruncatedCandidateIsFound) {
       } while (dec.next());
     }
   }
-  EXPECT_EQ(seqs, (std::vector<uint16_t>{10, 11, 12}));
+  EXPECT_EQ(seqs, (std::vector<uint16_t>{10, 11, 12, 13}));
   const size_t candidate_end = frame_size(kSamplePayloadSize) - 1;
-  // h1 and h2 are complete inside the failed candidate: both come out at its last byte; h3 at its own end.
-  EXPECT_EQ(offsets, (std::vector<size_t>{candidate_end, candidate_end, stream.size() - 1}));
-  expect_counters(dec.counters(), 3, 1, 0, 0, 0, static_cast<uint32_t>(cut.size()));
+  // h1, h2 and h3 are complete inside the failed candidate: they come out at its last byte; h4 at its own end.
+  EXPECT_EQ(offsets, (std::vector<size_t>{candidate_end, candidate_end, candidate_end, stream.size() - 1}));
+  expect_counters(dec.counters(), 4, 1, 0, 0, 0, static_cast<uint32_t>(cut.size()));
   EXPECT_EQ(dec.bytes_held(), 0u);
 }
 
 TEST(Decoder, HeldFramesStillComeOutInOrderWithoutNext) {
-  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 27, 0x01, 0x02, 0x03};
+  const Bytes cut = {kSync0, kSync1, kProtocolVersion, type_id(MsgType::sample), 0x10, 0x00, 29, 0x01, 0x02, 0x03};
   const Bytes stream = concat({cut, hello(10), hello(11), hello(12), hello(13)});
   Decoder dec;
   std::vector<uint16_t> seqs;

@@ -24,10 +24,10 @@ const std::vector<uint8_t> kHelloSeq0x1234 = {0xD7, 0x1A, 0x02, 0x01, 0x34, 0x12
 // The same HELLO in version 1 (what encode_legacy_hello sends to find a v1 board).
 const std::vector<uint8_t> kV1HelloSeq0x1234 = {0xD7, 0x1A, 0x01, 0x01, 0x34, 0x12, 0x00, 0xAC, 0x58};
 // SAMPLE seq 0xFFFF: tick 0x01020304, value_q8 {512 counts, -3 counts - 1/256, INT32_MAX, INT32_MIN},
-// sat_flags 0x0A, n_window 64, dropped 0xFFFF, cal_state 1 (active), cal_id 0xBEEF.
-const std::vector<uint8_t> kSampleSeq0xFFFF = {0xD7, 0x1A, 0x02, 0x07, 0xFF, 0xFF, 0x1B, 0x04, 0x03, 0x02, 0x01, 0x00,
-                                               0x00, 0x02, 0x00, 0xFF, 0xFC, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x7F, 0x00,
-                                               0x00, 0x00, 0x80, 0x0A, 0x40, 0xFF, 0xFF, 0x01, 0xEF, 0xBE, 0x83, 0x7D};
+// sat_flags 0x0A, n_window 64, dropped 0xFFFF, cal_state 1 (active), cal_id 0xBEEF, temp_code 0x0123.
+const std::vector<uint8_t> kSampleSeq0xFFFF = {
+    0xD7, 0x1A, 0x02, 0x07, 0xFF, 0xFF, 0x1D, 0x04, 0x03, 0x02, 0x01, 0x00, 0x00, 0x02, 0x00, 0xFF, 0xFC, 0xFF, 0xFF,
+    0xFF, 0xFF, 0xFF, 0x7F, 0x00, 0x00, 0x00, 0x80, 0x0A, 0x40, 0xFF, 0xFF, 0x01, 0xEF, 0xBE, 0x23, 0x01, 0x14, 0x9C};
 // A v1 VERSION as a v2 board answers a v1 HELLO (seq 5): proto_version 2, firmware 0.2.0, board 3, 10 bits,
 // 5000 mV, 250 kHz, 4 channels on ADC0..3, reset cause 1, no assertion; v1's 20 bytes and seed 0x59.
 const std::vector<uint8_t> kV1VersionSeq5 = {0xD7, 0x1A, 0x01, 0x02, 0x05, 0x00, 0x14, 0x02, 0x00, 0x02,
@@ -110,6 +110,7 @@ TEST(Encoder, SampleMatchesGoldenFrame) {
   p.dropped = 0xFFFF;
   p.cal_state = 1;
   p.cal_id = 0xBEEF;
+  p.temp_code = 0x0123;
   uint8_t out[kMaxFrameSize] = {};
   const size_t n = encode_sample(p, 0xFFFF, out, sizeof(out));
   ASSERT_EQ(n, kSampleSeq0xFFFF.size());
@@ -276,9 +277,9 @@ TEST(Encoder, EncodeFrameRefusesUnknownTypeAndWrongLength) {
             frame_size(19));
   EXPECT_EQ(encode_authenticated(type_id(MsgType::status), 0, payload, 15, CommandAuth{}, out, sizeof(out)), 0u);
   EXPECT_EQ(encode_frame(type_id(MsgType::hello), 0, payload, 1, out, sizeof(out)), 0u);
-  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 26, out, sizeof(out)), 0u);
+  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 28, out, sizeof(out)), 0u);
   EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, kMaxPayload, out, sizeof(out)), 0u);
-  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 27, out, sizeof(out)), frame_size(27));
+  EXPECT_EQ(encode_frame(type_id(MsgType::sample), 0, payload, 29, out, sizeof(out)), frame_size(29));
 }
 
 TEST(Encoder, EncodeFrameEqualsTypedEncoder) {

@@ -58,6 +58,7 @@ inline void randomize(std::mt19937& rng, SamplePayload* p) {
   p->dropped = random_int<uint16_t>(rng);
   p->cal_state = random_int<uint8_t>(rng);
   p->cal_id = random_int<uint16_t>(rng);
+  p->temp_code = random_int<uint16_t>(rng);
 }
 
 inline void randomize(std::mt19937& rng, RawPayload* p) {
@@ -146,6 +147,7 @@ inline void expect_fields_equal(const SamplePayload& a, const SamplePayload& b) 
   EXPECT_EQ(a.dropped, b.dropped);
   EXPECT_EQ(a.cal_state, b.cal_state);
   EXPECT_EQ(a.cal_id, b.cal_id);
+  EXPECT_EQ(a.temp_code, b.temp_code);
 }
 
 inline void expect_fields_equal(const RawPayload& a, const RawPayload& b) {

@@ -3,7 +3,9 @@
 // faster than the paper's 9600-baud radio (sim/models/hundred_hz.toml).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -34,6 +36,29 @@ TEST(HilCli, ConversionsPerOutputMakesA100HzLogPossible) {
     EXPECT_NEAR(static_cast<double>(log.size()), 200.0, 1.0);
     // Host receive instants: frame transmission jitters single spacings, the mean spacing is the period.
     EXPECT_NEAR((log.t_s.back() - log.t_s.front()) / static_cast<double>(log.size() - 1), 0.01, 1e-5);
+}
+
+// The board's die temperature in every row: 25 °C at power-on warming towards 28 °C (tau 300 s, sim/hil/
+// die_temperature.hpp) through the sensor's typical transfer, to 0.1 °C; a schedule too fast for a reading has -300.
+TEST(HilCli, EveryRowCarriesTheBoardsDieTemperature) {
+    TempDir dir("hiltemp");
+    const std::string out = dir.file("t.csv");
+    const RunResult r = run_driftlab({"hil", "--preset", "fig3", "--duration", "900", "-o", out}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const host::LogData log = host::read_log(out);
+    ASSERT_TRUE(log.has_column("temp_c"));
+    const std::vector<double>& temp = log.optional_columns.at("temp_c");
+    // Code 292 (314.0 mV) at 25 °C: the middle of its step, 25.2 °C.
+    EXPECT_NEAR(temp.front(), 25.0, 0.6);
+    EXPECT_NEAR(temp.back(), 28.0 - 3.0 * std::exp(-900.0 / 300.0), 0.6);
+    EXPECT_TRUE(std::is_sorted(temp.begin(), temp.end())) << "the die only warms";
+    const RunResult fast =
+        run_driftlab({"hil", "--model", std::string(DRIFTLAB_SOURCE_DIR) + "/sim/models/hundred_hz.toml", "--duration",
+                      "1", "--conversions", "12", "--window", "12", "-o", dir.file("fast.csv")},
+                     dir.path());
+    ASSERT_EQ(fast.exit_code, 0) << fast.output;
+    const host::LogData fast_log = host::read_log(dir.file("fast.csv"));
+    for (double t : fast_log.optional_columns.at("temp_c")) EXPECT_EQ(t, -300.0);
 }
 
 // The run's settings are written as the shortest text that reads back to the same number: a
@@ -232,7 +257,8 @@ TEST(HilCli, TheCycleBudgetSaysItIsASeparateStreamingRun) {
     EXPECT_NE(r.output.find("measured in a separate run of this configuration: 5 s of streaming after 0.5 s"),
               std::string::npos)
         << r.output;
-    EXPECT_NE(r.output.find("adc_isr               5000 calls"), std::string::npos) << r.output;  // 1000/s for 5 s
+    // 1000 conversions a second for 5 s, and a die temperature a second, converted twice (the first thrown away).
+    EXPECT_NE(r.output.find("adc_isr               5010 calls"), std::string::npos) << r.output;
 }
 
 // Options of another way of running, or values the unsigned parse would wrap, are refused, not ignored.

@@ -30,6 +30,12 @@ class NativeRig {
  public:
   NativeRig() { firmware.start(); }
 
+  /// A board whose die reads `die_temperature_code` at power-on.
+  explicit NativeRig(uint16_t die_temperature_code) {
+    board.set_die_temperature_code(die_temperature_code);
+    firmware.start();
+  }
+
   /// The board after a reset of cause `reset` that kept `eeprom` (kEepromBytes, another rig's board's): a power cycle
   /// or a warm restart.
   NativeRig(const uint8_t* eeprom, const ResetInfo& reset) {

@@ -26,6 +26,7 @@ void RowAssembler::sample(const proto::SamplePayload& sample, std::uint64_t seq,
     for (std::size_t c = 0; c < kChannelCount; ++c) row.value_counts[c] = proto::q8_to_counts(sample.value_q8[c]);
     row.sat_flags = sample.sat_flags;
     row.n_window = sample.n_window;
+    row.temp_code = sample.temp_code;
     row.dropped = sample.dropped;
     if (!options_.raw) {
         emit(row);

@@ -110,6 +110,7 @@ void hal_init(const AdcSchedule& schedule) {
     g_isr.admux[c] = static_cast<uint8_t>(kAdmuxAvcc | kAdcPin[channel_index(schedule.order[c])]);
   }
   g_isr.slot = 0;
+  g_isr.temperature = kTemperatureIdle;
   ADMUX = g_isr.admux[0];
 
   // The first cycle lasts until schedule.first_trigger_tick; the compare-B vector then sets the steady period.
@@ -127,6 +128,26 @@ void hal_init(const AdcSchedule& schedule) {
   ADCSRB = kAdcsrbTimer1CompareB;
   ADCSRA = kAdcsraRun;
   TCCR1B = _BV(WGM12) | _BV(CS11) | _BV(CS10);
+}
+
+uint16_t hal_read_temperature() {
+  ADMUX = kAdmuxTemperature;
+  uint16_t code = 0;
+  for (uint8_t i = 0; i < 2; ++i) {
+    ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1) | _BV(ADPS0);
+    while (ADCSRA & _BV(ADSC)) {
+    }
+    code = ADC;
+  }
+  ADMUX = static_cast<uint8_t>(kAdmuxAvcc | kAdcPin[0]);
+  return code;
+}
+
+void hal_request_temperature() {
+  // The vector leaves idle only on a request, so nothing can change the byte between this test and the write.
+  if (g_isr.temperature == kTemperatureIdle) {
+    g_isr.temperature = kTemperatureRequested;
+  }
 }
 
 uint8_t hal_uart_write(const uint8_t* bytes, uint8_t count) {

@@ -32,9 +32,24 @@ ISR(TIMER1_COMPB_vect) {
 }
 
 // A conversion finished. The multiplexer change takes effect for the next trigger, which is at least
-// kMinConversionPeriodTicks away, so the round-robin stays in step with the slots.
+// kMinConversionPeriodTicks away, so the round-robin stays in step with the slots. After the round's last
+// conversion a requested temperature is converted at once, twice (the first after switching the reference is thrown
+// away), and queued between that conversion and the next trigger, which kMinTemperaturePeriodTicks leaves room for.
 ISR(ADC_vect) {
   const uint16_t code_counts = ADC;
+  const uint8_t temperature = g_isr.temperature;
+  if (temperature == driftlab::fw::kTemperatureDiscarding) {
+    g_isr.temperature = driftlab::fw::kTemperatureConverting;
+    ADCSRA = static_cast<uint8_t>(ADCSRA | _BV(ADSC));
+    return;
+  }
+  if (temperature == driftlab::fw::kTemperatureConverting) {
+    g_isr.temperature = driftlab::fw::kTemperatureIdle;
+    ADMUX = g_isr.admux[0];
+    const driftlab::fw::Conversion conversion = {driftlab::fw::kTemperatureInput, code_counts, g_isr.temperature_tick};
+    static_cast<void>(g_isr.adc_ring.push(conversion));
+    return;
+  }
   const uint8_t slot = g_isr.slot;
   const uint8_t next = static_cast<uint8_t>(slot + 1U == driftlab::kChannelCount ? 0U : slot + 1U);
   ADMUX = g_isr.admux[next];
@@ -42,6 +57,12 @@ ISR(ADC_vect) {
   const driftlab::fw::Conversion conversion = {g_isr.order[slot], code_counts, g_isr.trigger_tick};
   // A full ring loses this conversion; the core sees the tick gap and counts it.
   static_cast<void>(g_isr.adc_ring.push(conversion));
+  if (next == 0U && temperature == driftlab::fw::kTemperatureRequested) {
+    g_isr.temperature_tick = conversion.tick;
+    g_isr.temperature = driftlab::fw::kTemperatureDiscarding;
+    ADMUX = driftlab::fw::kAdmuxTemperature;
+    ADCSRA = static_cast<uint8_t>(ADCSRA | _BV(ADSC));
+  }
 }
 
 ISR(USART_RX_vect) {

@@ -25,7 +25,20 @@ struct IsrShared {
   Channel order[kChannelCount];                     ///< channel of each conversion slot; written with interrupts off
   uint8_t admux[kChannelCount];                     ///< ADMUX value of each conversion slot (reference + mux input)
   volatile uint8_t slot;                            ///< ADC vector only: slot of the conversion in progress
+  volatile uint8_t temperature;                     ///< TemperatureStep: main loop sets requested, the vector the rest
+  uint32_t temperature_tick;                        ///< ADC vector only: trigger tick the temperature is stamped with
 };
+
+/// Where a die temperature conversion stands (hal_request_temperature()).
+enum TemperatureStep : uint8_t {
+  kTemperatureIdle = 0,
+  kTemperatureRequested = 1,   ///< after the round's last conversion, convert
+  kTemperatureDiscarding = 2,  ///< the first conversion after switching the reference, thrown away
+  kTemperatureConverting = 3,  ///< the one queued
+};
+
+/// ADMUX of a die temperature conversion: internal 1.1 V reference (REFS1 | REFS0), input ADC8.
+constexpr uint8_t kAdmuxTemperature = 0xC8;
 
 extern IsrShared g_isr;
 

@@ -20,6 +20,10 @@ NativeBoard& board() {
 
 void hal_init(const AdcSchedule& schedule) { board().on_hal_init(schedule); }
 
+uint16_t hal_read_temperature() { return board().die_temperature_code(); }
+
+void hal_request_temperature() { board().on_hal_request_temperature(); }
+
 uint8_t hal_uart_write(const uint8_t* bytes, uint8_t count) { return board().on_hal_uart_write(bytes, count); }
 
 uint32_t hal_ticks() { return static_cast<uint32_t>(board().time_ticks()); }

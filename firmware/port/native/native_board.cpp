@@ -7,6 +7,9 @@ namespace {
 
 thread_local NativeBoard* t_current_board = nullptr;
 
+// proto::temperature_code_of_celsius(25.0): 314 mV against 1.1 V.
+constexpr uint16_t kTypicalTemperatureCode25C = 292;
+
 }  // namespace
 
 NativeBoard::NativeBoard()
@@ -17,6 +20,8 @@ NativeBoard::NativeBoard()
       next_trigger_ticks_(0),
       time_ticks_(0),
       rx_overflow_bytes_(0),
+      temperature_requested_(false),
+      die_temperature_code_(kTypicalTemperatureCode25C),
       reset_info_{kResetPowerOn, 0},
       eeprom_(),
       adc_ring_(),
@@ -47,9 +52,15 @@ void NativeBoard::set_time_ticks(uint64_t time_ticks) {
 bool NativeBoard::convert(uint16_t code_counts) {
   DRIFTLAB_ASSERT(armed_ && code_counts <= LsWindow::kMaxCode);
   const Conversion conversion = {next_channel(), code_counts, static_cast<uint32_t>(next_trigger_ticks_)};
+  const bool temperature = temperature_due();
   next_index_ = static_cast<uint8_t>((next_index_ + 1U) % kChannelCount);
   next_trigger_ticks_ += schedule_.conversion_period_ticks;
-  return adc_ring_.push(conversion);
+  const bool pushed = adc_ring_.push(conversion);
+  if (temperature) {
+    temperature_requested_ = false;
+    static_cast<void>(adc_ring_.push(Conversion{kTemperatureInput, die_temperature_code_, conversion.tick}));
+  }
+  return pushed;
 }
 
 size_t NativeBoard::receive(const uint8_t* bytes, size_t count) {
@@ -89,6 +100,7 @@ void NativeBoard::on_hal_init(const AdcSchedule& schedule) {
   armed_ = true;
   ++arm_count_;
   next_index_ = 0;
+  temperature_requested_ = false;
   next_trigger_ticks_ = time_ticks_ + arm_wait_ticks(schedule, static_cast<uint32_t>(time_ticks_));
   adc_ring_.clear();
 }

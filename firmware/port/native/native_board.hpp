@@ -65,6 +65,13 @@ class NativeBoard {
   /// next_conversion_time_ticks() (low 32 bits), then advances the round-robin and the schedule. Returns false
   /// when the conversion ring is full: the conversion is lost, as on the chip, and the firmware counts it.
   bool convert(uint16_t code_counts);
+  /// True when the next convert() is the round's last and a temperature was requested: that convert() also queues
+  /// the die temperature conversion (hal.hpp hal_request_temperature()), of die_temperature_code() then.
+  bool temperature_due() const { return temperature_requested_ && next_index_ == kChannelCount - 1U; }
+  /// What the die temperature sensor reads now, 0..1023 (the chip's ADC8 input): hal_read_temperature() at start and
+  /// each requested conversion take it. Default: the datasheet's typical code at 25 °C.
+  void set_die_temperature_code(uint16_t code) { die_temperature_code_ = code; }
+  uint16_t die_temperature_code() const { return die_temperature_code_; }
   /// As the UART RX interrupt: queues bytes; returns how many fit, the rest count as rx overflow.
   size_t receive(const uint8_t* bytes, size_t count);
   /// As the UART TX interrupt: moves up to `capacity` queued bytes into `out`; returns how many.
@@ -105,6 +112,7 @@ class NativeBoard {
   // ---- Used by the HAL functions of this port (hal_native.cpp) ----
   void on_hal_init(const AdcSchedule& schedule);
   uint8_t on_hal_uart_write(const uint8_t* bytes, uint8_t count);
+  void on_hal_request_temperature() { temperature_requested_ = true; }
   uint16_t rx_overflow_count() const { return rx_overflow_bytes_; }
   /// The board of the calling thread, or nullptr.
   static NativeBoard* current();
@@ -117,6 +125,8 @@ class NativeBoard {
   uint64_t next_trigger_ticks_;
   uint64_t time_ticks_;
   uint16_t rx_overflow_bytes_;
+  bool temperature_requested_;
+  uint16_t die_temperature_code_;
   ResetInfo reset_info_;
   uint8_t eeprom_[kEepromBytes];
   SpscRing<Conversion, kAdcRingCapacity> adc_ring_;

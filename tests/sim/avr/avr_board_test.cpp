@@ -34,10 +34,10 @@ CodeSource paper_model_source(std::uint64_t seed) {
 
 // The AVR answers the same conversion a little later than the native board: the ADC takes 104 us after the
 // trigger and UDR0 bytes leave one at a time at the UART's rate (the native board hands a frame over at once). So the
-// AVR runs kAvrTailS longer and may have sent the frames of at most one more output (SAMPLE + RAW = 57 bytes);
+// AVR runs kAvrTailS longer and may have sent the frames of at most one more output (SAMPLE + RAW = 59 bytes);
 // everything the native board sent must be there, byte for byte, in the same order.
 constexpr double kAvrTailS = 0.020;
-constexpr std::size_t kOneOutputBytes = 57;
+constexpr std::size_t kOneOutputBytes = 59;
 
 void expect_same_stream(const std::vector<std::uint8_t>& avr, const std::vector<std::uint8_t>& native) {
     const std::size_t common = std::min(avr.size(), native.size());

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "driftlab/proto/temperature.hpp"
 #include "sim/avr/avr_target.hpp"
 #include "sim/hil/eeprom_image.hpp"
 #include "sim/hil/hil.hpp"
@@ -25,9 +26,10 @@ struct Run {
 
 Run run(HilOptions options, bool on_avr) {
     if (on_avr) {
-        options.make_board = [eeprom = options.eeprom] {
+        options.make_board = [eeprom = options.eeprom, die = options.die_temperature] {
             AvrBoardOptions board{avr_elf()};
             board.eeprom = eeprom;
+            board.die_temperature = die;
             return std::make_unique<AvrTarget>(board);
         };
     }
@@ -49,6 +51,7 @@ void expect_same_records(const Run& avr, const Run& native, std::size_t min_reco
         EXPECT_EQ(a.sat_flags, n.sat_flags) << "record " << i;
         EXPECT_EQ(a.n_window, n.n_window) << "record " << i;
         EXPECT_EQ(a.dropped, n.dropped) << "record " << i;
+        EXPECT_EQ(a.temp_code, n.temp_code) << "record " << i;
     }
     EXPECT_EQ(avr.summary.status.dropped, 0U);
     EXPECT_EQ(avr.summary.host.frames_lost, native.summary.host.frames_lost);
@@ -114,6 +117,11 @@ TEST_F(AvrHil, ACompensatedRunWithAnAuthenticatedConfigurationGivesTheSameRecord
     EXPECT_EQ(avr.summary.version.cal_state, static_cast<std::uint8_t>(proto::CalState::active));
     EXPECT_EQ(avr.summary.version.cal_id, 4242);
     expect_same_records(avr, native, 5990);
+    // The die read at power-on and about once a second: 25 °C warming towards 28 °C with tau 300 s
+    // (die_temperature.hpp).
+    EXPECT_EQ(native.records.front().temp_code, proto::temperature_code_of_celsius(25.0));
+    EXPECT_NEAR(native.records.back().temp_code, options.die_temperature.code(native.records.back().t_s), 1);
+    EXPECT_GT(native.records.back().temp_code, native.records.front().temp_code);
     // And compensated: the gyro, referred to zero, near mid-scale from the start.
     EXPECT_NEAR(native.records.front().value_counts[0], 512.0, 1.0);
 }

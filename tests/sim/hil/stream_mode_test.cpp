@@ -54,8 +54,8 @@ TEST(StreamMode, RawModeKeepsAsManyRowsAsSmoothedOnly) {
     EXPECT_EQ(raw.rows.size(), plain.rows.size());
 }
 
-// The paper's 9600-baud link carries 960 bytes/s: a SAMPLE frame (36 bytes) every 38 ms fits (947 bytes/s), and the
-// run logs every output; every 37 ms does not (973); with RAW (57 bytes) 60 ms fits and 59 ms does not. Beyond it
+// The paper's 9600-baud link carries 960 bytes/s: a SAMPLE frame (38 bytes) every 40 ms fits (950 bytes/s), and the
+// run logs every output; every 39 ms does not (974); with RAW (59 bytes) 62 ms fits and 61 ms does not. Beyond it
 // outputs would queue without end and the run's time would end before most arrived: link_capacity_refusal says so,
 // with the figures, and `driftlab hil` refuses the run (its test: HilCli.AnOutputRateTheLinkCannotCarry...).
 TEST(StreamMode, AnOutputRateBeyondTheLinkIsRefused) {
@@ -64,14 +64,14 @@ TEST(StreamMode, AnOutputRateBeyondTheLinkIsRefused) {
         o.model.firmware.conversions_per_output = 8;
         return o;
     };
-    EXPECT_FALSE(link_capacity_refusal(options(0.038, false).model));
-    EXPECT_GE(run_into_memory(options(0.038, false)).rows.size(), 51u);  // 52 outputs in 2 s
-    EXPECT_TRUE(link_capacity_refusal(options(0.037, false).model));
-    EXPECT_FALSE(link_capacity_refusal(options(0.060, true).model));
-    EXPECT_GE(run_into_memory(options(0.060, true)).rows.size(), 32u);  // 33 outputs
-    const auto refusal = link_capacity_refusal(options(0.059, true).model);
+    EXPECT_FALSE(link_capacity_refusal(options(0.040, false).model));
+    EXPECT_GE(run_into_memory(options(0.040, false)).rows.size(), 49u);  // 50 outputs in 2 s
+    EXPECT_TRUE(link_capacity_refusal(options(0.039, false).model));
+    EXPECT_FALSE(link_capacity_refusal(options(0.062, true).model));
+    EXPECT_GE(run_into_memory(options(0.062, true)).rows.size(), 31u);  // 32 outputs
+    const auto refusal = link_capacity_refusal(options(0.061, true).model);
     ASSERT_TRUE(refusal);
-    EXPECT_NE(refusal->find("cannot carry 57 bytes (SAMPLE + RAW) every 59 ms"), std::string::npos) << *refusal;
+    EXPECT_NE(refusal->find("cannot carry 59 bytes (SAMPLE + RAW) every 61 ms"), std::string::npos) << *refusal;
 }
 
 }  // namespace

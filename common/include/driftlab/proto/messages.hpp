@@ -90,7 +90,12 @@ struct SamplePayload {
   uint16_t dropped;                 ///< conversions lost since boot, saturating [conversions]
   uint8_t cal_state;                ///< CalState: the values are compensated when active or settled
   uint16_t cal_id;                  ///< id of the calibration applied to the values, 0 when not compensated
+  uint16_t temp_code;               ///< newest die temperature conversion (ADC8 against 1.1 V; temperature.hpp), taken
+                                    ///< at boot and about once a second; kNoTemperature when the schedule has no room
 };
+
+/// SamplePayload.temp_code of a board without a current reading (a schedule too fast to take one: docs/firmware.md).
+constexpr uint16_t kNoTemperature = 0xFFFF;
 
 /// RAW (0x08, fw->host): the newest raw code of every channel.
 struct RawPayload {
@@ -192,7 +197,7 @@ constexpr uint8_t kFitOrderMax = 1;
 /// Wire sizes [bytes]; each equals its table row, checked below.
 constexpr uint8_t kVersionPayloadSize = 28;
 constexpr uint8_t kConfigPayloadSize = 7;
-constexpr uint8_t kSamplePayloadSize = 27;
+constexpr uint8_t kSamplePayloadSize = 29;
 constexpr uint8_t kRawPayloadSize = 12;
 constexpr uint8_t kAckPayloadSize = 3;
 constexpr uint8_t kNakPayloadSize = 5;

@@ -54,7 +54,7 @@ constexpr MsgInfo kMsgTable[] = {
     {MsgType::config_set, "CONFIG_SET", 19, 0x25, Direction::host_to_fw},
     {MsgType::config, "CONFIG", 7, 0x6A, Direction::fw_to_host},
     {MsgType::poll, "POLL", 0, 0x8F, Direction::host_to_fw},
-    {MsgType::sample, "SAMPLE", 27, 0x24, Direction::fw_to_host},
+    {MsgType::sample, "SAMPLE", 29, 0x0E, Direction::fw_to_host},
     {MsgType::raw, "RAW", 12, 0xB0, Direction::fw_to_host},
     {MsgType::ack, "ACK", 3, 0xB4, Direction::fw_to_host},
     {MsgType::nak, "NAK", 5, 0x11, Direction::fw_to_host},

@@ -33,6 +33,7 @@ struct Row {
     std::uint8_t sat_flags = 0;                             ///< bit c: channel c saturated inside its window
     std::uint8_t n_window = 0;                              ///< conversions in the window [conversions]
     std::uint16_t dropped = 0;                              ///< conversions the firmware lost since boot
+    std::uint16_t temp_code = proto::kNoTemperature;        ///< the board's newest die temperature code
 };
 
 /// What becomes of a raw-mode SAMPLE whose RAW frame was lost.
