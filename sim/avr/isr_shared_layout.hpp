@@ -28,8 +28,7 @@ struct IsrSharedLayout {
     static constexpr std::uint32_t kAdmuxOffset = kOrderOffset + kChannelCount;
     static constexpr std::uint32_t kSlotOffset = kAdmuxOffset + kChannelCount;
     static constexpr std::uint32_t kTemperatureOffset = kSlotOffset + 1;
-    static constexpr std::uint32_t kTemperatureTickOffset = kTemperatureOffset + 1;
-    static constexpr std::uint32_t kTotalBytes = kTemperatureTickOffset + 4;
+    static constexpr std::uint32_t kTotalBytes = kTemperatureOffset + 1;
 };
 
 /// The firmware's symbol for it (driftlab::fw::g_isr, mangled).

@@ -38,31 +38,32 @@ ISR(TIMER1_COMPB_vect) {
 ISR(ADC_vect) {
   const uint16_t code_counts = ADC;
   const uint8_t temperature = g_isr.temperature;
-  if (temperature == driftlab::fw::kTemperatureDiscarding) {
-    g_isr.temperature = driftlab::fw::kTemperatureConverting;
-    ADCSRA = static_cast<uint8_t>(ADCSRA | _BV(ADSC));
-    return;
-  }
-  if (temperature == driftlab::fw::kTemperatureConverting) {
+  driftlab::fw::Conversion conversion;
+  if (temperature >= driftlab::fw::kTemperatureDiscarding) {
+    if (temperature == driftlab::fw::kTemperatureDiscarding) {
+      g_isr.temperature = driftlab::fw::kTemperatureConverting;
+      ADCSRA = static_cast<uint8_t>(ADCSRA | _BV(ADSC));
+      return;
+    }
+    // Before the next trigger, so trigger_tick is still that of the round's last conversion.
     g_isr.temperature = driftlab::fw::kTemperatureIdle;
     ADMUX = g_isr.admux[0];
-    const driftlab::fw::Conversion conversion = {driftlab::fw::kTemperatureInput, code_counts, g_isr.temperature_tick};
-    static_cast<void>(g_isr.adc_ring.push(conversion));
-    return;
+    conversion = {driftlab::fw::kTemperatureInput, code_counts, g_isr.trigger_tick};
+  } else {
+    const uint8_t slot = g_isr.slot;
+    const uint8_t next = static_cast<uint8_t>(slot + 1U == driftlab::kChannelCount ? 0U : slot + 1U);
+    g_isr.slot = next;
+    conversion = {g_isr.order[slot], code_counts, g_isr.trigger_tick};
+    if (next == 0U && temperature == driftlab::fw::kTemperatureRequested) {
+      g_isr.temperature = driftlab::fw::kTemperatureDiscarding;
+      ADMUX = driftlab::fw::kAdmuxTemperature;
+      ADCSRA = static_cast<uint8_t>(ADCSRA | _BV(ADSC));
+    } else {
+      ADMUX = g_isr.admux[next];
+    }
   }
-  const uint8_t slot = g_isr.slot;
-  const uint8_t next = static_cast<uint8_t>(slot + 1U == driftlab::kChannelCount ? 0U : slot + 1U);
-  ADMUX = g_isr.admux[next];
-  g_isr.slot = next;
-  const driftlab::fw::Conversion conversion = {g_isr.order[slot], code_counts, g_isr.trigger_tick};
   // A full ring loses this conversion; the core sees the tick gap and counts it.
   static_cast<void>(g_isr.adc_ring.push(conversion));
-  if (next == 0U && temperature == driftlab::fw::kTemperatureRequested) {
-    g_isr.temperature_tick = conversion.tick;
-    g_isr.temperature = driftlab::fw::kTemperatureDiscarding;
-    ADMUX = driftlab::fw::kAdmuxTemperature;
-    ADCSRA = static_cast<uint8_t>(ADCSRA | _BV(ADSC));
-  }
 }
 
 ISR(USART_RX_vect) {

@@ -26,7 +26,6 @@ struct IsrShared {
   uint8_t admux[kChannelCount];                     ///< ADMUX value of each conversion slot (reference + mux input)
   volatile uint8_t slot;                            ///< ADC vector only: slot of the conversion in progress
   volatile uint8_t temperature;                     ///< TemperatureStep: main loop sets requested, the vector the rest
-  uint32_t temperature_tick;                        ///< ADC vector only: trigger tick the temperature is stamped with
 };
 
 /// Where a die temperature conversion stands (hal_request_temperature()).
