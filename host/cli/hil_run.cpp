@@ -1,7 +1,6 @@
 // What `driftlab hil` is asked to run; see hil_run.hpp.
 #include "host/cli/hil_run.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -34,10 +33,8 @@ namespace driftlab::host::cli {
 std::string firmware_elf(const HilCliOptions& o) { return o.elf.empty() ? sim::avr::default_elf_path() : o.elf; }
 
 sim::avr::CycleBudget cycle_budget(const HilCliOptions& o, const sim::HilOptions& h) {
-    proto::Key key{};
-    if (h.key) std::copy(h.key->begin(), h.key->end(), key);
-    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5, 5.0, true, h.eeprom,
-                                          h.key ? &key : nullptr);
+    const sim::KeyBytes key(h.key);
+    return sim::avr::measure_cycle_budget(firmware_elf(o), h.model.firmware, 0.5, 5.0, true, h.eeprom, key.get());
 }
 #endif
 

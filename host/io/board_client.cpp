@@ -53,9 +53,8 @@ LinkStatus BoardClient::send(proto::MsgType type, std::span<const std::uint8_t> 
     const std::uint8_t id = proto::type_id(type);
     std::size_t n = 0;
     if (proto::is_authenticated(id)) {
-        proto::Key key{};
-        if (key_) std::copy(key_->begin(), key_->end(), key);
-        const proto::CommandAuth auth{key_ ? &key : nullptr, next_counter_++};
+        const sim::KeyBytes key(key_);
+        const proto::CommandAuth auth{key.get(), next_counter_++};
         if (type == proto::MsgType::key_set && payload.size() == sizeof(proto::Key)) {
             // The new key is sealed under the counter of this very try, so a retry seals it anew.
             proto::Key next{};

@@ -2,13 +2,13 @@
 // read, as ssh keeps its private keys (docs/security.md "Authenticated commands").
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <string>
+
+#include "sim/hil/board_key.hpp"
 
 namespace driftlab::host::io {
 
-using CommandKey = std::array<std::uint8_t, 16>;
+using CommandKey = sim::BoardKey;
 
 /// 16 bytes from getrandom(2). Throws DeviceError when the system has no randomness to give.
 CommandKey new_key();

@@ -10,18 +10,16 @@
 namespace driftlab::sim {
 
 std::vector<std::uint8_t> eeprom_image(std::span<const proto::CalPayload> calibration,
-                                       const std::optional<std::array<std::uint8_t, auth::kKeyBytes>>& key) {
+                                       const std::optional<BoardKey>& key) {
     std::vector<std::uint8_t> image(fw::kEepromBytes, 0xFF);
     for (const proto::CalPayload& entry : calibration) {
         std::uint8_t bytes[fw::kCalEntryBytes];
         fw::entry_bytes(entry, bytes);
         std::copy(std::begin(bytes), std::end(bytes), image.begin() + fw::entry_address(entry.channel));
     }
-    if (key) {
-        std::uint8_t raw[auth::kKeyBytes];
-        std::copy(key->begin(), key->end(), raw);
+    if (const KeyBytes bytes(key); bytes.get() != nullptr) {
         std::uint8_t record[fw::kKeyRecordBytes];
-        fw::key_record_bytes(raw, record);
+        fw::key_record_bytes(*bytes.get(), record);
         std::copy(std::begin(record), std::end(record), image.begin() + fw::kKeyEepromAddress);
     }
     return image;

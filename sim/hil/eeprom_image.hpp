@@ -10,13 +10,13 @@
 #include <span>
 #include <vector>
 
-#include "driftlab/auth/siphash.hpp"
 #include "driftlab/proto/messages.hpp"
+#include "sim/hil/board_key.hpp"
 
 namespace driftlab::sim {
 
 /// fw::kEepromBytes bytes; empty `calibration` and no `key`: all erased.
 std::vector<std::uint8_t> eeprom_image(std::span<const proto::CalPayload> calibration,
-                                       const std::optional<std::array<std::uint8_t, auth::kKeyBytes>>& key = {});
+                                       const std::optional<BoardKey>& key = {});
 
 }  // namespace driftlab::sim

@@ -15,6 +15,7 @@
 
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
+#include "sim/hil/board_key.hpp"
 #include "sim/hil/die_temperature.hpp"
 #include "sim/hil/emulated_board.hpp"
 #include "sim/hil/hil_record.hpp"
@@ -40,7 +41,7 @@ struct HilOptions {
     std::vector<std::uint8_t> eeprom;
     /// The key the host signs CONFIG_SET with (the one in `eeprom`: `hil --key`); none: sent unsigned, as to an open
     /// board.
-    std::optional<std::array<std::uint8_t, auth::kKeyBytes>> key;
+    std::optional<BoardKey> key;
     /// The board's own die temperature, which its firmware reads at boot and about once a second.
     DieTemperature die_temperature;
     TargetKind target = TargetKind::native;

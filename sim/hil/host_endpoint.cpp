@@ -1,7 +1,6 @@
 // The host's end of the line in virtual time; see host_endpoint.hpp.
 #include "sim/hil/host_endpoint.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -121,10 +120,8 @@ void HostEndpoint::request(double t_s, std::vector<std::vector<std::uint8_t>>& o
 }
 
 std::size_t HostEndpoint::encode_config_set(const proto::ConfigPayload& config, std::span<std::uint8_t> frame) {
-    proto::Key key{};
-    if (plan_.key) std::copy(plan_.key->begin(), plan_.key->end(), key);
-    const proto::CommandAuth auth{plan_.key ? &key : nullptr, next_counter_++};
-    return proto::encode_config_set(config, auth, request_seq_, frame.data(), frame.size());
+    const KeyBytes key(plan_.key);
+    return proto::encode_config_set(config, {key.get(), next_counter_++}, request_seq_, frame.data(), frame.size());
 }
 
 void HostEndpoint::receive(double t_s, std::span<const std::uint8_t> bytes) {

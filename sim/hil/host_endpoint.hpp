@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "driftlab/auth/siphash.hpp"
 #include "driftlab/proto/decoder.hpp"
 #include "driftlab/proto/messages.hpp"
 #include "driftlab/receiver/row_assembler.hpp"
 #include "driftlab/receiver/seq_tracker.hpp"
 #include "driftlab/receiver/tick_unwrapper.hpp"
+#include "sim/hil/board_key.hpp"
 #include "sim/hil/hil_record.hpp"
 
 namespace driftlab::sim {
@@ -32,7 +32,7 @@ struct HostPlan {
     double reply_timeout_s = 0.5;   ///< a request unanswered this long is sent again [s]
     int max_tries = 8;              ///< tries per request before the run fails
     /// The board's command key: CONFIG_SET carries its tag, each try a counter above VERSION's (docs/security.md).
-    std::optional<std::array<std::uint8_t, auth::kKeyBytes>> key;
+    std::optional<BoardKey> key;
 };
 
 /// Counts of the host's side.

@@ -57,6 +57,15 @@ uint32_t ticks_locked() {
   return tick + count;
 }
 
+// One conversion started by hand with the ADC neither triggered nor interrupting (before the first hal_init()); its
+// code.
+uint16_t convert_by_hand() {
+  ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1) | _BV(ADPS0);
+  while (ADCSRA & _BV(ADSC)) {
+  }
+  return ADC;
+}
+
 }  // namespace
 
 void avr_board_init() {
@@ -83,9 +92,7 @@ void avr_board_init() {
   DIDR0 = didr;
   // The first conversion after enabling takes 25 ADC clocks instead of 13: spend it now, outside the schedule.
   ADMUX = static_cast<uint8_t>(kAdmuxAvcc | kAdcPin[0]);
-  ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1) | _BV(ADPS0);
-  while (ADCSRA & _BV(ADSC)) {
-  }
+  static_cast<void>(convert_by_hand());
 
   SMCR = 0;  // sleep mode idle (SM2..0 = 000): Timer1, ADC and USART keep running
   // The main loop wakes at least every conversion period (<= 262 ms); 1 s leaves room for an output burst.
@@ -132,13 +139,8 @@ void hal_init(const AdcSchedule& schedule) {
 
 uint16_t hal_read_temperature() {
   ADMUX = kAdmuxTemperature;
-  uint16_t code = 0;
-  for (uint8_t i = 0; i < 2; ++i) {
-    ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1) | _BV(ADPS0);
-    while (ADCSRA & _BV(ADSC)) {
-    }
-    code = ADC;
-  }
+  static_cast<void>(convert_by_hand());  // the first after switching the reference is thrown away
+  const uint16_t code = convert_by_hand();
   ADMUX = static_cast<uint8_t>(kAdmuxAvcc | kAdcPin[0]);
   return code;
 }

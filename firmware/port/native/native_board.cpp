@@ -1,14 +1,13 @@
 // NativeBoard: virtual-time board behind the native HAL (native_board.hpp, docs/hal.md "Native port").
 #include "firmware/port/native/native_board.hpp"
 
+#include "driftlab/proto/temperature.hpp"
+
 namespace driftlab {
 namespace fw {
 namespace {
 
 thread_local NativeBoard* t_current_board = nullptr;
-
-// proto::temperature_code_of_celsius(25.0): 314 mV against 1.1 V.
-constexpr uint16_t kTypicalTemperatureCode25C = 292;
 
 }  // namespace
 
@@ -21,7 +20,7 @@ NativeBoard::NativeBoard()
       time_ticks_(0),
       rx_overflow_bytes_(0),
       temperature_requested_(false),
-      die_temperature_code_(kTypicalTemperatureCode25C),
+      die_temperature_code_(proto::temperature_code_of_celsius(25.0)),
       reset_info_{kResetPowerOn, 0},
       eeprom_(),
       adc_ring_(),
