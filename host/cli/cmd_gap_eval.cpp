@@ -33,6 +33,7 @@ struct GapEvalCommandOptions {
     bool quick = false;
     bool clean_only = false;
     bool raw_clean = false;
+    bool codes_clean = false;
     bool shipped = false;
     bool json = false;
     std::string plot_dir;
@@ -109,7 +110,9 @@ void run(const GapEvalCommandOptions& o) {
     }
     options.holdout = o.holdout;
     options.clean_per_seed = o.clean_per_seed;
-    options.raw_clean = o.raw_clean;
+    options.clean_form = o.raw_clean     ? gap::CleanForm::raw_mode
+                         : o.codes_clean ? gap::CleanForm::codes
+                                         : gap::CleanForm::smoothed;
     if (o.quick) {
         options.samples = 800;
         options.levels = {2.0};
@@ -209,9 +212,13 @@ void register_gap_eval(CLI::App& app) {
         ->excludes(effects)
         ->excludes(levels)
         ->excludes(pairs);
-    cmd->add_flag("--raw-clean", o->raw_clean,
-                  "Clean logs are raw-mode (a raw_gyro column, so their code-histogram cells are tested too), as the "
-                  "converter generator's logs are");
+    auto* raw_clean = cmd->add_flag("--raw-clean", o->raw_clean,
+                                    "Clean logs are raw-mode (a raw_gyro column, so their code-histogram cells are "
+                                    "tested too), as sar_mismatch's logs are");
+    cmd->add_flag("--codes-clean", o->codes_clean,
+                  "Clean logs have outputs of one conversion each (window 1, no raw column: the outputs are the codes, "
+                  "so their code-histogram cells are tested too), as sar_codes's logs are")
+        ->excludes(raw_clean);
     cmd->add_flag("--json", o->json,
                   "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, "
                   "by_size, targets, pairs)");

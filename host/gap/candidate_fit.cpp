@@ -203,9 +203,12 @@ Fitted fit_spikes(const GapModel& current, const Judge& judge, const ExplainOpti
 // adc_dnl table. One converter serves every channel: a table fitted on another channel is kept, this one's codes
 // replacing its entries where both cross the same codes.
 Fitted fit_code_density(const GapModel& current, const Judge& judge) {
+    // Outputs that are codes themselves are placed against their neighbours, as the battery's codes cells place them.
+    const std::vector<double> levels =
+        judge.battery.output_codes[channel_index(judge.channel)] ? neighbour_level(judge.y) : judge.y;
     std::vector<double> raw, level;
     for (std::size_t k = 0; k < judge.y.size(); ++k)
-        if (judge.fitting[k]) raw.push_back((*judge.raw)[k]), level.push_back(judge.y[k]);
+        if (judge.fitting[k]) raw.push_back((*judge.raw)[k]), level.push_back(levels[k]);
     const TransitionFit fit = fit_transitions(raw, level);
     Fitted out{current, {}, {}, {}};
     std::map<std::int64_t, double> table;

@@ -137,9 +137,9 @@ std::vector<NotIdentifiable> not_tried_without_raw_codes(bool codes_carry_motion
             out.push_back({info.effect, codes_carry_motion
                                             ? "fitted to the raw codes of a raw-mode log, whose codes in motion carry "
                                               "the motion as well as the converter"
-                                            : "fitted to the raw codes of a raw-mode log (a raw_<channel> column), "
-                                              "which this log lacks; on smoothed outputs alone the frac cells locate "
-                                              "it, weakly"});
+                                            : "fitted to codes: a raw-mode log's (a raw_<channel> column) or "
+                                              "outputs of one conversion each (window 1), which this log lacks; on "
+                                              "smoothed outputs alone the frac cells locate it, weakly"});
     return out;
 }
 

@@ -110,6 +110,20 @@ CodeDensity code_density(const std::vector<double>& raw, const std::vector<doubl
     return density_of_coded(coded_raw, coded_level);
 }
 
+std::vector<double> neighbour_level(const std::vector<double>& codes, std::size_t half_width) {
+    std::vector<double> out(codes.size(), 0.0);
+    for (std::size_t i = 0; i < codes.size(); ++i) {
+        const std::size_t lo = i >= half_width ? i - half_width : 0;
+        const std::size_t hi = std::min(codes.size(), i + half_width + 1);
+        double sum = 0.0;
+        std::size_t n = 0;
+        for (std::size_t k = lo; k < hi; ++k)
+            if (k != i && codes[k] >= 0.0) sum += codes[k], ++n;
+        out[i] = n > 0 ? sum / static_cast<double>(n) : codes[i];
+    }
+    return out;
+}
+
 double code_density_excess(const std::vector<double>& raw, const std::vector<double>& level) {
     const CodeDensity d = code_density(raw, level);
     return d.codes < 3 ? 0.0 : std::log1p(d.g2 / static_cast<double>(d.codes - 2));

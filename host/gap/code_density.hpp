@@ -4,6 +4,7 @@
 // docs/gap.md §Statistics and §Candidates.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace driftlab::host::gap {
@@ -24,6 +25,11 @@ CodeDensity code_density(const std::vector<double>& raw, const std::vector<doubl
 /// The battery's cell: ln(1 + G2 / df), df = codes - 2; about ln 2 for an ideal converter, larger when some codes
 /// are wider than others; 0 with fewer than three codes.
 double code_density_excess(const std::vector<double>& raw, const std::vector<double>& level);
+
+/// The level a log whose outputs are themselves codes (one conversion each) is compared with, per row: the mean of
+/// the `half_width` rows either side, the row itself left out (its own code would make every code fit its level).
+/// The same for the log and its replicates, so what averaging leaves of the DNL cancels in the comparison.
+std::vector<double> neighbour_level(const std::vector<double>& codes, std::size_t half_width = 8);
 
 /// A converter transition: code `code` begins at input `counts`.
 struct FittedTransition {

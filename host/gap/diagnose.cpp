@@ -127,6 +127,17 @@ bool any_raw_codes(const GapResult& result) {
     return std::any_of(result.raw_codes.begin(), result.raw_codes.end(), [](bool r) { return r; });
 }
 
+bool any_codes(const GapResult& result) {
+    return any_raw_codes(result) ||
+           std::any_of(result.output_codes.begin(), result.output_codes.end(), [](bool r) { return r; });
+}
+
+const std::vector<double>* code_column(const LogData& log, const GapResult& result, std::size_t c) {
+    if (result.output_codes[c]) return &log.counts[c];
+    if (!result.raw_codes[c]) return nullptr;
+    return &log.optional_columns.at(std::string("raw_") + kChannelNames[c]);
+}
+
 bool was_added(const GapResult& r, const Explanation& e) {
     return std::any_of(r.accepted.begin(), r.accepted.end(), [&](const Explanation& a) {
         return a.step == e.step && a.effect == e.effect && a.channel == e.channel;
@@ -233,6 +244,18 @@ RawCodes raw_code_columns(const LogData& log, const std::array<bool, kChannelCou
     return raw;
 }
 
+// Channels without a raw column whose outputs are single conversions (window 1): every output is one code, so the
+// outputs themselves get the code-histogram cells and the adc_dnl candidate.
+void output_code_channels(const LogData& log, const std::array<bool, kChannelCount>& channels,
+                          const Smoothing& smoothing, BatteryOptions& battery) {
+    if (smoothing.window != 1) return;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        battery.output_codes[c] = channels[c] && !battery.raw_codes[c] &&
+                                  std::all_of(log.counts[c].begin(), log.counts[c].end(), [](double v) {
+                                      return std::isfinite(v) && v >= 0.0 && v == std::round(v);
+                                  });
+}
+
 // The explanation search on the channels with located cells (for a diffuse gap, on every channel), and the verdict.
 void search(GapResult& result, const LogData& log, const GapOptions& options,
             const std::array<const std::vector<double>*, kChannelCount>& y, const BatteryOptions& battery,
@@ -283,8 +306,10 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     battery.sample_period_s = result.base.smoothing.sample_period_s;
     battery.frac_cells = !options.less_known_input;
     const RawCodes raw = options.less_known_input ? RawCodes{} : raw_code_columns(log, result.channels, battery);
+    if (!options.less_known_input) output_code_channels(log, result.channels, result.base.smoothing, battery);
     result.raw_codes = battery.raw_codes;
-    if (!any_raw_codes(result)) result.not_tried = not_tried_without_raw_codes(options.less_known_input);
+    result.output_codes = battery.output_codes;
+    if (!any_codes(result)) result.not_tried = not_tried_without_raw_codes(options.less_known_input);
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
     auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit,

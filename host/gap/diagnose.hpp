@@ -93,6 +93,7 @@ struct GapResult {
     std::vector<SaturatedChannel> saturated;         ///< analysed channels with rows flagged saturated
     std::vector<LoneValueChannel> lone_values;       ///< analysed channels with lone values worth a warning
     std::array<bool, kChannelCount> raw_codes{};     ///< analysed channels whose raw codes (raw-mode log) were used
+    std::array<bool, kChannelCount> output_codes{};  ///< analysed channels whose outputs are codes (window 1) and used
     std::vector<NotIdentifiable> not_tried;          ///< candidates this log could not have tried, with the reason
     GapModel base;                                   ///< the calibrated base (with the model file's effects: `given`)
     GivenEffects given;    ///< the model file's effects: refitted to this log (final parameters) or kept
@@ -129,6 +130,12 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
 
 /// True when some analysed channel of the log had raw codes (a raw-mode log): its simulations need them too.
 bool any_raw_codes(const GapResult& result);
+
+/// True when some analysed channel's codes were compared: a raw-mode log's, or outputs that are codes.
+bool any_codes(const GapResult& result);
+
+/// Channel `c`'s codes the diagnosis compared (its raw column, or its outputs where they are codes); null for none.
+const std::vector<double>* code_column(const LogData& log, const GapResult& result, std::size_t c);
 
 /// True when candidate fit `e` (of result.tried) is one of the effects added to the model, not only one that passed.
 bool was_added(const GapResult& result, const Explanation& e);

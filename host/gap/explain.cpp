@@ -83,12 +83,16 @@ struct Search {
                     part,
                     options.seed,
                     options.threads,
-                    battery.raw_codes[i] ? raw[i] : nullptr,
+                    battery.raw_codes[i]      ? raw[i]
+                    : battery.output_codes[i] ? y[i]
+                                              : nullptr,
                     options.alpha};
         judge.battery.channels = {};
         judge.battery.channels[i] = true;
         judge.battery.raw_codes = {};
         judge.battery.raw_codes[i] = battery.raw_codes[i];
+        judge.battery.output_codes = {};
+        judge.battery.output_codes[i] = battery.output_codes[i];
         std::array<const std::vector<double>*, kChannelCount> yc{};
         yc[i] = y[i];
         RawCodes raw_c{};

@@ -34,7 +34,7 @@ struct Judge {
     std::vector<bool> fitting;  ///< per sample: in the fitting part
     std::uint64_t seed;
     int threads;
-    const std::vector<double>* raw = nullptr;  ///< this channel's raw codes (raw-mode log), or null
+    const std::vector<double>* raw = nullptr;  ///< this channel's codes (raw-mode log, or y where outputs are codes)
     double alpha = 0.0;                        ///< ExplainOptions::alpha
 
     Comparison evaluate(const GapModel& m, int replicates) const {

@@ -193,11 +193,20 @@ void add_window_cells(Builder& out, const std::vector<double>& t_s, const std::v
 // One part's (fitting or held-out) cells of a channel: Allan deviation, band power and autocorrelation by octave,
 // fraction-of-count occupancy (with `frac`), raw-code histogram (with `raw`), kurtosis and the largest block step.
 // Returns the part's transform, which the coherences share.
-stats::BandSpectrum add_part_cells(Builder& out, const std::vector<double>& e, const std::vector<double>& yc,
-                                   const std::vector<double>* raw, const Runs& rows, Segment seg, double tau0,
-                                   const std::string& name, int ci, bool frac) {
-    const std::vector<double> part = part_of(e, rows);
-    const std::vector<double> part_y = part_of(yc, rows);
+// A channel's series the part cells are cut from: the eq. 1 residual, the output, and for the code histogram the
+// codes and the level each row's code is compared with (the smoothed output, or for outputs that are themselves
+// codes the neighbours' mean).
+struct ChannelSeries {
+    const std::vector<double>& e;
+    const std::vector<double>& y;
+    const std::vector<double>* codes = nullptr;
+    const std::vector<double>* level = nullptr;
+};
+
+stats::BandSpectrum add_part_cells(Builder& out, const ChannelSeries& series, const Runs& rows, Segment seg,
+                                   double tau0, const std::string& name, int ci, bool frac) {
+    const std::vector<double> part = part_of(series.e, rows);
+    const std::vector<double> part_y = part_of(series.y, rows);
     const std::size_t len = part.size();
     const auto adev = stats::octave_oadev(part, std::max<std::size_t>(1, len / 8));
     for (std::size_t j = 0; j < adev.size(); ++j) {
@@ -224,8 +233,8 @@ stats::BandSpectrum add_part_cells(Builder& out, const std::vector<double>& e, c
     }
     if (frac)
         out.add(frac_dispersion(part_y), {"frac", name, ci, "fraction-of-count occupancy", seg, true, kLogRatioMargin});
-    if (raw)
-        out.add(code_density_excess(part_of(*raw, rows), part_y),
+    if (series.codes)
+        out.add(code_density_excess(part_of(*series.codes, rows), part_of(*series.level, rows)),
                 {"codes", name, ci, "raw-code histogram", seg, true, kLogRatioMargin});
     out.add(log_kurtosis(part), {"tail", name, ci, "kurtosis", seg, true, kTailMargin});
     if (len >= kJumpBlocks)
@@ -286,10 +295,19 @@ BatteryResult compute_battery(const std::vector<double>& t_s,
         if (options.raw_codes[c] && (!raw[c] || raw[c]->size() != t_s.size()))
             throw std::invalid_argument(std::string("compute_battery: no raw codes for ") + name);
         add_window_cells(out, t_s, result.residual[c], fitting, name, ci);
+        std::vector<double> neighbours;
+        ChannelSeries series{result.residual[c], *y[c]};
+        if (options.output_codes[c]) {
+            neighbours = neighbour_level(*y[c]);
+            series.codes = y[c];
+            series.level = &neighbours;
+        } else if (options.raw_codes[c]) {
+            series.codes = raw[c];
+            series.level = y[c];
+        }
         for (std::size_t s = 0; s < 2; ++s)
-            spectra[c][s] = add_part_cells(out, result.residual[c], *y[c], options.raw_codes[c] ? raw[c] : nullptr,
-                                           parts[s], s == 0 ? Segment::fit : Segment::heldout, options.sample_period_s,
-                                           name, ci, options.frac_cells);
+            spectra[c][s] = add_part_cells(out, series, parts[s], s == 0 ? Segment::fit : Segment::heldout,
+                                           options.sample_period_s, name, ci, options.frac_cells);
     }
     add_pair_cells(out, options, result, parts, spectra);
     return result;

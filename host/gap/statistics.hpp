@@ -61,6 +61,10 @@ struct BatteryOptions {
     /// Channels whose raw codes (a raw-mode log's raw column) get the `codes` cells: the log and every replicate
     /// then pass them to compute_battery.
     std::array<bool, kChannelCount> raw_codes{};
+    /// Channels whose outputs are themselves codes (one conversion each: window 1) and that have no raw column: their
+    /// `codes` cells take the outputs as the codes, each against its neighbours' mean (neighbour_level()), on the log
+    /// and on every replicate alike. Disjoint from raw_codes.
+    std::array<bool, kChannelCount> output_codes{};
     /// The fraction-of-count cells; off for a log in motion less its known input, whose values have left the
     /// lattice of the codes' averages that the cells compare.
     bool frac_cells = true;

@@ -30,8 +30,9 @@ namespace {
 // Only a starting point; detection_sizes() measures a_50.
 double first_guess(const std::string& generator) {
     static const std::map<std::string, double> guess = {
-        {"thermal_rc", 0.2},   {"thermostat", 0.25},  {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
-        {"student_walk", 1.0}, {"burst_spikes", 2.5}, {"mode_hop", 0.2},       {"sar_mismatch", 0.5}};
+        {"thermal_rc", 0.2},   {"thermostat", 0.25},  {"kasdin_flicker", 0.5},
+        {"wandering_ou", 0.5}, {"student_walk", 1.0}, {"burst_spikes", 2.5},
+        {"mode_hop", 0.2},     {"sar_mismatch", 0.5}, {"sar_codes", 0.25}};
     return guess.at(generator);
 }
 
@@ -58,7 +59,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
                   const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
     EvalCase c{generator, truth, level, 0.0, seed, tuning, false, {}, 0.0, false};
     Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples,
-                      options.raw_clean);
+                      options.clean_form);
     // A log the diagnosis refuses names the case, so that one odd size is found in a run of hundreds.
     p.log.source_name = "gap-eval log of " + generator +
                         (generator == "none" ? "" : " at " + format_double(level) + " x a_50") + " (log seed " +
@@ -80,6 +81,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     b.holdout = options.holdout;
     b.sample_period_s = kEvalSamplePeriodS;
     b.raw_codes = r.raw_codes;
+    b.output_codes = r.output_codes;
     std::array<const std::vector<double>*, kChannelCount> y{};
     y[0] = &log.counts[0];
     RawCodes raw{};
@@ -96,7 +98,7 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     const double before = heldout_gap(r.base, {});
     auto shrink = [before](double after) { return before > 1.0 ? (before - after) / (before - 1.0) : 0.0; };
     const ReplicateExtra oracle = [&](std::uint64_t rs, sim::OutputRequest& req) {
-        if (raw_mode(generator))
+        if (truth_info(generator).kind == TruthInfo::Kind::converter)
             req.quantiser[0] = make_converter_truth(generator, p.scale, p.occupancy, seed, rs);
         else
             req.added_counts[0] = make_truth(generator, log.t_s, p.scale, seed, rs);
@@ -262,8 +264,8 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
                 const std::uint64_t seed = detection_seed(options, place, step, static_cast<int>(k));
                 GapOptions go = gap_options(seed, options);
                 go.explain = false;
-                hits += !diagnose(plant(gens[g], size, seed, options.samples, false).log, sim::paper_model(), go)
-                             .located.empty();
+                hits +=
+                    !diagnose(plant(gens[g], size, seed, options.samples).log, sim::paper_model(), go).located.empty();
             });
             d.curve.push_back({size, hits, options.detection_logs});
             return static_cast<double>(hits) / options.detection_logs;
@@ -307,9 +309,11 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
         bool tune;
     };
     std::vector<Job> jobs;
-    // Raw-mode generators' logs come after all the others, so that the others' places (their seeds), and so their
-    // logs, are the same whether or not a raw-mode generator is in the run.
-    for (const bool raw : {false, true}) {
+    // Raw-mode generators' logs come after the smoothed ones, and logs of other forms (outputs that are codes) after
+    // both, so that the earlier ones' places (their seeds), and so their logs, are the same whether or not a later
+    // form is in the run.
+    const auto form = [](const std::string& g) { return raw_mode(g) ? 1 : log_window(g) == kEvalWindow ? 0 : 2; };
+    for (const int phase : {0, 1, 2}) {
         for (int set = 0; set < 2; ++set) {
             const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;
             const std::uint64_t last = set == 0 ? options.tune_last : options.score_last;
@@ -318,10 +322,10 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
                 // them.
                 const std::size_t clean = options.clean_per_seed > 0 ? static_cast<std::size_t>(options.clean_per_seed)
                                                                      : options.levels.size();
-                if (!raw)
+                if (phase == 0)
                     for (std::size_t k = 0; k < clean; ++k) jobs.push_back({"none", "none", 0.0, s, set == 0});
                 for (const auto& g : gens)
-                    if (raw_mode(g) == raw)
+                    if (form(g) == phase)
                         for (double level : options.levels) jobs.push_back({g, truth_of(g), level, s, set == 0});
             }
         }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "host/gap/explain.hpp"
+#include "host/gap_eval/planted_log.hpp"
 
 namespace driftlab::host::gap {
 
@@ -21,7 +22,8 @@ struct EvalOptions {
     std::vector<std::string> generators;  ///< truth generators (truth_list()); empty = all; "none" is always added
     std::vector<double> levels{0.5, 1.0, 2.0, 4.0};  ///< effect sizes, in multiples of each generator's a_50
     int clean_per_seed = 0;  ///< clean logs per seed (0: as many as levels): the false-positive rate's sample
-    bool raw_clean = false;  ///< clean logs are raw-mode (their code-histogram cells tested), as a converter's are
+    /// Clean logs raw-mode, or of outputs that are codes (their code-histogram cells tested), as a converter's are.
+    CleanForm clean_form = CleanForm::smoothed;
     /// Logs per size when measuring a_50 (tuning seeds). The targets are read at 2 x a_50: with 12 logs per size one
     /// estimate stood 18 % above that of 48 (student_walk 1.16 against 0.95), which moves every log of a table.
     int detection_logs = 48;

@@ -14,12 +14,11 @@
 namespace driftlab::host::gap {
 namespace {
 
-constexpr int kWindow = 8;
 constexpr double kMaxPeakPerSize = 300.0;  // a deterministic truth's peak, at most this many times its unabsorbed RMS
 
 double output_noise_sd(const GapModel& m) {
     const double s = m.base[0].sigma_n_counts;
-    return std::sqrt((s * s + 1.0 / 12.0) / kWindow);
+    return std::sqrt((s * s + 1.0 / 12.0) / m.smoothing.window);
 }
 
 // Root mean square of what the base's eq. 1 fit leaves of `signal` added to the noise-free warm-up of `model`.
@@ -34,13 +33,13 @@ double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const
 
 }  // namespace
 
-GapModel randomised_truth(std::uint64_t seed) {
+GapModel randomised_truth(std::uint64_t seed, int window) {
     sim::Rng rng(seed, 0x60);
     auto factor = [&] { return std::exp(std::log(0.5) + rng.uniform() * std::log(4.0)); };  // x[0.5, 2]
     GapModel m;
     m.unit = sim::paper_model();
     m.unit.effects.clear();
-    m.smoothing = {kEvalSamplePeriodS, kWindow, kWindow, 0};
+    m.smoothing = {kEvalSamplePeriodS, window, window, 0};
     const sim::DriftParams paper = sim::kPaperDrift[0];
     m.base[0].drift = {paper.c1_counts * factor(), paper.c2_counts, paper.tau_s * factor()};
     const double raw_counts = 0.187 * 512.0 / 90.0 * std::sqrt(factor());
@@ -50,7 +49,12 @@ GapModel randomised_truth(std::uint64_t seed) {
 }
 
 bool raw_mode(const std::string& generator) {
-    return generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter;
+    return generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter &&
+           truth_info(generator).window > 1;
+}
+
+int log_window(const std::string& generator) {
+    return generator == "none" ? kEvalWindow : truth_info(generator).window;
 }
 
 LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
@@ -74,8 +78,8 @@ LogData make_log(const GapModel& truth, const std::vector<double>& added, const 
     log.seq.resize(samples);
     for (std::size_t k = 0; k < samples; ++k) log.seq[k] = raw_mode ? 2 * k : k;
     log.metadata.set("sample_period_s", kEvalSamplePeriodS);
-    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(kWindow));
-    log.metadata.set("window", static_cast<std::int64_t>(kWindow));
+    log.metadata.set("conversions_per_output", static_cast<std::int64_t>(truth.smoothing.conversions_per_output));
+    log.metadata.set("window", static_cast<std::int64_t>(truth.smoothing.window));
     log.metadata.set("fit_order", static_cast<std::int64_t>(0));
     return log;
 }
@@ -105,12 +109,13 @@ InputSignal input_signal(const std::string& generator, double size_sd, const Gap
     return s;
 }
 
-Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean) {
+Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, CleanForm clean) {
+    const bool none = generator == "none";
     Planted p;
-    p.model = randomised_truth(seed);
+    p.model = randomised_truth(seed, none && clean == CleanForm::codes ? 1 : log_window(generator));
     std::vector<double> added;
     sim::Quantiser quantiser;
-    if (raw_mode(generator)) {
+    if (generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter) {
         // Sized by the code widths the log can see: those of the codes it occupies (the same noise path through the
         // model's converter), as a deterministic shape by the part eq. 1 cannot absorb.
         p.size_counts = p.scale = size_sd * output_noise_sd(p.model);
@@ -125,7 +130,8 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
         p.scale = in.scale;
         added = std::move(in.added);
     }
-    p.log = make_log(p.model, added, quantiser, samples, seed, quantiser || (generator == "none" && raw_clean));
+    p.log = make_log(p.model, added, quantiser, samples, seed,
+                     raw_mode(generator) || (none && clean == CleanForm::raw_mode));
     return p;
 }
 

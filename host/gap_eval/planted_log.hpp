@@ -16,14 +16,22 @@ namespace driftlab::host::gap {
 /// The benchmark's output period: 1 s per sample.
 inline constexpr double kEvalSamplePeriodS = 1.0;
 
-/// The base of log `seed`: the paper's gyro with C1 and T each scaled by a factor in [0.5, 2], its raw noise by the
-/// square root of one.
-GapModel randomised_truth(std::uint64_t seed);
+/// The benchmark's smoothing: a mean of 8 conversions per output.
+inline constexpr int kEvalWindow = 8;
 
-/// Whether `generator` replaces the converter (its log is raw-mode and sized by its rms DNL).
+/// The base of log `seed`: the paper's gyro with C1 and T each scaled by a factor in [0.5, 2], its raw noise by the
+/// square root of one, smoothed by a mean of `window` conversions per output.
+GapModel randomised_truth(std::uint64_t seed, int window = kEvalWindow);
+
+/// Whether `generator` replaces the converter and its log is raw-mode (sized by its rms DNL). A converter generator
+/// whose log's outputs are the codes (window 1) is not: its log has no raw column.
 bool raw_mode(const std::string& generator);
 
-/// A gyro log of `truth` with `added` at the converter input and, when given, `quantiser` as its converter. A `raw`
+/// The smoothing window of `generator`'s log (TruthInfo::window; kEvalWindow for "none").
+int log_window(const std::string& generator);
+
+/// A gyro log of `truth` (smoothed as truth.smoothing says) with `added` at the converter input and, when given,
+/// `quantiser` as its converter. A `raw`
 /// log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
 /// numbers stepping by two (a SAMPLE and a RAW frame per row).
 LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
@@ -52,8 +60,13 @@ struct Planted {
     std::vector<double> occupancy;  ///< a converter truth's: the codes of the log made with the model's converter
 };
 
+/// How a clean log is written: smoothed outputs, raw-mode (a raw column of codes beside them), or outputs of one
+/// conversion each (window 1: the outputs are the codes).
+enum class CleanForm { smoothed, raw_mode, codes };
+
 /// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations (a converter
-/// generator's size is its rms DNL); "none" plants nothing (raw-mode when `raw_clean`).
-Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples, bool raw_clean);
+/// generator's size is its rms DNL); "none" plants nothing, in the form `clean`.
+Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, std::size_t samples,
+              CleanForm clean = CleanForm::smoothed);
 
 }  // namespace driftlab::host::gap

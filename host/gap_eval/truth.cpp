@@ -16,6 +16,7 @@ const std::vector<TruthInfo>& truth_list() {
         {"burst_spikes", "spikes", K::process},
         {"mode_hop", "", K::shape},
         {"sar_mismatch", "adc_dnl", K::converter},
+        {"sar_codes", "adc_dnl", K::converter, 1},
     };
     return list;
 }
@@ -41,7 +42,8 @@ std::vector<double> make_truth(const std::string& generator, const std::vector<d
 sim::Quantiser make_converter_truth(const std::string& generator, double size_counts,
                                     const std::vector<double>& occupancy, std::uint64_t seed,
                                     std::uint64_t noise_seed) {
-    if (generator == "sar_mismatch") return truth_sar_mismatch(size_counts, occupancy, seed, noise_seed);
+    if (generator == "sar_mismatch" || generator == "sar_codes")
+        return truth_sar_mismatch(size_counts, occupancy, seed, noise_seed);
     throw std::invalid_argument("unknown converter truth generator: " + generator);
 }
 

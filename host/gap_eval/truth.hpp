@@ -11,6 +11,8 @@
 //   sar_mismatch    -> adc_dnl (fits one transition per code, a deterministic table): a successive-approximation
 //                      converter whose binary-weighted DAC has unit-capacitor mismatch, with a noisy comparator;
 //                      it replaces the quantiser and its logs are raw-mode
+//   sar_codes       -> adc_dnl: the same converter behind outputs of one conversion each (window 1) and no raw
+//                      column, so the outputs are the codes
 // `size_counts` sets the scale [counts = LSB], and every signal generator is linear in it: the level the RC network's
 // rise approaches (thermal_rc: the log holds 80-99 % of it), the thermostat's extremes, the standard deviation of
 // the random signals (kasdin_flicker, wandering_ou; student_walk's end point), the standard deviation of one burst's
@@ -39,6 +41,7 @@ struct TruthInfo {
     std::string generator;
     std::string effect;
     Kind kind = Kind::shape;
+    int window = 8;  ///< the smoothing of its log [conversions]; 1: every output is one code
 };
 
 /// Every generator, in the order gap-eval lists them.

@@ -98,7 +98,8 @@ nlohmann::json scores_json(const EvalScores& s) {
         {"flagged", s.clean_flagged},
         {"rate", s.clean ? static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean) : 0.0},
         {"interval", {s.fpr_low, s.fpr_high}},
-        {"raw_mode", s.options.raw_clean}};
+        {"raw_mode", s.options.clean_form == gap::CleanForm::raw_mode},
+        {"codes", s.options.clean_form == gap::CleanForm::codes}};
     json confusion = json::object();
     for (const auto& [row, count] : s.confusion) confusion[row] = count;
     j["confusion"] = confusion;

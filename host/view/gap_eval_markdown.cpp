@@ -14,6 +14,15 @@ using gap::Thresholds;
 
 namespace {
 
+const char* clean_form_text(gap::CleanForm form) {
+    switch (form) {
+    case gap::CleanForm::raw_mode: return " raw-mode";
+    case gap::CleanForm::codes: return " window-1 (outputs that are codes)";
+    case gap::CleanForm::smoothed: break;
+    }
+    return "";
+}
+
 // A median over no logs is "-" in its cell.
 std::string fixed_or_dash(const std::optional<double>& v) { return v ? fixed_point(*v, 2) : "-"; }
 
@@ -50,8 +59,8 @@ void md_detection(std::ostream& md, const EvalScores& s) {
         md << " |\n";
     }
     if (s.clean)
-        md << "\nFalse-positive rate on clean" << (o.raw_clean ? " raw-mode" : "") << " logs: " << s.clean_flagged
-           << "/" << s.clean << " = "
+        md << "\nFalse-positive rate on clean" << clean_form_text(o.clean_form) << " logs: " << s.clean_flagged << "/"
+           << s.clean << " = "
            << fixed_point(100.0 * static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean), 1)
            << " % (95 % Clopper-Pearson " << fixed_point(100.0 * s.fpr_low, 1) << "-"
            << fixed_point(100.0 * s.fpr_high, 1) << " %).\n";

@@ -144,8 +144,8 @@ void plot_channel(std::ostream& md, const GapResult& r, const LogData& log, std:
     const auto residual = fit::fit_drift(log.t_s, log.counts[c]).residual;
     const auto real = stats::octave_oadev(residual, max_m);
     CodeRange range;
-    if (r.raw_codes[c]) {
-        range.real = &log.optional_columns.at(std::string("raw_") + kChannelNames[c]);
+    if (const std::vector<double>* codes = code_column(log, r, c)) {
+        range.real = codes;
         const auto [lo, hi] = std::minmax_element(range.real->begin(), range.real->end());
         range.lowest = static_cast<int>(std::lround(*lo));
         range.highest = static_cast<int>(std::lround(*hi));

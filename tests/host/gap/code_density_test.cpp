@@ -36,6 +36,29 @@ Rows rows(std::size_t n, double sigma, unsigned seed, long moved_code = 0, doubl
     return r;
 }
 
+// The level of outputs that are codes: each row's neighbours' mean without itself, fewer at the ends.
+TEST(CodeDensity, TheNeighbourLevelLeavesTheRowItselfOut) {
+    const std::vector<double> codes{10, 12, 11, 13, 100};
+    const std::vector<double> level = neighbour_level(codes, 2);
+    EXPECT_DOUBLE_EQ(level[0], (12.0 + 11.0) / 2.0);
+    EXPECT_DOUBLE_EQ(level[2], (10.0 + 12.0 + 13.0 + 100.0) / 4.0);
+    EXPECT_DOUBLE_EQ(level[4], (11.0 + 13.0) / 2.0);
+    // A lost code (negative) is nobody's neighbour.
+    EXPECT_DOUBLE_EQ(neighbour_level({5, -1, 7}, 1)[0], 5.0);
+    EXPECT_DOUBLE_EQ(neighbour_level({5, -1, 7}, 1)[1], 6.0);
+}
+
+// Against its neighbours' mean, an ideal converter's codes give a deviance near their degrees of freedom as against
+// the true level, and a widened code stands out: the codes cell works on outputs that are codes.
+TEST(CodeDensity, AgainstTheNeighboursAnIdealConverterIsIdealAndAWideCodeStandsOut) {
+    const Rows ideal = rows(6000, 0.8, 21);
+    const Rows moved = rows(6000, 0.8, 21, 507, 0.35);
+    const double ideal_excess = code_density_excess(ideal.raw, neighbour_level(ideal.raw));
+    const double moved_excess = code_density_excess(moved.raw, neighbour_level(moved.raw));
+    EXPECT_LT(ideal_excess, std::log(4.0));
+    EXPECT_GT(moved_excess, ideal_excess + std::log(4.0));
+}
+
 TEST(CodeDensity, AnIdealConverterGivesADevianceNearItsDegreesOfFreedom) {
     double sum = 0.0;
     for (unsigned seed = 1; seed <= 40; ++seed) {

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "host/gap/diagnose.hpp"
 #include "host/gap_eval/eval_scores.hpp"
+#include "host/gap_eval/planted_log.hpp"
 #include "host/gap_eval/truth.hpp"
 
 namespace driftlab::host::gap {
@@ -160,6 +162,34 @@ TEST(GapEval, AConvertersMismatchIsFoundInTheRawCodesAndAttributedToDnl) {
     }
     EXPECT_EQ(planted, 3);
     EXPECT_GE(right, 2);
+}
+
+// The same converter behind outputs of one conversion each (window 1) and no raw column: the outputs are the codes,
+// so the codes cells and adc_dnl work on them (4 x a_50 = 0.20, as a quick run measured it on 800-sample logs).
+TEST(GapEval, AConvertersMismatchIsFoundInOutputsThatAreCodes) {
+    EvalOptions o = quick_options();
+    o.tune = false;
+    o.generators = {"sar_codes"};
+    o.samples = 1500;
+    const auto cases = run_cases(o, {{"sar_codes", 0.20, {}}});
+    int planted = 0, right = 0;
+    for (const auto& c : cases) {
+        if (c.generator == "none") continue;
+        ++planted;
+        right += decide(c, Thresholds{}).verdict == "adc_dnl";
+    }
+    EXPECT_EQ(planted, 3);
+    EXPECT_GE(right, 2);
+    const Planted p = plant("sar_codes", 0.4, 11, 800);
+    EXPECT_EQ(p.log.optional_columns.count("raw_gyro"), 0u);
+    EXPECT_EQ(p.log.metadata.get_int("window").value_or(0), 1);
+    GapOptions go;
+    go.replicates = 16;
+    go.explain = false;
+    const GapResult r = diagnose(p.log, sim::paper_model(), go);
+    EXPECT_TRUE(r.output_codes[0]);
+    EXPECT_FALSE(r.raw_codes[0]);
+    EXPECT_TRUE(r.not_tried.empty());  // adc_dnl can be tried
 }
 
 // Raw-mode generators' logs are placed after all others, so adding one to a run changes no other log.
