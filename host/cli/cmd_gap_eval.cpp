@@ -34,6 +34,7 @@ struct GapEvalCommandOptions {
     bool clean_only = false;
     bool raw_clean = false;
     bool codes_clean = false;
+    bool link_clean = false;
     bool shipped = false;
     bool json = false;
     std::string plot_dir;
@@ -112,6 +113,7 @@ void run(const GapEvalCommandOptions& o) {
     options.clean_per_seed = o.clean_per_seed;
     options.clean_form = o.raw_clean     ? gap::CleanForm::raw_mode
                          : o.codes_clean ? gap::CleanForm::codes
+                         : o.link_clean  ? gap::CleanForm::lossy_link
                                          : gap::CleanForm::smoothed;
     if (o.quick) {
         options.samples = 800;
@@ -218,6 +220,11 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_flag("--codes-clean", o->codes_clean,
                   "Clean logs have outputs of one conversion each (window 1, no raw column: the outputs are the codes, "
                   "so their code-histogram cells are tested too), as sar_codes's logs are")
+        ->excludes(raw_clean);
+    cmd->add_flag(
+           "--link-clean", o->link_clean,
+           "Clean logs lose frames as the calibrated link does (each alone, 0.5 %) and are diagnosed against it, "
+           "as interference_bursts's logs are")
         ->excludes(raw_clean);
     cmd->add_flag("--json", o->json,
                   "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, "

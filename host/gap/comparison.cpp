@@ -27,7 +27,8 @@ double monte_carlo_bound(std::vector<double> null, double alpha) {
 
 }  // namespace
 
-Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& replicates, double alpha) {
+Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& replicates, double alpha,
+                   const std::vector<double>* cell_floor) {
     const Eigen::Index r_count = replicates.rows();
     const Eigen::Index cells = replicates.cols();
     Comparison cmp;
@@ -41,8 +42,9 @@ Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& repli
         const double s2 = col.squaredNorm();
         const double n = static_cast<double>(r_count);
         const double mean = s1 / n;
-        const double sd = std::max(std::sqrt(std::max(0.0, (s2 - n * mean * mean) / (n - 1))), sd_floor(mean));
         const auto u = static_cast<std::size_t>(j);
+        const double least = cell_floor ? (*cell_floor)[u] : 0.0;
+        const double sd = std::max({std::sqrt(std::max(0.0, (s2 - n * mean * mean) / (n - 1))), sd_floor(mean), least});
         cmp.sim_mean[u] = mean;
         cmp.sim_sd[u] = sd;
         cmp.z[u] = (real[u] - mean) / sd;
@@ -50,7 +52,7 @@ Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& repli
             const double x = col(r);
             const double m = (s1 - x) / (n - 1);
             const double v = std::max(0.0, (s2 - x * x - (n - 1) * m * m) / (n - 2));
-            cmp.loo_z(r, j) = (x - m) / std::max(std::sqrt(v), sd_floor(m));
+            cmp.loo_z(r, j) = (x - m) / std::max({std::sqrt(v), sd_floor(m), least});
         }
     }
     std::vector<double> maxima(static_cast<std::size_t>(r_count));
@@ -69,7 +71,9 @@ double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const C
         real += cmp.z[j] * cmp.z[j];
         null += cmp.loo_z.col(static_cast<Eigen::Index>(j)).squaredNorm();
     }
-    if (count == 0 || null <= 0.0) return 1.0;
+    if (count == 0) return 1.0;
+    // Replicates that all agree on every cell (a lossless link): the log's own mean z^2, 1 where it agrees too.
+    if (null <= 0.0) return real > 0.0 ? real / static_cast<double>(count) : 1.0;
     return real / (null / static_cast<double>(cmp.loo_z.rows()));
 }
 

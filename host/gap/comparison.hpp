@@ -20,14 +20,18 @@ struct Comparison {
     double threshold = 0.0;        ///< (1 - alpha) quantile over replicates of max |z| (leave-one-out)
 };
 
-/// Compares `real` with the replicate matrix (rows = replicates, needs >= 3 rows).
-Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& replicates, double alpha);
+/// Compares `real` with the replicate matrix (rows = replicates, needs >= 3 rows). `sd_floor`, when given, is per
+/// cell the least standard deviation a z divides by: half the statistic's resolution for a count (one lost frame in
+/// so many), where replicates that all agree would otherwise make any difference an enormous z.
+Comparison compare(const std::vector<double>& real, const Eigen::MatrixXd& replicates, double alpha,
+                   const std::vector<double>* sd_floor = nullptr);
 
 /// Which cells a score or a search looks at.
 using CellFilter = std::function<bool(const Cell&)>;
 
 /// Global gap: mean z^2 of the real log over the cells `keep` accepts, divided by the same mean averaged over
-/// the left-out replicates (so a log the model explains scores about 1). 1 when no cell is accepted.
+/// the left-out replicates (so a log the model explains scores about 1). 1 when no cell is accepted; where the
+/// replicates agree exactly on every accepted cell, the log's mean z^2 (1 when it agrees too).
 double gap_score(const Comparison& cmp, const std::vector<Cell>& layout, const CellFilter& keep);
 
 /// The level-alpha bound of gap_score(): the (1 - alpha)(R + 1)-th order statistic of the same score computed for

@@ -127,6 +127,8 @@ bool any_raw_codes(const GapResult& result) {
     return std::any_of(result.raw_codes.begin(), result.raw_codes.end(), [](bool r) { return r; });
 }
 
+bool gap_located(const GapResult& result) { return !result.located.empty() || !result.link.located.empty(); }
+
 bool any_codes(const GapResult& result) {
     return any_raw_codes(result) ||
            std::any_of(result.output_codes.begin(), result.output_codes.end(), [](bool r) { return r; });
@@ -322,6 +324,9 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
         held = gap_score(cmp, result.layout, in_segment(Segment::heldout));
         bound = gap_score_threshold(cmp, result.layout, in_segment(Segment::heldout), options.alpha);
     };
+    tell("comparing the link's frame loss");
+    result.link =
+        diagnose_link(log, unit.link, battery, options.replicates, options.seed, options.alpha, options.explain);
     tell("comparing with " + std::to_string(options.replicates) + " replicates");
     judge(result.base, result.before, result.located, result.gap_before_fit, result.gap_before_heldout,
           result.gap_bound_before);
@@ -336,6 +341,10 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     } else {
         result.verdict = "unexplained";
     }
+    // The link's explanation names a log whose channels the simulator explains.
+    if (result.verdict == "none" && !result.link.located.empty())
+        result.verdict = result.link.added ? result.link.tried[*result.link.added].effect : "unexplained";
+    if (result.link.added) set_link_loss(result.whole_log_model.unit.link, result.link.tried[*result.link.added]);
     if (result.accepted.empty()) {
         result.after = result.before;
         result.located_after = result.located;

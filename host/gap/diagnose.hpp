@@ -16,6 +16,7 @@
 #include "host/gap/explain.hpp"
 #include "host/gap/gap_model.hpp"
 #include "host/gap/level_step.hpp"
+#include "host/gap/link_loss.hpp"
 #include "host/gap/motion_terms.hpp"
 #include "host/gap/statistics.hpp"
 #include "host/log/log_data.hpp"
@@ -117,8 +118,10 @@ struct GapResult {
     bool diffuse_gap = false;
     /// The candidates were tried on the diffuse gap (--search-diffuse, not --locate-only)
     bool diffuse_searched = false;
-    std::string verdict;           ///< an effect name, "none" or "unexplained" (also when a level step remains)
-    TimingCheck timing;            ///< without the joins of left_out
+    std::string verdict;  ///< an effect name, "none" or "unexplained" (also when a level step remains)
+    TimingCheck timing;   ///< without the joins of left_out
+    /// The log's frame loss against the unit's link; its added candidate is the verdict where the channels have none.
+    LinkFindings link;
     std::vector<LogCut> left_out;  ///< stretches the user left out of the log (LogData::cuts)
     /// `gap --truth`: the known input taken out first and the motion terms judged (diagnose_in_motion()).
     std::optional<MotionFindings> motion;
@@ -127,6 +130,9 @@ struct GapResult {
 /// Diagnoses `log` against the unit `unit` (front ends and converter). Throws DataError (naming the log) when it
 /// is too short (< 200 samples) or no channel varies, UsageError on bad options.
 GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options);
+
+/// Whether the diagnosis found a gap anywhere: a located cell of the channels or of the link.
+bool gap_located(const GapResult& result);
 
 /// True when some analysed channel of the log had raw codes (a raw-mode log): its simulations need them too.
 bool any_raw_codes(const GapResult& result);

@@ -137,6 +137,8 @@ LogData log_from_table(const NumericTable& table, const PlainRecording& how) {
             log.counts[c][b] = sum / static_cast<double>(how.block);
         }
     }
+    // Another logger's table: its rows came in no frames, so there is no link to diagnose (GapResult::link).
+    log.metadata.set("source", std::string(kPlainRecordingSource));
     log.metadata.set("sample_period_s", static_cast<double>(how.block) * how.sample_period_s);
     log.metadata.set("conversions_per_output", static_cast<std::int64_t>(how.block));
     log.metadata.set("window", static_cast<std::int64_t>(how.block));

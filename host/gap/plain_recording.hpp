@@ -15,6 +15,9 @@
 
 namespace driftlab::host::gap {
 
+/// The `source` a plain recording's LogData carries: rows without frames or sequence numbers of their own.
+inline constexpr const char* kPlainRecordingSource = "plain recording";
+
 /// One column of the table analysed as one channel of the unit.
 struct ColumnMapping {
     Channel channel = Channel::gyro;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "host/gap/candidates.hpp"
+#include "host/gap/link_loss.hpp"
 #include "host/gap_eval/truth.hpp"
 #include "host/stats/binomial_interval.hpp"
 #include "host/stats/median.hpp"
@@ -127,6 +128,7 @@ EvalScores score(const std::vector<EvalCase>& cases, const Thresholds& th, const
     s.thresholds = th;
     s.sizes = sizes;
     for (const auto& info : candidate_list()) s.verdicts.push_back(info.effect);
+    for (const char* effect : kLinkCandidates) s.verdicts.push_back(effect);
     s.verdicts.push_back("none");
     s.verdicts.push_back("unexplained");
     std::vector<std::string> rows{"none"};

@@ -30,9 +30,9 @@ namespace {
 // Only a starting point; detection_sizes() measures a_50.
 double first_guess(const std::string& generator) {
     static const std::map<std::string, double> guess = {
-        {"thermal_rc", 0.2},   {"thermostat", 0.25},  {"kasdin_flicker", 0.5},
-        {"wandering_ou", 0.5}, {"student_walk", 1.0}, {"burst_spikes", 2.5},
-        {"mode_hop", 0.2},     {"sar_mismatch", 0.5}, {"sar_codes", 0.25}};
+        {"thermal_rc", 0.2},   {"thermostat", 0.25},        {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
+        {"student_walk", 1.0}, {"burst_spikes", 2.5},       {"mode_hop", 0.2},       {"sar_mismatch", 0.5},
+        {"sar_codes", 0.25},   {"interference_bursts", 0.2}};
     return guess.at(generator);
 }
 
@@ -57,7 +57,8 @@ double size_of(const std::vector<DetectionSize>& sizes, const std::string& gener
 
 EvalCase run_case(const std::string& generator, const std::string& truth, double level, std::uint64_t seed, bool tuning,
                   const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
-    EvalCase c{generator, truth, level, 0.0, seed, tuning, false, {}, 0.0, false};
+    EvalCase c;
+    c.generator = generator, c.truth = truth, c.level = level, c.seed = seed, c.tune = tuning;
     Planted p = plant(generator, generator == "none" ? 0.0 : level * size_of(sizes, generator), seed, options.samples,
                       options.clean_form);
     // A log the diagnosis refuses names the case, so that one odd size is found in a run of hundreds.
@@ -70,11 +71,14 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     // Every candidate's metrics are kept; the thresholds are applied afterwards (decide()).
     go.explain_options.penalty_per_param = 0.0;
     go.explain_options.min_heldout_shrink = -1e9;
-    const GapResult r = diagnose(log, sim::paper_model(), go);
-    c.detected = !r.located.empty();
+    const GapResult r = diagnose(log, eval_unit(generator, options.clean_form), go);
+    c.detected = gap_located(r);
+    c.link_only = r.located.empty() && !r.link.located.empty();
+    if (r.link.added) c.link_verdict = r.link.tried[*r.link.added].effect;
     c.tried = r.tried;
     const bool right = !r.accepted.empty() && r.accepted.front().effect == truth;
-    if (!c.detected || generator == "none") return c;
+    // A link generator changes no value: the channels' held-out gap has nothing of it to shrink.
+    if (r.located.empty() || generator == "none" || truth_info(generator).kind == TruthInfo::Kind::link) return c;
     // Held-out gap on replicates the diagnosis never saw: base, chosen model, and the oracle (true model).
     BatteryOptions b;
     b.channels = r.channels;
@@ -167,6 +171,7 @@ std::string pair_refusal(const std::string& first, const std::string& second) {
         if (g == "none") return "none+" + second + ": the first of a pair is a generator";
         const TruthInfo& t = truth_info(g);
         if (t.kind == TruthInfo::Kind::converter) return g + " replaces the converter; pairs act at its input";
+        if (t.kind == TruthInfo::Kind::link) return g + " acts on the link; pairs act at the converter input";
         // A pair is scored by the library effects it holds; an out-of-library one has none to find.
         if (t.effect.empty()) return g + " stands for no library effect";
     }
@@ -187,6 +192,8 @@ bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok) {
 
 Decision decide(const EvalCase& c, const Thresholds& th) {
     if (!c.detected) return {"none", ""};
+    // Only the link's cells located: its own explanation (judged at the shipped thresholds), as `gap` says it.
+    if (c.link_only) return {c.link_verdict.empty() ? "unexplained" : c.link_verdict, ""};
     std::vector<const Explanation*> passing;
     for (const auto& e : c.tried)
         if (passes(e, th.penalty_per_param, th.min_heldout_shrink)) passing.push_back(&e);
@@ -264,8 +271,7 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
                 const std::uint64_t seed = detection_seed(options, place, step, static_cast<int>(k));
                 GapOptions go = gap_options(seed, options);
                 go.explain = false;
-                hits +=
-                    !diagnose(plant(gens[g], size, seed, options.samples).log, sim::paper_model(), go).located.empty();
+                hits += gap_located(diagnose(plant(gens[g], size, seed, options.samples).log, eval_unit(gens[g]), go));
             });
             d.curve.push_back({size, hits, options.detection_logs});
             return static_cast<double>(hits) / options.detection_logs;
@@ -312,7 +318,10 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
     // Raw-mode generators' logs come after the smoothed ones, and logs of other forms (outputs that are codes) after
     // both, so that the earlier ones' places (their seeds), and so their logs, are the same whether or not a later
     // form is in the run.
-    const auto form = [](const std::string& g) { return raw_mode(g) ? 1 : log_window(g) == kEvalWindow ? 0 : 2; };
+    const auto form = [](const std::string& g) {
+        if (raw_mode(g)) return 1;
+        return log_window(g) == kEvalWindow && truth_info(g).kind != TruthInfo::Kind::link ? 0 : 2;
+    };
     for (const int phase : {0, 1, 2}) {
         for (int set = 0; set < 2; ++set) {
             const std::uint64_t first = set == 0 ? options.tune_first : options.score_first;

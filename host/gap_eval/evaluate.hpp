@@ -86,7 +86,9 @@ struct EvalCase {
     double size_counts = 0.0;
     std::uint64_t seed = 0;
     bool tune = false;               ///< in the tuning set
-    bool detected = false;           ///< located cells were found
+    bool detected = false;           ///< located cells were found (of the channels or the link)
+    bool link_only = false;          ///< ... of the link alone
+    std::string link_verdict;        ///< the link's added candidate, or ""
     std::vector<Explanation> tried;  ///< every candidate with its metrics (thresholds applied later)
     double shrink_check = 0.0;       ///< held-out shrink of the truth's candidate re-measured on fresh replicates
     bool has_shrink_check = false;   ///< only where the run-time diagnosis, every candidate kept, put the truth first

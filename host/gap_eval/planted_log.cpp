@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "host/fit/lm_fit.hpp"
+#include "host/gap/link_loss.hpp"
 #include "host/gap_eval/truth.hpp"
 #include "sim/model/board_outputs.hpp"
 #include "sim/model/drift.hpp"
@@ -31,7 +32,36 @@ double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const
     return std::sqrt(sum / static_cast<double>(t.size()));
 }
 
+// Leaves out the rows `lost` marks, every column alike.
+void drop_rows(LogData& log, const std::vector<std::uint8_t>& lost) {
+    const auto keep = [&](std::vector<double>& v) {
+        std::size_t out = 0;
+        for (std::size_t k = 0; k < v.size(); ++k)
+            if (k >= lost.size() || !lost[k]) v[out++] = v[k];
+        v.resize(out);
+    };
+    keep(log.t_s);
+    for (auto& column : log.counts) keep(column);
+    for (auto& [name, column] : log.optional_columns) keep(column);
+    std::size_t out = 0;
+    for (std::size_t k = 0; k < log.seq.size(); ++k)
+        if (k >= lost.size() || !lost[k]) log.seq[out++] = log.seq[k];
+    log.seq.resize(out);
+}
+
+bool lossy_link(const std::string& generator, CleanForm clean) {
+    return generator == "none" ? clean == CleanForm::lossy_link : truth_info(generator).kind == TruthInfo::Kind::link;
+}
+
 }  // namespace
+
+sim::SimModel eval_unit(const std::string& generator, CleanForm clean) {
+    sim::SimModel unit = sim::paper_model();
+    if (lossy_link(generator, clean))
+        unit.link.to_host.byte_error_rate =
+            1.0 - std::pow(1.0 - kEvalFrameCorruption, 1.0 / static_cast<double>(sample_frame_bytes()));
+    return unit;
+}
 
 GapModel randomised_truth(std::uint64_t seed, int window) {
     sim::Rng rng(seed, 0x60);
@@ -58,7 +88,7 @@ int log_window(const std::string& generator) {
 }
 
 LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
-                 std::size_t samples, std::uint64_t seed, bool raw_mode) {
+                 std::size_t samples, std::uint64_t seed, bool raw_mode, const std::vector<std::uint8_t>& lost) {
     LogData log;
     log.source_name = "gap-eval";
     log.t_s.resize(samples);
@@ -77,6 +107,7 @@ LogData make_log(const GapModel& truth, const std::vector<double>& added, const 
     if (raw_mode) log.optional_columns["raw_gyro"] = raw[0];
     log.seq.resize(samples);
     for (std::size_t k = 0; k < samples; ++k) log.seq[k] = raw_mode ? 2 * k : k;
+    if (!lost.empty()) drop_rows(log, lost);
     log.metadata.set("sample_period_s", kEvalSamplePeriodS);
     log.metadata.set("conversions_per_output", static_cast<std::int64_t>(truth.smoothing.conversions_per_output));
     log.metadata.set("window", static_cast<std::int64_t>(truth.smoothing.window));
@@ -114,6 +145,7 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
     Planted p;
     p.model = randomised_truth(seed, none && clean == CleanForm::codes ? 1 : log_window(generator));
     std::vector<double> added;
+    std::vector<std::uint8_t> lost;
     sim::Quantiser quantiser;
     if (generator != "none" && truth_info(generator).kind == TruthInfo::Kind::converter) {
         // Sized by the code widths the log can see: those of the codes it occupies (the same noise path through the
@@ -121,17 +153,28 @@ Planted plant(const std::string& generator, double size_sd, std::uint64_t seed, 
         p.size_counts = p.scale = size_sd * output_noise_sd(p.model);
         p.occupancy.assign(std::size_t{1} << p.model.unit.adc.bits, 0.0);
         // Held by name: a range-for over a member of the returned log would read it after its end (before C++23).
-        const LogData clean = make_log(p.model, {}, {}, samples, seed, true);
-        for (double code : clean.optional_columns.at("raw_gyro")) p.occupancy[static_cast<std::size_t>(code)] += 1.0;
+        const LogData clean_log = make_log(p.model, {}, {}, samples, seed, true);
+        for (double code : clean_log.optional_columns.at("raw_gyro"))
+            p.occupancy[static_cast<std::size_t>(code)] += 1.0;
         quantiser = make_converter_truth(generator, p.scale, p.occupancy, seed, seed);
-    } else if (generator != "none") {
+    } else if (!none && truth_info(generator).kind == TruthInfo::Kind::link) {
+        p.size_counts = p.scale = size_sd;  // per cent of the frames, lost in the long run
+        lost = make_link_truth(generator, samples, size_sd, seed, seed);
+    } else if (!none) {
         InputSignal in = input_signal(generator, size_sd, p.model, seed, samples);
         p.size_counts = in.size_counts;
         p.scale = in.scale;
         added = std::move(in.added);
     }
+    if (lossy_link(generator, clean)) {
+        // The calibrated link's own losses under the generator's: each frame corrupted alone.
+        lost.resize(samples, 0);
+        sim::Rng corrupt(seed, 0x7A);
+        for (auto& l : lost)
+            if (corrupt.uniform() < kEvalFrameCorruption) l = 1;
+    }
     p.log = make_log(p.model, added, quantiser, samples, seed,
-                     raw_mode(generator) || (none && clean == CleanForm::raw_mode));
+                     raw_mode(generator) || (none && clean == CleanForm::raw_mode), lost);
     return p;
 }
 

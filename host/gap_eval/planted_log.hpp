@@ -34,8 +34,9 @@ int log_window(const std::string& generator);
 /// `quantiser` as its converter. A `raw`
 /// log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
 /// numbers stepping by two (a SAMPLE and a RAW frame per row).
+/// Rows whose frame `lost` marks (1) are left out, their sequence numbers with them.
 LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
-                 std::size_t samples, std::uint64_t seed, bool raw_mode);
+                 std::size_t samples, std::uint64_t seed, bool raw_mode, const std::vector<std::uint8_t>& lost = {});
 
 /// A generator acting at the converter input, sized: the signal added, its planted size and make_truth()'s scale.
 struct InputSignal {
@@ -55,14 +56,22 @@ InputSignal input_signal(const std::string& generator, double size_sd, const Gap
 struct Planted {
     GapModel model;
     LogData log;
-    double size_counts = 0.0;       ///< the planted size [counts]
+    double size_counts = 0.0;       ///< the planted size [counts; a link generator's: per cent of frames lost]
     double scale = 0.0;             ///< make_truth()'s size argument that plants it
     std::vector<double> occupancy;  ///< a converter truth's: the codes of the log made with the model's converter
 };
 
-/// How a clean log is written: smoothed outputs, raw-mode (a raw column of codes beside them), or outputs of one
-/// conversion each (window 1: the outputs are the codes).
-enum class CleanForm { smoothed, raw_mode, codes };
+/// How a clean log is written: smoothed outputs, raw-mode (a raw column of codes beside them), outputs of one
+/// conversion each (window 1: the outputs are the codes), or behind the calibrated lossy link (kEvalFrameCorruption).
+enum class CleanForm { smoothed, raw_mode, codes, lossy_link };
+
+/// The calibrated link of link generators' logs and of lossy-link clean logs: each frame corrupted alone with this
+/// probability (byte errors), beside which a generator's losses must stand out.
+inline constexpr double kEvalFrameCorruption = 0.005;
+
+/// The unit a log of `generator` (or a clean log in the form `clean`) is diagnosed against: the paper's, with the
+/// calibrated link's byte errors towards the host for a link generator or a lossy-link clean log.
+sim::SimModel eval_unit(const std::string& generator, CleanForm clean = CleanForm::smoothed);
 
 /// A log of a domain-randomised base with `generator` planted at `size_sd` output-noise deviations (a converter
 /// generator's size is its rms DNL); "none" plants nothing, in the form `clean`.

@@ -17,6 +17,7 @@ const std::vector<TruthInfo>& truth_list() {
         {"mode_hop", "", K::shape},
         {"sar_mismatch", "adc_dnl", K::converter},
         {"sar_codes", "adc_dnl", K::converter, 1},
+        {"interference_bursts", "packet_loss", K::link},
     };
     return list;
 }
@@ -45,6 +46,12 @@ sim::Quantiser make_converter_truth(const std::string& generator, double size_co
     if (generator == "sar_mismatch" || generator == "sar_codes")
         return truth_sar_mismatch(size_counts, occupancy, seed, noise_seed);
     throw std::invalid_argument("unknown converter truth generator: " + generator);
+}
+
+std::vector<std::uint8_t> make_link_truth(const std::string& generator, std::size_t frames, double loss_percent,
+                                          std::uint64_t seed, std::uint64_t noise_seed) {
+    if (generator == "interference_bursts") return truth_interference_bursts(frames, loss_percent, seed, noise_seed);
+    throw std::invalid_argument("unknown link truth generator: " + generator);
 }
 
 }  // namespace driftlab::host::gap

@@ -13,6 +13,9 @@
 //                      it replaces the quantiser and its logs are raw-mode
 //   sar_codes       -> adc_dnl: the same converter behind outputs of one conversion each (window 1) and no raw
 //                      column, so the outputs are the codes
+//   interference_bursts -> packet_loss (fits a Gilbert chain: geometric bursts, every frame of one lost): episodes
+//                      of log-normal length within which frames are lost with probability 0.7-1; it takes rows out
+//                      of the log
 // `size_counts` sets the scale [counts = LSB], and every signal generator is linear in it: the level the RC network's
 // rise approaches (thermal_rc: the log holds 80-99 % of it), the thermostat's extremes, the standard deviation of
 // the random signals (kasdin_flicker, wandering_ou; student_walk's end point), the standard deviation of one burst's
@@ -23,6 +26,7 @@
 // docs/gap.md §Evaluation.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,6 +41,7 @@ struct TruthInfo {
         shape,      ///< a deterministic signal added at the converter input (sized by what eq. 1 cannot absorb)
         process,    ///< a random signal added there (sized by a standard deviation; see size_counts above)
         converter,  ///< a quantiser replacing the converter (sized by its DAC's rms step error); its logs are raw-mode
+        link,       ///< frames lost on the way (sized by the share of frames lost, in per cent): rows out of the log
     };
     std::string generator;
     std::string effect;
@@ -62,6 +67,12 @@ std::vector<double> make_truth(const std::string& generator, const std::vector<d
 sim::Quantiser make_converter_truth(const std::string& generator, double size_counts,
                                     const std::vector<double>& occupancy, std::uint64_t seed, std::uint64_t noise_seed);
 
+/// The frames a link generator (Kind::link) loses out of `frames`: 1 per lost frame. `loss_percent` is the long-run
+/// share lost [%]; `seed` draws the device (its episodes' typical length and loss within), `noise_seed` the path.
+/// Throws std::invalid_argument on a bad name.
+std::vector<std::uint8_t> make_link_truth(const std::string& generator, std::size_t frames, double loss_percent,
+                                          std::uint64_t seed, std::uint64_t noise_seed);
+
 /// The per-sample signal generators, one file each (truth_*.cpp).
 std::vector<double> truth_thermal_rc(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
 std::vector<double> truth_thermostat(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
@@ -71,6 +82,8 @@ std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double si
 std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_mode_hop(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+std::vector<std::uint8_t> truth_interference_bursts(std::size_t frames, double loss_percent, std::uint64_t seed,
+                                                    std::uint64_t noise_seed);
 sim::Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,
                                   std::uint64_t noise_seed);
 

@@ -99,7 +99,8 @@ nlohmann::json scores_json(const EvalScores& s) {
         {"rate", s.clean ? static_cast<double>(s.clean_flagged) / static_cast<double>(s.clean) : 0.0},
         {"interval", {s.fpr_low, s.fpr_high}},
         {"raw_mode", s.options.clean_form == gap::CleanForm::raw_mode},
-        {"codes", s.options.clean_form == gap::CleanForm::codes}};
+        {"codes", s.options.clean_form == gap::CleanForm::codes},
+        {"lossy_link", s.options.clean_form == gap::CleanForm::lossy_link}};
     json confusion = json::object();
     for (const auto& [row, count] : s.confusion) confusion[row] = count;
     j["confusion"] = confusion;

@@ -218,6 +218,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["threshold_z"] = json_number(r.before.threshold);
     j["cells"] = r.layout.size();
     j["motion"] = motion_to_json(r);
+    j["link"] = link_to_json(r);
     return j;
 }
 

@@ -91,6 +91,12 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
                        ") are read as the processes' outsized increments: they remain beside them";
         return out;
     }
+    if (r.located.empty() && r.link.added) {
+        const Explanation& e = r.link.tried[*r.link.added];
+        return "the channels agree with the simulator; the link's frame loss does not (" +
+               counted(r.link.located.size(), "link cell") + " located), and " + e.effect + " removes " +
+               fixed_point(100 * e.heldout_shrink, 0) + " % of its held-out excess";
+    }
     if (r.located.empty()) {
         if (!r.diffuse_gap)
             return std::string(

@@ -48,12 +48,17 @@ inline constexpr auto kGapJsonKeys = std::to_array<const char*>({"verdict",
                                                                  "max_effects",
                                                                  "threshold_z",
                                                                  "cells",
-                                                                 "motion"});
+                                                                 "motion",
+                                                                 "link"});
 
 /// `gap --truth`'s motion section (GapResult::motion): the terms, their estimates and verdicts; nothing (null in
 /// JSON) without it.
 void print_motion_text(const gap::GapResult& result);
 nlohmann::json motion_to_json(const gap::GapResult& result);
+/// The link's section (GapResult::link): its frame loss against the unit's link, located cells and candidates.
+void print_link_text(const gap::GapResult& result);
+void write_link_markdown(std::ostream& md, const gap::GapResult& result);
+nlohmann::json link_to_json(const gap::GapResult& result);
 /// Whether `effect` was judged as a motion term, so it is not among the effects a static log cannot identify.
 bool tried_in_motion(const gap::GapResult& result, const std::string& effect);
 

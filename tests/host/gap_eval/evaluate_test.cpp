@@ -192,6 +192,35 @@ TEST(GapEval, AConvertersMismatchIsFoundInOutputsThatAreCodes) {
     EXPECT_TRUE(r.not_tried.empty());  // adc_dnl can be tried
 }
 
+// Interference that takes frames in episodes (not a Gilbert chain's geometric bursts), beside the calibrated link's
+// single corrupted frames: at 4 x a_50 (a_50 = 0.89 % of frames, measured on 1500-sample logs) the diagnosis names
+// the bursty loss, and its clean lossy-link logs are mostly left alone.
+TEST(GapEval, InterferenceBurstsAreNamedPacketLoss) {
+    EvalOptions o = quick_options();
+    o.tune = false;
+    o.generators = {"interference_bursts"};
+    o.samples = 1500;
+    o.score_last = o.score_first + 4;
+    o.clean_per_seed = 1;
+    o.clean_form = CleanForm::lossy_link;
+    const auto cases = run_cases(o, {{"interference_bursts", 0.89, {}}});
+    int planted = 0, right = 0, clean = 0, flagged = 0;
+    for (const auto& c : cases) {
+        if (c.generator == "none") {
+            ++clean, flagged += decide(c, Thresholds{}).verdict != "none";
+            continue;
+        }
+        ++planted;
+        right += decide(c, Thresholds{}).verdict == "packet_loss";
+    }
+    EXPECT_EQ(planted, 5);
+    EXPECT_GE(right, 4);
+    EXPECT_EQ(clean, 5);
+    EXPECT_LE(flagged, 1);
+    EXPECT_EQ(pair_refusal("interference_bursts", "thermal_rc"),
+              "interference_bursts acts on the link; pairs act at the converter input");
+}
+
 // Raw-mode generators' logs are placed after all others, so adding one to a run changes no other log.
 TEST(GapEval, ARawModeGeneratorInTheRunChangesNoOtherLog) {
     EvalOptions o = quick_options();
