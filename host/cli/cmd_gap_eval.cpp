@@ -35,6 +35,8 @@ struct GapEvalCommandOptions {
     bool raw_clean = false;
     bool codes_clean = false;
     bool link_clean = false;
+    std::size_t samples = 0;  // 0: the benchmark's 1500 (--quick: 800)
+    int detection_logs = 0;   // 0: the benchmark's 48 (--quick: 4)
     bool shipped = false;
     bool json = false;
     std::string plot_dir;
@@ -123,6 +125,8 @@ void run(const GapEvalCommandOptions& o) {
         options.fit_replicates = 6;
         options.max_evaluations = 12;
     }
+    if (o.samples > 0) options.samples = o.samples;
+    if (o.detection_logs > 0) options.detection_logs = o.detection_logs;
     const bool tty = isatty(2);
     auto progress_for = [tty](const char* what) -> std::function<void(std::size_t, std::size_t)> {
         if (!tty) return {};
@@ -199,6 +203,11 @@ void register_gap_eval(CLI::App& app) {
     cmd->add_option("--pair-level", o->pair_level,
                     "Each of a pair at this multiple of its own a_50, at most 16 (default 2)")
         ->check(number_in(0.0, 16.0, Bound::open));
+    cmd->add_option("--samples", o->samples,
+                    "Outputs per log (default 1500; 14400 is an hour at 100 Hz smoothed 25 conversions to an output)")
+        ->check(CLI::Range(200, 100000));
+    cmd->add_option("--detection-logs", o->detection_logs, "Logs per size when measuring a_50 (default 48)")
+        ->check(CLI::Range(4, 1000));
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
                     "Clean logs per seed for the false-positive rate (default: as many as sizes)")
         ->check(whole_number_in(1, 1000));

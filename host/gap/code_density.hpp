@@ -29,7 +29,7 @@ double code_density_excess(const std::vector<double>& raw, const std::vector<dou
 /// The level a log whose outputs are themselves codes (one conversion each) is compared with, per row: the mean of
 /// the `half_width` rows either side, the row itself left out (its own code would make every code fit its level).
 /// The same for the log and its replicates, so what averaging leaves of the DNL cancels in the comparison.
-std::vector<double> neighbour_level(const std::vector<double>& codes, std::size_t half_width = 8);
+std::vector<double> neighbour_level(const std::vector<double>& codes, std::size_t half_width = 16);
 
 /// A converter transition: code `code` begins at input `counts`.
 struct FittedTransition {
