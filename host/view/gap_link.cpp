@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <ostream>
 
 #include "host/util/format_number.hpp"
@@ -15,17 +16,23 @@ namespace {
 
 // "2.0 % lost, bursts of 4.1 frames": what a link candidate's parameters mean.
 std::string reading(const gap::Explanation& e) {
-    const auto& p = e.estimate();
-    if (e.effect == "packet_loss" && p.size() == 2) {
-        const double to_bad = p[0].second, to_good = p[1].second;
-        const double loss = to_bad + to_good > 0 ? to_bad / (to_bad + to_good) : 0.0;
-        return fixed_point(100.0 * loss, 2) + " % of frames lost in bursts of " +
-               significant(to_good > 0 ? 1.0 / to_good : 0.0, 3) + " frames on average";
+    const auto value = [&](const char* key) -> std::optional<double> {
+        for (const auto& [name, v] : e.estimate())
+            if (name == key) return v;
+        return std::nullopt;
+    };
+    std::string out;
+    if (const auto to_bad = value("p_good_to_bad"), to_good = value("p_bad_to_good"); to_bad && to_good) {
+        const double loss = *to_bad + *to_good > 0 ? *to_bad / (*to_bad + *to_good) : 0.0;
+        out = fixed_point(100.0 * loss, 2) + " % of frames lost in bursts of " +
+              significant(*to_good > 0 ? 1.0 / *to_good : 0.0, 3) + " frames on average";
     }
-    if (e.effect == "byte_errors" && p.size() == 1)
-        return "each frame of " + std::to_string(gap::sample_frame_bytes()) + " bytes lost alone with probability " +
-               significant(1.0 - std::pow(1.0 - p[0].second, static_cast<double>(gap::sample_frame_bytes())), 3);
-    return "";
+    if (const auto rate = value("byte_error_rate"))
+        out = "each frame of " + std::to_string(gap::sample_frame_bytes()) + " bytes lost alone with probability " +
+              significant(1.0 - std::pow(1.0 - *rate, static_cast<double>(gap::sample_frame_bytes())), 3);
+    if (const auto polls = value("polls_unanswered"))
+        out += "; " + fixed_point(100.0 * *polls, 2) + " % of polls unanswered";
+    return out;
 }
 
 std::string model_text(const gap::FrameLoss& m) {
