@@ -104,3 +104,25 @@ TEST(Comparison, LargeButIrrelevantDifferenceIsNotLocated) {
 
 }  // namespace
 }  // namespace driftlab::host::gap
+
+namespace driftlab::host::gap {
+namespace {
+
+// Replicates that all agree (a lossless link: every replicate loses nothing): a log that agrees scores 1, one that
+// differs scores its own mean z^2 against the per-cell floor, not the 1 a zero null would otherwise give.
+TEST(Comparison, ReplicatesThatAllAgreeScoreTheLogsOwnDifference) {
+    const Eigen::MatrixXd replicates = Eigen::MatrixXd::Zero(20, 2);
+    const std::vector<Cell> layout{{"loss", "link", -1, "a", Segment::heldout, false, 1e-3},
+                                   {"burst", "link", -1, "b", Segment::heldout, false, 0.5}};
+    const auto all = [](const Cell&) { return true; };
+    const std::vector<double> floors{0.01, 0.1};
+    EXPECT_DOUBLE_EQ(gap_score(compare({0.0, 0.0}, replicates, 0.05, &floors), layout, all), 1.0);
+    const Comparison lossy = compare({0.03, 2.0}, replicates, 0.05, &floors);
+    EXPECT_DOUBLE_EQ(lossy.z[0], 3.0);   // 0.03 over the floor 0.01
+    EXPECT_DOUBLE_EQ(lossy.z[1], 20.0);  // 2 frames over 0.1
+    EXPECT_DOUBLE_EQ(gap_score(lossy, layout, all), (9.0 + 400.0) / 2.0);
+    EXPECT_EQ(locate({0.03, 2.0}, lossy, layout).size(), 2u);
+}
+
+}  // namespace
+}  // namespace driftlab::host::gap
