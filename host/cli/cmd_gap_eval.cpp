@@ -205,9 +205,9 @@ void register_gap_eval(CLI::App& app) {
         ->check(number_in(0.0, 16.0, Bound::open));
     cmd->add_option("--samples", o->samples,
                     "Outputs per log (default 1500; 14400 is an hour at 100 Hz smoothed 25 conversions to an output)")
-        ->check(CLI::Range(200, 100000));
+        ->check(whole_number_in(200, 100000));
     cmd->add_option("--detection-logs", o->detection_logs, "Logs per size when measuring a_50 (default 48)")
-        ->check(CLI::Range(4, 1000));
+        ->check(whole_number_in(4, 1000));
     cmd->add_option("--clean-per-seed", o->clean_per_seed,
                     "Clean logs per seed for the false-positive rate (default: as many as sizes)")
         ->check(whole_number_in(1, 1000));

@@ -46,6 +46,19 @@ TEST(GapEvalCli, RawCleanLogsAreReportedAsRawMode) {
         nlohmann::json::parse(plain.output.substr(plain.output.find('{')))["false_positive"]["raw_mode"].get<bool>());
     const RunResult md = with({"--raw-clean"});
     EXPECT_NE(md.output.find("False-positive rate on clean raw-mode logs: "), std::string::npos) << md.output;
+    // The other clean forms: outputs that are codes, and a lossy link; one form at a time.
+    const RunResult codes = with({"--codes-clean", "--json", "--samples", "600"});
+    ASSERT_EQ(codes.exit_code, 0) << codes.output;
+    const auto c = nlohmann::json::parse(codes.output.substr(codes.output.find('{')));
+    EXPECT_TRUE(c["false_positive"]["codes"].get<bool>());
+    EXPECT_FALSE(c["false_positive"]["raw_mode"].get<bool>());
+    const RunResult link = with({"--link-clean"});
+    EXPECT_NE(link.output.find("False-positive rate on clean lossy-link logs: "), std::string::npos) << link.output;
+    const RunResult both = with({"--raw-clean", "--link-clean"});
+    EXPECT_EQ(both.exit_code, 2) << both.output;
+    const RunResult short_logs = with({"--samples", "100"});
+    EXPECT_EQ(short_logs.exit_code, 2) << short_logs.output;
+    EXPECT_NE(short_logs.output.find("--samples"), std::string::npos) << short_logs.output;
 }
 
 // --clean-only without --clean-per-seed takes as many clean logs per seed as the run has sizes (--quick: one), not
