@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "host/gap/comparison.hpp"
@@ -79,6 +80,9 @@ std::vector<std::uint8_t> simulate_slots(const FrameLoss& model, std::size_t cou
 /// Log-likelihood of the lost/arrived pattern of the observed slots `in` accepts under `model` (forward algorithm;
 /// the chain runs on through the others unobserved). -inf where the model cannot make the pattern.
 double slot_log_likelihood(const FrameLoss& model, const FrameSlots& slots, const std::vector<bool>& in);
+
+/// A link candidate's parameter `key` as it reports it (Explanation::estimate()), or none where it has none.
+std::optional<double> link_parameter(const Explanation& candidate, const std::string& key);
 
 /// `link` with its loss replaced by candidate `added` (its whole-log estimate): what --model-out writes. packet_loss
 /// sets the chain towards the host and clears its byte errors; byte_errors the reverse; polls_unanswered becomes

@@ -34,19 +34,16 @@ double unabsorbed_rms(const GapModel& model, const std::vector<double>& t, const
 
 // Leaves out the rows `lost` marks, every column alike.
 void drop_rows(LogData& log, const std::vector<std::uint8_t>& lost) {
-    const auto keep = [&](std::vector<double>& v) {
+    const auto keep = [&](auto& v) {
         std::size_t out = 0;
         for (std::size_t k = 0; k < v.size(); ++k)
             if (k >= lost.size() || !lost[k]) v[out++] = v[k];
         v.resize(out);
     };
     keep(log.t_s);
+    keep(log.seq);
     for (auto& column : log.counts) keep(column);
     for (auto& [name, column] : log.optional_columns) keep(column);
-    std::size_t out = 0;
-    for (std::size_t k = 0; k < log.seq.size(); ++k)
-        if (k >= lost.size() || !lost[k]) log.seq[out++] = log.seq[k];
-    log.seq.resize(out);
 }
 
 bool lossy_link(const std::string& generator, CleanForm clean) {

@@ -16,11 +16,7 @@ namespace {
 
 // "2.0 % lost, bursts of 4.1 frames": what a link candidate's parameters mean.
 std::string reading(const gap::Explanation& e) {
-    const auto value = [&](const char* key) -> std::optional<double> {
-        for (const auto& [name, v] : e.estimate())
-            if (name == key) return v;
-        return std::nullopt;
-    };
+    const auto value = [&](const char* key) { return gap::link_parameter(e, key); };
     std::string out;
     if (const auto to_bad = value("p_good_to_bad"), to_good = value("p_bad_to_good"); to_bad && to_good) {
         const double loss = *to_bad + *to_good > 0 ? *to_bad / (*to_bad + *to_good) : 0.0;
