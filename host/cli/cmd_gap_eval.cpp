@@ -35,6 +35,7 @@ struct GapEvalCommandOptions {
     bool raw_clean = false;
     bool codes_clean = false;
     bool link_clean = false;
+    bool common_clean = false;
     std::size_t samples = 0;  // 0: the benchmark's 1500 (--quick: 800)
     int detection_logs = 0;   // 0: the benchmark's 48 (--quick: 4)
     bool shipped = false;
@@ -113,10 +114,11 @@ void run(const GapEvalCommandOptions& o) {
     }
     options.holdout = o.holdout;
     options.clean_per_seed = o.clean_per_seed;
-    options.clean_form = o.raw_clean     ? gap::CleanForm::raw_mode
-                         : o.codes_clean ? gap::CleanForm::codes
-                         : o.link_clean  ? gap::CleanForm::lossy_link
-                                         : gap::CleanForm::smoothed;
+    options.clean_form = o.raw_clean      ? gap::CleanForm::raw_mode
+                         : o.codes_clean  ? gap::CleanForm::codes
+                         : o.link_clean   ? gap::CleanForm::lossy_link
+                         : o.common_clean ? gap::CleanForm::four_channels
+                                          : gap::CleanForm::smoothed;
     if (o.quick) {
         options.samples = 800;
         options.levels = {2.0};
@@ -234,6 +236,10 @@ void register_gap_eval(CLI::App& app) {
            "--link-clean", o->link_clean,
            "Clean logs lose frames as the calibrated link does (each alone, 0.5 %) and are diagnosed against it, "
            "as interference_bursts's logs are")
+        ->excludes(raw_clean);
+    cmd->add_flag("--common-clean", o->common_clean,
+                  "Clean logs record all four channels (the accelerometer axes drawn as the gyro is), so the channels "
+                  "are also read together, as supply_wander's logs are")
         ->excludes(raw_clean);
     cmd->add_flag("--json", o->json,
                   "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, "

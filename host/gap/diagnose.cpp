@@ -286,6 +286,46 @@ void search(GapResult& result, const LogData& log, const GapOptions& options,
     result.verdict = result.accepted.empty() ? nothing : result.accepted.front().effect;
 }
 
+// The channels read together (common_cause.hpp), where two or more are analysed and a cell of theirs is located. A
+// shared reading that wins replaces the accepted Gaussian processes of the channels it loads (their size there set
+// to 0 in the models) and joins the models as the library's supply wander.
+void search_common(GapResult& result, const LogData& log) {
+    CommonFindings& common = result.common;
+    std::array<std::vector<double>, kChannelCount> residual;
+    std::array<const std::vector<double>*, kChannelCount> r{};
+    std::array<double, kChannelCount> dc{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!result.channels[c]) continue;
+        const auto channel = static_cast<Channel>(c);
+        std::vector<double> shapes = model_mean_counts(result.whole_log_model, channel, log.t_s);
+        const std::vector<double> base = model_mean_counts(result.base, channel, log.t_s);
+        for (std::size_t k = 0; k < shapes.size(); ++k) shapes[k] -= base[k];
+        residual[c] = common_residual(log.t_s, log.counts[c], shapes);
+        r[c] = &residual[c];
+        for (double v : log.counts[c]) dc[c] += v / static_cast<double>(log.size());
+    }
+    common = fit_common(r, dc, result.base);
+    common.shared = shared_bands(result.located, result.layout);
+    const CommonFit* won = common.winner();
+    if (!won) return;
+    const std::size_t own = result.base.effects.size();
+    std::erase_if(result.accepted, [&](const Explanation& e) {
+        std::size_t c = 0;
+        while (c < kChannelCount && e.channel != kChannelNames[c]) ++c;
+        if (c == kChannelCount || !won->loaded[c] || candidate(e.effect).route != FitRoute::spectral) return false;
+        common.replaced.push_back(e.effect + " on " + e.channel);
+        for (GapModel* m : {&result.final_model, &result.whole_log_model})
+            for (std::size_t i = own; i < m->effects.size(); ++i)
+                if (m->effects[i].name == e.effect && candidate_size_in(m->effects[i], static_cast<Channel>(c)) > 0.0)
+                    m->effects[i] = without_channel(m->effects[i], static_cast<Channel>(c));
+        return true;
+    });
+    common.effect = common_effect(*won, result.base);
+    result.final_model.effects.push_back(*common.effect);
+    result.whole_log_model.effects.push_back(*common.effect);
+    result.verdict = won->reading;
+}
+
 }  // namespace
 
 GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptions& options) {
@@ -345,7 +385,12 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     if (result.verdict == "none" && !result.link.located.empty())
         result.verdict = result.link.added ? result.link.tried[*result.link.added].effect : "unexplained";
     if (result.link.added) set_link_loss(result.whole_log_model.unit.link, result.link.tried[*result.link.added]);
-    if (result.accepted.empty()) {
+    const auto analysed = std::count(result.channels.begin(), result.channels.end(), true);
+    if (options.explain && analysed >= 2 && !result.located.empty()) {
+        tell("reading the channels together");
+        search_common(result, log);
+    }
+    if (result.accepted.empty() && !result.common.winner()) {
         result.after = result.before;
         result.located_after = result.located;
         result.gap_after_fit = result.gap_before_fit;

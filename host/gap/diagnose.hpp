@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "host/gap/candidates.hpp"
+#include "host/gap/common_cause.hpp"
 #include "host/gap/comparison.hpp"
 #include "host/gap/explain.hpp"
 #include "host/gap/gap_model.hpp"
@@ -122,6 +123,9 @@ struct GapResult {
     TimingCheck timing;   ///< without the joins of left_out
     /// The log's frame loss against the unit's link; its added candidate is the verdict where the channels have none.
     LinkFindings link;
+    /// Causes shared by channels: the channels read together against each alone. A shared reading that wins is the
+    /// verdict, in place of the per-channel processes it explains (CommonFindings::replaced).
+    CommonFindings common;
     std::vector<LogCut> left_out;  ///< stretches the user left out of the log (LogData::cuts)
     /// `gap --truth`: the known input taken out first and the motion terms judged (diagnose_in_motion()).
     std::optional<MotionFindings> motion;

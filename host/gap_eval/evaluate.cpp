@@ -30,9 +30,9 @@ namespace {
 // Only a starting point; detection_sizes() measures a_50.
 double first_guess(const std::string& generator) {
     static const std::map<std::string, double> guess = {
-        {"thermal_rc", 0.2},   {"thermostat", 0.25},        {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
-        {"student_walk", 1.0}, {"burst_spikes", 2.5},       {"mode_hop", 0.2},       {"sar_mismatch", 0.5},
-        {"sar_codes", 0.25},   {"interference_bursts", 0.2}};
+        {"thermal_rc", 0.2},   {"thermostat", 0.25},         {"kasdin_flicker", 0.5}, {"wandering_ou", 0.5},
+        {"student_walk", 1.0}, {"burst_spikes", 2.5},        {"mode_hop", 0.2},       {"sar_mismatch", 0.5},
+        {"sar_codes", 0.25},   {"interference_bursts", 0.2}, {"supply_wander", 0.5}};
     return guess.at(generator);
 }
 
@@ -75,10 +75,14 @@ EvalCase run_case(const std::string& generator, const std::string& truth, double
     c.detected = gap_located(r);
     c.link_only = r.located.empty() && !r.link.located.empty();
     if (r.link.added) c.link_verdict = r.link.tried[*r.link.added].effect;
+    if (const CommonFit* shared = r.common.winner()) c.common_verdict = shared->reading;
     c.tried = r.tried;
     const bool right = !r.accepted.empty() && r.accepted.front().effect == truth;
     // A link generator changes no value: the channels' held-out gap has nothing of it to shrink.
-    if (r.located.empty() || generator == "none" || truth_info(generator).kind == TruthInfo::Kind::link) return c;
+    // A link or shared generator's oracle is not a gyro signal: its held-out shrink is not measured.
+    const auto kind = generator == "none" ? TruthInfo::Kind::shape : truth_info(generator).kind;
+    if (r.located.empty() || generator == "none" || kind == TruthInfo::Kind::link || kind == TruthInfo::Kind::common)
+        return c;
     // Held-out gap on replicates the diagnosis never saw: base, chosen model, and the oracle (true model).
     BatteryOptions b;
     b.channels = r.channels;
@@ -149,7 +153,8 @@ PairCase run_pair_case(const std::string& first, const std::string& second, doub
     GapOptions go = gap_options(seed, options);
     go.explain_options.max_effects = ExplainOptions{}.max_effects;
     go.explain_options.step_test_candidates = false;
-    const GapResult r = diagnose(make_log(model, added, {}, options.samples, seed, false), sim::paper_model(), go);
+    const GapResult r =
+        diagnose(make_log(model, {added, {}, {}, {}}, {}, options.samples, seed, false), sim::paper_model(), go);
     c.detected = !r.located.empty();
     c.verdict = r.verdict;
     for (const auto& e : r.accepted) {
@@ -172,6 +177,7 @@ std::string pair_refusal(const std::string& first, const std::string& second) {
         const TruthInfo& t = truth_info(g);
         if (t.kind == TruthInfo::Kind::converter) return g + " replaces the converter; pairs act at its input";
         if (t.kind == TruthInfo::Kind::link) return g + " acts on the link; pairs act at the converter input";
+        if (t.kind == TruthInfo::Kind::common) return g + " acts on every channel; pairs act on the gyro";
         // A pair is scored by the library effects it holds; an out-of-library one has none to find.
         if (t.effect.empty()) return g + " stands for no library effect";
     }
@@ -194,6 +200,8 @@ Decision decide(const EvalCase& c, const Thresholds& th) {
     if (!c.detected) return {"none", ""};
     // Only the link's cells located: its own explanation (judged at the shipped thresholds), as `gap` says it.
     if (c.link_only) return {c.link_verdict.empty() ? "unexplained" : c.link_verdict, ""};
+    // The channels read together: a shared reading is the verdict whatever each channel's candidates say.
+    if (!c.common_verdict.empty()) return {c.common_verdict, ""};
     std::vector<const Explanation*> passing;
     for (const auto& e : c.tried)
         if (passes(e, th.penalty_per_param, th.min_heldout_shrink)) passing.push_back(&e);
@@ -320,7 +328,8 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
     // form is in the run.
     const auto form = [](const std::string& g) {
         if (raw_mode(g)) return 1;
-        return log_window(g) == kEvalWindow && truth_info(g).kind != TruthInfo::Kind::link ? 0 : 2;
+        const auto kind = truth_info(g).kind;
+        return log_window(g) == kEvalWindow && kind != TruthInfo::Kind::link && kind != TruthInfo::Kind::common ? 0 : 2;
     };
     for (const int phase : {0, 1, 2}) {
         for (int set = 0; set < 2; ++set) {

@@ -89,6 +89,7 @@ struct EvalCase {
     bool detected = false;           ///< located cells were found (of the channels or the link)
     bool link_only = false;          ///< ... of the link alone
     std::string link_verdict;        ///< the link's added candidate, or ""
+    std::string common_verdict;      ///< the shared reading that won (channels read together), or ""
     std::vector<Explanation> tried;  ///< every candidate with its metrics (thresholds applied later)
     double shrink_check = 0.0;       ///< held-out shrink of the truth's candidate re-measured on fresh replicates
     bool has_shrink_check = false;   ///< only where the run-time diagnosis, every candidate kept, put the truth first

@@ -2,6 +2,7 @@
 // one truth generator (truth.hpp) planted at a chosen size, as gap-eval makes them. docs/gap.md §Evaluation.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -20,8 +21,9 @@ inline constexpr double kEvalSamplePeriodS = 1.0;
 inline constexpr int kEvalWindow = 8;
 
 /// The base of log `seed`: the paper's gyro with C1 and T each scaled by a factor in [0.5, 2], its raw noise by the
-/// square root of one, smoothed by a mean of `window` conversions per output.
-GapModel randomised_truth(std::uint64_t seed, int window = kEvalWindow);
+/// square root of one, smoothed by a mean of `window` conversions per output; with `four_channels`, the
+/// accelerometer axes too, drawn alike (the gyro's draws unchanged).
+GapModel randomised_truth(std::uint64_t seed, int window = kEvalWindow, bool four_channels = false);
 
 /// Whether `generator` replaces the converter and its log is raw-mode (sized by its rms DNL). A converter generator
 /// whose log's outputs are the codes (window 1) is not: its log has no raw column.
@@ -30,13 +32,14 @@ bool raw_mode(const std::string& generator);
 /// The smoothing window of `generator`'s log (TruthInfo::window; kEvalWindow for "none").
 int log_window(const std::string& generator);
 
-/// A gyro log of `truth` (smoothed as truth.smoothing says) with `added` at the converter input and, when given,
-/// `quantiser` as its converter. A `raw`
+/// A gyro log of `truth` (smoothed as truth.smoothing says; all four channels with `four_channels`) with `added` at
+/// each channel's converter input and, when given, `quantiser` as the gyro's converter. A `raw`
 /// log is raw-mode, as `driftlab record` writes one: a raw_gyro column of the newest conversion's code, and sequence
 /// numbers stepping by two (a SAMPLE and a RAW frame per row).
 /// Rows whose frame `lost` marks (1) are left out, their sequence numbers with them.
-LogData make_log(const GapModel& truth, const std::vector<double>& added, const sim::Quantiser& quantiser,
-                 std::size_t samples, std::uint64_t seed, bool raw_mode, const std::vector<std::uint8_t>& lost = {});
+LogData make_log(const GapModel& truth, const std::array<std::vector<double>, kChannelCount>& added,
+                 const sim::Quantiser& quantiser, std::size_t samples, std::uint64_t seed, bool raw_mode,
+                 const std::vector<std::uint8_t>& lost = {}, bool four_channels = false);
 
 /// A generator acting at the converter input, sized: the signal added, its planted size and make_truth()'s scale.
 struct InputSignal {
@@ -62,8 +65,13 @@ struct Planted {
 };
 
 /// How a clean log is written: smoothed outputs, raw-mode (a raw column of codes beside them), outputs of one
-/// conversion each (window 1: the outputs are the codes), or behind the calibrated lossy link (kEvalFrameCorruption).
-enum class CleanForm { smoothed, raw_mode, codes, lossy_link };
+/// conversion each (window 1: the outputs are the codes), behind the calibrated lossy link (kEvalFrameCorruption),
+/// or with all four channels.
+enum class CleanForm { smoothed, raw_mode, codes, lossy_link, four_channels };
+
+/// Whether the log of `generator` (or a clean log in the form `clean`) records all four channels: a shared
+/// generator's, and clean logs in the form four_channels.
+bool four_channel_log(const std::string& generator, CleanForm clean = CleanForm::smoothed);
 
 /// The calibrated link of link generators' logs and of lossy-link clean logs: each frame corrupted alone with this
 /// probability (byte errors), beside which a generator's losses must stand out.

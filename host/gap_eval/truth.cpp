@@ -18,6 +18,7 @@ const std::vector<TruthInfo>& truth_list() {
         {"sar_mismatch", "adc_dnl", K::converter},
         {"sar_codes", "adc_dnl", K::converter, 1},
         {"interference_bursts", "packet_loss", K::link},
+        {"supply_wander", "supply_coupling", K::common},
     };
     return list;
 }
@@ -37,6 +38,7 @@ std::vector<double> make_truth(const std::string& generator, const std::vector<d
     if (generator == "student_walk") return truth_student_walk(t_s, size_counts, noise_seed);
     if (generator == "burst_spikes") return truth_burst_spikes(t_s, size_counts, noise_seed);
     if (generator == "mode_hop") return truth_mode_hop(t_s, size_counts, seed);
+    if (generator == "supply_wander") return truth_supply_wander(t_s, size_counts, seed, noise_seed);
     throw std::invalid_argument("unknown signal truth generator: " + generator);
 }
 

@@ -16,6 +16,9 @@
 //   interference_bursts -> packet_loss (fits a Gilbert chain: geometric bursts, every frame of one lost): episodes
 //                      of log-normal length within which frames are lost with probability 0.7-1; it takes rows out
 //                      of the log
+//   supply_wander   -> supply_coupling (fits one Gauss-Markov wander whose loadings follow the DC levels): a
+//                      regulator's reference wander through a lag (second order), reaching every channel through
+//                      its DC level times a mismatch of +-10 % of its own; its logs record all four channels
 // `size_counts` sets the scale [counts = LSB], and every signal generator is linear in it: the level the RC network's
 // rise approaches (thermal_rc: the log holds 80-99 % of it), the thermostat's extremes, the standard deviation of
 // the random signals (kasdin_flicker, wandering_ou; student_walk's end point), the standard deviation of one burst's
@@ -42,6 +45,7 @@ struct TruthInfo {
         process,    ///< a random signal added there (sized by a standard deviation; see size_counts above)
         converter,  ///< a quantiser replacing the converter (sized by its DAC's rms step error); its logs are raw-mode
         link,       ///< frames lost on the way (sized by the share of frames lost, in per cent): rows out of the log
+        common,  ///< a random signal every channel sees through its DC level (sized as the gyro's standard deviation)
     };
     std::string generator;
     std::string effect;
@@ -82,6 +86,9 @@ std::vector<double> truth_wandering_ou(const std::vector<double>& t_s, double si
 std::vector<double> truth_student_walk(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_burst_spikes(const std::vector<double>& t_s, double size_counts, std::uint64_t noise_seed);
 std::vector<double> truth_mode_hop(const std::vector<double>& t_s, double size_counts, std::uint64_t seed);
+/// The supply's relative deviation path (standard deviation `size`).
+std::vector<double> truth_supply_wander(const std::vector<double>& t_s, double size, std::uint64_t seed,
+                                        std::uint64_t noise_seed);
 std::vector<std::uint8_t> truth_interference_bursts(std::size_t frames, double loss_percent, std::uint64_t seed,
                                                     std::uint64_t noise_seed);
 sim::Quantiser truth_sar_mismatch(double size_counts, const std::vector<double>& occupancy, std::uint64_t seed,

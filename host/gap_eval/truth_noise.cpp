@@ -91,4 +91,27 @@ std::vector<double> truth_student_walk(const std::vector<double>& t_s, double si
     return out;
 }
 
+std::vector<double> truth_supply_wander(const std::vector<double>& t_s, double size, std::uint64_t seed,
+                                        std::uint64_t noise_seed) {
+    // A Gauss-Markov drive of correlation time tau1 through a first-order lag tau2 = tau1 / 4 (the regulator's
+    // reference wandering, seen through its output filter and the board's thermal mass): a second-order process,
+    // not the candidate's one Gauss-Markov. tau1 is log-uniform in [L/40, L/8], minutes on the benchmark's logs.
+    sim::Rng shape(seed, 0x91);
+    const double span_s = t_s.back() - t_s.front();
+    const double tau1 = span_s * std::exp(std::log(1.0 / 40.0) + std::log(5.0) * shape.uniform());
+    const double tau2 = tau1 / 4.0;
+    sim::Rng rng(noise_seed, 0x92);
+    std::vector<double> out(t_s.size());
+    double drive = rng.normal(), lagged = drive;
+    for (std::size_t k = 0; k < t_s.size(); ++k) {
+        const double dt = k == 0 ? 0.0 : t_s[k] - t_s[k - 1];
+        const double phi1 = std::exp(-dt / tau1), phi2 = std::exp(-dt / tau2);
+        drive = phi1 * drive + std::sqrt(1.0 - phi1 * phi1) * rng.normal();
+        lagged = phi2 * lagged + (1.0 - phi2) * drive;
+        out[k] = lagged;
+    }
+    scale_to_sd(out, size);
+    return out;
+}
+
 }  // namespace driftlab::host::gap

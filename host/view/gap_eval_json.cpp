@@ -100,7 +100,8 @@ nlohmann::json scores_json(const EvalScores& s) {
         {"interval", {s.fpr_low, s.fpr_high}},
         {"raw_mode", s.options.clean_form == gap::CleanForm::raw_mode},
         {"codes", s.options.clean_form == gap::CleanForm::codes},
-        {"lossy_link", s.options.clean_form == gap::CleanForm::lossy_link}};
+        {"lossy_link", s.options.clean_form == gap::CleanForm::lossy_link},
+        {"four_channels", s.options.clean_form == gap::CleanForm::four_channels}};
     json confusion = json::object();
     for (const auto& [row, count] : s.confusion) confusion[row] = count;
     j["confusion"] = confusion;

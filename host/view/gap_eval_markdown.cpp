@@ -19,6 +19,7 @@ const char* clean_form_text(gap::CleanForm form) {
     case gap::CleanForm::raw_mode: return " raw-mode";
     case gap::CleanForm::codes: return " window-1 (outputs that are codes)";
     case gap::CleanForm::lossy_link: return " lossy-link";
+    case gap::CleanForm::four_channels: return " four-channel";
     case gap::CleanForm::smoothed: break;
     }
     return "";

@@ -219,6 +219,7 @@ json gap_to_json(const GapResult& r, const GapOptions& options) {
     j["cells"] = r.layout.size();
     j["motion"] = motion_to_json(r);
     j["link"] = link_to_json(r);
+    j["common"] = common_to_json(r);
     return j;
 }
 

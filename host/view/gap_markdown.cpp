@@ -253,6 +253,7 @@ void write_gap_report(const GapResult& r, const LogData& log, const std::string&
     md_located(md, r, options);
     md_candidates(md, r, options);
     write_link_markdown(md, r);
+    write_common_markdown(md, r);
     md_limits(md, r);
     write_residual_plots(md, r, log, dir, options);
     std::ofstream out(dir + "/gap.md");

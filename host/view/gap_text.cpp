@@ -150,6 +150,7 @@ void print_gap_text(const GapResult& r, const GapOptions& options, const LogData
     print_candidates(r, options);
     print_motion_text(r);
     print_link_text(r);
+    print_common_text(r);
     print_limits(r);
     if (stability)
         for (const std::string& line : stability_text(*stability, r.verdict)) std::printf("%s\n", line.c_str());

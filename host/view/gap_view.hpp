@@ -49,7 +49,8 @@ inline constexpr auto kGapJsonKeys = std::to_array<const char*>({"verdict",
                                                                  "threshold_z",
                                                                  "cells",
                                                                  "motion",
-                                                                 "link"});
+                                                                 "link",
+                                                                 "common"});
 
 /// `gap --truth`'s motion section (GapResult::motion): the terms, their estimates and verdicts; nothing (null in
 /// JSON) without it.
@@ -59,6 +60,13 @@ nlohmann::json motion_to_json(const gap::GapResult& result);
 void print_link_text(const gap::GapResult& result);
 void write_link_markdown(std::ostream& md, const gap::GapResult& result);
 nlohmann::json link_to_json(const gap::GapResult& result);
+/// The shared-causes section (GapResult::common): the readings of the channels together, the located coherence
+/// cells; nothing (null in JSON) where the channels were not read together.
+void print_common_text(const gap::GapResult& result);
+void write_common_markdown(std::ostream& md, const gap::GapResult& result);
+nlohmann::json common_to_json(const gap::GapResult& result);
+/// The verdict's reason where a shared reading won ("" otherwise).
+std::string common_sentence(const gap::GapResult& result);
 /// Whether `effect` was judged as a motion term, so it is not among the effects a static log cannot identify.
 bool tried_in_motion(const gap::GapResult& result, const std::string& effect);
 

@@ -75,6 +75,31 @@ TEST(GapEval, InterferenceBurstsAreNamedPacketLoss) {
               "interference_bursts acts on the link; pairs act at the converter input");
 }
 
+// A supply wander every channel sees is named supply_coupling by reading the four channels together (at 8 x a_50,
+// a_50 = 0.26 of the gyro's output noise on 1500-sample logs: the accelerometer axes see it too), and clean
+// four-channel logs are mostly left alone.
+TEST(GapEval, ASupplyWanderIsReadAcrossTheChannels) {
+    EvalOptions o = quick_options();
+    o.tune = false;
+    o.generators = {"supply_wander"};
+    o.levels = {8.0};
+    o.samples = 1500;
+    o.score_last = o.score_first + 4;
+    o.clean_per_seed = 1;
+    o.clean_form = CleanForm::four_channels;
+    const auto cases = run_cases(o, {{"supply_wander", 0.26, {}}});
+    const auto [planted, right] = planted_and_right(cases, "supply_coupling");
+    EXPECT_EQ(planted, 5);
+    EXPECT_GE(right, 4);
+    int clean = 0, flagged = 0;
+    for (const auto& c : cases)
+        if (c.generator == "none") ++clean, flagged += decide(c, Thresholds{}).verdict != "none";
+    EXPECT_EQ(clean, 5);
+    EXPECT_LE(flagged, 1);
+    EXPECT_EQ(pair_refusal("supply_wander", "thermal_rc"),
+              "supply_wander acts on every channel; pairs act on the gyro");
+}
+
 // Raw-mode generators' logs are placed after all others, so adding one to a run changes no other log.
 TEST(GapEval, ARawModeGeneratorInTheRunChangesNoOtherLog) {
     EvalOptions o = quick_options();

@@ -297,5 +297,28 @@ TEST(TruthBurstSpikes, BurstsOfOneToThreeOutputsAtTheDocumentedRateWithLaplaceAm
     EXPECT_NEAR(sum_sq / (kSeeds * n) / (size * size), 2.0 * p, 2.0 * p * 4.0 * std::sqrt(7.0 / np));
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// supply_wander: a Gauss-Markov drive through a first-order lag, scaled to standard deviation `size`. Its form is
+// second order, not the candidate's one Gauss-Markov: increments over 2 steps against 1 step have the variance ratio
+// 2 (1 - rho(2)) / 2 (1 - rho(1)), which is 2 for a first-order process (white-like increments at lags far below
+// tau) and tends to 4 for a smooth one (1 - rho(d) ~ d^2 below the lag's tau2 >= L/160 = 125 outputs here). Over
+// 20 000 outputs the ratio's scatter is a few per cent.
+TEST(TruthSupplyWander, IsSecondOrderWithTheSizeAsItsDeviation) {
+    const auto t = eval_grid(20000);
+    for (std::uint64_t seed : {3u, 4u, 5u}) {
+        const auto x = truth_supply_wander(t, 0.002, seed, seed + 100);
+        const double m = mean_of(x);
+        double var = 0.0, d1 = 0.0, d2 = 0.0;
+        for (std::size_t k = 0; k < x.size(); ++k) var += (x[k] - m) * (x[k] - m);
+        for (std::size_t k = 2; k < x.size(); ++k) {
+            d1 += (x[k] - x[k - 1]) * (x[k] - x[k - 1]);
+            d2 += (x[k] - x[k - 2]) * (x[k] - x[k - 2]);
+        }
+        EXPECT_NEAR(std::sqrt(var / static_cast<double>(x.size())), 0.002, 1e-12);
+        EXPECT_GT(d2 / d1, 3.5);
+        EXPECT_LT(d2 / d1, 4.01);
+    }
+}
+
 }  // namespace
 }  // namespace driftlab::host::gap

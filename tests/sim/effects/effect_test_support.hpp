@@ -50,7 +50,7 @@ inline const std::map<std::string, std::string> kEffectExamples = {
     {"adc_inl", "a2_lsb = 0.8\na3_lsb = -0.3\na4_lsb = 0.1"},
     {"supply_coupling",
      "sensor_ratiometric = [0.0, 1.0, 1.0, 1.0]\nripple_v = 0.01\nripple_hz = 100.0\n"
-     "drift_v = -0.02\ndrift_tau_s = 900.0"},
+     "drift_v = -0.02\ndrift_tau_s = 900.0\nwander_v = 0.005\nwander_tau_s = 300.0"},
     {"cross_axis", "matrix_pct = [[0.0, 1.2, -0.5], [0.8, 0.0, 2.0], [-1.0, 0.3, 0.0]]"},
     {"g_sensitivity", "g_dps_per_g = [0.05, 0.05, 0.1]\ng2_dps_per_g2 = [0.0, 0.0, 0.02]"},
     {"vibration",

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "effect_test_support.hpp"
 
 namespace driftlab::sim {
@@ -43,6 +46,60 @@ TEST(SupplyCoupling, RegulatorDriftAndModelledSupplyShiftTheOutput) {
     const double dv = 0.1 - 0.05 * (1.0 - std::exp(-1.0));
     EXPECT_NEAR(e.supply_deviation_v(ctx), dv, 1e-15);
     EXPECT_NEAR(v[2], 2.5 * (1.0 - dv / 5.0), 1e-15);
+}
+
+// The wander is one Gauss-Markov path: stationary std sigma_w, lag-tau correlation e^-1 (closed form), and every
+// channel converted at one instant sees the same deviation, through its own mismatch.
+TEST(SupplyCoupling, WanderIsOneStationaryGaussMarkovPathSharedByTheChannels) {
+    SupplyCouplingParams p;
+    p.sensor_ratiometric = {0.0, 0.0, 1.0, 0.0};
+    p.wander_v = 0.01;
+    p.wander_tau_s = 20.0;
+    SupplyCoupling e(p);
+    e.reset(3);
+    const ChannelValues dc = {2.5, 1.25, 2.5, 5.0};
+    const std::size_t n = 400000;
+    const auto y = test::run_added(e, n, 1.0, dc);
+    std::vector<double> dv(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        dv[k] = -y[0][k] / (2.5 / 5.0);
+        EXPECT_NEAR(y[1][k], 0.5 * y[0][k], 1e-12);  // half the DC level, half the pickup
+        EXPECT_EQ(y[2][k], 0.0);
+        EXPECT_NEAR(y[3][k], 2.0 * y[0][k], 1e-12);
+    }
+    const double var = test::variance(dv);
+    EXPECT_NEAR(std::sqrt(var), 0.01, 0.01 * 0.03);  // n / (2 tau) = 10 000 independent stretches: ~1 % sd
+    double lag = 0.0;
+    const double m = test::mean(dv);
+    for (std::size_t k = 20; k < n; ++k) lag += (dv[k] - m) * (dv[k - 20] - m);
+    EXPECT_NEAR(lag / static_cast<double>(n - 20) / var, std::exp(-1.0), 0.03);
+}
+
+// The wander is a function of t: one channel's whole log converted after another's (as the gap's replicates do)
+// sees the path that all four converted at each instant see.
+TEST(SupplyCoupling, WanderIsAFunctionOfTimeWhateverTheOrderOfConversions) {
+    SupplyCouplingParams p;
+    p.sensor_ratiometric = {0.0, 0.0, 0.0, 0.0};
+    p.wander_v = 0.02;
+    p.wander_tau_s = 5.0;
+    SupplyCoupling per_sample(p), one_channel_after_another(p);
+    per_sample.reset(9);
+    one_channel_after_another.reset(9);
+    EffectContext ctx;
+    std::vector<ChannelValues> all(200, ChannelValues{2.5, 2.5, 2.5, 2.5});
+    for (std::size_t k = 0; k < all.size(); ++k) {
+        ctx.t_s = 0.37 * static_cast<double>(k);
+        per_sample.apply(all[k], ctx);
+    }
+    for (Channel c : {Channel::gyro, Channel::accel_z}) {
+        ctx.channel = c;
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            ctx.t_s = 0.37 * static_cast<double>(k);
+            ChannelValues one = {2.5, 2.5, 2.5, 2.5};
+            one_channel_after_another.apply(one, ctx);
+            EXPECT_DOUBLE_EQ(one[channel_index(c)], all[k][channel_index(c)]);
+        }
+    }
 }
 
 }  // namespace

@@ -1,0 +1,348 @@
+// Causes shared by channels; see common_cause.hpp.
+#include "host/gap/common_cause.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <stdexcept>
+
+#include "host/fit/lm_fit.hpp"
+#include "host/gap/whittle.hpp"
+#include "host/stats/nelder_mead.hpp"
+#include "host/util/fft_length.hpp"
+#include "host/util/thread_fft.hpp"
+#include "sim/effects/supply_coupling.hpp"
+
+namespace driftlab::host::gap {
+namespace {
+
+constexpr int kStartEvaluations = 600;  // Nelder-Mead budget per start of a shared reading (deterministic objective)
+constexpr int kOwnEvaluations = 300;    // per start of one channel's own process
+constexpr double kWanderProbeV = 0.05;  // the supply wander a shared_process effect is written with [V]
+
+// The channels' differenced residuals in the frequency domain, with what every reading's spectrum is built from. The
+// expected periodograms are the finite series' own (its taper and length, whittle.hpp), not the spectral density: a
+// differenced series has no power at frequency 0, and the density's zero there would read the taper's leakage as
+// a slow process. Built in place and never moved (the expected periodogram refers to its members).
+struct Spectra {
+    std::vector<std::size_t> channels;                 // analysed channel indices
+    std::vector<std::vector<std::complex<double>>> x;  // per channel: tapered DFT / sqrt(taper energy), bins 1..m
+    PartPeriodogram geometry;                          // the shared length and taper
+    std::vector<double> floor_acov;
+    std::vector<double> floor;  // the unit white floor's expected periodogram
+    std::unique_ptr<ExpectedPeriodogram> expected;
+    double dt = 1.0;      // output period [s]
+    double span_s = 1.0;  // the log's length [s]
+};
+
+std::size_t bins(const Spectra& s) { return s.floor.size(); }
+
+// A unit-variance Gauss-Markov process's expected periodogram (correlation time `tau`).
+std::vector<double> unit_gm(const Spectra& s, double tau) {
+    OutputSpectrum m;
+    m.ar1 = {{1.0, std::exp(-s.dt / tau)}};
+    return (*s.expected)(m);
+}
+
+// One reading's spectrum, per channel (Spectra::channels order): a floor and an optional own process, and a shared
+// rank-1 part.
+struct Reading {
+    std::vector<double> white, own_var, own_tau, loading;
+    double tau = 0.0;  // the shared part's correlation time; `loading` empty for none
+};
+
+// Whittle nll over the channels `subset` (indices into Spectra::channels): sum_j ln det S_j + X_j^H S_j^-1 X_j with
+// S = D + g a a' (Sherman-Morrison: both closed).
+double reading_nll(const Spectra& s, const Reading& r, const std::vector<std::size_t>& subset) {
+    const std::size_t m = bins(s);
+    std::vector<std::vector<double>> own(s.channels.size());
+    for (std::size_t c : subset)
+        if (r.own_var[c] > 0.0) own[c] = unit_gm(s, r.own_tau[c]);
+    const std::vector<double> g = r.loading.empty() ? std::vector<double>{} : unit_gm(s, r.tau);
+    double nll = 0.0;
+    for (std::size_t j = 0; j < m; ++j) {
+        double q = 0.0;
+        std::complex<double> u = 0.0;
+        for (std::size_t c : subset) {
+            const double d = r.white[c] * s.floor[j] + (own[c].empty() ? 0.0 : r.own_var[c] * own[c][j]);
+            const std::complex<double> xc = s.x[c][j];
+            nll += std::log(d) + std::norm(xc) / d;
+            if (!g.empty()) {
+                q += r.loading[c] * r.loading[c] / d;
+                u += r.loading[c] * xc / d;
+            }
+        }
+        if (!g.empty()) nll += std::log1p(g[j] * q) - g[j] * std::norm(u) / (1.0 + g[j] * q);
+    }
+    return std::isfinite(nll) ? nll : 1e300;
+}
+
+std::vector<std::size_t> all_of(const Spectra& s) {
+    std::vector<std::size_t> out(s.channels.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = i;
+    return out;
+}
+
+void transform(Spectra& s, const std::array<const std::vector<double>*, kChannelCount>& residuals,
+               const GapModel& model) {
+    s.dt = model.smoothing.sample_period_s;
+    s.floor_acov = white_floor_autocovariance(model.smoothing);
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (residuals[c]) s.channels.push_back(c);
+    if (s.channels.size() < 2) throw std::invalid_argument("fit_common: needs two channels or more");
+    const std::size_t samples = residuals[s.channels[0]]->size();
+    s.span_s = s.dt * static_cast<double>(samples);
+    s.geometry = part_periodogram(*residuals[s.channels[0]], std::vector<bool>(samples, true));
+    const std::size_t n = s.geometry.length;
+    for (std::size_t c : s.channels) {
+        const std::vector<double>& r = *residuals[c];
+        if (r.size() != samples) throw std::invalid_argument("fit_common: channels of different lengths");
+        std::vector<double> d(n);
+        for (std::size_t t = 0; t < n; ++t) d[t] = s.geometry.taper[t] * (r[t + 1] - r[t]);
+        const std::vector<std::complex<double>> f = half_spectrum(d);
+        std::vector<std::complex<double>> x(s.geometry.power.size());
+        for (std::size_t j = 0; j < x.size(); ++j) x[j] = f[j + 1] / std::sqrt(s.geometry.taper_energy);
+        s.x.push_back(std::move(x));
+    }
+    s.expected = std::make_unique<ExpectedPeriodogram>(s.floor_acov, s.geometry);
+    OutputSpectrum unit_floor;
+    unit_floor.white = 1.0;
+    s.floor = (*s.expected)(unit_floor);
+}
+
+// Correlation times a fit starts from: spread over the log's span.
+std::array<double, 3> tau_starts(const Spectra& s) { return {s.span_s / 100.0, s.span_s / 20.0, s.span_s / 5.0}; }
+
+// One channel alone: its floor, and its floor with an own process; the lower criterion stays.
+void fit_separate_channel(const Spectra& s, std::size_t i, double price, CommonFit& fit, double& criterion) {
+    const std::size_t k = s.channels.size();
+    double w = 0.0;
+    for (std::size_t j = 0; j < bins(s); ++j) w += std::norm(s.x[i][j]) / s.floor[j];
+    w /= static_cast<double>(bins(s));
+    Reading r{std::vector<double>(k, w), std::vector<double>(k, 0.0), std::vector<double>(k, 1.0), {}, 0.0};
+    const double nll_floor = reading_nll(s, r, {i});
+    double best = 2.0 * nll_floor + price, best_nll = nll_floor;
+    const std::size_t c = s.channels[i];
+    fit.white[c] = w;
+    for (double tau0 : tau_starts(s)) {
+        const auto f = [&](const std::vector<double>& p) {
+            Reading t = r;
+            t.white[i] = std::exp(p[0]);
+            t.own_var[i] = std::exp(p[1]);
+            t.own_tau[i] = std::exp(p[2]);
+            return reading_nll(s, t, {i});
+        };
+        const auto nm = stats::nelder_mead(f, {std::log(w * 0.8), std::log(w * 0.5), std::log(tau0)}, {0.3, 1.0, 0.7},
+                                           kOwnEvaluations);
+        if (2.0 * nm.value + 3.0 * price < best) {
+            best = 2.0 * nm.value + 3.0 * price;
+            best_nll = nm.value;
+            fit.white[c] = std::exp(nm.x[0]);
+            fit.own_sd[c] = std::sqrt(std::exp(nm.x[1]));
+            fit.own_tau[c] = std::exp(nm.x[2]);
+        }
+    }
+    fit.nll += best_nll;
+    fit.parameters += fit.own_sd[c] > 0.0 ? 3 : 1;
+    criterion += best;
+}
+
+CommonFit fit_separate(const Spectra& s, double price) {
+    CommonFit fit;
+    fit.reading = kCommonReadings[0];
+    double criterion = 0.0;
+    for (std::size_t i = 0; i < s.channels.size(); ++i) fit_separate_channel(s, i, price, fit, criterion);
+    fit.criterion = criterion;
+    return fit;
+}
+
+// A shared reading's parameters: ln w per channel, then the loadings (free: one per channel; ratiometric: one
+// coefficient times the DC levels), then ln tau.
+Reading shared_reading(const Spectra& s, const std::vector<double>& p, const std::vector<double>& dc) {
+    const std::size_t k = s.channels.size();
+    Reading r;
+    r.own_var.assign(k, 0.0);
+    r.own_tau.assign(k, 1.0);
+    for (std::size_t c = 0; c < k; ++c) r.white.push_back(std::exp(p[c]));
+    const bool ratio = p.size() == k + 2;
+    for (std::size_t c = 0; c < k; ++c) r.loading.push_back(ratio ? p[k] * dc[c] : p[k + c]);
+    r.tau = std::exp(p.back());
+    return r;
+}
+
+CommonFit to_fit(const Spectra& s, const std::string& reading, const Reading& r, double nll, int parameters,
+                 double price) {
+    CommonFit fit;
+    fit.reading = reading;
+    for (std::size_t i = 0; i < s.channels.size(); ++i) {
+        fit.white[s.channels[i]] = r.white[i];
+        fit.loading[s.channels[i]] = r.loading[i];
+    }
+    fit.tau_s = r.tau;
+    fit.nll = nll;
+    fit.parameters = parameters;
+    fit.criterion = 2.0 * nll + price * parameters;
+    // A channel is loaded when leaving its loading out (its floor refitted) costs more than one parameter's price.
+    for (std::size_t i = 0; i < s.channels.size(); ++i) {
+        Reading without = r;
+        without.loading[i] = 0.0;
+        const auto f = [&](const std::vector<double>& p) {
+            Reading t = without;
+            t.white[i] = std::exp(p[0]);
+            return reading_nll(s, t, all_of(s));
+        };
+        const double refit = stats::nelder_mead(f, {std::log(r.white[i])}, {0.3}, 60).value;
+        fit.loaded[s.channels[i]] = 2.0 * (refit - nll) > price;
+    }
+    return fit;
+}
+
+// Nelder-Mead from each start; the best optimum.
+stats::NelderMeadResult best_of(const std::function<double(const std::vector<double>&)>& f,
+                                const std::vector<std::vector<double>>& starts, const std::vector<double>& step) {
+    stats::NelderMeadResult best;
+    best.value = 1e300;
+    for (const auto& x0 : starts) {
+        // A second pass from the first's optimum: Nelder-Mead's simplex collapses in 2k + 1 dimensions.
+        auto nm = stats::nelder_mead(f, x0, step, kStartEvaluations);
+        nm = stats::nelder_mead(f, nm.x, step, kStartEvaluations);
+        if (nm.value < best.value) best = nm;
+    }
+    return best;
+}
+
+// Where a free loading starts: each channel's own process (a tenth of its floor without one), signed by its
+// low-frequency cross-power with the most variable channel.
+std::vector<double> loading_starts(const Spectra& s, const CommonFit& sep) {
+    const std::size_t k = s.channels.size();
+    std::size_t ref = 0;
+    for (std::size_t i = 0; i < k; ++i)
+        if (sep.own_sd[s.channels[i]] > sep.own_sd[s.channels[ref]]) ref = i;
+    std::vector<double> out;
+    for (std::size_t i = 0; i < k; ++i) {
+        const std::size_t c = s.channels[i];
+        std::complex<double> cross = 0.0;
+        for (std::size_t j = 0; j < std::max<std::size_t>(4, bins(s) / 20); ++j)
+            cross += s.x[i][j] * std::conj(s.x[ref][j]) / s.floor[j];
+        const double size = std::max(sep.own_sd[c], 0.1 * std::sqrt(sep.white[c]));
+        out.push_back(cross.real() < 0.0 ? -size : size);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<double> common_residual(const std::vector<double>& t_s, const std::vector<double>& y,
+                                    const std::vector<double>& shapes) {
+    std::vector<double> v(y);
+    for (std::size_t k = 0; k < v.size() && k < shapes.size(); ++k) v[k] -= shapes[k];
+    return fit::fit_drift(t_s, v).residual;
+}
+
+CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelCount>& residuals,
+                          const std::array<double, kChannelCount>& dc_counts, const GapModel& model) {
+    Spectra s;
+    transform(s, residuals, model);
+    const std::size_t k = s.channels.size();
+    CommonFindings out;
+    out.compared = true;
+    out.observations = static_cast<double>(bins(s) * k);
+    const double price = std::log(out.observations);
+    out.fits.push_back(fit_separate(s, price));
+    const CommonFit& sep = out.fits[0];
+
+    std::vector<double> dc;
+    for (std::size_t c : s.channels) dc.push_back(dc_counts[c]);
+    const std::vector<double> start_loading = loading_starts(s, sep);
+    double ratio0 = 0.0, dc2 = 0.0;
+    for (std::size_t i = 0; i < k; ++i) {
+        ratio0 += start_loading[i] * dc[i];
+        dc2 += dc[i] * dc[i];
+    }
+    ratio0 /= dc2;
+
+    const auto nll_of = [&](const std::vector<double>& p) {
+        return reading_nll(s, shared_reading(s, p, dc), all_of(s));
+    };
+    std::vector<double> step(k, 0.3);
+    // The ratiometric reading: one coefficient.
+    std::vector<std::vector<double>> starts;
+    for (double tau0 : tau_starts(s)) {
+        std::vector<double> p;
+        for (std::size_t i = 0; i < k; ++i) p.push_back(std::log(sep.white[s.channels[i]]));
+        p.push_back(ratio0);
+        p.push_back(std::log(tau0));
+        starts.push_back(p);
+    }
+    std::vector<double> ratio_step = step;
+    ratio_step.push_back(std::max(std::abs(ratio0), 1e-6) * 0.5);
+    ratio_step.push_back(0.7);
+    const auto ratio = best_of(nll_of, starts, ratio_step);
+    out.fits.push_back(
+        to_fit(s, kCommonReadings[1], shared_reading(s, ratio.x, dc), ratio.value, static_cast<int>(k) + 2, price));
+    out.fits.back().relative_sd = std::abs(ratio.x[k]);
+
+    // The free reading: from the ratiometric optimum and from the channels' own processes.
+    std::vector<std::vector<double>> free_starts(2);
+    for (std::size_t i = 0; i < k; ++i) {
+        free_starts[0].push_back(ratio.x[i]);
+        free_starts[1].push_back(starts[1][i]);
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+        free_starts[0].push_back(ratio.x[k] * dc[i]);
+        free_starts[1].push_back(start_loading[i]);
+    }
+    free_starts[0].push_back(ratio.x.back());
+    free_starts[1].push_back(starts[1].back());
+    std::vector<double> free_step = step;
+    for (std::size_t i = 0; i < k; ++i)
+        free_step.push_back(std::max(std::abs(start_loading[i]), 0.1 * std::sqrt(sep.white[s.channels[i]])) * 0.5);
+    free_step.push_back(0.7);
+    const auto free = best_of(nll_of, free_starts, free_step);
+    out.fits.push_back(
+        to_fit(s, kCommonReadings[2], shared_reading(s, free.x, dc), free.value, 2 * static_cast<int>(k) + 1, price));
+
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < out.fits.size(); ++i)
+        if (out.fits[i].criterion < out.fits[best].criterion) best = i;
+    const auto& loaded = out.fits[best].loaded;
+    if (best > 0 && std::count(loaded.begin(), loaded.end(), true) >= 2) out.chosen = best;
+    return out;
+}
+
+std::vector<SharedBand> shared_bands(const std::vector<LocatedCell>& located, const std::vector<Cell>& layout) {
+    std::vector<SharedBand> out;
+    for (const auto& l : located) {
+        const Cell& c = layout[l.index];
+        if (c.statistic == "coh" || c.statistic == "corr")
+            out.push_back({c.channel, c.shown(), segment_name(c.segment), l.z});
+    }
+    return out;
+}
+
+sim::EffectSpec common_effect(const CommonFit& fit, const GapModel& model) {
+    sim::EffectSpec spec;
+    spec.name = "supply_coupling";
+    toml::table& t = spec.table;
+    const double volts_per_count = model.unit.adc.vref_v / std::ldexp(1.0, model.unit.adc.bits);
+    const double v_nom = sim::SupplyCouplingParams{}.nominal_supply_v;
+    toml::array ratiometric, pickup;
+    if (fit.reading == kCommonReadings[1]) {
+        // Sensors on their own reference, the converter on the supply: each channel moves by -v dV / V_nom.
+        for (std::size_t c = 0; c < kChannelCount; ++c) ratiometric.push_back(0.0);
+        t.insert_or_assign("sensor_ratiometric", ratiometric);
+        t.insert_or_assign("adc_ratiometric", 1.0);
+        t.insert_or_assign("wander_v", fit.relative_sd * v_nom);
+    } else {
+        // Matched references (no ratiometric path): each channel picks the wander up with its own coefficient.
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            pickup.push_back(fit.loading[c] * volts_per_count / kWanderProbeV);
+        t.insert_or_assign("pickup_v_per_v", pickup);
+        t.insert_or_assign("wander_v", kWanderProbeV);
+    }
+    t.insert_or_assign("wander_tau_s", fit.tau_s);
+    return spec;
+}
+
+}  // namespace driftlab::host::gap
