@@ -20,6 +20,9 @@ namespace {
 constexpr int kStartEvaluations = 600;  // Nelder-Mead budget per start of a shared reading (deterministic objective)
 constexpr int kOwnEvaluations = 300;    // per start of one channel's own process
 constexpr double kWanderProbeV = 0.05;  // the supply wander a shared_process effect is written with [V]
+// How much lower a shared reading's criterion must be than each channel read alone: "positive" evidence (Kass and
+// Raftery, JASA 90(430), 1995, on differences of the Schwarz criterion).
+constexpr double kSharedMargin = 2.0;
 
 // The channels' differenced residuals in the frequency domain, with what every reading's spectrum is built from. The
 // expected periodograms are the finite series' own (its taper and length, whittle.hpp), not the spectral density: a
@@ -115,7 +118,7 @@ void transform(Spectra& s, const std::array<const std::vector<double>*, kChannel
 std::array<double, 3> tau_starts(const Spectra& s) { return {s.span_s / 100.0, s.span_s / 20.0, s.span_s / 5.0}; }
 
 // One channel alone: its floor, and its floor with an own process; the lower criterion stays.
-void fit_separate_channel(const Spectra& s, std::size_t i, double price, CommonFit& fit, double& criterion) {
+void fit_separate_channel(const Spectra& s, std::size_t i, double price, CommonFit& fit) {
     const std::size_t k = s.channels.size();
     double w = 0.0;
     for (std::size_t j = 0; j < bins(s); ++j) w += std::norm(s.x[i][j]) / s.floor[j];
@@ -145,17 +148,18 @@ void fit_separate_channel(const Spectra& s, std::size_t i, double price, CommonF
     }
     fit.nll += best_nll;
     fit.parameters += fit.own_sd[c] > 0.0 ? 3 : 1;
-    criterion += best;
+    fit.channel_criterion[c] = best;
+    fit.criterion += best;
 }
 
 CommonFit fit_separate(const Spectra& s, double price) {
     CommonFit fit;
     fit.reading = kCommonReadings[0];
-    double criterion = 0.0;
-    for (std::size_t i = 0; i < s.channels.size(); ++i) fit_separate_channel(s, i, price, fit, criterion);
-    fit.criterion = criterion;
+    for (std::size_t i = 0; i < s.channels.size(); ++i) fit_separate_channel(s, i, price, fit);
     return fit;
 }
+
+double price_of(const Spectra& s) { return std::log(static_cast<double>(bins(s) * s.channels.size())); }
 
 // A shared reading's parameters: ln w per channel, then the loadings (free: one per channel; ratiometric: one
 // coefficient times the DC levels), then ln tau.
@@ -231,6 +235,22 @@ std::vector<double> loading_starts(const Spectra& s, const CommonFit& sep) {
     return out;
 }
 
+// The shared reading of lowest criterion that beats `separate` by kSharedMargin and is shared: the ratiometric one by
+// construction (its one coefficient loads every channel, so beating each channel read alone, at as many parameters
+// as one channel's own process, is the evidence that the others see it), a free one where two channels or more
+// are loaded on their own.
+std::optional<std::size_t> choose_shared(const std::vector<CommonFit>& fits) {
+    std::optional<std::size_t> chosen;
+    for (std::size_t i = 1; i < fits.size(); ++i) {
+        const auto loaded = std::count(fits[i].loaded.begin(), fits[i].loaded.end(), true);
+        const bool shared = fits[i].reading == kCommonReadings[1] || loaded >= 2;
+        if (shared && fits[0].criterion - fits[i].criterion > kSharedMargin &&
+            (!chosen || fits[i].criterion < fits[*chosen].criterion))
+            chosen = i;
+    }
+    return chosen;
+}
+
 }  // namespace
 
 std::vector<double> common_residual(const std::vector<double>& t_s, const std::vector<double>& y,
@@ -248,7 +268,7 @@ CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelC
     CommonFindings out;
     out.compared = true;
     out.observations = static_cast<double>(bins(s) * k);
-    const double price = std::log(out.observations);
+    const double price = price_of(s);
     out.fits.push_back(fit_separate(s, price));
     const CommonFit& sep = out.fits[0];
 
@@ -303,12 +323,15 @@ CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelC
     out.fits.push_back(
         to_fit(s, kCommonReadings[2], shared_reading(s, free.x, dc), free.value, 2 * static_cast<int>(k) + 1, price));
 
-    std::size_t best = 0;
-    for (std::size_t i = 1; i < out.fits.size(); ++i)
-        if (out.fits[i].criterion < out.fits[best].criterion) best = i;
-    const auto& loaded = out.fits[best].loaded;
-    if (best > 0 && std::count(loaded.begin(), loaded.end(), true) >= 2) out.chosen = best;
+    out.chosen = choose_shared(out.fits);
     return out;
+}
+
+SeparateReading read_channels_alone(const std::array<const std::vector<double>*, kChannelCount>& residuals,
+                                    const GapModel& model) {
+    Spectra s;
+    transform(s, residuals, model);
+    return {fit_separate(s, price_of(s)), price_of(s)};
 }
 
 std::vector<SharedBand> shared_bands(const std::vector<LocatedCell>& located, const std::vector<Cell>& layout) {

@@ -9,7 +9,8 @@
 //                   coefficient, or supply pickup: a static log cannot tell them apart).
 // The spectrum of a rank-1 shared part is S = D + g a a' (D diagonal), whose inverse and determinant are closed
 // (Sherman-Morrison), so the cross terms a shared cause must explain enter the likelihood exactly. Chosen by the
-// Schwarz criterion over every frequency of every channel; a shared reading must load at least two channels.
+// Schwarz criterion over every frequency of every channel, a shared reading by a margin of 2; a free one must also
+// load two channels or more on their own (the ratiometric one loads them all through its one coefficient).
 // Whittle, Ark. Mat. 2, 1953 (the multivariate form: Brillinger, Time Series, 1981, §7). docs/gap.md §Shared causes.
 #pragma once
 
@@ -39,6 +40,7 @@ struct CommonFit {
     std::array<double, kChannelCount> own_sd{};   ///< separate: each channel's own process std [counts] (0: none)
     std::array<double, kChannelCount> own_tau{};  ///< ... and its correlation time [s]
     double nll = 0.0;                             ///< Whittle negative log-likelihood
+    std::array<double, kChannelCount> channel_criterion{};  ///< separate: each channel's own criterion
     int parameters = 0;
     double criterion = 0.0;  ///< 2 nll + parameters x ln(observations) (Schwarz)
     /// Per channel: the criterion rises by more than one parameter's price when its loading is set to 0.
@@ -75,6 +77,15 @@ std::vector<double> common_residual(const std::vector<double>& t_s, const std::v
 /// says, whose channels sit at `dc_counts` (the DC level the ratiometric loading scales). Needs >= 2 channels.
 CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelCount>& residuals,
                           const std::array<double, kChannelCount>& dc_counts, const GapModel& model);
+
+/// The `separate` reading alone, and the price of one parameter (ln of the frequencies x channels): what a known
+/// regressor (temperature_coupling.hpp) is judged against, channel by channel.
+struct SeparateReading {
+    CommonFit fit;
+    double price = 0.0;
+};
+SeparateReading read_channels_alone(const std::array<const std::vector<double>*, kChannelCount>& residuals,
+                                    const GapModel& model);
 
 /// The located coherence cells of a comparison.
 std::vector<SharedBand> shared_bands(const std::vector<LocatedCell>& located, const std::vector<Cell>& layout);

@@ -286,9 +286,10 @@ void search(GapResult& result, const LogData& log, const GapOptions& options,
     result.verdict = result.accepted.empty() ? nothing : result.accepted.front().effect;
 }
 
-// The channels read together (common_cause.hpp), where two or more are analysed and a cell of theirs is located. A
-// shared reading that wins replaces the accepted Gaussian processes of the channels it loads (their size there set
-// to 0 in the models) and joins the models as the library's supply wander.
+// The channels read together (common_cause.hpp), where two or more are analysed and a cell of theirs is located,
+// after what follows the measured temperature is taken out (temperature_coupling.hpp). A shared reading that wins
+// replaces the accepted Gaussian processes of the channels it loads (their size there set to 0 in the models) and joins
+// the models as the library's supply wander.
 void search_common(GapResult& result, const LogData& log) {
     CommonFindings& common = result.common;
     std::array<std::vector<double>, kChannelCount> residual;
@@ -304,9 +305,12 @@ void search_common(GapResult& result, const LogData& log) {
         r[c] = &residual[c];
         for (double v : log.counts[c]) dc[c] += v / static_cast<double>(log.size());
     }
+    result.temperature = couple_to_temperature(residual, result.channels, temperature_residual(log), result.base);
     common = fit_common(r, dc, result.base);
     common.shared = shared_bands(result.located, result.layout);
     const CommonFit* won = common.winner();
+    // The replicates cannot replay a measured temperature: a process the search added stays as its stand-in.
+    if (!won && result.temperature.any()) result.verdict = "temperature";
     if (!won) return;
     const std::size_t own = result.base.effects.size();
     std::erase_if(result.accepted, [&](const Explanation& e) {

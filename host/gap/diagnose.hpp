@@ -20,6 +20,7 @@
 #include "host/gap/link_loss.hpp"
 #include "host/gap/motion_terms.hpp"
 #include "host/gap/statistics.hpp"
+#include "host/gap/temperature_coupling.hpp"
 #include "host/log/log_data.hpp"
 
 namespace driftlab::host::gap {
@@ -126,6 +127,9 @@ struct GapResult {
     /// Causes shared by channels: the channels read together against each alone. A shared reading that wins is the
     /// verdict, in place of the per-channel processes it explains (CommonFindings::replaced).
     CommonFindings common;
+    /// The channels against the temperature the log measured (temp_c), taken out before they are read together; the
+    /// verdict `temperature` where it couples and no shared reading wins.
+    TemperatureCoupling temperature;
     std::vector<LogCut> left_out;  ///< stretches the user left out of the log (LogData::cuts)
     /// `gap --truth`: the known input taken out first and the motion terms judged (diagnose_in_motion()).
     std::optional<MotionFindings> motion;

@@ -42,10 +42,25 @@ std::string reading_text(const gap::GapResult& r, const gap::CommonFit& f) {
     return out;
 }
 
+// "accel_x 0.81 counts (1.6 mg) per degC (criterion -23.4), ...": the coupled channels.
+std::string coupling_text(const gap::GapResult& r) {
+    std::string out;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+        if (r.temperature.coupled[c])
+            out += (out.empty() ? "" : ", ") + std::string(kChannelNames[c]) + " " +
+                   step_size_text(r.base, static_cast<Channel>(c), r.temperature.coefficient[c], 3) +
+                   " per degC (criterion " + significant(-r.temperature.gain[c], 3) + ")";
+    return out;
+}
+
 }  // namespace
 
 std::string common_sentence(const gap::GapResult& r) {
     const gap::CommonFit* f = r.common.winner();
+    if (!f && r.temperature.any())
+        return "the channels follow the temperature the log measured (" + coupling_text(r) +
+               "); the replicates do not replay a measured temperature, so a process the search added stays in the "
+               "model as its stand-in";
     if (!f) return "";
     std::string out = "the channels share " + reading_text(r, *f) + "; read together it beats each channel read " +
                       "alone by " + significant(r.common.fits[0].criterion - f->criterion, 3) +
@@ -74,6 +89,9 @@ void print_common_text(const gap::GapResult& r) {
                                        .c_str());
     for (const auto& s : k.shared)
         std::printf("  %-16s %-24s %-7s z %8.1f\n", s.pair.c_str(), s.band.c_str(), s.part.c_str(), s.z);
+    if (r.temperature.compared)
+        std::printf("  temperature (temp_c, sd %.2f degC after eq. 1): %s\n", r.temperature.temperature_sd_c,
+                    r.temperature.any() ? ("taken out of " + coupling_text(r)).c_str() : "no channel follows it");
     for (std::size_t i = 0; i < k.fits.size(); ++i)
         std::printf("  %-16s %s criterion %.1f (%d parameters): %s\n", k.fits[i].reading.c_str(),
                     k.chosen == i ? "CHOSEN " : "       ", k.fits[i].criterion, k.fits[i].parameters,
@@ -92,6 +110,10 @@ void write_common_markdown(std::ostream& md, const gap::GapResult& r) {
             md << "| " << s.pair << " | " << s.band << " | " << s.part << " | " << significant(s.z, 3) << " |\n";
         md << "\n";
     }
+    if (r.temperature.compared)
+        md << "The logged temperature (sd " << fixed_point(r.temperature.temperature_sd_c, 2) << " °C after eq. 1): "
+           << (r.temperature.any() ? "taken out of " + coupling_text(r) : std::string("no channel follows it"))
+           << ".\n\n";
     md << "| reading | criterion | parameters | what it says |\n|---|---|---|---|\n";
     for (std::size_t i = 0; i < k.fits.size(); ++i)
         md << "| " << (k.chosen == i ? "**" + k.fits[i].reading + "**" : k.fits[i].reading) << " | "
@@ -126,7 +148,18 @@ nlohmann::json common_to_json(const gap::GapResult& r) {
                         {"relative_sd", json_number(f.relative_sd)},
                         {"channels", channels}});
     }
+    nlohmann::json temperature = nullptr;
+    if (r.temperature.compared) {
+        temperature = {{"sd_c", json_number(r.temperature.temperature_sd_c)}, {"channels", nlohmann::json::object()}};
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            if (r.channels[c])
+                temperature["channels"][kChannelNames[c]] = {
+                    {"coefficient_counts_per_c", json_number(r.temperature.coefficient[c])},
+                    {"criterion_gain", json_number(r.temperature.gain[c])},
+                    {"coupled", r.temperature.coupled[c]}};
+    }
     return {{"observations", json_number(k.observations)},
+            {"temperature", temperature},
             {"shared_cells", shared},
             {"readings", fits},
             {"chosen", k.winner() ? nlohmann::json(k.winner()->reading) : nlohmann::json(nullptr)},

@@ -64,7 +64,7 @@ std::string verdict_reason(const GapResult& r, const GapOptions& options) {
                    fixed_point(e.shape_steps.margin, 1) +
                    "): a level step no library effect makes; the added effects stay as partial explanations";
     const std::string located = counted(r.located.size(), "cell") + " located";
-    if (r.common.winner()) return common_sentence(r);
+    if (r.common.winner() || r.verdict == "temperature") return common_sentence(r);
     if (!r.accepted.empty()) {
         const Explanation& e = r.accepted.front();
         // The channel's own score, not the whole log's the gap line and table show: say so, and what the share is of.
