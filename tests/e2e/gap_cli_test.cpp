@@ -97,6 +97,40 @@ std::string simulate_unit(const TempDir& dir, const std::string& name, const std
     return log;
 }
 
+// A unit whose supply wanders (Gauss-Markov, 150 s) into every channel by about 0.2 % of its DC level: read
+// channel by channel it looks like a process on each; read together, one supply wander with loadings that follow the
+// DC levels. Written out and given back, nothing is located.
+TEST(GapCli, ASupplyWanderInEveryChannelIsNamedOnceAndItsWanderWrittenBack) {
+    TempDir dir("gapsupply");
+    const std::string log = simulate_unit(dir, "wander",
+                                          "[effects.supply_coupling]\n"
+                                          "pickup_v_per_v = [0.0986, 0.0918, 0.0926, 0.1215]\n"
+                                          "wander_v = 0.05\nwander_tau_s = 150.0\n",
+                                          3);
+    const RunResult gap =
+        run_driftlab({"gap", log, "--replicates", "16", "--model-out", dir.file("fitted.toml"), "--json"}, dir.path());
+    ASSERT_EQ(gap.exit_code, 0) << gap.output;
+    const auto j = nlohmann::json::parse(gap.output.substr(gap.output.find('{')));
+    EXPECT_EQ(j["verdict"], "supply_coupling") << j["common"].dump();
+    const auto& common = j["common"];
+    EXPECT_EQ(common["chosen"], "supply_coupling");
+    EXPECT_FALSE(common["shared_cells"].empty());
+    for (const auto& r : common["readings"]) {
+        if (r["reading"] != "supply_coupling") continue;
+        // 0.05 V x about 0.1 V/V over a channel DC level near 2.5 V: about 0.2 %, read from one 1500 s path of a
+        // 150 s process.
+        EXPECT_GT(r["relative_sd"].get<double>(), 0.0005);
+        EXPECT_LT(r["relative_sd"].get<double>(), 0.004);
+        EXPECT_GT(r["tau_s"].get<double>(), 50.0);
+        EXPECT_LT(r["tau_s"].get<double>(), 450.0);
+    }
+    const RunResult again =
+        run_driftlab({"gap", log, "--replicates", "16", "--model", dir.file("fitted.toml"), "--json"}, dir.path());
+    ASSERT_EQ(again.exit_code, 0) << again.output;
+    const auto k = nlohmann::json::parse(again.output.substr(again.output.find('{')));
+    EXPECT_EQ(k["verdict"], "none") << k["located"].dump();
+}
+
 // The terminal of a gap run that found the cycle: the verdict and its shrink, the candidates in step order, the 15
 // largest located cells and a count of the rest (returned); the stability logs each read the cycle again.
 std::size_t check_cycle_terminal(const std::string& out) {
