@@ -20,6 +20,8 @@ packages=(
   clang libclang-rt-14-dev llvm
   # AVR cross build, flashing and emulation
   gcc-avr binutils-avr avr-libc avrdude gdb-avr simavr libsimavr-dev
+  # campaigns on a cluster (docs/cluster.md), and the single-node cluster its test starts (tests/slurm)
+  slurm-wlm munge
 )
 
 missing=()

@@ -23,7 +23,8 @@ constexpr driftlab::host::cli::RegisterFn kCommands[] = {
     driftlab::host::cli::register_calibrate, driftlab::host::cli::register_whiteness,
     driftlab::host::cli::register_report,    driftlab::host::cli::register_allan,
     driftlab::host::cli::register_gap,       driftlab::host::cli::register_gap_eval,
-    driftlab::host::cli::register_nav,       driftlab::host::cli::register_nav_eval,
+    driftlab::host::cli::register_merge,     driftlab::host::cli::register_nav,
+    driftlab::host::cli::register_nav_eval,
 };
 
 // What a command printed before it failed (a note, a table) goes out before the error, as it happened: into one file

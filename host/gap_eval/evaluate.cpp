@@ -314,15 +314,20 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
     return out;
 }
 
-std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+namespace {
+
+struct CaseJob {
+    std::string generator, truth;
+    double level;
+    std::uint64_t seed;
+    bool tune;
+};
+
+// The run's logs in order, each with its run seed (tuning logs too where the run does not tune: they keep their
+// places).
+std::vector<CaseJob> case_jobs(const EvalOptions& options) {
     const auto gens = generators_of(options);
-    struct Job {
-        std::string generator, truth;
-        double level;
-        std::uint64_t seed;
-        bool tune;
-    };
-    std::vector<Job> jobs;
+    std::vector<CaseJob> jobs;
     // Raw-mode generators' logs come after the smoothed ones, and logs of other forms (outputs that are codes) after
     // both, so that the earlier ones' places (their seeds), and so their logs, are the same whether or not a later
     // form is in the run.
@@ -348,20 +353,43 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
             }
         }
     }
-    // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in
-    // the list) and hence the log itself are the same either way.
-    const auto runs = [&](const Job& j) { return options.tune || !j.tune; };
+    return jobs;
+}
+
+// The places of the logs the run diagnoses: without tuning the tuning logs are skipped.
+std::vector<std::size_t> run_places(const EvalOptions& options, const std::vector<CaseJob>& jobs) {
     std::vector<std::size_t> places;
     for (std::size_t i = 0; i < jobs.size(); ++i)
-        if (runs(jobs[i])) places.push_back(i);
+        if (options.tune || !jobs[i].tune) places.push_back(i);
+    return places;
+}
+
+}  // namespace
+
+std::size_t case_items(const EvalOptions& options) { return run_places(options, case_jobs(options)).size(); }
+
+std::size_t pair_items(const EvalOptions& options) {
+    return static_cast<std::size_t>(options.score_last - options.score_first + 1) * options.pairs.size();
+}
+
+std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
+    const std::vector<CaseJob> jobs = case_jobs(options);
+    // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in
+    // the list) and hence the log itself are the same either way.
+    const std::vector<std::size_t> places = run_places(options, jobs);
     std::vector<std::uint64_t> run_seeds(jobs.size());
     for (std::size_t i = 0; i < jobs.size(); ++i) run_seeds[i] = jobs[i].seed;
     const std::vector<std::uint64_t> log_seeds = case_seeds(run_seeds);
-    std::vector<EvalCase> out(places.size());
-    run_logs(places.size(), options, [&](std::size_t n) {
-        const std::size_t i = places[n];
-        const Job& j = jobs[i];
-        out[n] = run_case(j.generator, j.truth, j.level, log_seeds[i], j.tune, options, sizes);
+    // The shard's items: item n (the n-th log diagnosed) is shard n mod N's.
+    std::vector<std::size_t> mine;
+    for (std::size_t n = 0; n < places.size(); ++n)
+        if (n % options.shards == options.shard) mine.push_back(n);
+    std::vector<EvalCase> out(mine.size());
+    run_logs(mine.size(), options, [&](std::size_t m) {
+        const std::size_t i = places[mine[m]];
+        const CaseJob& j = jobs[i];
+        out[m] = run_case(j.generator, j.truth, j.level, log_seeds[i], j.tune, options, sizes);
+        out[m].item = mine[m];
     });
     return out;
 }
@@ -401,10 +429,17 @@ std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<De
     // and its moved seeds lie above 2^62.
     for (std::uint64_t s = options.score_first; s <= options.score_last; ++s)
         for (std::size_t k = 0; k < options.pairs.size(); ++k) jobs.push_back({k, (s << 32) + 0x9A1Bull + k});
-    std::vector<PairCase> out(jobs.size());
-    run_logs(jobs.size(), options, [&](std::size_t n) {
-        const auto& [first, second] = options.pairs[jobs[n].pair];
-        out[n] = run_pair_case(first, second, options.pair_level, jobs[n].seed, options, sizes);
+    // Items follow the cases': pair n is item case_items() + n.
+    const std::size_t first_item = case_items(options);
+    std::vector<std::size_t> mine;
+    for (std::size_t n = 0; n < jobs.size(); ++n)
+        if ((first_item + n) % options.shards == options.shard) mine.push_back(n);
+    std::vector<PairCase> out(mine.size());
+    run_logs(mine.size(), options, [&](std::size_t m) {
+        const Job& job = jobs[mine[m]];
+        const auto& [first, second] = options.pairs[job.pair];
+        out[m] = run_pair_case(first, second, options.pair_level, job.seed, options, sizes);
+        out[m].item = first_item + mine[m];
     });
     return out;
 }

@@ -40,6 +40,8 @@ struct EvalOptions {
     std::vector<std::pair<std::string, std::string>> pairs;
     double pair_level = 2.0;
     int threads = 2;  ///< logs diagnosed at once, one thread each (the verdicts do not depend on it)
+    /// This run's shard of the campaign (eval_parts.hpp): the items i with i mod shards == shard.
+    std::size_t shard = 0, shards = 1;
     std::function<void(std::size_t done, std::size_t total)>
         progress;  ///< optional; called from those threads, one at a time
 };
@@ -80,6 +82,7 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options);
 
 /// One simulated log and what the diagnosis said about it.
 struct EvalCase {
+    std::size_t item = 0;   ///< its place among the logs the run diagnoses (eval_parts.hpp)
     std::string generator;  ///< truth generator or "none"
     std::string truth;      ///< the library effect it stands for, "none", or "" (out of library)
     double level = 0.0;     ///< size in multiples of the generator's a_50
@@ -99,6 +102,7 @@ struct EvalCase {
 
 /// A log with two truth generators planted together, and what the diagnosis made of it.
 struct PairCase {
+    std::size_t item = 0;       ///< its place in the campaign: after every case (eval_parts.hpp)
     std::string first, second;  ///< truth generators (second "none": the first alone)
     double level = 0.0;         ///< each at this multiple of its own a_50
     std::uint64_t seed = 0;
@@ -131,7 +135,11 @@ Decision decide(const EvalCase& c, const Thresholds& th);
 /// "none" for a clean log; for an out-of-library log anything but a library effect.
 bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok);
 
-/// Runs every case (tuning and scoring seeds), planting each generator at level x its a_50 from `sizes`.
+/// The logs run_cases() and run_pairs() diagnose in a whole campaign (every shard).
+std::size_t case_items(const EvalOptions& options);
+std::size_t pair_items(const EvalOptions& options);
+
+/// Runs every case (tuning and scoring seeds) of the shard, planting each generator at level x its a_50 from `sizes`.
 std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
 
 /// The two-effect logs of `options.pairs` (scoring seeds; their seeds are apart from run_cases()', so adding pairs

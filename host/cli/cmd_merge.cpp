@@ -1,0 +1,42 @@
+// `driftlab merge`: a sharded campaign's parts scored as the one-process run scores them (host/gap_eval/eval_parts,
+// docs/cluster.md).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "host/cli/commands.hpp"
+#include "host/cli/gap_eval_output.hpp"
+#include "host/gap_eval/eval_parts.hpp"
+#include "host/util/output_folder.hpp"
+
+namespace driftlab::host::cli {
+namespace {
+
+struct MergeOptions {
+    std::vector<std::string> parts;
+    bool json = false;
+    std::string plot_dir;
+};
+
+void run(const MergeOptions& o) {
+    if (!o.plot_dir.empty()) make_output_folder(o.plot_dir, "plot");
+    const gap::EvalPart whole = gap::merge_parts(o.parts);
+    print_gap_eval(whole.options, whole.sizes, whole.cases, whole.pairs, o.json, o.plot_dir);
+}
+
+}  // namespace
+
+void register_merge(CLI::App& app) {
+    auto o = std::make_shared<MergeOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "merge", "Score a sharded gap-eval campaign from its parts, exactly as the one-process run prints it");
+    cmd->add_option("parts", o->parts, "Every part of the campaign (gap-eval --shard K/N -o PART), in any order")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_flag("--json", o->json, "Print JSON, as gap-eval --json does");
+    cmd->add_option("--plot", o->plot_dir, "Also draw the campaign's plots in this folder, as gap-eval --plot does")
+        ->check(non_empty_path());
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace driftlab::host::cli

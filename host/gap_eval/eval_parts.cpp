@@ -1,0 +1,220 @@
+// A gap-eval campaign in shards and their merge; see eval_parts.hpp.
+#include "host/gap_eval/eval_parts.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "host/util/error.hpp"
+
+namespace driftlab {
+NLOHMANN_JSON_SERIALIZE_ENUM(Channel, {{Channel::gyro, "gyro"},
+                                       {Channel::accel_x, "accel_x"},
+                                       {Channel::accel_y, "accel_y"},
+                                       {Channel::accel_z, "accel_z"}})
+}  // namespace driftlab
+
+namespace driftlab::host::gap {
+
+NLOHMANN_JSON_SERIALIZE_ENUM(Holdout, {{Holdout::forecast, "forecast"}, {Holdout::interleaved, "interleaved"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(CleanForm, {{CleanForm::smoothed, "smoothed"},
+                                         {CleanForm::raw_mode, "raw_mode"},
+                                         {CleanForm::codes, "codes"},
+                                         {CleanForm::lossy_link, "lossy_link"},
+                                         {CleanForm::four_channels, "four_channels"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StepEstimate, t_s, size_counts)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LevelStep, tested, channel, steps, impulse, impulse_p, statistic, margin, rival_p,
+                                   p_value, process_gain, process_margin, process_beside_steps, significant, outsized)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StepsOverShape, tested, steps, statistic, margin, steps_win)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Explanation, effect, channel, params, gap_before, gap_after, heldout_before,
+                                   heldout_after, heldout_shrink, heldout_bound, loss_gain, penalty, heldout_loss_gain,
+                                   heldout_cell_loss, gaussian, spectral_gain, spectral_extra_parameters,
+                                   spectral_observations, spectral_terms, long_memory, cells_left, residual_step,
+                                   shape_steps, accepted, step, replaces_given, whole_log_params, ambiguous_with,
+                                   settle)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EvalCase, item, generator, truth, level, size_counts, seed, tune, detected,
+                                   link_only, link_verdict, common_verdict, tried, shrink_check, has_shrink_check,
+                                   oracle_shrink, has_oracle)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PairCase, item, first, second, level, seed, detected, verdict, added, close_calls,
+                                   within_bound, heldout_before, heldout_after)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DetectionPoint, size, detected, logs)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DetectionSize, generator, a50, curve)
+
+namespace {
+
+constexpr const char* kKind = "driftlab gap-eval part";
+constexpr int kFormat = 1;
+
+// The campaign's options as a part records them: everything that shapes its logs and scores (not the threads, which
+// change nothing, nor the shard, which a part states apart). One list for writing and reading.
+// clang-format re-wraps an X-macro's list differently on every pass: the list is left as written.
+// clang-format off
+#define DRIFTLAB_CAMPAIGN_OPTIONS(X)                                                                   \
+    X(tune_first) X(tune_last) X(tune) X(score_first) X(score_last) X(generators) X(levels)            \
+    X(clean_per_seed) X(clean_form) X(detection_logs) X(samples) X(holdout) X(replicates)              \
+    X(fit_replicates) X(max_evaluations) X(pairs) X(pair_level)
+// clang-format on
+
+nlohmann::json options_json(const EvalOptions& o) {
+    nlohmann::json j;
+#define DRIFTLAB_PUT(field) j[#field] = o.field;
+    DRIFTLAB_CAMPAIGN_OPTIONS(DRIFTLAB_PUT)
+#undef DRIFTLAB_PUT
+    return j;
+}
+
+EvalOptions options_from(const nlohmann::json& j) {
+    EvalOptions o;
+#define DRIFTLAB_GET(field) j.at(#field).get_to(o.field);
+    DRIFTLAB_CAMPAIGN_OPTIONS(DRIFTLAB_GET)
+#undef DRIFTLAB_GET
+    return o;
+}
+
+#undef DRIFTLAB_CAMPAIGN_OPTIONS
+
+}  // namespace
+
+std::string build_id() {
+    std::ifstream in("/proc/self/exe", std::ios::binary);
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            h ^= static_cast<unsigned char>(buffer[i]);
+            h *= 0x100000001b3ull;
+        }
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+    return text;
+}
+
+void write_part(const EvalPart& part, const std::string& path) {
+    const nlohmann::json j = {{"kind", kKind},
+                              {"format", kFormat},
+                              {"build", part.build},
+                              {"options", options_json(part.options)},
+                              {"shard", part.options.shard},
+                              {"shards", part.options.shards},
+                              {"cases_total", part.cases_total},
+                              {"pairs_total", part.pairs_total},
+                              {"sizes", part.sizes},
+                              {"cases", part.cases},
+                              {"pairs", part.pairs}};
+    const std::vector<std::uint8_t> bytes = nlohmann::json::to_cbor(j);
+    // Beside the target, so that the rename stays on one file system; named by the process, so that two shards
+    // writing one name by mistake do not mix their bytes.
+    const std::string temporary = path + ".tmp." + std::to_string(getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        if (!out) throw DeviceError(path, "cannot write the part");
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        throw DeviceError(path, "cannot write the part");
+    }
+}
+
+EvalPart read_part(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw DataError(path, 0, "cannot read it");
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    nlohmann::json j = nlohmann::json::from_cbor(bytes, true, false);
+    if (j.is_discarded() || !j.is_object() || j.value("kind", "") != kKind)
+        throw DataError(path, 0, "not a gap-eval part (driftlab gap-eval --shard K/N -o PART writes one)");
+    if (j.value("format", 0) != kFormat)
+        throw DataError(
+            path, 0,
+            "a gap-eval part of format " + std::to_string(j.value("format", 0)) + ", not " + std::to_string(kFormat));
+    try {
+        EvalPart part;
+        part.options = options_from(j.at("options"));
+        j.at("shard").get_to(part.options.shard);
+        j.at("shards").get_to(part.options.shards);
+        j.at("build").get_to(part.build);
+        j.at("cases_total").get_to(part.cases_total);
+        j.at("pairs_total").get_to(part.pairs_total);
+        j.at("sizes").get_to(part.sizes);
+        j.at("cases").get_to(part.cases);
+        j.at("pairs").get_to(part.pairs);
+        return part;
+    } catch (const nlohmann::json::exception& e) {
+        throw DataError(path, 0, std::string("a damaged gap-eval part: ") + e.what());
+    }
+}
+
+namespace {
+
+// Why `part` (from `path`) is not of the campaign `first` is, or "".
+std::string foreign(const EvalPart& part, const EvalPart& first) {
+    if (part.build != first.build)
+        return "made by another build of driftlab (" + part.build + ", not " + first.build + ")";
+    if (options_json(part.options) != options_json(first.options))
+        return "of another campaign: its options differ (" + options_json(part.options).dump() + ")";
+    if (part.options.shards != first.options.shards)
+        return "one of " + std::to_string(part.options.shards) + " shards, not " + std::to_string(first.options.shards);
+    if (part.cases_total != first.cases_total || part.pairs_total != first.pairs_total)
+        return "of a campaign of other size";
+    return "";
+}
+
+}  // namespace
+
+EvalPart merge_parts(const std::vector<std::string>& paths) {
+    if (paths.empty()) throw DataError("merge", 0, "no part given");
+    EvalPart whole = read_part(paths.front());
+    const std::size_t n = whole.options.shards;
+    std::vector<std::string> by_shard(n);
+    std::vector<EvalCase> cases;
+    std::vector<PairCase> pairs;
+    for (const std::string& path : paths) {
+        EvalPart part = path == paths.front() ? whole : read_part(path);
+        if (const std::string why = foreign(part, whole); !why.empty()) throw DataError(path, 0, why);
+        const std::size_t k = part.options.shard;
+        if (k >= n) throw DataError(path, 0, "shard " + std::to_string(k) + " of " + std::to_string(n));
+        if (!by_shard[k].empty())
+            throw DataError(
+                path, 0, "shard " + std::to_string(k) + "/" + std::to_string(n) + " again (also " + by_shard[k] + ")");
+        by_shard[k] = path;
+        for (auto& c : part.cases) {
+            if (c.item % n != k || c.item >= whole.cases_total)
+                throw DataError(path, 0,
+                                "holds item " + std::to_string(c.item) + ", not shard " + std::to_string(k) + "'s");
+            cases.push_back(std::move(c));
+        }
+        for (auto& p : part.pairs) {
+            if (p.item % n != k || p.item < whole.cases_total || p.item >= whole.cases_total + whole.pairs_total)
+                throw DataError(path, 0,
+                                "holds item " + std::to_string(p.item) + ", not shard " + std::to_string(k) + "'s");
+            pairs.push_back(std::move(p));
+        }
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        if (by_shard[k].empty())
+            throw DataError(paths.front(), 0,
+                            "shard " + std::to_string(k) + "/" + std::to_string(n) + " of its campaign is missing");
+    std::sort(cases.begin(), cases.end(), [](const EvalCase& a, const EvalCase& b) { return a.item < b.item; });
+    std::sort(pairs.begin(), pairs.end(), [](const PairCase& a, const PairCase& b) { return a.item < b.item; });
+    if (cases.size() != whole.cases_total || pairs.size() != whole.pairs_total)
+        throw DataError(paths.front(), 0,
+                        "its campaign's parts hold " + std::to_string(cases.size() + pairs.size()) + " logs, not " +
+                            std::to_string(whole.cases_total + whole.pairs_total));
+    whole.cases = std::move(cases);
+    whole.pairs = std::move(pairs);
+    whole.options.shard = 0;
+    whole.options.shards = 1;
+    return whole;
+}
+
+}  // namespace driftlab::host::gap

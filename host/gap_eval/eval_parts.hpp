@@ -1,0 +1,42 @@
+// A gap-eval campaign in shards (`--shard K/N -o PART`) and their merge (`driftlab merge`). The campaign's items are
+// its logs in the one-process run's order: the cases (run_cases()), then the two-effect logs (run_pairs()); item i
+// belongs to shard i mod N. A log's seed comes from the campaign's seeds and its item's place, never from K or N, so
+// a log is the same in every split. Every shard measures the detection thresholds a_50 itself (the same on each:
+// the same tuning logs). A part holds its shard's diagnosed logs whole (CBOR, every double exact), the campaign's
+// options and the build that ran it; the merge checks that the parts are one campaign, complete and without repeats,
+// and gives back what the one-process run scores. docs/cluster.md.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "host/gap_eval/evaluate.hpp"
+
+namespace driftlab::host::gap {
+
+/// What one shard of a campaign did, or (shard 0 of 1) the whole campaign.
+struct EvalPart {
+    EvalOptions options;  ///< the campaign's (progress and threads aside); options.shard says which part
+    std::string build;    ///< the build that ran it (build_id())
+    std::vector<DetectionSize> sizes;
+    std::size_t cases_total = 0, pairs_total = 0;  ///< the campaign's items of each kind
+    std::vector<EvalCase> cases;                   ///< this shard's, with their items
+    std::vector<PairCase> pairs;
+};
+
+/// The running executable's identity: a 64-bit FNV-1a hash of its file, in hexadecimal.
+std::string build_id();
+
+/// Writes `part` to `path` atomically (a temporary file beside it, then a rename): a reader never sees half a part,
+/// and a shard run twice writes the same bytes. Throws DeviceError naming the path.
+void write_part(const EvalPart& part, const std::string& path);
+
+/// Reads a part. Throws DataError naming the file when it is not a gap-eval part of this format.
+EvalPart read_part(const std::string& path);
+
+/// The whole campaign from its parts (in any order): refuses, naming the file, a part of another campaign (options),
+/// another build, a repeated or missing shard, or a part whose items disagree with its shard. Throws DataError.
+EvalPart merge_parts(const std::vector<std::string>& paths);
+
+}  // namespace driftlab::host::gap

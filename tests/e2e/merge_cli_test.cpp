@@ -1,0 +1,89 @@
+// A gap-eval campaign in shards, as a Slurm array runs it: `gap-eval --quick` in 1, 3 and 7 shards, merged, prints
+// byte for byte what the one-process run prints (--json); a shard run twice writes the same bytes; a missing,
+// repeated or foreign part, or a file that is no part, is refused with its name.
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "e2e_support.hpp"
+
+namespace driftlab::e2e {
+namespace {
+
+std::string file_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The parts of `gap-eval --quick` in `n` shards, in `dir`.
+std::vector<std::string> shards(const TempDir& dir, int n, const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> parts;
+    for (int k = 0; k < n; ++k) {
+        parts.push_back(dir.file("q" + std::to_string(n) + "_" + std::to_string(k) + ".part"));
+        std::vector<std::string> args = {
+            "gap-eval", "--quick", "--shard", std::to_string(k) + "/" + std::to_string(n), "-o", parts.back()};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const RunResult r = run_driftlab(args, dir.path());
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+    }
+    return parts;
+}
+
+SplitRun merged(const TempDir& dir, const std::vector<std::string>& parts) {
+    std::vector<std::string> args = {"merge", "--json"};
+    args.insert(args.end(), parts.begin(), parts.end());
+    return run_driftlab_split(args, dir.path());
+}
+
+TEST(MergeCli, AQuickCampaignInOneThreeOrSevenShardsMergesToTheOneProcessRun) {
+    TempDir dir("merge");
+    const SplitRun one = run_driftlab_split({"gap-eval", "--quick", "--json"}, dir.path());
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    for (int n : {1, 3, 7}) {
+        const std::vector<std::string> parts = shards(dir, n);
+        const SplitRun m = merged(dir, parts);
+        ASSERT_EQ(m.exit_code, 0) << m.err;
+        EXPECT_EQ(m.out, one.out) << n << " shards";
+    }
+    // A shard run again writes the same bytes.
+    const std::string first = file_bytes(dir.file("q3_1.part"));
+    const RunResult again =
+        run_driftlab({"gap-eval", "--quick", "--shard", "1/3", "-o", dir.file("q3_1.part")}, dir.path());
+    ASSERT_EQ(again.exit_code, 0) << again.output;
+    EXPECT_EQ(file_bytes(dir.file("q3_1.part")), first);
+    // Missing, repeated, foreign, not a part: refused, naming the file.
+    const auto refused = [&](const std::vector<std::string>& parts, const std::string& said) {
+        const SplitRun m = merged(dir, parts);
+        EXPECT_EQ(m.exit_code, 3) << m.err;
+        EXPECT_NE(m.err.find(said), std::string::npos) << m.err;
+        EXPECT_TRUE(m.out.empty());
+    };
+    refused({dir.file("q3_0.part"), dir.file("q3_1.part")}, "shard 2/3 of its campaign is missing");
+    refused({dir.file("q3_0.part"), dir.file("q3_1.part"), dir.file("q3_1.part"), dir.file("q3_2.part")},
+            dir.file("q3_1.part") + ": shard 1/3 again");
+    refused({dir.file("q3_0.part"), dir.file("q7_1.part"), dir.file("q3_2.part")},
+            dir.file("q7_1.part") + ": one of 7 shards, not 3");
+    const std::vector<std::string> other = shards(dir, 1, {"--effects", "thermal_rc", "--seeds-score", "201..202"});
+    refused({dir.file("q3_0.part"), dir.file("q3_1.part"), other.front()}, other.front() + ": of another campaign");
+    std::ofstream(dir.file("notes.part")) << "not a part\n";
+    refused({dir.file("notes.part")}, dir.file("notes.part") + ": not a gap-eval part");
+}
+
+TEST(MergeCli, AShardNeedsItsPartFileAndABadShardIsRefused) {
+    TempDir dir("shardargs");
+    for (const std::string bad : {"3/3", "1/0", "a/2", "2", "-1/4"}) {
+        const RunResult r = run_driftlab({"gap-eval", "--quick", "--shard", bad, "-o", dir.file("p")}, dir.path());
+        EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
+        EXPECT_NE(r.output.find("--shard"), std::string::npos) << r.output;
+    }
+    const RunResult alone = run_driftlab({"gap-eval", "--quick", "--shard", "0/2"}, dir.path());
+    EXPECT_EQ(alone.exit_code, 2) << alone.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("p")));
+}
+
+}  // namespace
+}  // namespace driftlab::e2e
