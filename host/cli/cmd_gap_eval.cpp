@@ -11,11 +11,13 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/gap_eval_output.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/gap_eval/eval_parts.hpp"
 #include "host/gap_eval/truth.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/part_file.hpp"
 #include "host/util/time_left.hpp"
 
 namespace driftlab::host::cli {
@@ -44,21 +46,6 @@ struct GapEvalCommandOptions {
     std::pair<std::size_t, std::size_t> shard{0, 1};  // K, N
     std::string part;                                 // -o: this shard's part file
 };
-
-// "K/N" with 0 <= K < N <= 100000, as an array job's index and size count.
-std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
-    const auto refused = [&] { return UsageError("--shard: expected K/N with 0 <= K < N <= 100000, got '" + s + "'"); };
-    const auto slash = s.find('/');
-    const auto number = [&](const std::string& text) {
-        if (text.empty() || text.size() > 6 || text.find_first_not_of("0123456789") != std::string::npos)
-            throw refused();
-        return static_cast<std::size_t>(std::stoull(text));
-    };
-    if (slash == std::string::npos) throw refused();
-    const std::size_t k = number(s.substr(0, slash)), n = number(s.substr(slash + 1));
-    if (n == 0 || n > 100000 || k >= n) throw refused();
-    return {k, n};
-}
 
 std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, const std::string& s) {
     const auto refused = [&] {
@@ -179,7 +166,7 @@ void run(const GapEvalCommandOptions& o) {
         return;
     }
     gap::EvalPart part{
-        options,          gap::build_id(),      sizes, gap::case_items(options), gap::pair_items(options),
+        options,          build_id(),           sizes, gap::case_items(options), gap::pair_items(options),
         std::move(cases), std::move(pair_cases)};
     gap::write_part(part, o.part);
     std::fprintf(stderr, "gap-eval: shard %zu/%zu: %zu of %zu logs in %s (driftlab merge PART... scores them)\n",
@@ -267,18 +254,7 @@ void register_gap_eval(CLI::App& app) {
            "against size, with 95 % intervals")
         ->check(non_empty_path())
         ->excludes("--clean-only");
-    CLI::Option* shard =
-        cmd->add_option_function<std::string>(
-               "--shard", [o](const std::string& s) { o->shard = parse_shard(s); },
-               "Run shard K of N (K = 0..N-1, as SLURM_ARRAY_TASK_ID counts): the campaign's logs i with i mod N = K, "
-               "each as the one-process run makes it; with -o, its part for `driftlab merge` (docs/cluster.md)")
-            ->type_name("K/N");
-    CLI::Option* part = cmd->add_option("-o,--output", o->part,
-                                        "The shard's part file (written whole: a temporary file, then a rename)")
-                            ->check(non_empty_path());
-    shard->needs(part);
-    part->needs(shard);
-    part->excludes("--json")->excludes("--plot");
+    add_shard_options(cmd, o->shard, o->part, "logs")->excludes("--json")->excludes("--plot");
     cmd->callback([o] { run(*o); });
 }
 

@@ -1,13 +1,16 @@
-// `driftlab merge`: a sharded campaign's parts scored as the one-process run scores them (host/gap_eval/eval_parts,
-// docs/cluster.md).
+// `driftlab merge`: a sharded campaign's parts (gap-eval: host/gap_eval/eval_parts; nav-eval: host/nav/nav_parts)
+// scored as the one-process run scores them (docs/cluster.md).
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "host/cli/commands.hpp"
 #include "host/cli/gap_eval_output.hpp"
+#include "host/cli/nav_eval_output.hpp"
 #include "host/gap_eval/eval_parts.hpp"
+#include "host/nav/nav_parts.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/part_file.hpp"
 
 namespace driftlab::host::cli {
 namespace {
@@ -20,6 +23,12 @@ struct MergeOptions {
 
 void run(const MergeOptions& o) {
     if (!o.plot_dir.empty()) make_output_folder(o.plot_dir, "plot");
+    // The first part says which campaign it is; the merge of that kind checks every other.
+    if (part_kind(o.parts.front()) == nav::kNavPartKind) {
+        const nav::NavPart whole = nav::merge_nav_parts(o.parts);
+        print_nav_eval(whole.campaign, whole.runs, o.json, o.plot_dir);
+        return;
+    }
     const gap::EvalPart whole = gap::merge_parts(o.parts);
     print_gap_eval(whole.options, whole.sizes, whole.cases, whole.pairs, o.json, o.plot_dir);
 }
@@ -29,12 +38,15 @@ void run(const MergeOptions& o) {
 void register_merge(CLI::App& app) {
     auto o = std::make_shared<MergeOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "merge", "Score a sharded gap-eval campaign from its parts, exactly as the one-process run prints it");
-    cmd->add_option("parts", o->parts, "Every part of the campaign (gap-eval --shard K/N -o PART), in any order")
+        "merge",
+        "Score a sharded gap-eval or nav-eval campaign from its parts, exactly as the one-process run prints it");
+    cmd->add_option("parts", o->parts,
+                    "Every part of the campaign (gap-eval or nav-eval --shard K/N -o PART), in any order")
         ->required()
         ->check(CLI::ExistingFile);
-    cmd->add_flag("--json", o->json, "Print JSON, as gap-eval --json does");
-    cmd->add_option("--plot", o->plot_dir, "Also draw the campaign's plots in this folder, as gap-eval --plot does")
+    cmd->add_flag("--json", o->json, "Print JSON, as the campaign's command does with --json");
+    cmd->add_option("--plot", o->plot_dir,
+                    "Also draw the campaign's plots in this folder, as its command's --plot does")
         ->check(non_empty_path());
     cmd->callback([o] { run(*o); });
 }

@@ -14,14 +14,19 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/hil_run.hpp"
+#include "host/cli/nav_eval_output.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/log/log_reader.hpp"
 #include "host/log/truth_file.hpp"
 #include "host/nav/effect_noise.hpp"
 #include "host/nav/nav_eval.hpp"
+#include "host/nav/nav_parts.hpp"
 #include "host/nav/navigate.hpp"
 #include "host/nav/unit_drift.hpp"
 #include "host/util/error.hpp"
+#include "host/util/input_file.hpp"
 #include "host/util/output_folder.hpp"
+#include "host/util/part_file.hpp"
 #include "host/util/progress_bar.hpp"
 #include "host/view/json_out.hpp"
 #include "host/view/nav_eval_view.hpp"
@@ -47,7 +52,27 @@ struct NavEvalOptions {
     std::string work_dir;
     bool json = false;
     std::string plot_dir;
+    std::pair<std::size_t, std::size_t> shard{0, 1};  // K, N
+    std::string part;                                 // -o: this shard's part file
 };
+
+// Every option that shapes the runs, as a part states the campaign (the model file by its text: a part made from
+// another file of the same name is of another campaign).
+nlohmann::json campaign_json(const NavEvalOptions& o) {
+    std::string model;
+    if (!o.model_file.empty()) model = read_small_file(o.model_file, kMaxJsonFileBytes);
+    return {{"runs", o.runs},
+            {"seed", o.seed},
+            {"trajectories", o.trajectories},
+            {"duration_s", o.duration_s},
+            {"period_s", o.period_s},
+            {"rest_before_s", o.rest_before_s},
+            {"fit_duration_s", o.fit_duration_s},
+            {"model", model},
+            {"target", o.target},
+            {"aids", o.aids},
+            {"effects_noise", o.effects_noise}};
+}
 
 // The canonical log `path` of the unit, simulated as `hil` would: at rest, or along `trajectory`.
 void simulate(const NavEvalOptions& o, const std::string& trajectory, double duration_s, std::uint64_t seed,
@@ -114,10 +139,14 @@ void run(NavEvalOptions& o) {
     make_output_folder(dir, "work");
     const auto progress = isatty(2) ? progress_bar() : std::function<void(double)>{};
     std::vector<nav::EvalRun> runs;
-    const std::size_t total = o.trajectories.size() * static_cast<std::size_t>(o.runs);
+    const std::size_t seeds = static_cast<std::size_t>(o.runs);
+    const std::size_t mine = seeds / o.shard.second + (o.shard.first < seeds % o.shard.second ? 1 : 0);
+    const std::size_t total = o.trajectories.size() * mine;
     try {
         const Campaign c = campaign(o);
         for (int k = 0; k < o.runs; ++k) {
+            // The shard's seeds: item k is shard k mod N's (nav_parts.hpp).
+            if (static_cast<std::size_t>(k) % o.shard.second != o.shard.first) continue;
             const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(k);
             const nav::UnitDrift drift = unit_drift_of_seed(o, seed, dir);
             for (const std::string& t : o.trajectories) {
@@ -130,15 +159,13 @@ void run(NavEvalOptions& o) {
         throw;
     }
     if (!keep) std::filesystem::remove_all(dir);
-    const std::string noise =
-        o.effects_noise ? "the rest log's Allan terms and the model's bias effects" : "the rest log's Allan terms";
-    const view::NavEvalReport report{o.trajectories,      o.target, o.aids, o.duration_s, noise, &runs,
-                                     nav::summarise(runs)};
-    if (o.json)
-        view::write_json(std::cout, view::nav_eval_json(report));
-    else
-        view::print_nav_eval_text(std::cout, report);
-    if (!o.plot_dir.empty()) view::write_nav_eval_plots(o.plot_dir, report);
+    if (o.part.empty()) {
+        print_nav_eval(campaign_json(o), runs, o.json, o.plot_dir);
+        return;
+    }
+    nav::write_nav_part({campaign_json(o), build_id(), o.shard.first, o.shard.second, seeds, std::move(runs)}, o.part);
+    std::fprintf(stderr, "nav-eval: shard %zu/%zu: %zu of %zu runs in %s (driftlab merge PART... summarises them)\n",
+                 o.shard.first, o.shard.second, total, seeds * o.trajectories.size(), o.part.c_str());
 }
 
 }  // namespace
@@ -180,6 +207,9 @@ void register_nav_eval(CLI::App& app) {
                   "Print JSON (keys: at_s, variants.<name>.{heading_error_deg,heading_error_deg_p95,position_error_m,"
                   "position_error_m_p95,nees_inside_fraction,...}, per_run)");
     cmd->add_option("--plot", o->plot_dir, "Write the errors against time into this folder")->check(non_empty_path());
+    add_shard_options(cmd, o->shard, o->part, "seeds (each with every trajectory)")
+        ->excludes("--json")
+        ->excludes("--plot");
     cmd->callback([o] { run(*o); });
 }
 

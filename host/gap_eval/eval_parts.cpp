@@ -1,18 +1,12 @@
 // A gap-eval campaign in shards and their merge; see eval_parts.hpp.
 #include "host/gap_eval/eval_parts.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "host/util/error.hpp"
+#include "host/util/part_file.hpp"
 
 namespace driftlab {
 NLOHMANN_JSON_SERIALIZE_ENUM(Channel, {{Channel::gyro, "gyro"},
@@ -49,7 +43,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DetectionSize, generator, a50, curve)
 
 namespace {
 
-constexpr const char* kKind = "driftlab gap-eval part";
+constexpr const char* kKind = "gap-eval part";
 constexpr int kFormat = 1;
 
 // The campaign's options as a part records them: everything that shapes its logs and scores (not the threads, which
@@ -82,57 +76,23 @@ EvalOptions options_from(const nlohmann::json& j) {
 
 }  // namespace
 
-std::string build_id() {
-    std::ifstream in("/proc/self/exe", std::ios::binary);
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    char buffer[1 << 16];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-        for (std::streamsize i = 0; i < in.gcount(); ++i) {
-            h ^= static_cast<unsigned char>(buffer[i]);
-            h *= 0x100000001b3ull;
-        }
-    }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return text;
-}
-
 void write_part(const EvalPart& part, const std::string& path) {
-    const nlohmann::json j = {{"kind", kKind},
-                              {"format", kFormat},
-                              {"build", part.build},
-                              {"options", options_json(part.options)},
-                              {"shard", part.options.shard},
-                              {"shards", part.options.shards},
-                              {"cases_total", part.cases_total},
-                              {"pairs_total", part.pairs_total},
-                              {"sizes", part.sizes},
-                              {"cases", part.cases},
-                              {"pairs", part.pairs}};
-    const std::vector<std::uint8_t> bytes = nlohmann::json::to_cbor(j);
-    // Beside the target, so that the rename stays on one file system; named by the process, so that two shards
-    // writing one name by mistake do not mix their bytes.
-    const std::string temporary = path + ".tmp." + std::to_string(getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-        if (!out) throw DeviceError(path, "cannot write the part");
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ec);
-        throw DeviceError(path, "cannot write the part");
-    }
+    write_part_file({{"kind", kKind},
+                     {"format", kFormat},
+                     {"build", part.build},
+                     {"options", options_json(part.options)},
+                     {"shard", part.options.shard},
+                     {"shards", part.options.shards},
+                     {"cases_total", part.cases_total},
+                     {"pairs_total", part.pairs_total},
+                     {"sizes", part.sizes},
+                     {"cases", part.cases},
+                     {"pairs", part.pairs}},
+                    path);
 }
 
 EvalPart read_part(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw DataError(path, 0, "cannot read it");
-    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    nlohmann::json j = nlohmann::json::from_cbor(bytes, true, false);
-    if (j.is_discarded() || !j.is_object() || j.value("kind", "") != kKind)
-        throw DataError(path, 0, "not a gap-eval part (driftlab gap-eval --shard K/N -o PART writes one)");
+    const nlohmann::json j = read_part_file(path, kKind, "driftlab gap-eval --shard K/N -o PART");
     if (j.value("format", 0) != kFormat)
         throw DataError(
             path, 0,

@@ -18,18 +18,14 @@ namespace driftlab::host::gap {
 /// What one shard of a campaign did, or (shard 0 of 1) the whole campaign.
 struct EvalPart {
     EvalOptions options;  ///< the campaign's (progress and threads aside); options.shard says which part
-    std::string build;    ///< the build that ran it (build_id())
+    std::string build;    ///< the build that ran it (host::build_id())
     std::vector<DetectionSize> sizes;
     std::size_t cases_total = 0, pairs_total = 0;  ///< the campaign's items of each kind
     std::vector<EvalCase> cases;                   ///< this shard's, with their items
     std::vector<PairCase> pairs;
 };
 
-/// The running executable's identity: a 64-bit FNV-1a hash of its file, in hexadecimal.
-std::string build_id();
-
-/// Writes `part` to `path` atomically (a temporary file beside it, then a rename): a reader never sees half a part,
-/// and a shard run twice writes the same bytes. Throws DeviceError naming the path.
+/// Writes `part` to `path` whole (host/util/part_file.hpp). Throws DeviceError naming the path.
 void write_part(const EvalPart& part, const std::string& path);
 
 /// Reads a part. Throws DataError naming the file when it is not a gap-eval part of this format.

@@ -1,4 +1,4 @@
-// A gap-eval campaign in shards, as a Slurm array runs it: `gap-eval --quick` in 1, 3 and 7 shards, merged, prints
+// Campaigns in shards, as a Slurm array runs them: `gap-eval --quick` in 1, 3 and 7 shards, merged, prints
 // byte for byte what the one-process run prints (--json); a shard run twice writes the same bytes; a missing,
 // repeated or foreign part, or a file that is no part, is refused with its name.
 #include <filesystem>
@@ -71,6 +71,41 @@ TEST(MergeCli, AQuickCampaignInOneThreeOrSevenShardsMergesToTheOneProcessRun) {
     refused({dir.file("q3_0.part"), dir.file("q3_1.part"), other.front()}, other.front() + ": of another campaign");
     std::ofstream(dir.file("notes.part")) << "not a part\n";
     refused({dir.file("notes.part")}, dir.file("notes.part") + ": not a gap-eval part");
+}
+
+// A nav-eval campaign's seeds in 1 and 3 shards (each seed's rest recording and its trajectories in one shard),
+// merged: the one-process run's JSON and text, byte for byte; a gap-eval part among nav-eval ones is refused.
+TEST(MergeCli, ANavEvalCampaignInShardsMergesToTheOneProcessRun) {
+    TempDir dir("navmerge");
+    const std::vector<std::string> campaign = {"--runs",         "4",    "--duration",     "320",
+                                               "--fit-duration", "1200", "--trajectories", "stop-and-go,square"};
+    const auto one = [&](bool json) {
+        std::vector<std::string> args = {"nav-eval"};
+        args.insert(args.end(), campaign.begin(), campaign.end());
+        if (json) args.push_back("--json");
+        return run_driftlab_split(args, dir.path());
+    };
+    const SplitRun json = one(true), text = one(false);
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    for (int n : {1, 3}) {
+        std::vector<std::string> parts;
+        for (int k = 0; k < n; ++k) {
+            parts.push_back(dir.file("n" + std::to_string(n) + "_" + std::to_string(k)));
+            std::vector<std::string> args = {"nav-eval", "--shard", std::to_string(k) + "/" + std::to_string(n), "-o",
+                                             parts.back()};
+            args.insert(args.end(), campaign.begin(), campaign.end());
+            const RunResult r = run_driftlab(args, dir.path());
+            ASSERT_EQ(r.exit_code, 0) << r.output;
+        }
+        EXPECT_EQ(merged(dir, parts).out, json.out) << n << " shards";
+        std::vector<std::string> args = {"merge"};
+        args.insert(args.end(), parts.rbegin(), parts.rend());
+        EXPECT_EQ(run_driftlab_split(args, dir.path()).out, text.out) << n << " shards";
+    }
+    const std::vector<std::string> gap = shards(dir, 1, {"--effects", "thermal_rc", "--seeds-score", "201..202"});
+    const SplitRun mixed = merged(dir, {dir.file("n3_0"), gap.front()});
+    EXPECT_EQ(mixed.exit_code, 3);
+    EXPECT_NE(mixed.err.find(gap.front() + ": not a nav-eval part"), std::string::npos) << mixed.err;
 }
 
 TEST(MergeCli, AShardNeedsItsPartFileAndABadShardIsRefused) {

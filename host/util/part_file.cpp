@@ -1,0 +1,71 @@
+// A campaign shard's part file; see part_file.hpp.
+#include "host/util/part_file.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "host/util/error.hpp"
+
+namespace driftlab::host {
+namespace {
+
+nlohmann::json read_cbor(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw DataError(path, 0, "cannot read it");
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return nlohmann::json::from_cbor(bytes, true, false);
+}
+
+}  // namespace
+
+std::string build_id() {
+    std::ifstream in("/proc/self/exe", std::ios::binary);
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            h ^= static_cast<unsigned char>(buffer[i]);
+            h *= 0x100000001b3ull;
+        }
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+    return text;
+}
+
+void write_part_file(const nlohmann::json& document, const std::string& path) {
+    const std::vector<std::uint8_t> bytes = nlohmann::json::to_cbor(document);
+    // Beside the target, so that the rename stays on one file system; named by the process, so that two shards
+    // writing one name by mistake do not mix their bytes.
+    const std::string temporary = path + ".tmp." + std::to_string(getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        if (!out) throw DeviceError(path, "cannot write the part");
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        throw DeviceError(path, "cannot write the part");
+    }
+}
+
+std::string part_kind(const std::string& path) {
+    const nlohmann::json j = read_cbor(path);
+    return j.is_object() && j.contains("kind") && j["kind"].is_string() ? j["kind"].get<std::string>() : "";
+}
+
+nlohmann::json read_part_file(const std::string& path, const std::string& kind, const std::string& what_writes) {
+    nlohmann::json j = read_cbor(path);
+    if (j.is_discarded() || !j.is_object() || j.value("kind", "") != kind)
+        throw DataError(path, 0, "not a " + kind + " (" + what_writes + " writes one)");
+    return j;
+}
+
+}  // namespace driftlab::host
