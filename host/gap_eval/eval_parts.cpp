@@ -116,14 +116,12 @@ EvalPart read_part(const std::string& path) {
 
 namespace {
 
-// Why `part` (from `path`) is not of the campaign `first` is, or "".
+// Why `part` (from `path`) is not of the campaign `first` is, or "" (the shard count: ShardSet).
 std::string foreign(const EvalPart& part, const EvalPart& first) {
     if (part.build != first.build)
         return "made by another build of driftlab (" + part.build + ", not " + first.build + ")";
     if (options_json(part.options) != options_json(first.options))
         return "of another campaign: its options differ (" + options_json(part.options).dump() + ")";
-    if (part.options.shards != first.options.shards)
-        return "one of " + std::to_string(part.options.shards) + " shards, not " + std::to_string(first.options.shards);
     if (part.cases_total != first.cases_total || part.pairs_total != first.pairs_total)
         return "of a campaign of other size";
     return "";
@@ -135,18 +133,14 @@ EvalPart merge_parts(const std::vector<std::string>& paths) {
     if (paths.empty()) throw DataError("merge", 0, "no part given");
     EvalPart whole = read_part(paths.front());
     const std::size_t n = whole.options.shards;
-    std::vector<std::string> by_shard(n);
+    ShardSet shards(n);
     std::vector<EvalCase> cases;
     std::vector<PairCase> pairs;
     for (const std::string& path : paths) {
         EvalPart part = path == paths.front() ? whole : read_part(path);
         if (const std::string why = foreign(part, whole); !why.empty()) throw DataError(path, 0, why);
         const std::size_t k = part.options.shard;
-        if (k >= n) throw DataError(path, 0, "shard " + std::to_string(k) + " of " + std::to_string(n));
-        if (!by_shard[k].empty())
-            throw DataError(
-                path, 0, "shard " + std::to_string(k) + "/" + std::to_string(n) + " again (also " + by_shard[k] + ")");
-        by_shard[k] = path;
+        shards.add(k, part.options.shards, path);
         for (auto& c : part.cases) {
             if (c.item % n != k || c.item >= whole.cases_total)
                 throw DataError(path, 0,
@@ -160,10 +154,7 @@ EvalPart merge_parts(const std::vector<std::string>& paths) {
             pairs.push_back(std::move(p));
         }
     }
-    for (std::size_t k = 0; k < n; ++k)
-        if (by_shard[k].empty())
-            throw DataError(paths.front(), 0,
-                            "shard " + std::to_string(k) + "/" + std::to_string(n) + " of its campaign is missing");
+    shards.check_complete(paths.front());
     std::sort(cases.begin(), cases.end(), [](const EvalCase& a, const EvalCase& b) { return a.item < b.item; });
     std::sort(pairs.begin(), pairs.end(), [](const PairCase& a, const PairCase& b) { return a.item < b.item; });
     if (cases.size() != whole.cases_total || pairs.size() != whole.pairs_total)

@@ -53,21 +53,15 @@ NavPart merge_nav_parts(const std::vector<std::string>& paths) {
     const std::size_t n = whole.shards;
     const std::uint64_t first = whole.campaign.at("seed").get<std::uint64_t>();
     const std::size_t per_seed = whole.campaign.at("trajectories").size();
-    std::vector<std::string> by_shard(n);
+    ShardSet shards(n);
     std::vector<std::vector<EvalRun>> by_seed(whole.seeds);
     for (const std::string& path : paths) {
         NavPart part = path == paths.front() ? whole : read_nav_part(path);
         if (part.build != whole.build) throw DataError(path, 0, "made by another build of driftlab");
         if (part.campaign != whole.campaign || part.seeds != whole.seeds)
             throw DataError(path, 0, "of another campaign: its options differ (" + part.campaign.dump() + ")");
-        if (part.shards != n)
-            throw DataError(path, 0, "one of " + std::to_string(part.shards) + " shards, not " + std::to_string(n));
         const std::size_t k = part.shard;
-        if (k >= n || !by_shard[k].empty())
-            throw DataError(path, 0,
-                            "shard " + std::to_string(k) + "/" + std::to_string(n) + " again (also " +
-                                by_shard[std::min(k, n - 1)] + ")");
-        by_shard[k] = path;
+        shards.add(k, part.shards, path);
         for (EvalRun& r : part.runs) {
             const std::size_t item = static_cast<std::size_t>(r.seed - first);
             if (r.seed < first || item >= whole.seeds || item % n != k)
@@ -76,10 +70,7 @@ NavPart merge_nav_parts(const std::vector<std::string>& paths) {
             by_seed[item].push_back(std::move(r));
         }
     }
-    for (std::size_t k = 0; k < n; ++k)
-        if (by_shard[k].empty())
-            throw DataError(paths.front(), 0,
-                            "shard " + std::to_string(k) + "/" + std::to_string(n) + " of its campaign is missing");
+    shards.check_complete(paths.front());
     whole.runs.clear();
     for (auto& runs : by_seed) {
         if (runs.size() != per_seed) throw DataError(paths.front(), 0, "its campaign's parts miss runs of a seed");

@@ -68,4 +68,23 @@ nlohmann::json read_part_file(const std::string& path, const std::string& kind, 
     return j;
 }
 
+void ShardSet::add(std::size_t shard, std::size_t shards, const std::string& path) {
+    const std::size_t n = paths_.size();
+    if (shards != n) throw DataError(path, 0, "one of " + std::to_string(shards) + " shards, not " + std::to_string(n));
+    if (shard >= n) throw DataError(path, 0, "shard " + std::to_string(shard) + " of " + std::to_string(n));
+    if (!paths_[shard].empty())
+        throw DataError(
+            path, 0,
+            "shard " + std::to_string(shard) + "/" + std::to_string(n) + " again (also " + paths_[shard] + ")");
+    paths_[shard] = path;
+}
+
+void ShardSet::check_complete(const std::string& first) const {
+    for (std::size_t k = 0; k < paths_.size(); ++k)
+        if (paths_[k].empty())
+            throw DataError(
+                first, 0,
+                "shard " + std::to_string(k) + "/" + std::to_string(paths_.size()) + " of its campaign is missing");
+}
+
 }  // namespace driftlab::host

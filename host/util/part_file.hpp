@@ -3,7 +3,9 @@
 // same bytes; stamped with the build that made it.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,5 +23,19 @@ nlohmann::json read_part_file(const std::string& path, const std::string& kind, 
 
 /// The "kind" of a part file, or "" when it is none.
 std::string part_kind(const std::string& path);
+
+/// The shards a merge meets, each part by its path: every one of 0 .. N-1 once.
+class ShardSet {
+public:
+    explicit ShardSet(std::size_t shards) : paths_(shards) {}
+    /// Records `path` as shard `shard` of `shards`. Throws DataError naming it when it is of another N or a shard
+    /// already met (naming that part too).
+    void add(std::size_t shard, std::size_t shards, const std::string& path);
+    /// Throws DataError naming `first` (the campaign's first part) when a shard is missing.
+    void check_complete(const std::string& first) const;
+
+private:
+    std::vector<std::string> paths_;
+};
 
 }  // namespace driftlab::host
