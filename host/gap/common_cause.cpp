@@ -270,7 +270,7 @@ CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelC
     out.observations = static_cast<double>(bins(s) * k);
     const double price = price_of(s);
     out.fits.push_back(fit_separate(s, price));
-    const CommonFit& sep = out.fits[0];
+    const CommonFit sep = out.fits[0];  // a copy: the readings pushed after it move the vector
 
     std::vector<double> dc;
     for (std::size_t c : s.channels) dc.push_back(dc_counts[c]);
