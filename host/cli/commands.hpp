@@ -47,6 +47,7 @@ void register_report(CLI::App& app);
 void register_allan(CLI::App& app);
 void register_gap(CLI::App& app);
 void register_gap_eval(CLI::App& app);
+void register_fleet(CLI::App& app);
 void register_merge(CLI::App& app);
 void register_nav(CLI::App& app);
 void register_nav_eval(CLI::App& app);

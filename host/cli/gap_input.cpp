@@ -7,6 +7,7 @@
 #include "driftlab/proto/messages.hpp"
 #include "host/cli/commands.hpp"
 #include "host/fit/series.hpp"
+#include "host/gap/canonical_log.hpp"
 #include "host/gap/diagnose.hpp"
 #include "host/gap/plain_recording.hpp"
 #include "host/log/log_reader.hpp"
@@ -45,34 +46,6 @@ std::vector<std::string> cut_to_window(const GapInput& o, LogData& log) {
     return notes;
 }
 
-// A canonical log the simulator can stand beside: its converter, and the smoothing the replicates must repeat (a
-// window of 1 assumed for a missing one makes every averaged log look broken).
-LogData read_canonical(std::istream& in, const std::string& path, ReadOptions options, const sim::SimModel& unit,
-                       bool with_truth) {
-    options.assumed_adc_bits = unit.adc.bits;
-    LogData log = parse_log(in, path, options);
-    if (const auto bits = log.metadata.get_int("adc_bits"); bits && *bits != unit.adc.bits)
-        throw DataError(path, log.metadata.line_of("adc_bits"),
-                        "adc_bits is " + std::to_string(*bits) + ", but the simulator's converter has " +
-                            std::to_string(unit.adc.bits) + " bits");
-    std::string missing;
-    for (const char* key : {"window", "fit_order", "conversions_per_output"})
-        if (!log.metadata.has(key)) missing += std::string(missing.empty() ? "" : ", ") + "'" + key + "'";
-    if (!missing.empty())
-        throw DataError(
-            path, 0,
-            "the metadata lacks " + missing +
-                ": gap repeats the firmware's smoothing in every replicate and "
-                "needs all of 'window', 'fit_order' and 'conversions_per_output' (record, decode and hil write them)");
-    // The replicates are a unit at rest: a log in motion would read as one huge gap, every cell located.
-    if (const auto trajectory = log.metadata.get("trajectory"); trajectory && *trajectory != "rest" && !with_truth)
-        throw DataError(path, log.metadata.line_of("trajectory"),
-                        "recorded in motion (trajectory " + *trajectory +
-                            "): gap compares the log with a unit at rest, and would read the motion as a gap; give "
-                            "its ground truth with --truth (hil writes it beside the log as LOG.truth.csv)");
-    return log;
-}
-
 }  // namespace
 
 LoadedRecording load_recording(const GapInput& o) {
@@ -83,7 +56,7 @@ LoadedRecording load_recording(const GapInput& o) {
         if (!o.mappings.empty() || o.tau0_s > 0.0 || o.block != 1)
             throw UsageError("--as, --tau0 and --block are for plain recordings; " + o.path + " is a canonical log");
         LoadedRecording out{
-            read_canonical(source.in, o.path, read, unit, !o.truth_path.empty() || o.motion_without_truth),
+            gap::read_canonical_log(source.in, o.path, read, unit, !o.truth_path.empty() || o.motion_without_truth),
             unit,
             {},
             {}};

@@ -24,7 +24,7 @@ constexpr driftlab::host::cli::RegisterFn kCommands[] = {
     driftlab::host::cli::register_report,    driftlab::host::cli::register_allan,
     driftlab::host::cli::register_gap,       driftlab::host::cli::register_gap_eval,
     driftlab::host::cli::register_merge,     driftlab::host::cli::register_nav,
-    driftlab::host::cli::register_nav_eval,
+    driftlab::host::cli::register_nav_eval,  driftlab::host::cli::register_fleet,
 };
 
 // What a command printed before it failed (a note, a table) goes out before the error, as it happened: into one file

@@ -92,11 +92,7 @@ void write_part(const EvalPart& part, const std::string& path) {
 }
 
 EvalPart read_part(const std::string& path) {
-    const nlohmann::json j = read_part_file(path, kKind, "driftlab gap-eval --shard K/N -o PART");
-    if (j.value("format", 0) != kFormat)
-        throw DataError(
-            path, 0,
-            "a gap-eval part of format " + std::to_string(j.value("format", 0)) + ", not " + std::to_string(kFormat));
+    const nlohmann::json j = read_part_file(path, kKind, kFormat, "driftlab gap-eval --shard K/N -o PART");
     try {
         EvalPart part;
         part.options = options_from(j.at("options"));
@@ -116,10 +112,8 @@ EvalPart read_part(const std::string& path) {
 
 namespace {
 
-// Why `part` (from `path`) is not of the campaign `first` is, or "" (the shard count: ShardSet).
+// Why `part` (from `path`) is not of the campaign `first` is, or "" (the build and shard count: ShardSet).
 std::string foreign(const EvalPart& part, const EvalPart& first) {
-    if (part.build != first.build)
-        return "made by another build of driftlab (" + part.build + ", not " + first.build + ")";
     if (options_json(part.options) != options_json(first.options))
         return "of another campaign: its options differ (" + options_json(part.options).dump() + ")";
     if (part.cases_total != first.cases_total || part.pairs_total != first.pairs_total)
@@ -133,14 +127,14 @@ EvalPart merge_parts(const std::vector<std::string>& paths) {
     if (paths.empty()) throw DataError("merge", 0, "no part given");
     EvalPart whole = read_part(paths.front());
     const std::size_t n = whole.options.shards;
-    ShardSet shards(n);
+    ShardSet shards(n, whole.build);
     std::vector<EvalCase> cases;
     std::vector<PairCase> pairs;
     for (const std::string& path : paths) {
         EvalPart part = path == paths.front() ? whole : read_part(path);
         if (const std::string why = foreign(part, whole); !why.empty()) throw DataError(path, 0, why);
         const std::size_t k = part.options.shard;
-        shards.add(k, part.options.shards, path);
+        shards.add(k, part.options.shards, part.build, path);
         for (auto& c : part.cases) {
             if (c.item % n != k || c.item >= whole.cases_total)
                 throw DataError(path, 0,

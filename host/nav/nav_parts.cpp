@@ -17,8 +17,7 @@ namespace {
 constexpr int kFormat = 1;
 
 NavPart read_nav_part(const std::string& path) {
-    const nlohmann::json j = read_part_file(path, kNavPartKind, "driftlab nav-eval --shard K/N -o PART");
-    if (j.value("format", 0) != kFormat) throw DataError(path, 0, "a nav-eval part of another format");
+    const nlohmann::json j = read_part_file(path, kNavPartKind, kFormat, "driftlab nav-eval --shard K/N -o PART");
     try {
         NavPart p;
         p.campaign = j.at("campaign");
@@ -53,15 +52,14 @@ NavPart merge_nav_parts(const std::vector<std::string>& paths) {
     const std::size_t n = whole.shards;
     const std::uint64_t first = whole.campaign.at("seed").get<std::uint64_t>();
     const std::size_t per_seed = whole.campaign.at("trajectories").size();
-    ShardSet shards(n);
+    ShardSet shards(n, whole.build);
     std::vector<std::vector<EvalRun>> by_seed(whole.seeds);
     for (const std::string& path : paths) {
         NavPart part = path == paths.front() ? whole : read_nav_part(path);
-        if (part.build != whole.build) throw DataError(path, 0, "made by another build of driftlab");
         if (part.campaign != whole.campaign || part.seeds != whole.seeds)
             throw DataError(path, 0, "of another campaign: its options differ (" + part.campaign.dump() + ")");
         const std::size_t k = part.shard;
-        shards.add(k, part.shards, path);
+        shards.add(k, part.shards, part.build, path);
         for (EvalRun& r : part.runs) {
             const std::size_t item = static_cast<std::size_t>(r.seed - first);
             if (r.seed < first || item >= whole.seeds || item % n != k)

@@ -3,13 +3,13 @@
 
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <vector>
 
 #include "host/util/error.hpp"
+#include "host/util/fnv1a.hpp"
 
 namespace driftlab::host {
 namespace {
@@ -24,18 +24,8 @@ nlohmann::json read_cbor(const std::string& path) {
 }  // namespace
 
 std::string build_id() {
-    std::ifstream in("/proc/self/exe", std::ios::binary);
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    char buffer[1 << 16];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-        for (std::streamsize i = 0; i < in.gcount(); ++i) {
-            h ^= static_cast<unsigned char>(buffer[i]);
-            h *= 0x100000001b3ull;
-        }
-    }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return text;
+    static const std::string id = file_fingerprint("/proc/self/exe");  // the executable does not change under us
+    return id;
 }
 
 void write_part_file(const nlohmann::json& document, const std::string& path) {
@@ -61,14 +51,19 @@ std::string part_kind(const std::string& path) {
     return j.is_object() && j.contains("kind") && j["kind"].is_string() ? j["kind"].get<std::string>() : "";
 }
 
-nlohmann::json read_part_file(const std::string& path, const std::string& kind, const std::string& what_writes) {
+nlohmann::json read_part_file(const std::string& path, const std::string& kind, int format,
+                              const std::string& what_writes) {
     nlohmann::json j = read_cbor(path);
     if (j.is_discarded() || !j.is_object() || j.value("kind", "") != kind)
         throw DataError(path, 0, "not a " + kind + " (" + what_writes + " writes one)");
+    if (const int f = j.value("format", 0); f != format)
+        throw DataError(path, 0, "a " + kind + " of format " + std::to_string(f) + ", not " + std::to_string(format));
     return j;
 }
 
-void ShardSet::add(std::size_t shard, std::size_t shards, const std::string& path) {
+void ShardSet::add(std::size_t shard, std::size_t shards, const std::string& build, const std::string& path) {
+    if (build != build_)
+        throw DataError(path, 0, "made by another build of driftlab (" + build + ", not " + build_ + ")");
     const std::size_t n = paths_.size();
     if (shards != n) throw DataError(path, 0, "one of " + std::to_string(shards) + " shards, not " + std::to_string(n));
     if (shard >= n) throw DataError(path, 0, "shard " + std::to_string(shard) + " of " + std::to_string(n));

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -17,25 +18,27 @@ std::string build_id();
 /// Writes `document` to `path` atomically. Throws DeviceError naming the path.
 void write_part_file(const nlohmann::json& document, const std::string& path);
 
-/// The document of a part file whose "kind" is `kind`. Throws DataError naming the file when it cannot be read, is
-/// not CBOR, or is another kind (`what_writes` says what writes one).
-nlohmann::json read_part_file(const std::string& path, const std::string& kind, const std::string& what_writes);
+/// The document of a part file whose "kind" is `kind` and "format" `format`. Throws DataError naming the file when it
+/// cannot be read, is not CBOR, or is another kind (`what_writes` says what writes one) or format.
+nlohmann::json read_part_file(const std::string& path, const std::string& kind, int format,
+                              const std::string& what_writes);
 
 /// The "kind" of a part file, or "" when it is none.
 std::string part_kind(const std::string& path);
 
-/// The shards a merge meets, each part by its path: every one of 0 .. N-1 once.
+/// The shards a merge meets, each part by its path: every one of 0 .. N-1 once, all made by one build.
 class ShardSet {
 public:
-    explicit ShardSet(std::size_t shards) : paths_(shards) {}
-    /// Records `path` as shard `shard` of `shards`. Throws DataError naming it when it is of another N or a shard
-    /// already met (naming that part too).
-    void add(std::size_t shard, std::size_t shards, const std::string& path);
+    ShardSet(std::size_t shards, std::string build) : paths_(shards), build_(std::move(build)) {}
+    /// Records `path` as shard `shard` of `shards`, made by `build`. Throws DataError naming it when it is of another
+    /// N or build, or a shard already met (naming that part too).
+    void add(std::size_t shard, std::size_t shards, const std::string& build, const std::string& path);
     /// Throws DataError naming `first` (the campaign's first part) when a shard is missing.
     void check_complete(const std::string& first) const;
 
 private:
     std::vector<std::string> paths_;
+    std::string build_;
 };
 
 }  // namespace driftlab::host

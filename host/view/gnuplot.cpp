@@ -110,7 +110,9 @@ std::string script(const Plot& plot, const fs::path& data, const fs::path& image
     if (plot.log_x) gp << "set logscale x\n" << (plot.x_tics.empty() ? "set format x '10^{%L}'\n" : "");
     if (!plot.x_tics.empty()) {
         gp << "set xtics (";
-        for (std::size_t i = 0; i < plot.x_tics.size(); ++i) gp << (i ? ", " : "") << format_double(plot.x_tics[i]);
+        for (std::size_t i = 0; i < plot.x_tics.size(); ++i)
+            gp << (i ? ", " : "") << (i < plot.x_tic_labels.size() ? quoted(plot.x_tic_labels[i]) + " " : "")
+               << format_double(plot.x_tics[i]);
         gp << ")\n";
     }
     if (plot.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";

@@ -32,7 +32,8 @@ struct Plot {
     std::string x_label, y_label;
     bool log_x = false, log_y = false;
     std::optional<std::pair<double, double>> x_range, y_range;
-    std::vector<double> x_tics;     ///< explicit x tick positions, labelled as plain numbers (empty = automatic)
+    std::vector<double> x_tics;  ///< explicit x tick positions, labelled as plain numbers (empty = automatic)
+    std::vector<std::string> x_tic_labels;  ///< labels of x_tics in their place (empty: the numbers)
     std::string key = "top right";  ///< gnuplot's legend placement, e.g. "outside right top" beside crowded data
     std::vector<PlotSeries> series;
     int width_px = 900, height_px = 540;

@@ -1,0 +1,32 @@
+// The views of `driftlab fleet` (docs/fleet.md): per board its channels' eq. 1 parameters and noise terms and its gap
+// verdict; the batch's medians and spreads; the boards that stand out, with why; the logs that could not be read.
+// Text, JSON, a markdown report, and per channel a plot of every board's robust z-score by parameter.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "host/fleet/batch.hpp"
+
+namespace driftlab::host::view {
+
+/// What every view shows: the boards, in the fleet's order, and their batch.
+struct FleetView {
+    const std::vector<fleet::BoardEntry>* boards = nullptr;
+    fleet::Batch batch;
+};
+
+void print_fleet_text(std::ostream& out, const FleetView& v);
+/// "none 19; unexplained 1 (b12.csv). The diagnosis names an effect on a clean log about 5 % of the time: 1 of 20
+/// boards by chance".
+std::string verdict_summary(const FleetView& v);
+nlohmann::json fleet_json(const FleetView& v);
+/// fleet_<channel>.png/svg for each channel with a judged parameter; returns the image files' stems' paths.
+std::vector<std::string> write_fleet_plots(const FleetView& v, const std::string& dir);
+/// fleet.md with the figures beside it in `dir`.
+void write_fleet_report(const FleetView& v, const std::string& dir);
+
+}  // namespace driftlab::host::view
