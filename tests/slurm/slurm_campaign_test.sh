@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# A gap-eval campaign on a real Slurm: a single-node cluster on localhost (munged, slurmctld, slurmd, a slurm.conf of
-# the test's own), the campaign submitted as an array job by scripts/slurm/submit-gap-eval.sh --wait, merged by its
+# A gap-eval campaign and a fleet on a real Slurm: a single-node cluster on localhost (munged, slurmctld, slurmd, a slurm.conf of
+# the test's own), the campaign submitted as an array job by scripts/slurm/submit.sh --wait, merged by its
 # dependent job and compared byte for byte with the local run; an array whose tasks fail fails the campaign. Every
 # daemon started here is stopped on the way out, pass or fail.
 # Usage: slurm_campaign_test.sh DRIFTLAB SOURCE_DIR
@@ -69,14 +69,27 @@ sinfo -h -o %t | grep -q idle || fail "the node never became idle"
 # A small campaign: the local run, then the same as an array of 4 shards and its merge.
 campaign=(--quick --effects thermal_rc,burst_spikes --seeds-score 101..102)
 "$driftlab" gap-eval "${campaign[@]}" --json > "$dir/local.json" 2>/dev/null
-DRIFTLAB=$driftlab "$source/scripts/slurm/submit-gap-eval.sh" --wait 4 "$dir/run" "${campaign[@]}" ||
+DRIFTLAB=$driftlab "$source/scripts/slurm/submit.sh" --wait gap-eval 4 "$dir/run" "${campaign[@]}" ||
   fail "the campaign's jobs failed"
 cmp "$dir/local.json" "$dir/run/campaign.json" || fail "the merged campaign differs from the local run"
-[ -s "$dir/run/campaign.md" ] || fail "no markdown result"
+[ -s "$dir/run/campaign.txt" ] || fail "no text result"
+
+# A fleet of five boards in 3 shards, one file in its folder no log: the merge names it (exit 3) and reports the rest.
+mkdir -p "$dir/boards"
+for k in 1 2 3 4 5; do
+  "$driftlab" hil --preset fig3 --duration 1500 --seed "$k" -o "$dir/boards/b$k.csv" > /dev/null
+done
+echo "not a log" > "$dir/boards/notes.csv"
+"$driftlab" fleet "$dir/boards" --no-cache --json > "$dir/fleet.json" 2>/dev/null && fail "a fleet with a non-log passed"
+status=0
+DRIFTLAB=$driftlab "$source/scripts/slurm/submit.sh" --wait fleet 3 "$dir/fleet" "$dir/boards" --no-cache || status=$?
+[ "$status" -eq 3 ] || fail "the fleet's campaign ended $status, not 3 (a log not analysed)"
+cmp "$dir/fleet.json" "$dir/fleet/campaign.json" || fail "the merged fleet differs from the local run"
+[ -s "$dir/fleet/report/fleet.md" ] || fail "no fleet report"
 
 # Tasks that fail: the merge never runs and --wait says so.
-if DRIFTLAB=/bin/false "$source/scripts/slurm/submit-gap-eval.sh" --wait 3 "$dir/broken" --quick; then
+if DRIFTLAB=/bin/false "$source/scripts/slurm/submit.sh" --wait gap-eval 3 "$dir/broken" --quick; then
   fail "an array whose tasks failed was reported a success"
 fi
 [ ! -e "$dir/broken/campaign.json" ] || fail "a merge ran after failed tasks"
-echo "PASS: 4 array tasks merged to the local run's bytes; failed tasks fail the campaign"
+echo "PASS: 4 gap-eval tasks and 3 fleet tasks merged to the local runs' bytes; failed tasks fail the campaign"
