@@ -45,6 +45,8 @@ struct GapEvalCommandOptions {
     std::string plot_dir;
     std::pair<std::size_t, std::size_t> shard{0, 1};  // K, N
     std::string part;                                 // -o: this shard's part file
+    bool measure_sizes = false;                       // the first stage: a_50 of the shard's generators only
+    std::string sizes_file;                           // --sizes: the first stage's merge
 };
 
 std::pair<std::uint64_t, std::uint64_t> parse_range(const std::string& flag, const std::string& s) {
@@ -92,6 +94,19 @@ std::vector<std::pair<std::string, std::string>> parse_pairs(const std::vector<s
         pairs.emplace_back(a, b);
     }
     return pairs;
+}
+
+// The first stage's shard: a_50 of the generators g with g mod N = K, in a sizes part for `merge -o SIZES`.
+void write_sizes_shard(const GapEvalCommandOptions& o, gap::EvalOptions options) {
+    std::tie(options.shard, options.shards) = o.shard;
+    gap::SizesPart part{options, build_id(), gap::sized_generators(options).size(), {}, {}};
+    for (std::size_t g = options.shard; g < part.generators; g += options.shards) part.items.push_back(g);
+    part.sizes = gap::detection_sizes(options, options.shard, options.shards);
+    gap::write_sizes_part(part, o.part);
+    std::fprintf(stderr,
+                 "gap-eval: sizes shard %zu/%zu: a_50 of %zu of %zu generators in %s (driftlab merge PART... -o SIZES "
+                 "joins them)\n",
+                 options.shard, options.shards, part.items.size(), part.generators, o.part.c_str());
 }
 
 void run(const GapEvalCommandOptions& o) {
@@ -145,17 +160,21 @@ void run(const GapEvalCommandOptions& o) {
         };
     };
     if (!o.levels.empty()) options.levels = o.levels;
-    std::vector<gap::DetectionSize> sizes;
     // With the shipped thresholds the tuning seeds only measure a_50 (the thresholds were tuned on the default ones).
     options.tune = !(o.shipped || o.clean_only);
     if (o.clean_only) {
         // As many clean logs per seed as a run of every size has, unless asked; then nothing planted, no a_50.
         if (options.clean_per_seed == 0) options.clean_per_seed = static_cast<int>(options.levels.size());
         options.levels.clear();
-    } else {
-        options.progress = progress_for("detection threshold a_50, generator");
-        sizes = gap::detection_sizes(options);
     }
+    options.progress = progress_for("detection threshold a_50, generator");
+    if (o.measure_sizes) {
+        write_sizes_shard(o, options);
+        return;
+    }
+    const std::vector<gap::DetectionSize> sizes = o.clean_only           ? std::vector<gap::DetectionSize>{}
+                                                  : o.sizes_file.empty() ? gap::detection_sizes(options)
+                                                                         : gap::read_sizes(o.sizes_file, options);
     std::tie(options.shard, options.shards) = o.shard;
     options.progress = progress_for("diagnosing log");
     auto cases = gap::run_cases(options, sizes);
@@ -254,7 +273,20 @@ void register_gap_eval(CLI::App& app) {
            "against size, with 95 % intervals")
         ->check(non_empty_path())
         ->excludes("--clean-only");
-    add_shard_options(cmd, o->shard, o->part, "logs")->excludes("--json")->excludes("--plot");
+    CLI::Option* part = add_shard_options(cmd, o->shard, o->part, "logs")->excludes("--json")->excludes("--plot");
+    CLI::Option* measure =
+        cmd->add_flag("--measure-sizes", o->measure_sizes,
+                      "With --shard K/N -o PART: only measure a_50, of the generators g with g mod N = K (the first "
+                      "stage; `driftlab merge PART... -o SIZES` joins them for --sizes)")
+            ->needs(part)
+            ->excludes("--clean-only");
+    cmd->add_option(
+           "--sizes", o->sizes_file,
+           "Read every generator's a_50 from SIZES (the first stage's merge) instead of measuring it: the same "
+           "campaign options, the same build")
+        ->check(CLI::ExistingFile)
+        ->excludes(measure)
+        ->excludes("--clean-only");
     cmd->callback([o] { run(*o); });
 }
 

@@ -1,5 +1,6 @@
 // `driftlab merge`: a sharded campaign's parts (gap-eval: host/gap_eval/eval_parts; nav-eval: host/nav/nav_parts;
 // fleet: host/fleet/fleet_parts) scored as the one-process run scores them (docs/cluster.md).
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "host/fleet/fleet_parts.hpp"
 #include "host/gap_eval/eval_parts.hpp"
 #include "host/nav/nav_parts.hpp"
+#include "host/util/error.hpp"
 #include "host/util/output_folder.hpp"
 #include "host/util/part_file.hpp"
 
@@ -22,6 +24,7 @@ struct MergeOptions {
     bool json = false;
     std::string plot_dir;
     std::string report_dir;
+    std::string output;  ///< -o: where a sizes stage's merge goes
 };
 
 void run(const MergeOptions& o) {
@@ -34,6 +37,17 @@ void run(const MergeOptions& o) {
         print_nav_eval(whole.campaign, whole.runs, o.json, o.plot_dir);
         return;
     }
+    if (kind == gap::kSizesPartKind) {
+        if (o.output.empty())
+            throw UsageError("merge: " + o.parts.front() +
+                             " is a gap-eval sizes part: -o SIZES names the file its merge is written to");
+        const gap::SizesPart whole = gap::merge_sizes_parts(o.parts);
+        gap::write_sizes_part(whole, o.output);
+        std::fprintf(stderr, "merge: a_50 of %zu generators in %s (gap-eval --sizes %s runs the cases)\n",
+                     whole.sizes.size(), o.output.c_str(), o.output.c_str());
+        return;
+    }
+    if (!o.output.empty()) throw UsageError("merge -o: only a gap-eval sizes stage's merge is written to a file");
     if (kind == fleet::kFleetPartKind) {
         print_fleet(fleet::merge_fleet_parts(o.parts).boards, o.json, o.plot_dir, o.report_dir);
         return;
@@ -58,6 +72,9 @@ void register_merge(CLI::App& app) {
                     "Also draw the campaign's plots in this folder, as its command's --plot does")
         ->check(non_empty_path());
     cmd->add_option("--report", o->report_dir, "A fleet: also write fleet.md with its figures in this folder")
+        ->check(non_empty_path());
+    cmd->add_option("-o,--output", o->output,
+                    "A gap-eval sizes stage (--measure-sizes): the file its merge is written to, for gap-eval --sizes")
         ->check(non_empty_path());
     cmd->callback([o] { run(*o); });
 }

@@ -2,6 +2,7 @@
 #include "host/gap_eval/eval_parts.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -43,7 +44,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DetectionSize, generator, a50, curve)
 
 namespace {
 
-constexpr const char* kKind = "gap-eval part";
+constexpr const char* kKind = kEvalPartKind;
 constexpr int kFormat = 1;
 
 // The campaign's options as a part records them: everything that shapes its logs and scores (not the threads, which
@@ -160,6 +161,90 @@ EvalPart merge_parts(const std::vector<std::string>& paths) {
     whole.options.shard = 0;
     whole.options.shards = 1;
     return whole;
+}
+
+namespace {
+
+SizesPart read_sizes_part(const std::string& path) {
+    const nlohmann::json j =
+        read_part_file(path, kSizesPartKind, kFormat, "driftlab gap-eval --measure-sizes --shard K/N -o PART");
+    try {
+        SizesPart part;
+        part.options = options_from(j.at("options"));
+        j.at("shard").get_to(part.options.shard);
+        j.at("shards").get_to(part.options.shards);
+        j.at("build").get_to(part.build);
+        j.at("generators").get_to(part.generators);
+        j.at("items").get_to(part.items);
+        j.at("sizes").get_to(part.sizes);
+        if (part.items.size() != part.sizes.size())
+            throw DataError(path, 0, "a damaged sizes part: items and sizes differ");
+        return part;
+    } catch (const nlohmann::json::exception& e) {
+        throw DataError(path, 0, std::string("a damaged sizes part: ") + e.what());
+    }
+}
+
+}  // namespace
+
+void write_sizes_part(const SizesPart& part, const std::string& path) {
+    write_part_file({{"kind", kSizesPartKind},
+                     {"format", kFormat},
+                     {"build", part.build},
+                     {"options", options_json(part.options)},
+                     {"shard", part.options.shard},
+                     {"shards", part.options.shards},
+                     {"generators", part.generators},
+                     {"items", part.items},
+                     {"sizes", part.sizes}},
+                    path);
+}
+
+SizesPart merge_sizes_parts(const std::vector<std::string>& paths) {
+    if (paths.empty()) throw DataError("merge", 0, "no part given");
+    SizesPart whole = read_sizes_part(paths.front());
+    const std::size_t n = whole.options.shards;
+    ShardSet shards(n, whole.build);
+    std::vector<std::optional<DetectionSize>> by_item(whole.generators);
+    for (const std::string& path : paths) {
+        SizesPart part = path == paths.front() ? whole : read_sizes_part(path);
+        if (options_json(part.options) != options_json(whole.options) || part.generators != whole.generators)
+            throw DataError(path, 0,
+                            "of another campaign: its options differ (" + options_json(part.options).dump() + ")");
+        const std::size_t k = part.options.shard;
+        shards.add(k, part.options.shards, part.build, path);
+        for (std::size_t i = 0; i < part.items.size(); ++i) {
+            const std::size_t g = part.items[i];
+            if (g >= whole.generators || g % n != k || by_item[g])
+                throw DataError(path, 0,
+                                "holds generator " + std::to_string(g) + ", not shard " + std::to_string(k) + "'s");
+            by_item[g] = std::move(part.sizes[i]);
+        }
+    }
+    shards.check_complete(paths.front());
+    whole.items.clear();
+    whole.sizes.clear();
+    for (std::size_t g = 0; g < whole.generators; ++g) {
+        if (!by_item[g]) throw DataError(paths.front(), 0, "its parts miss generator " + std::to_string(g));
+        whole.items.push_back(g);
+        whole.sizes.push_back(std::move(*by_item[g]));
+    }
+    whole.options.shard = 0;
+    whole.options.shards = 1;
+    return whole;
+}
+
+std::vector<DetectionSize> read_sizes(const std::string& path, const EvalOptions& options) {
+    SizesPart part = read_sizes_part(path);
+    if (part.options.shards != 1)
+        throw DataError(path, 0,
+                        "shard " + std::to_string(part.options.shard) + " of " + std::to_string(part.options.shards) +
+                            " of the sizes: give their merge (driftlab merge PART... -o SIZES)");
+    if (part.build != build_id()) throw DataError(path, 0, "made by another build of driftlab (" + part.build + ")");
+    if (options_json(part.options) != options_json(options))
+        throw DataError(
+            path, 0, "the sizes of another campaign: its options differ (" + options_json(part.options).dump() + ")");
+    return std::move(part.sizes);
 }
 
 }  // namespace driftlab::host::gap

@@ -261,13 +261,18 @@ std::optional<double> logistic_a50(const std::vector<DetectionPoint>& curve) {
     return std::exp(-a / b);
 }
 
-std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
+std::vector<std::string> sized_generators(const EvalOptions& options) {
     auto gens = generators_of(options);
     for (const auto& [first, second] : options.pairs)
         for (const std::string& g : {first, second})
             if (g != "none" && std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
+    return gens;
+}
+
+std::vector<DetectionSize> detection_sizes(const EvalOptions& options, std::size_t shard, std::size_t shards) {
+    const std::vector<std::string> gens = sized_generators(options);
     std::vector<DetectionSize> out;
-    for (std::size_t g = 0; g < gens.size(); ++g) {
+    for (std::size_t g = shard; g < gens.size(); g += shards) {
         DetectionSize d{gens[g], first_guess(gens[g]), {}};
         const auto& list = truth_list();
         const auto place = static_cast<std::size_t>(
@@ -309,7 +314,7 @@ std::vector<DetectionSize> detection_sizes(const EvalOptions& options) {
         std::sort(d.curve.begin(), d.curve.end(),
                   [](const DetectionPoint& a, const DetectionPoint& b) { return a.size < b.size; });
         out.push_back(std::move(d));
-        if (options.progress) options.progress(g + 1, gens.size());
+        if (options.progress) options.progress(g / shards + 1, (gens.size() - shard + shards - 1) / shards);
     }
     return out;
 }

@@ -75,10 +75,14 @@ struct DetectionSize {
 /// jumps from none to all still has a finite slope. Empty when the fitted slope is not positive.
 std::optional<double> logistic_a50(const std::vector<DetectionPoint>& curve);
 
-/// Measures a_50 of every generator of `options` on the tuning seeds (locate-only diagnoses): doubling or halving
-/// from a first guess until the detected fraction crosses 1/2, two more sizes half an octave either side of the
-/// crossing, then the logistic fit over every size tried (the crossing's interpolation where the fit fails).
-std::vector<DetectionSize> detection_sizes(const EvalOptions& options);
+/// The generators whose a_50 a campaign measures, in order: the run's, then those only its pairs plant.
+std::vector<std::string> sized_generators(const EvalOptions& options);
+
+/// Measures a_50 of the generators g of sized_generators() with g mod shards == shard (all by default) on the tuning
+/// seeds (locate-only diagnoses): doubling or halving from a first guess until the detected fraction crosses 1/2, two
+/// more sizes half an octave either side of the crossing, then the logistic fit over every size tried (the crossing's
+/// interpolation where the fit fails). A generator's logs come from its place in truth_list(), never from the shard.
+std::vector<DetectionSize> detection_sizes(const EvalOptions& options, std::size_t shard = 0, std::size_t shards = 1);
 
 /// One simulated log and what the diagnosis said about it.
 struct EvalCase {

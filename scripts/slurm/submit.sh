@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Submits a campaign to Slurm: an array of N shards, then a merge that runs once all of them succeeded.
+# Submits a campaign to Slurm: an array of N shards, then a merge that runs once all of them succeeded (gap-eval: first
+# an array measuring a_50 and its merge, then the case array reading it, then the merge).
 # Usage: scripts/slurm/submit.sh [--wait] COMMAND N OUT [COMMAND's arguments...]
 #   COMMAND  gap-eval, nav-eval or fleet (fleet's arguments hold its logs or their folder)
 #   N        shards (array tasks 0..N-1); OUT  a folder every node can reach (the parts, the logs, the result)
 #   --wait   return when the merge has ended: non-zero if a task or the merge failed (OUT/campaign.json then absent),
 #            3 for a fleet with a log that could not be analysed (its results are there)
-# DRIFTLAB (default: driftlab on the PATH) names the executable the tasks run. Prints the two job ids.
+# DRIFTLAB (default: driftlab on the PATH) names the executable the tasks run. Prints the last two job ids.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 wait=()
@@ -18,11 +19,22 @@ command=$1 shards=$2 out=$3
 shift 3
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
+unset STAGE  # shard.sbatch and merge.sbatch read it: set below for gap-eval's stages only
 export COMMAND=$command SHARDS=$shards OUT=$out CAMPAIGN="$*" DRIFTLAB=${DRIFTLAB:-driftlab}
-array=$(sbatch --parsable --array="0-$((shards - 1))" --output="$out/shard_%a.log" --export=ALL \
+rm -f "$out/campaign.txt" "$out/campaign.json" "$out/sizes"
+# afterok: a failed task leaves every job after it never to run (Slurm cancels them).
+after=()
+if [ "$command" = gap-eval ]; then
+  # a_50 measured once, in shards, and merged: the case shards read it instead of each measuring it again.
+  sizes=$(sbatch --parsable --array="0-$((shards - 1))" --output="$out/sizes_%a.log" --export=ALL,STAGE=sizes \
+    "$here/shard.sbatch")
+  joined=$(sbatch --parsable --kill-on-invalid-dep=yes --dependency="afterok:${sizes%%;*}" \
+    --output="$out/sizes_merge.log" --export=ALL,STAGE=sizes "$here/merge.sbatch")
+  after=(--kill-on-invalid-dep=yes --dependency="afterok:${joined%%;*}")
+  export STAGE=cases
+fi
+array=$(sbatch --parsable "${after[@]}" --array="0-$((shards - 1))" --output="$out/shard_%a.log" --export=ALL \
   "$here/shard.sbatch")
-rm -f "$out/campaign.txt" "$out/campaign.json"
-# afterok: a failed task leaves the merge never to run (Slurm cancels it).
 status=0
 merge=$(sbatch --parsable "${wait[@]}" --kill-on-invalid-dep=yes --dependency="afterok:${array%%;*}" \
   --output="$out/merge.log" --export=ALL "$here/merge.sbatch") || status=$?

@@ -19,11 +19,12 @@ std::string file_bytes(const std::string& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The parts of `gap-eval --quick` in `n` shards, in `dir`.
-std::vector<std::string> shards(const TempDir& dir, int n, const std::vector<std::string>& extra = {}) {
+// The parts of `gap-eval --quick` in `n` shards, in `dir` (named NAME<n>_<k>.part).
+std::vector<std::string> shards(const TempDir& dir, int n, const std::vector<std::string>& extra = {},
+                                const std::string& name = "q") {
     std::vector<std::string> parts;
     for (int k = 0; k < n; ++k) {
-        parts.push_back(dir.file("q" + std::to_string(n) + "_" + std::to_string(k) + ".part"));
+        parts.push_back(dir.file(name + std::to_string(n) + "_" + std::to_string(k) + ".part"));
         std::vector<std::string> args = {
             "gap-eval", "--quick", "--shard", std::to_string(k) + "/" + std::to_string(n), "-o", parts.back()};
         args.insert(args.end(), extra.begin(), extra.end());
@@ -49,6 +50,24 @@ TEST(MergeCli, AQuickCampaignInOneThreeOrSevenShardsMergesToTheOneProcessRun) {
         ASSERT_EQ(m.exit_code, 0) << m.err;
         EXPECT_EQ(m.out, one.out) << n << " shards";
     }
+    // In two stages: a_50 measured in 3 shards and merged once, then the cases in 2 shards reading it.
+    const std::vector<std::string> sized = shards(dir, 3, {"--measure-sizes"}, "sizes");
+    std::vector<std::string> join = {"merge", "-o", dir.file("sizes")};
+    join.insert(join.end(), sized.begin(), sized.end());
+    const RunResult joined = run_driftlab(join, dir.path());
+    ASSERT_EQ(joined.exit_code, 0) << joined.output;
+    const SplitRun staged = merged(dir, shards(dir, 2, {"--sizes", dir.file("sizes")}, "staged"));
+    ASSERT_EQ(staged.exit_code, 0) << staged.err;
+    EXPECT_EQ(staged.out, one.out) << "two stages";
+    // A sizes shard is not the sizes; nor are another campaign's.
+    const RunResult unmerged = run_driftlab({"gap-eval", "--quick", "--sizes", sized.front()}, dir.path());
+    EXPECT_EQ(unmerged.exit_code, 3);
+    EXPECT_NE(unmerged.output.find("give their merge"), std::string::npos) << unmerged.output;
+    const RunResult foreign_sizes =
+        run_driftlab({"gap-eval", "--quick", "--samples", "900", "--sizes", dir.file("sizes")}, dir.path());
+    EXPECT_EQ(foreign_sizes.exit_code, 3);
+    EXPECT_NE(foreign_sizes.output.find(dir.file("sizes") + ": the sizes of another campaign"), std::string::npos)
+        << foreign_sizes.output;
     // A shard run again writes the same bytes.
     const std::string first = file_bytes(dir.file("q3_1.part"));
     const RunResult again =
