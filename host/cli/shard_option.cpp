@@ -25,12 +25,13 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
 
 CLI::Option* add_shard_options(CLI::App* cmd, std::pair<std::size_t, std::size_t>& shard, std::string& part,
                                const std::string& items) {
-    CLI::Option* s = cmd->add_option_function<std::string>(
-                            "--shard", [&shard](const std::string& text) { shard = parse_shard(text); },
-                            "Run shard K of N (K = 0..N-1, as SLURM_ARRAY_TASK_ID counts): the campaign's " + items +
-                                " i with i mod N = K, each as the one-process run makes it; with -o, its part for "
-                                "`driftlab merge` (docs/cluster.md)")
-                         ->type_name("K/N");
+    CLI::Option* s =
+        cmd->add_option_function<std::string>(
+               "--shard", [&shard](const std::string& text) { shard = parse_shard(text); },
+               "Run shard K of N (K = 0..N-1, as SLURM_ARRAY_TASK_ID counts): its share of the campaign's " + items +
+                   " (docs/cluster.md says which), each as the one-process run makes it; with -o, its "
+                   "part for `driftlab merge`")
+            ->type_name("K/N");
     CLI::Option* o =
         cmd->add_option("-o,--output", part, "The shard's part file (written whole: a temporary file, then a rename)")
             ->check(non_empty_path());

@@ -129,6 +129,7 @@ EvalPart merge_parts(const std::vector<std::string>& paths) {
     EvalPart whole = read_part(paths.front());
     const std::size_t n = whole.options.shards;
     ShardSet shards(n, whole.build);
+    const std::vector<std::size_t> shard_of = item_shards(whole.options);
     std::vector<EvalCase> cases;
     std::vector<PairCase> pairs;
     for (const std::string& path : paths) {
@@ -137,13 +138,13 @@ EvalPart merge_parts(const std::vector<std::string>& paths) {
         const std::size_t k = part.options.shard;
         shards.add(k, part.options.shards, part.build, path);
         for (auto& c : part.cases) {
-            if (c.item % n != k || c.item >= whole.cases_total)
+            if (c.item >= whole.cases_total || shard_of[c.item] != k)
                 throw DataError(path, 0,
                                 "holds item " + std::to_string(c.item) + ", not shard " + std::to_string(k) + "'s");
             cases.push_back(std::move(c));
         }
         for (auto& p : part.pairs) {
-            if (p.item % n != k || p.item < whole.cases_total || p.item >= whole.cases_total + whole.pairs_total)
+            if (p.item < whole.cases_total || p.item >= whole.cases_total + whole.pairs_total || shard_of[p.item] != k)
                 throw DataError(path, 0,
                                 "holds item " + std::to_string(p.item) + ", not shard " + std::to_string(k) + "'s");
             pairs.push_back(std::move(p));

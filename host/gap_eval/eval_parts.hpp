@@ -1,8 +1,8 @@
 // A gap-eval campaign in shards (`--shard K/N -o PART`) and their merge (`driftlab merge`). The campaign's items are
-// its logs in the one-process run's order: the cases (run_cases()), then the two-effect logs (run_pairs()); item i
-// belongs to shard i mod N. A log's seed comes from the campaign's seeds and its item's place, never from K or N, so
-// a log is the same in every split. Every shard measures the detection thresholds a_50 itself (the same on each:
-// the same tuning logs), unless a first stage measured them once: its shards (`--measure-sizes --shard K/N`) each
+// its logs in the one-process run's order: the cases (run_cases()), then the two-effect logs (run_pairs());
+// item_shards() deals them to the shards. A log's seed comes from the campaign's seeds and its item's place, never from
+// K or N, so a log is the same in every split. Every shard measures the detection thresholds a_50 itself (the same on
+// each: the same tuning logs), unless a first stage measured them once: its shards (`--measure-sizes --shard K/N`) each
 // measure the generators g with g mod N = K, and their merge is the sizes file every case shard reads (`--sizes`). A
 // part holds its shard's diagnosed logs whole (CBOR, every double exact), the campaign's options and the build that ran
 // it; the merge checks that the parts are one campaign, complete and without repeats, and gives back what the

@@ -377,6 +377,25 @@ std::size_t pair_items(const EvalOptions& options) {
     return static_cast<std::size_t>(options.score_last - options.score_first + 1) * options.pairs.size();
 }
 
+std::vector<std::size_t> item_shards(const EvalOptions& options) {
+    const std::vector<CaseJob> jobs = case_jobs(options);
+    std::vector<std::string> kinds;
+    for (const std::size_t i : run_places(options, jobs))
+        kinds.push_back(jobs[i].generator + "@" + format_double(jobs[i].level));
+    for (std::uint64_t s = options.score_first; s <= options.score_last; ++s)
+        for (std::size_t k = 0; k < options.pairs.size(); ++k) kinds.push_back("pair " + std::to_string(k));
+    // Groups in the order they first appear; within a group, the items in theirs.
+    std::vector<std::string> order;
+    for (const std::string& k : kinds)
+        if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
+    std::vector<std::size_t> out(kinds.size());
+    std::size_t dealt = 0;
+    for (const std::string& group : order)
+        for (std::size_t i = 0; i < kinds.size(); ++i)
+            if (kinds[i] == group) out[i] = dealt++ % options.shards;
+    return out;
+}
+
 std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes) {
     const std::vector<CaseJob> jobs = case_jobs(options);
     // Without tuning the tuning logs are skipped but keep their places, so that a scoring log's seed (its place in
@@ -385,10 +404,11 @@ std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<De
     std::vector<std::uint64_t> run_seeds(jobs.size());
     for (std::size_t i = 0; i < jobs.size(); ++i) run_seeds[i] = jobs[i].seed;
     const std::vector<std::uint64_t> log_seeds = case_seeds(run_seeds);
-    // The shard's items: item n (the n-th log diagnosed) is shard n mod N's.
+    // The shard's items (item n: the n-th log diagnosed).
+    const std::vector<std::size_t> shard_of = item_shards(options);
     std::vector<std::size_t> mine;
     for (std::size_t n = 0; n < places.size(); ++n)
-        if (n % options.shards == options.shard) mine.push_back(n);
+        if (shard_of[n] == options.shard) mine.push_back(n);
     std::vector<EvalCase> out(mine.size());
     run_logs(mine.size(), options, [&](std::size_t m) {
         const std::size_t i = places[mine[m]];
@@ -436,9 +456,10 @@ std::vector<PairCase> run_pairs(const EvalOptions& options, const std::vector<De
         for (std::size_t k = 0; k < options.pairs.size(); ++k) jobs.push_back({k, (s << 32) + 0x9A1Bull + k});
     // Items follow the cases': pair n is item case_items() + n.
     const std::size_t first_item = case_items(options);
+    const std::vector<std::size_t> shard_of = item_shards(options);
     std::vector<std::size_t> mine;
     for (std::size_t n = 0; n < jobs.size(); ++n)
-        if ((first_item + n) % options.shards == options.shard) mine.push_back(n);
+        if (shard_of[first_item + n] == options.shard) mine.push_back(n);
     std::vector<PairCase> out(mine.size());
     run_logs(mine.size(), options, [&](std::size_t m) {
         const Job& job = jobs[mine[m]];

@@ -143,6 +143,12 @@ bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok);
 std::size_t case_items(const EvalOptions& options);
 std::size_t pair_items(const EvalOptions& options);
 
+/// The shard (of options.shards) that diagnoses each item of the campaign, the cases' then the pairs': the items
+/// grouped by what they plant (a generator at a size, a pair) and dealt round-robin group after group, so that every
+/// shard gets an even share of every kind of log. The kinds differ in cost several times over, and item i mod N had
+/// given each shard whole generators (every seed lists them in one order): one of two shards took 1.5 x the other.
+std::vector<std::size_t> item_shards(const EvalOptions& options);
+
 /// Runs every case (tuning and scoring seeds) of the shard, planting each generator at level x its a_50 from `sizes`.
 std::vector<EvalCase> run_cases(const EvalOptions& options, const std::vector<DetectionSize>& sizes);
 
