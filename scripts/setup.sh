@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package driftlab needs. Idempotent: packages already present are left alone.
-# Works as root or through sudo. Usage: scripts/setup.sh
+# Works as root or through sudo. Usage: scripts/setup.sh [--bench]
+#   --bench  also the peers bench/peers/run.sh compares driftlab with (numpy, scipy) and GNU time for peak memory:
+#            benchmark-only, never needed to build or test
 set -euo pipefail
 
 packages=(
@@ -23,6 +25,9 @@ packages=(
   # campaigns on a cluster (docs/cluster.md), and the single-node cluster its test starts (tests/slurm)
   slurm-wlm munge
 )
+if [ "${1:-}" = "--bench" ]; then
+  packages+=(python3-numpy python3-scipy time)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -2,6 +2,7 @@
 #include "host/fit/file_analysis.hpp"
 
 #include <algorithm>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "host/stats/uniform_grid.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
+#include "host/util/parallel_for.hpp"
 
 namespace driftlab::host::fit {
 namespace {
@@ -130,19 +132,21 @@ FileAnalysis analyse_file(const FileAnalysisRequest& request) {
                                 request.sample_period_s.value_or(1.0));
     }
     if (request.sample_period_s) check_sample_period(all, *request.sample_period_s, out);
-    for (const Series& s : all) {
-        SeriesOutcome o;
-        o.name = s.name;
+    // The series are independent: one to a core (a million rows of four channels took 1.4 s one after another).
+    out.series.resize(all.size());
+    const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    parallel_for(all.size(), threads, [&](std::size_t i) {
+        SeriesOutcome& o = out.series[i];
+        o.name = all[i].name;
         try {
-            o.analysis = analyse_drift(s, request.options);
+            o.analysis = analyse_drift(all[i], request.options);
         } catch (const DataError& e) {
             // The caller reports the file once; keep the series' own message.
             o.error = e.what();
             const std::string prefix = request.path + ": ";
             if (o.error.rfind(prefix, 0) == 0) o.error.erase(0, prefix.size());
         }
-        out.series.push_back(std::move(o));
-    }
+    });
     // Said once for the file: its series share their rows.
     if (!all.empty())
         for (std::string& note : selection_notes(all.front().t_s, request.options.t_min_s, request.options.t_max_s,
