@@ -48,7 +48,7 @@ std::size_t rows_in(const std::vector<double>& t_s, const TimeWindow& w, double 
 /// The rows of `s` with t_min_s <= t_s <= t_max_s and outside every window of `excluded` (both ends included), with
 /// their raw values. Throws DataError naming the series and the window when a window holds none of the rows in range:
 /// a mistaken time, not nothing to do.
-Series rows_kept(const Series& s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded = {});
+Series rows_kept(Series s, double t_min_s, double t_max_s, const std::vector<TimeWindow>& excluded = {});
 
 /// The quantum of the values of `s` where it is known: one converter code for a log channel's counts, else 0 (a plain
 /// table's column), as lone_values() takes it.
