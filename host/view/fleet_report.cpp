@@ -108,7 +108,7 @@ void write_fleet_report(const FleetView& v, const std::string& dir) {
     const std::vector<std::string> figures =
         gnuplot_available() ? write_fleet_plots(v, dir) : std::vector<std::string>{};
     std::ofstream md(dir + "/fleet.md");
-    md << "# Fleet of " << counted(v.batch.boards, "board") << "\n\n" << v.batch.analysed << " analysed.\n\n";
+    md << "# Fleet of " << counted(v.batch.boards, "log") << "\n\n" << v.batch.analysed << " boards analysed.\n\n";
     md << "## Boards that stand out\n\n";
     if (v.batch.standouts.empty())
         md << "None: every value within its limit of robust spreads from the batch, every analysis done.\n";
