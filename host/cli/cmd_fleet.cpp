@@ -97,7 +97,7 @@ void register_fleet(CLI::App& app) {
         ->check(non_empty_path());
     cmd->add_flag("--no-cache", o->no_cache, "Analyse every log, keep nothing");
     CLI::Option* part = add_shard_options(cmd, o->shard, o->part, "logs");
-    cmd->add_flag("--json", o->json, "Print JSON (keys: boards, batch, standout_z, standouts)")->excludes(part);
+    cmd->add_flag("--json", o->json, "Print JSON (keys: boards, batch, false_standout, standouts)")->excludes(part);
     cmd->add_option("--plot", o->plot_dir, "Draw per channel every board's robust z-score by parameter in this folder")
         ->check(non_empty_path())
         ->excludes(part);

@@ -1,7 +1,7 @@
 // A fleet in shards and their merge; see fleet_parts.hpp.
 #include "host/fleet/fleet_parts.hpp"
 
-#include <optional>
+#include <numeric>
 
 #include "host/fleet/board_json.hpp"
 #include "host/util/error.hpp"
@@ -50,29 +50,19 @@ FleetPart merge_fleet_parts(const std::vector<std::string>& paths) {
     const std::size_t n = whole.shards;
     const std::size_t logs = whole.campaign.at("logs").size();
     ShardSet shards(n, whole.build);
-    std::vector<std::optional<BoardEntry>> by_item(logs);
+    ItemSlots<BoardEntry> boards(logs, "board");
     for (const std::string& path : paths) {
         FleetPart part = path == paths.front() ? whole : read_fleet_part(path);
         if (part.campaign != whole.campaign)
             throw DataError(path, 0, "of another fleet: its logs or options differ (" + part.campaign.dump() + ")");
-        const std::size_t k = part.shard;
-        shards.add(k, part.shards, part.build, path);
-        for (std::size_t i = 0; i < part.items.size(); ++i) {
-            const std::size_t item = part.items[i];
-            if (item >= logs || item % n != k || by_item[item])
-                throw DataError(path, 0,
-                                "holds board " + std::to_string(item) + ", not shard " + std::to_string(k) + "'s");
-            by_item[item] = std::move(part.boards[i]);
-        }
+        shards.add(part.shard, part.shards, part.build, path);
+        for (std::size_t i = 0; i < part.items.size(); ++i)
+            boards.put(part.items[i], part.shard, part.items[i] % n, std::move(part.boards[i]), path);
     }
     shards.check_complete(paths.front());
-    whole.items.clear();
-    whole.boards.clear();
-    for (std::size_t i = 0; i < logs; ++i) {
-        if (!by_item[i]) throw DataError(paths.front(), 0, "its fleet's parts miss board " + std::to_string(i));
-        whole.items.push_back(i);
-        whole.boards.push_back(std::move(*by_item[i]));
-    }
+    whole.boards = boards.take(paths.front());
+    whole.items.resize(logs);
+    std::iota(whole.items.begin(), whole.items.end(), std::size_t{0});
     whole.shard = 0;
     whole.shards = 1;
     return whole;

@@ -2,7 +2,7 @@
 #include "host/gap_eval/eval_parts.hpp"
 
 #include <algorithm>
-#include <optional>
+#include <numeric>
 
 #include <nlohmann/json.hpp>
 
@@ -206,7 +206,7 @@ SizesPart merge_sizes_parts(const std::vector<std::string>& paths) {
     SizesPart whole = read_sizes_part(paths.front());
     const std::size_t n = whole.options.shards;
     ShardSet shards(n, whole.build);
-    std::vector<std::optional<DetectionSize>> by_item(whole.generators);
+    ItemSlots<DetectionSize> sizes(whole.generators, "generator");
     for (const std::string& path : paths) {
         SizesPart part = path == paths.front() ? whole : read_sizes_part(path);
         if (options_json(part.options) != options_json(whole.options) || part.generators != whole.generators)
@@ -214,22 +214,13 @@ SizesPart merge_sizes_parts(const std::vector<std::string>& paths) {
                             "of another campaign: its options differ (" + options_json(part.options).dump() + ")");
         const std::size_t k = part.options.shard;
         shards.add(k, part.options.shards, part.build, path);
-        for (std::size_t i = 0; i < part.items.size(); ++i) {
-            const std::size_t g = part.items[i];
-            if (g >= whole.generators || g % n != k || by_item[g])
-                throw DataError(path, 0,
-                                "holds generator " + std::to_string(g) + ", not shard " + std::to_string(k) + "'s");
-            by_item[g] = std::move(part.sizes[i]);
-        }
+        for (std::size_t i = 0; i < part.items.size(); ++i)
+            sizes.put(part.items[i], k, part.items[i] % n, std::move(part.sizes[i]), path);
     }
     shards.check_complete(paths.front());
-    whole.items.clear();
-    whole.sizes.clear();
-    for (std::size_t g = 0; g < whole.generators; ++g) {
-        if (!by_item[g]) throw DataError(paths.front(), 0, "its parts miss generator " + std::to_string(g));
-        whole.items.push_back(g);
-        whole.sizes.push_back(std::move(*by_item[g]));
-    }
+    whole.sizes = sizes.take(paths.front());
+    whole.items.resize(whole.generators);
+    std::iota(whole.items.begin(), whole.items.end(), std::size_t{0});
     whole.options.shard = 0;
     whole.options.shards = 1;
     return whole;

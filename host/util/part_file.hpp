@@ -4,11 +4,14 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "host/util/error.hpp"
 
 namespace driftlab::host {
 
@@ -39,6 +42,36 @@ public:
 private:
     std::vector<std::string> paths_;
     std::string build_;
+};
+
+/// The items of a campaign's parts, each put in its place as the parts are read (a fleet's boards, the sizes stage's
+/// generators): every item once, from the shard that owns it, none missing.
+template <class T>
+class ItemSlots {
+public:
+    /// `noun` names an item in messages ("board", "generator").
+    ItemSlots(std::size_t items, std::string noun) : slots_(items), noun_(std::move(noun)) {}
+    /// Puts `value` as item `item` of shard `shard`, read from `path`, where `owner` is the shard that owns the item.
+    /// Throws DataError naming `path` when the item is beyond the campaign, another shard's, or met before.
+    void put(std::size_t item, std::size_t shard, std::size_t owner, T value, const std::string& path) {
+        if (item >= slots_.size() || owner != shard || slots_[item])
+            throw DataError(
+                path, 0, "holds " + noun_ + " " + std::to_string(item) + ", not shard " + std::to_string(shard) + "'s");
+        slots_[item] = std::move(value);
+    }
+    /// Every item in order. Throws DataError naming `first` (the campaign's first part) when one is missing.
+    std::vector<T> take(const std::string& first) {
+        std::vector<T> out;
+        for (std::size_t i = 0; i < slots_.size(); ++i) {
+            if (!slots_[i]) throw DataError(first, 0, "its parts miss " + noun_ + " " + std::to_string(i));
+            out.push_back(std::move(*slots_[i]));
+        }
+        return out;
+    }
+
+private:
+    std::vector<std::optional<T>> slots_;
+    std::string noun_;
 };
 
 }  // namespace driftlab::host

@@ -1,5 +1,6 @@
 // The plots and the markdown report of a fleet; see fleet_view.hpp.
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 
@@ -63,11 +64,6 @@ std::vector<std::string> judged_channels(const FleetView& v) {
     return out;
 }
 
-std::string markdown_cell(const fleet::Estimate& e) {
-    if (!e.known) return "–";
-    return std::isfinite(e.std_error) ? value_with_error(e.value, e.std_error, "±") : significant_plain(e.value, 5);
-}
-
 void write_boards(std::ostream& md, const FleetView& v) {
     md << "## Boards\n\n| log | channel | C1 [counts] | C2 [counts] | T [s] | N | B | K | gap |\n"
        << "|---|---|---|---|---|---|---|---|---|\n";
@@ -75,7 +71,7 @@ void write_boards(std::ostream& md, const FleetView& v) {
         if (!b.result) continue;
         for (const fleet::ChannelResult& c : b.result->channels) {
             md << "| " << b.log << " | " << c.channel;
-            for (const fleet::Estimate& e : c.parameters) md << " | " << markdown_cell(e);
+            for (const fleet::Estimate& e : c.parameters) md << " | " << estimate_cell(e, "±", "–");
             md << " | " << (b.result->gap_run ? b.result->gap_verdict : "–") << " |\n";
         }
     }
@@ -87,10 +83,8 @@ void write_batch(std::ostream& md, const FleetView& v) {
        << "| channel | parameter | unit | boards | median | spread | range |\n|---|---|---|---|---|---|---|\n";
     for (const fleet::Distribution& d : v.batch.distributions)
         md << "| " << d.channel << " | " << kParameters[d.parameter].name << " | " << kParameters[d.parameter].unit
-           << " | " << d.boards << " | " << significant_plain(d.median, 5) << " | "
-           << (kParameters[d.parameter].log_scale ? "×/" + significant_plain(d.factor, 3)
-                                                  : significant_plain(d.spread, 3))
-           << " | " << significant_plain(d.low, 4) << " – " << significant_plain(d.high, 4) << " |\n";
+           << " | " << d.boards << " | " << significant_plain(d.median, 5) << " | " << spread_cell(d, "×/") << " | "
+           << significant_plain(d.low, 4) << " – " << significant_plain(d.high, 4) << " |\n";
 }
 
 }  // namespace

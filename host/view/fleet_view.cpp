@@ -1,6 +1,7 @@
 // Text and JSON of a fleet; see fleet_view.hpp.
 #include "host/view/fleet_view.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "host/fleet/standout_limit.hpp"
@@ -15,18 +16,9 @@ using fleet::kParameters;
 
 namespace {
 
-std::string cell(const fleet::Estimate& e) {
-    if (!e.known) return "-";
-    return std::isfinite(e.std_error) ? value_with_error(e.value, e.std_error, "+-") : significant_plain(e.value, 5);
-}
-
 std::string gap_cell(const fleet::BoardResult& r) {
     if (!r.gap_run) return "-";
     return r.gap_error.empty() ? r.gap_verdict : "failed";
-}
-
-std::string spread_cell(const fleet::Distribution& d) {
-    return kParameters[d.parameter].log_scale ? "x/" + significant_plain(d.factor, 3) : significant_plain(d.spread, 3);
 }
 
 void print_boards(std::ostream& out, const std::vector<BoardEntry>& boards) {
@@ -40,7 +32,8 @@ void print_boards(std::ostream& out, const std::vector<BoardEntry>& boards) {
         for (std::size_t c = 0; c < b.result->channels.size(); ++c) {
             const fleet::ChannelResult& ch = b.result->channels[c];
             std::string cells[6];
-            for (std::size_t i = 0; i < 6; ++i) cells[i] = ch.error.empty() ? cell(ch.parameters[i]) : "-";
+            for (std::size_t i = 0; i < 6; ++i)
+                cells[i] = ch.error.empty() ? estimate_cell(ch.parameters[i], "+-", "-") : "-";
             std::snprintf(line, sizeof line, "  %-24s %-8s %-16s %-18s %-16s %-20s %-20s %-20s %s\n",
                           c == 0 ? b.log.c_str() : "", ch.channel.c_str(), cells[0].c_str(), cells[1].c_str(),
                           cells[2].c_str(), cells[3].c_str(), cells[4].c_str(), cells[5].c_str(),
@@ -60,12 +53,23 @@ void print_batch(std::ostream& out, const fleet::Batch& batch) {
         const std::string range = significant_plain(d.low, 4) + " .. " + significant_plain(d.high, 4);
         std::snprintf(line, sizeof line, "  %-8s %-3s %-14s %6zu %12s %10s  %s\n", d.channel.c_str(),
                       kParameters[d.parameter].name, kParameters[d.parameter].unit, d.boards,
-                      significant_plain(d.median, 5).c_str(), spread_cell(d).c_str(), range.c_str());
+                      significant_plain(d.median, 5).c_str(), spread_cell(d, "x/").c_str(), range.c_str());
         out << line;
     }
 }
 
 }  // namespace
+
+std::string estimate_cell(const fleet::Estimate& e, const std::string& plus_minus, const std::string& unknown) {
+    if (!e.known) return unknown;
+    return std::isfinite(e.std_error) ? value_with_error(e.value, e.std_error, plus_minus)
+                                      : significant_plain(e.value, 5);
+}
+
+std::string spread_cell(const fleet::Distribution& d, const std::string& factor_sign) {
+    return kParameters[d.parameter].log_scale ? factor_sign + significant_plain(d.factor, 3)
+                                              : significant_plain(d.spread, 3);
+}
 
 void print_fleet_text(std::ostream& out, const FleetView& v) {
     const std::vector<BoardEntry>& boards = *v.boards;

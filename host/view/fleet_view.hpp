@@ -20,6 +20,11 @@ struct FleetView {
 };
 
 void print_fleet_text(std::ostream& out, const FleetView& v);
+/// A board's parameter in a table: "value ± error" with `plus_minus` between them, `unknown` where the log does not
+/// determine it (text and report alike, each in its own symbols).
+std::string estimate_cell(const fleet::Estimate& e, const std::string& plus_minus, const std::string& unknown);
+/// A batch's spread in a table: for a log-scale parameter its factor after `factor_sign` ("x/", "×/"), else the spread.
+std::string spread_cell(const fleet::Distribution& d, const std::string& factor_sign);
 /// "none 19; unexplained 1 (b12.csv). The diagnosis names an effect on a clean log about 5 % of the time: 1 of 20
 /// boards by chance".
 std::string verdict_summary(const FleetView& v);
