@@ -10,7 +10,7 @@ packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libgtest-dev libgmock-dev libbenchmark-dev
   # host libraries
-  libeigen3-dev libboost-math-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libnlopt-dev
+  libeigen3-dev libboost-math-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libnlopt-dev libfftw3-dev
   libserial-dev libusb-1.0-0-dev
   # tests: the gzip-compressed reference phase record (tests/host/stats)
   zlib1g-dev

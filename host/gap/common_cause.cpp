@@ -11,7 +11,8 @@
 #include "host/gap/whittle.hpp"
 #include "host/stats/nelder_mead.hpp"
 #include "host/util/fft_length.hpp"
-#include "host/util/thread_fft.hpp"
+#include "host/util/parallel_for.hpp"
+#include "host/util/real_fft.hpp"
 #include "sim/effects/supply_coupling.hpp"
 
 namespace driftlab::host::gap {
@@ -27,68 +28,78 @@ constexpr double kSharedMargin = 2.0;
 // The channels' differenced residuals in the frequency domain, with what every reading's spectrum is built from. The
 // expected periodograms are the finite series' own (its taper and length, whittle.hpp), not the spectral density: a
 // differenced series has no power at frequency 0, and the density's zero there would read the taper's leakage as
-// a slow process. Built in place and never moved (the expected periodogram refers to its members).
+// a slow process. Every fit (one per thread) keeps its own ExpectedPeriodogram of `geometry`.
 struct Spectra {
     std::vector<std::size_t> channels;                 // analysed channel indices
     std::vector<std::vector<std::complex<double>>> x;  // per channel: tapered DFT / sqrt(taper energy), bins 1..m
     PartPeriodogram geometry;                          // the shared length and taper
     std::vector<double> floor_acov;
-    std::vector<double> floor;  // the unit white floor's expected periodogram
-    std::unique_ptr<ExpectedPeriodogram> expected;
-    double dt = 1.0;      // output period [s]
-    double span_s = 1.0;  // the log's length [s]
+    std::vector<double> floor;             // the unit white floor's expected periodogram f_j
+    double log_floor_sum = 0.0;            // sum_j ln f_j
+    std::vector<double> power_over_floor;  // per channel: sum_j |x_j|^2 / f_j
+    double dt = 1.0;                       // output period [s]
+    double span_s = 1.0;                   // the log's length [s]
+    int threads = 1;                       // the fits' independent starts and channels run on this many
 };
 
 std::size_t bins(const Spectra& s) { return s.floor.size(); }
 
 // A unit-variance Gauss-Markov process's expected periodogram (correlation time `tau`).
-std::vector<double> unit_gm(const Spectra& s, double tau) {
+std::vector<double> unit_gm(const Spectra& s, ExpectedPeriodogram& e, double tau) {
     OutputSpectrum m;
     m.ar1 = {{1.0, std::exp(-s.dt / tau)}};
-    return (*s.expected)(m);
+    return e(m);
 }
 
-// One reading's spectrum, per channel (Spectra::channels order): a floor and an optional own process, and a shared
-// rank-1 part.
+double finite_or_huge(double nll) { return std::isfinite(nll) ? nll : 1e300; }
+
+// A shared reading's spectrum, per channel (Spectra::channels order): a floor and a shared rank-1 part.
 struct Reading {
-    std::vector<double> white, own_var, own_tau, loading;
-    double tau = 0.0;  // the shared part's correlation time; `loading` empty for none
+    std::vector<double> white, loading;
+    double tau = 0.0;  // the shared part's correlation time
 };
 
-// Whittle nll over the channels `subset` (indices into Spectra::channels): sum_j ln det S_j + X_j^H S_j^-1 X_j with
-// S = D + g a a' (Sherman-Morrison: both closed).
-double reading_nll(const Spectra& s, const Reading& r, const std::vector<std::size_t>& subset) {
+// Whittle nll of channel i read alone: sum_j ln d_j + |x_j|^2 / d_j, d_j = w f_j + v o_j (o the own process's unit
+// periodogram, none for v = 0: then in closed form from the sums kept in Spectra).
+double alone_nll(const Spectra& s, ExpectedPeriodogram& e, std::size_t i, double w, double v, double tau) {
     const std::size_t m = bins(s);
-    std::vector<std::vector<double>> own(s.channels.size());
-    for (std::size_t c : subset)
-        if (r.own_var[c] > 0.0) own[c] = unit_gm(s, r.own_tau[c]);
-    const std::vector<double> g = r.loading.empty() ? std::vector<double>{} : unit_gm(s, r.tau);
+    if (v <= 0.0)
+        return finite_or_huge(static_cast<double>(m) * std::log(w) + s.log_floor_sum + s.power_over_floor[i] / w);
+    const std::vector<double> o = unit_gm(s, e, tau);
     double nll = 0.0;
     for (std::size_t j = 0; j < m; ++j) {
-        double q = 0.0;
-        std::complex<double> u = 0.0;
-        for (std::size_t c : subset) {
-            const double d = r.white[c] * s.floor[j] + (own[c].empty() ? 0.0 : r.own_var[c] * own[c][j]);
-            const std::complex<double> xc = s.x[c][j];
-            nll += std::log(d) + std::norm(xc) / d;
-            if (!g.empty()) {
-                q += r.loading[c] * r.loading[c] / d;
-                u += r.loading[c] * xc / d;
-            }
-        }
-        if (!g.empty()) nll += std::log1p(g[j] * q) - g[j] * std::norm(u) / (1.0 + g[j] * q);
+        const double d = w * s.floor[j] + v * o[j];
+        nll += std::log(d) + std::norm(s.x[i][j]) / d;
     }
-    return std::isfinite(nll) ? nll : 1e300;
+    return finite_or_huge(nll);
 }
 
-std::vector<std::size_t> all_of(const Spectra& s) {
-    std::vector<std::size_t> out(s.channels.size());
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = i;
-    return out;
+// Whittle nll of a shared reading over every channel: sum_j ln det S_j + X_j^H S_j^-1 X_j with S_j = f_j W + g_j L L'
+// (W the floors, diagonal; Sherman-Morrison: both closed). With a = W^-1 L, A = L'a and t_j = g_j A / f_j, the floors'
+// part sums in closed form and each bin adds ln(1 + t_j) - g_j |a'X_j|^2 / (f_j^2 (1 + t_j)).
+double shared_nll(const Spectra& s, ExpectedPeriodogram& e, const Reading& r) {
+    const std::size_t k = s.channels.size(), m = bins(s);
+    double nll = 0.0, size = 0.0;
+    std::vector<double> a(k);
+    for (std::size_t c = 0; c < k; ++c) {
+        nll += static_cast<double>(m) * std::log(r.white[c]) + s.log_floor_sum + s.power_over_floor[c] / r.white[c];
+        a[c] = r.loading[c] / r.white[c];
+        size += r.loading[c] * a[c];
+    }
+    if (size == 0.0) return finite_or_huge(nll);
+    const std::vector<double> g = unit_gm(s, e, r.tau);
+    for (std::size_t j = 0; j < m; ++j) {
+        std::complex<double> u = 0.0;
+        for (std::size_t c = 0; c < k; ++c) u += a[c] * s.x[c][j];
+        const double gf = g[j] / s.floor[j], t = gf * size;
+        nll += std::log1p(t) - gf / s.floor[j] * std::norm(u) / (1.0 + t);
+    }
+    return finite_or_huge(nll);
 }
 
 void transform(Spectra& s, const std::array<const std::vector<double>*, kChannelCount>& residuals,
-               const GapModel& model) {
+               const GapModel& model, int threads) {
+    s.threads = threads;
     s.dt = model.smoothing.sample_period_s;
     s.floor_acov = white_floor_autocovariance(model.smoothing);
     for (std::size_t c = 0; c < kChannelCount; ++c)
@@ -108,54 +119,62 @@ void transform(Spectra& s, const std::array<const std::vector<double>*, kChannel
         for (std::size_t j = 0; j < x.size(); ++j) x[j] = f[j + 1] / std::sqrt(s.geometry.taper_energy);
         s.x.push_back(std::move(x));
     }
-    s.expected = std::make_unique<ExpectedPeriodogram>(s.floor_acov, s.geometry);
     OutputSpectrum unit_floor;
     unit_floor.white = 1.0;
-    s.floor = (*s.expected)(unit_floor);
+    s.floor = ExpectedPeriodogram(s.floor_acov, s.geometry)(unit_floor);
+    for (double f : s.floor) s.log_floor_sum += std::log(f);
+    for (const auto& x : s.x) {
+        double sum = 0.0;
+        for (std::size_t j = 0; j < x.size(); ++j) sum += std::norm(x[j]) / s.floor[j];
+        s.power_over_floor.push_back(sum);
+    }
 }
 
 // Correlation times a fit starts from: spread over the log's span.
 std::array<double, 3> tau_starts(const Spectra& s) { return {s.span_s / 100.0, s.span_s / 20.0, s.span_s / 5.0}; }
 
-// One channel alone: its floor, and its floor with an own process; the lower criterion stays.
-void fit_separate_channel(const Spectra& s, std::size_t i, double price, CommonFit& fit) {
-    const std::size_t k = s.channels.size();
-    double w = 0.0;
-    for (std::size_t j = 0; j < bins(s); ++j) w += std::norm(s.x[i][j]) / s.floor[j];
-    w /= static_cast<double>(bins(s));
-    Reading r{std::vector<double>(k, w), std::vector<double>(k, 0.0), std::vector<double>(k, 1.0), {}, 0.0};
-    const double nll_floor = reading_nll(s, r, {i});
-    double best = 2.0 * nll_floor + price, best_nll = nll_floor;
-    const std::size_t c = s.channels[i];
-    fit.white[c] = w;
+// One channel read alone: its floor, or its floor with an own process, whichever has the lower criterion.
+struct ChannelAlone {
+    double white = 0.0, own_sd = 0.0, own_tau = 0.0, nll = 0.0, criterion = 0.0;
+};
+
+ChannelAlone fit_separate_channel(const Spectra& s, std::size_t i, double price) {
+    ExpectedPeriodogram e(s.floor_acov, s.geometry);
+    const double w = s.power_over_floor[i] / static_cast<double>(bins(s));
+    ChannelAlone out;
+    out.white = w;
+    out.nll = alone_nll(s, e, i, w, 0.0, 1.0);
+    out.criterion = 2.0 * out.nll + price;
     for (double tau0 : tau_starts(s)) {
         const auto f = [&](const std::vector<double>& p) {
-            Reading t = r;
-            t.white[i] = std::exp(p[0]);
-            t.own_var[i] = std::exp(p[1]);
-            t.own_tau[i] = std::exp(p[2]);
-            return reading_nll(s, t, {i});
+            return alone_nll(s, e, i, std::exp(p[0]), std::exp(p[1]), std::exp(p[2]));
         };
         const auto nm = stats::nelder_mead(f, {std::log(w * 0.8), std::log(w * 0.5), std::log(tau0)}, {0.3, 1.0, 0.7},
                                            kOwnEvaluations);
-        if (2.0 * nm.value + 3.0 * price < best) {
-            best = 2.0 * nm.value + 3.0 * price;
-            best_nll = nm.value;
-            fit.white[c] = std::exp(nm.x[0]);
-            fit.own_sd[c] = std::sqrt(std::exp(nm.x[1]));
-            fit.own_tau[c] = std::exp(nm.x[2]);
+        if (2.0 * nm.value + 3.0 * price < out.criterion) {
+            out = {std::exp(nm.x[0]), std::sqrt(std::exp(nm.x[1])), std::exp(nm.x[2]), nm.value,
+                   2.0 * nm.value + 3.0 * price};
         }
     }
-    fit.nll += best_nll;
-    fit.parameters += fit.own_sd[c] > 0.0 ? 3 : 1;
-    fit.channel_criterion[c] = best;
-    fit.criterion += best;
+    return out;
 }
 
+// The channels alone, one to a thread; summed in channel order.
 CommonFit fit_separate(const Spectra& s, double price) {
+    std::vector<ChannelAlone> alone(s.channels.size());
+    parallel_for(alone.size(), s.threads, [&](std::size_t i) { alone[i] = fit_separate_channel(s, i, price); });
     CommonFit fit;
     fit.reading = kCommonReadings[0];
-    for (std::size_t i = 0; i < s.channels.size(); ++i) fit_separate_channel(s, i, price, fit);
+    for (std::size_t i = 0; i < alone.size(); ++i) {
+        const std::size_t c = s.channels[i];
+        fit.white[c] = alone[i].white;
+        fit.own_sd[c] = alone[i].own_sd;
+        fit.own_tau[c] = alone[i].own_tau;
+        fit.nll += alone[i].nll;
+        fit.parameters += alone[i].own_sd > 0.0 ? 3 : 1;
+        fit.channel_criterion[c] = alone[i].criterion;
+        fit.criterion += alone[i].criterion;
+    }
     return fit;
 }
 
@@ -166,8 +185,6 @@ double price_of(const Spectra& s) { return std::log(static_cast<double>(bins(s) 
 Reading shared_reading(const Spectra& s, const std::vector<double>& p, const std::vector<double>& dc) {
     const std::size_t k = s.channels.size();
     Reading r;
-    r.own_var.assign(k, 0.0);
-    r.own_tau.assign(k, 1.0);
     for (std::size_t c = 0; c < k; ++c) r.white.push_back(std::exp(p[c]));
     const bool ratio = p.size() == k + 2;
     for (std::size_t c = 0; c < k; ++c) r.loading.push_back(ratio ? p[k] * dc[c] : p[k + c]);
@@ -188,13 +205,14 @@ CommonFit to_fit(const Spectra& s, const std::string& reading, const Reading& r,
     fit.parameters = parameters;
     fit.criterion = 2.0 * nll + price * parameters;
     // A channel is loaded when leaving its loading out (its floor refitted) costs more than one parameter's price.
+    ExpectedPeriodogram e(s.floor_acov, s.geometry);
     for (std::size_t i = 0; i < s.channels.size(); ++i) {
         Reading without = r;
         without.loading[i] = 0.0;
         const auto f = [&](const std::vector<double>& p) {
             Reading t = without;
             t.white[i] = std::exp(p[0]);
-            return reading_nll(s, t, all_of(s));
+            return shared_nll(s, e, t);
         };
         const double refit = stats::nelder_mead(f, {std::log(r.white[i])}, {0.3}, 60).value;
         fit.loaded[s.channels[i]] = 2.0 * (refit - nll) > price;
@@ -202,17 +220,21 @@ CommonFit to_fit(const Spectra& s, const std::string& reading, const Reading& r,
     return fit;
 }
 
-// Nelder-Mead from each start; the best optimum.
-stats::NelderMeadResult best_of(const std::function<double(const std::vector<double>&)>& f,
+// Nelder-Mead from each start, the starts one to a thread; the best optimum (the first of equals).
+stats::NelderMeadResult best_of(const Spectra& s, const std::function<Reading(const std::vector<double>&)>& reading,
                                 const std::vector<std::vector<double>>& starts, const std::vector<double>& step) {
+    std::vector<stats::NelderMeadResult> runs(starts.size());
+    parallel_for(starts.size(), s.threads, [&](std::size_t n) {
+        ExpectedPeriodogram e(s.floor_acov, s.geometry);
+        const auto f = [&](const std::vector<double>& p) { return shared_nll(s, e, reading(p)); };
+        // A second pass from the first's optimum: Nelder-Mead's simplex collapses in 2k + 1 dimensions.
+        const auto nm = stats::nelder_mead(f, starts[n], step, kStartEvaluations);
+        runs[n] = stats::nelder_mead(f, nm.x, step, kStartEvaluations);
+    });
     stats::NelderMeadResult best;
     best.value = 1e300;
-    for (const auto& x0 : starts) {
-        // A second pass from the first's optimum: Nelder-Mead's simplex collapses in 2k + 1 dimensions.
-        auto nm = stats::nelder_mead(f, x0, step, kStartEvaluations);
-        nm = stats::nelder_mead(f, nm.x, step, kStartEvaluations);
+    for (const auto& nm : runs)
         if (nm.value < best.value) best = nm;
-    }
     return best;
 }
 
@@ -261,9 +283,9 @@ std::vector<double> common_residual(const std::vector<double>& t_s, const std::v
 }
 
 CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelCount>& residuals,
-                          const std::array<double, kChannelCount>& dc_counts, const GapModel& model) {
+                          const std::array<double, kChannelCount>& dc_counts, const GapModel& model, int threads) {
     Spectra s;
-    transform(s, residuals, model);
+    transform(s, residuals, model, threads);
     const std::size_t k = s.channels.size();
     CommonFindings out;
     out.compared = true;
@@ -282,9 +304,7 @@ CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelC
     }
     ratio0 /= dc2;
 
-    const auto nll_of = [&](const std::vector<double>& p) {
-        return reading_nll(s, shared_reading(s, p, dc), all_of(s));
-    };
+    const auto reading_of = [&](const std::vector<double>& p) { return shared_reading(s, p, dc); };
     std::vector<double> step(k, 0.3);
     // The ratiometric reading: one coefficient.
     std::vector<std::vector<double>> starts;
@@ -298,7 +318,7 @@ CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelC
     std::vector<double> ratio_step = step;
     ratio_step.push_back(std::max(std::abs(ratio0), 1e-6) * 0.5);
     ratio_step.push_back(0.7);
-    const auto ratio = best_of(nll_of, starts, ratio_step);
+    const auto ratio = best_of(s, reading_of, starts, ratio_step);
     out.fits.push_back(
         to_fit(s, kCommonReadings[1], shared_reading(s, ratio.x, dc), ratio.value, static_cast<int>(k) + 2, price));
     out.fits.back().relative_sd = std::abs(ratio.x[k]);
@@ -319,7 +339,7 @@ CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelC
     for (std::size_t i = 0; i < k; ++i)
         free_step.push_back(std::max(std::abs(start_loading[i]), 0.1 * std::sqrt(sep.white[s.channels[i]])) * 0.5);
     free_step.push_back(0.7);
-    const auto free = best_of(nll_of, free_starts, free_step);
+    const auto free = best_of(s, reading_of, free_starts, free_step);
     out.fits.push_back(
         to_fit(s, kCommonReadings[2], shared_reading(s, free.x, dc), free.value, 2 * static_cast<int>(k) + 1, price));
 
@@ -328,9 +348,9 @@ CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelC
 }
 
 SeparateReading read_channels_alone(const std::array<const std::vector<double>*, kChannelCount>& residuals,
-                                    const GapModel& model) {
+                                    const GapModel& model, int threads) {
     Spectra s;
-    transform(s, residuals, model);
+    transform(s, residuals, model, threads);
     return {fit_separate(s, price_of(s)), price_of(s)};
 }
 

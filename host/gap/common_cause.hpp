@@ -74,9 +74,10 @@ std::vector<double> common_residual(const std::vector<double>& t_s, const std::v
                                     const std::vector<double>& shapes);
 
 /// Fits the three readings to `residuals` (per channel; null for channels not analysed) of a log smoothed as `model`
-/// says, whose channels sit at `dc_counts` (the DC level the ratiometric loading scales). Needs >= 2 channels.
+/// says, whose channels sit at `dc_counts` (the DC level the ratiometric loading scales), the independent fits (a
+/// channel alone, a start) on `threads` threads: the same result for any number. Needs >= 2 channels.
 CommonFindings fit_common(const std::array<const std::vector<double>*, kChannelCount>& residuals,
-                          const std::array<double, kChannelCount>& dc_counts, const GapModel& model);
+                          const std::array<double, kChannelCount>& dc_counts, const GapModel& model, int threads);
 
 /// The `separate` reading alone, and the price of one parameter (ln of the frequencies x channels): what a known
 /// regressor (temperature_coupling.hpp) is judged against, channel by channel.
@@ -85,7 +86,7 @@ struct SeparateReading {
     double price = 0.0;
 };
 SeparateReading read_channels_alone(const std::array<const std::vector<double>*, kChannelCount>& residuals,
-                                    const GapModel& model);
+                                    const GapModel& model, int threads);
 
 /// The located coherence cells of a comparison.
 std::vector<SharedBand> shared_bands(const std::vector<LocatedCell>& located, const std::vector<Cell>& layout);

@@ -290,7 +290,7 @@ void search(GapResult& result, const LogData& log, const GapOptions& options,
 // after what follows the measured temperature is taken out (temperature_coupling.hpp). A shared reading that wins
 // replaces the accepted Gaussian processes of the channels it loads (their size there set to 0 in the models) and joins
 // the models as the library's supply wander.
-void search_common(GapResult& result, const LogData& log) {
+void search_common(GapResult& result, const LogData& log, int threads) {
     CommonFindings& common = result.common;
     std::array<std::vector<double>, kChannelCount> residual;
     std::array<const std::vector<double>*, kChannelCount> r{};
@@ -305,8 +305,9 @@ void search_common(GapResult& result, const LogData& log) {
         r[c] = &residual[c];
         for (double v : log.counts[c]) dc[c] += v / static_cast<double>(log.size());
     }
-    result.temperature = couple_to_temperature(residual, result.channels, temperature_residual(log), result.base);
-    common = fit_common(r, dc, result.base);
+    result.temperature =
+        couple_to_temperature(residual, result.channels, temperature_residual(log), result.base, threads);
+    common = fit_common(r, dc, result.base, threads);
     common.shared = shared_bands(result.located, result.layout);
     const CommonFit* won = common.winner();
     // The replicates cannot replay a measured temperature: a process the search added stays as its stand-in.
@@ -392,7 +393,7 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     const auto analysed = std::count(result.channels.begin(), result.channels.end(), true);
     if (options.explain && analysed >= 2 && !result.located.empty()) {
         tell("reading the channels together");
-        search_common(result, log);
+        search_common(result, log, options.threads);
     }
     if (result.accepted.empty() && !result.common.winner()) {
         result.after = result.before;

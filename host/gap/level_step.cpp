@@ -13,7 +13,7 @@
 #include "host/gap/spectral_fit.hpp"
 #include "host/stats/nelder_mead.hpp"
 #include "host/util/fft_length.hpp"
-#include "host/util/thread_fft.hpp"
+#include "host/util/real_fft.hpp"
 
 namespace driftlab::host::gap {
 
@@ -52,18 +52,14 @@ Largest largest_step(const std::vector<double>& r, const std::vector<double>& de
         d[t] = r[t + 1] - r[t];
         d[m - 1 - t] = -d[t];
     }
-    Eigen::FFT<double>& fft = thread_fft();
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, d);
+    // The mirrored series is real and the density even (density[j] = density[m - j]): the half spectrum holds it all.
+    std::vector<std::complex<double>> spec = half_spectrum(d);
     double kappa = 0.0;
     spec[0] = 0.0;  // the mean difference carries no step location
-    for (std::size_t j = 1; j < m; ++j) {
-        spec[j] /= density[j];
-        kappa += 1.0 / density[j];
-    }
+    for (std::size_t j = 1; j < spec.size(); ++j) spec[j] /= density[j];
+    for (std::size_t j = 1; j < m; ++j) kappa += 1.0 / density[j];
     kappa /= static_cast<double>(m);
-    std::vector<double> u;
-    fft.inv(u, spec);
+    const std::vector<double> u = real_series(spec, m);
     Largest best;
     const std::size_t edge = edge_outputs(n);
     for (std::size_t t = edge; t + edge < n; ++t) {

@@ -37,7 +37,7 @@ std::vector<double> temperature_residual(const LogData& log) {
 
 TemperatureCoupling couple_to_temperature(std::array<std::vector<double>, kChannelCount>& residuals,
                                           const std::array<bool, kChannelCount>& channels,
-                                          const std::vector<double>& temperature, const GapModel& model) {
+                                          const std::vector<double>& temperature, const GapModel& model, int threads) {
     TemperatureCoupling out;
     if (temperature.empty() || std::count(channels.begin(), channels.end(), true) < 2) return out;
     out.compared = true;
@@ -52,8 +52,8 @@ TemperatureCoupling couple_to_temperature(std::array<std::vector<double>, kChann
         out.coefficient[c] = ty / tt;
         for (std::size_t k = 0; k < temperature.size(); ++k) regressed[c][k] -= out.coefficient[c] * temperature[k];
     }
-    const SeparateReading before = read_channels_alone(pointers(residuals, channels), model);
-    const SeparateReading after = read_channels_alone(pointers(regressed, channels), model);
+    const SeparateReading before = read_channels_alone(pointers(residuals, channels), model, threads);
+    const SeparateReading after = read_channels_alone(pointers(regressed, channels), model, threads);
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         if (!channels[c]) continue;
         out.gain[c] = before.fit.channel_criterion[c] - after.fit.channel_criterion[c];

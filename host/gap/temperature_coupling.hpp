@@ -28,9 +28,9 @@ struct TemperatureCoupling {
 std::vector<double> temperature_residual(const LogData& log);
 
 /// Regresses `residuals` (per channel; null for channels not analysed) on `temperature` (temperature_residual()) and
-/// takes the coupling out of the channels where it pays.
+/// takes the coupling out of the channels where it pays (the channels' fits on `threads` threads).
 TemperatureCoupling couple_to_temperature(std::array<std::vector<double>, kChannelCount>& residuals,
                                           const std::array<bool, kChannelCount>& channels,
-                                          const std::vector<double>& temperature, const GapModel& model);
+                                          const std::vector<double>& temperature, const GapModel& model, int threads);
 
 }  // namespace driftlab::host::gap

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "host/util/fft_length.hpp"
-#include "host/util/thread_fft.hpp"
+#include "host/util/real_fft.hpp"
 
 namespace driftlab::host::gap {
 
@@ -91,12 +91,9 @@ PartPeriodogram part_periodogram(const std::vector<double>& e, const std::vector
     // Taper overlap sum_t h_t h_{t+tau}: the taper's autocorrelation, zero-padded so that it does not wrap.
     const std::size_t padded = smooth_length_at_least(2 * p.length);
     h.resize(padded, 0.0);
-    Eigen::FFT<double>& fft = thread_fft();
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, h);
+    std::vector<std::complex<double>> spec = half_spectrum(h);
     for (auto& s : spec) s = std::norm(s);
-    std::vector<double> overlap;
-    fft.inv(overlap, spec);
+    const std::vector<double> overlap = real_series(spec, padded);
     p.mask_overlap.resize(p.length);
     for (std::size_t tau = 0; tau < p.length; ++tau) p.mask_overlap[tau] = std::max(0.0, overlap[tau]) / h2;
     h.resize(p.length);

@@ -3,7 +3,7 @@
 #include <complex>
 
 #include "host/gap_eval/truth.hpp"
-#include "host/util/thread_fft.hpp"
+#include "host/util/real_fft.hpp"
 #include "sim/model/rng.hpp"
 
 namespace driftlab::host::gap {
@@ -30,16 +30,13 @@ std::vector<double> truth_kasdin_flicker(const std::vector<double>& t_s, double 
     while (nfft < 2 * n) nfft <<= 1;
     std::vector<double> white(nfft);
     for (double& w : white) w = rng.normal();
-    Eigen::FFT<double>& fft = thread_fft();
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, white);
+    std::vector<std::complex<double>> spec = half_spectrum(white);
     spec[0] = 0.0;
     for (std::size_t k = 1; k < spec.size(); ++k) {
-        const double f = static_cast<double>(std::min(k, nfft - k)) / static_cast<double>(nfft);
+        const double f = static_cast<double>(k) / static_cast<double>(nfft);
         spec[k] *= 1.0 / std::sqrt(f);
     }
-    std::vector<double> shaped;
-    fft.inv(shaped, spec);
+    const std::vector<double> shaped = real_series(spec, nfft);
     std::vector<double> out(shaped.begin(), shaped.begin() + static_cast<std::ptrdiff_t>(n));
     scale_to_sd(out, size_counts);
     return out;

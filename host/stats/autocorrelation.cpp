@@ -5,7 +5,7 @@
 #include <complex>
 
 #include "host/util/fft_length.hpp"
-#include "host/util/thread_fft.hpp"
+#include "host/util/real_fft.hpp"
 
 namespace driftlab::host::stats {
 
@@ -19,12 +19,9 @@ std::vector<double> biased_autocovariance(const std::vector<double>& w, std::siz
     const std::size_t size = 2 * smooth_length_at_least((n + max_lag + 1) / 2);
     std::vector<double> padded(size, 0.0);
     std::copy(w.begin(), w.end(), padded.begin());
-    Eigen::FFT<double>& fft = thread_fft();
-    std::vector<std::complex<double>> spectrum;
-    fft.fwd(spectrum, padded);
+    std::vector<std::complex<double>> spectrum = half_spectrum(padded);
     for (auto& x : spectrum) x = std::norm(x);
-    std::vector<double> circular;
-    fft.inv(circular, spectrum);
+    const std::vector<double> circular = real_series(spectrum, size);
     std::vector<double> r(max_lag + 1);
     for (std::size_t d = 0; d <= max_lag; ++d) r[d] = circular[d] / static_cast<double>(n);
     return r;

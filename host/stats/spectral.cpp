@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "host/stats/autocorrelation.hpp"
-#include "host/util/thread_fft.hpp"
+#include "host/util/real_fft.hpp"
 
 namespace driftlab::host::stats {
 

@@ -46,11 +46,11 @@ Simulated simulate(const GapModel& m, std::uint64_t seed) {
     return s;
 }
 
-CommonFindings fit(const GapModel& m, std::uint64_t seed) {
+CommonFindings fit(const GapModel& m, std::uint64_t seed, int threads = 2) {
     const Simulated s = simulate(m, seed);
     std::array<const std::vector<double>*, kChannelCount> r{};
     for (std::size_t c = 0; c < kChannelCount; ++c) r[c] = &s.residual[c];
-    return fit_common(r, s.dc, m);
+    return fit_common(r, s.dc, m, threads);
 }
 
 // The library's supply wander (Gauss-Markov, `tau_s`) reaching channel c with std `loading_counts[c]`, through pickup.
@@ -134,6 +134,23 @@ TEST(CommonCause, IndependentProcessesStaySeparate) {
     gm.table.insert_or_assign("sigma_g", toml::array{0.0, 0.0, 0.0});
     for (std::uint64_t seed = 1; seed <= 3; ++seed) EXPECT_FALSE(fit(four_channels({gm}), seed).winner());
     for (std::uint64_t seed = 1; seed <= 3; ++seed) EXPECT_FALSE(fit(four_channels({}), seed).winner());
+}
+
+// The channels alone and the starts run one to a thread, each with its own expected periodograms: one thread and two
+// give the same readings, digit for digit.
+TEST(CommonCause, OneThreadAndTwoGiveTheSameReadings) {
+    const std::array<double, kChannelCount> load{1.0, -1.0, 0.0, 1.5};
+    const GapModel m = four_channels({wander(load, 120.0)});
+    const CommonFindings one = fit(m, 4, 1), two = fit(m, 4, 2);
+    ASSERT_EQ(one.fits.size(), two.fits.size());
+    for (std::size_t i = 0; i < one.fits.size(); ++i) {
+        EXPECT_EQ(one.fits[i].criterion, two.fits[i].criterion) << one.fits[i].reading;
+        EXPECT_EQ(one.fits[i].tau_s, two.fits[i].tau_s) << one.fits[i].reading;
+        EXPECT_EQ(one.fits[i].loading, two.fits[i].loading) << one.fits[i].reading;
+        EXPECT_EQ(one.fits[i].white, two.fits[i].white) << one.fits[i].reading;
+        EXPECT_EQ(one.fits[i].own_tau, two.fits[i].own_tau) << one.fits[i].reading;
+    }
+    EXPECT_EQ(one.chosen, two.chosen);
 }
 
 }  // namespace

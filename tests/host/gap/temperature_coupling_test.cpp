@@ -62,7 +62,7 @@ TEST(TemperatureCoupling, ChannelsFollowingTheMeasuredTemperatureAreCoupledAtThe
             return 25.0 + 3.0 * (1.0 - std::exp(-t / 300.0)) + std::sin(2.0 * std::numbers::pi * t / 400.0 + phase);
         };
         Case k = make_case(coefficient, room, seed);
-        const TemperatureCoupling tc = couple_to_temperature(k.residual, kAll, temperature_residual(k.log), k.model);
+        const TemperatureCoupling tc = couple_to_temperature(k.residual, kAll, temperature_residual(k.log), k.model, 2);
         ASSERT_TRUE(tc.compared);
         EXPECT_TRUE(tc.coupled[0]);
         EXPECT_FALSE(tc.coupled[1]);
@@ -79,7 +79,7 @@ TEST(TemperatureCoupling, AWarmUpAloneCouplesNothingAndAMissingReadingIsNotCompa
     const auto warm_up = [](double t) { return 25.0 + 3.0 * (1.0 - std::exp(-t / 300.0)); };
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
         Case k = make_case({0.0, 0.0, 0.0, 0.0}, warm_up, seed);
-        const TemperatureCoupling tc = couple_to_temperature(k.residual, kAll, temperature_residual(k.log), k.model);
+        const TemperatureCoupling tc = couple_to_temperature(k.residual, kAll, temperature_residual(k.log), k.model, 2);
         ASSERT_TRUE(tc.compared);
         EXPECT_FALSE(tc.any());
     }
