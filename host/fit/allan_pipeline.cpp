@@ -98,15 +98,21 @@ std::optional<std::string> packing_caveat(const AllanResult& r, const stats::Ana
 AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<double>& values, double tau0_s,
                           const AllanRequest& request) {
     AllanResult out;
-    const stats::UniformSeries grid = stats::to_uniform_grid(t_s, values, tau0_s);
-    out.tau0_s = tau0_s;
-    out.samples = grid.values.size();
-    out.gap_samples = grid.missing;
-    out.packed_samples = grid.packed;
-    out.packed_most_slots = grid.most_late;
-    const stats::PhaseRecord record = make_record(grid.values, tau0_s, request.kind);
-    out.raw = analyse_curves(record, request);
-    out.longest_gap_free_s = static_cast<double>(record.longest_segment().size() - 1) * tau0_s;
+    // The grid and each phase record live only while used (each is the series' size again: 80 MB for ten million
+    // samples); the drift-removed curves grid the samples a second time.
+    {
+        const stats::PhaseRecord record = [&] {
+            const stats::UniformSeries grid = stats::to_uniform_grid(t_s, values, tau0_s);
+            out.samples = grid.values.size();
+            out.gap_samples = grid.missing;
+            out.packed_samples = grid.packed;
+            out.packed_most_slots = grid.most_late;
+            return make_record(grid.values, tau0_s, request.kind);
+        }();
+        out.tau0_s = tau0_s;
+        out.raw = analyse_curves(record, request);
+        out.longest_gap_free_s = static_cast<double>(record.longest_segment().size() - 1) * tau0_s;
+    }
 
     if (!request.remove_drift) {
         out.drift_not_fitted = request.kept_drift_status;
@@ -118,10 +124,11 @@ AllanResult analyse_allan(const std::vector<double>& t_s, const std::vector<doub
     }
     fit_turn_on_drift(t_s, values, request.drift_fit, out);
     if (!out.drift) return out;
-    std::vector<double> residual(grid.values.size());
+    stats::UniformSeries grid = stats::to_uniform_grid(t_s, values, tau0_s);
+    std::vector<double>& residual = grid.values;  // in place
     for (std::size_t i = 0; i < residual.size(); ++i) {
         // NaN gap slots stay NaN.
-        residual[i] = grid.values[i] - drift_model(*out.drift, grid.t0_s + static_cast<double>(i) * tau0_s);
+        residual[i] = residual[i] - drift_model(*out.drift, grid.t0_s + static_cast<double>(i) * tau0_s);
     }
     out.drift_removed = analyse_curves(make_record(residual, tau0_s, request.kind), request);
     return out;

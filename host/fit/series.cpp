@@ -55,7 +55,7 @@ std::vector<Series> series_from_log(const LogData& log, const std::vector<std::s
     return out;
 }
 
-std::vector<Series> series_from_table(const NumericTable& table, const std::vector<std::string>& names,
+std::vector<Series> series_from_table(NumericTable table, const std::vector<std::string>& names,
                                       const std::string& time_column, double sample_period_s) {
     if (!(sample_period_s > 0.0)) throw UsageError("sample period must be > 0");
     std::optional<std::size_t> time_index;
@@ -73,10 +73,11 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
             }
         }
     }
-    std::vector<double> t_s(table.rows());
+    // The table's columns and time are moved into the series, never copied: ten million rows are 80 MB a column.
+    std::vector<double> t_s;
     double index_period_s = 0.0;
     if (time_index) {
-        t_s = table.columns[*time_index];
+        t_s = std::move(table.columns[*time_index]);
         for (std::size_t k = 1; k < t_s.size(); ++k)
             if (!(t_s[k] > t_s[k - 1]))
                 throw DataError(table.source_name, table.line_of_row(k),
@@ -86,7 +87,10 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
         // Milliseconds taken as seconds had stretched every time constant a thousandfold.
         const double per_second = units_per_second(table.names[*time_index]);
         for (double& t : t_s) t /= per_second;
+        std::vector<std::uint64_t>().swap(table.row_lines);  // no message names a line from here on
     } else {
+        std::vector<std::uint64_t>().swap(table.row_lines);
+        t_s.resize(table.rows());
         for (std::size_t k = 0; k < t_s.size(); ++k) t_s[k] = static_cast<double>(k) * sample_period_s;
         index_period_s = sample_period_s;
     }
@@ -95,16 +99,20 @@ std::vector<Series> series_from_table(const NumericTable& table, const std::vect
         if (time_index && name == table.names[*time_index])
             throw UsageError("'" + name + "' is the time column of " + table.source_name + ", not a series to analyse");
     }
-    std::vector<Series> out;
+    std::vector<std::size_t> chosen;
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
         if (time_index && c == *time_index) continue;
         if (!names.empty() && std::find(names.begin(), names.end(), table.names[c]) == names.end()) continue;
+        chosen.push_back(c);
+    }
+    std::vector<Series> out;
+    for (std::size_t c : chosen) {
         Series s;
         s.name = table.names[c];
         s.source = table.source_name;
-        s.t_s = t_s;
+        s.t_s = c == chosen.back() ? std::move(t_s) : t_s;
         s.index_period_s = index_period_s;
-        s.values = table.columns[c];
+        s.values = std::move(table.columns[c]);
         out.push_back(std::move(s));
     }
     return out;

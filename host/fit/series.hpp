@@ -33,8 +33,9 @@ std::vector<Series> series_from_log(const LogData& log, const std::vector<std::s
 /// Columns of a plain table. Time: the column `time_column` if given, else the first of t_s, t, time, then
 /// time_s, timestamp, timestamp_s and t/time/timestamp with _ms, _us or _ns, if present, else sample index x
 /// `sample_period_s`. A time column whose name ends in _ms, _us or _ns is converted to seconds. Every other column
-/// is a series unless `names` selects some. Time must increase strictly (DataError otherwise).
-std::vector<Series> series_from_table(const NumericTable& table, const std::vector<std::string>& names = {},
+/// is a series unless `names` selects some. Time must increase strictly (DataError otherwise). The table is taken by
+/// value: pass it with std::move where it is not needed after, and its columns move into the series.
+std::vector<Series> series_from_table(NumericTable table, const std::vector<std::string>& names = {},
                                       const std::string& time_column = "", double sample_period_s = 1.0);
 
 /// Reads `path` as a canonical log when it starts with the magic line, else as a plain table, and returns

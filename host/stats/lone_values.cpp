@@ -34,22 +34,23 @@ LoneValues lone_values(const std::vector<double>& x, double code) {
     LoneValues out;
     if (x.size() < 3) return out;
     // Halved differences cannot overflow, whatever finite values x holds; the tests below compare them only with
-    // each other.
-    std::vector<double> half(x.size() - 1);
-    for (std::size_t k = 1; k < x.size(); ++k) half[k - 1] = x[k] / 2.0 - x[k - 1] / 2.0;
-    std::vector<double> magnitude(half.size());
-    std::transform(half.begin(), half.end(), magnitude.begin(), [](double h) { return std::fabs(h); });
-    const double mad_scale = kMadToSigma * median(magnitude);
+    // each other. Computed where used, not held: ten million rows are 80 MB a vector.
+    const std::size_t differences = x.size() - 1;
+    const auto half = [&](std::size_t i) { return x[i + 1] / 2.0 - x[i] / 2.0; };
+    const auto magnitude = [&](std::size_t i) { return std::fabs(half(i)); };
+    std::vector<double> magnitudes(differences);
+    for (std::size_t i = 0; i < differences; ++i) magnitudes[i] = magnitude(i);
+    const double mad_scale = kMadToSigma * median(std::move(magnitudes));
     // A series that mostly repeats one code: its step is the scale, the smallest nonzero difference other than the
     // two beside the row judged, so among the three smallest. Where the row's own were taken, a series constant but
     // for one corrupt row had measured the row by itself and never found it. A known code bounds the step: two corrupt
     // rows on a stuck channel had measured each other, and a lone flip of one code had had no step to be measured by.
     std::vector<std::size_t> smallest;  // indices of the smallest nonzero magnitudes, in increasing order
     if (mad_scale == 0.0) {
-        for (std::size_t i = 0; i < magnitude.size(); ++i) {
-            if (magnitude[i] == 0.0) continue;
+        for (std::size_t i = 0; i < differences; ++i) {
+            if (magnitude(i) == 0.0) continue;
             const auto at = std::find_if(smallest.begin(), smallest.end(),
-                                         [&](std::size_t j) { return magnitude[i] < magnitude[j]; });
+                                         [&](std::size_t j) { return magnitude(i) < magnitude(j); });
             smallest.insert(at, i);
             if (smallest.size() > 3) smallest.pop_back();
         }
@@ -59,16 +60,17 @@ LoneValues lone_values(const std::vector<double>& x, double code) {
     const auto scale_beside = [&](std::size_t k) {
         if (mad_scale > 0.0) return mad_scale;
         for (std::size_t i : smallest)
-            if (i != k - 1 && i != k) return half_code > 0.0 ? std::min(magnitude[i], half_code) : magnitude[i];
+            if (i != k - 1 && i != k) return half_code > 0.0 ? std::min(magnitude(i), half_code) : magnitude(i);
         return half_code;
     };
-    const double largest = *std::max_element(magnitude.begin(), magnitude.end());
+    double largest = magnitude(0);
+    for (std::size_t i = 1; i < differences; ++i) largest = std::max(largest, magnitude(i));
     double total = 0.0, lone = 0.0;
-    for (double m : magnitude) total += (m / largest) * (m / largest);
+    for (std::size_t i = 0; i < differences; ++i) total += (magnitude(i) / largest) * (magnitude(i) / largest);
     for (std::size_t k = 1; k + 1 < x.size(); ++k) {
-        const double before = magnitude[k - 1], after = magnitude[k];
+        const double before = magnitude(k - 1), after = magnitude(k);
         const double smaller = std::min(before, after);
-        if (smaller > kLoneFactor * scale_beside(k) && std::fabs(half[k - 1] + half[k]) < smaller / 2.0) {
+        if (smaller > kLoneFactor * scale_beside(k) && std::fabs(half(k - 1) + half(k)) < smaller / 2.0) {
             out.indices.push_back(k);
             lone += (before / largest) * (before / largest) + (after / largest) * (after / largest);
         }

@@ -19,6 +19,16 @@ bool is_gap(std::span<const double> v, std::span<const std::uint8_t> mask, std::
 
 }  // namespace
 
+template <class Visit>
+void PhaseRecord::store_scaled(std::size_t n, const Visit& visit) {
+    long double largest = 0.0L;
+    visit([&](std::size_t, long double v) { largest = std::max(largest, std::fabs(v)); });
+    scale_exponent_ = 0;
+    if (largest > 0.0L) std::frexp(largest, &scale_exponent_);
+    phase_.resize(n);
+    visit([&](std::size_t k, long double v) { phase_[k] = static_cast<double>(std::ldexp(v, -scale_exponent_)); });
+}
+
 PhaseRecord PhaseRecord::from_rate(std::span<const double> rate, double tau0_s, std::span<const std::uint8_t> mask) {
     check_arguments(rate.size(), tau0_s, mask);
     PhaseRecord r;
@@ -36,18 +46,17 @@ PhaseRecord PhaseRecord::from_rate(std::span<const double> rate, double tau0_s, 
     r.gap_samples_ = rate.size() - valid;
 
     // A gap sample adds nothing (it stands at the mean); no term that uses it is ever evaluated.
-    std::vector<long double> x(rate.size() + 1, 0.0L);
     std::vector<std::uint8_t> usable(rate.size() + 1, 1);
     std::vector<std::uint8_t> linked(rate.size(), 1);
-    for (std::size_t k = 0; k < rate.size(); ++k) {
-        x[k + 1] = x[k];
-        if (is_gap(rate, mask, k)) {
-            linked[k] = 0;
-        } else {
-            x[k + 1] += (static_cast<long double>(rate[k]) - mean) * tau0_s;
+    for (std::size_t k = 0; k < rate.size(); ++k) linked[k] = is_gap(rate, mask, k) ? 0 : 1;
+    r.store_scaled(rate.size() + 1, [&](const auto& each) {
+        long double x = 0.0L;
+        each(0, x);
+        for (std::size_t k = 0; k < rate.size(); ++k) {
+            if (linked[k]) x += (static_cast<long double>(rate[k]) - mean) * tau0_s;
+            each(k + 1, x);
         }
-    }
-    r.store_scaled(x);
+    });
     r.build_segments(usable, linked);
     return r;
 }
@@ -69,29 +78,21 @@ PhaseRecord PhaseRecord::from_phase(std::span<const double> phase, double tau0_s
     }
     // Referencing to the first valid sample keeps magnitudes small; gap samples hold the previous value so
     // that sliding sums stay finite (their terms are skipped).
-    std::vector<long double> x(phase.size(), 0.0L);
-    long double held = 0.0L;
     for (std::size_t k = 0; k < phase.size(); ++k) {
         if (is_gap(phase, mask, k)) {
             usable[k] = 0;
             ++r.gap_samples_;
-        } else {
-            held = static_cast<long double>(phase[k]) - origin;
         }
-        x[k] = held;
     }
-    r.store_scaled(x);
+    r.store_scaled(phase.size(), [&](const auto& each) {
+        long double held = 0.0L;
+        for (std::size_t k = 0; k < phase.size(); ++k) {
+            if (usable[k]) held = static_cast<long double>(phase[k]) - origin;
+            each(k, held);
+        }
+    });
     r.build_segments(usable, linked);
     return r;
-}
-
-void PhaseRecord::store_scaled(const std::vector<long double>& x) {
-    long double largest = 0.0L;
-    for (long double v : x) largest = std::max(largest, std::fabs(v));
-    scale_exponent_ = 0;
-    if (largest > 0.0L) std::frexp(largest, &scale_exponent_);
-    phase_.resize(x.size());
-    for (std::size_t k = 0; k < x.size(); ++k) phase_[k] = static_cast<double>(std::ldexp(x[k], -scale_exponent_));
 }
 
 void PhaseRecord::build_segments(const std::vector<std::uint8_t>& usable, const std::vector<std::uint8_t>& linked) {

@@ -66,8 +66,11 @@ private:
     PhaseRecord() = default;
     // usable[k]: phase sample k exists; linked[k]: nothing breaks the interval between samples k and k+1.
     void build_segments(const std::vector<std::uint8_t>& usable, const std::vector<std::uint8_t>& linked);
-    // Stores `x` divided by the power of two that brings its largest magnitude near 1.
-    void store_scaled(const std::vector<long double>& x);
+    // Stores the n phase samples divided by the power of two that brings their largest magnitude near 1. `visit(each)`
+    // calls each(k, x_k) for k = 0..n-1 in order, the same values every time: it runs twice (the scale, then the
+    // samples) rather than hold n long doubles (160 MB for ten million samples).
+    template <class Visit>
+    void store_scaled(std::size_t n, const Visit& visit);
 
     std::vector<double> phase_;
     std::vector<Segment> segments_;
