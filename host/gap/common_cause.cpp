@@ -20,6 +20,8 @@ namespace {
 
 constexpr int kStartEvaluations = 600;  // Nelder-Mead budget per start of a shared reading (deterministic objective)
 constexpr int kOwnEvaluations = 300;    // per start of one channel's own process
+// A Nelder-Mead search moves its correlation time at nearly every evaluation: a unit periodogram is seldom met again.
+constexpr std::size_t kKeptReadings = 2;
 constexpr double kWanderProbeV = 0.05;  // the supply wander a shared_process effect is written with [V]
 // How much lower a shared reading's criterion must be than each channel read alone: "positive" evidence (Kass and
 // Raftery, JASA 90(430), 1995, on differences of the Schwarz criterion).
@@ -139,7 +141,7 @@ struct ChannelAlone {
 };
 
 ChannelAlone fit_separate_channel(const Spectra& s, std::size_t i, double price) {
-    ExpectedPeriodogram e(s.floor_acov, s.geometry);
+    ExpectedPeriodogram e(s.floor_acov, s.geometry, kKeptReadings);
     const double w = s.power_over_floor[i] / static_cast<double>(bins(s));
     ChannelAlone out;
     out.white = w;
@@ -205,7 +207,7 @@ CommonFit to_fit(const Spectra& s, const std::string& reading, const Reading& r,
     fit.parameters = parameters;
     fit.criterion = 2.0 * nll + price * parameters;
     // A channel is loaded when leaving its loading out (its floor refitted) costs more than one parameter's price.
-    ExpectedPeriodogram e(s.floor_acov, s.geometry);
+    ExpectedPeriodogram e(s.floor_acov, s.geometry, kKeptReadings);
     for (std::size_t i = 0; i < s.channels.size(); ++i) {
         Reading without = r;
         without.loading[i] = 0.0;
@@ -225,7 +227,7 @@ stats::NelderMeadResult best_of(const Spectra& s, const std::function<Reading(co
                                 const std::vector<std::vector<double>>& starts, const std::vector<double>& step) {
     std::vector<stats::NelderMeadResult> runs(starts.size());
     parallel_for(starts.size(), s.threads, [&](std::size_t n) {
-        ExpectedPeriodogram e(s.floor_acov, s.geometry);
+        ExpectedPeriodogram e(s.floor_acov, s.geometry, kKeptReadings);
         const auto f = [&](const std::vector<double>& p) { return shared_nll(s, e, reading(p)); };
         // A second pass from the first's optimum: Nelder-Mead's simplex collapses in 2k + 1 dimensions.
         const auto nm = stats::nelder_mead(f, starts[n], step, kStartEvaluations);

@@ -236,13 +236,11 @@ std::vector<double> component_periodogram(const OutputSpectrum& model, const std
     return out;
 }
 
-// A fit's evaluations change a few AR(1) components at most; a few more than a wide flicker has are kept.
-constexpr std::size_t kKeptComponents = 24;
-
 }  // namespace
 
-ExpectedPeriodogram::ExpectedPeriodogram(const std::vector<double>& floor_acov, const PartPeriodogram& p)
-    : floor_acov_(&floor_acov), p_(&p) {}
+ExpectedPeriodogram::ExpectedPeriodogram(const std::vector<double>& floor_acov, const PartPeriodogram& p,
+                                         std::size_t kept)
+    : floor_acov_(&floor_acov), p_(&p), kept_(std::max<std::size_t>(kept, 1)) {}
 
 const std::vector<double>& ExpectedPeriodogram::unit_floor() {
     if (floor_.empty()) floor_ = component_periodogram({1.0, {}, 0.0}, *floor_acov_, *p_);
@@ -261,7 +259,7 @@ const std::vector<double>& ExpectedPeriodogram::unit_ar1(double phi) {
             k.last_use = clock_;
             return k.values;
         }
-    if (ar1_.size() == kKeptComponents)
+    if (ar1_.size() == kept_)
         ar1_.erase(std::min_element(ar1_.begin(), ar1_.end(),
                                     [](const Kept& a, const Kept& b) { return a.last_use < b.last_use; }));
     OutputSpectrum unit;

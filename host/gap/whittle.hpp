@@ -99,13 +99,14 @@ std::vector<double> expected_periodogram(const OutputSpectrum& model, const std:
 
 /// expected_periodogram() of many models on one part, as a fit evaluates them. The expected periodogram is linear in
 /// the covariance, so a model's is the sum of its components' (the floor's, the walk's and each AR(1)'s) at unit
-/// size, weighted by their sizes: each unit component is computed once and kept (the AR(1)s by their phi, the 24
-/// used last), and an evaluation that changes sizes only, or one Gauss-Markov component, costs one pass per
+/// size, weighted by their sizes: each unit component is computed once and kept (the AR(1)s by their phi, the
+/// `kept` used last), and an evaluation that changes sizes only, or one Gauss-Markov component, costs one pass per
 /// component instead of the FFTs of all of them. One object per thread: it is not safe to share.
 class ExpectedPeriodogram {
 public:
-    /// Both are referenced, not copied: they must outlive the object.
-    ExpectedPeriodogram(const std::vector<double>& floor_acov, const PartPeriodogram& p);
+    /// Both are referenced, not copied: they must outlive the object. `kept` unit AR(1)s are kept (each is half the
+    /// part's length in doubles: 1.4 MB per hour at 100 Hz); a search that moves one phi at every evaluation keeps few.
+    ExpectedPeriodogram(const std::vector<double>& floor_acov, const PartPeriodogram& p, std::size_t kept = 24);
     std::vector<double> operator()(const OutputSpectrum& model);
 
 private:
@@ -122,6 +123,7 @@ private:
     const PartPeriodogram* p_;
     std::vector<double> floor_, walk_;
     std::vector<Kept> ar1_;
+    std::size_t kept_;
     std::uint64_t clock_ = 0;
 };
 

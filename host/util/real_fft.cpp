@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -21,6 +22,17 @@ std::mutex& planner_lock() {
 
 enum class Direction { forward, inverse };
 
+// FFTW_ESTIMATE plans by rule, never by timing trial transforms, so a run repeats digit for digit. The vector
+// codelets it picks follow the CPU (SSE2, AVX2, AVX-512): DRIFTLAB_FFT_PORTABLE=1 plans without them, for the
+// same digits on every x86-64 node of a mixed cluster (about half the speed; docs/performance.md §FFT).
+unsigned planner_flags() {
+    static const unsigned flags = [] {
+        const char* portable = std::getenv("DRIFTLAB_FFT_PORTABLE");
+        return portable && std::string(portable) == "1" ? FFTW_ESTIMATE | FFTW_NO_SIMD : FFTW_ESTIMATE;
+    }();
+    return flags;
+}
+
 // A plan with its own aligned buffers: the caller's vectors are copied through them, so the plan's alignment
 // assumptions always hold (a copy costs a few per cent of a transform).
 struct Plan {
@@ -37,8 +49,8 @@ struct Plan {
         bins = fftw_alloc_complex(n / 2 + 1);
         if (!real || !bins) throw std::bad_alloc();
         const int len = static_cast<int>(n);
-        plan = d == Direction::forward ? fftw_plan_dft_r2c_1d(len, real, bins, FFTW_ESTIMATE)
-                                       : fftw_plan_dft_c2r_1d(len, bins, real, FFTW_ESTIMATE);
+        plan = d == Direction::forward ? fftw_plan_dft_r2c_1d(len, real, bins, planner_flags())
+                                       : fftw_plan_dft_c2r_1d(len, bins, real, planner_flags());
         if (!plan) throw std::runtime_error("FFTW could not plan a transform of " + std::to_string(n) + " points");
     }
     Plan(const Plan&) = delete;

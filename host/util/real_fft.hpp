@@ -1,8 +1,8 @@
 // The discrete Fourier transform of real series, by FFTW (Frigo & Johnson, Proc. IEEE 93(2), 2005): every spectrum
 // the host computes goes through these two calls. Each thread keeps its own plans (one per length and direction,
 // the few used last), so the spectral likelihood's thousands of transforms of one length plan once. Plans are made
-// with FFTW_ESTIMATE, never by timing trial transforms, so one build on one machine gives the same digits every run
-// (docs/performance.md §FFT says what may differ between machines).
+// with FFTW_ESTIMATE, never by timing trial transforms, so one build on one machine gives the same digits every run;
+// DRIFTLAB_FFT_PORTABLE=1 gives the same digits on CPUs of other vector widths too (docs/performance.md §FFT).
 #pragma once
 
 #include <complex>

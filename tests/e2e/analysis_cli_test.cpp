@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -327,6 +328,42 @@ TEST(AnalysisCli, ReportUnitsForAPlainTable) {
     ASSERT_EQ(run_driftlab({"hil", "--duration", "60", "-o", log}, dir.path()).exit_code, 0);
     EXPECT_NE(error_of(log, "mg").find("--unit: " + log + " is a driftlab log"), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(refused));
+}
+
+// Every number of `a` within a relative 1e-9 of `b`'s (absolutely for those near 0), the rest equal.
+void expect_close(const nlohmann::json& a, const nlohmann::json& b, const std::string& where) {
+    ASSERT_EQ(a.type(), b.type()) << where;
+    if (a.is_object()) {
+        ASSERT_EQ(a.size(), b.size()) << where;
+        for (auto it = a.begin(); it != a.end(); ++it) {
+            ASSERT_TRUE(b.contains(it.key())) << where << "." << it.key();
+            expect_close(it.value(), b.at(it.key()), where + "." + it.key());
+        }
+    } else if (a.is_array()) {
+        ASSERT_EQ(a.size(), b.size()) << where;
+        for (std::size_t i = 0; i < a.size(); ++i) expect_close(a[i], b[i], where + "[" + std::to_string(i) + "]");
+    } else if (a.is_number_float()) {
+        const double x = a.get<double>(), y = b.get<double>();
+        EXPECT_LE(std::abs(x - y), 1e-9 * std::max(1.0, std::max(std::abs(x), std::abs(y)))) << where;
+    } else {
+        EXPECT_EQ(a, b) << where;
+    }
+}
+
+// DRIFTLAB_FFT_PORTABLE=1 plans the transforms without the CPU's vector codelets: the same results but for the last
+// digits (a transform rounds at 1e-16 of its largest bin either way).
+TEST(AnalysisCli, PortableTransformsGiveTheSameFitToTheLastDigits) {
+    TempDir dir("portable");
+    const std::string table = table_with_gap(dir);
+    const RunResult fast = run_driftlab({"fit", table, "--json"}, dir.path());
+    ASSERT_EQ(fast.exit_code, 0) << fast.output;
+    ::setenv("DRIFTLAB_FFT_PORTABLE", "1", 1);
+    const RunResult portable = run_driftlab({"fit", table, "--json"}, dir.path());
+    ::unsetenv("DRIFTLAB_FFT_PORTABLE");
+    ASSERT_EQ(portable.exit_code, 0) << portable.output;
+    const auto a = nlohmann::json::parse(fast.output), b = nlohmann::json::parse(portable.output);
+    ASSERT_TRUE(a.contains("channels")) << fast.output;
+    expect_close(a, b, "fit");
 }
 
 }  // namespace
