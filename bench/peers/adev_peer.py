@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The peer of `driftlab allan FILE --kind rate --tau0 1 --grid octave --keep-drift`: numpy reads one rate sample a
+"""The peer of `driftlab allan FILE --kind rate --tau0 1 --grid octave`: numpy reads one rate sample a
 line and computes the overlapping Allan deviation at octave averaging factors as allantools does (phase as the
 cumulative sum of the rate times tau0, then second differences of the phase at stride m). Prints tau and ADEV."""
 import sys
