@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "host/log/capture_file.hpp"
@@ -83,6 +85,34 @@ double parse_field(const LogData& log, std::uint64_t line, std::string_view fiel
     return p.value;
 }
 
+// Rows read but not yet appended to the log: one line's, or a block's (parse_log reads the rows of a long log in
+// blocks, two at a time). The t_s order is checked as they are appended, in file order.
+struct ParsedRows {
+    std::vector<double> t_s;
+    std::vector<std::uint64_t> seq, line;
+    std::array<std::vector<double>, kChannelCount> counts;
+    std::vector<double> optional;  // the optional columns' values, row after row
+    std::vector<LogGap> gaps;      // before_row counted from the block's first row
+    std::exception_ptr error;      // the block's first bad line: its rows before it are kept
+
+    void clear() {
+        t_s.clear();
+        seq.clear();
+        line.clear();
+        for (auto& c : counts) c.clear();
+        optional.clear();
+        gaps.clear();
+        error = nullptr;
+    }
+};
+
+// The text of a `# gap: text` comment (its body after '#'), none for another comment.
+std::optional<std::string> gap_text(std::string_view body) {
+    const auto kv = split_comment_key_value(body);
+    if (kv && kv->first == "gap") return kv->second;
+    return std::nullopt;
+}
+
 class Parser {
 public:
     Parser(const std::string& name, const ReadOptions& options) : options_(options) { log_.source_name = name; }
@@ -113,6 +143,70 @@ public:
                 return;
             }
             refuse_truncated_tail(number, ", so its last value may be cut)");
+        }
+    }
+
+    /// The header is read: every line from here on is a row, a comment or blank.
+    bool reading_rows() const { return plan_.has_value(); }
+
+    /// The lines of `text` (each ending in '\n'), the first numbered `first_line`, into `out`, up to the first bad
+    /// one (kept in out.error). Writes `out` only: blocks are read on two threads at once.
+    void read_block(std::string_view text, std::uint64_t first_line, ParsedRows& out) const {
+        std::vector<std::string_view> fields;
+        std::uint64_t number = first_line;
+        try {
+            for (std::size_t at = 0; at < text.size(); ++number) {
+                const std::size_t end = text.find('\n', at);
+                std::string_view line = text.substr(at, end - at);
+                at = end + 1;
+                if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+                if (trim_blanks(line).empty()) continue;
+                if (line.front() == '#') {
+                    if (auto gap = gap_text(line.substr(1))) out.gaps.push_back({out.t_s.size(), number, *gap});
+                    continue;
+                }
+                read_row(line, number, fields, out);
+            }
+        } catch (...) {
+            out.error = std::current_exception();
+        }
+    }
+
+    /// The rows after the header: read in blocks of whole lines, each parsed in two halves at once and appended in
+    /// file order (so the first bad line in the file is the one named); a last line without '\n' goes through line(),
+    /// which knows what a cut line means. `number` is the last line read so far, and becomes the file's last.
+    void rows_in_blocks(std::istream& in, std::uint64_t& number) {
+        constexpr std::size_t kBlockBytes = std::size_t{8} << 20, kSplitBytes = std::size_t{1} << 20;
+        std::string block;
+        ParsedRows first, second;
+        while (true) {
+            const std::size_t kept = block.size();
+            block.resize(kept + kBlockBytes);
+            in.read(block.data() + kept, static_cast<std::streamsize>(kBlockBytes));
+            block.resize(kept + static_cast<std::size_t>(in.gcount()));
+            if (in.bad()) return;
+            // Only a line begun in an earlier read can be longer than a block.
+            if (std::min(block.find('\n'), block.size()) > kMaxLineBytes)
+                refuse_long_line(log_.source_name, number + 1);
+            const std::size_t last = block.rfind('\n'), whole = last == std::string::npos ? 0 : last + 1;
+            const std::string_view lines(block.data(), whole);
+            const std::size_t middle = whole < kSplitBytes ? whole : lines.find('\n', whole / 2) + 1;
+            const std::string_view head = lines.substr(0, middle), tail = lines.substr(middle);
+            const auto head_lines = static_cast<std::uint64_t>(std::count(head.begin(), head.end(), '\n'));
+            first.clear();
+            second.clear();
+            std::thread other;
+            if (!tail.empty()) other = std::thread([&] { read_block(tail, number + 1 + head_lines, second); });
+            read_block(head, number + 1, first);
+            if (other.joinable()) other.join();
+            append(first);
+            append(second);
+            number += head_lines + static_cast<std::uint64_t>(std::count(tail.begin(), tail.end(), '\n'));
+            block.erase(0, whole);
+            if (!in) {
+                if (!block.empty()) line(block, ++number, false);
+                return;
+            }
         }
     }
 
@@ -175,11 +269,11 @@ private:
     }
 
     void comment(std::string_view body, std::uint64_t number) {
-        const auto kv = split_comment_key_value(body);
-        if (kv && kv->first == "gap") {
-            log_.gaps.push_back({log_.t_s.size(), number, kv->second});
+        if (auto gap = gap_text(body)) {
+            log_.gaps.push_back({log_.t_s.size(), number, std::move(*gap)});
             return;
         }
+        const auto kv = split_comment_key_value(body);
         if (plan_ || !kv) return;  // free comments, and key: value text among the rows, are notes only
         if (!LogMetadata::is_valid_key(kv->first))
             throw DataError(log_.source_name, number, "metadata key '" + kv->first + "' is not lower_snake_case");
@@ -210,53 +304,60 @@ private:
     }
 
     void row(std::string_view text, std::uint64_t number) {
-        if (text.find("t_s") != std::string_view::npos && looks_like_header(text, fields_))
+        one_.clear();
+        read_row(text, number, fields_, one_);
+        append(one_);
+    }
+
+    // One row's line into `out`: every check but the order of t_s, which append() makes.
+    void read_row(std::string_view text, std::uint64_t number, std::vector<std::string_view>& fields,
+                  ParsedRows& out) const {
+        if (text.find("t_s") != std::string_view::npos && looks_like_header(text, fields))
             throw DataError(
                 log_.source_name, number,
                 "duplicate header (the first is on line " + std::to_string(header_line_) + "); two logs concatenated?");
-        split_fields(text, ',', fields_);
-        if (fields_.size() != plan_->field_count)
+        split_fields(text, ',', fields);
+        if (fields.size() != plan_->field_count)
             throw DataError(log_.source_name, number,
                             "expected " + std::to_string(plan_->field_count) + " fields (as the header), got " +
-                                std::to_string(fields_.size()));
+                                std::to_string(fields.size()));
         const auto& req = plan_->required_field;
-        const double t_s = parse_field(log_, number, fields_[req[0]], req[0], "t_s");
-        const auto seq = parse_unsigned(fields_[req[1]]);
+        const double t_s = parse_field(log_, number, fields[req[0]], req[0], "t_s");
+        const auto seq = parse_unsigned(fields[req[1]]);
         if (!seq)
             throw DataError(log_.source_name, number,
                             "field " + std::to_string(req[1] + 1) + " (seq) '" +
-                                std::string(trim_blanks(fields_[req[1]])) + "': not a non-negative integer");
+                                std::string(trim_blanks(fields[req[1]])) + "': not a non-negative integer");
         std::array<double, kChannelCount> values{};
         for (std::size_t c = 0; c < kChannelCount; ++c) {
-            values[c] = parse_field(log_, number, fields_[req[2 + c]], req[2 + c], kRequiredLogColumns[2 + c]);
+            values[c] = parse_field(log_, number, fields[req[2 + c]], req[2 + c], kRequiredLogColumns[2 + c]);
             if (range_ && !range_->holds_estimate(values[c]))
-                throw DataError(log_.source_name, number,
-                                "field " + std::to_string(req[2 + c] + 1) + " (" + kRequiredLogColumns[2 + c] + ") '" +
-                                    std::string(trim_blanks(fields_[req[2 + c]])) + "': beyond the " +
-                                    std::to_string(range_->bits) + "-bit converter's reach (" +
-                                    format_double(range_->estimate_low()) + " to " +
-                                    format_double(range_->estimate_high()) + " counts" +
-                                    (range_assumed_ ? "; the metadata names no adc_bits, " +
-                                                          std::to_string(range_->bits) + " assumed"
-                                                    : "") +
-                                    ")");
+                throw DataError(
+                    log_.source_name, number,
+                    "field " + std::to_string(req[2 + c] + 1) + " (" + kRequiredLogColumns[2 + c] + ") '" +
+                        std::string(trim_blanks(fields[req[2 + c]])) + "': beyond the " + std::to_string(range_->bits) +
+                        "-bit converter's reach (" + format_double(range_->estimate_low()) + " to " +
+                        format_double(range_->estimate_high()) + " counts" +
+                        (range_assumed_
+                             ? "; the metadata names no adc_bits, " + std::to_string(range_->bits) + " assumed"
+                             : "") +
+                        ")");
         }
-        optional_scratch_.clear();
         for (std::size_t i = 0; i < plan_->optional_fields.size(); ++i) {
             const std::size_t field = plan_->optional_fields[i].first;
             const std::string& name = plan_->optional_names[i];
-            optional_scratch_.push_back(parse_field(log_, number, fields_[field], field, name));
-            const double v = optional_scratch_.back();
+            const double v = parse_field(log_, number, fields[field], field, name);
+            out.optional.push_back(v);  // a row cut short by an error leaves values past its block's rows: never read
             // Four channel bits: anything else (1.5, -3) had been read bit by bit as if it were some set of them.
             if (name == "sat_flags" && !(v >= 0.0 && v <= 15.0 && v == std::floor(v)))
                 throw DataError(log_.source_name, number,
                                 "field " + std::to_string(field + 1) + " (sat_flags) '" +
-                                    std::string(trim_blanks(fields_[field])) +
+                                    std::string(trim_blanks(fields[field])) +
                                     "': not a set of channel bits (an integer 0 to 15)");
             if (range_ && is_raw_code_column(name) && !range_->holds_raw_code(v))
                 throw DataError(log_.source_name, number,
                                 "field " + std::to_string(field + 1) + " (" + name + ") '" +
-                                    std::string(trim_blanks(fields_[field])) + "': not a code of the " +
+                                    std::string(trim_blanks(fields[field])) + "': not a code of the " +
                                     std::to_string(range_->bits) + "-bit converter (0 to " +
                                     format_double(range_->full) + ", or " + format_double(kLostRawCode) +
                                     " for a lost RAW frame)");
@@ -265,15 +366,28 @@ private:
             throw DataError(log_.source_name, number,
                             "t_s " + format_double(t_s) +
                                 " is before power-on (t_s counts from power-on, so it is never negative)");
-        if (!log_.t_s.empty() && !(t_s > log_.t_s.back()))
-            throw DataError(log_.source_name, number,
-                            "t_s " + format_double(t_s) + " is not after the previous row's " +
-                                format_double(log_.t_s.back()) + " (t_s must increase strictly)");
-        log_.t_s.push_back(t_s);
-        log_.seq.push_back(*seq);
-        for (std::size_t c = 0; c < kChannelCount; ++c) log_.counts[c].push_back(values[c]);
-        for (std::size_t i = 0; i < optional_scratch_.size(); ++i)
-            plan_->optional_fields[i].second->push_back(optional_scratch_[i]);
+        out.t_s.push_back(t_s);
+        out.seq.push_back(*seq);
+        out.line.push_back(number);
+        for (std::size_t c = 0; c < kChannelCount; ++c) out.counts[c].push_back(values[c]);
+    }
+
+    // Appends `rows` after the log's last row, each after checking that t_s increases, then throws their block's error.
+    void append(const ParsedRows& rows) {
+        const std::size_t base = log_.t_s.size(), k = plan_->optional_fields.size();
+        for (const LogGap& g : rows.gaps) log_.gaps.push_back({base + g.before_row, g.line, g.text});
+        for (std::size_t r = 0; r < rows.t_s.size(); ++r) {
+            const double t_s = rows.t_s[r];
+            if (!log_.t_s.empty() && !(t_s > log_.t_s.back()))
+                throw DataError(log_.source_name, rows.line[r],
+                                "t_s " + format_double(t_s) + " is not after the previous row's " +
+                                    format_double(log_.t_s.back()) + " (t_s must increase strictly)");
+            log_.t_s.push_back(t_s);
+            log_.seq.push_back(rows.seq[r]);
+            for (std::size_t c = 0; c < kChannelCount; ++c) log_.counts[c].push_back(rows.counts[c][r]);
+            for (std::size_t i = 0; i < k; ++i) plan_->optional_fields[i].second->push_back(rows.optional[r * k + i]);
+        }
+        if (rows.error) std::rethrow_exception(rows.error);
     }
 
     void pop_last_row() {
@@ -291,7 +405,7 @@ private:
     std::optional<ConverterRange> range_;  // from the metadata's adc_bits, else ReadOptions::assumed_adc_bits
     bool range_assumed_ = false;
     std::vector<std::string_view> fields_;
-    std::vector<double> optional_scratch_;
+    ParsedRows one_;  // row()'s one row
 };
 
 }  // namespace
@@ -301,10 +415,11 @@ LogData parse_log(std::istream& in, const std::string& source_name, const ReadOp
     std::string text;
     std::uint64_t number = 0;
     bool ended = true;
-    while (read_line(in, text, source_name, number + 1, &ended)) {
+    while (!parser.reading_rows() && read_line(in, text, source_name, number + 1, &ended)) {
         ++number;
         parser.line(text, number, ended);
     }
+    if (parser.reading_rows()) parser.rows_in_blocks(in, number);
     if (in.bad()) throw DataError(source_name, number, "read error");
     return parser.finish(number);
 }

@@ -32,6 +32,12 @@ std::string read_small_file(const std::string& path, std::size_t max_bytes) {
     return text;
 }
 
+void refuse_long_line(const std::string& path, std::uint64_t line) {
+    throw DataError(path, line,
+                    "a line longer than " + std::to_string(kMaxLineBytes) +
+                        " bytes: no line of a log, table or capture (refused without reading it whole)");
+}
+
 bool read_line(std::istream& in, std::string& text, const std::string& path, std::uint64_t line, bool* ended) {
     // Bulk reads into a buffer one byte longer than the limit: a line that fills it is too long, and nothing more of
     // it is read. Left uninitialised, so that only the pages a line reaches are ever touched.
@@ -39,10 +45,7 @@ bool read_line(std::istream& in, std::string& text, const std::string& path, std
     thread_local const std::unique_ptr<char[]> buffer(new char[kBufferBytes]);
     in.getline(buffer.get(), static_cast<std::streamsize>(kBufferBytes));
     const std::streamsize got = in.gcount();
-    if (in.fail() && !in.eof() && got == static_cast<std::streamsize>(kBufferBytes) - 1)
-        throw DataError(path, line,
-                        "a line longer than " + std::to_string(kMaxLineBytes) +
-                            " bytes: no line of a log, table or capture (refused without reading it whole)");
+    if (in.fail() && !in.eof() && got == static_cast<std::streamsize>(kBufferBytes) - 1) refuse_long_line(path, line);
     if (got == 0 && (in.eof() || in.fail())) return false;
     const bool newline = !in.eof();
     text.assign(buffer.get(), static_cast<std::size_t>(got) - (newline ? 1 : 0));

@@ -17,6 +17,9 @@ std::ifstream open_input_file(const std::string& path);
 /// data); a longer line is refused before it is held.
 inline constexpr std::size_t kMaxLineBytes = std::size_t{16} << 20;
 
+/// Throws the DataError(path, line, ...) of a line longer than kMaxLineBytes.
+[[noreturn]] void refuse_long_line(const std::string& path, std::uint64_t line);
+
 /// std::getline for untrusted text: false at the end; throws DataError(path, line, ...) for a line of more than
 /// kMaxLineBytes, having read no more than that of it. `ended` tells whether the line ended with '\n' (not cut).
 bool read_line(std::istream& in, std::string& text, const std::string& path, std::uint64_t line, bool* ended = nullptr);
