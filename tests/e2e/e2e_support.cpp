@@ -63,15 +63,17 @@ std::string BoardThread::path() {
 
 pid_t spawn_program(const std::string& program, const std::vector<std::string>& args, const std::string& output_file,
                     const std::string& stdout_file) {
+    // Built before the fork: the child of a process with threads may only make async-signal-safe calls until it execs
+    // (an allocation there had waited forever on a sanitizer's lock held by another thread at the fork).
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(program.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
     const pid_t pid = ::fork();
     if (pid == 0) {
         const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         ::dup2(stdout_file.empty() ? fd : ::open(stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
         ::dup2(fd, 2);
-        std::vector<char*> argv;
-        argv.push_back(const_cast<char*>(program.c_str()));
-        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
         ::execv(program.c_str(), argv.data());
         ::_exit(127);
     }
