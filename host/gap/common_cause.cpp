@@ -4,13 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <memory>
+#include <functional>
 #include <stdexcept>
 
 #include "host/fit/lm_fit.hpp"
 #include "host/gap/whittle.hpp"
 #include "host/stats/nelder_mead.hpp"
-#include "host/util/fft_length.hpp"
 #include "host/util/parallel_for.hpp"
 #include "host/util/real_fft.hpp"
 #include "sim/effects/supply_coupling.hpp"
