@@ -1,11 +1,13 @@
 // `driftlab allan FILE`: overlapping Allan (and modified Allan, overlapping Hadamard) deviations with
 // confidence intervals, noise types and IEEE 952 terms, per channel; raw and drift-removed (logs, and plain rate
 // files with --remove-drift; host/stats, docs/allan.md §§7-8).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -94,6 +96,7 @@ std::vector<fit::Series> load_series(const AllanCommandOptions& o, fit::AllanReq
 void run(const AllanCommandOptions& o) {
     fit::AllanRequest req;
     req.deviations = parse_deviations(o.deviation);
+    req.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     try {
         req.grid.grid = stats::parse_tau_grid(o.grid);
     } catch (const std::invalid_argument& e) {

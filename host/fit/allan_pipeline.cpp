@@ -28,7 +28,7 @@ AllanCurves analyse_curves(const stats::PhaseRecord& record, const AllanRequest&
                                         " phase samples leave no averaging time on this grid "
                                         "(the largest averaging factor is (phase samples - 1) / 4, rounded down; a "
                                         "rate series of n samples has n + 1 phase samples)");
-        out.curves.push_back(stats::analyse_deviation(record, d, ms, request.confidence));
+        out.curves.push_back(stats::analyse_deviation(record, d, ms, request.confidence, request.threads));
         // Gaps can leave every factor without a term (no stretch between them holds 2m + 1 phase samples).
         if (d == stats::Deviation::oadev && out.curves.back().curve.tau_s.empty())
             throw std::invalid_argument(

@@ -25,6 +25,7 @@ struct AllanRequest {
     std::string kept_drift_status = "not requested";
     FitOptions drift_fit;  ///< the eq. 1 fit's options
     double confidence = stats::kOneSigmaConfidence;
+    int threads = 1;  ///< the averaging factors are shared among them (the same digits however many)
 };
 
 /// The curves of one version of the series (raw or drift-removed); `curves` in request order, oadev first.

@@ -2,16 +2,17 @@
 #include "host/log/log_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string_view>
-#include <thread>
 #include <vector>
 
 #include "host/log/capture_file.hpp"
+#include "host/log/line_blocks.hpp"
 #include "host/util/error.hpp"
 #include "host/util/format_number.hpp"
 #include "host/util/input_file.hpp"
@@ -149,65 +150,36 @@ public:
     /// The header is read: every line from here on is a row, a comment or blank.
     bool reading_rows() const { return plan_.has_value(); }
 
-    /// The lines of `text` (each ending in '\n'), the first numbered `first_line`, into `out`, up to the first bad
-    /// one (kept in out.error). Writes `out` only: blocks are read on two threads at once.
+    /// The lines of `text` (each ending in '\n'), the first numbered `first_line`, into `out` (cleared first), up to
+    /// the first bad one (kept in out.error). Writes `out` only: blocks are read on two threads at once.
     void read_block(std::string_view text, std::uint64_t first_line, ParsedRows& out) const {
+        out.clear();
         std::vector<std::string_view> fields;
-        std::uint64_t number = first_line;
         try {
-            for (std::size_t at = 0; at < text.size(); ++number) {
-                const std::size_t end = text.find('\n', at);
-                std::string_view line = text.substr(at, end - at);
-                at = end + 1;
-                if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-                if (trim_blanks(line).empty()) continue;
+            for_each_line(text, first_line, [&](std::string_view line, std::uint64_t number) {
+                if (trim_blanks(line).empty()) return;
                 if (line.front() == '#') {
                     if (auto gap = gap_text(line.substr(1))) out.gaps.push_back({out.t_s.size(), number, *gap});
-                    continue;
+                    return;
                 }
                 read_row(line, number, fields, out);
-            }
+            });
         } catch (...) {
             out.error = std::current_exception();
         }
     }
 
-    /// The rows after the header: read in blocks of whole lines, each parsed in two halves at once and appended in
-    /// file order (so the first bad line in the file is the one named); a last line without '\n' goes through line(),
-    /// which knows what a cut line means. `number` is the last line read so far, and becomes the file's last.
+    /// The rows after the header, in blocks (line_blocks.hpp) appended in file order, so the first bad line in the
+    /// file is the one named; a last line without '\n' goes through line(), which knows what a cut line means.
+    /// `number` is the last line read so far, and becomes the file's last.
     void rows_in_blocks(std::istream& in, std::uint64_t& number) {
-        constexpr std::size_t kBlockBytes = std::size_t{8} << 20, kSplitBytes = std::size_t{1} << 20;
-        std::string block;
-        ParsedRows first, second;
-        while (true) {
-            const std::size_t kept = block.size();
-            block.resize(kept + kBlockBytes);
-            in.read(block.data() + kept, static_cast<std::streamsize>(kBlockBytes));
-            block.resize(kept + static_cast<std::size_t>(in.gcount()));
-            if (in.bad()) return;
-            // Only a line begun in an earlier read can be longer than a block.
-            if (std::min(block.find('\n'), block.size()) > kMaxLineBytes)
-                refuse_long_line(log_.source_name, number + 1);
-            const std::size_t last = block.rfind('\n'), whole = last == std::string::npos ? 0 : last + 1;
-            const std::string_view lines(block.data(), whole);
-            const std::size_t middle = whole < kSplitBytes ? whole : lines.find('\n', whole / 2) + 1;
-            const std::string_view head = lines.substr(0, middle), tail = lines.substr(middle);
-            const auto head_lines = static_cast<std::uint64_t>(std::count(head.begin(), head.end(), '\n'));
-            first.clear();
-            second.clear();
-            std::thread other;
-            if (!tail.empty()) other = std::thread([&] { read_block(tail, number + 1 + head_lines, second); });
-            read_block(head, number + 1, first);
-            if (other.joinable()) other.join();
-            append(first);
-            append(second);
-            number += head_lines + static_cast<std::uint64_t>(std::count(tail.begin(), tail.end(), '\n'));
-            block.erase(0, whole);
-            if (!in) {
-                if (!block.empty()) line(block, ++number, false);
-                return;
-            }
-        }
+        std::array<ParsedRows, 2> halves;
+        read_line_blocks(in, log_.source_name, number,
+                         {[&](int half, std::string_view lines, std::uint64_t first) {
+                              read_block(lines, first, halves[static_cast<std::size_t>(half)]);
+                          },
+                          [&](int half) { append(halves[static_cast<std::size_t>(half)]); },
+                          [&](std::string_view text, std::uint64_t last) { line(text, last, false); }});
     }
 
     LogData finish(std::uint64_t lines) {

@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "host/stats/noise_id.hpp"
+#include "host/util/parallel_for.hpp"
 
 namespace driftlab::host::stats {
 namespace {
@@ -48,15 +51,17 @@ std::vector<std::int64_t> analysis_factors(const PhaseRecord& record, Deviation 
 }
 
 AnalysedCurve analyse_deviation(const PhaseRecord& record, Deviation type, std::span<const std::int64_t> ms,
-                                double confidence) {
+                                double confidence, int threads) {
     AnalysedCurve out;
-    out.curve = compute_deviation(record, type, ms);
+    out.curve = compute_deviation(record, type, ms, threads);
     const int dmax = difference_order(type);
+    std::vector<std::optional<NoiseId>> ids(out.curve.m.size());
+    parallel_for(ids.size(), threads, [&](std::size_t i) { ids[i] = autocorr_noise_id(record, out.curve.m[i], dmax); });
     int alpha = kDefaultAlpha;
     bool have_alpha = false;
     for (std::size_t i = 0; i < out.curve.m.size(); ++i) {
         const std::int64_t m = out.curve.m[i];
-        const auto id = autocorr_noise_id(record, m, dmax);
+        const std::optional<NoiseId>& id = ids[i];
         if (id) {
             alpha = id->alpha;
             have_alpha = true;

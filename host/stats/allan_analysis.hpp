@@ -27,8 +27,8 @@ std::vector<std::int64_t> analysis_factors(const PhaseRecord& record, Deviation 
 /// Evaluates `type` on the factors, identifies the noise per tau by lag-1 autocorrelation (on the longest
 /// gap-free segment), and derives EDF (Greenhall-Riley) and the chi-square interval at `confidence`.
 /// With gaps, each segment's EDF is computed for its own length and the segments are pooled as independent
-/// estimates weighted by their term counts.
+/// estimates weighted by their term counts. The factors are shared among `threads` threads (the same digits).
 AnalysedCurve analyse_deviation(const PhaseRecord& record, Deviation type, std::span<const std::int64_t> ms,
-                                double confidence = kOneSigmaConfidence);
+                                double confidence = kOneSigmaConfidence, int threads = 1);
 
 }  // namespace driftlab::host::stats

@@ -40,8 +40,9 @@ struct DeviationCurve {
     std::vector<std::int64_t> n_skipped;  ///< terms a gap-free record of the same length would have had extra
 };
 
-/// Evaluates `type` at each averaging factor in `ms` (ascending), O(N) per factor. Factors that leave no term
-/// are left out of the curve.
-DeviationCurve compute_deviation(const PhaseRecord& record, Deviation type, std::span<const std::int64_t> ms);
+/// Evaluates `type` at each averaging factor in `ms` (ascending), O(N) per factor, the factors shared among
+/// `threads` threads (the same digits however many). Factors that leave no term are left out of the curve.
+DeviationCurve compute_deviation(const PhaseRecord& record, Deviation type, std::span<const std::int64_t> ms,
+                                 int threads = 1);
 
 }  // namespace driftlab::host::stats

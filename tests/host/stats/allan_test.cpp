@@ -251,6 +251,28 @@ TEST(AllanGaps, AllGapsGivesAnEmptyCurve) {
     EXPECT_TRUE(compute_deviation(r, Deviation::oadev, ms).m.empty());
 }
 
+// The factors shared among threads give every figure of the curve to the last digit, gaps and all: each factor's
+// sum is one thread's, whichever.
+TEST(AllanThreads, ThreeThreadsGiveTheDigitsOfOne) {
+    std::vector<double> y = white(50000, 0.8, 21);
+    for (std::size_t i = 1000; i < 1100; ++i) y[i] = std::nan("");
+    const PhaseRecord r = PhaseRecord::from_rate(y, 0.01);
+    const std::vector<std::int64_t> ms = {1, 2, 3, 5, 8, 13, 21, 34, 55, 89, 144, 233, 377, 610, 987, 1597, 2584};
+    for (Deviation d : {Deviation::adev, Deviation::oadev, Deviation::mdev, Deviation::hdev, Deviation::ohdev}) {
+        const AnalysedCurve one = analyse_deviation(r, d, ms, kOneSigmaConfidence, 1);
+        const AnalysedCurve three = analyse_deviation(r, d, ms, kOneSigmaConfidence, 3);
+        ASSERT_FALSE(one.curve.m.empty());
+        EXPECT_EQ(three.curve.m, one.curve.m) << deviation_name(d);
+        EXPECT_EQ(three.curve.dev, one.curve.dev) << deviation_name(d);
+        EXPECT_EQ(three.curve.n, one.curve.n) << deviation_name(d);
+        EXPECT_EQ(three.curve.n_skipped, one.curve.n_skipped) << deviation_name(d);
+        EXPECT_EQ(three.alpha, one.alpha) << deviation_name(d);
+        EXPECT_EQ(three.alpha_identified, one.alpha_identified) << deviation_name(d);
+        EXPECT_EQ(three.ci_low, one.ci_low) << deviation_name(d);
+        EXPECT_EQ(three.ci_high, one.ci_high) << deviation_name(d);
+    }
+}
+
 TEST(PhaseRecordInput, RejectsBadTau0AndMaskLength) {
     std::vector<double> y(10, 1.0);
     std::vector<std::uint8_t> mask(9, 0);
