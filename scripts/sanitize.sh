@@ -32,7 +32,8 @@ tsan() {
   cmake --preset native-tsan >/dev/null
   cmake --build --preset native-tsan -j "$jobs" --target "${runs[@]%%:*}"
   for run in "${runs[@]}"; do
-    build/native-tsan/tests/host/"${run%%:*}" --gtest_filter="${run#*:}" --gtest_brief=1
+    # As ctest's presets give each test 20 minutes: a hang fails the run instead of stalling it.
+    timeout 1800 build/native-tsan/tests/host/"${run%%:*}" --gtest_filter="${run#*:}" --gtest_brief=1
   done
 }
 
