@@ -20,7 +20,10 @@ shift 3
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 unset STAGE  # shard.sbatch and merge.sbatch read it: set below for gap-eval's stages only
-export COMMAND=$command SHARDS=$shards OUT=$out CAMPAIGN="$*" DRIFTLAB=${DRIFTLAB:-driftlab}
+# The arguments go to the tasks through a file, each ended by a NUL: a path with a blank in it stays one argument.
+printf '%s\0' "$@" > "$out/campaign.args"
+unset CAMPAIGN
+export COMMAND=$command SHARDS=$shards OUT=$out CAMPAIGN_ARGS=$out/campaign.args DRIFTLAB=${DRIFTLAB:-driftlab}
 rm -f "$out/campaign.txt" "$out/campaign.json" "$out/sizes"
 # afterok: a failed task leaves every job after it never to run (Slurm cancels them).
 after=()

@@ -13,7 +13,7 @@ dir=$(mktemp -d /tmp/driftlab_slurm.XXXXXX)
 chmod 755 "$dir"  # munged wants its socket's folder open to every user
 cleanup() {
   for d in slurmd slurmctld; do
-    [ -f "$dir/$d.pid" ] && kill "$(cat "$dir/$d.pid")" 2>/dev/null || true
+    if [ -f "$dir/$d.pid" ]; then kill "$(cat "$dir/$d.pid")" 2>/dev/null || true; fi
   done
   munged -s --socket="$dir/munge.sock" >/dev/null 2>&1 || true
   sleep 1
@@ -67,6 +67,7 @@ done
 sinfo -h -o %t | grep -q idle || fail "the node never became idle"
 
 # A small campaign: the local run, then the same as an array of 4 shards and its merge.
+# shellcheck disable=SC2054  # --effects takes a comma-separated list
 campaign=(--quick --effects thermal_rc,burst_spikes --seeds-score 101..102)
 "$driftlab" gap-eval "${campaign[@]}" --json > "$dir/local.json" 2>/dev/null
 DRIFTLAB=$driftlab "$source/scripts/slurm/submit.sh" --wait gap-eval 4 "$dir/run" "${campaign[@]}" ||
@@ -75,14 +76,16 @@ cmp "$dir/local.json" "$dir/run/campaign.json" || fail "the merged campaign diff
 [ -s "$dir/run/campaign.txt" ] || fail "no text result"
 
 # A fleet of five boards in 3 shards, one file in its folder no log: the merge names it (exit 3) and reports the rest.
-mkdir -p "$dir/boards"
+# The folder's name has a blank: every task must get it as one argument.
+boards="$dir/our boards"
+mkdir -p "$boards"
 for k in 1 2 3 4 5; do
-  "$driftlab" hil --preset fig3 --duration 1500 --seed "$k" -o "$dir/boards/b$k.csv" > /dev/null
+  "$driftlab" hil --preset fig3 --duration 1500 --seed "$k" -o "$boards/b$k.csv" > /dev/null
 done
-echo "not a log" > "$dir/boards/notes.csv"
-"$driftlab" fleet "$dir/boards" --no-cache --json > "$dir/fleet.json" 2>/dev/null && fail "a fleet with a non-log passed"
+echo "not a log" > "$boards/notes.csv"
+"$driftlab" fleet "$boards" --no-cache --json > "$dir/fleet.json" 2>/dev/null && fail "a fleet with a non-log passed"
 status=0
-DRIFTLAB=$driftlab "$source/scripts/slurm/submit.sh" --wait fleet 3 "$dir/fleet" "$dir/boards" --no-cache || status=$?
+DRIFTLAB=$driftlab "$source/scripts/slurm/submit.sh" --wait fleet 3 "$dir/fleet" "$boards" --no-cache || status=$?
 [ "$status" -eq 3 ] || fail "the fleet's campaign ended $status, not 3 (a log not analysed)"
 cmp "$dir/fleet.json" "$dir/fleet/campaign.json" || fail "the merged fleet differs from the local run"
 [ -s "$dir/fleet/report/fleet.md" ] || fail "no fleet report"
