@@ -1,4 +1,4 @@
-// driftlab: the host command. Sets up the command table and maps errors to exit codes; nothing else.
+// driftlab: the host command. Sets up the heap and the command table and maps errors to exit codes; nothing else.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -9,6 +9,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/util/error.hpp"
+#include "host/util/heap_policy.hpp"
 #include "sim/sim_error.hpp"
 
 namespace {
@@ -57,6 +58,7 @@ int report_error(const std::exception& e, int exit_code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    driftlab::host::share_one_heap();
     CLI::App app{"driftlab: firmware, simulator and analysis tools for a low-cost IMU"};
     app.require_subcommand(1);
     app.set_version_flag("--version", driftlab::host::cli::kProgramVersion);
