@@ -79,7 +79,12 @@ OutputSpectrum model_spectrum(const std::vector<std::string>& effects, Channel c
 SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, const GapModel& model,
                          const PartPeriodogram& p, const std::vector<double>& known) {
     const std::vector<double> floor_acov = white_floor_autocovariance(model.smoothing);
-    ExpectedPeriodogram expected(floor_acov, p);
+    // Between evaluations only the sizes and the Gauss-Markov time constants move: the unit periodograms of the
+    // model's components (the held ones among them) and two more are all worth keeping, each half the log's length.
+    std::size_t params = 0;
+    for (const std::string& effect : effects) params += param_count(effect);
+    const std::size_t components = model_spectrum(effects, c, std::vector<double>(params, 1.0), model, 1.0).ar1.size();
+    ExpectedPeriodogram expected(floor_acov, p, components + 2);
     const std::vector<double> unit_floor = expected({1.0, {}, 0.0});
     SpectralFit out;
     out.effects = effects;
@@ -130,8 +135,9 @@ SpectralFit fit_spectral(const std::vector<std::string>& effects, Channel c, con
     }
     std::vector<double> best;
     double best_value = INFINITY;
-    for (double w : {1.0, 0.7}) {
-        for (const auto& s : start_grid(effects.back(), out_sd, dt, span)) {
+    // Both floors at one start together: they share its time constant's unit periodogram.
+    for (const auto& s : start_grid(effects.back(), out_sd, dt, span)) {
+        for (double w : {1.0, 0.7}) {
             std::vector<double> x{std::log(w * white0)};
             x.insert(x.end(), earlier.begin(), earlier.end());
             for (double v : s) x.push_back(std::log(v));
