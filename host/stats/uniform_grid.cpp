@@ -25,8 +25,9 @@ double mean_spacing_s(std::span<const double> t_s) {
 bool spacing_agrees(double a_s, double b_s) { return std::abs(a_s / b_s - 1.0) <= kSpacingTolerance; }
 
 bool period_agrees(std::span<const double> t_s, double period_s) {
-    return t_s.size() < 2 || spacing_agrees(median_spacing_s(t_s), period_s) ||
-           spacing_agrees(mean_spacing_s(t_s), period_s);
+    // The mean first: it is two rows' arithmetic where the median sorts a copy of every spacing.
+    return t_s.size() < 2 || spacing_agrees(mean_spacing_s(t_s), period_s) ||
+           spacing_agrees(median_spacing_s(t_s), period_s);
 }
 
 double grid_period_s(std::span<const double> t_s) {
