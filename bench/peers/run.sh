@@ -2,7 +2,7 @@
 # driftlab against its peers on the same machine, whole processes on the same input files (docs/performance.md):
 #   fit   eq. 1 on a 10^6-row, four-channel driftlab log     vs numpy loadtxt + scipy curve_fit (fit_peer.py)
 #   adev  overlapping ADEV at octave tau, 10^7 rate samples  vs numpy, allantools' algorithm (adev_peer.py)
-#   gap   the diagnosis of 1 h at 100 Hz with a second time constant planted (no peer: time and memory)
+#   gap   the diagnosis of 1 h and 2 h at 100 Hz with a second time constant planted (no peer: time and memory)
 #   avr   the real firmware in simavr, default configuration (no peer: times real time)
 # Prints each wall time, peak memory (GNU time's maximum resident set) and the ratio. Needs `scripts/setup.sh --bench`
 # (numpy, scipy, GNU time). Usage: bench/peers/run.sh [WORK...]   (default: all four; DRIFTLAB names the executable)
@@ -56,10 +56,14 @@ np.savetxt('$dir/rate.txt', x, fmt='%.6f')"
     gap)
       printf '[effects.thermal_second_tc]\nc3_dps = 0.3\nt2_s = 2400.0\n' > "$dir/planted.toml"
       cat "$here/../../sim/models/hundred_hz.toml" "$dir/planted.toml" > "$dir/model.toml"
-      "$driftlab" hil --model "$dir/model.toml" --preset fig3 --duration 3600 --seed 7 -o "$dir/hour.csv" > /dev/null
-      measure "$driftlab" gap "$dir/hour.csv" --json
-      printf "gap   1 h at 100 Hz, second time constant planted: %.1f s, %d MB (verdict %s)\n" "$seconds" \
-        "$megabytes" "$(grep -m1 '"verdict"' "$dir/out" | tr -d ' ",' | cut -d: -f2)"
+      # An hour and two: how time and memory grow with the log's length.
+      for hours in 1 2; do
+        "$driftlab" hil --model "$dir/model.toml" --preset fig3 --duration $((hours * 3600)) --seed 7 \
+          -o "$dir/log.csv" > /dev/null
+        measure "$driftlab" gap "$dir/log.csv" --json
+        printf "gap   %d h at 100 Hz, second time constant planted: %.1f s, %d MB (verdict %s)\n" "$hours" \
+          "$seconds" "$megabytes" "$(grep -m1 '"verdict"' "$dir/out" | tr -d ' ",' | cut -d: -f2)"
+      done
       ;;
     avr)
       if ! "$driftlab" hil --target avr --duration 60 -o "$dir/avr.csv" > "$dir/avr.txt" 2>&1; then
