@@ -37,6 +37,14 @@ bool is_name_line(const std::vector<std::string_view>& fields) {
     return false;
 }
 
+// True for a blank line or a comment (its text, without the '#', kept in `comments`): neither is a row.
+bool blank_or_comment(std::string_view trimmed, std::vector<std::string>& comments) {
+    if (trimmed.empty()) return true;
+    if (trimmed.front() != '#') return false;
+    comments.emplace_back(trim_blanks(trimmed.substr(1)));
+    return true;
+}
+
 // Values and line numbers of a table's data lines, and its comments: the whole table's as it is read, or one half
 // of a block's (line_blocks.hpp), which keeps the first error it met.
 struct TableRows {
@@ -55,11 +63,7 @@ public:
         // A byte-order mark (editors on Windows write one) would make the first name unrecognisable.
         if (number == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
         const std::string_view line = trim_blanks(text);
-        if (line.empty()) return;
-        if (line.front() == '#') {
-            rows_.comments.emplace_back(trim_blanks(line.substr(1)));
-            return;
-        }
+        if (blank_or_comment(line, rows_.comments)) return;
         split_numeric_fields(line, fields_);
         if (rows_.lines.empty() && table_.names.empty() && is_name_line(fields_)) {
             for (const auto f : fields_) table_.names.emplace_back(trim_blanks(f));
@@ -94,11 +98,7 @@ public:
         try {
             for_each_line(lines, first_line, [&](std::string_view text, std::uint64_t number) {
                 const std::string_view line = trim_blanks(text);
-                if (line.empty()) return;
-                if (line.front() == '#') {
-                    out.comments.emplace_back(trim_blanks(line.substr(1)));
-                    return;
-                }
+                if (blank_or_comment(line, out.comments)) return;
                 split_numeric_fields(line, fields);
                 parse_values(fields, number, out.flat);
                 check_width(fields.size(), number);
