@@ -8,6 +8,7 @@
 #include "host/log/log_reader.hpp"
 #include "host/util/error.hpp"
 #include "host/util/input_file.hpp"
+#include "tests/support/data_error.hpp"
 
 namespace driftlab::host {
 namespace {
@@ -43,13 +44,7 @@ LogData parse_long(const std::string& text, const ReadOptions& options = {}) {
 }
 
 std::string long_rejection(const std::string& text) {
-    try {
-        parse_long(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "accepted";
-    return {};
+    return test_support::data_error_of([&] { parse_long(text); });
 }
 
 // Rows in each block and half, every value where it was written, gap comments counted to the row after them.

@@ -10,6 +10,7 @@
 #include "host/log/log_reader.hpp"
 #include "host/log/log_writer.hpp"
 #include "host/util/error.hpp"
+#include "tests/support/data_error.hpp"
 
 namespace driftlab::host {
 namespace {
@@ -32,13 +33,7 @@ LogData parse(const std::string& text, const ReadOptions& options = {}) {
 
 /// Parses `text` and returns the DataError message; fails the test when nothing is thrown.
 std::string rejection(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "accepted:\n" << text;
-    return {};
+    return test_support::data_error_of([&] { parse(text); }, text);
 }
 
 const std::string kHead = "# driftlab-log: 1\n# source: test\nt_s,seq,gyro,accel_x,accel_y,accel_z\n";

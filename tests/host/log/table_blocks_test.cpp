@@ -10,6 +10,7 @@
 
 #include "host/log/numeric_table.hpp"
 #include "host/util/error.hpp"
+#include "tests/support/data_error.hpp"
 
 namespace driftlab::host {
 namespace {
@@ -38,13 +39,7 @@ NumericTable parse_table(const std::string& text) {
 }
 
 std::string table_rejection(const std::string& text) {
-    try {
-        parse_table(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "accepted";
-    return {};
+    return test_support::data_error_of([&] { parse_table(text); });
 }
 
 // The file line of row k of long_table() without comments.
