@@ -130,35 +130,20 @@ EvalPart merge_parts(const std::vector<std::string>& paths) {
     const std::size_t n = whole.options.shards;
     ShardSet shards(n, whole.build);
     const std::vector<std::size_t> shard_of = item_shards(whole.options);
-    std::vector<EvalCase> cases;
-    std::vector<PairCase> pairs;
+    const auto owner = [&](std::size_t item) { return item < shard_of.size() ? shard_of[item] : n; };
+    ItemSlots<EvalCase> cases(whole.cases_total, "item");
+    ItemSlots<PairCase> pairs(whole.pairs_total, "item", whole.cases_total);
     for (const std::string& path : paths) {
         EvalPart part = path == paths.front() ? whole : read_part(path);
         if (const std::string why = foreign(part, whole); !why.empty()) throw DataError(path, 0, why);
         const std::size_t k = part.options.shard;
         shards.add(k, part.options.shards, part.build, path);
-        for (auto& c : part.cases) {
-            if (c.item >= whole.cases_total || shard_of[c.item] != k)
-                throw DataError(path, 0,
-                                "holds item " + std::to_string(c.item) + ", not shard " + std::to_string(k) + "'s");
-            cases.push_back(std::move(c));
-        }
-        for (auto& p : part.pairs) {
-            if (p.item < whole.cases_total || p.item >= whole.cases_total + whole.pairs_total || shard_of[p.item] != k)
-                throw DataError(path, 0,
-                                "holds item " + std::to_string(p.item) + ", not shard " + std::to_string(k) + "'s");
-            pairs.push_back(std::move(p));
-        }
+        for (auto& c : part.cases) cases.put(c.item, k, owner(c.item), std::move(c), path);
+        for (auto& p : part.pairs) pairs.put(p.item, k, owner(p.item), std::move(p), path);
     }
     shards.check_complete(paths.front());
-    std::sort(cases.begin(), cases.end(), [](const EvalCase& a, const EvalCase& b) { return a.item < b.item; });
-    std::sort(pairs.begin(), pairs.end(), [](const PairCase& a, const PairCase& b) { return a.item < b.item; });
-    if (cases.size() != whole.cases_total || pairs.size() != whole.pairs_total)
-        throw DataError(paths.front(), 0,
-                        "its campaign's parts hold " + std::to_string(cases.size() + pairs.size()) + " logs, not " +
-                            std::to_string(whole.cases_total + whole.pairs_total));
-    whole.cases = std::move(cases);
-    whole.pairs = std::move(pairs);
+    whole.cases = cases.take(paths.front());
+    whole.pairs = pairs.take(paths.front());
     whole.options.shard = 0;
     whole.options.shards = 1;
     return whole;

@@ -1,6 +1,8 @@
 // A nav-eval campaign in shards and their merge; see nav_parts.hpp.
 #include "host/nav/nav_parts.hpp"
 
+#include <cstdint>
+
 #include "host/util/error.hpp"
 #include "host/util/part_file.hpp"
 
@@ -32,6 +34,25 @@ NavPart read_nav_part(const std::string& path) {
     }
 }
 
+// The runs of one seed each, in the part's order, checked to be the campaign's trajectories once each in its order.
+std::vector<std::vector<EvalRun>> runs_by_seed(std::vector<EvalRun>&& runs,
+                                               const std::vector<std::string>& trajectories, const std::string& path) {
+    std::vector<std::vector<EvalRun>> out;
+    for (EvalRun& r : runs) {
+        if (out.empty() || out.back().front().seed != r.seed) out.emplace_back();
+        out.back().push_back(std::move(r));
+    }
+    for (const auto& seed : out) {
+        std::vector<std::string> names;
+        for (const EvalRun& r : seed) names.push_back(r.trajectory);
+        if (names != trajectories)
+            throw DataError(path, 0,
+                            "holds runs of seed " + std::to_string(seed.front().seed) +
+                                " that are not the campaign's trajectories, each once in order");
+    }
+    return out;
+}
+
 }  // namespace
 
 void write_nav_part(const NavPart& part, const std::string& path) {
@@ -51,29 +72,23 @@ NavPart merge_nav_parts(const std::vector<std::string>& paths) {
     NavPart whole = read_nav_part(paths.front());
     const std::size_t n = whole.shards;
     const std::uint64_t first = whole.campaign.at("seed").get<std::uint64_t>();
-    const std::size_t per_seed = whole.campaign.at("trajectories").size();
+    const auto trajectories = whole.campaign.at("trajectories").get<std::vector<std::string>>();
     ShardSet shards(n, whole.build);
-    std::vector<std::vector<EvalRun>> by_seed(whole.seeds);
+    ItemSlots<std::vector<EvalRun>> seeds(whole.seeds, "seed", first);
     for (const std::string& path : paths) {
         NavPart part = path == paths.front() ? whole : read_nav_part(path);
         if (part.campaign != whole.campaign || part.seeds != whole.seeds)
             throw DataError(path, 0, "of another campaign: its options differ (" + part.campaign.dump() + ")");
-        const std::size_t k = part.shard;
-        shards.add(k, part.shards, part.build, path);
-        for (EvalRun& r : part.runs) {
-            const std::size_t item = static_cast<std::size_t>(r.seed - first);
-            if (r.seed < first || item >= whole.seeds || item % n != k)
-                throw DataError(path, 0,
-                                "holds seed " + std::to_string(r.seed) + ", not shard " + std::to_string(k) + "'s");
-            by_seed[item].push_back(std::move(r));
+        shards.add(part.shard, part.shards, part.build, path);
+        for (auto& runs : runs_by_seed(std::move(part.runs), trajectories, path)) {
+            const std::uint64_t seed = runs.front().seed;
+            seeds.put(seed, part.shard, (seed - first) % n, std::move(runs), path);
         }
     }
     shards.check_complete(paths.front());
     whole.runs.clear();
-    for (auto& runs : by_seed) {
-        if (runs.size() != per_seed) throw DataError(paths.front(), 0, "its campaign's parts miss runs of a seed");
+    for (auto& runs : seeds.take(paths.front()))
         for (auto& r : runs) whole.runs.push_back(std::move(r));
-    }
     whole.shard = 0;
     whole.shards = 1;
     return whole;

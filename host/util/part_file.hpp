@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -45,25 +46,31 @@ private:
 };
 
 /// The items of a campaign's parts, each put in its place as the parts are read (a fleet's boards, the sizes stage's
-/// generators): every item once, from the shard that owns it, none missing.
+/// generators, gap-eval's cases and pairs, nav-eval's seeds): every item once, from the shard that owns it, none
+/// missing.
 template <class T>
 class ItemSlots {
 public:
-    /// `noun` names an item in messages ("board", "generator").
-    ItemSlots(std::size_t items, std::string noun) : slots_(items), noun_(std::move(noun)) {}
+    /// Items numbered `first` .. `first` + `items` - 1 (a campaign's pairs follow its cases, nav-eval's seeds start at
+    /// its first seed); `noun` names one in messages ("board", "generator").
+    ItemSlots(std::size_t items, std::string noun, std::uint64_t first = 0)
+        : slots_(items), noun_(std::move(noun)), first_(first) {}
     /// Puts `value` as item `item` of shard `shard`, read from `path`, where `owner` is the shard that owns the item.
-    /// Throws DataError naming `path` when the item is beyond the campaign, another shard's, or met before.
-    void put(std::size_t item, std::size_t shard, std::size_t owner, T value, const std::string& path) {
-        if (item >= slots_.size() || owner != shard || slots_[item])
-            throw DataError(
-                path, 0, "holds " + noun_ + " " + std::to_string(item) + ", not shard " + std::to_string(shard) + "'s");
-        slots_[item] = std::move(value);
+    /// Throws DataError naming `path` when the item is outside the campaign, another shard's, or met before (shards
+    /// are met once each, so only twice in one part).
+    void put(std::uint64_t item, std::size_t shard, std::size_t owner, T value, const std::string& path) {
+        const std::string named = noun_ + " " + std::to_string(item);
+        if (item < first_ || item - first_ >= slots_.size() || owner != shard)
+            throw DataError(path, 0, "holds " + named + ", not shard " + std::to_string(shard) + "'s");
+        auto& slot = slots_[item - first_];
+        if (slot) throw DataError(path, 0, "holds " + named + " twice");
+        slot = std::move(value);
     }
     /// Every item in order. Throws DataError naming `first` (the campaign's first part) when one is missing.
     std::vector<T> take(const std::string& first) {
         std::vector<T> out;
         for (std::size_t i = 0; i < slots_.size(); ++i) {
-            if (!slots_[i]) throw DataError(first, 0, "its parts miss " + noun_ + " " + std::to_string(i));
+            if (!slots_[i]) throw DataError(first, 0, "its parts miss " + noun_ + " " + std::to_string(first_ + i));
             out.push_back(std::move(*slots_[i]));
         }
         return out;
@@ -72,6 +79,7 @@ public:
 private:
     std::vector<std::optional<T>> slots_;
     std::string noun_;
+    std::uint64_t first_;
 };
 
 }  // namespace driftlab::host
