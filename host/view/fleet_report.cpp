@@ -69,10 +69,10 @@ void write_boards(std::ostream& md, const FleetView& v) {
        << "|---|---|---|---|---|---|---|---|---|\n";
     for (const fleet::BoardEntry& b : *v.boards) {
         if (!b.result) continue;
-        for (const fleet::ChannelResult& c : b.result->channels) {
-            md << "| " << b.log << " | " << c.channel;
-            for (const fleet::Estimate& e : c.parameters) md << " | " << estimate_cell(e, "±", "–");
-            md << " | " << (b.result->gap_run ? b.result->gap_verdict : "–") << " |\n";
+        for (std::size_t c = 0; c < b.result->channels.size(); ++c) {
+            md << "| " << b.log << " | " << b.result->channels[c].channel;
+            for (const std::string& cell : channel_cells(*b.result, c, "±", "–")) md << " | " << cell;
+            md << " |\n";
         }
     }
 }

@@ -16,11 +16,6 @@ using fleet::kParameters;
 
 namespace {
 
-std::string gap_cell(const fleet::BoardResult& r) {
-    if (!r.gap_run) return "-";
-    return r.gap_error.empty() ? r.gap_verdict : "failed";
-}
-
 void print_boards(std::ostream& out, const std::vector<BoardEntry>& boards) {
     out << "per board (eq. 1 in counts and s; noise terms of the drift-removed ADEV, counts s^k):\n";
     char line[512];
@@ -30,14 +25,11 @@ void print_boards(std::ostream& out, const std::vector<BoardEntry>& boards) {
     for (const BoardEntry& b : boards) {
         if (!b.result) continue;
         for (std::size_t c = 0; c < b.result->channels.size(); ++c) {
-            const fleet::ChannelResult& ch = b.result->channels[c];
-            std::string cells[6];
-            for (std::size_t i = 0; i < 6; ++i)
-                cells[i] = ch.error.empty() ? estimate_cell(ch.parameters[i], "+-", "-") : "-";
+            const std::vector<std::string> cells = channel_cells(*b.result, c, "+-", "-");
             std::snprintf(line, sizeof line, "  %-24s %-8s %-16s %-18s %-16s %-20s %-20s %-20s %s\n",
-                          c == 0 ? b.log.c_str() : "", ch.channel.c_str(), cells[0].c_str(), cells[1].c_str(),
-                          cells[2].c_str(), cells[3].c_str(), cells[4].c_str(), cells[5].c_str(),
-                          c == 0 ? gap_cell(*b.result).c_str() : "");
+                          c == 0 ? b.log.c_str() : "", b.result->channels[c].channel.c_str(), cells[0].c_str(),
+                          cells[1].c_str(), cells[2].c_str(), cells[3].c_str(), cells[4].c_str(), cells[5].c_str(),
+                          c == 0 ? cells[6].c_str() : "");
             out << line;
         }
     }
@@ -64,6 +56,15 @@ std::string estimate_cell(const fleet::Estimate& e, const std::string& plus_minu
     if (!e.known) return unknown;
     return std::isfinite(e.std_error) ? value_with_error(e.value, e.std_error, plus_minus)
                                       : significant_plain(e.value, 5);
+}
+
+std::vector<std::string> channel_cells(const fleet::BoardResult& r, std::size_t channel, const std::string& plus_minus,
+                                       const std::string& unknown) {
+    std::vector<std::string> cells;
+    for (const fleet::Estimate& e : r.channels.at(channel).parameters)
+        cells.push_back(estimate_cell(e, plus_minus, unknown));
+    cells.push_back(!r.gap_run ? unknown : r.gap_error.empty() ? r.gap_verdict : "failed");
+    return cells;
 }
 
 std::string spread_cell(const fleet::Distribution& d, const std::string& factor_sign) {
