@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "host/log/capture_file.hpp"
@@ -107,9 +109,8 @@ struct ParsedRows {
     }
 };
 
-// The text of a `# gap: text` comment (its body after '#'), none for another comment.
-std::optional<std::string> gap_text(std::string_view body) {
-    const auto kv = split_comment_key_value(body);
+// The text of a `# gap: text` comment, from its key and value (split_comment_key_value()); none for another comment.
+std::optional<std::string> gap_text(const std::optional<std::pair<std::string, std::string>>& kv) {
     if (kv && kv->first == "gap") return kv->second;
     return std::nullopt;
 }
@@ -159,7 +160,8 @@ public:
             for_each_line(text, first_line, [&](std::string_view line, std::uint64_t number) {
                 if (trim_blanks(line).empty()) return;
                 if (line.front() == '#') {
-                    if (auto gap = gap_text(line.substr(1))) out.gaps.push_back({out.t_s.size(), number, *gap});
+                    if (auto gap = gap_text(split_comment_key_value(line.substr(1))))
+                        out.gaps.push_back({out.t_s.size(), number, *gap});
                     return;
                 }
                 read_row(line, number, fields, out);
@@ -241,11 +243,11 @@ private:
     }
 
     void comment(std::string_view body, std::uint64_t number) {
-        if (auto gap = gap_text(body)) {
+        const auto kv = split_comment_key_value(body);
+        if (auto gap = gap_text(kv)) {
             log_.gaps.push_back({log_.t_s.size(), number, std::move(*gap)});
             return;
         }
-        const auto kv = split_comment_key_value(body);
         if (plan_ || !kv) return;  // free comments, and key: value text among the rows, are notes only
         if (!LogMetadata::is_valid_key(kv->first))
             throw DataError(log_.source_name, number, "metadata key '" + kv->first + "' is not lower_snake_case");

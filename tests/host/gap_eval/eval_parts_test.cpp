@@ -22,8 +22,8 @@ struct Campaign {
         options.pairs = {{"thermal_rc", "none"}};
         options.shards = 2;
         shard_of = item_shards(options);
-        pairs = static_cast<std::size_t>(options.score_last - options.score_first + 1);
-        cases = shard_of.size() - pairs;
+        cases = case_items(options);
+        pairs = pair_items(options);
     }
     // Shard k's part: its items, or `items` when given.
     EvalPart part(std::size_t k, std::vector<std::size_t> items = {}) const {
