@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "host/gap_eval/evaluate.hpp"
+#include "host/gap_eval/thresholds.hpp"
 
 namespace driftlab::host::gap {
 

@@ -1,6 +1,6 @@
 // The withheld-effect benchmark behind `driftlab gap-eval`: simulate gyro logs of a domain-randomised base with
 // one truth generator (truth.hpp; or none), hide it from the diagnosis, and score the verdicts. Decision
-// thresholds (penalty per parameter, minimum held-out shrink) are tuned on one seed set and scored on another.
+// thresholds (thresholds.hpp) are tuned on one seed set and scored on another.
 // docs/gap.md §Evaluation.
 #pragma once
 
@@ -118,27 +118,6 @@ struct PairCase {
     double heldout_before = 1.0, heldout_after = 1.0;  ///< held-out gap score of the base and of the final model
 };
 
-/// The decision thresholds gap-eval tunes; the defaults are the ones `driftlab gap` ships (ExplainOptions).
-struct Thresholds {
-    double penalty_per_param = ExplainOptions{}.penalty_per_param;
-    double min_heldout_shrink = ExplainOptions{}.min_heldout_shrink;
-    double step_alpha = ExplainOptions{}.step_alpha;
-    InformationCriterion information_criterion = ExplainOptions{}.information_criterion;
-};
-
-/// What the diagnosis says of a case under some thresholds.
-struct Decision {
-    std::string verdict;         ///< "none", "unexplained" or the best passing candidate
-    std::string ambiguous_with;  ///< a passing runner-up not separated from the best (close_call), else ""
-};
-
-/// The decision a case gets under `th` (ambiguity as ExplainOptions::ambiguity_z).
-Decision decide(const EvalCase& c, const Thresholds& th);
-
-/// Whether the decision is right: the truth's effect (with `pair_ok`, also a declared close call holding it);
-/// "none" for a clean log; for an out-of-library log anything but a library effect.
-bool is_correct(const EvalCase& c, const Decision& d, bool pair_ok);
-
 /// The logs run_cases() and run_pairs() diagnose in a whole campaign (every shard).
 std::size_t case_items(const EvalOptions& options);
 std::size_t pair_items(const EvalOptions& options);
@@ -167,15 +146,5 @@ inline constexpr std::uint64_t kMovedCaseSeed = std::uint64_t{1} << 62;
 /// in every run that puts it in the same place; a log whose value an earlier one took gets kMovedCaseSeed + place
 /// instead, so that no two logs share one.
 std::vector<std::uint64_t> case_seeds(const std::vector<std::uint64_t>& run_seeds);
-
-/// Whether the best thresholds beat the shipped ones on the tuning logs: `only_best` logs right under the best only,
-/// `only_shipped` under the shipped only; an exact one-sided McNemar (sign) test at 5 %.
-bool significantly_better(std::size_t only_best, std::size_t only_shipped);
-
-/// Thresholds (penalty per parameter, minimum held-out shrink, level of the level-step test, information criterion)
-/// maximising top-1 accuracy on the tuning cases with a false-positive rate <= 5 %; the shipped ones (Thresholds{})
-/// are kept unless the best is significantly better on the same cases (significantly_better()) or they
-/// break the false-positive bound.
-Thresholds tune(const std::vector<EvalCase>& cases);
 
 }  // namespace driftlab::host::gap

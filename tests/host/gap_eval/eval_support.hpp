@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "host/gap_eval/evaluate.hpp"
+#include "host/gap_eval/thresholds.hpp"
 
 namespace driftlab::host::gap {
 
