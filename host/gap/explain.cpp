@@ -104,130 +104,159 @@ struct Search {
         return judge;
     }
 
+    // What a step knows of one open channel while its candidates are fitted and judged.
+    struct ChannelStep {
+        std::size_t i;
+        int step;
+        Judge judge;
+        Comparison base_cmp;                   // the path's model against the log
+        std::vector<AcceptedProcess> earlier;  // Gaussian processes accepted on the channel
+        SpectralFit base_fit;                  // the path's noise fitted on the whole log
+        bool shaped;                           // a mean shape is accepted on the channel
+    };
+
+    // Channel `i` at this step, or none when it closes.
+    std::optional<ChannelStep> open_channel(const SearchPath& path, std::size_t i, int step) const {
+        Judge judge = judge_for(i, fitting);
+        Comparison base_cmp = judge.evaluate(path.result.model, options.eval_replicates);
+        // A channel stays open while cells are located or, after an accepted effect, a held-out excess remains
+        // for another effect to shrink (one broad process may cover a line that is still there).
+        const double heldout = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout));
+        const bool diffuse =
+            options.diffuse_alpha > 0.0 &&
+            heldout > gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout), options.diffuse_alpha);
+        if (locate(judge.real, base_cmp, judge.layout).empty() && !diffuse &&
+            (step == 1 || heldout - 1.0 <= kMinHeldoutExcess))
+            return std::nullopt;
+        // Gaussian processes accepted earlier on this channel are fitted again beside each new candidate:
+        // one sized alone may have swallowed what the candidate explains (a broad flicker covers a sinusoid).
+        std::vector<AcceptedProcess> earlier = processes(path.result, i);
+        const bool shaped =
+            std::any_of(path.result.accepted.begin(), path.result.accepted.end(), [&](const Explanation& e) {
+                return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
+            });
+        GapModel m = path.result.model;
+        const SpectralFit base_fit =
+            fit_noise(m, judge, residual_periodogram(m, judge, everywhere), earlier, "", nullptr);
+        return ChannelStep{i, step, std::move(judge), std::move(base_cmp), std::move(earlier), base_fit, shaped};
+    }
+
+    // One candidate fitted and judged beside the path's model; none when it has nothing to fit.
+    std::optional<CandidateOutcome> try_candidate(const std::string& effect, const SearchPath& path,
+                                                  const ChannelStep& s) const {
+        const Judge& judge = s.judge;
+        const FitRoute route = candidate(effect).route;
+        // A process the base holds on this channel (not yet replaced on this path: the name is then in `used`)
+        // is fitted in place of the model file's: the model it is judged against lacks that one outcomes.
+        const bool replaces = route == FitRoute::spectral && holds(options.given, effect, judge.channel);
+        const std::optional<GapModel> replaced =
+            replaces ? std::optional<GapModel>(without_held(path.result.model, *options.given, effect, judge.channel))
+                     : std::nullopt;
+        const GapModel& current = replaced ? *replaced : path.result.model;
+        Fitted fitted;
+        if (route == FitRoute::deterministic) {
+            fitted = fit_deterministic(effect, path.result.model, judge, fitting);
+            if (!s.earlier.empty())
+                fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), s.earlier, "",
+                          &fitted.refits);
+        } else if (route == FitRoute::spectral) {
+            fitted.model = current;
+            const SpectralFit f = fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting),
+                                            s.earlier, effect, &fitted.refits);
+            fitted.params.assign(f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()),
+                                 f.params.end());
+        } else if (route == FitRoute::code_density) {
+            fitted = fit_code_density(path.result.model, judge);
+            if (fitted.params.empty()) return std::nullopt;  // no transition crossed often enough to place
+        } else {
+            fitted = fit_spikes(path.result.model, judge, options);
+        }
+        // The candidate takes part of the short-lag spread: match the white noise again with it in place.
+        match_channel_noise(fitted.model, judge, options.seed);
+        Explanation ex = judge_candidate(effect, fitted, judge, s.base_cmp, options);
+        // The choice among accepted candidates and the level-step test concern accepted ones only. The level-step
+        // test is for Gaussian-process explanations, which can close the battery's gap around a step: a mean
+        // shape's misfit is judged by the cells it leaves located, and spikes cannot hold a level (a burst longer
+        // than one conversion, which the library's spikes do not make, would read as a short step).
+        ex.replaces_given = replaces;
+        if (ex.accepted && ex.gaussian)
+            spectral_evidence(ex, current, judge, s.earlier, s.base_fit.nll, s.base_fit.free_parameters);
+        if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !s.shaped)
+            ex.residual_step = step_test(fitted.model, judge, s.earlier, effect, fitted.params, options);
+        ex.step = s.step;
+        return CandidateOutcome{ex, fitted.model, std::move(fitted.refits)};
+    }
+
+    // The channel's candidates not yet on the path, fitted side by side (they are independent and mostly serial:
+    // the spectral fits) and kept in the list's order, so that the result does not depend on which finishes first.
+    std::vector<CandidateOutcome> fit_candidates(const SearchPath& path, const ChannelStep& s) const {
+        const std::vector<std::string>& used = path.used[s.i];
+        std::vector<std::string> to_try;
+        for (const std::string& effect : names) {
+            if (std::find(used.begin(), used.end(), effect) != used.end()) continue;
+            if (effect == "spikes" && !tails_differ(s.judge, s.base_cmp)) continue;
+            if (candidate(effect).route == FitRoute::code_density && !s.judge.raw) continue;  // needs raw codes
+            to_try.push_back(effect);
+        }
+        std::vector<std::optional<CandidateOutcome>> slots(to_try.size());
+        std::mutex progress_mutex;
+        parallel_for(to_try.size(), options.threads, [&](std::size_t n) {
+            if (options.progress) {
+                const std::lock_guard<std::mutex> lock(progress_mutex);
+                options.progress("step " + std::to_string(s.step) + ", " + kChannelNames[s.i] + ": " + to_try[n]);
+            }
+            slots[n] = try_candidate(to_try[n], path, s);
+        });
+        std::vector<CandidateOutcome> outcomes;
+        for (auto& o : slots)
+            if (o) outcomes.push_back(std::move(*o));
+        return outcomes;
+    }
+
+    // The channel's choice among its candidates' outcomes, every one added to the path's tried; none when none passed.
+    std::optional<ChannelChoice> choose_outcome(std::vector<CandidateOutcome> outcomes, SearchPath& path) const {
+        std::vector<const Explanation*> passing;
+        for (const auto& o : outcomes)
+            if (o.ex.accepted) passing.push_back(&o.ex);
+        const Choice choice = choose(passing, options.information_criterion);
+        std::size_t best_index = outcomes.size();
+        for (std::size_t k = 0; k < outcomes.size(); ++k)
+            if (&outcomes[k].ex == choice.best) best_index = k;
+        if (choice.best && choice.runner_up &&
+            close_call(*choice.best, *choice.runner_up, options.ambiguity_z, options.information_criterion)) {
+            Explanation& b = outcomes[best_index].ex;
+            b.ambiguous_with = choice.runner_up->effect;
+            b.settle += "; vs " + choice.runner_up->effect + ": " + choice.runner_up->settle;
+        }
+        for (const auto& o : outcomes) path.result.tried.push_back(o.ex);
+        if (best_index == outcomes.size()) return std::nullopt;
+        // A process chosen over an accepted mean shape may have taken the shape's signal with the rest: the shape's
+        // path is followed too (run()). A shape that two level steps beat is no explanation to follow.
+        const CandidateOutcome* shape = nullptr;
+        if (candidate(outcomes[best_index].ex.effect).route == FitRoute::spectral)
+            for (const auto& o : outcomes)
+                if (o.ex.accepted && candidate(o.ex.effect).route == FitRoute::deterministic &&
+                    !o.ex.shape_steps.steps_win &&
+                    (!shape || delta_ic(o.ex, options.information_criterion) >
+                                   delta_ic(shape->ex, options.information_criterion)))
+                    shape = &o;
+        return ChannelChoice{outcomes[best_index], shape ? std::optional<CandidateOutcome>(*shape) : std::nullopt};
+    }
+
     // Every open channel's candidates fitted and judged beside the path's model; tried fits are added to the path.
     std::vector<ChannelChoice> step(SearchPath& path, int step) const {
         std::vector<ChannelChoice> chosen;
         for (std::size_t i = 0; i < kChannelCount; ++i) {
             if (!path.open[i]) continue;
-            const Channel c = static_cast<Channel>(i);
-            const Judge judge = judge_for(i, fitting);
-            const Comparison base_cmp = judge.evaluate(path.result.model, options.eval_replicates);
-            // A channel stays open while cells are located or, after an accepted effect, a held-out excess remains
-            // for another effect to shrink (one broad process may cover a line that is still there).
-            const double heldout = gap_score(base_cmp, judge.layout, in_segment(Segment::heldout));
-            const bool diffuse = options.diffuse_alpha > 0.0 &&
-                                 heldout > gap_score_threshold(base_cmp, judge.layout, in_segment(Segment::heldout),
-                                                               options.diffuse_alpha);
-            if (locate(judge.real, base_cmp, judge.layout).empty() && !diffuse &&
-                (step == 1 || heldout - 1.0 <= kMinHeldoutExcess)) {
+            const std::optional<ChannelStep> s = open_channel(path, i, step);
+            std::optional<ChannelChoice> choice;
+            if (s) choice = choose_outcome(fit_candidates(path, *s), path);
+            // Closed, or nothing passed (the later steps change other channels only: they would make the same fits).
+            if (!choice) {
                 path.open[i] = false;
                 continue;
             }
-            // Gaussian processes accepted earlier on this channel are fitted again beside each new candidate:
-            // one sized alone may have swallowed what the candidate explains (a broad flicker covers a sinusoid).
-            const std::vector<AcceptedProcess> earlier = processes(path.result, i);
-            const bool shaped =
-                std::any_of(path.result.accepted.begin(), path.result.accepted.end(), [&](const Explanation& e) {
-                    return e.channel == kChannelNames[i] && candidate(e.effect).route == FitRoute::deterministic;
-                });
-            const SpectralFit base_fit = [&] {
-                GapModel m = path.result.model;
-                return fit_noise(m, judge, residual_periodogram(m, judge, everywhere), earlier, "", nullptr);
-            }();
-            std::vector<std::string> to_try;
-            for (const std::string& effect : names) {
-                if (std::find(path.used[i].begin(), path.used[i].end(), effect) != path.used[i].end()) continue;
-                if (effect == "spikes" && !tails_differ(judge, base_cmp)) continue;
-                if (candidate(effect).route == FitRoute::code_density && !judge.raw) continue;  // needs raw codes
-                to_try.push_back(effect);
-            }
-            // The candidates' fits are independent and mostly serial (the spectral fits): they run side by side, and
-            // keep the list's order, so that the result does not depend on which finishes first.
-            std::vector<std::optional<CandidateOutcome>> slots(to_try.size());
-            std::mutex progress_mutex;
-            parallel_for(to_try.size(), options.threads, [&](std::size_t n) {
-                const std::string& effect = to_try[n];
-                if (options.progress) {
-                    const std::lock_guard<std::mutex> lock(progress_mutex);
-                    options.progress("step " + std::to_string(step) + ", " + kChannelNames[i] + ": " + effect);
-                }
-                const FitRoute route = candidate(effect).route;
-                // A process the base holds on this channel (not yet replaced on this path: the name is then in `used`)
-                // is fitted in place of the model file's: the model it is judged against lacks that one outcomes.
-                const bool replaces = route == FitRoute::spectral && holds(options.given, effect, c);
-                const std::optional<GapModel> replaced =
-                    replaces ? std::optional<GapModel>(without_held(path.result.model, *options.given, effect, c))
-                             : std::nullopt;
-                const GapModel& current = replaced ? *replaced : path.result.model;
-                Fitted fitted;
-                if (route == FitRoute::deterministic) {
-                    fitted = fit_deterministic(effect, path.result.model, judge, fitting);
-                    if (!earlier.empty())
-                        fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier, "",
-                                  &fitted.refits);
-                } else if (route == FitRoute::spectral) {
-                    fitted.model = current;
-                    const SpectralFit f =
-                        fit_noise(fitted.model, judge, residual_periodogram(fitted.model, judge, fitting), earlier,
-                                  effect, &fitted.refits);
-                    fitted.params.assign(
-                        f.params.end() - static_cast<std::ptrdiff_t>(candidate(effect).param_keys.size()),
-                        f.params.end());
-                } else if (route == FitRoute::code_density) {
-                    fitted = fit_code_density(path.result.model, judge);
-                    if (fitted.params.empty()) return;  // no transition crossed often enough to place
-                } else {
-                    fitted = fit_spikes(path.result.model, judge, options);
-                }
-                // The candidate takes part of the short-lag spread: match the white noise again with it in place.
-                match_channel_noise(fitted.model, judge, options.seed);
-                Explanation ex = judge_candidate(effect, fitted, judge, base_cmp, options);
-                // The choice among accepted candidates and the level-step test concern accepted ones only. The
-                // level-step test is for Gaussian-process explanations, which can close the battery's gap around a
-                // step: a mean shape's misfit is judged by the cells it leaves located, and spikes cannot hold a
-                // level (a burst longer than one conversion, which the library's spikes do not make, would read as
-                // a short step).
-                ex.replaces_given = replaces;
-                if (ex.accepted && ex.gaussian)
-                    spectral_evidence(ex, current, judge, earlier, base_fit.nll, base_fit.free_parameters);
-                if (options.step_test_candidates && ex.accepted && route == FitRoute::spectral && !shaped)
-                    ex.residual_step = step_test(fitted.model, judge, earlier, effect, fitted.params, options);
-                ex.step = step;
-                slots[n] = CandidateOutcome{ex, fitted.model, std::move(fitted.refits)};
-            });
-            std::vector<CandidateOutcome> outcomes;  // this channel's candidates fitted at this step
-            for (auto& o : slots)
-                if (o) outcomes.push_back(std::move(*o));
-            std::vector<const Explanation*> passing;
-            for (const auto& o : outcomes)
-                if (o.ex.accepted) passing.push_back(&o.ex);
-            const Choice choice = choose(passing, options.information_criterion);
-            std::size_t best_index = outcomes.size();
-            for (std::size_t k = 0; k < outcomes.size(); ++k)
-                if (&outcomes[k].ex == choice.best) best_index = k;
-            if (choice.best && choice.runner_up &&
-                close_call(*choice.best, *choice.runner_up, options.ambiguity_z, options.information_criterion)) {
-                Explanation& b = outcomes[best_index].ex;
-                b.ambiguous_with = choice.runner_up->effect;
-                b.settle += "; vs " + choice.runner_up->effect + ": " + choice.runner_up->settle;
-            }
-            for (const auto& o : outcomes) path.result.tried.push_back(o.ex);
-            if (best_index == outcomes.size()) {
-                // Nothing passed, and the later steps change other channels only: they would make the same fits again.
-                path.open[i] = false;
-                continue;
-            }
-            // A process chosen over an accepted mean shape may have taken the shape's signal with the rest: the shape's
-            // path is followed too (run()). A shape that two level steps beat is no explanation to follow.
-            const CandidateOutcome* shape = nullptr;
-            if (candidate(outcomes[best_index].ex.effect).route == FitRoute::spectral)
-                for (const auto& o : outcomes)
-                    if (o.ex.accepted && candidate(o.ex.effect).route == FitRoute::deterministic &&
-                        !o.ex.shape_steps.steps_win &&
-                        (!shape || delta_ic(o.ex, options.information_criterion) >
-                                       delta_ic(shape->ex, options.information_criterion)))
-                        shape = &o;
-            chosen.push_back({outcomes[best_index], shape ? std::optional<CandidateOutcome>(*shape) : std::nullopt});
+            chosen.push_back(std::move(*choice));
         }
         return chosen;
     }
