@@ -258,6 +258,25 @@ void output_code_channels(const LogData& log, const std::array<bool, kChannelCou
                                   });
 }
 
+// The battery the log is judged by: its channels, hold-out and cells, with the raw-mode columns (into `raw`) and the
+// outputs that are codes given their code-histogram cells; the result records which.
+BatteryOptions log_battery(GapResult& result, const LogData& log, const GapOptions& options, RawCodes& raw) {
+    BatteryOptions battery;
+    battery.channels = result.channels;
+    battery.holdout = options.holdout;
+    battery.fit_fraction = options.fit_fraction;
+    battery.sample_period_s = result.base.smoothing.sample_period_s;
+    battery.frac_cells = !options.less_known_input;
+    if (!options.less_known_input) {
+        raw = raw_code_columns(log, result.channels, battery);
+        output_code_channels(log, result.channels, result.base.smoothing, battery);
+    }
+    result.raw_codes = battery.raw_codes;
+    result.output_codes = battery.output_codes;
+    if (!any_codes(result)) result.not_tried = not_tried_without_raw_codes(options.less_known_input);
+    return battery;
+}
+
 // The explanation search on the channels with located cells (for a diffuse gap, on every channel), and the verdict.
 void search(GapResult& result, const LogData& log, const GapOptions& options,
             const std::array<const std::vector<double>*, kChannelCount>& y, const BatteryOptions& battery,
@@ -346,17 +365,8 @@ GapResult diagnose(const LogData& log, const sim::SimModel& unit, const GapOptio
     result.left_out = log.cuts;
     result.saturated = saturated_channels(log, result.channels);
 
-    BatteryOptions battery;
-    battery.channels = result.channels;
-    battery.holdout = options.holdout;
-    battery.fit_fraction = options.fit_fraction;
-    battery.sample_period_s = result.base.smoothing.sample_period_s;
-    battery.frac_cells = !options.less_known_input;
-    const RawCodes raw = options.less_known_input ? RawCodes{} : raw_code_columns(log, result.channels, battery);
-    if (!options.less_known_input) output_code_channels(log, result.channels, result.base.smoothing, battery);
-    result.raw_codes = battery.raw_codes;
-    result.output_codes = battery.output_codes;
-    if (!any_codes(result)) result.not_tried = not_tried_without_raw_codes(options.less_known_input);
+    RawCodes raw{};
+    const BatteryOptions battery = log_battery(result, log, options, raw);
     result.real_values = compute_battery(log.t_s, y, battery, &result.layout, raw).values;
 
     auto judge = [&](const GapModel& model, Comparison& cmp, std::vector<LocatedCell>& located, double& fit,
