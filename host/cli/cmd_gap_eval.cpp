@@ -109,7 +109,8 @@ void write_sizes_shard(const GapEvalCommandOptions& o, gap::EvalOptions options)
                  options.shard, options.shards, part.items.size(), part.generators, o.part.c_str());
 }
 
-void run(const GapEvalCommandOptions& o) {
+// The campaign the command line asks for (its shard and progress aside).
+gap::EvalOptions campaign_options(const GapEvalCommandOptions& o) {
     gap::EvalOptions options;
     std::tie(options.tune_first, options.tune_last) = parse_range("--seeds-tune", o.tune_seeds);
     std::tie(options.score_first, options.score_last) = parse_range("--seeds-score", o.score_seeds);
@@ -127,10 +128,6 @@ void run(const GapEvalCommandOptions& o) {
     if (!o.clean_only && !(options.score_first > options.tune_last || options.score_last < options.tune_first))
         throw UsageError("--seeds-tune and --seeds-score must not overlap");
     options.pair_level = o.pair_level;
-    if (!o.plot_dir.empty()) {
-        // Before the run, so that an unwritable folder is reported at once rather than after it.
-        make_output_folder(o.plot_dir, "plot");
-    }
     options.holdout = o.holdout;
     options.clean_per_seed = o.clean_per_seed;
     options.clean_form = o.raw_clean      ? gap::CleanForm::raw_mode
@@ -148,17 +145,6 @@ void run(const GapEvalCommandOptions& o) {
     }
     if (o.samples > 0) options.samples = o.samples;
     if (o.detection_logs > 0) options.detection_logs = o.detection_logs;
-    const bool tty = isatty(2);
-    auto progress_for = [tty](const char* what) -> std::function<void(std::size_t, std::size_t)> {
-        if (!tty) return {};
-        const auto started = std::chrono::steady_clock::now();
-        return [what, started](std::size_t done, std::size_t total) {
-            const double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
-            std::fprintf(stderr, "\rgap-eval: %s %zu/%zu  %s\033[K", what, done, total,
-                         time_left(fraction, seconds_since(started)).c_str());
-            if (done == total) std::fprintf(stderr, "\n");
-        };
-    };
     if (!o.levels.empty()) options.levels = o.levels;
     // With the shipped thresholds the tuning seeds only measure a_50 (the thresholds were tuned on the default ones).
     options.tune = !(o.shipped || o.clean_only);
@@ -167,6 +153,25 @@ void run(const GapEvalCommandOptions& o) {
         if (options.clean_per_seed == 0) options.clean_per_seed = static_cast<int>(options.levels.size());
         options.levels.clear();
     }
+    return options;
+}
+
+// A stage's progress on a terminal ("gap-eval: WHAT done/total  time left"); none where stderr is not one.
+std::function<void(std::size_t, std::size_t)> progress_for(const char* what) {
+    if (!isatty(2)) return {};
+    const auto started = std::chrono::steady_clock::now();
+    return [what, started](std::size_t done, std::size_t total) {
+        const double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
+        std::fprintf(stderr, "\rgap-eval: %s %zu/%zu  %s\033[K", what, done, total,
+                     time_left(fraction, seconds_since(started)).c_str());
+        if (done == total) std::fprintf(stderr, "\n");
+    };
+}
+
+void run(const GapEvalCommandOptions& o) {
+    gap::EvalOptions options = campaign_options(o);
+    // Before the run, so that an unwritable folder is reported at once rather than after it.
+    if (!o.plot_dir.empty()) make_output_folder(o.plot_dir, "plot");
     options.progress = progress_for("detection threshold a_50, generator");
     if (o.measure_sizes) {
         write_sizes_shard(o, options);
@@ -199,13 +204,8 @@ std::string default_pairs_text() {
     return text;
 }
 
-}  // namespace
-
-void register_gap_eval(CLI::App& app) {
-    auto o = std::make_shared<GapEvalCommandOptions>();
-    CLI::App* cmd = app.add_subcommand("gap-eval",
-                                       "Benchmark the gap diagnosis on simulated logs with a withheld effect "
-                                       "(truth generators differ from the fitted forms)");
+// The options that shape the campaign's logs and scores.
+void add_campaign_options(CLI::App* cmd, GapEvalCommandOptions* o) {
     cmd->add_option("--seeds-tune", o->tune_seeds, "Seeds the decision thresholds are tuned on, A..B");
     cmd->add_option("--seeds-score", o->score_seeds, "Seeds the results are scored on, C..D (disjoint)");
     CLI::Option* effects =
@@ -264,6 +264,16 @@ void register_gap_eval(CLI::App& app) {
                   "Clean logs record all four channels (the accelerometer axes drawn as the gyro is), so the channels "
                   "are also read together, as supply_wander's logs are")
         ->excludes(raw_clean);
+}
+
+}  // namespace
+
+void register_gap_eval(CLI::App& app) {
+    auto o = std::make_shared<GapEvalCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("gap-eval",
+                                       "Benchmark the gap diagnosis on simulated logs with a withheld effect "
+                                       "(truth generators differ from the fitted forms)");
+    add_campaign_options(cmd, o.get());
     cmd->add_flag("--json", o->json,
                   "Print JSON instead of the markdown tables (keys: thresholds, a50, false_positive, confusion, "
                   "by_size, targets, pairs)");
