@@ -45,9 +45,10 @@ double counts_per_unit(const OutputModel& model, Channel c);
 /// channel (empty for channels not asked for): the same for every seed of one model.
 using DriftAtConversions = std::array<std::vector<double>, kChannelCount>;
 
-/// What the shared drift may hold: 128 MiB, the four channels of about 1.4 h at 100 Hz with 8 conversions per output.
-/// Sharing saves about a tenth of a replicate's time; on a longer log that is not worth a block growing with it.
-inline constexpr std::size_t kSharedDriftBytes = std::size_t{128} << 20;
+/// What the shared drift may hold: 32 MiB, the four channels of about 20 min at 100 Hz with 8 conversions per output
+/// (every gap-eval log). Sharing saves about a tenth of a replicate's time on a short log; on an hour's log at 128 MiB
+/// it was the largest block of gap's peak (92 MB) and saved no measurable time (119 s with it, 115 s without).
+inline constexpr std::size_t kSharedDriftBytes = std::size_t{32} << 20;
 
 /// The drift of `model` at its conversion instants for the output instants `t_s`, for its replicates to share; none
 /// where a timing effect moves the instants (they then differ by seed), or where it would exceed `max_bytes`
