@@ -59,11 +59,13 @@ public:
     /// Throws DataError naming `path` when the item is outside the campaign, another shard's, or met before (shards
     /// are met once each, so only twice in one part).
     void put(std::uint64_t item, std::size_t shard, std::size_t owner, T value, const std::string& path) {
-        const std::string named = noun_ + " " + std::to_string(item);
+        const auto refuse = [&](const std::string& why) {
+            throw DataError(path, 0, "holds " + noun_ + " " + std::to_string(item) + why);
+        };
         if (item < first_ || item - first_ >= slots_.size() || owner != shard)
-            throw DataError(path, 0, "holds " + named + ", not shard " + std::to_string(shard) + "'s");
+            refuse(", not shard " + std::to_string(shard) + "'s");
         auto& slot = slots_[item - first_];
-        if (slot) throw DataError(path, 0, "holds " + named + " twice");
+        if (slot) refuse(" twice");
         slot = std::move(value);
     }
     /// Every item in order. Throws DataError naming `first` (the campaign's first part) when one is missing.
