@@ -52,6 +52,13 @@ struct TableRows {
     std::vector<std::uint64_t> lines;
     std::vector<std::string> comments;
     std::exception_ptr error;
+
+    void clear() {
+        flat.clear();
+        lines.clear();
+        comments.clear();
+        error = nullptr;
+    }
 };
 
 class TableReader {
@@ -71,8 +78,10 @@ public:
         }
         parse_values(fields_, number, rows_.flat);
         const std::vector<std::uint64_t>& lines = rows_.lines;
-        if (!lines.empty()) check_width(fields_.size(), number);
-        if (lines.empty()) width_ = fields_.size();
+        if (lines.empty())
+            width_ = fields_.size();
+        else
+            check_width(fields_.size(), number);
         // One name over one data line names a series written on one line; a second line shows whether it was one.
         if (!table_.names.empty() && !(table_.names.size() == 1 && lines.empty())) {
             const bool first_unchecked = table_.names.size() == 1 && lines.size() == 1;
@@ -90,10 +99,7 @@ public:
     /// The lines of a block's half after the head into `out` (cleared first), up to the first bad one (kept in
     /// out.error). Writes `out` only: the halves are read at once.
     void read_rows(std::string_view lines, std::uint64_t first_line, TableRows& out) const {
-        out.flat.clear();
-        out.lines.clear();
-        out.comments.clear();
-        out.error = nullptr;
+        out.clear();
         std::vector<std::string_view> fields;
         try {
             for_each_line(lines, first_line, [&](std::string_view text, std::uint64_t number) {
